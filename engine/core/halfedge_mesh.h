@@ -1,0 +1,230 @@
+// HalfedgeMesh: the teaching half-edge structure, stored as flat arrays indexed by typed ids.
+//
+// Every pointer a student reasons about is stored explicitly (no implicit twin = h^1), so the pointer
+// tables show exactly what is in memory and a script can break any of them.
+//
+// Invariants of the storage (kept by this class, whatever the connectivity says):
+// - Ids are indices into the arrays below and are never reused: new elements are appended, deletion
+//   only clears the element's `alive` flag (a tombstone). `alive(id)` is false for ids past the end,
+//   so ids from "the future" (after an undo) read as dead rather than crashing.
+// - Faces and boundary loops live in separate arrays; a FaceId's boundary bit says which (ids.h).
+// - `h.vertex` is the vertex the halfedge LEAVES (its tail), as in the course code.
+// - A boundary vertex's `halfedge` is its outgoing halfedge on the boundary loop, when the mesh was built
+//   here or edited by the core's operations.
+// - The class never follows pointers on its own except in the bounded walks below, which stop after
+//   `halfedge_capacity()` steps, so a broken mesh can be inspected without hanging.
+// - Every mutation bumps `version()`, so caches (GPU buffers, tables) know when to refresh.
+//
+// Connectivity invariants (twin of twin, closed face cycles, ...) are NOT enforced here: check them with
+// validate() (validate.h). The mesh is a plain copyable value; history.h keeps copies for undo.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/ids.h"
+
+namespace meshedit {
+
+// Iterates the live ids of one kind; the end is fixed when the range is made, so elements appended
+// during the loop are not visited (the "only split the original edges" rule of Loop subdivision).
+template <class IdT>
+class AliveRange {
+ public:
+  class Iterator {
+   public:
+    Iterator(const std::vector<uint8_t>* alive, uint32_t i, uint32_t end, uint32_t tag)
+        : alive_(alive), i_(i), end_(end), tag_(tag) { skip(); }
+    IdT operator*() const { return IdT(i_ | tag_); }
+    Iterator& operator++() { ++i_; skip(); return *this; }
+    bool operator!=(const Iterator& o) const { return i_ != o.i_; }
+    bool operator==(const Iterator& o) const { return i_ == o.i_; }
+   private:
+    void skip() { while (i_ < end_ && !(*alive_)[i_]) ++i_; }
+    const std::vector<uint8_t>* alive_;
+    uint32_t i_, end_, tag_;
+  };
+  AliveRange(const std::vector<uint8_t>* alive, uint32_t tag = 0)
+      : alive_(alive), end_(static_cast<uint32_t>(alive->size())), tag_(tag) {}
+  Iterator begin() const { return Iterator(alive_, 0, end_, tag_); }
+  Iterator end() const { return Iterator(alive_, end_, end_, tag_); }
+ private:
+  const std::vector<uint8_t>* alive_;
+  uint32_t end_, tag_;
+};
+
+struct PolygonMesh;
+struct BuildReport;
+
+class HalfedgeMesh {
+ public:
+  // ---- counts -------------------------------------------------------------------------------------
+  // Live elements.
+  size_t num_vertices() const { return live_vertices_; }
+  size_t num_halfedges() const { return live_halfedges_; }
+  size_t num_edges() const { return live_edges_; }
+  size_t num_faces() const { return live_faces_; }        // real faces, boundary loops excluded
+  size_t num_boundaries() const { return live_boundaries_; }
+  // Slots ever allocated (live + dead): the id range of each kind.
+  uint32_t vertex_capacity() const { return static_cast<uint32_t>(v_alive_.size()); }
+  uint32_t halfedge_capacity() const { return static_cast<uint32_t>(h_alive_.size()); }
+  uint32_t edge_capacity() const { return static_cast<uint32_t>(e_alive_.size()); }
+  uint32_t face_capacity() const { return static_cast<uint32_t>(f_alive_.size()); }
+  uint32_t boundary_capacity() const { return static_cast<uint32_t>(b_alive_.size()); }
+  uint32_t capacity(ElementKind kind) const;
+
+  // ---- liveness -----------------------------------------------------------------------------------
+  bool alive(VertexId v) const { return v.index < v_alive_.size() && v_alive_[v.index]; }
+  bool alive(HalfedgeId h) const { return h.index < h_alive_.size() && h_alive_[h.index]; }
+  bool alive(EdgeId e) const { return e.index < e_alive_.size() && e_alive_[e.index]; }
+  bool alive(FaceId f) const {
+    if (!f.valid()) return false;
+    const auto& flags = f.is_boundary() ? b_alive_ : f_alive_;
+    return f.slot() < flags.size() && flags[f.slot()];
+  }
+  bool alive(ElementRef r) const;
+
+  // ---- the pointers (precondition: the element is live or at least allocated) ---------------------
+  HalfedgeId next(HalfedgeId h) const { return h_next_[h.index]; }
+  HalfedgeId twin(HalfedgeId h) const { return h_twin_[h.index]; }
+  VertexId vertex(HalfedgeId h) const { return h_vertex_[h.index]; }   // the vertex h leaves
+  EdgeId edge(HalfedgeId h) const { return h_edge_[h.index]; }
+  FaceId face(HalfedgeId h) const { return h_face_[h.index]; }
+  HalfedgeId halfedge(VertexId v) const { return v_halfedge_[v.index]; }  // some outgoing halfedge
+  HalfedgeId halfedge(EdgeId e) const { return e_halfedge_[e.index]; }
+  HalfedgeId halfedge(FaceId f) const {
+    return f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()];
+  }
+  const glm::dvec3& position(VertexId v) const { return v_position_[v.index]; }
+
+  void set_next(HalfedgeId h, HalfedgeId next) { h_next_[h.index] = next; touch(); }
+  void set_twin(HalfedgeId h, HalfedgeId twin) { h_twin_[h.index] = twin; touch(); }
+  void set_vertex(HalfedgeId h, VertexId v) { h_vertex_[h.index] = v; touch(); }
+  void set_edge(HalfedgeId h, EdgeId e) { h_edge_[h.index] = e; touch(); }
+  void set_face(HalfedgeId h, FaceId f) { h_face_[h.index] = f; touch(); }
+  // The course's Halfedge::setNeighbors, with its argument order.
+  void set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex, EdgeId edge,
+                     FaceId face);
+  void set_halfedge(VertexId v, HalfedgeId h) { v_halfedge_[v.index] = h; touch(); }
+  void set_halfedge(EdgeId e, HalfedgeId h) { e_halfedge_[e.index] = h; touch(); }
+  void set_halfedge(FaceId f, HalfedgeId h) {
+    (f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()]) = h;
+    touch();
+  }
+  void set_position(VertexId v, const glm::dvec3& p) { v_position_[v.index] = p; touch(); }
+
+  // ---- allocation and deletion --------------------------------------------------------------------
+  // New elements are live, appended at the end, with every pointer invalid and position (0,0,0).
+  VertexId new_vertex(const glm::dvec3& position = glm::dvec3(0.0));
+  HalfedgeId new_halfedge();
+  EdgeId new_edge();
+  FaceId new_face();
+  FaceId new_boundary();
+  // Marks the element dead; its slot and stored pointers stay (so tables can still show them).
+  void delete_element(VertexId v);
+  void delete_element(HalfedgeId h);
+  void delete_element(EdgeId e);
+  void delete_element(FaceId f);
+  // Reserves room for at least this many more elements of each kind (no effect on ids).
+  void reserve(size_t vertices, size_t halfedges, size_t edges, size_t faces);
+
+  // ---- iteration over live elements (end fixed at creation) ---------------------------------------
+  AliveRange<VertexId> vertices() const { return AliveRange<VertexId>(&v_alive_); }
+  AliveRange<HalfedgeId> halfedges() const { return AliveRange<HalfedgeId>(&h_alive_); }
+  AliveRange<EdgeId> edges() const { return AliveRange<EdgeId>(&e_alive_); }
+  AliveRange<FaceId> faces() const { return AliveRange<FaceId>(&f_alive_); }
+  AliveRange<FaceId> boundaries() const { return AliveRange<FaceId>(&b_alive_, FaceId::kBoundaryBit); }
+
+  // ---- derived navigation, bounded so a broken mesh cannot hang the caller --------------------------
+  // Walks: each returns false (and stops) after halfedge_capacity() steps or on an invalid/dead pointer.
+  // The halfedge whose next is h, found by walking h's face cycle; invalid if the cycle is broken.
+  HalfedgeId prev(HalfedgeId h) const;
+  // Number of halfedges in f's next-cycle; 0 if the cycle does not close.
+  uint32_t degree(FaceId f) const;
+  // Number of outgoing halfedges around v (walking twin->next); 0 if the fan does not close.
+  uint32_t degree(VertexId v) const;
+  // True if v has an outgoing halfedge whose face is a boundary loop.
+  bool is_boundary(VertexId v) const;
+  bool is_boundary(EdgeId e) const;
+  bool is_boundary(HalfedgeId h) const { return face(h).is_boundary(); }
+
+  // Calls fn(h) for each halfedge of f's cycle, starting at halfedge(f). Returns false if the walk
+  // met an invalid or dead halfedge or did not close within the bound.
+  template <class Fn>
+  bool for_each_face_halfedge(FaceId f, Fn&& fn) const;
+  // Calls fn(h) for each outgoing halfedge of v (h = twin(h).next), starting at halfedge(v).
+  template <class Fn>
+  bool for_each_outgoing(VertexId v, Fn&& fn) const;
+
+  // ---- bookkeeping --------------------------------------------------------------------------------
+  // Bumped by every mutation; equal versions of the same mesh object mean equal contents.
+  uint64_t version() const { return version_; }
+  // Memory held by the arrays, in bytes (capacity, not size).
+  size_t memory_bytes() const;
+
+  // Exact equality of every array (ids, pointers, liveness, positions); version is ignored.
+  bool same_as(const HalfedgeMesh& other) const;
+
+ private:
+  // The builder fills the arrays directly: one pass per array instead of one push per element.
+  friend HalfedgeMesh build_halfedge_mesh(const PolygonMesh& polygons, BuildReport* report);
+  void touch() { ++version_; }
+
+  // Halfedge arrays, indexed by HalfedgeId.
+  std::vector<HalfedgeId> h_next_;    // h.next
+  std::vector<HalfedgeId> h_twin_;    // h.twin
+  std::vector<VertexId> h_vertex_;    // h.vertex (tail)
+  std::vector<EdgeId> h_edge_;        // h.edge
+  std::vector<FaceId> h_face_;        // h.face (a face or a boundary loop)
+  std::vector<uint8_t> h_alive_;
+  // Vertex arrays, indexed by VertexId.
+  std::vector<HalfedgeId> v_halfedge_;  // v.halfedge (outgoing)
+  std::vector<glm::dvec3> v_position_;  // v.position
+  std::vector<uint8_t> v_alive_;
+  // Edge arrays, indexed by EdgeId.
+  std::vector<HalfedgeId> e_halfedge_;  // e.halfedge
+  std::vector<uint8_t> e_alive_;
+  // Face arrays, indexed by FaceId::slot() of real faces.
+  std::vector<HalfedgeId> f_halfedge_;  // f.halfedge
+  std::vector<uint8_t> f_alive_;
+  // Boundary-loop arrays, indexed by FaceId::slot() of boundary loops.
+  std::vector<HalfedgeId> b_halfedge_;  // b.halfedge
+  std::vector<uint8_t> b_alive_;
+
+  size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
+  uint64_t version_ = 0;
+};
+
+template <class Fn>
+bool HalfedgeMesh::for_each_face_halfedge(FaceId f, Fn&& fn) const {
+  if (!alive(f)) return false;
+  const HalfedgeId start = halfedge(f);
+  HalfedgeId h = start;
+  for (uint32_t steps = 0; steps <= halfedge_capacity(); ++steps) {
+    if (!alive(h)) return false;
+    fn(h);
+    h = next(h);
+    if (h == start) return true;
+  }
+  return false;
+}
+
+template <class Fn>
+bool HalfedgeMesh::for_each_outgoing(VertexId v, Fn&& fn) const {
+  if (!alive(v)) return false;
+  const HalfedgeId start = halfedge(v);
+  HalfedgeId h = start;
+  for (uint32_t steps = 0; steps <= halfedge_capacity(); ++steps) {
+    if (!alive(h)) return false;
+    fn(h);
+    const HalfedgeId t = twin(h);
+    if (!alive(t)) return false;
+    h = next(t);
+    if (h == start) return true;
+  }
+  return false;
+}
+
+}  // namespace meshedit

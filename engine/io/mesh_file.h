@@ -1,0 +1,34 @@
+// Opening and saving any supported file, chosen by extension:
+//   read:  .obj .dae .gltf .glb (meshes), .bez (Bézier patches), .bzc (a Bézier curve)
+//   write: .obj .gltf .glb (meshes)
+// Every failure is a FileError naming the file and the place; nothing here exits or aborts, whatever
+// the bytes are. Readers for one format are in their own headers (obj_io.h, dae_reader.h, ...), each
+// with a parse_* function over text in memory that the fuzz tests call.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "core/bezier.h"
+#include "core/polygon_mesh.h"
+
+namespace meshedit {
+
+enum class FileKind { Mesh, Patches, Curve };
+
+struct LoadedFile {
+  FileKind kind = FileKind::Mesh;
+  PolygonMesh mesh;                   // kind == Mesh
+  std::vector<BezierPatch> patches;   // kind == Patches
+  BezierCurve curve;                  // kind == Curve
+};
+
+// The kind a path's extension promises, or a FileError for an extension we do not read.
+FileKind file_kind(const std::filesystem::path& path);
+LoadedFile load_file(const std::filesystem::path& path);
+// Loads a mesh file; throws FileError if the file holds patches or a curve instead.
+PolygonMesh load_mesh(const std::filesystem::path& path);
+void save_mesh(const std::filesystem::path& path, const PolygonMesh& mesh);
+
+}  // namespace meshedit

@@ -1,0 +1,30 @@
+// Test helpers (see test_support.h).
+#include "support/test_support.h"
+
+#include <cstdlib>
+
+namespace meshedit::testing {
+
+std::optional<std::filesystem::path> course_data_dir() {
+  std::filesystem::path dir = MESHEDIT_SHARED_DATA;
+  if (const char* env = std::getenv("MESHEDIT_SHARED_DATA")) dir = env;
+  std::error_code ec;
+  if (std::filesystem::is_directory(dir, ec)) return dir;
+  return std::nullopt;
+}
+
+std::filesystem::path source_dir() { return MESHEDIT_SOURCE_DIR; }
+
+std::filesystem::path scratch_dir() {
+  const auto* info = ::testing::UnitTest::GetInstance()->current_test_info();
+  std::string name = info ? std::string(info->test_suite_name()) + "." + info->name() : "meshedit";
+  for (char& ch : name) {
+    if (ch == '/') ch = '_';
+  }
+  auto dir = std::filesystem::temp_directory_path() / "meshedit-tests" / name;
+  std::filesystem::remove_all(dir);
+  std::filesystem::create_directories(dir);
+  return dir;
+}
+
+}  // namespace meshedit::testing

@@ -1,0 +1,27 @@
+// Helpers shared by the test binaries: where the course files are, and a skip when they are absent.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+
+#include <gtest/gtest.h>
+
+namespace meshedit::testing {
+
+// ../shared/data/cs184 (or $MESHEDIT_SHARED_DATA), if it exists.
+std::optional<std::filesystem::path> course_data_dir();
+
+// The project's source tree (for assets/ and tests/ files).
+std::filesystem::path source_dir();
+
+// A fresh empty directory under the system temp dir, unique to the running test.
+std::filesystem::path scratch_dir();
+
+}  // namespace meshedit::testing
+
+// Binds `dir` to the course data folder, or skips the test when it is absent.
+#define MESHEDIT_REQUIRE_COURSE_DATA(dir)                                           \
+  const auto dir##_opt = ::meshedit::testing::course_data_dir();                    \
+  if (!dir##_opt) GTEST_SKIP() << "course files not found (../shared/data/cs184)"; \
+  const std::filesystem::path dir = *dir##_opt
