@@ -19,6 +19,7 @@
 // validate() (validate.h). The mesh is a plain copyable value; history.h keeps copies for undo.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -161,6 +162,9 @@ class HalfedgeMesh {
   // ---- bookkeeping --------------------------------------------------------------------------------
   // Bumped by every mutation; equal versions of the same mesh object mean equal contents.
   uint64_t version() const { return version_; }
+  // After restoring a snapshot (undo), makes version() larger than `seen`, so no cache mistakes the
+  // restored state for one it saw before.
+  void bump_version_above(uint64_t seen) { version_ = std::max(version_, seen) + 1; }
   // Memory held by the arrays, in bytes (capacity, not size).
   size_t memory_bytes() const;
 

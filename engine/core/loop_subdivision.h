@@ -1,0 +1,53 @@
+// Loop subdivision (Part 6), as four phases a lesson can step through, plus one call for all four.
+//
+//   1. loop_compute_positions: new positions for the original vertices and a position for each
+//      original edge's midpoint vertex, from the original mesh (nothing changes yet);
+//   2. loop_split_edges:   split every original edge (only those: new edges are never split); new
+//                          vertices sit at edge midpoints until phase 4;
+//   3. loop_flip_edges:    flip every new edge that joins an original vertex and a new vertex;
+//   4. loop_commit_positions: move every vertex to its computed position.
+//
+// Weights (LoopWeights):
+//   Course  the assignment's: old vertex (1 - n u) p + u * sum(neighbours), u = 3/16 if n = 3 else 3/(8n)
+//   Loop    Loop's original: u = beta / n, beta = 5/8 - (3/8 + 1/4 cos(2 pi / n))^2 (matches OpenMesh, CGAL)
+//   interior edge point: 3/8 (a + b) + 1/8 (c + d); boundary edge point: (a + b) / 2;
+//   boundary vertex: 3/4 p + 1/8 (left + right boundary neighbours).
+// Meshes with a non-triangle face are refused (the reason names the face). On a closed mesh the counts
+// become V' = V + E, E' = 2E + 3F, F' = 4F.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/check.h"
+#include "core/halfedge_mesh.h"
+
+namespace meshedit {
+
+enum class LoopWeights { Course, Loop };
+
+// What phases 1-3 compute and later phases read; indexed by id (size = capacity at the time).
+struct LoopState {
+  LoopWeights weights = LoopWeights::Course;
+  std::vector<glm::dvec3> vertex_position;  // phase 1: new position of each original vertex
+  std::vector<glm::dvec3> edge_position;    // phase 1: position of each original edge's new vertex
+  std::vector<EdgeId> original_edges;       // phase 1: the edges phase 2 splits, in id order
+  std::vector<uint8_t> is_new_vertex;       // phase 2: 1 for vertices created by splits
+  std::vector<uint8_t> is_new_edge;         // phase 2: 1 for edges created by splits that cut across a
+                                            //          face (not the halves of an original edge)
+  std::vector<glm::dvec3> new_position;     // phase 2: final position of every vertex, by id
+};
+
+Check can_loop_subdivide(const HalfedgeMesh& mesh);
+// Each phase assumes the previous ones ran on the same mesh; phase 1 refuses what can_loop_subdivide refuses.
+OpResult<LoopState> loop_compute_positions(const HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course);
+void loop_split_edges(HalfedgeMesh& mesh, LoopState& state);
+void loop_flip_edges(HalfedgeMesh& mesh, LoopState& state);
+void loop_commit_positions(HalfedgeMesh& mesh, const LoopState& state);
+
+// All four phases; refuses (and changes nothing) like can_loop_subdivide.
+Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course);
+
+}  // namespace meshedit

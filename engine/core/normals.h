@@ -1,0 +1,28 @@
+// Face normals and area-weighted vertex normals (Part 3 of the assignment).
+//
+// - A face normal is the unit normal of the polygon (Newell's sum, so n-gons work); a zero-area face
+//   has the zero vector.
+// - A vertex normal is the sum over the vertex's real faces of (face area x face unit normal) — for a
+//   triangle that is half the cross product of two edges — normalised. Boundary loops are skipped, so
+//   boundary vertices get the normal of the faces they do have. A vertex with no area around it gets
+//   the zero vector.
+// - Walks are bounded: a broken mesh yields zero vectors where a fan or cycle does not close.
+#pragma once
+
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/halfedge_mesh.h"
+
+namespace meshedit {
+
+glm::dvec3 face_normal(const HalfedgeMesh& mesh, FaceId f);
+double face_area(const HalfedgeMesh& mesh, FaceId f);
+glm::dvec3 vertex_normal(const HalfedgeMesh& mesh, VertexId v);
+
+// Indexed by id (size = capacity); dead slots hold zero vectors.
+std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh);
+std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh);
+
+}  // namespace meshedit
