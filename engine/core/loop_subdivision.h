@@ -12,8 +12,13 @@
 //   Loop    Loop's original: u = beta / n, beta = 5/8 - (3/8 + 1/4 cos(2 pi / n))^2 (matches OpenMesh, CGAL)
 //   interior edge point: 3/8 (a + b) + 1/8 (c + d); boundary edge point: (a + b) / 2;
 //   boundary vertex: 3/4 p + 1/8 (left + right boundary neighbours).
-// Meshes with a non-triangle face are refused (the reason names the face). On a closed mesh the counts
-// become V' = V + E, E' = 2E + 3F, F' = 4F.
+// Refused, changing nothing: a mesh validate() rejects (the reason quotes its first problem) and a mesh
+// with a non-triangle face ("f3 has 4 sides; Loop subdivision needs triangles"), or with an edge split()
+// refuses (two faces with the same three corners), quoting split's reason. An interior vertex's
+// valence n counts its neighbours; a boundary vertex uses only its two neighbours along the boundary loop.
+// Counts, closed or not: V' = V + E, E' = 2E + 3F, F' = 4F (boundary loops stay one per hole).
+// Ids: original vertices keep theirs (ids 0..V-1 of a freshly built mesh stay in place); the vertex and
+// edges each split makes are appended, in split()'s documented order (mesh_ops.h), edge by edge in id order.
 #pragma once
 
 #include <cstdint>

@@ -1,12 +1,17 @@
 // Face normals and area-weighted vertex normals (Part 3 of the assignment).
 //
 // - A face normal is the unit normal of the polygon (Newell's sum, so n-gons work); a zero-area face
-//   has the zero vector.
+//   has the zero vector. "Zero area" allows for rounding: a face whose doubled vector area is no longer
+//   than 1e-14 times the largest squared distance from its first corner to another counts as zero (a
+//   collinear triangle, however rounded). A boundary loop's FaceId is accepted too and gives the loop's
+//   polygon, which runs the other way round from the faces beside the hole.
 // - A vertex normal is the sum over the vertex's real faces of (face area x face unit normal) — for a
 //   triangle that is half the cross product of two edges — normalised. Boundary loops are skipped, so
 //   boundary vertices get the normal of the faces they do have. A vertex with no area around it gets
 //   the zero vector.
-// - Walks are bounded: a broken mesh yields zero vectors where a fan or cycle does not close.
+// - Walks are bounded and every id is checked before it is followed: a broken mesh yields zero vectors
+//   where a fan or cycle does not close or reaches a dead element; dead or out-of-range ids give zero.
+// - The whole-mesh versions equal the per-element ones exactly (same terms, same order).
 #pragma once
 
 #include <vector>
