@@ -1,6 +1,8 @@
 // HalfedgeMesh storage, allocation and bounded walks (see halfedge_mesh.h for the invariants).
 #include "core/halfedge_mesh.h"
 
+#include <cstring>
+
 namespace meshedit {
 
 uint32_t HalfedgeMesh::capacity(ElementKind kind) const {
@@ -165,7 +167,7 @@ bool HalfedgeMesh::is_boundary(EdgeId e) const {
 }
 
 size_t HalfedgeMesh::memory_bytes() const {
-  return h_next_.capacity() * sizeof(HalfedgeId) * 2 + h_vertex_.capacity() * sizeof(VertexId) +
+  return (h_next_.capacity() + h_twin_.capacity()) * sizeof(HalfedgeId) + h_vertex_.capacity() * sizeof(VertexId) +
          h_edge_.capacity() * sizeof(EdgeId) + h_face_.capacity() * sizeof(FaceId) + h_alive_.capacity() +
          v_halfedge_.capacity() * sizeof(HalfedgeId) + v_position_.capacity() * sizeof(glm::dvec3) +
          v_alive_.capacity() + e_halfedge_.capacity() * sizeof(HalfedgeId) + e_alive_.capacity() +
@@ -173,10 +175,17 @@ size_t HalfedgeMesh::memory_bytes() const {
          b_halfedge_.capacity() * sizeof(HalfedgeId) + b_alive_.capacity();
 }
 
+namespace {
+// Positions compare bit for bit, so a NaN equals itself and a mesh is always same_as its copy.
+bool same_bits(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)) == 0);
+}
+}  // namespace
+
 bool HalfedgeMesh::same_as(const HalfedgeMesh& o) const {
   return h_next_ == o.h_next_ && h_twin_ == o.h_twin_ && h_vertex_ == o.h_vertex_ && h_edge_ == o.h_edge_ &&
          h_face_ == o.h_face_ && h_alive_ == o.h_alive_ && v_halfedge_ == o.v_halfedge_ &&
-         v_position_ == o.v_position_ && v_alive_ == o.v_alive_ && e_halfedge_ == o.e_halfedge_ &&
+         same_bits(v_position_, o.v_position_) && v_alive_ == o.v_alive_ && e_halfedge_ == o.e_halfedge_ &&
          e_alive_ == o.e_alive_ && f_halfedge_ == o.f_halfedge_ && f_alive_ == o.f_alive_ &&
          b_halfedge_ == o.b_halfedge_ && b_alive_ == o.b_alive_;
 }

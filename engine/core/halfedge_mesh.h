@@ -168,7 +168,7 @@ class HalfedgeMesh {
   // Memory held by the arrays, in bytes (capacity, not size).
   size_t memory_bytes() const;
 
-  // Exact equality of every array (ids, pointers, liveness, positions); version is ignored.
+  // Exact equality of every array (ids, pointers, liveness, positions bit for bit); version is ignored.
   bool same_as(const HalfedgeMesh& other) const;
 
  private:

@@ -14,8 +14,9 @@
 
 namespace meshedit {
 
-// One changed field: (element, field, old, new), values printed with the id formatter
-// ("h12", "-", "(0.5, 0, 1)", "alive"/"dead").
+// One changed field: (element, field, old, new), values printed with the id formatter ("h12", "b0", "-"
+// for an invalid id), positions as "(0.5, 0, 1)" with each coordinate in the shortest form that reads back
+// to the same double (value_format.h), liveness as "alive"/"dead".
 struct FieldChange {
   ElementRef element;
   std::string field;   // "next" "twin" "vertex" "edge" "face" "halfedge" "position" "alive"
@@ -24,8 +25,13 @@ struct FieldChange {
 };
 
 // Every field that differs between two states of one mesh, in order of kind (vertices, halfedges,
-// edges, faces, boundaries), then id, then field. Elements that exist only in `after` (created) list
-// all their fields with before = "-"; a slot only in `before` cannot happen since ids are not reused.
+// edges, faces, boundaries), then id, then field in this order:
+//   vertex: halfedge, position, alive     halfedge: next, twin, vertex, edge, face, alive
+//   edge: halfedge, alive                 face, boundary: halfedge, alive
+// Elements that exist only in `after` (created) list all their fields with before = "-". Dead elements are
+// compared too (a change to a dead slot is still a change). Positions compare bit for bit. A slot only in
+// `before` cannot happen for two states of one mesh since ids are not reused; if it does (arguments
+// swapped), its fields are listed with after = "-".
 std::vector<FieldChange> diff(const HalfedgeMesh& before, const HalfedgeMesh& after);
 
 class History {
@@ -43,7 +49,10 @@ class History {
   size_t undo_depth() const { return undo_.size(); }
 
   // Replaces `mesh` by the state before the last recorded operation; the replaced state goes to redo.
+  // Returns false (and changes nothing) when there is nothing to undo. Afterwards mesh.version() is larger
+  // than it was before the call and than the restored snapshot's own version.
   bool undo(HalfedgeMesh& mesh);
+  // The reverse of undo (same rules); record() empties the redo list.
   bool redo(HalfedgeMesh& mesh);
   void clear();
 

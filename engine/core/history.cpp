@@ -1,0 +1,134 @@
+// diff() and History (see history.h for the contracts).
+//
+// Invariants kept here:
+// - diff() compares raw values (positions bit for bit, so -0 vs 0 and NaN payloads count as changes) and
+//   formats only what differs; it reads a slot only below that mesh's capacity, so two unrelated meshes,
+//   or the arguments swapped, give a longer list but never a crash.
+// - History never holds more than max_depth undo entries; after undo/redo the mesh's version is above
+//   every version it had before, so caches keyed by version refresh.
+#include "core/history.h"
+
+#include <cstring>
+#include <utility>
+
+#include "core/value_format.h"
+
+namespace meshedit {
+namespace {
+
+template <class T>
+bool same(const T& a, const T& b) {
+  return a == b;
+}
+bool same(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0; }
+
+template <ElementKind K>
+std::string show(Id<K> id) {
+  return format_id(id);
+}
+std::string show(FaceId f) { return format_id(f); }
+std::string show(const glm::dvec3& p) { return format_position(p); }
+std::string show(bool alive) { return alive ? "alive" : "dead"; }
+
+// Appends the change of one field of one slot. `a`/`b` are null when the slot does not exist in that mesh.
+template <class Get>
+void compare(std::vector<FieldChange>& out, ElementRef element, const char* field, const HalfedgeMesh* a,
+             const HalfedgeMesh* b, Get get) {
+  if (a && b) {
+    const auto before = get(*a);
+    const auto after = get(*b);
+    if (!same(before, after)) out.push_back({element, field, show(before), show(after)});
+  } else if (b) {
+    out.push_back({element, field, "-", show(get(*b))});
+  } else if (a) {
+    out.push_back({element, field, show(get(*a)), "-"});
+  }
+}
+
+// Calls fn(slot, in_before, in_after) for every slot of one kind that exists in either mesh.
+template <class Fn>
+void for_each_slot(const HalfedgeMesh& before, const HalfedgeMesh& after, ElementKind kind, Fn&& fn) {
+  const uint32_t a = before.capacity(kind), b = after.capacity(kind);
+  for (uint32_t i = 0; i < std::max(a, b); ++i) fn(i, i < a ? &before : nullptr, i < b ? &after : nullptr);
+}
+
+}  // namespace
+
+std::vector<FieldChange> diff(const HalfedgeMesh& before, const HalfedgeMesh& after) {
+  std::vector<FieldChange> out;
+  for_each_slot(before, after, ElementKind::Vertex, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
+    const VertexId v(i);
+    compare(out, v, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(v); });
+    compare(out, v, "position", a, b, [&](const HalfedgeMesh& m) { return m.position(v); });
+    compare(out, v, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(v); });
+  });
+  for_each_slot(before, after, ElementKind::Halfedge, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
+    const HalfedgeId h(i);
+    compare(out, h, "next", a, b, [&](const HalfedgeMesh& m) { return m.next(h); });
+    compare(out, h, "twin", a, b, [&](const HalfedgeMesh& m) { return m.twin(h); });
+    compare(out, h, "vertex", a, b, [&](const HalfedgeMesh& m) { return m.vertex(h); });
+    compare(out, h, "edge", a, b, [&](const HalfedgeMesh& m) { return m.edge(h); });
+    compare(out, h, "face", a, b, [&](const HalfedgeMesh& m) { return m.face(h); });
+    compare(out, h, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(h); });
+  });
+  for_each_slot(before, after, ElementKind::Edge, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
+    const EdgeId e(i);
+    compare(out, e, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(e); });
+    compare(out, e, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(e); });
+  });
+  for (const bool boundary : {false, true}) {
+    const ElementKind kind = boundary ? ElementKind::Boundary : ElementKind::Face;
+    for_each_slot(before, after, kind, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
+      const FaceId f = boundary ? FaceId::boundary(i) : FaceId::face(i);
+      compare(out, f, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(f); });
+      compare(out, f, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(f); });
+    });
+  }
+  return out;
+}
+
+void History::record(std::string label, HalfedgeMesh before) {
+  redo_.clear();
+  undo_.push_back({std::move(label), std::move(before)});
+  while (undo_.size() > max_depth_) undo_.pop_front();
+}
+
+const std::string& History::undo_label() const {
+  static const std::string kNone;
+  return undo_.empty() ? kNone : undo_.back().label;
+}
+
+const std::string& History::redo_label() const {
+  static const std::string kNone;
+  return redo_.empty() ? kNone : redo_.back().label;
+}
+
+bool History::undo(HalfedgeMesh& mesh) {
+  if (undo_.empty()) return false;
+  Entry entry = std::move(undo_.back());
+  undo_.pop_back();
+  const uint64_t seen = mesh.version();
+  redo_.push_back({entry.label, std::move(mesh)});
+  mesh = std::move(entry.mesh);
+  mesh.bump_version_above(seen);
+  return true;
+}
+
+bool History::redo(HalfedgeMesh& mesh) {
+  if (redo_.empty()) return false;
+  Entry entry = std::move(redo_.back());
+  redo_.pop_back();
+  const uint64_t seen = mesh.version();
+  undo_.push_back({entry.label, std::move(mesh)});
+  while (undo_.size() > max_depth_) undo_.pop_front();
+  mesh = std::move(entry.mesh);
+  mesh.bump_version_above(seen);
+  return true;
+}
+
+void History::clear() {
+  undo_.clear();
+  redo_.clear();
+}
+
+}  // namespace meshedit

@@ -1,0 +1,19 @@
+// Printing numbers and positions for people, tests and diffs.
+//
+// Invariant: the text is the shortest that reads back to exactly the same double (std::to_chars without a
+// precision), so two values print alike only when they are equal: a diff never shows "0.1 -> 0.1".
+// Special values print as "nan", "-nan", "inf", "-inf"; negative zero prints as "-0".
+#pragma once
+
+#include <string>
+
+#include <glm/vec3.hpp>
+
+namespace meshedit {
+
+// "0.5", "1", "-0", "0.1", "1e+100".
+std::string format_number(double x);
+// "(0.5, 0, 1)".
+std::string format_position(const glm::dvec3& p);
+
+}  // namespace meshedit
