@@ -11,6 +11,7 @@
 #include "core/mesh_build.h"
 #include "core/normals.h"
 #include "core/primitives.h"
+#include "support/test_support.h"
 
 namespace meshedit {
 namespace {
@@ -18,14 +19,7 @@ namespace {
 constexpr double kTol = 1e-12;
 
 ::testing::AssertionResult near(const glm::dvec3& actual, const glm::dvec3& expected, double tol = kTol) {
-  if (std::abs(actual.x - expected.x) <= tol && std::abs(actual.y - expected.y) <= tol &&
-      std::abs(actual.z - expected.z) <= tol)
-    return ::testing::AssertionSuccess();
-  std::ostringstream out;
-  out.precision(17);
-  out << "got (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected (" << expected.x << ", "
-      << expected.y << ", " << expected.z << ")";
-  return ::testing::AssertionFailure() << out.str();
+  return testing::near(actual, expected, tol);
 }
 
 VertexId V(uint32_t i) { return VertexId(i); }
