@@ -7,7 +7,7 @@ packages=(
   build-essential cmake pkg-config git
   libglm-dev libtinyxml2-dev nlohmann-json3-dev libtinygltf-dev libstb-dev
   liblua5.4-dev lua5.4
-  libglfw3-dev libimgui-dev libgl-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri mesa-utils
+  libglfw3-dev libimgui-dev libepoxy-dev libgl-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri mesa-utils
   googletest libgtest-dev
   xvfb xauth x11-utils
 )

@@ -1,23 +1,73 @@
-// Dispatch by extension (see mesh_file.h). Readers are added format by format.
+// Dispatch by extension (see mesh_file.h): the only place that knows which reader or writer serves
+// which extension. Extensions compare case-insensitively (".OBJ" is ".obj").
 #include "io/mesh_file.h"
 
+#include "io/bez_io.h"
+#include "io/bzc_io.h"
+#include "io/dae_reader.h"
+#include "io/file_access.h"
 #include "io/file_error.h"
+#include "io/gltf_io.h"
+#include "io/obj_io.h"
 
 namespace meshedit {
+namespace {
+
+constexpr const char* kReadable =
+    "MeshEdit reads .obj, .dae, .gltf and .glb (meshes), .bez (Bézier patches) and .bzc (Bézier curves)";
+constexpr const char* kWritable = "MeshEdit writes meshes as .obj, .gltf or .glb";
+
+std::string describe_extension(const std::filesystem::path& path) {
+  const std::string ext = path.extension().string();
+  return ext.empty() ? "file has no extension" : "unsupported file type '" + ext + "'";
+}
+
+}  // namespace
 
 FileKind file_kind(const std::filesystem::path& path) {
-  throw FileError(path.string(), "", "unsupported file type '" + path.extension().string() + "'");
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".obj" || ext == ".dae" || ext == ".gltf" || ext == ".glb") return FileKind::Mesh;
+  if (ext == ".bez") return FileKind::Patches;
+  if (ext == ".bzc") return FileKind::Curve;
+  throw FileError(path.string(), "", describe_extension(path) + "; " + kReadable);
 }
 
 LoadedFile load_file(const std::filesystem::path& path) {
-  file_kind(path);
-  return {};
+  LoadedFile loaded;
+  loaded.kind = file_kind(path);
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".obj") {
+    loaded.mesh = read_obj(path);
+  } else if (ext == ".dae") {
+    loaded.mesh = read_dae(path);
+  } else if (ext == ".gltf" || ext == ".glb") {
+    loaded.mesh = read_gltf(path);
+  } else if (ext == ".bez") {
+    loaded.patches = read_bez(path);
+  } else {
+    loaded.curve = read_bzc(path);
+  }
+  return loaded;
 }
 
-PolygonMesh load_mesh(const std::filesystem::path& path) { return load_file(path).mesh; }
+PolygonMesh load_mesh(const std::filesystem::path& path) {
+  const FileKind kind = file_kind(path);
+  if (kind == FileKind::Patches) throw FileError(path.string(), "", "holds Bézier patches, not a mesh");
+  if (kind == FileKind::Curve) throw FileError(path.string(), "", "holds a Bézier curve, not a mesh");
+  return load_file(path).mesh;
+}
 
-void save_mesh(const std::filesystem::path& path, const PolygonMesh&) {
-  throw FileError(path.string(), "", "unsupported file type '" + path.extension().string() + "'");
+void save_mesh(const std::filesystem::path& path, const PolygonMesh& mesh) {
+  const std::string ext = lowercase_extension(path);
+  if (ext == ".obj") {
+    write_obj(path, mesh);
+  } else if (ext == ".gltf") {
+    write_gltf(path, mesh);
+  } else if (ext == ".glb") {
+    write_glb(path, mesh);
+  } else {
+    throw FileError(path.string(), "", describe_extension(path) + " for saving; " + kWritable);
+  }
 }
 
 }  // namespace meshedit

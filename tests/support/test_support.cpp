@@ -1,7 +1,9 @@
 // Test helpers (see test_support.h).
 #include "support/test_support.h"
 
+#include <cmath>
 #include <cstdlib>
+#include <sstream>
 
 namespace meshedit::testing {
 
@@ -25,6 +27,18 @@ std::filesystem::path scratch_dir() {
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;
+}
+
+::testing::AssertionResult near(const glm::dvec3& actual, const glm::dvec3& expected, double tol) {
+  if (std::abs(actual.x - expected.x) <= tol && std::abs(actual.y - expected.y) <= tol &&
+      std::abs(actual.z - expected.z) <= tol) {
+    return ::testing::AssertionSuccess();
+  }
+  std::ostringstream out;
+  out.precision(17);
+  out << "got (" << actual.x << ", " << actual.y << ", " << actual.z << "), expected (" << expected.x << ", "
+      << expected.y << ", " << expected.z << "), tolerance " << tol;
+  return ::testing::AssertionFailure() << out.str();
 }
 
 }  // namespace meshedit::testing

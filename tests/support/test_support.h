@@ -6,6 +6,7 @@
 #include <string>
 
 #include <gtest/gtest.h>
+#include <glm/vec3.hpp>
 
 namespace meshedit::testing {
 
@@ -17,6 +18,9 @@ std::filesystem::path source_dir();
 
 // A fresh empty directory under the system temp dir, unique to the running test.
 std::filesystem::path scratch_dir();
+
+// EXPECT_TRUE(near(actual, expected, tol)): every coordinate within tol, printed with 17 digits if not.
+::testing::AssertionResult near(const glm::dvec3& actual, const glm::dvec3& expected, double tol);
 
 }  // namespace meshedit::testing
 

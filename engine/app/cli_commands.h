@@ -1,0 +1,34 @@
+// The command-line commands, one function each. Each takes the arguments after the command name,
+// writes its report to `out`, returns the exit status, and throws UsageError for bad arguments or the
+// io/core errors for bad files (run_cli turns both into one line on stderr).
+#pragma once
+
+#include <optional>
+#include <ostream>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace meshedit {
+
+struct UsageError : std::runtime_error {
+  using std::runtime_error::runtime_error;
+};
+
+int run_demo(const std::vector<std::string>& args, std::ostream& out);
+int run_info(const std::vector<std::string>& args, std::ostream& out);
+int run_convert(const std::vector<std::string>& args, std::ostream& out);
+int run_subdivide(const std::vector<std::string>& args, std::ostream& out);
+
+// Argument helpers shared by the commands.
+// Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.
+std::optional<std::string> take_option(std::vector<std::string>& args, const std::string& name,
+                                       const std::string& short_name = "");
+// Removes `--name` from args and says whether it was there.
+bool take_flag(std::vector<std::string>& args, const std::string& name);
+// Parses a whole non-negative integer no larger than `max`, or throws UsageError naming the option.
+int parse_count(const std::string& text, const std::string& option, int max);
+// Throws UsageError if any argument starting with '-' is left.
+void reject_unknown_options(const std::vector<std::string>& args);
+
+}  // namespace meshedit

@@ -1,0 +1,76 @@
+// `meshedit convert IN OUT` and `meshedit subdivide IN -n LEVELS [--weights course|loop] -o OUT`.
+#include <chrono>
+
+#include "app/cli_commands.h"
+#include "app/mesh_loading.h"
+#include "core/loop_subdivision.h"
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+
+namespace meshedit {
+namespace {
+
+// Subdividing multiplies faces by 4 per level; past this the output would not fit in memory sensibly.
+constexpr double kMaxOutputFaces = 64e6;
+
+int resolution_option(std::vector<std::string>& args) {
+  const auto text = take_option(args, "--resolution");
+  return text ? parse_count(*text, "--resolution", 256) : kDefaultPatchResolution;
+}
+
+double milliseconds_since(std::chrono::steady_clock::time_point start) {
+  return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+int run_convert(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const int resolution = resolution_option(args);
+  reject_unknown_options(args);
+  if (args.size() != 2) throw UsageError("convert takes an input and an output file");
+  const PolygonMesh polygons = polygons_of(load_file(args[0]), args[0], resolution);
+  save_mesh(args[1], polygons);
+  out << "wrote " << args[1] << ": " << polygons.num_vertices() << " vertices, " << polygons.num_faces()
+      << " faces\n";
+  return 0;
+}
+
+int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const int resolution = resolution_option(args);
+  const auto levels_text = take_option(args, "--levels", "-n");
+  const auto output = take_option(args, "--output", "-o");
+  const std::string weights_name = take_option(args, "--weights").value_or("course");
+  reject_unknown_options(args);
+  if (args.size() != 1) throw UsageError("subdivide takes one input file");
+  if (!levels_text) throw UsageError("subdivide needs -n LEVELS");
+  if (!output) throw UsageError("subdivide needs -o OUT");
+  if (weights_name != "course" && weights_name != "loop") {
+    throw UsageError("--weights must be 'course' or 'loop', not '" + weights_name + "'");
+  }
+  const LoopWeights weights = weights_name == "loop" ? LoopWeights::Loop : LoopWeights::Course;
+  const int levels = parse_count(*levels_text, "-n", 10);
+
+  LoadedMesh loaded = load_halfedge_mesh(args[0], resolution);
+  HalfedgeMesh& mesh = loaded.mesh;
+  double faces = double(mesh.num_faces());
+  for (int i = 0; i < levels; ++i) faces *= 4;
+  if (faces > kMaxOutputFaces) {
+    throw UsageError(std::to_string(levels) + " levels would make " + std::to_string(static_cast<long long>(faces)) +
+                     " faces; use fewer levels");
+  }
+  out << args[0] << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
+  for (int level = 1; level <= levels; ++level) {
+    const auto start = std::chrono::steady_clock::now();
+    const Check done = loop_subdivide(mesh, weights);
+    if (!done) throw MeshError(args[0] + ": cannot subdivide: " + done.reason);
+    out << "level " << level << ": " << mesh.num_vertices() << " vertices, " << mesh.num_edges() << " edges, "
+        << mesh.num_faces() << " faces (" << milliseconds_since(start) << " ms, " << weights_name << " weights)\n";
+  }
+  save_mesh(*output, to_polygon_mesh(mesh));
+  out << "wrote " << *output << "\n";
+  return 0;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,132 @@
+// `meshedit info FILE [--json]`: what a file holds. Meshes get counts, topology and validation;
+// patch files their patch count and the stats of their tessellation; curve files their point count.
+#include <nlohmann/json.hpp>
+
+#include "app/cli_commands.h"
+#include "app/mesh_loading.h"
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+#include "core/mesh_stats.h"
+#include "core/validate.h"
+
+namespace meshedit {
+namespace {
+
+constexpr size_t kProblemsShown = 5;
+
+nlohmann::json mesh_json(const HalfedgeMesh& mesh, size_t unused_vertices) {
+  const MeshStats s = compute_stats(mesh);
+  const ValidationReport report = validate(mesh, kProblemsShown);
+  nlohmann::json problems = nlohmann::json::array();
+  for (const auto& v : report.violations) {
+    problems.push_back({{"element", format_id(v.element)}, {"invariant", invariant_name(v.invariant)},
+                        {"message", v.message}});
+  }
+  return {{"vertices", s.vertices},
+          {"edges", s.edges},
+          {"faces", s.faces},
+          {"halfedges", s.halfedges},
+          {"boundary_loops", s.boundary_loops},
+          {"components", s.components},
+          {"euler_characteristic", s.euler_characteristic},
+          {"closed", s.closed()},
+          {"genus", s.genus ? nlohmann::json(*s.genus) : nlohmann::json(nullptr)},
+          {"triangles_only", s.triangles_only},
+          {"unused_vertices", unused_vertices},
+          {"valid", report.ok()},
+          {"problem_count", report.total},
+          {"problems", problems}};
+}
+
+void print_mesh(const nlohmann::json& m, std::ostream& out, const std::string& indent) {
+  auto line = [&](const std::string& label, const std::string& value) {
+    out << indent << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ') << value << "\n";
+  };
+  line("vertices", std::to_string(m["vertices"].get<size_t>()) +
+                       (m["unused_vertices"].get<size_t>() > 0
+                            ? " (+" + std::to_string(m["unused_vertices"].get<size_t>()) + " unused in the file)"
+                            : ""));
+  line("edges", std::to_string(m["edges"].get<size_t>()));
+  line("faces", std::to_string(m["faces"].get<size_t>()) + (m["triangles_only"].get<bool>() ? " (all triangles)" : ""));
+  line("halfedges", std::to_string(m["halfedges"].get<size_t>()));
+  line("boundary loops", std::to_string(m["boundary_loops"].get<size_t>()));
+  line("components", std::to_string(m["components"].get<size_t>()));
+  line("Euler characteristic", std::to_string(m["euler_characteristic"].get<long>()) +
+                                   (m["closed"].get<bool>() ? " (closed)" : " (with boundary)"));
+  if (!m["genus"].is_null()) line("genus", std::to_string(m["genus"].get<long>()));
+  if (m["valid"].get<bool>()) {
+    line("validation", "valid");
+  } else {
+    line("validation", std::to_string(m["problem_count"].get<size_t>()) + " problem(s)");
+    for (const auto& p : m["problems"]) out << indent << "  " << p["message"].get<std::string>() << "\n";
+  }
+}
+
+}  // namespace
+
+int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const bool json = take_flag(args, "--json");
+  const auto resolution_text = take_option(args, "--resolution");
+  const int resolution = resolution_text ? parse_count(*resolution_text, "--resolution", 256) : kDefaultPatchResolution;
+  reject_unknown_options(args);
+  if (args.size() != 1) throw UsageError("info takes one file");
+  const std::filesystem::path path = args[0];
+
+  const LoadedFile file = load_file(path);
+  nlohmann::json result = {{"file", path.string()}};
+  switch (file.kind) {
+    case FileKind::Curve:
+      result["kind"] = "curve";
+      result["points"] = file.curve.control_points.size();
+      result["degree"] = file.curve.control_points.empty() ? 0 : file.curve.control_points.size() - 1;
+      break;
+    case FileKind::Patches: {
+      result["kind"] = "patches";
+      result["patches"] = file.patches.size();
+      result["resolution"] = resolution;
+      BuildReport report;
+      try {
+        const HalfedgeMesh mesh = build_halfedge_mesh(polygons_of(file, path, resolution), &report);
+        result["tessellation"] = mesh_json(mesh, report.unused_vertices);
+      } catch (const MeshError& e) {
+        result["tessellation_error"] = e.what();
+      }
+      break;
+    }
+    case FileKind::Mesh: {
+      result["kind"] = "mesh";
+      BuildReport report;
+      HalfedgeMesh mesh;
+      try {
+        mesh = build_halfedge_mesh(file.mesh, &report);
+      } catch (const MeshError& e) {
+        throw MeshError(path.string() + ": " + e.what(), e.element());
+      }
+      result.update(mesh_json(mesh, report.unused_vertices));
+      break;
+    }
+  }
+
+  if (json) {
+    out << result.dump(2) << "\n";
+    return 0;
+  }
+  out << path.string() << ": " << result["kind"].get<std::string>() << "\n";
+  if (file.kind == FileKind::Curve) {
+    out << "  control points        " << result["points"] << " (degree " << result["degree"] << ")\n";
+  } else if (file.kind == FileKind::Patches) {
+    out << "  patches               " << result["patches"] << " (4x4 control points each)\n";
+    if (result.contains("tessellation")) {
+      out << "  tessellated at " << resolution << "x" << resolution << " per patch:\n";
+      print_mesh(result["tessellation"], out, "    ");
+    } else {
+      out << "  tessellation is not a manifold: " << result["tessellation_error"].get<std::string>() << "\n";
+    }
+  } else {
+    print_mesh(result, out, "  ");
+  }
+  return 0;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,39 @@
+// Opening files as half-edge meshes (see mesh_loading.h).
+#include "app/mesh_loading.h"
+
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+#include "io/file_error.h"
+
+namespace meshedit {
+
+PolygonMesh polygons_of(const LoadedFile& file, const std::filesystem::path& path, int patch_resolution) {
+  switch (file.kind) {
+    case FileKind::Mesh: return file.mesh;
+    case FileKind::Patches: return tessellate_patches(file.patches, patch_resolution);
+    case FileKind::Curve: break;
+  }
+  throw FileError(path.string(), "", "holds a Bézier curve, not a mesh");
+}
+
+LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resolution) {
+  const PolygonMesh polygons = polygons_of(load_file(path), path, patch_resolution);
+  LoadedMesh loaded;
+  BuildReport report;
+  try {
+    loaded.mesh = build_halfedge_mesh(polygons, &report);
+  } catch (const MeshError& e) {
+    throw MeshError(path.string() + ": " + e.what(), e.element());
+  }
+  loaded.unused_vertices = report.unused_vertices;
+  return loaded;
+}
+
+std::filesystem::path assets_dir() {
+  std::error_code ec;
+  const auto beside_binary = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / "assets";
+  if (!ec && std::filesystem::is_directory(beside_binary, ec)) return beside_binary;
+  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "assets";
+}
+
+}  // namespace meshedit

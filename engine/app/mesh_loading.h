@@ -1,0 +1,28 @@
+// Opening any supported file as a half-edge mesh, for the command-line tools and the demo.
+// Patches (.bez) are tessellated at `patch_resolution` and welded; a curve (.bzc) is not a mesh and is
+// refused with a FileError.
+#pragma once
+
+#include <filesystem>
+
+#include "core/halfedge_mesh.h"
+#include "core/patch_tessellation.h"
+#include "io/mesh_file.h"
+
+namespace meshedit {
+
+struct LoadedMesh {
+  HalfedgeMesh mesh;
+  size_t unused_vertices = 0;  // input vertices no face used (kept as dead ids)
+};
+
+// Throws FileError (unreadable file) or MeshError (not a manifold), both naming the file.
+LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resolution = kDefaultPatchResolution);
+
+// The polygons of an already-loaded file: a mesh as is, patches tessellated; throws for a curve.
+PolygonMesh polygons_of(const LoadedFile& file, const std::filesystem::path& path, int patch_resolution);
+
+// The assets/ folder: beside the binary (installed layout), else in the source tree.
+std::filesystem::path assets_dir();
+
+}  // namespace meshedit

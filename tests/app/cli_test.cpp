@@ -1,0 +1,190 @@
+// The real `meshedit` binary on the shell: exit statuses, one-line errors, info/convert/subdivide on
+// procedural meshes and on every course file.
+#include <gtest/gtest.h>
+
+#include <array>
+#include <cstdio>
+#include <fstream>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "core/primitives.h"
+#include "io/mesh_file.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+
+struct Run {
+  int status = -1;
+  std::string out, err;
+};
+
+std::string slurp(const fs::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  std::stringstream s;
+  s << in.rdbuf();
+  return s.str();
+}
+
+std::string quoted(const std::string& s) {
+  std::string q = "'";
+  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
+  return q + "'";
+}
+
+// Runs the meshedit binary with `args` (each shell-quoted), capturing stdout, stderr and the status.
+Run meshedit(const std::vector<std::string>& args) {
+  const fs::path dir = testing::scratch_dir() / "run";
+  fs::create_directories(dir);
+  std::string command = quoted(MESHEDIT_BINARY);
+  for (const auto& a : args) command += " " + quoted(a);
+  command += " >" + quoted((dir / "out").string()) + " 2>" + quoted((dir / "err").string());
+  Run run;
+  const int raw = std::system(command.c_str());
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  run.out = slurp(dir / "out");
+  run.err = slurp(dir / "err");
+  return run;
+}
+
+nlohmann::json info_json(const fs::path& file) {
+  const Run run = meshedit({"info", file.string(), "--json"});
+  EXPECT_EQ(run.status, 0) << run.err;
+  return nlohmann::json::parse(run.out);
+}
+
+size_t line_count(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
+
+TEST(Cli, HelpAndUnknownCommand) {
+  const Run help = meshedit({"--help"});
+  EXPECT_EQ(help.status, 0);
+  EXPECT_NE(help.out.find("subdivide IN -n LEVELS"), std::string::npos);
+  const Run bad = meshedit({"frobnicate"});
+  EXPECT_EQ(bad.status, 2);
+  EXPECT_EQ(bad.err, "meshedit: unknown command 'frobnicate' (see meshedit --help)\n");
+}
+
+TEST(Cli, InfoOnAClosedMesh) {
+  const fs::path file = testing::scratch_dir() / "torus.obj";
+  save_mesh(file, make_torus(8, 4));
+  const nlohmann::json j = info_json(file);
+  EXPECT_EQ(j["kind"], "mesh");
+  EXPECT_EQ(j["vertices"], 32);
+  EXPECT_EQ(j["edges"], 96);
+  EXPECT_EQ(j["faces"], 64);
+  EXPECT_EQ(j["halfedges"], 192);
+  EXPECT_EQ(j["boundary_loops"], 0);
+  EXPECT_EQ(j["euler_characteristic"], 0);
+  EXPECT_EQ(j["genus"], 1);
+  EXPECT_EQ(j["valid"], true);
+
+  const Run text = meshedit({"info", file.string()});
+  EXPECT_EQ(text.status, 0);
+  EXPECT_NE(text.out.find("Euler characteristic  0 (closed)"), std::string::npos) << text.out;
+  EXPECT_NE(text.out.find("validation            valid"), std::string::npos) << text.out;
+}
+
+TEST(Cli, ErrorsAreOneLineAndNonZero) {
+  const fs::path dir = testing::scratch_dir();
+  const fs::path broken = dir / "broken.obj";
+  std::ofstream(broken) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2 9\n";
+  const fs::path non_manifold = dir / "three_faces.obj";
+  std::ofstream(non_manifold) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nv 0 -1 0\n"
+                              << "f 1 2 3\nf 2 1 4\nf 1 2 5\n";
+  for (const auto& args : std::vector<std::vector<std::string>>{
+           {"info", (dir / "missing.obj").string()},
+           {"info", broken.string()},
+           {"info", non_manifold.string()},
+           {"info", (dir / "x.xyz").string()},
+           {"subdivide", broken.string(), "-n", "1", "-o", (dir / "o.obj").string()},
+           {"subdivide", non_manifold.string(), "-n", "two", "-o", (dir / "o.obj").string()},
+           {"convert", broken.string()},
+       }) {
+    const Run run = meshedit(args);
+    EXPECT_NE(run.status, 0) << args[0] << " " << args[1];
+    EXPECT_EQ(line_count(run.err), 1u) << run.err;
+    EXPECT_EQ(run.err.rfind("meshedit: ", 0), 0u) << run.err;
+  }
+  const Run three = meshedit({"info", non_manifold.string()});
+  EXPECT_NE(three.err.find("three_faces.obj"), std::string::npos) << three.err;
+  EXPECT_NE(three.err.find("shared by 3 faces"), std::string::npos) << three.err;
+}
+
+TEST(Cli, SubdivideWritesTheRefinedMesh) {
+  const fs::path dir = testing::scratch_dir();
+  save_mesh(dir / "cube.obj", make_cube());
+  const Run run = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "2", "--weights", "loop", "-o",
+                            (dir / "cube2.obj").string()});
+  ASSERT_EQ(run.status, 0) << run.err;
+  const nlohmann::json j = info_json(dir / "cube2.obj");
+  // V' = V + E, F' = 4F per level: 8 -> 26 -> 98 vertices, 12 -> 48 -> 192 faces.
+  EXPECT_EQ(j["vertices"], 98);
+  EXPECT_EQ(j["faces"], 192);
+  EXPECT_EQ(j["valid"], true);
+  EXPECT_EQ(j["genus"], 0);
+}
+
+TEST(Cli, ConvertRoundTripsBetweenFormats) {
+  const fs::path dir = testing::scratch_dir();
+  save_mesh(dir / "ico.obj", make_icosahedron());
+  for (const char* ext : {".gltf", ".glb", ".obj"}) {
+    const fs::path out = dir / (std::string("ico_out") + ext);
+    const Run run = meshedit({"convert", (dir / "ico.obj").string(), out.string()});
+    ASSERT_EQ(run.status, 0) << run.err;
+    const nlohmann::json j = info_json(out);
+    EXPECT_EQ(j["vertices"], 12) << ext;
+    EXPECT_EQ(j["faces"], 20) << ext;
+    EXPECT_EQ(j["valid"], true) << ext;
+  }
+}
+
+TEST(Cli, InfoAndSubdivideOnEveryCourseFile) {
+  MESHEDIT_REQUIRE_COURSE_DATA(data);
+  const fs::path dir = testing::scratch_dir();
+  size_t files = 0;
+  for (const char* folder : {"dae", "bez", "bzc"}) {
+    for (const auto& entry : fs::directory_iterator(data / folder)) {
+      const fs::path file = entry.path();
+      SCOPED_TRACE(file.string());
+      ++files;
+      const nlohmann::json j = info_json(file);
+      if (j["kind"] == "curve") {
+        EXPECT_GE(j["points"].get<int>(), 4);
+        continue;
+      }
+      const nlohmann::json m = j["kind"] == "patches" ? j["tessellation"] : j;
+      ASSERT_TRUE(m.is_object()) << j.dump();
+      EXPECT_EQ(m["valid"], true);
+      const fs::path out = dir / (file.stem().string() + "_1.obj");
+      const Run run = meshedit({"subdivide", file.string(), "-n", "1", "-o", out.string()});
+      ASSERT_EQ(run.status, 0) << run.err;
+      const nlohmann::json s = info_json(out);
+      EXPECT_EQ(s["vertices"], m["vertices"].get<int>() + m["edges"].get<int>());
+      EXPECT_EQ(s["faces"], 4 * m["faces"].get<int>());
+      EXPECT_EQ(s["boundary_loops"], m["boundary_loops"]);
+      EXPECT_EQ(s["valid"], true);
+    }
+  }
+  EXPECT_EQ(files, 12u);
+  const nlohmann::json teapot = info_json(data / "dae" / "teapot.dae");
+  EXPECT_EQ(teapot["vertices"], 1232);
+  EXPECT_EQ(teapot["faces"], 2464);
+  EXPECT_EQ(info_json(data / "bez" / "teapot.bez")["patches"], 32);
+  EXPECT_GT(info_json(data / "dae" / "beetle.dae")["boundary_loops"].get<int>(), 0);
+}
+
+TEST(Cli, DemoRunsOnTheProjectTeapot) {
+  const Run run = meshedit({"demo"});
+  ASSERT_EQ(run.status, 0) << run.err;
+  EXPECT_NE(run.out.find("32 Bézier patches"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("validate: valid"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("undo: the mesh is identical"), std::string::npos) << run.out;
+  EXPECT_NE(run.out.find("Loop subdivision in"), std::string::npos) << run.out;
+}
+
+}  // namespace
+}  // namespace meshedit
