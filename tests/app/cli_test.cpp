@@ -7,6 +7,8 @@
 #include <fstream>
 #include <sstream>
 
+#include <unistd.h>
+
 #include <nlohmann/json.hpp>
 
 #include "core/primitives.h"
@@ -18,7 +20,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct Run {
+struct CommandRun {
   int status = -1;
   std::string out, err;
 };
@@ -37,13 +39,14 @@ std::string quoted(const std::string& s) {
 }
 
 // Runs the meshedit binary with `args` (each shell-quoted), capturing stdout, stderr and the status.
-Run meshedit(const std::vector<std::string>& args) {
-  const fs::path dir = testing::scratch_dir() / "run";
+CommandRun meshedit(const std::vector<std::string>& args) {
+  // Outside the test's scratch dir, which scratch_dir() empties on each call.
+  const fs::path dir = fs::temp_directory_path() / "meshedit-tests" / ("cli-run-" + std::to_string(::getpid()));
   fs::create_directories(dir);
   std::string command = quoted(MESHEDIT_BINARY);
   for (const auto& a : args) command += " " + quoted(a);
   command += " >" + quoted((dir / "out").string()) + " 2>" + quoted((dir / "err").string());
-  Run run;
+  CommandRun run;
   const int raw = std::system(command.c_str());
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
   run.out = slurp(dir / "out");
@@ -52,7 +55,7 @@ Run meshedit(const std::vector<std::string>& args) {
 }
 
 nlohmann::json info_json(const fs::path& file) {
-  const Run run = meshedit({"info", file.string(), "--json"});
+  const CommandRun run = meshedit({"info", file.string(), "--json"});
   EXPECT_EQ(run.status, 0) << run.err;
   return nlohmann::json::parse(run.out);
 }
@@ -60,10 +63,10 @@ nlohmann::json info_json(const fs::path& file) {
 size_t line_count(const std::string& text) { return size_t(std::count(text.begin(), text.end(), '\n')); }
 
 TEST(Cli, HelpAndUnknownCommand) {
-  const Run help = meshedit({"--help"});
+  const CommandRun help = meshedit({"--help"});
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("subdivide IN -n LEVELS"), std::string::npos);
-  const Run bad = meshedit({"frobnicate"});
+  const CommandRun bad = meshedit({"frobnicate"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(bad.err, "meshedit: unknown command 'frobnicate' (see meshedit --help)\n");
 }
@@ -82,7 +85,7 @@ TEST(Cli, InfoOnAClosedMesh) {
   EXPECT_EQ(j["genus"], 1);
   EXPECT_EQ(j["valid"], true);
 
-  const Run text = meshedit({"info", file.string()});
+  const CommandRun text = meshedit({"info", file.string()});
   EXPECT_EQ(text.status, 0);
   EXPECT_NE(text.out.find("Euler characteristic  0 (closed)"), std::string::npos) << text.out;
   EXPECT_NE(text.out.find("validation            valid"), std::string::npos) << text.out;
@@ -104,12 +107,12 @@ TEST(Cli, ErrorsAreOneLineAndNonZero) {
            {"subdivide", non_manifold.string(), "-n", "two", "-o", (dir / "o.obj").string()},
            {"convert", broken.string()},
        }) {
-    const Run run = meshedit(args);
+    const CommandRun run = meshedit(args);
     EXPECT_NE(run.status, 0) << args[0] << " " << args[1];
     EXPECT_EQ(line_count(run.err), 1u) << run.err;
     EXPECT_EQ(run.err.rfind("meshedit: ", 0), 0u) << run.err;
   }
-  const Run three = meshedit({"info", non_manifold.string()});
+  const CommandRun three = meshedit({"info", non_manifold.string()});
   EXPECT_NE(three.err.find("three_faces.obj"), std::string::npos) << three.err;
   EXPECT_NE(three.err.find("shared by 3 faces"), std::string::npos) << three.err;
 }
@@ -117,7 +120,7 @@ TEST(Cli, ErrorsAreOneLineAndNonZero) {
 TEST(Cli, SubdivideWritesTheRefinedMesh) {
   const fs::path dir = testing::scratch_dir();
   save_mesh(dir / "cube.obj", make_cube());
-  const Run run = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "2", "--weights", "loop", "-o",
+  const CommandRun run = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "2", "--weights", "loop", "-o",
                             (dir / "cube2.obj").string()});
   ASSERT_EQ(run.status, 0) << run.err;
   const nlohmann::json j = info_json(dir / "cube2.obj");
@@ -133,7 +136,7 @@ TEST(Cli, ConvertRoundTripsBetweenFormats) {
   save_mesh(dir / "ico.obj", make_icosahedron());
   for (const char* ext : {".gltf", ".glb", ".obj"}) {
     const fs::path out = dir / (std::string("ico_out") + ext);
-    const Run run = meshedit({"convert", (dir / "ico.obj").string(), out.string()});
+    const CommandRun run = meshedit({"convert", (dir / "ico.obj").string(), out.string()});
     ASSERT_EQ(run.status, 0) << run.err;
     const nlohmann::json j = info_json(out);
     EXPECT_EQ(j["vertices"], 12) << ext;
@@ -160,7 +163,7 @@ TEST(Cli, InfoAndSubdivideOnEveryCourseFile) {
       ASSERT_TRUE(m.is_object()) << j.dump();
       EXPECT_EQ(m["valid"], true);
       const fs::path out = dir / (file.stem().string() + "_1.obj");
-      const Run run = meshedit({"subdivide", file.string(), "-n", "1", "-o", out.string()});
+      const CommandRun run = meshedit({"subdivide", file.string(), "-n", "1", "-o", out.string()});
       ASSERT_EQ(run.status, 0) << run.err;
       const nlohmann::json s = info_json(out);
       EXPECT_EQ(s["vertices"], m["vertices"].get<int>() + m["edges"].get<int>());
@@ -178,7 +181,7 @@ TEST(Cli, InfoAndSubdivideOnEveryCourseFile) {
 }
 
 TEST(Cli, DemoRunsOnTheProjectTeapot) {
-  const Run run = meshedit({"demo"});
+  const CommandRun run = meshedit({"demo"});
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_NE(run.out.find("32 Bézier patches"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("validate: valid"), std::string::npos) << run.out;
