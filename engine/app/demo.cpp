@@ -61,6 +61,11 @@ int run_demo(const std::vector<std::string>& arguments, std::ostream& out) {
 
   start = Clock::now();
   const PolygonMesh polygons = polygons_of(file, path, kDefaultPatchResolution);
+  if (file.kind == FileKind::Patches) {
+    out << "tessellated " << kDefaultPatchResolution << "x" << kDefaultPatchResolution << " per patch and welded in "
+        << ms(start) << " ms: " << polygons.num_vertices() << " vertices, " << polygons.num_faces() << " triangles\n";
+  }
+  start = Clock::now();
   HalfedgeMesh mesh = build_halfedge_mesh(polygons);
   const MeshStats stats = compute_stats(mesh);
   out << "half-edge mesh built in " << ms(start) << " ms: " << stats.vertices << " vertices, " << stats.edges
