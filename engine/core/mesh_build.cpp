@@ -264,11 +264,13 @@ HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
   for (uint32_t v = 0; v < in.num_vertices(); ++v) {
     if (!m.v_alive_[v]) continue;
     const uint32_t outgoing = c.out_start[v + 1] - c.out_start[v] + (open_incoming[v] != kNone ? 1 : 0);
-    std::vector<uint32_t> fan;
-    m.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
-      if (!m.face(h).is_boundary()) fan.push_back(m.face(h).slot());
-    });
-    if (fan.size() + (open_incoming[v] != kNone ? 1 : 0) != outgoing) {
+    uint32_t walked = 0;
+    m.for_each_outgoing(VertexId(v), [&](HalfedgeId) { ++walked; });
+    if (walked != outgoing) {
+      std::vector<uint32_t> fan;  // only on the error path: which faces the fan reached
+      m.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
+        if (!m.face(h).is_boundary()) fan.push_back(m.face(h).slot());
+      });
       std::vector<uint32_t> others;
       for (uint32_t i = c.out_start[v]; i < c.out_start[v + 1]; ++i) {
         const uint32_t f = c.face_of[c.out[i]];
