@@ -1,0 +1,453 @@
+// The curve view's state changes (pure) and its ImGui window (ImDrawList only, no GL).
+// The drawing code never changes the state except through the functions declared in curve_editor.h,
+// so what the tests prove about those functions is what the window does.
+#include "ui/curve_editor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <string>
+#include <utility>
+
+#include <glm/geometric.hpp>
+#include <imgui.h>
+
+namespace meshedit {
+
+namespace {
+
+bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
+
+int point_count(const CurveEditorState& state) { return static_cast<int>(state.curve.control_points.size()); }
+
+// Keeps levels_shown inside [0, n-1] whatever was written to it directly.
+int clamped_levels(const CurveEditorState& state) {
+  return std::clamp(state.levels_shown, 0, std::max(0, point_count(state) - 1));
+}
+
+// Closest parameter on segment [a, b] to p, in [0, 1]; 0 for a degenerate segment.
+double closest_parameter(glm::dvec2 a, glm::dvec2 b, glm::dvec2 p) {
+  const glm::dvec2 d = b - a;
+  const double len2 = glm::dot(d, d);
+  if (!(len2 > 0.0)) return 0.0;
+  return std::clamp(glm::dot(p - a, d) / len2, 0.0, 1.0);
+}
+
+}  // namespace
+
+// ---- view transform --------------------------------------------------------------------------------
+
+glm::dvec2 curve_to_screen(const CurveView& view, glm::dvec2 p) {
+  const glm::dvec2 mid = view.canvas_min + 0.5 * view.canvas_size;
+  return {mid.x + (p.x - view.centre.x) * view.scale, mid.y - (p.y - view.centre.y) * view.scale};
+}
+
+glm::dvec2 screen_to_curve(const CurveView& view, glm::dvec2 s) {
+  const glm::dvec2 mid = view.canvas_min + 0.5 * view.canvas_size;
+  return {view.centre.x + (s.x - mid.x) / view.scale, view.centre.y - (s.y - mid.y) / view.scale};
+}
+
+CurveRegion fit_region(std::span<const glm::dvec2> points, double margin) {
+  glm::dvec2 lo(std::numeric_limits<double>::infinity());
+  glm::dvec2 hi(-std::numeric_limits<double>::infinity());
+  for (const glm::dvec2& p : points) {
+    if (!finite(p)) continue;
+    lo = glm::min(lo, p);
+    hi = glm::max(hi, p);
+  }
+  if (!(lo.x <= hi.x)) return CurveRegion{};  // no finite point
+  double size = std::max(hi.x - lo.x, hi.y - lo.y);
+  if (!(size > 0.0)) {
+    // Coincident points: a unit box around them, so the view has a scale at all.
+    const glm::dvec2 mid = 0.5 * (lo + hi);
+    return CurveRegion{mid - glm::dvec2(0.5), mid + glm::dvec2(0.5)};
+  }
+  const double pad = std::max(margin, 0.0) * size;
+  return CurveRegion{lo - glm::dvec2(pad), hi + glm::dvec2(pad)};
+}
+
+CurveView view_for(const CurveRegion& region, glm::dvec2 canvas_min, glm::dvec2 canvas_size) {
+  CurveView view;
+  view.canvas_min = canvas_min;
+  view.canvas_size = glm::max(canvas_size, glm::dvec2(1.0));
+  view.centre = 0.5 * (region.min + region.max);
+  const glm::dvec2 extent = region.max - region.min;
+  const double sx = extent.x > 0.0 ? view.canvas_size.x / extent.x : std::numeric_limits<double>::infinity();
+  const double sy = extent.y > 0.0 ? view.canvas_size.y / extent.y : std::numeric_limits<double>::infinity();
+  const double scale = std::min(sx, sy);
+  view.scale = std::isfinite(scale) && scale > 0.0 ? scale : 1.0;
+  return view;
+}
+
+// ---- state -----------------------------------------------------------------------------------------
+
+BezierCurve default_curve() {
+  return BezierCurve{{{0.1, 0.2}, {0.25, 0.8}, {0.75, 0.85}, {0.9, 0.3}}};
+}
+
+CurveEditorState make_curve_editor(BezierCurve curve) {
+  CurveEditorState state;
+  state.curve = curve.control_points.empty() ? default_curve() : std::move(curve);
+  fit_view(state);
+  return state;
+}
+
+void step_level(CurveEditorState& state) {
+  const int n = point_count(state);
+  state.levels_shown = n > 0 ? (clamped_levels(state) + 1) % n : 0;
+}
+
+void toggle_curve(CurveEditorState& state) { state.show_curve = !state.show_curve; }
+
+void toggle_split(CurveEditorState& state) { state.show_split = !state.show_split; }
+
+void set_t(CurveEditorState& state, double t) {
+  if (std::isnan(t)) return;
+  state.t = std::clamp(t, 0.0, 1.0);
+}
+
+void scroll_t(CurveEditorState& state, double offset) { set_t(state, state.t + kCurveScrollStep * offset); }
+
+void fit_view(CurveEditorState& state) {
+  state.region = fit_region(state.curve.control_points);
+  state.view = view_for(state.region, state.view.canvas_min, state.view.canvas_size);
+}
+
+int add_point(CurveEditorState& state, glm::dvec2 position) {
+  if (!finite(position)) return -1;
+  auto& points = state.curve.control_points;
+  const int n = point_count(state);
+  int index = n;
+  if (n >= 2) {
+    int best = 0;
+    double best_s = 0.0;
+    double best_d2 = std::numeric_limits<double>::infinity();
+    for (int i = 0; i + 1 < n; ++i) {
+      const double s = closest_parameter(points[i], points[i + 1], position);
+      const glm::dvec2 q = points[i] + s * (points[i + 1] - points[i]);
+      const double d2 = glm::dot(position - q, position - q);
+      if (d2 < best_d2) {
+        best = i;
+        best_s = s;
+        best_d2 = d2;
+      }
+    }
+    if (best == 0 && best_s == 0.0) {
+      index = 0;
+    } else if (best == n - 2 && best_s == 1.0) {
+      index = n;
+    } else {
+      index = best + 1;
+    }
+  }
+  points.insert(points.begin() + index, position);
+  if (state.hovered >= index) ++state.hovered;
+  if (state.dragged >= index) ++state.dragged;
+  return index;
+}
+
+int add_point_default(CurveEditorState& state) {
+  const auto& points = state.curve.control_points;
+  if (points.empty()) return add_point(state, glm::dvec2(0.5));
+  if (points.size() == 1) return add_point(state, points[0] + glm::dvec2(0.1, 0.0));
+  return add_point(state, 0.5 * (points[points.size() - 2] + points.back()));
+}
+
+bool remove_point(CurveEditorState& state, int index) {
+  const int n = point_count(state);
+  if (index < 0 || index >= n || n <= 2) return false;
+  state.curve.control_points.erase(state.curve.control_points.begin() + index);
+  const auto follow = [index](int& i) {
+    if (i == index) {
+      i = -1;
+    } else if (i > index) {
+      --i;
+    }
+  };
+  follow(state.hovered);
+  follow(state.dragged);
+  state.levels_shown = clamped_levels(state);
+  return true;
+}
+
+bool drag_point(CurveEditorState& state, int index, glm::dvec2 position) {
+  if (index < 0 || index >= point_count(state) || !finite(position)) return false;
+  state.curve.control_points[index] = position;
+  return true;
+}
+
+int hit_test(const CurveEditorState& state, glm::dvec2 screen_point, double radius) {
+  int best = -1;
+  double best_d2 = radius * radius;
+  for (int i = 0; i < point_count(state); ++i) {
+    const glm::dvec2 d = curve_to_screen(state.view, state.curve.control_points[i]) - screen_point;
+    const double d2 = glm::dot(d, d);
+    if (d2 <= best_d2) {  // `<=`: a later (drawn on top) point wins a tie
+      best = i;
+      best_d2 = d2;
+    }
+  }
+  return best;
+}
+
+// ---- what is drawn ---------------------------------------------------------------------------------
+
+std::vector<std::vector<glm::dvec2>> all_levels(const CurveEditorState& state) {
+  return de_casteljau_levels(state.curve.control_points, state.t);
+}
+
+std::vector<std::vector<glm::dvec2>> shown_levels(const CurveEditorState& state) {
+  auto levels = all_levels(state);
+  const size_t keep = static_cast<size_t>(clamped_levels(state)) + 1;
+  if (levels.size() > keep) levels.resize(keep);
+  return levels;
+}
+
+CurveSplit<glm::dvec2> split_halves(const CurveEditorState& state) {
+  return split_curve(state.curve.control_points, state.t);
+}
+
+std::vector<glm::dvec2> sample_curve(std::span<const glm::dvec2> points, int segments) {
+  std::vector<glm::dvec2> samples;
+  if (points.empty()) return samples;
+  segments = std::max(segments, 1);
+  samples.reserve(static_cast<size_t>(segments) + 1);
+  for (int i = 0; i <= segments; ++i) samples.push_back(evaluate_curve(points, static_cast<double>(i) / segments));
+  return samples;
+}
+
+// ---- mouse -----------------------------------------------------------------------------------------
+
+void handle_canvas_input(CurveEditorState& state, const CanvasInput& input) {
+  if (state.dragged >= point_count(state)) state.dragged = -1;
+  if (state.dragged >= 0) {
+    if (input.left_down) {
+      drag_point(state, state.dragged, screen_to_curve(state.view, input.mouse) + state.drag_offset);
+      state.hovered = state.dragged;
+      return;
+    }
+    state.dragged = -1;
+  }
+  if (!input.hovered) {
+    state.hovered = -1;
+    return;
+  }
+  int hit = hit_test(state, input.mouse);
+  if (input.left_double_clicked && hit < 0) {
+    hit = add_point(state, screen_to_curve(state.view, input.mouse));
+  } else if (input.left_pressed && hit >= 0) {
+    state.dragged = hit;
+    state.drag_offset = state.curve.control_points[hit] - screen_to_curve(state.view, input.mouse);
+  } else if (input.right_pressed && hit >= 0) {
+    if (remove_point(state, hit)) hit = -1;
+  }
+  if (input.wheel != 0.0) scroll_t(state, input.wheel);
+  state.hovered = hit;
+}
+
+// ---- ImGui -----------------------------------------------------------------------------------------
+
+namespace {
+
+constexpr ImU32 kControlColour = IM_COL32(255, 255, 255, 255);
+constexpr ImU32 kFinalColour = IM_COL32(255, 60, 60, 255);
+constexpr ImU32 kCurveColour = IM_COL32(60, 220, 90, 255);
+constexpr ImU32 kHoverColour = IM_COL32(60, 220, 90, 255);  // the course draws the grabbed point green
+// The halves' polygons run along the level lines (they are made of the pyramid's edge points), so they
+// are drawn as wide translucent bands underneath, with rings on their points above everything.
+constexpr ImU32 kSplitLeftColour = IM_COL32(255, 170, 60, 120);
+constexpr ImU32 kSplitRightColour = IM_COL32(170, 120, 255, 120);
+constexpr ImU32 kSplitLeftRing = IM_COL32(255, 170, 60, 255);
+constexpr ImU32 kSplitRightRing = IM_COL32(170, 120, 255, 255);
+constexpr ImU32 kBackground = IM_COL32(18, 18, 24, 255);
+constexpr ImU32 kFrameColour = IM_COL32(70, 70, 80, 255);
+
+// Level k >= 1; level 0 is the control polygon (white).
+ImU32 level_colour(int k) {
+  static constexpr ImU32 kPalette[] = {
+      IM_COL32(90, 150, 255, 255), IM_COL32(240, 210, 60, 255), IM_COL32(40, 210, 230, 255),
+      IM_COL32(230, 100, 230, 255), IM_COL32(250, 140, 110, 255), IM_COL32(180, 180, 255, 255),
+  };
+  if (k <= 0) return kControlColour;
+  return kPalette[(k - 1) % (sizeof(kPalette) / sizeof(kPalette[0]))];
+}
+
+ImVec2 to_imvec(glm::dvec2 p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); }
+
+void draw_polyline(ImDrawList* dl, const CurveView& view, std::span<const glm::dvec2> points, ImU32 colour,
+                   float thickness) {
+  if (points.size() < 2) return;
+  std::vector<ImVec2> screen;
+  screen.reserve(points.size());
+  for (const glm::dvec2& p : points) screen.push_back(to_imvec(curve_to_screen(view, p)));
+  dl->AddPolyline(screen.data(), static_cast<int>(screen.size()), colour, ImDrawFlags_None, thickness);
+}
+
+void draw_points(ImDrawList* dl, const CurveView& view, std::span<const glm::dvec2> points, ImU32 colour,
+                 float radius) {
+  for (const glm::dvec2& p : points) dl->AddCircleFilled(to_imvec(curve_to_screen(view, p)), radius, colour);
+}
+
+std::string format_points(std::span<const glm::dvec2> points) {
+  std::string text;
+  char buffer[64];
+  for (const glm::dvec2& p : points) {
+    std::snprintf(buffer, sizeof(buffer), "%s(%.4f, %.4f)", text.empty() ? "" : "  ", p.x, p.y);
+    text += buffer;
+  }
+  return text;
+}
+
+void draw_canvas(CurveEditorState& state, ImVec2 size) {
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
+
+  if (ImGui::IsMousePosValid()) {
+    const ImGuiIO& io = ImGui::GetIO();
+    CanvasInput input;
+    input.mouse = {io.MousePos.x, io.MousePos.y};
+    input.hovered = ImGui::IsItemHovered();
+    input.left_down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+    input.left_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+    input.left_double_clicked = input.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
+    input.right_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right);
+    input.wheel = input.hovered ? io.MouseWheel : 0.0;
+    handle_canvas_input(state, input);
+  }
+
+  const ImVec2 p1(p0.x + size.x, p0.y + size.y);
+  ImDrawList* dl = ImGui::GetWindowDrawList();
+  dl->PushClipRect(p0, p1, true);
+  dl->AddRectFilled(p0, p1, kBackground);
+  dl->AddRect(p0, p1, kFrameColour);
+
+  const auto& points = state.curve.control_points;
+  const CurveView& view = state.view;
+  if (state.show_curve) draw_polyline(dl, view, sample_curve(points), kCurveColour, 2.5f);
+  const CurveSplit<glm::dvec2> halves = state.show_split ? split_halves(state) : CurveSplit<glm::dvec2>{};
+  draw_polyline(dl, view, halves.left, kSplitLeftColour, 8.0f);
+  draw_polyline(dl, view, halves.right, kSplitRightColour, 8.0f);
+  draw_polyline(dl, view, points, kControlColour, 2.0f);
+
+  const auto levels = shown_levels(state);
+  for (size_t k = 1; k < levels.size(); ++k) {
+    const ImU32 colour = level_colour(static_cast<int>(k));
+    draw_polyline(dl, view, levels[k], colour, 1.5f);
+    draw_points(dl, view, levels[k], colour, 4.0f);
+  }
+
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+    const ImVec2 c = to_imvec(curve_to_screen(view, points[i]));
+    const bool grabbed = i == state.dragged;
+    dl->AddCircleFilled(c, grabbed ? 7.0f : 6.0f, grabbed ? kHoverColour : kControlColour);
+    if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, kHoverColour, 0, 2.0f);
+  }
+
+  for (const glm::dvec2& p : halves.left) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, kSplitLeftRing, 0, 2.0f);
+  for (const glm::dvec2& p : halves.right) {
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, kSplitRightRing, 0, 2.0f);
+  }
+
+  if (levels.size() > 1 && levels.back().size() == 1) {
+    const ImVec2 c = to_imvec(curve_to_screen(view, levels.back()[0]));
+    dl->AddCircleFilled(c, 7.0f, kFinalColour);
+    dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), kFinalColour, "C(t)");
+  }
+
+  char status[128];
+  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d", state.t, clamped_levels(state),
+                std::max(0, static_cast<int>(points.size()) - 1));
+  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), IM_COL32(220, 220, 220, 255), status);
+  dl->AddText(ImVec2(p0.x + 8.0f, p1.y - ImGui::GetTextLineHeight() - 6.0f), IM_COL32(150, 150, 160, 255),
+              "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve");
+  dl->PopClipRect();
+}
+
+void draw_level_table(const CurveEditorState& state) {
+  const auto levels = all_levels(state);
+  const int shown = clamped_levels(state);
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
+  if (!ImGui::BeginTable("levels", 2, flags)) return;
+  ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("points", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableHeadersRow();
+  for (int k = 0; k < static_cast<int>(levels.size()); ++k) {
+    const bool is_shown = k <= shown;
+    const ImVec4 colour = is_shown ? ImGui::ColorConvertU32ToFloat4(
+                                         k + 1 == static_cast<int>(levels.size()) && k > 0 ? kFinalColour
+                                                                                          : level_colour(k))
+                                   : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    ImGui::TableNextRow();
+    ImGui::TableNextColumn();
+    ImGui::TextColored(colour, "%d", k);
+    ImGui::TableNextColumn();
+    ImGui::PushStyleColor(ImGuiCol_Text, colour);
+    ImGui::TextWrapped("%s", format_points(levels[k]).c_str());
+    ImGui::PopStyleColor();
+  }
+  if (state.show_split) {
+    const CurveSplit<glm::dvec2> halves = split_halves(state);
+    const std::pair<const char*, const std::vector<glm::dvec2>*> rows[] = {{"left", &halves.left},
+                                                                           {"right", &halves.right}};
+    for (const auto& [name, points] : rows) {
+      const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(points == &halves.left ? kSplitLeftRing : kSplitRightRing);
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      ImGui::TextColored(colour, "%s", name);
+      ImGui::TableNextColumn();
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
+      ImGui::TextWrapped("%s", format_points(*points).c_str());
+      ImGui::PopStyleColor();
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void draw_curve_editor_contents(CurveEditorState& state) {
+  const int n = point_count(state);
+  if (ImGui::Button("Step (E)")) step_level(state);
+  ImGui::SameLine();
+  bool show_curve = state.show_curve;
+  if (ImGui::Checkbox("Curve (C)", &show_curve)) toggle_curve(state);
+  ImGui::SameLine();
+  bool show_split = state.show_split;
+  if (ImGui::Checkbox("Split at t", &show_split)) toggle_split(state);
+  ImGui::SameLine();
+  if (ImGui::Button("Add point")) add_point_default(state);
+  ImGui::SameLine();
+  ImGui::BeginDisabled(n <= 2);
+  if (ImGui::Button("Remove last")) remove_point(state, n - 1);
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Fit view")) fit_view(state);
+
+  double t = state.t;
+  const double t_min = 0.0;
+  const double t_max = 1.0;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - 60.0f, 100.0f));
+  if (ImGui::SliderScalar("t", ImGuiDataType_Double, &t, &t_min, &t_max, "%.4f")) set_t(state, t);
+
+  const ImVec2 avail = ImGui::GetContentRegionAvail();
+  const float line = ImGui::GetFrameHeightWithSpacing();
+  const float table_height = std::clamp(avail.y * 0.3f, 3.0f * line, 12.0f * line);
+  const ImVec2 canvas_size(std::max(avail.x, 240.0f), std::max(avail.y - table_height, 180.0f));
+  draw_canvas(state, canvas_size);
+
+  ImGui::BeginChild("level_table", ImVec2(0.0f, 0.0f), false);
+  draw_level_table(state);
+  ImGui::EndChild();
+}
+
+void draw_curve_editor(CurveEditorState& state, const char* title) {
+  // The wheel belongs to t over the canvas: the window itself must not scroll with it.
+  if (ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar)) {
+    draw_curve_editor_contents(state);
+  }
+  ImGui::End();
+}
+
+}  // namespace meshedit

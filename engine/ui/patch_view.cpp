@@ -1,0 +1,250 @@
+// The patch view's state, its tessellation cache, the probe overlay geometry (pure) and its ImGui panel.
+// The cache compares the patches bit for bit (memcmp), so NaN control points do not force a rebuild
+// every frame and an idle frame costs one comparison of the control points, never a tessellation.
+#include "ui/patch_view.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <iterator>
+#include <span>
+#include <type_traits>
+
+#include <imgui.h>
+
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+
+namespace meshedit {
+
+static_assert(std::is_trivially_copyable_v<BezierPatch> && sizeof(BezierPatch) == 16 * sizeof(glm::dvec3),
+              "patches are compared with memcmp");
+
+namespace {
+
+const glm::vec4 kNetColour{0.55f, 0.55f, 0.62f, 1.0f};
+const glm::vec4 kSelectedNetColour{1.0f, 1.0f, 1.0f, 1.0f};
+const glm::vec4 kRowCurveColour{1.0f, 0.6f, 0.15f, 1.0f};
+const glm::vec4 kRowPointColour{1.0f, 0.9f, 0.2f, 1.0f};
+const glm::vec4 kColumnPolygonColour{0.2f, 0.85f, 1.0f, 1.0f};
+const glm::vec4 kColumnLevelColours[2] = {{0.35f, 0.55f, 1.0f, 1.0f}, {0.9f, 0.4f, 0.9f, 1.0f}};
+const glm::vec4 kColumnCurveColour{0.3f, 0.95f, 0.4f, 1.0f};
+const glm::vec4 kSurfacePointColour{1.0f, 0.25f, 0.25f, 1.0f};
+
+bool same_patches(const std::vector<BezierPatch>& a, const std::vector<BezierPatch>& b) {
+  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(BezierPatch)) == 0);
+}
+
+std::vector<glm::dvec3> sample_curve3(std::span<const glm::dvec3> points, int segments) {
+  std::vector<glm::dvec3> samples;
+  segments = std::max(segments, 1);
+  samples.reserve(static_cast<size_t>(segments) + 1);
+  for (int i = 0; i <= segments; ++i) samples.push_back(evaluate_curve(points, static_cast<double>(i) / segments));
+  return samples;
+}
+
+OverlayPolyline item(std::vector<glm::dvec3> points, glm::vec4 colour, float width, bool points_only,
+                     OverlayKind kind, std::string label) {
+  return OverlayPolyline{std::move(points), colour, width, points_only, kind, std::move(label)};
+}
+
+}  // namespace
+
+// ---- overlay geometry ------------------------------------------------------------------------------
+
+std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
+                                                   const std::string& label_prefix) {
+  std::vector<OverlayPolyline> net;
+  net.reserve(8);
+  for (int r = 0; r < 4; ++r) {
+    net.push_back(item({patch.at(r, 0), patch.at(r, 1), patch.at(r, 2), patch.at(r, 3)}, colour, width, false,
+                       OverlayKind::ControlNet, label_prefix + "row " + std::to_string(r)));
+  }
+  for (int c = 0; c < 4; ++c) {
+    net.push_back(item({patch.at(0, c), patch.at(1, c), patch.at(2, c), patch.at(3, c)}, colour, width, false,
+                       OverlayKind::ControlNet, label_prefix + "column " + std::to_string(c)));
+  }
+  return net;
+}
+
+std::vector<OverlayPolyline> build_probe_overlay(const BezierPatch& patch, double u, double v, int samples) {
+  std::vector<OverlayPolyline> items = control_net_polylines(patch, kSelectedNetColour, 2.0f, "control net ");
+  for (int r = 0; r < 4; ++r) {
+    const std::span<const glm::dvec3> row(patch.points.data() + r * 4, 4);
+    items.push_back(item(sample_curve3(row, samples), kRowCurveColour, 2.0f, false, OverlayKind::RowCurve,
+                         "row curve " + std::to_string(r)));
+  }
+  const PatchEvaluation eval = evaluate_patch_steps(patch, u, v);
+  const std::vector<glm::dvec3> row_points(eval.row_points.begin(), eval.row_points.end());
+  items.push_back(item(row_points, kRowPointColour, 9.0f, true, OverlayKind::RowPoints, "rows at u"));
+  items.push_back(item(row_points, kColumnPolygonColour, 1.5f, false, OverlayKind::ColumnPolygon,
+                       "column control polygon"));
+  for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
+    items.push_back(item(eval.column_levels[k], kColumnLevelColours[(k - 1) % 2], 1.5f, false,
+                         OverlayKind::ColumnLevel, "column level " + std::to_string(k) + " at v"));
+  }
+  items.push_back(item(sample_curve3(row_points, samples), kColumnCurveColour, 2.5f, false, OverlayKind::ColumnCurve,
+                       "column curve"));
+  items.push_back(item({evaluate_patch(patch, u, v)}, kSurfacePointColour, 12.0f, true, OverlayKind::SurfacePoint,
+                       "P(u, v)"));
+  return items;
+}
+
+// ---- state -----------------------------------------------------------------------------------------
+
+PatchViewState make_patch_view(std::vector<BezierPatch> patches) {
+  PatchViewState state;
+  state.patches = std::move(patches);
+  return state;
+}
+
+void set_resolution(PatchViewState& state, int resolution) {
+  state.resolution = std::clamp(resolution, 1, kMaxPatchViewResolution);
+}
+
+void select_patch(PatchViewState& state, int index) {
+  state.selected_patch = std::clamp(index, 0, std::max(0, static_cast<int>(state.patches.size()) - 1));
+}
+
+void set_probe(PatchViewState& state, double u, double v) {
+  if (!std::isnan(u)) state.u = std::clamp(u, 0.0, 1.0);
+  if (!std::isnan(v)) state.v = std::clamp(v, 0.0, 1.0);
+}
+
+bool update_tessellation(PatchViewState& state) {
+  set_resolution(state, state.resolution);
+  select_patch(state, state.selected_patch);
+  PatchTessellation& cache = state.tessellation;
+  if (cache.resolution == state.resolution && same_patches(cache.source, state.patches)) return false;
+
+  cache.source = state.patches;
+  cache.resolution = state.resolution;
+  cache.polygons = PolygonMesh{};
+  cache.mesh.reset();
+  cache.report = TessellationReport{};
+  cache.error.clear();
+  ++cache.rebuilds;
+  try {
+    cache.polygons = tessellate_patches(state.patches, state.resolution, &cache.report);
+    HalfedgeMesh mesh = build_halfedge_mesh(cache.polygons);
+    mesh.bump_version_above(cache.last_mesh_version);
+    cache.last_mesh_version = mesh.version();
+    cache.mesh = std::move(mesh);
+  } catch (const MeshError& e) {
+    cache.error = e.what();
+  }
+  return true;
+}
+
+std::vector<OverlayPolyline> patch_view_overlay(const PatchViewState& state) {
+  std::vector<OverlayPolyline> items;
+  const int count = static_cast<int>(state.patches.size());
+  if (count == 0) return items;
+  const int selected = std::clamp(state.selected_patch, 0, count - 1);
+  if (state.show_control_net) {
+    for (int p = 0; p < count; ++p) {
+      if (p == selected && state.show_probe) continue;
+      const bool bright = p == selected;
+      auto net = control_net_polylines(state.patches[p], bright ? kSelectedNetColour : kNetColour,
+                                       bright ? 2.0f : 1.0f, "patch " + std::to_string(p) + " ");
+      std::move(net.begin(), net.end(), std::back_inserter(items));
+    }
+  }
+  if (state.show_probe) {
+    auto probe = build_probe_overlay(state.patches[selected], state.u, state.v);
+    std::move(probe.begin(), probe.end(), std::back_inserter(items));
+  }
+  return items;
+}
+
+// ---- ImGui -----------------------------------------------------------------------------------------
+
+namespace {
+
+std::string format_points(std::span<const glm::dvec3> points) {
+  std::string text;
+  char buffer[96];
+  for (const glm::dvec3& p : points) {
+    std::snprintf(buffer, sizeof(buffer), "%s(%.4f, %.4f, %.4f)", text.empty() ? "" : "  ", p.x, p.y, p.z);
+    text += buffer;
+  }
+  return text;
+}
+
+ImVec4 to_imvec(glm::vec4 c) { return ImVec4(c.r, c.g, c.b, c.a); }
+
+void table_row(const char* step, std::span<const glm::dvec3> points, glm::vec4 colour) {
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextColored(to_imvec(colour), "%s", step);
+  ImGui::TableNextColumn();
+  ImGui::TextWrapped("%s", format_points(points).c_str());
+}
+
+void draw_evaluation_table(const PatchViewState& state) {
+  if (state.patches.empty()) return;
+  const PatchEvaluation eval = evaluate_patch_steps(state.patches[state.selected_patch], state.u, state.v);
+  const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
+  if (!ImGui::BeginTable("separable evaluation", 2, flags)) return;
+  ImGui::TableSetupColumn("step", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn("points", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableHeadersRow();
+  char step[64];
+  for (int r = 0; r < 4; ++r) {
+    std::snprintf(step, sizeof(step), "row %d at u", r);
+    table_row(step, std::span<const glm::dvec3>(&eval.row_points[r], 1), kRowPointColour);
+  }
+  for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
+    std::snprintf(step, sizeof(step), "column level %zu at v", k);
+    table_row(step, eval.column_levels[k], kColumnLevelColours[(k - 1) % 2]);
+  }
+  table_row("P(u, v)", std::span<const glm::dvec3>(&eval.point, 1), kSurfacePointColour);
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+void draw_patch_view_panel_contents(PatchViewState& state) {
+  const int count = static_cast<int>(state.patches.size());
+  int resolution = state.resolution;
+  if (ImGui::SliderInt("resolution", &resolution, 1, kMaxPatchViewResolution)) set_resolution(state, resolution);
+  if (count > 0) {
+    int selected = state.selected_patch;
+    char format[48];
+    std::snprintf(format, sizeof(format), "%%d of %d", count);
+    if (ImGui::SliderInt("patch", &selected, 0, count - 1, format)) select_patch(state, selected);
+  } else {
+    ImGui::TextDisabled("no patches");
+  }
+  double u = state.u;
+  double v = state.v;
+  const double zero = 0.0;
+  const double one = 1.0;
+  const bool u_changed = ImGui::SliderScalar("u", ImGuiDataType_Double, &u, &zero, &one, "%.4f");
+  const bool v_changed = ImGui::SliderScalar("v", ImGuiDataType_Double, &v, &zero, &one, "%.4f");
+  if (u_changed || v_changed) set_probe(state, u, v);
+  ImGui::Checkbox("control net", &state.show_control_net);
+  ImGui::SameLine();
+  ImGui::Checkbox("surface", &state.show_surface);
+  ImGui::SameLine();
+  ImGui::Checkbox("probe", &state.show_probe);
+
+  update_tessellation(state);
+  const PatchTessellation& cache = state.tessellation;
+  ImGui::Text("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
+              cache.polygons.num_faces(), static_cast<unsigned long long>(cache.rebuilds));
+  if (!cache.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", cache.error.c_str());
+
+  ImGui::Separator();
+  ImGui::TextUnformatted("Separable evaluation: each row at u, then the column through them at v");
+  draw_evaluation_table(state);
+}
+
+void draw_patch_view_panel(PatchViewState& state, const char* title) {
+  if (ImGui::Begin(title)) draw_patch_view_panel_contents(state);
+  ImGui::End();
+  update_tessellation(state);  // a collapsed panel must not leave the surface stale
+}
+
+}  // namespace meshedit

@@ -1,0 +1,127 @@
+// The patch view: bicubic Bézier patches (.bez) as a tessellated surface with their control nets, and a
+// (u, v) probe that shows the separable evaluation the course teaches: each row of the selected patch
+// evaluated at u, then the column curve through those four points evaluated at v.
+//
+// This module builds data and an ImGui panel only; the app hands the mesh to MeshRenderer and the
+// overlay polylines to the renderer's overlay drawing.
+//
+// Invariants kept by the functions below (not by direct writes to the fields):
+// - resolution is in [1, kMaxPatchViewResolution]; u and v are finite and in [0, 1];
+// - selected_patch is a valid index, or 0 when there are no patches;
+// - the tessellation cache is rebuilt only when the patches (compared bit for bit) or the resolution
+//   differ from what it was built from; each rebuilt HalfedgeMesh gets a version() above every earlier
+//   one, so a renderer caching by version never mistakes a new mesh for the old one.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+#include <glm/vec4.hpp>
+
+#include "core/bezier.h"
+#include "core/halfedge_mesh.h"
+#include "core/patch_tessellation.h"
+#include "core/polygon_mesh.h"
+
+namespace meshedit {
+
+inline constexpr int kMaxPatchViewResolution = 64;
+inline constexpr int kProbeCurveSamples = 32;  // segments of each sampled row and column curve
+
+// ---- overlay geometry ------------------------------------------------------------------------------
+
+enum class OverlayKind {
+  ControlNet,     // a row or column of a 4x4 control net (4 points)
+  RowCurve,       // row r of the probed patch as a curve in u (sampled)
+  RowPoints,      // the four row curves evaluated at u (points only)
+  ColumnPolygon,  // the control polygon of the column curve: the four row points
+  ColumnLevel,    // a de Casteljau level of the column curve at v (3 points, then 2)
+  ColumnCurve,    // the column curve through the row points, in v (sampled)
+  SurfacePoint,   // P(u, v) (one point)
+};
+
+// One thing to draw over the surface, in the patches' own coordinates.
+struct OverlayPolyline {
+  std::vector<glm::dvec3> points;
+  glm::vec4 colour{1.0f};
+  float width = 1.0f;        // line width in pixels, or point diameter when points_only
+  bool points_only = false;  // draw the points as dots, no lines between them
+  OverlayKind kind = OverlayKind::ControlNet;
+  std::string label;         // for a legend or a tooltip: "row 2 at u", "P(u, v)"
+};
+
+// The 8 polylines of a control net: rows 0..3 (at(r, 0..3)) then columns 0..3 (at(0..3, c)), each
+// labelled "<prefix>row r" / "<prefix>column c".
+std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
+                                                   const std::string& label_prefix = "");
+
+// Everything the probe shows for `patch` at (u, v) (not clamped here), in this order:
+//   8 ControlNet polylines (control_net_polylines),
+//   4 RowCurve polylines (samples + 1 points each, row r's curve from at(r,0) to at(r,3)),
+//   1 RowPoints item (evaluate_patch_steps(patch, u, v).row_points, in row order),
+//   1 ColumnPolygon polyline (the same 4 points),
+//   2 ColumnLevel polylines (column_levels[1] and [2]: 3 and 2 points),
+//   1 ColumnCurve polyline (samples + 1 points, from row point 0 to row point 3),
+//   1 SurfacePoint item (evaluate_patch(patch, u, v)).
+std::vector<OverlayPolyline> build_probe_overlay(const BezierPatch& patch, double u, double v,
+                                                 int samples = kProbeCurveSamples);
+
+// ---- state -----------------------------------------------------------------------------------------
+
+// The tessellated surface and what it was built from.
+struct PatchTessellation {
+  std::vector<BezierPatch> source;   // the patches it was built from
+  int resolution = 0;                // 0: never built
+  PolygonMesh polygons;
+  std::optional<HalfedgeMesh> mesh;  // empty when the triangles do not form a manifold (see error)
+  TessellationReport report;
+  std::string error;                 // why mesh is empty, when it is
+  uint64_t rebuilds = 0;             // how many times it was built (tests and the panel show it)
+  uint64_t last_mesh_version = 0;    // the largest version() handed out so far
+};
+
+struct PatchViewState {
+  std::vector<BezierPatch> patches;
+  int resolution = kDefaultPatchResolution;
+  int selected_patch = 0;
+  double u = 0.5;
+  double v = 0.5;
+  bool show_control_net = true;
+  bool show_surface = true;
+  bool show_probe = true;
+  PatchTessellation tessellation;
+};
+
+// A state showing `patches`; the tessellation is built on the first update_tessellation.
+PatchViewState make_patch_view(std::vector<BezierPatch> patches);
+
+void set_resolution(PatchViewState& state, int resolution);      // clamped to [1, kMaxPatchViewResolution]
+void select_patch(PatchViewState& state, int index);             // clamped to a valid index
+void set_probe(PatchViewState& state, double u, double v);       // each clamped to [0, 1]; NaN ignored
+
+// Rebuilds state.tessellation if the patches or the resolution changed since it was built (clamping
+// the resolution and selected_patch first). Returns true if it rebuilt. A MeshError from tessellating
+// or building the half-edge mesh is caught: the polygons are kept when there are any, `mesh` is empty
+// and `error` says why.
+bool update_tessellation(PatchViewState& state);
+
+// What the renderer should draw over the surface, following the toggles:
+// - show_control_net: the nets of all patches (dim), except the selected one when the probe shows it;
+// - show_probe: build_probe_overlay of the selected patch at (u, v) (its net included, bright).
+// Empty when there are no patches.
+std::vector<OverlayPolyline> patch_view_overlay(const PatchViewState& state);
+
+// ---- ImGui -----------------------------------------------------------------------------------------
+
+// An ImGui window (`title`): resolution slider, patch selector, u and v sliders, the toggles, the
+// tessellation's numbers, and the table of the separable evaluation (row r at u -> point, then the
+// column's de Casteljau levels at v -> P(u, v)). Calls update_tessellation after its controls, so the
+// mesh is current for this frame's rendering. Needs a current ImGui frame; makes no GL calls.
+void draw_patch_view_panel(PatchViewState& state, const char* title = "Patch view");
+// The same contents drawn into the current window or child.
+void draw_patch_view_panel_contents(PatchViewState& state);
+
+}  // namespace meshedit
