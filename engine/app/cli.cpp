@@ -3,7 +3,9 @@
 #include "app/cli.h"
 
 #include <exception>
+#include <filesystem>
 #include <iostream>
+#include <set>
 #include <string>
 #include <vector>
 
@@ -16,22 +18,39 @@ constexpr const char* kUsage =
     "usage: meshedit <command> [arguments]\n"
     "\n"
     "commands:\n"
+    "  [FILE] [--actions SCRIPT] [--size WxH]  the window (a mesh, a .bez patch set or a .bzc curve)\n"
     "  demo [FILE]                          load a mesh (default: the teapot) and show what the core does\n"
     "  info FILE [--json]                   counts, topology and validation of a mesh, patch or curve file\n"
     "  convert IN OUT                       convert between mesh formats (.obj .dae .gltf .glb .bez -> .obj .gltf .glb)\n"
     "  subdivide IN -n LEVELS [--weights course|loop] -o OUT\n"
     "                                       Loop subdivision, LEVELS times\n"
+    "  render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
+    "                                       a picture without a display (EGL); also --vertices --halfedges\n"
     "\n"
     "options for files with Bézier patches (.bez): --resolution N (tessellation per patch, default 16)\n"
-    "with no command, meshedit runs the demo (the window arrives in a later version)\n";
+    "with no command, or a file as the first argument, meshedit opens the window\n";
+
+// The command the arguments name: a known command word, "window" for no arguments or anything that looks
+// like a file or an option (meshedit teapot.dae, meshedit --actions t.txt), else the word itself, which
+// run_cli reports as unknown.
+std::string command_name(const std::vector<std::string>& args) {
+  static const std::set<std::string> commands = {"demo",   "info", "convert", "subdivide", "render",
+                                                 "help",   "-h",   "--help",  "--version"};
+  if (args.empty()) return "window";
+  const std::string& first = args.front();
+  if (commands.count(first)) return first;
+  const bool looks_like_file = first.find_first_of("./\\") != std::string::npos || std::filesystem::exists(first);
+  return looks_like_file || first.rfind("-", 0) == 0 ? "window" : first;
+}
 
 }  // namespace
 
 int run_cli(int argc, char** argv) {
   std::vector<std::string> args(argv + 1, argv + argc);
-  const std::string command = args.empty() ? "demo" : args.front();
-  if (!args.empty()) args.erase(args.begin());
+  const std::string command = command_name(args);
+  if (command != "window") args.erase(args.begin());
   try {
+    if (command == "window") return run_window(args, std::cout);
     if (command == "-h" || command == "--help" || command == "help") {
       std::cout << kUsage;
       return 0;
@@ -44,6 +63,7 @@ int run_cli(int argc, char** argv) {
     if (command == "info") return run_info(args, std::cout);
     if (command == "convert") return run_convert(args, std::cout);
     if (command == "subdivide") return run_subdivide(args, std::cout);
+    if (command == "render") return run_render(args, std::cout);
     throw UsageError("unknown command '" + command + "'");
   } catch (const UsageError& e) {
     std::cerr << "meshedit: " << e.what() << " (see meshedit --help)\n";

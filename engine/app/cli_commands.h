@@ -15,10 +15,13 @@ struct UsageError : std::runtime_error {
   using std::runtime_error::runtime_error;
 };
 
+// The window (no command, or a file as the first argument).
+int run_window(const std::vector<std::string>& args, std::ostream& out);
 int run_demo(const std::vector<std::string>& args, std::ostream& out);
 int run_info(const std::vector<std::string>& args, std::ostream& out);
 int run_convert(const std::vector<std::string>& args, std::ostream& out);
 int run_subdivide(const std::vector<std::string>& args, std::ostream& out);
+int run_render(const std::vector<std::string>& args, std::ostream& out);
 
 // Argument helpers shared by the commands.
 // Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.

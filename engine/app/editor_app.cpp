@@ -1,0 +1,181 @@
+// EditorApp: documents, the 3D view and the panels (see editor_app.h). Keys and mouse are in
+// editor_input.cpp, menus and the open panel in editor_menus.cpp, id labels in id_labels.cpp.
+#include "app/editor_app.h"
+
+#include <epoxy/gl.h>
+#include <imgui.h>
+
+#include "app/mesh_loading.h"
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+#include "io/file_error.h"
+#include "io/mesh_file.h"
+#include "render/image_file.h"
+#include "render/mesh_geometry.h"
+#include "render/render_target.h"
+
+namespace meshedit {
+
+namespace {
+constexpr size_t kRecentFiles = 8;
+}  // namespace
+
+EditorApp::EditorApp()
+    : mesh_renderer_(std::make_unique<MeshRenderer>(shaders_)),
+      patch_renderer_(std::make_unique<MeshRenderer>(shaders_)),
+      curve_(make_curve_editor(default_curve())) {}
+
+EditorApp::~EditorApp() = default;
+
+void EditorApp::message(Severity severity, const std::string& text) { set_message(doc_, severity, text); }
+
+void EditorApp::remember_recent(const std::filesystem::path& path) {
+  const std::string text = path.string();
+  std::erase(recent_, text);
+  recent_.push_front(text);
+  if (recent_.size() > kRecentFiles) recent_.pop_back();
+}
+
+void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
+  replace_mesh(doc_, std::move(mesh), name);
+  selection_ = {};
+  mode_ = ViewMode::Mesh;
+  title_ = "MeshEdit - " + (name.empty() ? std::string("untitled") : name);
+  mesh_renderer_->update(doc_.mesh);
+  fit_camera();
+}
+
+bool EditorApp::open(const std::filesystem::path& path) {
+  try {
+    const LoadedFile file = load_file(path);
+    switch (file.kind) {
+      case FileKind::Curve:
+        curve_ = make_curve_editor(file.curve);
+        mode_ = ViewMode::Curve;
+        break;
+      case FileKind::Patches:
+        patches_ = make_patch_view(file.patches);
+        mode_ = ViewMode::Patches;
+        camera_.set_up_axis(UpAxis::Z);  // .bez data (the teapot) is Z-up
+        update_tessellation(patches_);
+        if (patches_.tessellation.mesh) {
+          patch_renderer_->update(*patches_.tessellation.mesh);
+          camera_.fit(patch_renderer_->bounds());
+        }
+        break;
+      case FileKind::Mesh: {
+        BuildReport report;
+        HalfedgeMesh mesh;
+        try {
+          mesh = build_halfedge_mesh(file.mesh, &report);
+        } catch (const MeshError& e) {
+          throw MeshError(path.string() + ": " + e.what(), e.element());
+        }
+        camera_.set_up_axis(UpAxis::Y);
+        show_mesh(std::move(mesh), path.string());
+        break;
+      }
+    }
+    title_ = "MeshEdit - " + path.filename().string();
+    remember_recent(path);
+    message(Severity::Info, "opened " + path.string());
+    return true;
+  } catch (const std::exception& e) {
+    message(Severity::Error, e.what());  // the current document stays as it was
+    return false;
+  }
+}
+
+bool EditorApp::save(const std::filesystem::path& path) {
+  try {
+    save_mesh(path, to_polygon_mesh(doc_.mesh));
+    remember_recent(path);
+    message(Severity::Info, "saved " + path.string());
+    return true;
+  } catch (const std::exception& e) {
+    message(Severity::Error, e.what());
+    return false;
+  }
+}
+
+void EditorApp::write_pending_screenshot(int width, int height) {
+  if (!screenshot_path_) return;
+  const std::filesystem::path path = *screenshot_path_;
+  screenshot_path_.reset();
+  try {
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
+    write_png(path, width, height, read_pixels({width, height}));
+    message(Severity::Info, "screenshot saved to " + path.string());
+  } catch (const std::exception& e) {
+    message(Severity::Error, e.what());
+  }
+}
+
+void EditorApp::fit_camera() { camera_.fit(mesh_renderer_->bounds()); }
+
+void EditorApp::frame(int width, int height, float frame_ms) {
+  viewport_width_ = std::max(1, width);
+  viewport_height_ = std::max(1, height);
+  read_mouse_and_keys(width, height);
+
+  const glm::vec4 bg = mesh_renderer_->style().background;
+  glViewport(0, 0, viewport_width_, viewport_height_);
+  glClearColor(bg.r, bg.g, bg.b, bg.a);
+  glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+
+  draw_menu_bar();
+  switch (mode_) {
+    case ViewMode::Mesh:
+      draw_mesh_view(viewport_width_, viewport_height_);
+      break;
+    case ViewMode::Patches:
+      draw_patch_view_panel(patches_);
+      if (patches_.show_surface && patches_.tessellation.mesh) {
+        patch_renderer_->update(*patches_.tessellation.mesh);
+        patch_renderer_->draw(camera_, viewport(), view_options_, {});
+      }
+      break;
+    case ViewMode::Curve: {
+      const ImGuiViewport* main = ImGui::GetMainViewport();
+      const float menu = ImGui::GetFrameHeight();
+      ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + menu));
+      ImGui::SetNextWindowSize(ImVec2(main->Size.x, main->Size.y - menu));
+      draw_curve_editor(curve_);
+      break;
+    }
+  }
+  draw_view_panels(frame_ms);
+  draw_open_panel();
+  draw_help_panel();
+}
+
+void EditorApp::draw_mesh_view(int width, int height) {
+  mesh_renderer_->update(doc_.mesh);
+  Highlights highlights;
+  highlights.hovered = selection_.hovered;
+  highlights.selected = selection_.selected;
+  highlights.changed = doc_.last.index.elements();
+  mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
+  if (show_labels_) draw_id_labels(width, height);
+}
+
+void EditorApp::draw_view_panels(float frame_ms) {
+  if (mode_ != ViewMode::Mesh) return;
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  const float menu = ImGui::GetFrameHeight();
+  const float status = draw_status_bar(doc_, selection_, status_bar_, frame_ms);
+  const float panel_width = std::min(420.0f, main->Size.x * 0.34f);
+  const float height = main->Size.y - menu - status;
+  if (inspector_.open) {
+    ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + menu), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(panel_width * 0.8f, height * 0.55f), ImGuiCond_Appearing);
+    draw_inspector(doc_, selection_, inspector_);
+  }
+  if (tables_.open) {
+    ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x - panel_width, main->Pos.y + menu), ImGuiCond_Appearing);
+    ImGui::SetNextWindowSize(ImVec2(panel_width, height), ImGuiCond_Appearing);
+    draw_pointer_tables(doc_, selection_, tables_);
+  }
+}
+
+}  // namespace meshedit

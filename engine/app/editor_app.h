@@ -1,0 +1,120 @@
+// EditorApp: the window's application state and one frame of it. Owns the document being edited (a mesh,
+// a curve or a set of patches), the camera, the renderers and every panel's state; wires the keys and the
+// mouse to the core through engine/ui's document actions.
+//
+// Invariants:
+// - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
+//   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do.
+// - Opening a file that fails leaves everything as it was and shows the error in the status line.
+// - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
+//   the mesh except through the core's and the renderer's bounded walks.
+// - GL objects are created after the window's context exists and destroyed before it goes.
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "core/bezier.h"
+#include "render/camera.h"
+#include "render/mesh_renderer.h"
+#include "render/shader_library.h"
+#include "render/view_options.h"
+#include "ui/curve_editor.h"
+#include "ui/inspector.h"
+#include "ui/mesh_document.h"
+#include "ui/patch_view.h"
+#include "ui/pointer_tables.h"
+#include "ui/selection.h"
+#include "ui/status_bar.h"
+
+namespace meshedit {
+
+enum class ViewMode { Mesh, Curve, Patches };
+
+// Modifier state of a key press.
+struct KeyMods {
+  bool ctrl = false;
+  bool shift = false;
+};
+
+class EditorApp {
+ public:
+  EditorApp();  // needs a current OpenGL 3.3 core context (throws RenderError if the shaders are missing)
+  ~EditorApp();
+
+  // Opens any supported file; on failure keeps the current document and reports the error. Returns
+  // whether it opened.
+  bool open(const std::filesystem::path& path);
+  // Shows `mesh` as a new document (the default cube when started without a file).
+  void show_mesh(HalfedgeMesh mesh, const std::string& name);
+
+  // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
+  // size, and builds the panels. Call between ImGui::NewFrame() and ImGui::Render().
+  void frame(int framebuffer_width, int framebuffer_height, float frame_ms);
+
+  // The key handlers (GLFW key codes); return whether the key did something.
+  bool handle_key(int key, KeyMods mods);
+  // A left click at framebuffer pixel (x, y): selects what is under it (or clears the selection).
+  void click(int x, int y);
+  void hover(int x, int y);
+
+  // Saves the current mesh (.obj .gltf .glb); reports the outcome in the status line.
+  bool save(const std::filesystem::path& path);
+  // Asks for a PNG of the whole window (3D view and panels) after the current frame is drawn.
+  void request_screenshot(const std::filesystem::path& path) { screenshot_path_ = path; }
+  // Called by the window between ImGui's rendering and the buffer swap.
+  void write_pending_screenshot(int width, int height);
+
+  bool quit_requested() const { return quit_requested_; }
+  ViewMode mode() const { return mode_; }
+  MeshDocument& document() { return doc_; }
+  Selection& selection() { return selection_; }
+  const std::string& title() const { return title_; }
+
+ private:
+  void read_mouse_and_keys(int width, int height);
+  void draw_mesh_view(int width, int height);
+  void draw_id_labels(int width, int height);
+  void draw_menu_bar();
+  void draw_open_panel();
+  void draw_help_panel();
+  void draw_view_panels(float frame_ms);
+  void message(Severity severity, const std::string& text);
+  void remember_recent(const std::filesystem::path& path);
+  void fit_camera();
+  Viewport viewport() const { return {viewport_width_, viewport_height_}; }
+
+  ShaderLibrary shaders_;
+  std::unique_ptr<MeshRenderer> mesh_renderer_;
+  std::unique_ptr<MeshRenderer> patch_renderer_;
+  OrbitCamera camera_;
+  ViewOptions view_options_;
+  bool show_labels_ = true;
+  ViewMode mode_ = ViewMode::Mesh;
+
+  MeshDocument doc_;
+  Selection selection_;
+  InspectorState inspector_;
+  TablesState tables_;
+  StatusBarState status_bar_;
+  CurveEditorState curve_;
+  PatchViewState patches_;
+  LoopWeights loop_weights_ = LoopWeights::Course;
+
+  bool show_open_panel_ = false;
+  bool show_help_ = false;
+  std::string open_path_input_;
+  std::string save_path_input_;
+  std::deque<std::string> recent_;
+  std::string title_ = "MeshEdit";
+
+  int viewport_width_ = 1, viewport_height_ = 1;
+  bool dragging_ = false;
+  std::optional<std::filesystem::path> screenshot_path_;
+  bool quit_requested_ = false;
+};
+
+}  // namespace meshedit

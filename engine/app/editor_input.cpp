@@ -1,0 +1,144 @@
+// Keys and mouse of the window (see editor_app.h). The key map keeps the course viewers' letters:
+//   mesh view   F flip, S split, C collapse, L Loop subdivision (Shift+L: one phase), W wireframe,
+//               Q flat/smooth shading, I inspector, Space reset view, Ctrl+Z undo, Ctrl+Y redo,
+//               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
+//   curve view  E one more de Casteljau level, C the whole curve
+//   everywhere  P screenshot, Ctrl+O open, F1 help, Esc clears the selection
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include <chrono>
+
+#include "app/editor_app.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+std::string timestamped_screenshot_name() {
+  const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
+  char buffer[64];
+  std::strftime(buffer, sizeof buffer, "meshedit-%Y%m%d-%H%M%S.png", std::localtime(&now));
+  return buffer;
+}
+
+}  // namespace
+
+bool EditorApp::handle_key(int key, KeyMods mods) {
+  // Keys that work in every view.
+  if (mods.ctrl && key == GLFW_KEY_O) {
+    show_open_panel_ = true;
+    return true;
+  }
+  if (key == GLFW_KEY_F1) {
+    show_help_ = !show_help_;
+    return true;
+  }
+  if (key == GLFW_KEY_P && !mods.ctrl) {
+    request_screenshot(timestamped_screenshot_name());
+    return true;
+  }
+  if (key == GLFW_KEY_SPACE) {
+    camera_.reset();
+    return true;
+  }
+
+  if (mode_ == ViewMode::Curve) {
+    if (key == GLFW_KEY_E) step_level(curve_);
+    else if (key == GLFW_KEY_C) toggle_curve(curve_);
+    else return false;
+    return true;
+  }
+  if (key == GLFW_KEY_W) {
+    view_options_.wireframe = !view_options_.wireframe;
+    return true;
+  }
+  if (key == GLFW_KEY_Q) {
+    view_options_.smooth_shading = !view_options_.smooth_shading;
+    return true;
+  }
+  if (mode_ != ViewMode::Mesh) return false;
+
+  if (mods.ctrl) {
+    if (key == GLFW_KEY_Z && !mods.shift) return undo_edit(doc_, selection_);
+    if (key == GLFW_KEY_Y || (key == GLFW_KEY_Z && mods.shift)) return redo_edit(doc_, selection_);
+    return false;
+  }
+  const ElementKind selected_kind = selection_.selected.kind;
+  const bool on_halfedge = selection_.selected.valid() && selected_kind == ElementKind::Halfedge;
+  switch (key) {
+    case GLFW_KEY_I: inspector_.open = !inspector_.open; return true;
+    case GLFW_KEY_ESCAPE: selection_.selected = {}; return true;
+    case GLFW_KEY_S: split_selected(doc_, selection_); return true;  // outcome goes to the status line
+    case GLFW_KEY_C: collapse_selected(doc_, selection_); return true;
+    case GLFW_KEY_L:
+      if (mods.shift) loop_subdivide_step(doc_, selection_, loop_weights_);
+      else loop_subdivide_all(doc_, selection_, loop_weights_);
+      return true;
+    case GLFW_KEY_F:
+      // On a halfedge F walks to its face; on an edge (the course's use) it flips.
+      if (on_halfedge) return navigate_selection(doc_, selection_, NavStep::Face);
+      flip_selected(doc_, selection_);
+      return true;
+    case GLFW_KEY_N: return navigate_selection(doc_, selection_, NavStep::Next);
+    case GLFW_KEY_T: return navigate_selection(doc_, selection_, NavStep::Twin);
+    case GLFW_KEY_V: return navigate_selection(doc_, selection_, NavStep::Vertex);
+    case GLFW_KEY_E: return navigate_selection(doc_, selection_, NavStep::Edge);
+    case GLFW_KEY_H: return navigate_selection(doc_, selection_, NavStep::Halfedge);
+    default: return false;
+  }
+}
+
+void EditorApp::click(int x, int y) {
+  if (mode_ != ViewMode::Mesh) return;
+  const ElementRef picked = mesh_renderer_->pick(camera_, viewport(), x, y);
+  if (picked.valid()) {
+    select_element(doc_, selection_, picked);
+    reveal_in_tables(tables_, picked);
+  } else {
+    selection_.selected = {};
+  }
+}
+
+void EditorApp::hover(int x, int y) {
+  if (mode_ != ViewMode::Mesh) return;
+  selection_.hovered = mesh_renderer_->pick(camera_, viewport(), x, y);
+}
+
+void EditorApp::read_mouse_and_keys(int width, int height) {
+  ImGuiIO& io = ImGui::GetIO();
+  if (!io.WantCaptureKeyboard) {
+    const KeyMods mods{io.KeyCtrl, io.KeyShift};
+    for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
+                    GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
+                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1}) {
+      if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
+    }
+  }
+  if (io.WantCaptureMouse || mode_ == ViewMode::Curve) {
+    dragging_ = false;
+    return;
+  }
+  // ImGui gives window coordinates; the renderer wants framebuffer pixels.
+  const float sx = io.DisplaySize.x > 0 ? float(width) / io.DisplaySize.x : 1.0f;
+  const float sy = io.DisplaySize.y > 0 ? float(height) / io.DisplaySize.y : 1.0f;
+  const int x = int(io.MousePos.x * sx), y = int(io.MousePos.y * sy);
+  const ImVec2 delta(io.MouseDelta.x * sx, io.MouseDelta.y * sy);
+  if (io.MouseWheel != 0.0f) camera_.zoom(io.MouseWheel);
+
+  const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||
+                       (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
+  if (panning) {
+    camera_.pan(delta.x, delta.y, viewport());
+  } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
+    camera_.orbit(delta.x, delta.y);
+    dragging_ = true;
+  }
+  if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
+    if (!dragging_ && !io.KeyShift) click(x, y);
+    dragging_ = false;
+  }
+  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) hover(x, y);
+}
+
+}  // namespace meshedit

@@ -1,0 +1,173 @@
+// The menu bar, the open/save panel (a small file browser with a recent list) and the key help.
+#include <imgui.h>
+
+#include <algorithm>
+#include <filesystem>
+
+#include "app/editor_app.h"
+#include "app/mesh_loading.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+bool supported(const std::filesystem::path& path) {
+  std::string ext = path.extension().string();
+  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
+  for (const char* known : {".obj", ".dae", ".gltf", ".glb", ".bez", ".bzc"}) {
+    if (ext == known) return true;
+  }
+  return false;
+}
+
+// ImGui 1.86 has no std::string input without imgui_stdlib; a fixed buffer is enough for a path.
+bool input_path(const char* label, std::string& text) {
+  char buffer[1024];
+  const size_t n = std::min(text.size(), sizeof buffer - 1);
+  std::copy_n(text.data(), n, buffer);
+  buffer[n] = '\0';
+  const bool entered = ImGui::InputText(label, buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
+  text = buffer;
+  return entered;
+}
+
+}  // namespace
+
+void EditorApp::draw_menu_bar() {
+  if (!ImGui::BeginMainMenuBar()) return;
+  if (ImGui::BeginMenu("File")) {
+    if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_panel_ = true;
+    if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
+      for (const std::string& path : std::deque<std::string>(recent_)) {
+        if (ImGui::MenuItem(path.c_str())) open(path);
+      }
+      ImGui::EndMenu();
+    }
+    if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
+    if (ImGui::MenuItem("Screenshot", "P")) request_screenshot("meshedit-screenshot.png");
+    ImGui::Separator();
+    if (ImGui::MenuItem("Quit", "Esc twice")) quit_requested_ = true;
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, doc_.history.can_undo())) undo_edit(doc_, selection_);
+    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, doc_.history.can_redo())) redo_edit(doc_, selection_);
+    ImGui::Separator();
+    if (ImGui::MenuItem("Flip edge", "F")) flip_selected(doc_, selection_);
+    if (ImGui::MenuItem("Split edge", "S")) split_selected(doc_, selection_);
+    if (ImGui::MenuItem("Collapse edge", "C")) collapse_selected(doc_, selection_);
+    if (ImGui::MenuItem("Loop subdivision", "L")) loop_subdivide_all(doc_, selection_, loop_weights_);
+    const std::string phase = "Loop: " + next_loop_phase_label(doc_);
+    if (ImGui::MenuItem(phase.c_str(), "Shift+L")) loop_subdivide_step(doc_, selection_, loop_weights_);
+    bool loop_beta = loop_weights_ == LoopWeights::Loop;
+    if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
+      loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("View")) {
+    ImGui::MenuItem("Wireframe", "W", &view_options_.wireframe);
+    ImGui::MenuItem("Smooth shading", "Q", &view_options_.smooth_shading);
+    ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
+    ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
+    ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
+    ImGui::MenuItem("Id labels", nullptr, &show_labels_);
+    ImGui::Separator();
+    ImGui::MenuItem("Inspector", "I", &inspector_.open);
+    ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
+    if (ImGui::MenuItem("Reset view", "Space")) camera_.reset();
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Help")) {
+    if (ImGui::MenuItem("Keys", "F1")) show_help_ = true;
+    ImGui::EndMenu();
+  }
+  ImGui::EndMainMenuBar();
+}
+
+void EditorApp::draw_open_panel() {
+  if (!show_open_panel_) return;
+  ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_Appearing);
+  if (!ImGui::Begin("Open or save", &show_open_panel_)) {
+    ImGui::End();
+    return;
+  }
+  if (open_path_input_.empty()) open_path_input_ = std::filesystem::current_path().string();
+  if (input_path("path", open_path_input_) || ImGui::Button("Open")) {
+    if (std::filesystem::is_directory(open_path_input_)) {
+      // Entering a folder just lists it.
+    } else if (open(open_path_input_)) {
+      show_open_panel_ = false;
+    }
+  }
+  ImGui::SameLine();
+  if (ImGui::Button("Assets")) open_path_input_ = assets_dir().string();
+  if (mode_ == ViewMode::Mesh) {
+    input_path("save as", save_path_input_);
+    ImGui::SameLine();
+    if (ImGui::Button("Save") && !save_path_input_.empty()) save(save_path_input_);
+    ImGui::TextDisabled(".obj, .gltf or .glb");
+  }
+  ImGui::Separator();
+
+  // The folder of the path typed so far (or the path itself if it is a folder).
+  std::filesystem::path folder = open_path_input_;
+  std::error_code ec;
+  if (!std::filesystem::is_directory(folder, ec)) folder = folder.parent_path();
+  ImGui::BeginChild("listing", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 4));
+  if (ImGui::Selectable("..")) open_path_input_ = folder.parent_path().string();
+  std::vector<std::filesystem::directory_entry> entries;
+  for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
+    if (entry.is_directory(ec) || supported(entry.path())) entries.push_back(entry);
+  }
+  std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.path() < b.path(); });
+  for (const auto& entry : entries) {
+    const bool is_dir = entry.is_directory(ec);
+    const std::string label = entry.path().filename().string() + (is_dir ? "/" : "");
+    if (ImGui::Selectable(label.c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) {
+      open_path_input_ = entry.path().string();
+      if (!is_dir && ImGui::IsMouseDoubleClicked(0) && open(entry.path())) show_open_panel_ = false;
+    }
+  }
+  ImGui::EndChild();
+  ImGui::TextDisabled("Recent:");
+  for (const std::string& path : std::deque<std::string>(recent_)) {
+    if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
+  }
+  ImGui::End();
+}
+
+void EditorApp::draw_help_panel() {
+  if (!show_help_) return;
+  ImGui::SetNextWindowSize(ImVec2(460, 420), ImGuiCond_Appearing);
+  if (ImGui::Begin("Keys", &show_help_)) {
+    const char* rows[][2] = {
+        {"click", "select the vertex, edge, halfedge or face under the cursor"},
+        {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
+        {"F", "flip the selected edge (on a halfedge: go to its face)"},
+        {"S", "split the selected edge"},
+        {"C", "collapse the selected edge (curve view: show the curve)"},
+        {"L / Shift+L", "Loop subdivision / one phase of it"},
+        {"N T V E H", "next, twin, vertex, edge, halfedge of the selection"},
+        {"Ctrl+Z / Ctrl+Y", "undo / redo"},
+        {"W / Q", "wireframe / flat or smooth shading"},
+        {"I", "inspector"},
+        {"E", "curve view: one more de Casteljau level"},
+        {"Space", "reset the view"},
+        {"P", "screenshot (PNG in the current folder)"},
+        {"Ctrl+O", "open a file (or drop one on the window)"},
+    };
+    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+      for (const auto& row : rows) {
+        ImGui::TableNextColumn();
+        ImGui::TextUnformatted(row[0]);
+        ImGui::TableNextColumn();
+        ImGui::TextWrapped("%s", row[1]);
+      }
+      ImGui::EndTable();
+    }
+  }
+  ImGui::End();
+}
+
+}  // namespace meshedit

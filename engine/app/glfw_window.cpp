@@ -1,0 +1,104 @@
+// GLFW window + GL 3.3 core context + ImGui backends (see glfw_window.h).
+#include "app/glfw_window.h"
+
+#include <epoxy/gl.h>
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+#include <imgui_impl_glfw.h>
+#include <imgui_impl_opengl3.h>
+
+#include <cstdlib>
+#include <stdexcept>
+
+namespace meshedit {
+namespace {
+
+std::string last_glfw_error() {
+  const char* description = nullptr;
+  glfwGetError(&description);
+  return description ? description : "unknown GLFW error";
+}
+
+}  // namespace
+
+GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
+  if (!glfwInit()) {
+    const char* display = std::getenv("DISPLAY");
+    throw std::runtime_error("cannot open a window (" + last_glfw_error() + ")" +
+                             (display && *display ? "" : "; DISPLAY is not set") +
+                             ". Without a display, try `meshedit demo` or `meshedit render`");
+  }
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
+  glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
+  glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
+  glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
+  glfwWindowHint(GLFW_SAMPLES, 4);
+  window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
+  if (!window_) {
+    const std::string why = last_glfw_error();
+    glfwTerminate();
+    throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + why);
+  }
+  glfwMakeContextCurrent(window_);
+  glfwSwapInterval(1);
+  glfwSetWindowUserPointer(window_, this);
+  glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
+    auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
+    for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+  });
+
+  IMGUI_CHECKVERSION();
+  ImGui::CreateContext();
+  ImGui::GetIO().IniFilename = nullptr;  // layout comes from code, not from a file beside the binary
+  ImGui::StyleColorsDark();
+  ImGui_ImplGlfw_InitForOpenGL(window_, true);
+  ImGui_ImplOpenGL3_Init("#version 330 core");
+}
+
+GlfwWindow::~GlfwWindow() {
+  ImGui_ImplOpenGL3_Shutdown();
+  ImGui_ImplGlfw_Shutdown();
+  ImGui::DestroyContext();
+  glfwDestroyWindow(window_);
+  glfwTerminate();
+}
+
+bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
+void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
+
+void GlfwWindow::begin_frame() {
+  glfwPollEvents();
+  ImGui_ImplOpenGL3_NewFrame();
+  ImGui_ImplGlfw_NewFrame();
+  ImGui::NewFrame();
+}
+
+void GlfwWindow::end_frame(const std::function<void()>& before_swap) {
+  ImGui::Render();
+  glViewport(0, 0, framebuffer_width(), framebuffer_height());
+  ImGui_ImplOpenGL3_RenderDrawData(ImGui::GetDrawData());
+  if (before_swap) before_swap();
+  glfwSwapBuffers(window_);
+}
+
+int GlfwWindow::framebuffer_width() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return w;
+}
+
+int GlfwWindow::framebuffer_height() const {
+  int w = 0, h = 0;
+  glfwGetFramebufferSize(window_, &w, &h);
+  return h;
+}
+
+std::vector<std::string> GlfwWindow::take_dropped_files() {
+  std::vector<std::string> files;
+  files.swap(dropped_);
+  return files;
+}
+
+void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+}  // namespace meshedit

@@ -1,0 +1,43 @@
+// GlfwWindow: one OS window with an OpenGL 3.3 core context and Dear ImGui set up on it (GLFW and
+// OpenGL3 backends). RAII: the constructor creates everything or throws std::runtime_error with a
+// message a user can act on ("no display: ..."); the destructor tears it all down in reverse order.
+//
+// Input is read through ImGui's io each frame (keys, mouse, wheel), so the app has one input path;
+// files dropped on the window are queued and handed out by take_dropped_files().
+#pragma once
+
+#include <functional>
+#include <string>
+#include <vector>
+
+struct GLFWwindow;
+
+namespace meshedit {
+
+class GlfwWindow {
+ public:
+  GlfwWindow(const std::string& title, int width, int height);
+  ~GlfwWindow();
+  GlfwWindow(const GlfwWindow&) = delete;
+  GlfwWindow& operator=(const GlfwWindow&) = delete;
+
+  bool should_close() const;
+  void request_close();
+  // Polls events and starts an ImGui frame.
+  void begin_frame();
+  // Renders ImGui's draw data over whatever was drawn, calls `before_swap` (screenshots read the finished
+  // frame there), then swaps buffers.
+  void end_frame(const std::function<void()>& before_swap = {});
+
+  // Framebuffer size in pixels (what glViewport and glReadPixels use).
+  int framebuffer_width() const;
+  int framebuffer_height() const;
+  std::vector<std::string> take_dropped_files();
+  void set_title(const std::string& title);
+
+ private:
+  GLFWwindow* window_ = nullptr;
+  std::vector<std::string> dropped_;
+};
+
+}  // namespace meshedit

@@ -1,0 +1,27 @@
+// Scripted actions: how GUI tests (and bug reports) drive the window without a person, through the same
+// handlers a key press or a click reaches. `meshedit FILE --actions script.txt` runs one action per line
+// between frames, then closes the window; the exit status is 0 when every `expect` held, 3 otherwise.
+//
+//   # comment                      frames N            key F | key ctrl+Z | key shift+S
+//   select h12                     click X Y           (framebuffer pixels, top-left origin)
+//   hover X Y                      open PATH           save PATH           screenshot PATH
+//   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
+//   expect-message TEXT...         expect-valid        quit
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace meshedit {
+
+struct ScriptedAction {
+  std::string verb;
+  std::vector<std::string> args;
+  std::string source;  // "script.txt:12", for messages
+};
+
+// Parses a script; throws std::runtime_error("script.txt:4: unknown action 'klick'") on a bad line.
+std::vector<ScriptedAction> parse_actions(const std::string& text, const std::string& name);
+std::vector<ScriptedAction> read_actions(const std::string& path);
+
+}  // namespace meshedit

@@ -1,0 +1,189 @@
+// `meshedit [FILE] [--actions SCRIPT] [--size WxH]`: the window. Runs the frame loop, feeds dropped files
+// to the app, and plays scripted actions (scripted_actions.h) one per frame for GUI tests.
+#include <GLFW/glfw3.h>
+
+#include <chrono>
+#include <iostream>
+
+#include "app/cli_commands.h"
+#include "app/editor_app.h"
+#include "app/glfw_window.h"
+#include "app/scripted_actions.h"
+#include "core/mesh_build.h"
+#include "core/primitives.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+// Plays scripted actions against the app; counts failed expectations.
+class ActionPlayer {
+ public:
+  ActionPlayer(std::vector<ScriptedAction> actions, std::ostream& log) : actions_(std::move(actions)), log_(log) {}
+
+  bool active() const { return !actions_.empty(); }
+  bool finished() const { return next_ >= actions_.size() && wait_frames_ == 0; }
+  int failures() const { return failures_; }
+
+  // Runs the next action unless a `frames N` wait is in progress. Returns false once the script asks to quit.
+  bool step(EditorApp& app) {
+    if (wait_frames_ > 0) {
+      --wait_frames_;
+      return true;
+    }
+    // Checks need no frame of their own: run them together with the action before the next one that does.
+    while (next_ < actions_.size()) {
+      const ScriptedAction& a = actions_[next_++];
+      try {
+        if (!run(app, a)) return false;
+      } catch (const std::exception& e) {
+        fail(a, e.what());
+      }
+      const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0;
+      if (!checks_follow) return true;
+    }
+    return false;
+  }
+
+ private:
+  void fail(const ScriptedAction& a, const std::string& why) {
+    ++failures_;
+    log_ << a.source << ": " << a.verb << " failed: " << why << "\n";
+  }
+
+  static KeyMods parse_key(std::string text, int& key) {
+    KeyMods mods;
+    for (;;) {
+      if (text.rfind("ctrl+", 0) == 0) { mods.ctrl = true; text = text.substr(5); continue; }
+      if (text.rfind("shift+", 0) == 0) { mods.shift = true; text = text.substr(6); continue; }
+      break;
+    }
+    if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
+      key = GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(text[0])) - 'A');
+    } else if (text == "space") {
+      key = GLFW_KEY_SPACE;
+    } else if (text == "escape") {
+      key = GLFW_KEY_ESCAPE;
+    } else {
+      throw std::runtime_error("unknown key '" + text + "'");
+    }
+    return mods;
+  }
+
+  bool run(EditorApp& app, const ScriptedAction& a) {
+    const auto& args = a.args;
+    if (a.verb == "quit") return false;
+    if (a.verb == "frames") {
+      wait_frames_ = std::stoi(args[0]);
+    } else if (a.verb == "key") {
+      int key = 0;
+      const KeyMods mods = parse_key(args[0], key);
+      app.handle_key(key, mods);
+    } else if (a.verb == "select") {
+      const auto element = parse_element(args[0]);
+      if (!element) throw std::runtime_error("not an element id: '" + args[0] + "'");
+      if (!select_element(app.document(), app.selection(), *element)) throw std::runtime_error(args[0] + " is not live");
+    } else if (a.verb == "click" || a.verb == "hover") {
+      const int x = std::stoi(args[0]), y = std::stoi(args[1]);
+      a.verb == "click" ? app.click(x, y) : app.hover(x, y);
+    } else if (a.verb == "open") {
+      if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
+    } else if (a.verb == "save") {
+      if (!app.save(args[0])) throw std::runtime_error(app.document().message.text);
+    } else if (a.verb == "screenshot") {
+      app.request_screenshot(args[0]);
+    } else if (a.verb == "expect-selected") {
+      const std::string got = format_id(app.selection().selected);
+      if (got != args[0]) fail(a, "selected " + got + ", expected " + args[0]);
+    } else if (a.verb == "expect-field") {
+      expect_field(app, a);
+    } else if (a.verb == "expect-changed") {
+      const auto element = parse_element(args[0]);
+      const auto field = parse_field(args[1]);
+      if (!element || !field) throw std::runtime_error("expect-changed takes an element and a field name");
+      if (!app.document().last.index.contains(*element, *field)) {
+        fail(a, args[0] + "." + args[1] + " is not among the cells the last operation changed");
+      }
+    } else if (a.verb == "expect-message") {
+      std::string wanted;
+      for (const auto& w : args) wanted += (wanted.empty() ? "" : " ") + w;
+      const std::string& got = app.document().message.text;
+      if (got.find(wanted) == std::string::npos) fail(a, "status line is '" + got + "'");
+    } else if (a.verb == "expect-valid") {
+      const ValidationReport& report = cached_validation(app.document());
+      if (!report.ok()) fail(a, report.summary());
+    }
+    return true;
+  }
+
+  void expect_field(EditorApp& app, const ScriptedAction& a) {
+    const HalfedgeMesh& m = app.document().mesh;
+    const auto element = parse_element(a.args[0]);
+    if (!element || !m.alive(*element)) throw std::runtime_error(a.args[0] + " is not a live element");
+    const std::string& field = a.args[1];
+    std::string got = "?";
+    if (element->kind == ElementKind::Halfedge) {
+      const HalfedgeId h(element->index);
+      if (field == "next") got = format_id(m.next(h));
+      if (field == "twin") got = format_id(m.twin(h));
+      if (field == "vertex") got = format_id(m.vertex(h));
+      if (field == "edge") got = format_id(m.edge(h));
+      if (field == "face") got = format_id(m.face(h));
+    } else if (field == "halfedge") {
+      switch (element->kind) {
+        case ElementKind::Vertex: got = format_id(m.halfedge(VertexId(element->index))); break;
+        case ElementKind::Edge: got = format_id(m.halfedge(EdgeId(element->index))); break;
+        default: got = format_id(m.halfedge(element->face_id())); break;
+      }
+    }
+    if (got != a.args[2]) fail(a, a.args[0] + "." + field + " is " + got + ", expected " + a.args[2]);
+  }
+
+  std::vector<ScriptedAction> actions_;
+  std::ostream& log_;
+  size_t next_ = 0;
+  int wait_frames_ = 0;
+  int failures_ = 0;
+};
+
+}  // namespace
+
+int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const auto script = take_option(args, "--actions");
+  const std::string size = take_option(args, "--size").value_or("1280x800");
+  reject_unknown_options(args);
+  if (args.size() > 1) throw UsageError("the window opens at most one file");
+  int width = 1280, height = 800;
+  if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 200 || height < 150 || width > 16384 ||
+      height > 16384) {
+    throw UsageError("--size must look like 1280x800");
+  }
+  ActionPlayer player(script ? read_actions(*script) : std::vector<ScriptedAction>{}, std::cerr);
+
+  GlfwWindow window("MeshEdit", width, height);
+  EditorApp app;
+  app.show_mesh(build_halfedge_mesh(make_cube()), "");
+  if (!args.empty()) app.open(args[0]);  // on failure the cube stays and the status line says why
+
+  auto last = std::chrono::steady_clock::now();
+  float frame_ms = 0.0f;
+  while (!window.should_close() && !app.quit_requested()) {
+    window.begin_frame();
+    for (const std::string& dropped : window.take_dropped_files()) app.open(dropped);
+    app.frame(window.framebuffer_width(), window.framebuffer_height(), frame_ms);
+    window.set_title(app.title());
+    window.end_frame([&] { app.write_pending_screenshot(window.framebuffer_width(), window.framebuffer_height()); });
+    const auto now = std::chrono::steady_clock::now();
+    frame_ms = std::chrono::duration<float, std::milli>(now - last).count();
+    last = now;
+    if (player.active() && !player.step(app)) break;
+  }
+  if (player.active()) {
+    out << "actions: " << (player.failures() == 0 ? "all expectations held" : "some expectations failed") << "\n";
+    return player.failures() == 0 ? 0 : 3;
+  }
+  return 0;
+}
+
+}  // namespace meshedit
