@@ -117,6 +117,7 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
   }
   if (io.WantCaptureMouse || mode_ == ViewMode::Curve) {
     dragging_ = false;
+    selection_.hovered = {};  // the panels set it again while a link or row is under the mouse
     return;
   }
   // ImGui gives window coordinates; the renderer wants framebuffer pixels.

@@ -1,0 +1,246 @@
+// The Inspector panel and the element facts it shows (see inspector.h). Every stored field is read only after
+// in_range(); walks use the mesh's bounded iterators.
+#include "ui/inspector.h"
+
+#include <cmath>
+#include <string>
+
+#include <glm/geometric.hpp>
+
+#include "core/value_format.h"
+
+namespace meshedit {
+namespace {
+
+bool live(const HalfedgeMesh& mesh, ElementRef ref) { return reference_state(mesh, ref) == RefState::Live; }
+
+// Where `h` points: next.vertex, if both can be read.
+VertexId head_of(const HalfedgeMesh& mesh, HalfedgeId h) {
+  const HalfedgeId n = mesh.next(h);
+  return in_range(mesh, n) ? mesh.vertex(n) : VertexId();
+}
+
+void inspect_walk(const HalfedgeMesh& mesh, ElementFacts& facts, size_t max_listed) {
+  const auto add = [&](HalfedgeId h, VertexId v) {
+    if (facts.walk.size() < max_listed) facts.walk.push_back({h, v});
+    ++facts.walked;
+  };
+  const ElementRef e = facts.element;
+  if (e.kind == ElementKind::Vertex) {
+    facts.closed = mesh.for_each_outgoing(VertexId(e.index), [&](HalfedgeId h) {
+      const HalfedgeId t = mesh.twin(h);
+      add(h, in_range(mesh, t) ? mesh.vertex(t) : VertexId());
+    });
+  } else {
+    facts.closed = mesh.for_each_face_halfedge(e.face_id(), [&](HalfedgeId h) { add(h, mesh.vertex(h)); });
+  }
+}
+
+}  // namespace
+
+ElementFacts inspect_element(const HalfedgeMesh& mesh, ElementRef element, size_t max_listed) {
+  ElementFacts facts;
+  facts.element = element;
+  facts.state = reference_state(mesh, element);
+  if (facts.state != RefState::Live) return facts;
+  switch (element.kind) {
+    case ElementKind::Vertex:
+      inspect_walk(mesh, facts, max_listed);
+      facts.is_boundary = mesh.is_boundary(VertexId(element.index));
+      break;
+    case ElementKind::Face:
+    case ElementKind::Boundary:
+      inspect_walk(mesh, facts, max_listed);
+      facts.is_boundary = element.kind == ElementKind::Boundary;
+      break;
+    case ElementKind::Halfedge: {
+      const HalfedgeId h(element.index);
+      facts.prev = mesh.prev(h);
+      facts.head = head_of(mesh, h);
+      facts.is_boundary = mesh.face(h).is_boundary();
+      break;
+    }
+    case ElementKind::Edge: {
+      const EdgeId e(element.index);
+      const HalfedgeId h = mesh.halfedge(e);
+      if (!in_range(mesh, h)) break;
+      facts.edge_twin = mesh.twin(h);
+      facts.edge_ends[0] = mesh.vertex(h);
+      facts.edge_faces[0] = mesh.face(h);
+      if (in_range(mesh, facts.edge_twin)) {
+        facts.edge_ends[1] = mesh.vertex(facts.edge_twin);
+        facts.edge_faces[1] = mesh.face(facts.edge_twin);
+      }
+      facts.is_boundary = facts.edge_faces[0].is_boundary() || facts.edge_faces[1].is_boundary();
+      if (live(mesh, facts.edge_ends[0]) && live(mesh, facts.edge_ends[1]))
+        facts.length = glm::distance(mesh.position(facts.edge_ends[0]), mesh.position(facts.edge_ends[1]));
+      break;
+    }
+  }
+  return facts;
+}
+
+namespace {
+
+struct Drawer {
+  const HalfedgeMesh& mesh;
+  Selection& selection;
+  UiProbe* probe;
+
+  void label(const char* text) {
+    ImGui::TableNextRow();
+    ImGui::TableSetColumnIndex(0);
+    ImGui::TextUnformatted(text);
+    ImGui::TableSetColumnIndex(1);
+  }
+  void link(const char* field, ElementRef ref) {
+    label(field);
+    element_link(mesh, ref, selection, field, probe);
+  }
+  void text(const char* field, const std::string& value) {
+    label(field);
+    ImGui::TextUnformatted(value.c_str());
+  }
+  void position(VertexId v) {
+    if (!live(mesh, v)) return;
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", format_position(mesh.position(v)).c_str());
+  }
+};
+
+const char* yes_no(bool b) { return b ? "yes" : "no"; }
+
+void draw_walk(Drawer& d, const ElementFacts& facts, const char* title, const char* vertex_role) {
+  const std::string heading = std::string(title) + " (" + std::to_string(facts.walked) +
+                              (facts.closed ? ", closed)" : " steps, does not close)");
+  if (!facts.closed) ImGui::TextColored(ui_colors::kBroken, "%s", heading.c_str());
+  else ImGui::TextUnformatted(heading.c_str());
+  for (size_t i = 0; i < facts.walk.size(); ++i) {
+    ImGui::PushID(static_cast<int>(i));
+    ImGui::Bullet();
+    element_link(d.mesh, facts.walk[i].halfedge, d.selection, "walk-halfedge", d.probe);
+    ImGui::SameLine();
+    ImGui::TextDisabled("%s", vertex_role);
+    ImGui::SameLine();
+    element_link(d.mesh, facts.walk[i].vertex, d.selection, "walk-vertex", d.probe);
+    ImGui::PopID();
+  }
+  if (facts.walked > facts.walk.size()) ImGui::TextDisabled("... %u more", unsigned(facts.walked - facts.walk.size()));
+}
+
+void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
+  const HalfedgeMesh& mesh = d.mesh;
+  const ElementRef e = facts.element;
+  if (!ImGui::BeginTable("fields", 2, ImGuiTableFlags_SizingFixedFit)) return;
+  switch (e.kind) {
+    case ElementKind::Halfedge: {
+      const HalfedgeId h(e.index);
+      d.link("next", mesh.next(h));
+      d.link("twin", mesh.twin(h));
+      d.link("vertex", mesh.vertex(h));
+      d.position(mesh.vertex(h));
+      d.link("edge", mesh.edge(h));
+      d.link("face", mesh.face(h));
+      if (alive) {
+        d.link("prev", facts.prev);
+        if (!facts.prev.valid()) { ImGui::SameLine(); ImGui::TextDisabled("(face cycle broken)"); }
+        d.link("head", facts.head);
+        ImGui::SameLine();
+        ImGui::TextDisabled("next.vertex");
+        d.text("on boundary", yes_no(facts.is_boundary));
+      }
+      break;
+    }
+    case ElementKind::Vertex: {
+      const VertexId v(e.index);
+      d.link("halfedge", mesh.halfedge(v));
+      const glm::dvec3& p = mesh.position(v);
+      d.text("x", format_number(p.x));
+      d.text("y", format_number(p.y));
+      d.text("z", format_number(p.z));
+      if (alive) {
+        const auto degree = facts.degree();
+        d.text("degree", degree ? std::to_string(*degree) : std::string("- (fan does not close)"));
+        d.text("on boundary", yes_no(facts.is_boundary));
+      }
+      break;
+    }
+    case ElementKind::Edge: {
+      d.link("halfedge", mesh.halfedge(EdgeId(e.index)));
+      if (alive) {
+        d.link("twin", facts.edge_twin);
+        ImGui::SameLine();
+        ImGui::TextDisabled("halfedge.twin");
+        d.link("ends", facts.edge_ends[0]);
+        ImGui::SameLine();
+        element_link(mesh, facts.edge_ends[1], d.selection, "end2", d.probe);
+        d.link("faces", facts.edge_faces[0]);
+        ImGui::SameLine();
+        element_link(mesh, facts.edge_faces[1], d.selection, "face2", d.probe);
+        d.text("length", facts.length ? format_number(*facts.length) : std::string("-"));
+        d.text("on boundary", yes_no(facts.is_boundary));
+      }
+      break;
+    }
+    case ElementKind::Face:
+    case ElementKind::Boundary: {
+      d.link("halfedge", mesh.halfedge(e.face_id()));
+      if (alive) {
+        const auto degree = facts.degree();
+        d.text("degree", degree ? std::to_string(*degree) : std::string("- (cycle does not close)"));
+        d.text("boundary loop", yes_no(facts.is_boundary));
+      }
+      break;
+    }
+  }
+  ImGui::EndTable();
+}
+
+}  // namespace
+
+bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorState& state) {
+  const ElementRef before = selection.selected;
+  const ElementRef e = selection.selected;
+  if (!e.valid()) {
+    ImGui::TextWrapped("Nothing selected. Click an element in the view or a row of the pointer tables; "
+                       "N T V E F H walk the pointers.");
+    return false;
+  }
+  const RefState st = reference_state(doc.mesh, e);
+  if (st == RefState::OutOfRange) {
+    ImGui::TextColored(ui_colors::kBroken, "%s", reference_problem(doc.mesh, e).c_str());
+    return false;
+  }
+  if (!state.facts_filled || state.facts.element != e || state.facts_generation != doc.generation ||
+      state.facts_version != doc.mesh.version()) {
+    state.facts = inspect_element(doc.mesh, e, state.max_listed);
+    state.facts_filled = true;
+    state.facts_generation = doc.generation;
+    state.facts_version = doc.mesh.version();
+    ++state.facts_computations;
+  }
+  const ElementFacts facts = state.facts;  // a copy: a click below may change the selection mid-draw
+  const bool alive = st == RefState::Live;
+
+  ImGui::Text("%s  %s", format_id(e).c_str(), kind_name(e.kind));
+  ImGui::SameLine();
+  if (alive) ImGui::TextColored(ui_colors::kValid, "alive");
+  else ImGui::TextColored(ui_colors::kDead, "dead: deleted, fields keep their last values");
+  Drawer d{doc.mesh, selection, state.probe};
+  draw_fields(d, facts, alive);
+  if (alive && (e.kind == ElementKind::Face || e.kind == ElementKind::Boundary))
+    draw_walk(d, facts, "halfedge cycle", "from");
+  if (alive && e.kind == ElementKind::Vertex) draw_walk(d, facts, "outgoing halfedges", "to");
+  return selection.selected != before;
+}
+
+bool draw_inspector(MeshDocument& doc, Selection& selection, InspectorState& state) {
+  if (!state.open) return false;
+  bool changed = false;
+  default_window_size(ImVec2(340, 460));
+  if (ImGui::Begin("Inspector", &state.open)) changed = draw_inspector_contents(doc, selection, state);
+  ImGui::End();
+  return changed;
+}
+
+}  // namespace meshedit

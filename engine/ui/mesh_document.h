@@ -1,0 +1,178 @@
+// MeshDocument: the mesh the window edits, its undo history, what the last operation changed, and the one
+// message line the status bar shows.
+//
+// Invariants:
+// - Every change to `mesh` goes through apply_operation(), undo(), redo() or replace_mesh(); code that
+//   assigns `mesh` directly must call replace_mesh() instead, or the caches below may describe another mesh.
+// - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
+//   same version()); only `message` changes.
+// - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
+//   from `last.before` to the current mesh. `last.serial` grows by one each time `last` is replaced, so views
+//   that index the diff rebuild their index once per change, not once per frame.
+// - The validation and stats caches are keyed by (generation, mesh.version()): validate() and compute_stats()
+//   run at most once per mesh state, however many frames ask (validate() on a million triangles takes ~0.3 s).
+// - Nothing here draws or touches ImGui: the document is plain data, tested without a window.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <type_traits>
+#include <unordered_set>
+#include <utility>
+#include <vector>
+
+#include "core/check.h"
+#include "core/halfedge_mesh.h"
+#include "core/history.h"
+#include "core/loop_subdivision.h"
+#include "core/mesh_stats.h"
+#include "core/validate.h"
+
+namespace meshedit {
+
+enum class Severity { Info, Warning, Error };
+
+// The status line: the outcome of the last action ("flip e5: 12 fields changed"), a refusal reason, or an
+// error (a file that would not open). `element` is the culprit to offer for selection, when there is one.
+struct DocumentMessage {
+  Severity severity = Severity::Info;
+  std::string text;
+  ElementRef element;
+};
+
+// The pointer fields a diff names (core/history.h FieldChange::field), as a small enum for O(1) lookups.
+enum class MeshField : uint8_t { Next, Twin, Vertex, Edge, Face, Halfedge, Position, Alive };
+inline constexpr int kMeshFieldCount = 8;
+const char* field_name(MeshField field);                          // "next", ..., "alive"
+std::optional<MeshField> parse_field(std::string_view name);      // the inverse; nullopt for anything else
+
+// Which (element, field) cells and which elements a diff touches. Built once per change; lookups are O(1).
+class ChangeIndex {
+ public:
+  ChangeIndex() = default;
+  explicit ChangeIndex(const std::vector<FieldChange>& changes);
+
+  bool contains(ElementRef element, MeshField field) const { return cells_.count(key(element, field)) != 0; }
+  bool contains(ElementRef element) const { return element_set_.count(element) != 0; }
+  // Every element with at least one changed field, in diff order, each once (what the renderer highlights).
+  const std::vector<ElementRef>& elements() const { return elements_; }
+  size_t cell_count() const { return cells_.size(); }
+
+ private:
+  static uint64_t key(ElementRef element, MeshField field) {
+    return (uint64_t(element.kind) << 40) | (uint64_t(field) << 32) | element.index;
+  }
+  std::unordered_set<uint64_t> cells_;
+  std::unordered_set<ElementRef> element_set_;
+  std::vector<ElementRef> elements_;
+};
+
+// What the most recent change did, for highlighted cells and the Before/After view.
+struct LastChange {
+  std::string label;                       // "flip e5", "undo flip e5"; empty before the first change
+  std::vector<FieldChange> changes;        // diff(before, mesh); empty when `listed` is false
+  size_t change_count = 0;                 // fields that changed; when not listed, only "more than the cap"
+  bool listed = true;                      // false when the diff was larger than DocumentLimits::max_listed_changes
+  ChangeIndex index;                       // built from `changes`
+  std::optional<HalfedgeMesh> before;      // the mesh before the change (absent before the first change)
+  uint64_t serial = 0;                     // +1 every time this struct is replaced
+};
+
+struct DocumentLimits {
+  // A diff with more fields than this is counted but not listed (a Loop subdivision of a million triangles
+  // changes tens of millions of fields; formatting them all would take gigabytes).
+  size_t max_listed_changes = 200000;
+  // Undo snapshots are whole meshes: the history keeps at most this many bytes' worth (at least 4 steps,
+  // at most 256), judged from the mesh's size when it is opened.
+  size_t history_budget_bytes = size_t(2) << 30;
+};
+
+// Loop subdivision one phase per key press (core/loop_subdivision.h): which phase runs next and the state
+// phases 1-3 computed. The state is only trusted while the mesh is the one the last phase left.
+struct LoopStepper {
+  int next_phase = 1;            // 1..4
+  LoopState state;
+  uint64_t generation = 0;       // document generation and mesh version after the last phase ran
+  uint64_t version = 0;
+};
+
+template <class T>
+struct VersionCache {
+  bool filled = false;
+  uint64_t generation = 0;
+  uint64_t version = 0;
+  size_t computations = 0;       // how many times the value was computed (tests count them)
+  T value{};
+};
+
+struct MeshDocument {
+  std::string path;              // the file the mesh came from ("" for a generated mesh)
+  HalfedgeMesh mesh;
+  History history;
+  LastChange last;
+  DocumentMessage message;
+  DocumentLimits limits;
+  LoopStepper loop;
+  // +1 whenever the mesh is replaced wholesale (replace_mesh), so caches keyed by version cannot confuse two
+  // different meshes whose version counters happen to agree.
+  uint64_t generation = 0;
+  VersionCache<ValidationReport> validation;
+  VersionCache<MeshStats> stats;
+};
+
+// A document for `mesh` (read from `path`, or "" when generated). History depth follows limits.
+MeshDocument make_document(HalfedgeMesh mesh, std::string path = {}, DocumentLimits limits = {});
+// Replaces the mesh (opening another file): empties history and `last`, bumps generation, keeps `limits`.
+void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path);
+
+void set_message(MeshDocument& doc, Severity severity, std::string text, ElementRef element = {});
+
+namespace detail {
+Check apply_check_operation(MeshDocument& doc, const std::string& label, const std::function<Check(HalfedgeMesh&)>& op);
+}  // namespace detail
+
+// Runs `op` on doc.mesh. `op` returns a Check or an OpResult<T> (the core's operations do).
+// Success and the mesh changed: the state before goes to history under `label`, `last` becomes the diff, and the
+//   message says how many fields changed.
+// Success and nothing changed (version() unchanged): nothing is recorded; the message says so.
+// Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
+//   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
+//   an exception becomes a refused Check whose reason is its message.
+// Costs two copies of the mesh (the undo snapshot and last.before) and a pass over every slot to count the diff:
+// O(size) per operation, never per frame.
+template <class Op>
+auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
+  using Result = std::invoke_result_t<Op&, HalfedgeMesh&>;
+  if constexpr (std::is_same_v<Result, Check>) {
+    return detail::apply_check_operation(doc, label, std::function<Check(HalfedgeMesh&)>(std::forward<Op>(op)));
+  } else {
+    Result result{};
+    const Check check = detail::apply_check_operation(doc, label, [&](HalfedgeMesh& mesh) {
+      result = op(mesh);
+      return result.check;
+    });
+    result.check = check;
+    return result;
+  }
+}
+
+// Undo/redo the last operation; `last` becomes the diff of the undo (or redo) itself, labelled
+// "undo flip e5" / "redo flip e5". Return false and set a message when there is nothing to undo/redo.
+bool undo(MeshDocument& doc);
+bool redo(MeshDocument& doc);
+
+// How many fields differ between the two states (the rules of core diff(), so it equals diff().size()), or
+// some number above `limit` once the count passes it (it stops early). O(slots); allocates nothing.
+size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit);
+
+// validate() / compute_stats() of the current mesh, computed at most once per (generation, version).
+const ValidationReport& cached_validation(MeshDocument& doc);
+const MeshStats& cached_stats(MeshDocument& doc);
+// True when cached_validation() would return without running validate().
+bool validation_is_current(const MeshDocument& doc);
+
+}  // namespace meshedit

@@ -1,0 +1,87 @@
+// The status bar (see status_bar.h).
+#include "ui/status_bar.h"
+
+#include <string>
+
+#include <imgui.h>
+
+#include "core/validate.h"
+
+namespace meshedit {
+namespace {
+
+ImVec4 severity_color(Severity severity) {
+  switch (severity) {
+    case Severity::Info: return ImGui::GetStyleColorVec4(ImGuiCol_Text);
+    case Severity::Warning: return ui_colors::kWarning;
+    case Severity::Error: return ui_colors::kBroken;
+  }
+  return ui_colors::kBroken;
+}
+
+void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& state) {
+  const bool automatic = doc.mesh.num_halfedges() <= state.auto_validate_max_halfedges;
+  if (!automatic && !validation_is_current(doc)) {
+    ImGui::TextDisabled("not validated (large mesh)");
+    ImGui::SameLine();
+    const bool pressed = ImGui::SmallButton("validate");
+    if (state.probe) state.probe->record_last_item("validate");
+    if (!pressed) return;
+  }
+  const ValidationReport& report = cached_validation(doc);
+  if (report.ok()) {
+    ImGui::TextColored(ui_colors::kValid, "valid");
+    return;
+  }
+  const Violation& first = report.violations.front();
+  ImGui::TextColored(ui_colors::kBroken, "%zu problem%s; first: %s", report.total, report.total == 1 ? "" : "s",
+                     first.message.c_str());
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", report.summary().c_str());
+  ImGui::SameLine();
+  const bool pressed = ImGui::SmallButton("select##culprit");
+  if (state.probe) state.probe->record_last_item("select-culprit", first.element);
+  if (pressed && in_range(doc.mesh, first.element)) selection.selected = first.element;
+}
+
+}  // namespace
+
+float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& state, float frame_ms) {
+  const ImGuiViewport* viewport = ImGui::GetMainViewport();
+  const float height = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y * 2.0f;
+  ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x, viewport->WorkPos.y + viewport->WorkSize.y - height));
+  ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x, height));
+  const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
+                                 ImGuiWindowFlags_NoBringToFrontOnFocus;
+  if (ImGui::Begin("##status bar", nullptr, flags)) {
+    const HalfedgeMesh& mesh = doc.mesh;
+    const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
+    ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(),
+                mesh.num_faces(), mesh.num_halfedges(), mesh.num_boundaries(), chi);
+    if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
+    ImGui::SameLine(0.0f, 24.0f);
+    draw_validation(doc, selection, state);
+    if (!doc.message.text.empty()) {
+      ImGui::SameLine(0.0f, 24.0f);
+      ImGui::TextColored(severity_color(doc.message.severity), "%s", doc.message.text.c_str());
+      if (in_range(doc.mesh, doc.message.element) && doc.message.severity != Severity::Info) {
+        ImGui::SameLine();
+        const bool pressed = ImGui::SmallButton("select##message");
+        if (state.probe) state.probe->record_last_item("select-message", doc.message.element);
+        if (pressed) selection.selected = doc.message.element;
+      }
+    }
+    ImGui::SameLine(0.0f, 24.0f);
+    if (doc.history.can_undo()) ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
+    if (doc.history.can_redo()) {
+      ImGui::SameLine();
+      ImGui::TextDisabled(" Ctrl+Y: redo %s", doc.history.redo_label().c_str());
+    }
+    ImGui::SameLine(0.0f, 24.0f);
+    ImGui::TextDisabled("%.1f ms", static_cast<double>(frame_ms));
+  }
+  ImGui::End();
+  return height;
+}
+
+}  // namespace meshedit

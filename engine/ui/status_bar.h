@@ -1,0 +1,28 @@
+// The status bar along the bottom of the window: V/E/F/H counts, Euler characteristic, validation state (green
+// "valid", or red with the first broken invariant and a button that selects its element), the message line,
+// undo/redo hints and the frame time.
+//
+// Invariants:
+// - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
+//   StatusBarState::auto_validate_max_halfedges are validated only when the user presses "validate".
+// - Counts and the Euler characteristic come from the mesh's live counters: O(1) per frame.
+#pragma once
+
+#include <cstddef>
+
+#include "ui/element_link.h"
+#include "ui/mesh_document.h"
+#include "ui/selection.h"
+
+namespace meshedit {
+
+struct StatusBarState {
+  size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
+  UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
+};
+
+// Draws the bar as a borderless window across the bottom of the main viewport. Returns its height in pixels,
+// so the app can keep the mesh view above it. Its "select" buttons change selection.selected.
+float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& state, float frame_ms);
+
+}  // namespace meshedit
