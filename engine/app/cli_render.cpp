@@ -1,8 +1,8 @@
 // `meshedit render FILE [--shading flat|phong] [--wireframe] [--vertices] [--halfedges] [--subdivide N]
 //  [--size WxH] [--up y|z] [--resolution N] -o out.png`: a picture of a mesh or patch file without a
 // display, through an EGL surfaceless context (no X server needed), drawn by the same MeshRenderer as
-// the window. The camera is the window's fitted three-quarter view; the up axis is Z for .bez files (the
-// Utah teapot's convention) and Y for everything else unless --up says otherwise.
+// the window. The camera is the window's fitted three-quarter view, Z up as in the course viewer (see
+// render/camera.h) unless --up y says otherwise.
 #include <charconv>
 #include <filesystem>
 
@@ -62,12 +62,14 @@ int run_render(const std::vector<std::string>& arguments, std::ostream& out) {
   if (shading != "flat" && shading != "phong") {
     throw UsageError("--shading must be 'flat' or 'phong', not '" + shading + "'");
   }
-  if (up_text && *up_text != "y" && *up_text != "z") throw UsageError("--up must be 'y' or 'z', not '" + *up_text + "'");
+  if (up_text && *up_text != "y" && *up_text != "z") {
+    throw UsageError("--up must be 'y' or 'z', not '" + *up_text + "'");
+  }
   options.smooth_shading = shading == "phong";
   const int levels = subdivide_text ? parse_count(*subdivide_text, "--subdivide", 8) : 0;
   const int resolution = resolution_text ? parse_count(*resolution_text, "--resolution", 256) : kDefaultPatchResolution;
   const std::filesystem::path input = args[0];
-  const bool z_up = up_text ? *up_text == "z" : input.extension() == ".bez";
+  const bool z_up = !up_text || *up_text == "z";
 
   LoadedMesh loaded = load_halfedge_mesh(input, resolution);
   HalfedgeMesh& mesh = loaded.mesh;
@@ -79,7 +81,9 @@ int run_render(const std::vector<std::string>& arguments, std::ostream& out) {
   }
   for (int level = 1; level <= levels; ++level) {
     const Check done = loop_subdivide(mesh);
-    if (!done) throw MeshError(input.string() + ": cannot subdivide (level " + std::to_string(level) + "): " + done.reason);
+    if (!done) {
+      throw MeshError(input.string() + ": cannot subdivide (level " + std::to_string(level) + "): " + done.reason);
+    }
   }
 
   OffscreenContext context;

@@ -23,6 +23,7 @@ constexpr size_t kRecentFiles = 8;
 EditorApp::EditorApp()
     : mesh_renderer_(std::make_unique<MeshRenderer>(shaders_)),
       patch_renderer_(std::make_unique<MeshRenderer>(shaders_)),
+      overlay_renderer_(std::make_unique<OverlayRenderer>(shaders_)),
       curve_(make_curve_editor(default_curve())) {}
 
 EditorApp::~EditorApp() = default;
@@ -56,7 +57,6 @@ bool EditorApp::open(const std::filesystem::path& path) {
       case FileKind::Patches:
         patches_ = make_patch_view(file.patches);
         mode_ = ViewMode::Patches;
-        camera_.set_up_axis(UpAxis::Z);  // .bez data (the teapot) is Z-up
         update_tessellation(patches_);
         if (patches_.tessellation.mesh) {
           patch_renderer_->update(*patches_.tessellation.mesh);
@@ -71,7 +71,6 @@ bool EditorApp::open(const std::filesystem::path& path) {
         } catch (const MeshError& e) {
           throw MeshError(path.string() + ": " + e.what(), e.element());
         }
-        camera_.set_up_axis(UpAxis::Y);
         show_mesh(std::move(mesh), path.string());
         break;
       }
@@ -129,11 +128,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
       draw_mesh_view(viewport_width_, viewport_height_);
       break;
     case ViewMode::Patches:
-      draw_patch_view_panel(patches_);
-      if (patches_.show_surface && patches_.tessellation.mesh) {
-        patch_renderer_->update(*patches_.tessellation.mesh);
-        patch_renderer_->draw(camera_, viewport(), view_options_, {});
-      }
+      draw_patch_view();
       break;
     case ViewMode::Curve: {
       const ImGuiViewport* main = ImGui::GetMainViewport();
@@ -157,6 +152,27 @@ void EditorApp::draw_mesh_view(int width, int height) {
   highlights.changed = doc_.last.index.elements();
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
   if (show_labels_) draw_id_labels(width, height);
+}
+
+void EditorApp::draw_patch_view() {
+  ImGui::SetNextWindowPos(ImVec2(0, ImGui::GetFrameHeight()), ImGuiCond_Appearing);
+  ImGui::SetNextWindowSize(ImVec2(520, 380), ImGuiCond_Appearing);
+  draw_patch_view_panel(patches_);
+  if (patches_.show_surface && patches_.tessellation.mesh) {
+    patch_renderer_->update(*patches_.tessellation.mesh);
+    patch_renderer_->draw(camera_, viewport(), view_options_, {});
+  }
+  // The control net and the (u, v) probe, drawn over the surface so the probe points stay visible.
+  Overlay overlay;
+  overlay.on_top = true;
+  for (const PatchOverlayItem& item : patch_view_overlay(patches_)) {
+    if (item.points_only) {
+      for (const auto& p : item.points) overlay.points.push_back({p, item.colour, item.width});
+    } else {
+      overlay.lines.push_back({item.points, item.colour, item.width, false});
+    }
+  }
+  overlay_renderer_->draw(camera_, viewport(), overlay);
 }
 
 void EditorApp::draw_view_panels(float frame_ms) {

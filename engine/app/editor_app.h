@@ -20,6 +20,7 @@
 #include "core/bezier.h"
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
+#include "render/overlay_renderer.h"
 #include "render/shader_library.h"
 #include "render/view_options.h"
 #include "ui/curve_editor.h"
@@ -77,6 +78,7 @@ class EditorApp {
  private:
   void read_mouse_and_keys(int width, int height);
   void draw_mesh_view(int width, int height);
+  void draw_patch_view();
   void draw_id_labels(int width, int height);
   void draw_menu_bar();
   void draw_open_panel();
@@ -90,6 +92,7 @@ class EditorApp {
   ShaderLibrary shaders_;
   std::unique_ptr<MeshRenderer> mesh_renderer_;
   std::unique_ptr<MeshRenderer> patch_renderer_;
+  std::unique_ptr<OverlayRenderer> overlay_renderer_;
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;

@@ -139,7 +139,9 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     if (!dragging_ && !io.KeyShift) click(x, y);
     dragging_ = false;
   }
-  if (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f) hover(x, y);
+  // Picking while the camera moves would redraw the whole id buffer every frame; wait for the drag to end.
+  const bool moving_camera = panning || dragging_;
+  if (!moving_camera && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) hover(x, y);
 }
 
 }  // namespace meshedit

@@ -90,7 +90,9 @@ MeshDocument make_document(HalfedgeMesh mesh, std::string path, DocumentLimits l
 
 void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path) {
   doc.history = History(history_depth(mesh, doc.limits));
+  const uint64_t old_version = doc.mesh.version();
   doc.mesh = std::move(mesh);
+  doc.mesh.bump_version_above(old_version);  // no cache may take the new mesh for the old one
   doc.path = std::move(path);
   LastChange last;
   last.serial = doc.last.serial + 1;

@@ -44,18 +44,18 @@ std::vector<glm::dvec3> sample_curve3(std::span<const glm::dvec3> points, int se
   return samples;
 }
 
-OverlayPolyline item(std::vector<glm::dvec3> points, glm::vec4 colour, float width, bool points_only,
+PatchOverlayItem item(std::vector<glm::dvec3> points, glm::vec4 colour, float width, bool points_only,
                      OverlayKind kind, std::string label) {
-  return OverlayPolyline{std::move(points), colour, width, points_only, kind, std::move(label)};
+  return PatchOverlayItem{std::move(points), colour, width, points_only, kind, std::move(label)};
 }
 
 }  // namespace
 
 // ---- overlay geometry ------------------------------------------------------------------------------
 
-std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
+std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
                                                    const std::string& label_prefix) {
-  std::vector<OverlayPolyline> net;
+  std::vector<PatchOverlayItem> net;
   net.reserve(8);
   for (int r = 0; r < 4; ++r) {
     net.push_back(item({patch.at(r, 0), patch.at(r, 1), patch.at(r, 2), patch.at(r, 3)}, colour, width, false,
@@ -68,8 +68,8 @@ std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm
   return net;
 }
 
-std::vector<OverlayPolyline> build_probe_overlay(const BezierPatch& patch, double u, double v, int samples) {
-  std::vector<OverlayPolyline> items = control_net_polylines(patch, kSelectedNetColour, 2.0f, "control net ");
+std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v, int samples) {
+  std::vector<PatchOverlayItem> items = control_net_polylines(patch, kSelectedNetColour, 2.0f, "control net ");
   for (int r = 0; r < 4; ++r) {
     const std::span<const glm::dvec3> row(patch.points.data() + r * 4, 4);
     items.push_back(item(sample_curve3(row, samples), kRowCurveColour, 2.0f, false, OverlayKind::RowCurve,
@@ -137,8 +137,8 @@ bool update_tessellation(PatchViewState& state) {
   return true;
 }
 
-std::vector<OverlayPolyline> patch_view_overlay(const PatchViewState& state) {
-  std::vector<OverlayPolyline> items;
+std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state) {
+  std::vector<PatchOverlayItem> items;
   const int count = static_cast<int>(state.patches.size());
   if (count == 0) return items;
   const int selected = std::clamp(state.selected_patch, 0, count - 1);

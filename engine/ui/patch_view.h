@@ -44,7 +44,7 @@ enum class OverlayKind {
 };
 
 // One thing to draw over the surface, in the patches' own coordinates.
-struct OverlayPolyline {
+struct PatchOverlayItem {
   std::vector<glm::dvec3> points;
   glm::vec4 colour{1.0f};
   float width = 1.0f;        // line width in pixels, or point diameter when points_only
@@ -55,7 +55,7 @@ struct OverlayPolyline {
 
 // The 8 polylines of a control net: rows 0..3 (at(r, 0..3)) then columns 0..3 (at(0..3, c)), each
 // labelled "<prefix>row r" / "<prefix>column c".
-std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
+std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
                                                    const std::string& label_prefix = "");
 
 // Everything the probe shows for `patch` at (u, v) (not clamped here), in this order:
@@ -66,7 +66,7 @@ std::vector<OverlayPolyline> control_net_polylines(const BezierPatch& patch, glm
 //   2 ColumnLevel polylines (column_levels[1] and [2]: 3 and 2 points),
 //   1 ColumnCurve polyline (samples + 1 points, from row point 0 to row point 3),
 //   1 SurfacePoint item (evaluate_patch(patch, u, v)).
-std::vector<OverlayPolyline> build_probe_overlay(const BezierPatch& patch, double u, double v,
+std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v,
                                                  int samples = kProbeCurveSamples);
 
 // ---- state -----------------------------------------------------------------------------------------
@@ -112,7 +112,7 @@ bool update_tessellation(PatchViewState& state);
 // - show_control_net: the nets of all patches (dim), except the selected one when the probe shows it;
 // - show_probe: build_probe_overlay of the selected patch at (u, v) (its net included, bright).
 // Empty when there are no patches.
-std::vector<OverlayPolyline> patch_view_overlay(const PatchViewState& state);
+std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state);
 
 // ---- ImGui -----------------------------------------------------------------------------------------
 

@@ -45,10 +45,10 @@ void expect_same(const dvec3& actual, const dvec3& expected) {
   EXPECT_EQ(actual.z, expected.z);
 }
 
-std::vector<OverlayPolyline> of_kind(const std::vector<OverlayPolyline>& items, OverlayKind kind) {
-  std::vector<OverlayPolyline> out;
+std::vector<PatchOverlayItem> of_kind(const std::vector<PatchOverlayItem>& items, OverlayKind kind) {
+  std::vector<PatchOverlayItem> out;
   std::copy_if(items.begin(), items.end(), std::back_inserter(out),
-               [kind](const OverlayPolyline& item) { return item.kind == kind; });
+               [kind](const PatchOverlayItem& item) { return item.kind == kind; });
   return out;
 }
 

@@ -1,0 +1,128 @@
+// Vertex arrays for segments and points, and buffer textures (see gpu_batches.h).
+#include "render/gpu_batches.h"
+
+#include <algorithm>
+#include <cstddef>
+
+#include <glm/gtc/type_ptr.hpp>
+
+namespace meshedit::gl {
+namespace {
+
+static_assert(sizeof(EdgeSegment) == 32, "EdgeSegment is uploaded as is");
+static_assert(sizeof(VertexPoint) == 16, "VertexPoint is uploaded as is");
+static_assert(sizeof(ItemStyle) == 8, "ItemStyle is uploaded as is");
+
+const void* offset(size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+
+void style_attributes(GLuint colour, GLuint size) {
+  glEnableVertexAttribArray(colour);
+  glVertexAttribPointer(colour, 4, GL_UNSIGNED_BYTE, GL_TRUE, sizeof(ItemStyle), offset(offsetof(ItemStyle, rgba)));
+  glEnableVertexAttribArray(size);
+  glVertexAttribPointer(size, 1, GL_FLOAT, GL_FALSE, sizeof(ItemStyle), offset(offsetof(ItemStyle, size)));
+}
+
+}  // namespace
+
+SegmentBatch::SegmentBatch() : vao_(make_vertex_array()), items_(GL_RGBA32UI), styles_(GL_RG32UI) {}
+
+void SegmentBatch::upload(const EdgeSegment* items, size_t count, GLenum usage) {
+  items_.upload(items, count * sizeof(EdgeSegment), usage);
+  count_ = count;
+}
+
+void SegmentBatch::upload_styles(const ItemStyle* styles, size_t count, GLenum usage) {
+  styles_.upload(styles, count * sizeof(ItemStyle), usage);
+}
+
+size_t SegmentBatch::bytes() const { return items_.bytes() + styles_.bytes(); }
+
+void SegmentBatch::draw() const {
+  if (count_ == 0) return;
+  items_.bind(1);
+  styles_.bind(2);
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(count_ * 6));
+}
+
+void SegmentBatch::draw_lines() const {
+  if (count_ == 0) return;
+  items_.bind(1);
+  styles_.bind(2);
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_LINES, 0, GLsizei(count_ * 2));
+}
+
+PointBatch::PointBatch() : vao_(make_vertex_array()), items_(make_buffer()), styles_(make_buffer()) {
+  glBindVertexArray(vao_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, items_.get());
+  glEnableVertexAttribArray(0);
+  glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(VertexPoint), offset(offsetof(VertexPoint, position)));
+  glEnableVertexAttribArray(1);
+  glVertexAttribIPointer(1, 1, GL_UNSIGNED_INT, sizeof(VertexPoint), offset(offsetof(VertexPoint, vertex)));
+  glBindVertexArray(0);
+}
+
+void PointBatch::upload(const VertexPoint* items, size_t count, GLenum usage) {
+  glBindBuffer(GL_ARRAY_BUFFER, items_.get());
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(VertexPoint)), items, usage);
+  count_ = count;
+  bytes_ = count * sizeof(VertexPoint);
+}
+
+void PointBatch::upload_styles(const ItemStyle* styles, size_t count, GLenum usage) {
+  glBindVertexArray(vao_.get());
+  glBindBuffer(GL_ARRAY_BUFFER, styles_.get());
+  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(ItemStyle)), styles, usage);
+  style_attributes(2, 3);
+  glBindVertexArray(0);
+}
+
+void PointBatch::draw() const {
+  if (count_ == 0) return;
+  glBindVertexArray(vao_.get());
+  glDrawArrays(GL_POINTS, 0, GLsizei(count_));
+}
+
+BufferTexture::BufferTexture(GLenum format) : format_(format), buffer_(make_buffer()), texture_(make_texture()) {}
+
+void BufferTexture::upload(const void* data, size_t bytes, GLenum usage) {
+  static const uint32_t zero[4] = {0, 0, 0, 0};
+  glBindBuffer(GL_TEXTURE_BUFFER, buffer_.get());
+  if (bytes == 0) {
+    glBufferData(GL_TEXTURE_BUFFER, sizeof zero, zero, usage);
+  } else {
+    glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes), data, usage);
+  }
+  glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
+  glTexBuffer(GL_TEXTURE_BUFFER, format_, buffer_.get());
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  bytes_ = bytes;
+}
+
+void BufferTexture::bind(GLuint unit) const {
+  glActiveTexture(GL_TEXTURE0 + unit);
+  glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
+}
+
+CameraUniforms camera_uniforms(const OrbitCamera& camera, Viewport viewport) {
+  CameraUniforms out;
+  const glm::dmat4 projection = camera.projection(viewport.aspect());
+  out.view = glm::mat4(camera.view());
+  out.projection = glm::mat4(projection);
+  out.view_projection = glm::mat4(projection * camera.view());
+  out.viewport[0] = float(viewport.width);
+  out.viewport[1] = float(viewport.height);
+  out.pixel_scale = float(2.0 / (projection[1][1] * double(std::max(viewport.height, 1))));
+  return out;
+}
+
+void set_camera(const ShaderProgram& program, const CameraUniforms& camera) {
+  glUniformMatrix4fv(program.uniform("u_view_projection"), 1, GL_FALSE, glm::value_ptr(camera.view_projection));
+  glUniformMatrix4fv(program.uniform("u_view"), 1, GL_FALSE, glm::value_ptr(camera.view));
+  glUniformMatrix4fv(program.uniform("u_projection"), 1, GL_FALSE, glm::value_ptr(camera.projection));
+  glUniform2fv(program.uniform("u_viewport"), 1, camera.viewport);
+  glUniform1f(program.uniform("u_pixel_scale"), camera.pixel_scale);
+}
+
+}  // namespace meshedit::gl

@@ -1,0 +1,58 @@
+// PNG reading and writing with stb (see image_file.h). The file itself is read and written here, not
+// by stb, so errors can name the path and the reason.
+#include "render/image_file.h"
+
+#include <fstream>
+#include <iterator>
+#include <string>
+
+#include <stb_image.h>
+#include <stb_image_write.h>
+
+#include "render/render_error.h"
+
+namespace meshedit {
+namespace {
+
+void append_bytes(void* context, void* data, int size) {
+  auto* out = static_cast<std::vector<uint8_t>*>(context);
+  const auto* bytes = static_cast<const uint8_t*>(data);
+  out->insert(out->end(), bytes, bytes + size);
+}
+
+}  // namespace
+
+void write_png(const std::filesystem::path& path, int width, int height, const std::vector<uint8_t>& rgba) {
+  if (width < 1 || height < 1 || rgba.size() != size_t(width) * size_t(height) * 4) {
+    throw RenderError("cannot write " + path.string() + ": the image is not " + std::to_string(width) + "x" +
+                      std::to_string(height) + " RGBA pixels");
+  }
+  std::vector<uint8_t> png;
+  if (!stbi_write_png_to_func(append_bytes, &png, width, height, 4, rgba.data(), width * 4) || png.empty()) {
+    throw RenderError("cannot write " + path.string() + ": PNG encoding failed");
+  }
+  std::ofstream out(path, std::ios::binary | std::ios::trunc);
+  out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+  out.close();
+  if (!out) throw RenderError("cannot write " + path.string() + ": the file cannot be created or written");
+}
+
+Image read_png(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw RenderError("cannot read " + path.string() + ": no such file or not readable");
+  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  int width = 0, height = 0, channels = 0;
+  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
+  if (pixels == nullptr) {
+    const char* reason = stbi_failure_reason();
+    throw RenderError("cannot read " + path.string() + ": " + (reason ? reason : "not an image"));
+  }
+  Image image;
+  image.width = width;
+  image.height = height;
+  image.rgba.assign(pixels, pixels + size_t(width) * size_t(height) * 4);
+  stbi_image_free(pixels);
+  return image;
+}
+
+}  // namespace meshedit

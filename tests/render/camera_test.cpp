@@ -1,0 +1,241 @@
+// OrbitCamera: pure math, checked against the conventions in render/camera.h.
+#include <algorithm>
+#include <array>
+#include <cmath>
+
+#include <gtest/gtest.h>
+#include <glm/geometric.hpp>
+
+#include "render/camera.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+using testing::near;
+
+BoundingBox box(glm::dvec3 lo, glm::dvec3 hi) {
+  BoundingBox b;
+  b.add(lo);
+  b.add(hi);
+  return b;
+}
+
+std::array<glm::dvec3, 8> corners(const BoundingBox& b) {
+  std::array<glm::dvec3, 8> out;
+  for (int i = 0; i < 8; ++i) {
+    out[size_t(i)] = {(i & 1) ? b.max.x : b.min.x, (i & 2) ? b.max.y : b.min.y, (i & 4) ? b.max.z : b.min.z};
+  }
+  return out;
+}
+
+// Every corner lands inside the viewport, in front of the eye and within the depth range.
+void expect_all_corners_visible(const OrbitCamera& camera, const BoundingBox& b, Viewport viewport) {
+  for (const glm::dvec3& c : corners(b)) {
+    const ScreenPoint p = camera.project(c, viewport);
+    EXPECT_TRUE(p.in_front);
+    EXPECT_GT(p.pixel.x, 0.0) << c.x << " " << c.y << " " << c.z;
+    EXPECT_LT(p.pixel.x, viewport.width);
+    EXPECT_GT(p.pixel.y, 0.0);
+    EXPECT_LT(p.pixel.y, viewport.height);
+    EXPECT_GT(p.depth, 0.0);
+    EXPECT_LT(p.depth, 1.0);
+  }
+}
+
+double distance_to_ray(const Ray& ray, const glm::dvec3& p) {
+  const glm::dvec3 d = p - ray.origin;
+  return glm::length(d - ray.direction * glm::dot(d, ray.direction));
+}
+
+TEST(BoundingBox, StartsEmptyAndGrows) {
+  BoundingBox b;
+  EXPECT_TRUE(b.empty());
+  EXPECT_EQ(b.diagonal(), 0.0);
+  b.add({1, 2, 3});
+  EXPECT_FALSE(b.empty());
+  EXPECT_EQ(b.diagonal(), 0.0);
+  b.add({-1, 0, 3});
+  EXPECT_TRUE(near(b.min, {-1, 0, 3}, 0.0));
+  EXPECT_TRUE(near(b.max, {1, 2, 3}, 0.0));
+  EXPECT_TRUE(near(b.centre(), {0, 1, 3}, 0.0));
+  EXPECT_DOUBLE_EQ(b.diagonal(), std::sqrt(8.0));
+}
+
+TEST(OrbitCamera, FitTargetsTheCentreFromTheThreeQuarterView) {
+  OrbitCamera camera;
+  const BoundingBox b = box({-1, 0, 2}, {3, 2, 4});
+  camera.fit(b);
+  EXPECT_TRUE(near(camera.target(), {1, 1, 3}, 0.0));
+  EXPECT_DOUBLE_EQ(camera.yaw_degrees(), OrbitCamera::kDefaultYawDegrees);
+  EXPECT_DOUBLE_EQ(camera.pitch_degrees(), OrbitCamera::kDefaultPitchDegrees);
+  EXPECT_NEAR(glm::length(camera.eye() - camera.target()), camera.distance(), 1e-12);
+}
+
+TEST(OrbitCamera, FitIsTightTheOutermostCornerTouchesTheMargin) {
+  // In a square viewport the corner furthest out lands at 1/1.15 of the way from the centre to the
+  // nearest side: no closer (it would leave the margin) and no further (the mesh would look small).
+  for (const BoundingBox& b : {box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}), box({-3, -2, 0}, {3.434, 2, 3.15})}) {
+    OrbitCamera camera;
+    camera.fit(b);
+    const Viewport viewport{400, 400};
+    double outermost = 0.0;
+    for (const glm::dvec3& c : corners(b)) {
+      const ScreenPoint p = camera.project(c, viewport);
+      outermost = std::max({outermost, std::abs(p.pixel.x - 200.0) / 200.0, std::abs(p.pixel.y - 200.0) / 200.0});
+    }
+    EXPECT_NEAR(outermost, 1.0 / 1.15, 1e-9);
+  }
+}
+
+TEST(OrbitCamera, FitPutsEveryBoxCornerInsideTheViewportAtAnyAspect) {
+  const BoundingBox boxes[] = {box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}), box({-3, -2, 0}, {3.434, 2, 3.15}),
+                               box({100, 100, 100}, {100.001, 100.5, 100.002}), box({0, 0, 0}, {10, 0.01, 0.01})};
+  const Viewport viewports[] = {{256, 256}, {1280, 800}, {300, 900}, {1, 1000}};
+  for (UpAxis up : {UpAxis::Y, UpAxis::Z}) {
+    for (const BoundingBox& b : boxes) {
+      for (Viewport v : viewports) {
+        OrbitCamera camera;
+        camera.set_up_axis(up);
+        camera.fit(b);
+        SCOPED_TRACE(::testing::Message() << "viewport " << v.width << "x" << v.height);
+        expect_all_corners_visible(camera, b, v);
+      }
+    }
+  }
+}
+
+TEST(OrbitCamera, EmptyOrPointBoxesStillGiveAUsableView) {
+  OrbitCamera camera;
+  camera.fit(BoundingBox{});
+  EXPECT_TRUE(near(camera.target(), {0, 0, 0}, 0.0));
+  expect_all_corners_visible(camera, box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}), {100, 100});
+  BoundingBox point;
+  point.add({2, 3, 4});
+  camera.fit(point);
+  EXPECT_TRUE(near(camera.target(), {2, 3, 4}, 0.0));
+  EXPECT_GT(camera.distance(), 0.0);
+  EXPECT_GT(camera.near_plane(), 0.0);
+  EXPECT_LT(camera.near_plane(), camera.distance());
+}
+
+TEST(OrbitCamera, ZUpIsTheDefault) {
+  const OrbitCamera camera;
+  EXPECT_EQ(camera.up_axis(), UpAxis::Z);
+  EXPECT_TRUE(near(camera.up_vector(), {0, 0, 1}, 0.0));
+  // The default view looks from the front (-y), the right (+x) and above (+z).
+  EXPECT_LT(camera.eye().y, 0.0);
+  EXPECT_GT(camera.eye().x, 0.0);
+  EXPECT_GT(camera.eye().z, 0.0);
+}
+
+TEST(OrbitCamera, YUpFrontViewLooksDownMinusZAndZUpDownPlusY) {
+  OrbitCamera camera;
+  camera.set_up_axis(UpAxis::Y);
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  camera.orbit(OrbitCamera::kDefaultYawDegrees * M_PI / 180 / OrbitCamera::kRadiansPerPixel,
+               -OrbitCamera::kDefaultPitchDegrees * M_PI / 180 / OrbitCamera::kRadiansPerPixel);
+  EXPECT_NEAR(camera.yaw_degrees(), 0.0, 1e-9);
+  EXPECT_NEAR(camera.pitch_degrees(), 0.0, 1e-9);
+  EXPECT_TRUE(near(camera.forward_direction(), {0, 0, -1}, 1e-12));
+  EXPECT_TRUE(near(camera.right_direction(), {1, 0, 0}, 1e-12));
+  EXPECT_TRUE(near(camera.screen_up_direction(), {0, 1, 0}, 1e-12));
+  camera.set_up_axis(UpAxis::Z);
+  EXPECT_TRUE(near(camera.forward_direction(), {0, 1, 0}, 1e-12));
+  EXPECT_TRUE(near(camera.right_direction(), {1, 0, 0}, 1e-12));
+  EXPECT_TRUE(near(camera.screen_up_direction(), {0, 0, 1}, 1e-12));
+}
+
+TEST(OrbitCamera, OrbitTurnsAroundTheTargetAndClampsPitch) {
+  OrbitCamera camera;
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  const glm::dvec3 target = camera.target();
+  const double distance = camera.distance();
+  const glm::dvec3 eye_before = camera.eye();
+  camera.orbit(50, 0);  // drag right: the mesh turns right, so the eye swings left (yaw decreases)
+  EXPECT_NEAR(camera.yaw_degrees(), OrbitCamera::kDefaultYawDegrees - 50 * 0.01 * 180 / M_PI, 1e-9);
+  EXPECT_DOUBLE_EQ(camera.pitch_degrees(), OrbitCamera::kDefaultPitchDegrees);
+  EXPECT_TRUE(near(camera.target(), target, 0.0));
+  EXPECT_NEAR(glm::length(camera.eye() - target), distance, 1e-12);
+  EXPECT_LT(camera.eye().x, eye_before.x);
+  camera.orbit(0, 10);  // drag down: seen more from above
+  EXPECT_NEAR(camera.pitch_degrees(), OrbitCamera::kDefaultPitchDegrees + 10 * 0.01 * 180 / M_PI, 1e-9);
+  camera.orbit(0, 1e6);
+  EXPECT_DOUBLE_EQ(camera.pitch_degrees(), 89.0);
+  camera.orbit(0, -1e6);
+  EXPECT_DOUBLE_EQ(camera.pitch_degrees(), -89.0);
+  EXPECT_TRUE(near(camera.target(), target, 0.0));
+}
+
+TEST(OrbitCamera, ZoomScalesTheDistanceWithinLimits) {
+  OrbitCamera camera;
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  const double fitted = camera.distance();
+  camera.zoom(1);
+  EXPECT_DOUBLE_EQ(camera.distance(), fitted * OrbitCamera::kZoomPerStep);
+  camera.zoom(-2);
+  EXPECT_NEAR(camera.distance(), fitted / OrbitCamera::kZoomPerStep, 1e-12);
+  camera.zoom(1000);
+  EXPECT_DOUBLE_EQ(camera.distance(), fitted / 100);
+  EXPECT_GT(camera.near_plane(), 0.0);
+  EXPECT_LT(camera.near_plane(), camera.distance());  // the target is never clipped
+  camera.zoom(-1000);
+  EXPECT_DOUBLE_EQ(camera.distance(), fitted * 20);
+  EXPECT_GT(camera.far_plane(), camera.distance() + 1.7);  // the whole box stays inside
+}
+
+TEST(OrbitCamera, PanMovesWhatIsUnderTheCursorWithTheDrag) {
+  OrbitCamera camera;
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  const Viewport viewport{800, 600};
+  const glm::dvec3 old_target = camera.target();
+  const ScreenPoint before = camera.project(old_target, viewport);
+  EXPECT_NEAR(before.pixel.x, 400.0, 1e-9);
+  EXPECT_NEAR(before.pixel.y, 300.0, 1e-9);
+  camera.pan(30, -20, viewport);
+  const ScreenPoint after = camera.project(old_target, viewport);
+  EXPECT_NEAR(after.pixel.x, 430.0, 1e-6);
+  EXPECT_NEAR(after.pixel.y, 280.0, 1e-6);
+  // The target moved in the screen plane only.
+  EXPECT_NEAR(glm::dot(camera.target() - old_target, camera.forward_direction()), 0.0, 1e-12);
+}
+
+TEST(OrbitCamera, ResetReturnsToTheFittedView) {
+  OrbitCamera camera;
+  camera.fit(box({0, 0, 0}, {2, 4, 6}));
+  const glm::dvec3 eye = camera.eye();
+  const glm::dvec3 target = camera.target();
+  camera.orbit(123, -45);
+  camera.zoom(3);
+  camera.pan(10, 10, {640, 480});
+  EXPECT_FALSE(near(camera.eye(), eye, 1e-6));
+  camera.reset();
+  EXPECT_TRUE(near(camera.eye(), eye, 1e-12));
+  EXPECT_TRUE(near(camera.target(), target, 0.0));
+}
+
+TEST(OrbitCamera, RayThroughTheCentrePixelHitsTheTarget) {
+  OrbitCamera camera;
+  camera.fit(box({-2, 0, 1}, {4, 3, 2}));
+  camera.orbit(-70, 35);
+  camera.pan(15, 5, {640, 480});
+  const Viewport viewport{640, 480};
+  const Ray ray = camera.ray({320.0, 240.0}, viewport);
+  EXPECT_TRUE(near(ray.origin, camera.eye(), 1e-12));
+  EXPECT_NEAR(glm::length(ray.direction), 1.0, 1e-12);
+  EXPECT_LT(distance_to_ray(ray, camera.target()), 1e-9);
+  // And a ray through any pixel passes through the point that projects there.
+  const glm::dvec3 p(0.5, 2.5, 1.25);
+  const ScreenPoint s = camera.project(p, viewport);
+  EXPECT_LT(distance_to_ray(camera.ray(s.pixel, viewport), p), 1e-9);
+}
+
+TEST(OrbitCamera, ProjectionIsBehindTheEyeForPointsBehindIt) {
+  OrbitCamera camera;
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  const glm::dvec3 behind = camera.eye() - camera.forward_direction() * 5.0;
+  EXPECT_FALSE(camera.project(behind, {100, 100}).in_front);
+}
+
+}  // namespace
+}  // namespace meshedit
