@@ -96,14 +96,8 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
     }
     case FileKind::Mesh: {
       result["kind"] = "mesh";
-      BuildReport report;
-      HalfedgeMesh mesh;
-      try {
-        mesh = build_halfedge_mesh(file.mesh, &report);
-      } catch (const MeshError& e) {
-        throw MeshError(path.string() + ": " + e.what(), e.element());
-      }
-      result.update(mesh_json(mesh, report.unused_vertices));
+      const LoadedMesh loaded = build_from_file(file.mesh, path);
+      result.update(mesh_json(loaded.mesh, loaded.unused_vertices));
       break;
     }
   }

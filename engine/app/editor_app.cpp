@@ -63,17 +63,8 @@ bool EditorApp::open(const std::filesystem::path& path) {
           camera_.fit(patch_renderer_->bounds());
         }
         break;
-      case FileKind::Mesh: {
-        BuildReport report;
-        HalfedgeMesh mesh;
-        try {
-          mesh = build_halfedge_mesh(file.mesh, &report);
-        } catch (const MeshError& e) {
-          throw MeshError(path.string() + ": " + e.what(), e.element());
-        }
-        show_mesh(std::move(mesh), path.string());
-        break;
-      }
+      case FileKind::Mesh:
+        show_mesh(build_from_file(file.mesh, path).mesh, path.string());
     }
     title_ = "MeshEdit - " + path.filename().string();
     remember_recent(path);

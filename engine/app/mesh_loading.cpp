@@ -16,8 +16,7 @@ PolygonMesh polygons_of(const LoadedFile& file, const std::filesystem::path& pat
   throw FileError(path.string(), "", "holds a Bézier curve, not a mesh");
 }
 
-LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resolution) {
-  const PolygonMesh polygons = polygons_of(load_file(path), path, patch_resolution);
+LoadedMesh build_from_file(const PolygonMesh& polygons, const std::filesystem::path& path) {
   LoadedMesh loaded;
   BuildReport report;
   try {
@@ -27,6 +26,10 @@ LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resol
   }
   loaded.unused_vertices = report.unused_vertices;
   return loaded;
+}
+
+LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resolution) {
+  return build_from_file(polygons_of(load_file(path), path, patch_resolution), path);
 }
 
 std::filesystem::path assets_dir() {

@@ -16,6 +16,9 @@ struct LoadedMesh {
   size_t unused_vertices = 0;  // input vertices no face used (kept as dead ids)
 };
 
+// build_halfedge_mesh, with the file's name put in front of a refusal ("cow.obj: the edge between ...").
+LoadedMesh build_from_file(const PolygonMesh& polygons, const std::filesystem::path& path);
+
 // Throws FileError (unreadable file) or MeshError (not a manifold), both naming the file.
 LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resolution = kDefaultPatchResolution);
 

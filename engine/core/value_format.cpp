@@ -5,11 +5,20 @@
 
 namespace meshedit {
 
-std::string format_number(double x) {
+void append_number(std::string& out, double x) {
   char buffer[32];  // the longest shortest form is 24 characters ("-2.2250738585072014e-308")
   const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  if (error != std::errc()) return "?";
-  return std::string(buffer, end);
+  if (error != std::errc()) {
+    out += '?';
+    return;
+  }
+  out.append(buffer, end);
+}
+
+std::string format_number(double x) {
+  std::string text;
+  append_number(text, x);
+  return text;
 }
 
 std::string format_position(const glm::dvec3& p) {

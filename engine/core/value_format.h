@@ -13,6 +13,8 @@ namespace meshedit {
 
 // "0.5", "1", "-0", "0.1", "1e+100".
 std::string format_number(double x);
+// The same text appended to `out` (what the file writers use, without a string per number).
+void append_number(std::string& out, double x);
 // "(0.5, 0, 1)".
 std::string format_position(const glm::dvec3& p);
 

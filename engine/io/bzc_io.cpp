@@ -8,7 +8,7 @@
 #include "io/file_access.h"
 #include "io/file_error.h"
 #include "io/io_limits.h"
-#include "io/number_format.h"
+#include "core/value_format.h"
 #include "io/text_scanner.h"
 
 namespace meshedit {
