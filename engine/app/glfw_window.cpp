@@ -45,7 +45,18 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
     auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
     for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    self->input_seen_ = true;
   });
+  // Installed before ImGui's backend, which chains to them: they only note that input arrived.
+  glfwSetCursorPosCallback(window_, [](GLFWwindow* w, double, double) { note_input(w); });
+  glfwSetMouseButtonCallback(window_, [](GLFWwindow* w, int, int, int) { note_input(w); });
+  glfwSetScrollCallback(window_, [](GLFWwindow* w, double, double) { note_input(w); });
+  glfwSetKeyCallback(window_, [](GLFWwindow* w, int, int, int, int) { note_input(w); });
+  glfwSetCharCallback(window_, [](GLFWwindow* w, unsigned int) { note_input(w); });
+  glfwSetWindowFocusCallback(window_, [](GLFWwindow* w, int) { note_input(w); });
+  glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { note_input(w); });
+  glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { note_input(w); });
+  glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { note_input(w); });
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
@@ -63,11 +74,26 @@ GlfwWindow::~GlfwWindow() {
   glfwTerminate();
 }
 
+void GlfwWindow::note_input(GLFWwindow* w) { static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->input_seen_ = true; }
+
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
 void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
 void GlfwWindow::begin_frame() {
-  glfwPollEvents();
+  // ImGui needs a couple of frames after an input to settle hover states and animations. X delivers
+  // events that are not input (ImGui's cursor updates cause some), so only the callbacks below count.
+  constexpr int kSettleFrames = 3;
+  constexpr double kIdleTimeoutSeconds = 5.0;  // a redraw now and then, even with no input
+  if (lazy_ && quiet_frames_ >= kSettleFrames) {
+    const double start = glfwGetTime();
+    while (!input_seen_ && glfwGetTime() - start < kIdleTimeoutSeconds && !should_close()) {
+      glfwWaitEventsTimeout(kIdleTimeoutSeconds - (glfwGetTime() - start));
+    }
+  } else {
+    glfwPollEvents();
+  }
+  quiet_frames_ = input_seen_ ? 0 : quiet_frames_ + 1;
+  input_seen_ = false;
   ImGui_ImplOpenGL3_NewFrame();
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();

@@ -23,8 +23,12 @@ class GlfwWindow {
 
   bool should_close() const;
   void request_close();
-  // Polls events and starts an ImGui frame.
+  // Waits for input when the last frames were idle (see set_lazy), polls events, starts an ImGui frame.
   void begin_frame();
+  // Lazy mode: after a few frames with no input, sleep until the next event (or a second passes) instead of
+  // redrawing at the display's rate: an idle window costs nothing, even with a million triangles. Off for
+  // scripted runs, which need every frame.
+  void set_lazy(bool lazy) { lazy_ = lazy; }
   // Renders ImGui's draw data over whatever was drawn, calls `before_swap` (screenshots read the finished
   // frame there), then swaps buffers.
   void end_frame(const std::function<void()>& before_swap = {});
@@ -36,8 +40,13 @@ class GlfwWindow {
   void set_title(const std::string& title);
 
  private:
+  static void note_input(GLFWwindow* window);
+
   GLFWwindow* window_ = nullptr;
   std::vector<std::string> dropped_;
+  bool lazy_ = true;
+  bool input_seen_ = true;  // set by the input callbacks, cleared each frame
+  int quiet_frames_ = 0;    // frames since the last input
 };
 
 }  // namespace meshedit

@@ -162,6 +162,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   ActionPlayer player(script ? read_actions(*script) : std::vector<ScriptedAction>{}, std::cerr);
 
   GlfwWindow window("MeshEdit", width, height);
+  window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
   app.show_mesh(build_halfedge_mesh(make_cube()), "");
   if (!args.empty()) app.open(args[0]);  // on failure the cube stays and the status line says why
