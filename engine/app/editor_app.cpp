@@ -61,6 +61,7 @@ bool EditorApp::open(const std::filesystem::path& path) {
         if (patches_.tessellation.mesh) {
           patch_renderer_->update(*patches_.tessellation.mesh);
           camera_.fit(patch_renderer_->bounds());
+          camera_.zoom(-kFitZoomOutSteps);
         }
         break;
       case FileKind::Mesh:
@@ -101,7 +102,15 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   }
 }
 
-void EditorApp::fit_camera() { camera_.fit(mesh_renderer_->bounds()); }
+void EditorApp::fit_camera() {
+  camera_.fit(mesh_renderer_->bounds());
+  camera_.zoom(-kFitZoomOutSteps);
+}
+
+void EditorApp::reset_view() {
+  camera_.reset();
+  camera_.zoom(-kFitZoomOutSteps);
+}
 
 void EditorApp::frame(int width, int height, float frame_ms) {
   viewport_width_ = std::max(1, width);

@@ -43,6 +43,9 @@ struct KeyMods {
 
 class EditorApp {
  public:
+  // After fitting a mesh, the camera backs off this many zoom steps so the mesh clears the side panels.
+  static constexpr double kFitZoomOutSteps = 1.5;
+
   EditorApp();  // needs a current OpenGL 3.3 core context (throws RenderError if the shaders are missing)
   ~EditorApp();
 
@@ -87,6 +90,7 @@ class EditorApp {
   void message(Severity severity, const std::string& text);
   void remember_recent(const std::filesystem::path& path);
   void fit_camera();
+  void reset_view();  // Space: back to the fitted view
   Viewport viewport() const { return {viewport_width_, viewport_height_}; }
 
   ShaderLibrary shaders_;

@@ -39,7 +39,7 @@ bool EditorApp::handle_key(int key, KeyMods mods) {
     return true;
   }
   if (key == GLFW_KEY_SPACE) {
-    camera_.reset();
+    reset_view();
     return true;
   }
 

@@ -75,7 +75,7 @@ void EditorApp::draw_menu_bar() {
     ImGui::Separator();
     ImGui::MenuItem("Inspector", "I", &inspector_.open);
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-    if (ImGui::MenuItem("Reset view", "Space")) camera_.reset();
+    if (ImGui::MenuItem("Reset view", "Space")) reset_view();
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {

@@ -12,6 +12,7 @@
 #include <set>
 #include <sstream>
 
+#include "app/editor_app.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
@@ -111,6 +112,7 @@ TEST(Window, PickFlipUndoAndScreenshotOnTheCube) {
   const HalfedgeMesh before = build_halfedge_mesh(make_cube());
   OrbitCamera camera;
   camera.fit(mesh_bounds(before));
+  camera.zoom(-EditorApp::kFitZoomOutSteps);
   const ScreenPoint v7 = camera.project(before.position(VertexId(7)), {1280, 800});
   ASSERT_TRUE(v7.in_front);
 
