@@ -2,6 +2,7 @@
 #include <charconv>
 
 #include "app/cli_commands.h"
+#include "core/patch_tessellation.h"
 
 namespace meshedit {
 
@@ -34,6 +35,11 @@ int parse_count(const std::string& text, const std::string& option, int max) {
     throw UsageError(option + " must be a whole number from 0 to " + std::to_string(max) + ", not '" + text + "'");
   }
   return value;
+}
+
+int take_resolution_option(std::vector<std::string>& args) {
+  const auto text = take_option(args, "--resolution");
+  return text ? parse_count(*text, "--resolution", 256) : kDefaultPatchResolution;
 }
 
 void reject_unknown_options(const std::vector<std::string>& args) {

@@ -31,6 +31,8 @@ std::optional<std::string> take_option(std::vector<std::string>& args, const std
 bool take_flag(std::vector<std::string>& args, const std::string& name);
 // Parses a whole non-negative integer no larger than `max`, or throws UsageError naming the option.
 int parse_count(const std::string& text, const std::string& option, int max);
+// Removes `--resolution N` (tessellation per Bézier patch) and returns N, or the default (16).
+int take_resolution_option(std::vector<std::string>& args);
 // Throws UsageError if any argument starting with '-' is left.
 void reject_unknown_options(const std::vector<std::string>& args);
 

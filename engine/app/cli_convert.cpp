@@ -13,11 +13,6 @@ namespace {
 // Subdividing multiplies faces by 4 per level; past this the output would not fit in memory sensibly.
 constexpr double kMaxOutputFaces = 64e6;
 
-int resolution_option(std::vector<std::string>& args) {
-  const auto text = take_option(args, "--resolution");
-  return text ? parse_count(*text, "--resolution", 256) : kDefaultPatchResolution;
-}
-
 double milliseconds_since(std::chrono::steady_clock::time_point start) {
   return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
 }
@@ -26,7 +21,7 @@ double milliseconds_since(std::chrono::steady_clock::time_point start) {
 
 int run_convert(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
-  const int resolution = resolution_option(args);
+  const int resolution = take_resolution_option(args);
   reject_unknown_options(args);
   if (args.size() != 2) throw UsageError("convert takes an input and an output file");
   const PolygonMesh polygons = polygons_of(load_file(args[0]), args[0], resolution);
@@ -38,7 +33,7 @@ int run_convert(const std::vector<std::string>& arguments, std::ostream& out) {
 
 int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
-  const int resolution = resolution_option(args);
+  const int resolution = take_resolution_option(args);
   const auto levels_text = take_option(args, "--levels", "-n");
   const auto output = take_option(args, "--output", "-o");
   const std::string weights_name = take_option(args, "--weights").value_or("course");

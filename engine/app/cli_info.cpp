@@ -67,8 +67,7 @@ void print_mesh(const nlohmann::json& m, std::ostream& out, const std::string& i
 int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
   const bool json = take_flag(args, "--json");
-  const auto resolution_text = take_option(args, "--resolution");
-  const int resolution = resolution_text ? parse_count(*resolution_text, "--resolution", 256) : kDefaultPatchResolution;
+  const int resolution = take_resolution_option(args);
   reject_unknown_options(args);
   if (args.size() != 1) throw UsageError("info takes one file");
   const std::filesystem::path path = args[0];

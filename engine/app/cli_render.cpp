@@ -50,7 +50,7 @@ int run_render(const std::vector<std::string>& arguments, std::ostream& out) {
   const std::string shading = take_option(args, "--shading").value_or("flat");
   const auto subdivide_text = take_option(args, "--subdivide");
   const Viewport size = parse_size(take_option(args, "--size").value_or("800x600"));
-  const auto resolution_text = take_option(args, "--resolution");
+  const int resolution = take_resolution_option(args);
   const auto up_text = take_option(args, "--up");
   ViewOptions options;
   options.wireframe = take_flag(args, "--wireframe");
@@ -67,7 +67,6 @@ int run_render(const std::vector<std::string>& arguments, std::ostream& out) {
   }
   options.smooth_shading = shading == "phong";
   const int levels = subdivide_text ? parse_count(*subdivide_text, "--subdivide", 8) : 0;
-  const int resolution = resolution_text ? parse_count(*resolution_text, "--resolution", 256) : kDefaultPatchResolution;
   const std::filesystem::path input = args[0];
   const bool z_up = !up_text || *up_text == "z";
 
