@@ -26,6 +26,7 @@ constexpr const char* kUsage =
     "                                       Loop subdivision, LEVELS times\n"
     "  render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
     "                                       a picture without a display (EGL); also --vertices --halfedges\n"
+    "  run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
     "\n"
     "options for files with Bézier patches (.bez): --resolution N (tessellation per patch, default 16)\n"
     "with no command, or a file as the first argument, meshedit opens the window\n";
@@ -34,7 +35,7 @@ constexpr const char* kUsage =
 // like a file or an option (meshedit teapot.dae, meshedit --actions t.txt), else the word itself, which
 // run_cli reports as unknown.
 std::string command_name(const std::vector<std::string>& args) {
-  static const std::set<std::string> commands = {"demo",   "info", "convert", "subdivide", "render",
+  static const std::set<std::string> commands = {"demo",   "info", "convert", "subdivide", "render", "run",
                                                  "help",   "-h",   "--help",  "--version"};
   if (args.empty()) return "window";
   const std::string& first = args.front();
@@ -64,6 +65,7 @@ int run_cli(int argc, char** argv) {
     if (command == "convert") return run_convert(args, std::cout);
     if (command == "subdivide") return run_subdivide(args, std::cout);
     if (command == "render") return run_render(args, std::cout);
+    if (command == "run") return run_run(args, std::cout);
     throw UsageError("unknown command '" + command + "'");
   } catch (const UsageError& e) {
     std::cerr << "meshedit: " << e.what() << " (see meshedit --help)\n";

@@ -22,6 +22,8 @@ int run_info(const std::vector<std::string>& args, std::ostream& out);
 int run_convert(const std::vector<std::string>& args, std::ostream& out);
 int run_subdivide(const std::vector<std::string>& args, std::ostream& out);
 int run_render(const std::vector<std::string>& args, std::ostream& out);
+// A Lua script with no window; ScriptError (its file:line message) when the script fails.
+int run_run(const std::vector<std::string>& args, std::ostream& out);
 
 // Argument helpers shared by the commands.
 // Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.

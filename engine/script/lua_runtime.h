@@ -2,13 +2,17 @@
 //
 // Invariants:
 // - Lua is Debian's C++ build: a Lua error unwinds C++ frames (destructors run). Bindings catch
-//   std::exception and turn it into a Lua error (see lua_guard.h); no C++ exception crosses into Lua.
+//   std::exception and turn it into a Lua error (`guarded` in mesh_bindings.cpp); no C++ exception crosses
+//   into Lua.
 // - The instruction budget, the memory cap and the wall-clock deadline are checked in one count hook.
 //   Once any of them is exceeded the runtime is "killed": the hook is re-armed to fire on every instruction
 //   and errors each time, so a `pcall` in the script cannot swallow the stop; it lasts until the next run.
 // - Globals are built by whitelist: base (without dofile, loadfile, warn; load is text-only; collectgarbage
 //   only "count", "collect" and "step"), string (without dump), table, math, utf8, coroutine, and os with only
 //   clock, time, date, difftime. No io, package/require or debug. The string metatable is protected.
+// - The `meshedit` module (mesh_bindings.h) is opened in every runtime.
+// - The wall clock is checked in the hook only: a long call into C (a pathological string pattern, one big
+//   C++ operation) is not interrupted; a watchdog thread or a child process is the backstop for that.
 // - Every error a run reports is a string starting with `file:line:` when Lua knows the line.
 #pragma once
 

@@ -1,0 +1,348 @@
+// LuaRuntime: state creation, the whitelisted globals, the capped allocator and the one count hook that
+// enforces every limit (see lua_runtime.h for the invariants).
+#include "script/lua_runtime.h"
+
+#include <cstdlib>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+
+#include <lua.hpp>
+
+#include "script/mesh_bindings.h"
+
+namespace meshedit {
+namespace {
+
+LuaRuntime* runtime_of(lua_State* L) { return *static_cast<LuaRuntime**>(lua_getextraspace(L)); }
+
+// Message handler: keeps strings, names the type of anything else. It never calls __tostring, so an error
+// object cannot run script code outside the limits' reach.
+int message_handler(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING) return 1;
+  lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  return 1;
+}
+
+// Replaces each argument by its tostring; run in protected mode because __tostring is script code.
+int to_strings(lua_State* L) {
+  const int n = lua_gettop(L);
+  for (int i = 1; i <= n; ++i) {
+    luaL_tolstring(L, i, nullptr);
+    lua_replace(L, i);
+  }
+  return n;
+}
+
+std::string megabytes(size_t bytes) {
+  std::ostringstream s;
+  s << (bytes >> 20) << " MB";
+  return s.str();
+}
+
+// Keeps only the listed fields of the table on top of the stack.
+void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
+  std::vector<std::string> drop;
+  lua_pushnil(L);
+  while (lua_next(L, -2) != 0) {
+    lua_pop(L, 1);
+    if (lua_type(L, -1) != LUA_TSTRING) continue;
+    std::string key = lua_tostring(L, -1);
+    bool kept = false;
+    for (const char* k : keep) kept = kept || key == k;
+    if (!kept) drop.push_back(key);
+  }
+  for (const auto& key : drop) {
+    lua_pushnil(L);
+    lua_setfield(L, -2, key.c_str());
+  }
+}
+
+}  // namespace
+
+LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
+  L_ = lua_newstate(&LuaRuntime::allocate, this);
+  if (!L_) throw ScriptError("cannot create the Lua state (out of memory)");
+  *static_cast<LuaRuntime**>(lua_getextraspace(L_)) = this;
+  open_whitelist();
+  open_mesh_bindings(L_);
+}
+
+LuaRuntime::~LuaRuntime() {
+  if (L_) lua_close(L_);
+}
+
+void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size) {
+  auto* self = static_cast<LuaRuntime*>(ud);
+  const size_t old = ptr ? old_size : 0;  // old_size is a type tag when ptr is null
+  if (new_size == 0) {
+    std::free(ptr);
+    self->memory_used_ -= old;
+    return nullptr;
+  }
+  // After the cap was hit, a little headroom lets Lua build the error message that stops the script.
+  const size_t cap = self->memory_hit_ ? self->limits_.memory_bytes + (size_t(1) << 20) : self->limits_.memory_bytes;
+  if (new_size > old && self->memory_used_ - old + new_size > cap) {
+    self->note_memory_hit();
+    return nullptr;
+  }
+  void* result = std::realloc(ptr, new_size);
+  if (result) self->memory_used_ = self->memory_used_ - old + new_size;
+  return result;
+}
+
+void LuaRuntime::note_memory_hit() {
+  if (memory_hit_ || !L_) {
+    memory_hit_ = true;
+    return;
+  }
+  memory_hit_ = true;
+  // Stop at the very next instruction (a pcall may catch the memory error itself).
+  lua_sethook(L_, &LuaRuntime::count_hook, LUA_MASKCOUNT, 1);
+  // Remember where the script was (the innermost Lua frame): a memory error skips the message handler.
+  lua_Debug ar;
+  for (int level = 0; lua_getstack(L_, level, &ar); ++level) {
+    if (!lua_getinfo(L_, "Sl", &ar)) break;
+    if (ar.currentline > 0) {
+      memory_hit_where_ = std::string(ar.short_src) + ":" + std::to_string(ar.currentline) + ": ";
+      break;
+    }
+  }
+}
+
+void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
+  LuaRuntime* self = runtime_of(L);
+  if (!self->killed_) {
+    self->instructions_ += kHookInterval;
+    if (self->instructions_ > self->limits_.instructions) {
+      self->kill_message_ =
+          "instruction budget exceeded (" + std::to_string(self->limits_.instructions) + " instructions)";
+    } else if (self->memory_hit_) {
+      self->kill_message_ = "memory limit exceeded (" + megabytes(self->limits_.memory_bytes) + ")";
+    } else if (std::chrono::steady_clock::now() > self->deadline_) {
+      std::ostringstream s;
+      s << "time limit exceeded (" << self->limits_.wall_seconds << " s)";
+      self->kill_message_ = s.str();
+    } else {
+      // A coroutine made in an earlier, stopped run may still carry the every-instruction hook.
+      if (lua_gethookcount(L) != kHookInterval) lua_sethook(L, &LuaRuntime::count_hook, LUA_MASKCOUNT, kHookInterval);
+      return;
+    }
+    self->killed_ = true;
+    // From now on every instruction errors, so no pcall can catch the stop and carry on.
+    lua_sethook(L, &LuaRuntime::count_hook, LUA_MASKCOUNT, 1);
+  }
+  luaL_where(L, 0);
+  lua_pushstring(L, self->kill_message_.c_str());
+  lua_concat(L, 2);
+  lua_error(L);
+}
+
+int LuaRuntime::print_function(lua_State* L) {
+  const int n = lua_gettop(L);
+  std::string line;
+  for (int i = 1; i <= n; ++i) {
+    size_t len = 0;
+    const char* s = luaL_tolstring(L, i, &len);
+    if (i > 1) line += '\t';
+    line.append(s, len);
+    lua_pop(L, 1);
+  }
+  LuaRuntime* self = runtime_of(L);
+  std::string failure;
+  try {
+    if (self->print_) self->print_(line);
+  } catch (const std::exception& e) {  // a host callback's exception must not cross Lua frames
+    failure = e.what();
+  }
+  if (!failure.empty()) return luaL_error(L, "print failed: %s", failure.c_str());
+  return 0;
+}
+
+// load(chunk [, chunkname [, mode [, env]]]) with mode forced to text: bytecode is never loaded.
+int LuaRuntime::load_function(lua_State* L) {
+  const int has_env = !lua_isnone(L, 4);
+  size_t len = 0;
+  const char* text = nullptr;
+  std::string pieces;
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    text = lua_tolstring(L, 1, &len);
+  } else {
+    luaL_checktype(L, 1, LUA_TFUNCTION);
+    for (;;) {  // the reader-function form: concatenate the pieces it returns
+      lua_pushvalue(L, 1);
+      lua_call(L, 0, 1);
+      if (lua_isnil(L, -1) || (lua_type(L, -1) == LUA_TSTRING && lua_rawlen(L, -1) == 0)) {
+        lua_pop(L, 1);
+        break;
+      }
+      if (lua_type(L, -1) != LUA_TSTRING) return luaL_error(L, "reader function must return a string");
+      size_t n = 0;
+      const char* piece = lua_tolstring(L, -1, &n);
+      pieces.append(piece, n);
+      lua_pop(L, 1);
+    }
+    text = pieces.c_str();
+    len = pieces.size();
+  }
+  const char* name = luaL_optstring(L, 2, text == pieces.c_str() ? "=(load)" : text);
+  const int status = luaL_loadbufferx(L, text, len, name, "t");
+  if (status != LUA_OK) {
+    luaL_pushfail(L);
+    lua_insert(L, -2);
+    return 2;
+  }
+  if (has_env) {
+    lua_pushvalue(L, 4);
+    if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
+  }
+  return 1;
+}
+
+int LuaRuntime::collectgarbage_function(lua_State* L) {
+  const char* option = luaL_optstring(L, 1, "collect");
+  if (std::strcmp(option, "count") == 0) {
+    lua_pushnumber(L, lua_gc(L, LUA_GCCOUNT) + lua_gc(L, LUA_GCCOUNTB) / 1024.0);
+    return 1;
+  }
+  if (std::strcmp(option, "collect") == 0) {
+    lua_gc(L, LUA_GCCOLLECT);
+    lua_pushinteger(L, 0);
+    return 1;
+  }
+  if (std::strcmp(option, "step") == 0) {
+    lua_pushboolean(L, lua_gc(L, LUA_GCSTEP, 0));
+    return 1;
+  }
+  return luaL_argerror(L, 1, lua_pushfstring(L, "option '%s' is not allowed", option));
+}
+
+void LuaRuntime::open_whitelist() {
+  struct Library {
+    const char* name;
+    lua_CFunction open;
+  };
+  const Library libraries[] = {{"_G", luaopen_base},        {LUA_STRLIBNAME, luaopen_string},
+                               {LUA_TABLIBNAME, luaopen_table}, {LUA_MATHLIBNAME, luaopen_math},
+                               {LUA_UTF8LIBNAME, luaopen_utf8}, {LUA_COLIBNAME, luaopen_coroutine},
+                               {LUA_OSLIBNAME, luaopen_os}};
+  for (const auto& library : libraries) {
+    luaL_requiref(L_, library.name, library.open, 1);
+    lua_pop(L_, 1);
+  }
+  lua_pushglobaltable(L_);
+  for (const char* name : {"dofile", "loadfile", "warn"}) {
+    lua_pushnil(L_);
+    lua_setfield(L_, -2, name);
+  }
+  lua_pushcfunction(L_, &LuaRuntime::print_function);
+  lua_setfield(L_, -2, "print");
+  lua_pushcfunction(L_, &LuaRuntime::load_function);
+  lua_setfield(L_, -2, "load");
+  lua_pushcfunction(L_, &LuaRuntime::collectgarbage_function);
+  lua_setfield(L_, -2, "collectgarbage");
+  lua_getfield(L_, -1, LUA_OSLIBNAME);
+  keep_only(L_, {"clock", "time", "date", "difftime"});
+  lua_pop(L_, 1);
+  lua_getfield(L_, -1, LUA_STRLIBNAME);
+  lua_pushnil(L_);
+  lua_setfield(L_, -2, "dump");
+  lua_pop(L_, 2);
+  // Protect the string metatable: getmetatable("") returns false instead of the shared string table.
+  lua_pushliteral(L_, "");
+  lua_getmetatable(L_, -1);
+  lua_pushboolean(L_, 0);
+  lua_setfield(L_, -2, "__metatable");
+  lua_pop(L_, 2);
+  // Lessons get a fixed random sequence unless they seed it themselves.
+  lua_getglobal(L_, LUA_MATHLIBNAME);
+  lua_getfield(L_, -1, "randomseed");
+  lua_pushinteger(L_, 184);
+  lua_call(L_, 1, 0);
+  lua_pop(L_, 1);
+}
+
+void LuaRuntime::start_run() {
+  instructions_ = 0;
+  killed_ = false;
+  kill_message_.clear();
+  memory_hit_ = false;
+  memory_hit_where_.clear();
+  deadline_ = std::chrono::steady_clock::now() +
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(limits_.wall_seconds));
+  lua_sethook(L_, &LuaRuntime::count_hook, LUA_MASKCOUNT, kHookInterval);
+}
+
+int LuaRuntime::call(int nargs) {
+  const int base = lua_gettop(L_) - nargs;  // the function's slot
+  lua_pushcfunction(L_, message_handler);
+  lua_insert(L_, base);
+  const int status = lua_pcall(L_, nargs, LUA_MULTRET, base);
+  lua_remove(L_, base);
+  return status;
+}
+
+void LuaRuntime::throw_error() {
+  std::string message;
+  if (lua_type(L_, -1) == LUA_TSTRING) message = lua_tostring(L_, -1);
+  else message = std::string("(error object is a ") + luaL_typename(L_, -1) + " value)";
+  lua_settop(L_, 0);
+  // A memory error skips the message handler: give it the place and the reason it really has.
+  if (memory_hit_ && !killed_ && message == "not enough memory") {
+    message = memory_hit_where_ + "memory limit exceeded (" + megabytes(limits_.memory_bytes) + ")";
+  }
+  lua_sethook(L_, nullptr, 0, 0);
+  throw ScriptError(message);
+}
+
+std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std::string& chunk_name) {
+  lua_settop(L_, 0);
+  start_run();
+  const std::string name = "@" + chunk_name;
+  if (luaL_loadbufferx(L_, code.data(), code.size(), name.c_str(), "t") != LUA_OK) throw_error();
+  if (call(0) != LUA_OK) throw_error();
+  const int n = lua_gettop(L_);
+  lua_pushcfunction(L_, to_strings);
+  lua_insert(L_, 1);
+  if (call(n) != LUA_OK) throw_error();
+  std::vector<std::string> results;
+  for (int i = 1; i <= n; ++i) {
+    size_t len = 0;
+    const char* s = lua_tolstring(L_, i, &len);
+    results.emplace_back(s, len);
+  }
+  lua_settop(L_, 0);
+  lua_sethook(L_, nullptr, 0, 0);
+  return results;
+}
+
+void LuaRuntime::run_file(const std::filesystem::path& path, const std::vector<std::string>& args) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw ScriptError("cannot open " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  const std::string code = text.str();
+
+  lua_settop(L_, 0);
+  lua_createtable(L_, static_cast<int>(args.size()), 1);
+  lua_pushstring(L_, path.string().c_str());
+  lua_rawseti(L_, -2, 0);
+  for (size_t i = 0; i < args.size(); ++i) {
+    lua_pushstring(L_, args[i].c_str());
+    lua_rawseti(L_, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setglobal(L_, "arg");
+
+  start_run();
+  const std::string name = "@" + path.string();
+  // A first line starting with '#' (a shebang) becomes a comment, keeping the line numbers, as lua.c skips it.
+  const std::string body = !code.empty() && code[0] == '#' ? "--" + code : code;
+  if (luaL_loadbufferx(L_, body.data(), body.size(), name.c_str(), "t") != LUA_OK) throw_error();
+  for (const auto& a : args) lua_pushstring(L_, a.c_str());
+  if (call(static_cast<int>(args.size())) != LUA_OK) throw_error();
+  lua_settop(L_, 0);
+  lua_sethook(L_, nullptr, 0, 0);
+}
+
+}  // namespace meshedit
