@@ -395,31 +395,25 @@ Handle& check_edge_of(lua_State* L, MeshBox& box) {
   return e;
 }
 
+// mesh:flip(e), mesh:split(e), mesh:collapse(e): the element the core returns, or nil and the reason.
+template <class Operation>
+int run_edge_operation(lua_State* L, Operation operation) {
+  MeshBox& box = check_mesh(L, 1);
+  Handle& e = check_edge_of(L, box);
+  const auto result = operation(*box.mesh, EdgeId(e.index));
+  if (!result.ok()) return push_refusal(L, result.check);
+  push_handle(L, box.mesh, result.value);
+  return 1;
+}
+
 int mesh_flip(lua_State* L) {
-  MeshBox& box = check_mesh(L, 1);
-  Handle& e = check_edge_of(L, box);
-  const auto result = flip(*box.mesh, EdgeId(e.index));
-  if (!result.ok()) return push_refusal(L, result.check);
-  push_handle(L, box.mesh, result.value);
-  return 1;
+  return run_edge_operation(L, [](HalfedgeMesh& mesh, EdgeId e) { return flip(mesh, e); });
 }
-
 int mesh_split(lua_State* L) {
-  MeshBox& box = check_mesh(L, 1);
-  Handle& e = check_edge_of(L, box);
-  const auto result = split(*box.mesh, EdgeId(e.index));
-  if (!result.ok()) return push_refusal(L, result.check);
-  push_handle(L, box.mesh, result.value);
-  return 1;
+  return run_edge_operation(L, [](HalfedgeMesh& mesh, EdgeId e) { return split(mesh, e); });
 }
-
 int mesh_collapse(lua_State* L) {
-  MeshBox& box = check_mesh(L, 1);
-  Handle& e = check_edge_of(L, box);
-  const auto result = collapse(*box.mesh, EdgeId(e.index));
-  if (!result.ok()) return push_refusal(L, result.check);
-  push_handle(L, box.mesh, result.value);
-  return 1;
+  return run_edge_operation(L, [](HalfedgeMesh& mesh, EdgeId e) { return collapse(mesh, e); });
 }
 
 // One loop_subdivide call runs in C++, out of the instruction hook's reach, and quadruples the faces; past
