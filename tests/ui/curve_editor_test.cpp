@@ -2,6 +2,7 @@
 // transform with exact numbers, and the ImGui window driven headless (no backend: fonts built, frames
 // rendered to draw data) with a simulated drag, double click, right click and scroll.
 #include "ui/curve_editor.h"
+#include "ui/ui_test_support.h"
 
 #include <cmath>
 #include <limits>
@@ -392,42 +393,25 @@ TEST(CurveEditor, CanvasInputAddsRemovesAndScrolls) {
 
 // ---- ImGui, headless -------------------------------------------------------------------------------
 
-// An ImGui context of its own with a built font atlas and no backend; frames render to draw data only.
-class HeadlessImGui {
+// The shared headless ImGui (ui_test_support.h) at 1024x768, with one frame of the curve editor in a fixed
+// 800x600 window and the mouse at `mouse`.
+class CurveEditorHarness : public ui_testing::ImGuiHarness {
  public:
-  HeadlessImGui() : context_(ImGui::CreateContext()) {
-    ImGui::SetCurrentContext(context_);
-    ImGuiIO& io = ImGui::GetIO();
-    io.IniFilename = nullptr;
-    io.LogFilename = nullptr;
-    io.DisplaySize = ImVec2(1024.0f, 768.0f);
-    io.DeltaTime = 1.0f / 60.0f;
-    unsigned char* pixels = nullptr;
-    int width = 0;
-    int height = 0;
-    io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-  }
-  ~HeadlessImGui() { ImGui::DestroyContext(context_); }
-  HeadlessImGui(const HeadlessImGui&) = delete;
-  HeadlessImGui& operator=(const HeadlessImGui&) = delete;
+  CurveEditorHarness() : ImGuiHarness(ImVec2(1024.0f, 768.0f)) {}
 
-  // One frame of the curve editor with the mouse at `mouse`.
   ImDrawData* frame(CurveEditorState& state, dvec2 mouse, bool left = false, bool right = false, float wheel = 0.0f) {
     ImGuiIO& io = ImGui::GetIO();
     io.MousePos = ImVec2(static_cast<float>(mouse.x), static_cast<float>(mouse.y));
     io.MouseDown[0] = left;
     io.MouseDown[1] = right;
     io.MouseWheel = wheel;
-    ImGui::NewFrame();
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(800.0f, 600.0f));
-    draw_curve_editor(state);
-    ImGui::Render();
+    ImGuiHarness::frame([&] {
+      ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+      ImGui::SetNextWindowSize(ImVec2(800.0f, 600.0f));
+      draw_curve_editor(state);
+    });
     return ImGui::GetDrawData();
   }
-
- private:
-  ImGuiContext* context_;
 };
 
 // A whole pixel near `p`: ImGui 1.86 floors io.MousePos in NewFrame, so tests put the mouse on whole
@@ -435,7 +419,7 @@ class HeadlessImGui {
 dvec2 pixel(dvec2 p) { return {std::round(p.x), std::round(p.y)}; }
 
 TEST(CurveEditorImGui, DrawsTheCanvasAndFitsTheCurveInIt) {
-  HeadlessImGui imgui;
+  CurveEditorHarness imgui;
   CurveEditorState state = make_curve_editor(course_cubic());
   state.levels_shown = 3;
   state.show_curve = true;
@@ -458,7 +442,7 @@ TEST(CurveEditorImGui, DrawsTheCanvasAndFitsTheCurveInIt) {
 }
 
 TEST(CurveEditorImGui, DraggingWithTheMouseMovesThatControlPoint) {
-  HeadlessImGui imgui;
+  CurveEditorHarness imgui;
   CurveEditorState state = make_curve_editor(course_cubic());
   const BezierCurve before = state.curve;
   imgui.frame(state, {1000.0, 700.0});  // lays out the canvas: state.view is now the real transform
@@ -483,7 +467,7 @@ TEST(CurveEditorImGui, DraggingWithTheMouseMovesThatControlPoint) {
 }
 
 TEST(CurveEditorImGui, DoubleClickAddsRightClickRemovesScrollMovesT) {
-  HeadlessImGui imgui;
+  CurveEditorHarness imgui;
   CurveEditorState state = make_curve_editor(course_cubic());
   imgui.frame(state, {1000.0, 700.0});
   // Just inside the canvas's bottom-right corner: far from every control point.

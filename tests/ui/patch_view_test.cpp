@@ -2,6 +2,7 @@
 // toggles choose what is drawn, the tessellation cache rebuilds only on change, and the panel draws
 // headless (its own ImGui context, no backend).
 #include "ui/patch_view.h"
+#include "ui/ui_test_support.h"
 
 #include <algorithm>
 #include <cfloat>
@@ -273,26 +274,15 @@ TEST(PatchView, InconsistentPatchesKeepPolygonsAndSayWhy) {
 // ---- ImGui, headless -------------------------------------------------------------------------------
 
 TEST(PatchViewImGui, PanelDrawsAndBuildsTheSurface) {
-  ImGuiContext* context = ImGui::CreateContext();
-  ImGui::SetCurrentContext(context);
-  ImGuiIO& io = ImGui::GetIO();
-  io.IniFilename = nullptr;
-  io.LogFilename = nullptr;
-  io.DisplaySize = ImVec2(1024.0f, 768.0f);
-  io.DeltaTime = 1.0f / 60.0f;
-  unsigned char* pixels = nullptr;
-  int width = 0;
-  int height = 0;
-  io.Fonts->GetTexDataAsRGBA32(&pixels, &width, &height);
-
+  ui_testing::ImGuiHarness imgui(ImVec2(1024.0f, 768.0f));
   PatchViewState state = make_patch_view({bumpy_patch(), flat_patch()});
   for (int frame = 0; frame < 3; ++frame) {
-    io.MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
-    ImGui::NewFrame();
-    ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
-    ImGui::SetNextWindowSize(ImVec2(600.0f, 500.0f));
-    draw_patch_view_panel(state);
-    ImGui::Render();
+    ImGui::GetIO().MousePos = ImVec2(-FLT_MAX, -FLT_MAX);
+    imgui.frame([&] {
+      ImGui::SetNextWindowPos(ImVec2(0.0f, 0.0f));
+      ImGui::SetNextWindowSize(ImVec2(600.0f, 500.0f));
+      draw_patch_view_panel(state);
+    });
     const ImDrawData* data = ImGui::GetDrawData();
     ASSERT_NE(data, nullptr);
     EXPECT_GT(data->CmdListsCount, 0);
@@ -300,7 +290,6 @@ TEST(PatchViewImGui, PanelDrawsAndBuildsTheSurface) {
   }
   EXPECT_EQ(state.tessellation.rebuilds, 1u);  // built by the first frame, then left alone
   EXPECT_EQ(state.tessellation.polygons.num_faces(), 2u * 2u * 16u * 16u);
-  ImGui::DestroyContext(context);
 }
 
 }  // namespace
