@@ -2,7 +2,7 @@
 // transform with exact numbers, and the ImGui window driven headless (no backend: fonts built, frames
 // rendered to draw data) with a simulated drag, double click, right click and scroll.
 #include "ui/curve_editor.h"
-#include "ui/ui_test_support.h"
+#include "ui_test_support.h"
 
 #include <cmath>
 #include <limits>

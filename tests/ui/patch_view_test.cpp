@@ -2,7 +2,7 @@
 // toggles choose what is drawn, the tessellation cache rebuilds only on change, and the panel draws
 // headless (its own ImGui context, no backend).
 #include "ui/patch_view.h"
-#include "ui/ui_test_support.h"
+#include "ui_test_support.h"
 
 #include <algorithm>
 #include <cfloat>
