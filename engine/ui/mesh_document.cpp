@@ -145,31 +145,27 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label,
 
 }  // namespace detail
 
-bool undo(MeshDocument& doc) {
-  if (!doc.history.can_undo()) {
-    set_message(doc, Severity::Warning, "nothing to undo");
+namespace {
+
+// Undo or redo one step; `last` becomes the diff of the step itself ("undo flip e5").
+bool step_history(MeshDocument& doc, bool forward) {
+  const char* word = forward ? "redo" : "undo";
+  if (!(forward ? doc.history.can_redo() : doc.history.can_undo())) {
+    set_message(doc, Severity::Warning, std::string("nothing to ") + word);
     return false;
   }
-  const std::string label = "undo " + doc.history.undo_label();
+  const std::string label = std::string(word) + " " + (forward ? doc.history.redo_label() : doc.history.undo_label());
   HalfedgeMesh before = doc.mesh;
-  doc.history.undo(doc.mesh);
+  forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
   record_last_change(doc, label, std::move(before));
   set_message(doc, Severity::Info, change_summary(doc));
   return true;
 }
 
-bool redo(MeshDocument& doc) {
-  if (!doc.history.can_redo()) {
-    set_message(doc, Severity::Warning, "nothing to redo");
-    return false;
-  }
-  const std::string label = "redo " + doc.history.redo_label();
-  HalfedgeMesh before = doc.mesh;
-  doc.history.redo(doc.mesh);
-  record_last_change(doc, label, std::move(before));
-  set_message(doc, Severity::Info, change_summary(doc));
-  return true;
-}
+}  // namespace
+
+bool undo(MeshDocument& doc) { return step_history(doc, false); }
+bool redo(MeshDocument& doc) { return step_history(doc, true); }
 
 size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit) {
   size_t count = 0;
