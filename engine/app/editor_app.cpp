@@ -175,7 +175,23 @@ void EditorApp::draw_patch_view() {
   overlay_renderer_->draw(camera_, viewport(), overlay);
 }
 
+void EditorApp::run_console(const std::string& code) {
+  console_panel_.open = true;
+  console_panel_.scroll_to_bottom = true;
+  console_.submit(doc_, selection_, code);
+  keep_if_alive(selection_, doc_.mesh);
+}
+
+void EditorApp::draw_console() {
+  if (!console_panel_.open) return;
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + 8, main->Pos.y + main->Size.y - 300), ImGuiCond_FirstUseEver);
+  draw_console_panel(console_, console_panel_, doc_, selection_);
+  keep_if_alive(selection_, doc_.mesh);  // a line may have deleted what was selected
+}
+
 void EditorApp::draw_view_panels(float frame_ms) {
+  draw_console();
   if (mode_ != ViewMode::Mesh) return;
   const ImGuiViewport* main = ImGui::GetMainViewport();
   const float menu = ImGui::GetFrameHeight();

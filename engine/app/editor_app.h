@@ -28,6 +28,7 @@
 #include "ui/mesh_document.h"
 #include "ui/patch_view.h"
 #include "ui/pointer_tables.h"
+#include "ui/script_console.h"
 #include "ui/selection.h"
 #include "ui/status_bar.h"
 
@@ -65,6 +66,10 @@ class EditorApp {
   void click(int x, int y);
   void hover(int x, int y);
 
+  // Opens the console and runs `code` in it, as if typed there and Enter pressed.
+  void run_console(const std::string& code);
+  const ScriptConsole& console() const { return console_; }
+
   // Saves the current mesh (.obj .gltf .glb); reports the outcome in the status line.
   bool save(const std::filesystem::path& path);
   // Asks for a PNG of the whole window (3D view and panels) after the current frame is drawn.
@@ -87,6 +92,7 @@ class EditorApp {
   void draw_open_panel();
   void draw_help_panel();
   void draw_view_panels(float frame_ms);
+  void draw_console();
   void message(Severity severity, const std::string& text);
   void remember_recent(const std::filesystem::path& path);
   void fit_camera();
@@ -107,6 +113,8 @@ class EditorApp {
   InspectorState inspector_;
   TablesState tables_;
   StatusBarState status_bar_;
+  ScriptConsole console_;
+  ConsolePanelState console_panel_;
   CurveEditorState curve_;
   PatchViewState patches_;
   LoopWeights loop_weights_ = LoopWeights::Course;

@@ -42,6 +42,11 @@ bool EditorApp::handle_key(int key, KeyMods mods) {
     reset_view();
     return true;
   }
+  if (key == GLFW_KEY_GRAVE_ACCENT) {
+    console_panel_.open = !console_panel_.open;
+    console_panel_.focus_input = console_panel_.open;
+    return true;
+  }
 
   if (mode_ == ViewMode::Curve) {
     if (key == GLFW_KEY_E) step_level(curve_);
@@ -111,7 +116,7 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
     for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
                     GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
-                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1}) {
+                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT}) {
       if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
     }
   }

@@ -15,7 +15,7 @@ const std::map<std::string, int>& arities() {
       {"frames", 1},          {"key", 1},           {"select", 1},         {"click", 2},
       {"hover", 2},           {"open", 1},          {"save", 1},           {"screenshot", 1},
       {"expect-selected", 1}, {"expect-field", 3},  {"expect-changed", 2}, {"expect-message", -1},
-      {"expect-valid", 0},    {"quit", 0},
+      {"expect-valid", 0},    {"quit", 0},           {"console", -1},       {"expect-console", -1},
   };
   return table;
 }

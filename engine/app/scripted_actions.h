@@ -7,6 +7,7 @@
 //   hover X Y                      open PATH           save PATH           screenshot PATH
 //   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
 //   expect-message TEXT...         expect-valid        quit
+//   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)
 #pragma once
 
 #include <string>

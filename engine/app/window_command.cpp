@@ -51,6 +51,12 @@ class ActionPlayer {
     log_ << a.source << ": " << a.verb << " failed: " << why << "\n";
   }
 
+  static std::string rest_of_line(const ScriptedAction& a) {
+    std::string line;
+    for (const auto& w : a.args) line += (line.empty() ? "" : " ") + w;
+    return line;
+  }
+
   static KeyMods parse_key(std::string text, int& key) {
     KeyMods mods;
     for (;;) {
@@ -64,6 +70,8 @@ class ActionPlayer {
       key = GLFW_KEY_SPACE;
     } else if (text == "escape") {
       key = GLFW_KEY_ESCAPE;
+    } else if (text == "grave") {
+      key = GLFW_KEY_GRAVE_ACCENT;
     } else {
       throw std::runtime_error("unknown key '" + text + "'");
     }
@@ -105,10 +113,14 @@ class ActionPlayer {
         fail(a, args[0] + "." + args[1] + " is not among the cells the last operation changed");
       }
     } else if (a.verb == "expect-message") {
-      std::string wanted;
-      for (const auto& w : args) wanted += (wanted.empty() ? "" : " ") + w;
       const std::string& got = app.document().message.text;
-      if (got.find(wanted) == std::string::npos) fail(a, "status line is '" + got + "'");
+      if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "status line is '" + got + "'");
+    } else if (a.verb == "console") {
+      app.run_console(rest_of_line(a));
+    } else if (a.verb == "expect-console") {
+      const auto& entries = app.console().entries();
+      const std::string got = entries.empty() ? "" : entries.back().text;
+      if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "the console's last line is '" + got + "'");
     } else if (a.verb == "expect-valid") {
       const ValidationReport& report = cached_validation(app.document());
       if (!report.ok()) fail(a, report.summary());

@@ -169,5 +169,36 @@ TEST(Window, ABadFileKeepsTheCurrentMeshAndSaysWhy) {
   EXPECT_EQ(run.output.find("expect-message failed"), std::string::npos) << run.output;
 }
 
+TEST(Window, TheConsoleFlipsTheSelectedEdgeAndCtrlZUndoesIt) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path file = dir / "cube.obj";
+  save_mesh(file, make_cube());
+  const HalfedgeMesh before = build_halfedge_mesh(make_cube());
+  HalfedgeMesh flipped = before;
+  ASSERT_TRUE(flip(flipped, EdgeId(7)).ok());
+
+  std::ostringstream actions;
+  actions << "frames 2\n"
+          << "select e7\n"
+          << "console tostring(selected) .. ' of ' .. mesh:num_faces()\n"
+          << "expect-console e7 of 12\n"
+          << "console mesh:flip(selected)\n"
+          << "expect-console e7\n"
+          << "expect-message console: mesh:flip(selected)\n"
+          << expect_every_pointer(flipped) << "expect-valid\n"
+          << "console nosuch()\n"
+          << "expect-console console:1: attempt to call a nil value (global 'nosuch')\n"
+          << "frames 2\n"
+          << "screenshot " << (dir / "console.png").string() << "\n"
+          << "frames 2\n"
+          << "key ctrl+Z\n"
+          << expect_every_pointer(before) << "quit\n";
+  const WindowRun run = run_window(x.display(), file, actions.str(), dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(read_png(dir / "console.png").width, 1280);
+}
+
 }  // namespace
 }  // namespace meshedit
