@@ -1,0 +1,92 @@
+// What the files of the `meshedit` module share (internal to engine/script): the userdata layouts of meshes
+// and element handles, the argument checks with Lua's usual messages, and `guarded`.
+//
+// Invariants:
+// - A MeshBox and every Handle hold a shared_ptr to their HalfedgeMesh, so a handle never dangles; a handle
+//   whose element is dead or past the end is refused by check_alive ("attempt to use dead halfedge h37"),
+//   never read out of range.
+// - A handle's metatable carries its kind under a private key, so test_handle is one lookup and a table or
+//   another library's userdata is never mistaken for a handle.
+// - No C++ exception crosses into Lua: every lua_CFunction registered by the module is wrapped in guarded<>.
+#pragma once
+
+#include <exception>
+#include <memory>
+#include <string>
+
+#include <lua.hpp>
+
+#include "core/halfedge_mesh.h"
+
+namespace meshedit {
+
+inline constexpr const char* kMeshType = "mesh";
+
+struct MeshBox {
+  std::shared_ptr<HalfedgeMesh> mesh;
+};
+
+struct Handle {
+  std::shared_ptr<HalfedgeMesh> mesh;
+  ElementKind kind;
+  uint32_t index;  // the slot (no boundary bit)
+
+  ElementRef ref() const { return ElementRef(kind, index); }
+  std::string name() const { return format_id(ref()); }
+};
+
+inline constexpr ElementKind kAllKinds[] = {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge,
+                                            ElementKind::Face, ElementKind::Boundary};
+
+// Runs a binding with C++ exceptions turned into Lua errors. The message is copied out of the handler so the
+// Lua error (itself a C++ throw in this build of Lua, not a std::exception) starts after the C++ one is done.
+template <lua_CFunction F>
+int guarded(lua_State* L) {
+  std::string message;
+  try {
+    return F(L);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  return luaL_error(L, "%s", message.c_str());
+}
+
+// ---- handles (handle_bindings.cpp) ----------------------------------------------------------------------
+// Registers the five handle metatables (call once per state, before any handle is pushed).
+void open_handle_metatables(lua_State* L);
+// Pushes a handle for `ref`, or nil when ref is invalid (a null pointer).
+void push_handle(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, ElementRef ref);
+// The handle at `index`, or nullptr for anything else.
+Handle* test_handle(lua_State* L, int index);
+
+// True if a slot of kind `wanted` takes an element of kind `got` (a face slot takes boundary loops too).
+inline bool accepts(ElementKind wanted, ElementKind got) {
+  return wanted == got || (wanted == ElementKind::Face && got == ElementKind::Boundary);
+}
+// Argument `arg` must be a handle of kind `wanted`: "bad argument #1 to 'flip' (edge expected, got vertex)".
+Handle& check_handle(lua_State* L, int arg, ElementKind wanted);
+// Argument `arg` must be a handle of any kind: "bad argument #1 to 'delete' (element expected, got nil)".
+Handle& check_any_handle(lua_State* L, int arg);
+// "attempt to use dead halfedge h37" unless the handle's element is alive.
+void check_alive(lua_State* L, const Handle& h);
+// "h1 belongs to another mesh" unless `value` is an element of `mesh`.
+void check_same_mesh(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, const Handle& value);
+// A value to store in a pointer: a live handle of `mesh`; kind and nil are the caller's business.
+void check_storable(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, const Handle& value);
+
+// ---- meshes (mesh_bindings.cpp) -------------------------------------------------------------------------
+MeshBox& check_mesh(lua_State* L, int arg);
+// Pushes `nil, reason`, the way every refused operation answers; returns 2.
+int push_refusal(lua_State* L, const std::string& reason);
+// Sets t[key] = value on the table on top of the stack.
+void set_string_field(lua_State* L, const char* key, const std::string& value);
+
+// The method groups of the mesh metatable, each adding its functions to the table on top of the stack.
+void add_edit_methods(lua_State* L);       // edit_bindings.cpp: new_*, delete, record
+void add_operation_methods(lua_State* L);  // operation_bindings.cpp: flip, split, collapse, loop_subdivide
+void add_history_methods(lua_State* L);    // history_bindings.cpp: snapshot, restore, undo, redo, diff
+void add_table_methods(lua_State* L);      // table_bindings.cpp: tables
+// Module functions (module_bindings.cpp): load, cube, ..., grid, from_polygons; added to the table on top.
+void add_module_functions(lua_State* L);
+
+}  // namespace meshedit

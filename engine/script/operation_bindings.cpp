@@ -1,0 +1,89 @@
+// The core's operations as mesh methods: flip, split, collapse and loop_subdivide.
+//
+//   mesh:flip(e) -> e | nil, reason        mesh:split(e) -> new vertex | nil, reason
+//   mesh:collapse(e) -> surviving vertex | nil, reason      mesh:loop_subdivide() -> true | nil, reason
+// Invariants: a refused operation changes nothing and answers nil and the core's reason (a dead or broken edge
+// included: the core checks every pointer before following it); an accepted one is an undo point and is
+// recorded as one Operation edit. Operations run in C++ out of the instruction hook's reach, so they are
+// refused when they would pass MeshLimits::elements_per_kind or the face cap below.
+#include <string>
+
+#include <lua.hpp>
+
+#include "core/edit_log.h"
+#include "core/loop_subdivision.h"
+#include "core/mesh_ops.h"
+#include "script/binding_state.h"
+#include "script/binding_support.h"
+
+namespace meshedit {
+namespace {
+
+// Ids one flip, split or collapse makes at most, of any kind.
+constexpr size_t kMaxIdsPerOperation = 6;
+
+RecordedEdit operation_edit(const char* name, ElementRef element, ElementRef result) {
+  RecordedEdit edit;
+  edit.what = EditKind::Operation;
+  edit.element = element;
+  edit.field = name;
+  edit.value.element = result;
+  return edit;
+}
+
+template <class Result, Result (*Operation)(HalfedgeMesh&, EdgeId)>
+int run_edge_operation(lua_State* L, const char* name) {
+  MeshBox& box = check_mesh(L, 1);
+  Handle& e = check_handle(L, 2, ElementKind::Edge);
+  check_same_mesh(L, box.mesh, e);
+  if (const std::string full = room_refusal(L, *box.mesh, kMaxIdsPerOperation); !full.empty()) {
+    return push_refusal(L, full);
+  }
+  begin_change(L, box.mesh, true);
+  const Result result = Operation(*box.mesh, EdgeId(e.index));
+  if (!result.ok()) return push_refusal(L, result.check.reason);
+  end_change(L, box.mesh, operation_edit(name, e.ref(), ElementRef(result.value)));
+  push_handle(L, box.mesh, result.value);
+  return 1;
+}
+
+int mesh_flip(lua_State* L) { return run_edge_operation<OpResult<EdgeId>, flip>(L, "flip"); }
+int mesh_split(lua_State* L) { return run_edge_operation<OpResult<VertexId>, split>(L, "split"); }
+int mesh_collapse(lua_State* L) { return run_edge_operation<OpResult<VertexId>, collapse>(L, "collapse"); }
+
+// One loop_subdivide call quadruples the faces; past this many faces it is refused so that a script repeating it
+// cannot exhaust memory or time inside one call.
+constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
+
+int mesh_loop_subdivide(lua_State* L) {
+  MeshBox& box = check_mesh(L, 1);
+  HalfedgeMesh& m = *box.mesh;
+  const size_t faces_after = 4 * m.num_faces();
+  if (faces_after > kMaxSubdividedFaces) {
+    return push_refusal(L, "loop subdivision would make " + std::to_string(faces_after) +
+                               " faces; scripts may make at most " + std::to_string(kMaxSubdividedFaces));
+  }
+  // New halfedges, the most numerous new ids: two per new edge (E + 3F of them).
+  if (const std::string full = room_refusal(L, m, 2 * (m.num_edges() + 3 * m.num_faces())); !full.empty()) {
+    return push_refusal(L, full);
+  }
+  begin_change(L, box.mesh, true);
+  const Check check = loop_subdivide(m);
+  if (!check.ok) return push_refusal(L, check.reason);
+  end_change(L, box.mesh, operation_edit("loop_subdivide", ElementRef(), ElementRef()));
+  lua_pushboolean(L, 1);
+  return 1;
+}
+
+}  // namespace
+
+void add_operation_methods(lua_State* L) {
+  const luaL_Reg methods[] = {{"flip", guarded<mesh_flip>},
+                              {"split", guarded<mesh_split>},
+                              {"collapse", guarded<mesh_collapse>},
+                              {"loop_subdivide", guarded<mesh_loop_subdivide>},
+                              {nullptr, nullptr}};
+  luaL_setfuncs(L, methods, 0);
+}
+
+}  // namespace meshedit
