@@ -1,0 +1,535 @@
+// Mesh comparison, exact and up to renumbering (see mesh_compare.h for the contract).
+//
+// Up to renumbering, in four passes: pair vertices by position through a hash grid of the reference's
+// vertices (cells as large as the tolerance, so a match lies in one of the 27 cells around a point), then
+// translate your faces, boundary loops and edges into reference vertex ids and match them as multisets
+// of canonical keys (a cycle rotated to start at its smallest id keeps its orientation; an edge is its
+// sorted pair). Messages past the cap are counted but never formatted: nearest-vertex searches for
+// messages are brute force and run at most max_differences times.
+#include "core/mesh_compare.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <functional>
+#include <limits>
+#include <map>
+#include <unordered_map>
+#include <utility>
+
+#include <glm/geometric.hpp>
+
+#include "core/value_format.h"
+
+namespace meshedit {
+namespace {
+
+// Counts every difference, formats only those under the cap.
+class Collector {
+ public:
+  Collector(MeshComparison& out, size_t cap) : out_(out), cap_(cap) {}
+  template <class MakeMessage>
+  void add(MakeMessage&& make_message) {
+    ++out_.total_differences;
+    if (out_.differences.size() < cap_) out_.differences.push_back(make_message());
+  }
+
+ private:
+  MeshComparison& out_;
+  size_t cap_;
+};
+
+std::string id(ElementRef r) { return format_id(r); }
+
+std::string plural(size_t n, const char* singular, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? singular : many);
+}
+
+void compare_counts(const HalfedgeMesh& yours, const HalfedgeMesh& reference, Collector& out) {
+  struct Count {
+    size_t yours, reference;
+    const char* singular;
+    const char* many;
+  };
+  const Count counts[] = {
+      {yours.num_vertices(), reference.num_vertices(), "vertex", "vertices"},
+      {yours.num_edges(), reference.num_edges(), "edge", "edges"},
+      {yours.num_faces(), reference.num_faces(), "face", "faces"},
+      {yours.num_halfedges(), reference.num_halfedges(), "halfedge", "halfedges"},
+      {yours.num_boundaries(), reference.num_boundaries(), "boundary loop", "boundary loops"},
+  };
+  for (const Count& c : counts) {
+    if (c.yours == c.reference) continue;
+    out.add([&] {
+      return "the reference has " + plural(c.reference, c.singular, c.many) + ", yours " + std::to_string(c.yours);
+    });
+  }
+}
+
+bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
+
+bool same_position(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
+  if (std::memcmp(&a, &b, sizeof(a)) == 0) return true;
+  return glm::distance(a, b) <= tolerance;
+}
+
+// ---- exact -------------------------------------------------------------------------------------------
+
+void compare_pointer(Collector& out, ElementRef owner, const char* field, ElementRef yours, ElementRef reference) {
+  if (yours == reference) return;
+  out.add([&] {
+    return id(owner) + "." + field + " is " + id(yours) + " in yours, " + id(reference) + " in the reference";
+  });
+}
+
+void compare_element(const HalfedgeMesh& y, const HalfedgeMesh& r, ElementRef e, double tolerance, Collector& out) {
+  switch (e.kind) {
+    case ElementKind::Halfedge: {
+      const HalfedgeId h(e.index);
+      compare_pointer(out, e, "next", y.next(h), r.next(h));
+      compare_pointer(out, e, "twin", y.twin(h), r.twin(h));
+      compare_pointer(out, e, "vertex", y.vertex(h), r.vertex(h));
+      compare_pointer(out, e, "edge", y.edge(h), r.edge(h));
+      compare_pointer(out, e, "face", y.face(h), r.face(h));
+      break;
+    }
+    case ElementKind::Vertex: {
+      const VertexId v(e.index);
+      compare_pointer(out, e, "halfedge", y.halfedge(v), r.halfedge(v));
+      if (!same_position(y.position(v), r.position(v), tolerance)) {
+        out.add([&] {
+          return id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
+                 format_position(r.position(v)) + " in the reference";
+        });
+      }
+      break;
+    }
+    case ElementKind::Edge:
+      compare_pointer(out, e, "halfedge", y.halfedge(EdgeId(e.index)), r.halfedge(EdgeId(e.index)));
+      break;
+    case ElementKind::Face:
+    case ElementKind::Boundary:
+      compare_pointer(out, e, "halfedge", y.halfedge(e.face_id()), r.halfedge(e.face_id()));
+      break;
+  }
+}
+
+// ---- up to renumbering: vertices -----------------------------------------------------------------
+
+struct Cell {
+  double x, y, z;
+  bool operator==(const Cell& o) const { return x == o.x && y == o.y && z == o.z; }
+};
+struct CellHash {
+  size_t operator()(const Cell& c) const noexcept {
+    const std::hash<double> h;
+    size_t s = h(c.x);
+    s ^= h(c.y) + 0x9e3779b97f4a7c15ull + (s << 6) + (s >> 2);
+    s ^= h(c.z) + 0x9e3779b97f4a7c15ull + (s << 6) + (s >> 2);
+    return s;
+  }
+};
+
+class VertexGrid {
+ public:
+  VertexGrid(const HalfedgeMesh& mesh, double tolerance)
+      : mesh_(mesh), tolerance_(tolerance), cell_(tolerance > 0.0 ? tolerance : 1.0) {
+    for (VertexId v : mesh.vertices()) {
+      if (finite(mesh.position(v))) cells_[cell_of(mesh.position(v))].push_back(v.index);
+    }
+  }
+  // Calls fn(reference vertex, distance) for every vertex within the tolerance of p (p finite).
+  template <class Fn>
+  void for_each_near(const glm::dvec3& p, Fn&& fn) const {
+    const Cell c = cell_of(p);
+    std::vector<uint32_t> seen;  // a cell can repeat when coordinates are too large for +-1 to change them
+    for (int dx = -1; dx <= 1; ++dx) {
+      for (int dy = -1; dy <= 1; ++dy) {
+        for (int dz = -1; dz <= 1; ++dz) {
+          const auto it = cells_.find(Cell{c.x + dx + 0.0, c.y + dy + 0.0, c.z + dz + 0.0});
+          if (it == cells_.end()) continue;
+          for (uint32_t v : it->second) {
+            const double d = glm::distance(p, mesh_.position(VertexId(v)));
+            if (d <= tolerance_ && std::find(seen.begin(), seen.end(), v) == seen.end()) {
+              seen.push_back(v);
+              fn(VertexId(v), d);
+            }
+          }
+        }
+      }
+    }
+  }
+
+ private:
+  Cell cell_of(const glm::dvec3& p) const {
+    // + 0.0 turns -0 into +0, so both land in one cell.
+    return Cell{std::floor(p.x / cell_) + 0.0, std::floor(p.y / cell_) + 0.0, std::floor(p.z / cell_) + 0.0};
+  }
+  const HalfedgeMesh& mesh_;
+  double tolerance_;
+  double cell_;
+  std::unordered_map<Cell, std::vector<uint32_t>, CellHash> cells_;
+};
+
+// The live vertex of `mesh` nearest to p (brute force; only for messages), or invalid if there is none.
+VertexId nearest(const HalfedgeMesh& mesh, const glm::dvec3& p, double& distance) {
+  VertexId best;
+  distance = std::numeric_limits<double>::infinity();
+  for (VertexId v : mesh.vertices()) {
+    const double d = glm::distance(p, mesh.position(v));
+    if (finite(mesh.position(v)) && d < distance) {
+      best = v;
+      distance = d;
+    }
+  }
+  return best;
+}
+
+std::string no_match(const HalfedgeMesh& from, VertexId v, const char* whose, const HalfedgeMesh& other,
+                     const char* other_whose, const std::vector<VertexId>& other_partner, const char* partner_whose,
+                     const char* other_name) {
+  const glm::dvec3& p = from.position(v);
+  std::string s = std::string(whose) + " vertex " + id(v) + " at " + format_position(p);
+  if (!finite(p)) return s + " has a position that is not finite; it matches nothing";
+  s += std::string(" has no match in ") + other_name;
+  double distance = 0.0;
+  const VertexId n = nearest(other, p, distance);
+  if (!n.valid()) return s + " (which has no vertices)";
+  s += "; the nearest is " + std::string(other_whose) + " " + id(n) + " at " + format_position(other.position(n)) +
+       ", " + format_number(distance) + " away";
+  if (n.index < other_partner.size() && other_partner[n.index].valid()) {
+    s += std::string(" (already matched to ") + partner_whose + " " + id(other_partner[n.index]) + ")";
+  }
+  return s;
+}
+
+// ---- up to renumbering: cycles and edges ---------------------------------------------------------
+
+using Key = std::vector<uint32_t>;
+
+// Rotated so the smallest id comes first; the order (orientation) is kept.
+Key canonical(Key key) {
+  if (!key.empty()) std::rotate(key.begin(), std::min_element(key.begin(), key.end()), key.end());
+  return key;
+}
+
+Key reversed(const Key& key) { return canonical(Key(key.rbegin(), key.rend())); }
+
+std::string list(const Key& vertices) {
+  std::string s;
+  for (uint32_t v : vertices) s += (s.empty() ? "" : " ") + id(VertexId(v));
+  return s;
+}
+
+// A face or loop as your/reference vertex ids, in walking order from its halfedge.
+struct Cycle {
+  FaceId face;
+  Key vertices;    // in the mesh's own ids
+  Key translated;  // in the other mesh's ids (yours -> reference); empty if a corner has no match
+  bool broken = false;
+};
+
+Cycle read_cycle(const HalfedgeMesh& mesh, FaceId f, const std::vector<VertexId>& map) {
+  Cycle c{f, {}, {}, false};
+  const bool closed = mesh.for_each_face_halfedge(f, [&](HalfedgeId h) {
+    const VertexId v = mesh.vertex(h);
+    if (!mesh.alive(v)) c.broken = true;
+    c.vertices.push_back(v.index);
+  });
+  if (!closed || c.broken || c.vertices.size() < 3) {
+    c.broken = true;
+    return c;
+  }
+  for (uint32_t v : c.vertices) {
+    if (v >= map.size() || !map[v].valid()) {
+      c.translated.clear();
+      return c;
+    }
+    c.translated.push_back(map[v].index);
+  }
+  return c;
+}
+
+// "(v0 v4 v7)", plus the other mesh's names when they differ: "(v0 v4 v7; your v0 v5 v9)".
+std::string corners(const Cycle& c, const char* other_whose) {
+  std::string s = "(" + list(c.vertices);
+  if (!c.translated.empty() && c.translated != c.vertices) {
+    s += std::string("; ") + other_whose + " " + list(c.translated);
+  }
+  return s + ")";
+}
+
+struct CycleKinds {
+  const char* noun;  // "face", "boundary loop"
+  std::vector<FaceId>* extra;
+  std::vector<FaceId>* missing;
+  std::vector<FaceId>* reversed;  // null for boundary loops: a loop runs the way its faces say
+};
+
+void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bool boundaries,
+                    const std::vector<VertexId>& to_reference, const std::vector<VertexId>& to_yours,
+                    const CycleKinds& kinds, Collector& out) {
+  const auto range = [&](const HalfedgeMesh& m) { return boundaries ? m.boundaries() : m.faces(); };
+  std::vector<Cycle> mine, theirs;
+  for (FaceId f : range(yours)) mine.push_back(read_cycle(yours, f, to_reference));
+  for (FaceId f : range(reference)) theirs.push_back(read_cycle(reference, f, to_yours));
+
+  // Reference cycles by canonical key; each entry is used at most once.
+  std::map<Key, std::vector<size_t>> by_key;
+  for (size_t i = theirs.size(); i-- > 0;) {  // reversed so pop_back hands out the lowest id first
+    if (!theirs[i].broken && !theirs[i].translated.empty()) {
+      by_key[canonical(theirs[i].vertices)].push_back(i);
+    }
+  }
+  std::vector<uint8_t> used(theirs.size(), 0);  // 1 matched, 2 matched reversed
+  std::vector<int> state(mine.size(), 0);        // 0 unmatched, 1 matched, 2 reversed
+  std::vector<size_t> partner(mine.size(), 0);
+  const auto take = [&](const Key& key, size_t& index, uint8_t how) {
+    auto it = by_key.find(key);
+    if (it == by_key.end() || it->second.empty()) return false;
+    index = it->second.back();
+    it->second.pop_back();
+    used[index] = how;
+    return true;
+  };
+  for (size_t i = 0; i < mine.size(); ++i) {
+    if (!mine[i].broken && !mine[i].translated.empty() && take(canonical(mine[i].translated), partner[i], 1)) {
+      state[i] = 1;
+    }
+  }
+  if (kinds.reversed) {
+    for (size_t i = 0; i < mine.size(); ++i) {
+      if (state[i] == 0 && !mine[i].broken && !mine[i].translated.empty() &&
+          take(reversed(mine[i].translated), partner[i], 2)) {
+        state[i] = 2;
+      }
+    }
+  }
+
+  size_t skipped_mine = 0, skipped_theirs = 0;
+  for (size_t i = 0; i < mine.size(); ++i) {
+    const Cycle& c = mine[i];
+    if (state[i] == 1) continue;
+    kinds.extra->push_back(c.face);
+    if (c.broken) {
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + id(c.face) +
+               " cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
+               "element";
+      });
+    } else if (c.translated.empty()) {
+      ++skipped_mine;
+    } else if (state[i] == 2) {
+      kinds.reversed->push_back(c.face);
+      const Cycle& r = theirs[partner[i]];
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
+               " has the opposite orientation of reference " + kinds.noun + " " + id(r.face) + " " +
+               corners(r, "your");
+      });
+    } else {
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
+               " is not in the reference";
+      });
+    }
+  }
+  for (size_t i = 0; i < theirs.size(); ++i) {
+    const Cycle& r = theirs[i];
+    if (used[i] == 1) continue;
+    kinds.missing->push_back(r.face);
+    if (used[i] == 2) continue;  // reported above as the reversed partner of one of yours
+    if (r.broken) {
+      out.add([&] { return std::string("reference ") + kinds.noun + " " + id(r.face) + " cannot be walked"; });
+    } else if (r.translated.empty()) {
+      ++skipped_theirs;
+    } else {
+      out.add([&] {
+        return std::string("reference ") + kinds.noun + " " + id(r.face) + " " + corners(r, "your") +
+               " is missing from yours";
+      });
+    }
+  }
+  if (skipped_mine + skipped_theirs > 0) {
+    out.add([&] {
+      return std::to_string(skipped_mine) + " of your " + kinds.noun + "s and " + std::to_string(skipped_theirs) +
+             " of the reference's touch a vertex without a match and were not compared";
+    });
+  }
+}
+
+struct EdgeEnds {
+  EdgeId edge;
+  uint32_t a = kInvalidIndex, b = kInvalidIndex;  // own ids
+  Key translated;                                 // sorted pair in the other mesh's ids; empty if unmatched
+  bool broken = false;
+};
+
+EdgeEnds read_edge(const HalfedgeMesh& mesh, EdgeId e, const std::vector<VertexId>& map) {
+  EdgeEnds ends{e};
+  const HalfedgeId h = mesh.halfedge(e);
+  const HalfedgeId t = mesh.alive(h) ? mesh.twin(h) : HalfedgeId();
+  if (!mesh.alive(h) || !mesh.alive(t) || !mesh.alive(mesh.vertex(h)) || !mesh.alive(mesh.vertex(t))) {
+    ends.broken = true;
+    return ends;
+  }
+  ends.a = mesh.vertex(h).index;
+  ends.b = mesh.vertex(t).index;
+  for (uint32_t v : {ends.a, ends.b}) {
+    if (v >= map.size() || !map[v].valid()) {
+      ends.translated.clear();
+      return ends;
+    }
+    ends.translated.push_back(map[v].index);
+  }
+  std::sort(ends.translated.begin(), ends.translated.end());
+  return ends;
+}
+
+std::string edge_ends(const EdgeEnds& e, const char* other_whose) {
+  std::string s = "(" + id(VertexId(e.a)) + " " + id(VertexId(e.b));
+  Key own{e.a, e.b};
+  std::sort(own.begin(), own.end());
+  if (!e.translated.empty() && e.translated != own) {
+    s += std::string("; ") + other_whose + " " + list(e.translated);
+  }
+  return s + ")";
+}
+
+void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, const std::vector<VertexId>& to_reference,
+                   const std::vector<VertexId>& to_yours, MeshComparison& result, Collector& out) {
+  std::vector<EdgeEnds> mine, theirs;
+  for (EdgeId e : yours.edges()) mine.push_back(read_edge(yours, e, to_reference));
+  for (EdgeId e : reference.edges()) theirs.push_back(read_edge(reference, e, to_yours));
+  std::map<std::pair<uint32_t, uint32_t>, std::vector<size_t>> by_key;
+  for (size_t i = theirs.size(); i-- > 0;) {
+    if (theirs[i].broken || theirs[i].translated.empty()) continue;
+    by_key[{std::min(theirs[i].a, theirs[i].b), std::max(theirs[i].a, theirs[i].b)}].push_back(i);
+  }
+  std::vector<uint8_t> used(theirs.size(), 0);
+  size_t skipped_mine = 0, skipped_theirs = 0;
+  for (const EdgeEnds& e : mine) {
+    if (!e.broken && !e.translated.empty()) {
+      const auto it = by_key.find({e.translated[0], e.translated[1]});
+      if (it != by_key.end() && !it->second.empty()) {
+        used[it->second.back()] = 1;
+        it->second.pop_back();
+        continue;
+      }
+    }
+    result.extra_edges.push_back(e.edge);
+    if (e.broken) {
+      out.add([&] {
+        return "your edge " + id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
+      });
+    } else if (e.translated.empty()) {
+      ++skipped_mine;
+    } else {
+      out.add([&] { return "your edge " + id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference"; });
+    }
+  }
+  for (size_t i = 0; i < theirs.size(); ++i) {
+    const EdgeEnds& e = theirs[i];
+    if (used[i]) continue;
+    result.missing_edges.push_back(e.edge);
+    if (e.broken) {
+      out.add([&] { return "reference edge " + id(e.edge) + " cannot be read"; });
+    } else if (e.translated.empty()) {
+      ++skipped_theirs;
+    } else {
+      out.add([&] { return "reference edge " + id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours"; });
+    }
+  }
+  if (skipped_mine + skipped_theirs > 0) {
+    out.add([&] {
+      return std::to_string(skipped_mine) + " of your edges and " + std::to_string(skipped_theirs) +
+             " of the reference's touch a vertex without a match and were not compared";
+    });
+  }
+}
+
+}  // namespace
+
+std::string MeshComparison::summary() const {
+  if (total_differences == 0) return "equal";
+  std::string s = plural(total_differences, "difference", "differences");
+  if (!differences.empty()) s += "; first: " + differences.front();
+  return s;
+}
+
+MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
+                                    const CompareOptions& options) {
+  MeshComparison result;
+  Collector out(result, options.max_differences);
+  compare_counts(yours, reference, out);
+  for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
+                           ElementKind::Boundary}) {
+    const uint32_t slots = std::max(yours.capacity(kind), reference.capacity(kind));
+    for (uint32_t i = 0; i < slots; ++i) {
+      const ElementRef e(kind, i);
+      const bool in_yours = yours.alive(e), in_reference = reference.alive(e);
+      if (in_yours && in_reference) {
+        compare_element(yours, reference, e, options.position_tolerance, out);
+      } else if (in_yours) {
+        out.add([&] { return "yours has " + id(e) + ", the reference does not"; });
+      } else if (in_reference) {
+        out.add([&] { return "the reference has " + id(e) + ", yours does not"; });
+      }
+    }
+  }
+  result.equal = result.total_differences == 0;
+  return result;
+}
+
+MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
+                              const CompareOptions& options) {
+  MeshComparison result;
+  Collector out(result, options.max_differences);
+  compare_counts(yours, reference, out);
+
+  // Pair vertices: every pair within the tolerance, nearest first, one to one.
+  struct Pair {
+    double distance;
+    uint32_t yours, reference;
+  };
+  std::vector<Pair> pairs;
+  const VertexGrid grid(reference, options.position_tolerance);
+  for (VertexId v : yours.vertices()) {
+    const glm::dvec3& p = yours.position(v);
+    if (!finite(p)) continue;
+    grid.for_each_near(p, [&](VertexId r, double d) { pairs.push_back({d, v.index, r.index}); });
+  }
+  std::sort(pairs.begin(), pairs.end(), [](const Pair& a, const Pair& b) {
+    if (a.distance != b.distance) return a.distance < b.distance;
+    return a.yours != b.yours ? a.yours < b.yours : a.reference < b.reference;
+  });
+  result.vertex_map.assign(yours.vertex_capacity(), VertexId());
+  std::vector<VertexId> to_yours(reference.vertex_capacity(), VertexId());
+  for (const Pair& p : pairs) {
+    if (result.vertex_map[p.yours].valid() || to_yours[p.reference].valid()) continue;
+    result.vertex_map[p.yours] = VertexId(p.reference);
+    to_yours[p.reference] = VertexId(p.yours);
+  }
+  for (VertexId v : yours.vertices()) {
+    if (result.vertex_map[v.index].valid()) continue;
+    result.unmatched_vertices.push_back(v);
+    out.add([&] { return no_match(yours, v, "your", reference, "reference", to_yours, "your", "the reference"); });
+  }
+  for (VertexId v : reference.vertices()) {
+    if (to_yours[v.index].valid()) continue;
+    result.unmatched_reference.push_back(v);
+    out.add([&] {
+      return no_match(reference, v, "reference", yours, "your", result.vertex_map, "reference", "yours");
+    });
+  }
+
+  compare_cycles(yours, reference, false, result.vertex_map, to_yours,
+                 {"face", &result.extra_faces, &result.missing_faces, &result.reversed_faces}, out);
+  compare_cycles(yours, reference, true, result.vertex_map, to_yours,
+                 {"boundary loop", &result.extra_boundaries, &result.missing_boundaries, nullptr}, out);
+  compare_edges(yours, reference, result.vertex_map, to_yours, result, out);
+  result.equal = result.total_differences == 0;
+  return result;
+}
+
+}  // namespace meshedit

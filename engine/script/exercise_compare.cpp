@@ -1,0 +1,573 @@
+// compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake
+// before the raw differences (issue 5's list of real mistakes: a step that drops the last point or swaps the
+// weights, u and v swapped, unweighted normals, forgotten halfedge pointers, a flipped boundary edge, a split
+// vertex at the wrong place, wrong flips or wrong positions in Loop subdivision, a loop that never ends).
+//
+// Tolerances: points and normals within 1e-9 of the reference (scaled by the input's size for points),
+// meshes within 1e-9 x the bounding-box diagonal (at least 1e-9); "identical" means bit for bit and, for
+// meshes, pointer for pointer (compare_meshes_exact with tolerance 0).
+#include <algorithm>
+#include <cmath>
+#include <cstring>
+#include <span>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "core/history.h"
+#include "core/mesh_compare.h"
+#include "core/normals.h"
+#include "core/value_format.h"
+#include "script/exercises.h"
+
+namespace meshedit {
+namespace {
+
+// Keeps the first kMaxMessages messages and counts all.
+class Messages {
+ public:
+  explicit Messages(ExerciseReport& report) : report_(report) {}
+  void add(std::string message) {
+    ++report_.total_differences;
+    if (report_.differences.size() < ExerciseReport::kMaxMessages) report_.differences.push_back(std::move(message));
+  }
+  // Differences another check counted but did not spell out (past its own cap).
+  void count(size_t n) { report_.total_differences += n; }
+  bool any() const { return report_.total_differences > 0; }
+
+ private:
+  ExerciseReport& report_;
+};
+
+std::string id(ElementRef r) { return format_id(r); }
+std::string pos(const glm::dvec3& p) { return format_position(p); }
+
+bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
+  return std::memcmp(&a, &b, sizeof(a)) == 0;
+}
+
+bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
+
+double largest_coordinate(std::span<const glm::dvec3> points) {
+  double m = 0.0;
+  for (const auto& p : points) m = std::max({m, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return std::isfinite(m) ? m : 0.0;
+}
+
+double mesh_tolerance(const HalfedgeMesh& mesh) {
+  glm::dvec3 lo(0.0), hi(0.0);
+  bool first = true;
+  for (VertexId v : mesh.vertices()) {
+    const glm::dvec3& p = mesh.position(v);
+    lo = first ? p : glm::min(lo, p);
+    hi = first ? p : glm::max(hi, p);
+    first = false;
+  }
+  const double diagonal = glm::distance(lo, hi);
+  return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
+}
+
+// ---- curve step -------------------------------------------------------------------------------------------
+
+void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  const auto& got = report.mine.points;
+  const auto& want = report.reference.points;
+  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.points));
+  const size_t common = std::min(got.size(), want.size());
+  bool prefix_matches = true;
+  for (size_t i = 0; i < common; ++i) prefix_matches = prefix_matches && close(got[i], want[i], tolerance);
+
+  // Swapped weights: t p_i + (1 - t) p_(i+1).
+  if (got.size() == want.size() && !prefix_matches) {
+    bool swapped = true;
+    for (size_t i = 0; i < got.size(); ++i) {
+      const glm::dvec3 other = input.t * input.points[i] + (1.0 - input.t) * input.points[i + 1];
+      swapped = swapped && close(got[i], other, tolerance);
+    }
+    if (swapped) {
+      out.add("the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), and yours are "
+              "t * p_i + (1 - t) * p_(i+1)");
+    }
+  }
+  const std::string expected = std::to_string(want.size());
+  if (got.size() < want.size()) {
+    const size_t missing = want.size() - got.size();
+    if (prefix_matches && missing == 1) {
+      out.add("point " + expected + " of the step is missing (got " + std::to_string(got.size()) +
+              " points, expected " + expected + "): n points give n - 1, so the loop runs i = 1, ..., n - 1");
+    } else if (prefix_matches) {
+      out.add("points " + std::to_string(got.size() + 1) + " to " + expected + " of the step are missing (got " +
+              std::to_string(got.size()) + " points, expected " + expected + ")");
+    } else {
+      out.add("the step has " + std::to_string(got.size()) + " points, expected " + expected +
+              " (n points give n - 1)");
+    }
+  } else if (got.size() > want.size()) {
+    out.add("the step has " + std::to_string(got.size()) + " points, expected " + expected +
+            ": one step turns n points into n - 1" +
+            (got.size() == input.points.size() ? " (yours has as many as it was given)" : ""));
+  }
+  double worst = 0.0;
+  for (size_t i = 0; i < common; ++i) {
+    const double d = glm::distance(got[i], want[i]);
+    worst = std::max(worst, d);
+    if (!(d <= tolerance)) {
+      out.add("point " + std::to_string(i + 1) + " is " + pos(got[i]) + ", expected " + pos(want[i]));
+    }
+  }
+  report.equal = !out.any();
+  report.identical = report.equal && got.size() == want.size() &&
+                     std::equal(got.begin(), got.end(), want.begin(), bitwise_equal);
+  if (report.equal && !report.identical) {
+    report.notes.push_back("your points differ from the reference's by at most " + format_number(worst) +
+                           " (rounding; accepted)");
+  }
+}
+
+// ---- patch point and vertex normal ------------------------------------------------------------------------
+
+void compare_patch(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  const glm::dvec3 got = report.mine.points[0];
+  const glm::dvec3 want = report.reference.points[0];
+  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.patch.points));
+  const double d = glm::distance(got, want);
+  if (!(d <= tolerance)) {
+    const glm::dvec3 transposed = evaluate_patch(input.patch, input.v, input.u);
+    if (close(got, transposed, tolerance) && !close(transposed, want, tolerance)) {
+      out.add("your point " + pos(got) + " is the surface point at (u, v) = (" + format_number(input.v) + ", " +
+              format_number(input.u) + "), not (" + format_number(input.u) + ", " + format_number(input.v) +
+              "): u and v are swapped. Evaluate each row at u, then the column of the four row results at v");
+    } else {
+      out.add("your point " + pos(got) + " is not the surface point " + pos(want) + " at (u, v) = (" +
+              format_number(input.u) + ", " + format_number(input.v) + "); it is " + format_number(d) + " away");
+    }
+  }
+  report.equal = !out.any();
+  report.identical = report.equal && bitwise_equal(got, want);
+  if (report.equal && !report.identical) {
+    report.notes.push_back("your point differs from the reference's by " + format_number(d) + " (rounding; accepted)");
+  }
+}
+
+// The unit normal if each face counted once, whatever its area; and the area-weighted one counting boundary
+// loops as faces (two plausible wrong answers).
+glm::dvec3 unweighted_normal(const HalfedgeMesh& mesh, VertexId v, bool with_loops_weighted, bool& ok) {
+  glm::dvec3 sum(0.0);
+  ok = mesh.for_each_outgoing(v, [&](HalfedgeId h) {
+    const FaceId f = mesh.face(h);
+    if (!mesh.alive(f)) return;
+    if (with_loops_weighted) {
+      sum += 2.0 * face_area(mesh, f) * face_normal(mesh, f);
+    } else if (!f.is_boundary()) {
+      sum += face_normal(mesh, f);
+    }
+  });
+  const double length = glm::length(sum);
+  return length > 0.0 ? sum / length : sum;
+}
+
+void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  const glm::dvec3 got = report.mine.points[0];
+  const glm::dvec3 want = report.reference.points[0];
+  constexpr double kTolerance = 1e-9;
+  const HalfedgeMesh& mesh = *input.mesh;
+  const VertexId v(input.element.index);
+  const double d = glm::distance(got, want);
+  if (!(d <= kTolerance)) {
+    const double length = glm::length(got);
+    bool ok = false;
+    if (std::abs(length - 1.0) > 1e-6 && length > 0.0 && close(got / length, want, 1e-6)) {
+      out.add("your normal " + pos(got) + " points the right way but has length " + format_number(length) +
+              "; normalise it (n:normalized())");
+    } else if (close(got, -want, kTolerance)) {
+      out.add("your normal " + pos(got) + " points inwards (the reference's is " + pos(want) +
+              "): take the cross product of the edges in the face's order, (p1 - p0):cross(p2 - p0)");
+    } else if (const glm::dvec3 unit = unweighted_normal(mesh, v, false, ok); ok && close(got, unit, 1e-9) &&
+                                                                            !close(unit, want, 1e-9)) {
+      out.add("your normal " + pos(got) + " is the average of the faces' unit normals; the reference " + pos(want) +
+              " weights each face by its area: add the cross products themselves, then normalise");
+    } else if (const glm::dvec3 loops = unweighted_normal(mesh, v, true, ok); ok && mesh.is_boundary(v) &&
+                                                                            close(got, loops, 1e-9)) {
+      out.add("your normal " + pos(got) + " counts the boundary loop as a face; skip faces with f:is_boundary()");
+    } else {
+      out.add("your normal " + pos(got) + " differs from the reference's " + pos(want) + " by " + format_number(d));
+    }
+  }
+  if (report.mine.mesh && !report.mine.mesh->same_as(mesh)) {
+    const std::vector<FieldChange> changes = diff(mesh, *report.mine.mesh);
+    std::string first;
+    if (!changes.empty()) {
+      const FieldChange& c = changes.front();
+      first = ": " + id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+    }
+    out.add("vertex_normal changed the mesh" + first + " (" + std::to_string(changes.size()) +
+            (changes.size() == 1 ? " change" : " changes") + "); it must only read it");
+  }
+  report.equal = !out.any();
+  report.identical = report.equal && bitwise_equal(got, want);
+  if (report.equal && !report.identical) {
+    report.notes.push_back("your normal differs from the reference's by " + format_number(d) +
+                           " (rounding; accepted)");
+  }
+}
+
+// ---- meshes: shared checks --------------------------------------------------------------------------------
+
+// The elements of the diagrams in mesh_ops.h, read from the input (valid where the reference accepted e).
+struct Diamond {
+  VertexId a, b, c, d;  // d invalid on a boundary edge
+};
+
+Diamond diamond(const HalfedgeMesh& mesh, EdgeId e) {
+  Diamond out;
+  HalfedgeId h0 = mesh.halfedge(e);
+  if (!mesh.alive(h0)) return out;
+  if (mesh.face(h0).is_boundary() && mesh.alive(mesh.twin(h0))) h0 = mesh.twin(h0);
+  const HalfedgeId h1 = mesh.twin(h0);
+  if (!mesh.alive(h1)) return out;
+  out.a = mesh.vertex(h0);
+  out.b = mesh.vertex(h1);
+  const HalfedgeId h3 = mesh.next(mesh.next(h0));
+  if (mesh.alive(h3)) out.c = mesh.vertex(h3);
+  if (!mesh.face(h1).is_boundary()) {
+    const HalfedgeId h5 = mesh.next(mesh.next(h1));
+    if (mesh.alive(h5)) out.d = mesh.vertex(h5);
+  }
+  return out;
+}
+
+void add_validation(const ExerciseReport& report, const char* function, Messages& out) {
+  const ValidationReport& v = *report.mine.validation;
+  if (v.ok()) return;
+  for (size_t i = 0; i < v.violations.size(); ++i) {
+    std::string message = v.violations[i].message;
+    if (i == 0) {
+      message = "after your " + std::string(function) + " the mesh is not valid (" + std::to_string(v.total) +
+                (v.total == 1 ? " problem" : " problems") + "): " + message;
+    }
+    out.add(message);
+  }
+  out.count(v.total - v.violations.size());
+}
+
+std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) {
+  const std::vector<FieldChange> changes = diff(before, after);
+  if (changes.empty()) return "";
+  const FieldChange& c = changes.front();
+  return id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+}
+
+void add_comparison(const MeshComparison& c, Messages& out) {
+  for (const std::string& d : c.differences) out.add(d);
+  out.count(c.total_differences - c.differences.size());
+}
+
+// Pointer-level differences when the surface is right, as notes.
+void note_pointer_differences(ExerciseReport& report, const std::string& what) {
+  const MeshComparison exact = compare_meshes_exact(*report.mine.mesh, *report.reference.mesh, {0.0, 5});
+  report.identical = exact.equal;
+  if (exact.equal) return;
+  report.notes.push_back(what + " (" + std::to_string(exact.total_differences) +
+                         " pointer or id differences from the reference, which is accepted); first: " +
+                         exact.differences.front());
+}
+
+// The project's convention (not the course's): a boundary vertex's halfedge is its boundary halfedge.
+void note_boundary_convention(ExerciseReport& report) {
+  const HalfedgeMesh& m = *report.mine.mesh;
+  for (VertexId v : m.vertices()) {
+    const HalfedgeId h = m.halfedge(v);
+    if (!m.alive(h) || m.face(h).is_boundary() || !m.is_boundary(v)) continue;
+    report.notes.push_back(id(v) + " is on the boundary but its halfedge " + id(h) +
+                           " is not on the boundary loop; the reference keeps boundary halfedges there (the course "
+                           "does not require it)");
+    return;
+  }
+}
+
+// Refused by the reference (`what` is "flip e3", "split e3", "subdivide this mesh"): mine must change nothing
+// and return nil.
+void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const std::string& what,
+                     const char* function, Messages& out) {
+  if (!report.mine.mesh->same_as(*input.mesh)) {
+    out.add("the reference does not " + what + " (" + report.reference.refused + "), but your " + function +
+            " changed the mesh: " + first_change(*input.mesh, *report.mine.mesh));
+  }
+  if (report.mine.returned != "nil" && !report.mine.returned.empty()) {
+    out.add("the reference returns nil here (" + report.reference.refused + "); yours returned " +
+            report.mine.returned);
+  }
+  report.equal = !out.any();
+  report.identical = report.equal;
+}
+
+// ---- flip -------------------------------------------------------------------------------------------------
+
+void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  if (!report.reference.refused.empty()) {
+    return compare_refusal(input, report, "flip " + id(input.element), "flip_edge", out);
+  }
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const EdgeId e(input.element.index);
+  const Diamond q = diamond(before, e);
+  const std::string turn = id(q.a) + "-" + id(q.b) + " becomes " + id(q.d) + "-" + id(q.c);
+  if (mine.same_as(before)) {
+    out.add("your flip_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
+            "; the reference flips " + id(e) + " (" + turn + ")");
+    report.equal = false;
+    return;
+  }
+  add_validation(report, "flip_edge", out);
+  if (report.mine.element != ElementRef(e)) {
+    out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + id(e));
+  }
+  for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face}) {
+    for (uint32_t i = 0; i < std::max(mine.capacity(kind), before.capacity(kind)); ++i) {
+      const ElementRef r(kind, i);
+      if (mine.alive(r) && !before.alive(r)) {
+        out.add("your flip_edge created " + id(r) + "; a flip reuses the elements it has");
+      } else if (!mine.alive(r) && before.alive(r)) {
+        out.add("your flip_edge deleted " + id(r) + "; a flip reuses the elements it has");
+      }
+    }
+  }
+  // On a broken mesh the surface comparison would only restate the broken pointers less clearly.
+  if (report.mine.validation->ok()) {
+    add_comparison(compare_meshes(mine, *report.reference.mesh, {mesh_tolerance(before), 20}), out);
+  }
+  report.equal = !out.any();
+  if (report.equal) {
+    note_pointer_differences(report, "a correct flip of " + id(e) + " (" + turn + ")");
+    note_boundary_convention(report);
+  }
+}
+
+// ---- split ------------------------------------------------------------------------------------------------
+
+void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  if (!report.reference.refused.empty()) {
+    return compare_refusal(input, report, "split " + id(input.element), "split_edge", out);
+  }
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+  const EdgeId e(input.element.index);
+  const Diamond q = diamond(before, e);
+  const glm::dvec3 midpoint = reference.position(VertexId(report.reference.element.index));
+  const double tolerance = mesh_tolerance(before);
+  if (mine.same_as(before)) {
+    out.add("your split_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
+            "; the reference splits " + id(e) + " at its midpoint " + pos(midpoint) +
+            (before.is_boundary(e) ? " (a boundary edge: only the triangle side is split; extra credit in the course)"
+                                   : ""));
+    report.equal = false;
+    return;
+  }
+  add_validation(report, "split_edge", out);
+
+  const ElementRef m = report.mine.element;
+  if (m.kind != ElementKind::Vertex || !mine.alive(m)) {
+    out.add("your split_edge returned " + report.mine.returned + "; it must return the new vertex");
+  } else {
+    const VertexId v(m.index);
+    const glm::dvec3& p = mine.position(v);
+    if (!close(p, midpoint, tolerance)) {
+      glm::dvec3 corners = before.position(q.a) + before.position(q.b) + before.position(q.c);
+      double count = 3.0;
+      if (q.d.valid()) {
+        corners += before.position(q.d);
+        count = 4.0;
+      }
+      if (close(p, corners / count, tolerance)) {
+        out.add("your new vertex " + id(v) + " is at " + pos(p) + ", the average of the corners " + id(q.a) + " " +
+                id(q.b) + " " + id(q.c) + (q.d.valid() ? " " + id(q.d) : "") +
+                "; it belongs at the midpoint of " + id(q.a) + " and " + id(q.b) + ", " + pos(midpoint));
+      } else {
+        out.add("your new vertex " + id(v) + " is at " + pos(p) + "; it belongs at the midpoint of " + id(q.a) +
+                " and " + id(q.b) + ", " + pos(midpoint));
+      }
+    }
+    // The course: the new vertex's halfedge runs along the split edge (towards a or b).
+    const HalfedgeId h = mine.halfedge(v);
+    if (mine.alive(h) && mine.alive(mine.twin(h)) && mine.alive(mine.vertex(mine.twin(h)))) {
+      const glm::dvec3& to = mine.position(mine.vertex(mine.twin(h)));
+      if (!close(to, before.position(q.a), tolerance) && !close(to, before.position(q.b), tolerance)) {
+        out.add(id(v) + ".halfedge is " + id(h) + ", which runs to " + id(mine.vertex(mine.twin(h))) +
+                " across a face; the new vertex's halfedge must run along the split edge (towards " + id(q.a) +
+                " or " + id(q.b) + ")");
+      }
+    }
+  }
+  if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
+  report.equal = !out.any();
+  if (report.equal) {
+    note_pointer_differences(report, "a correct split of " + id(e));
+    note_boundary_convention(report);
+  }
+}
+
+// ---- upsample ---------------------------------------------------------------------------------------------
+
+// Likely mistakes, from where your vertices are and which edges you have that the reference does not.
+void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
+                       double tolerance, Messages& out) {
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+
+  // Zero weights put vertices at the origin.
+  size_t at_origin = 0, reference_at_origin = 0;
+  for (VertexId v : mine.vertices()) at_origin += close(mine.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
+  for (VertexId v : reference.vertices()) {
+    reference_at_origin += close(reference.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
+  }
+  if (at_origin >= 2 && at_origin > reference_at_origin) {
+    out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
+            "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
+  }
+
+  // Original vertices (they keep their ids in both) that did not move.
+  size_t originals = 0, unmoved = 0, wrong = 0;
+  for (VertexId v : before.vertices()) {
+    if (!mine.alive(v) || !reference.alive(v)) continue;
+    ++originals;
+    const bool right = close(mine.position(v), reference.position(v), tolerance);
+    wrong += right ? 0 : 1;
+    if (!right && close(mine.position(v), before.position(v), tolerance)) ++unmoved;
+  }
+  if (unmoved > 0 && unmoved * 2 >= originals) {
+    out.add(std::to_string(unmoved) + " of the " + std::to_string(originals) +
+            " original vertices kept their old positions: step 5 must move them to the positions of step 1, "
+            "(1 - n u) p + u (sum of the neighbours)");
+  }
+
+  // Coinciding vertices: positions written to the wrong vertices make the mesh collapse.
+  std::vector<glm::dvec3> positions;
+  for (VertexId v : mine.vertices()) positions.push_back(mine.position(v));
+  std::sort(positions.begin(), positions.end(), [](const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  });
+  size_t shared = 0;
+  for (size_t i = 1; i < positions.size(); ++i) shared += positions[i] == positions[i - 1] ? 1 : 0;
+  if (shared >= 2 && at_origin < 2) {
+    out.add(std::to_string(shared) + " of your vertices sit exactly on another one: were new positions written to "
+            "the wrong vertices? Keep them in a table indexed by v.id and move each vertex to its own");
+  }
+
+  // With every vertex matched, classify the edges yours has and the reference does not.
+  if (!c.unmatched_vertices.empty() || !c.unmatched_reference.empty() || c.extra_edges.empty()) return;
+  const uint32_t old_capacity = before.vertex_capacity();
+  size_t old_new = 0, old_old = 0, new_new = 0;
+  EdgeId example[3];
+  for (EdgeId e : c.extra_edges) {
+    const HalfedgeId h = mine.halfedge(e);
+    if (!mine.alive(h) || !mine.alive(mine.twin(h))) continue;
+    const uint32_t x = mine.vertex(h).index, y = mine.vertex(mine.twin(h)).index;
+    if (x >= c.vertex_map.size() || y >= c.vertex_map.size()) continue;
+    const bool x_old = c.vertex_map[x].index < old_capacity, y_old = c.vertex_map[y].index < old_capacity;
+    const int kind = x_old && y_old ? 1 : (!x_old && !y_old ? 2 : 0);
+    size_t& count = kind == 0 ? old_new : kind == 1 ? old_old : new_new;
+    if (count++ == 0) example[kind] = e;
+  }
+  const auto ends = [&](EdgeId e) {
+    const HalfedgeId h = mine.halfedge(e);
+    return id(e) + " (" + id(mine.vertex(h)) + " " + id(mine.vertex(mine.twin(h))) + ")";
+  };
+  if (old_old > 0) {
+    out.add(std::to_string(old_old) + " of your edges join two original vertices, e.g. " + ends(example[1]) +
+            ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end "
+            "(check both ends)");
+  }
+  if (new_new > 0) {
+    out.add(std::to_string(new_new) + " of your edges join two new vertices where the reference has none, e.g. " +
+            ends(example[2]) + ": an edge that was not new (a half of a split edge) was flipped");
+  }
+  if (old_new > 0) {
+    out.add(std::to_string(old_new) + " of your edges join an original and a new vertex where the reference has "
+            "none, e.g. " + ends(example[0]) + ": every new edge (one that cuts across an old face) that joins an "
+            "old and a new vertex must be flipped, once");
+  }
+}
+
+void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  if (!report.reference.refused.empty()) return compare_refusal(input, report, "subdivide this mesh", "upsample", out);
+  if (mine.same_as(before)) {
+    out.add("your upsample changed nothing; the reference makes " + std::to_string(report.reference.mesh->num_faces()) +
+            " faces out of " + std::to_string(before.num_faces()));
+    report.equal = false;
+    return;
+  }
+  add_validation(report, "upsample", out);
+  if (report.mine.validation->ok()) {
+    const double tolerance = mesh_tolerance(before);
+    const MeshComparison c = compare_meshes(mine, *report.reference.mesh, {tolerance, 20});
+    if (!c.equal) diagnose_upsample(input, report, c, tolerance, out);
+    add_comparison(c, out);
+  }
+  report.equal = !out.any();
+  if (report.equal) note_pointer_differences(report, "a correct subdivision");
+}
+
+// A Lua error or a limit, with a hint for the usual reasons.
+void add_run_failure(Exercise exercise, const ExerciseReport& report, Messages& out) {
+  const std::string& error = report.mine.error;
+  out.add(error);
+  const bool endless = error.find("instruction budget exceeded") != std::string::npos ||
+                       error.find("time limit exceeded") != std::string::npos ||
+                       error.find("memory limit exceeded") != std::string::npos ||
+                       error.find("scripts may make at most") != std::string::npos ||
+                       error.find("changes recorded") != std::string::npos;
+  if (!endless) return;
+  if (exercise == Exercise::Upsample) {
+    out.add("upsample did not finish: split only the edges of the original mesh (list them before the first "
+            "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create");
+  } else if (exercise == Exercise::FlipEdge || exercise == Exercise::SplitEdge || exercise == Exercise::VertexNormal) {
+    out.add("it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
+            "start when a pointer is wrong");
+  }
+}
+
+}  // namespace
+
+std::string ExerciseReport::summary() const {
+  if (equal) return "same as the reference";
+  std::string s = "different";
+  if (!differences.empty()) s += ": " + differences.front();
+  if (total_differences > 1) s += " (" + std::to_string(total_differences - 1) + " more)";
+  return s;
+}
+
+ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOutcome mine, ExerciseOutcome reference) {
+  ExerciseReport report;
+  report.exercise = exercise;
+  report.mine = std::move(mine);
+  report.reference = std::move(reference);
+  Messages out(report);
+  const bool on_mesh = exercise == Exercise::VertexNormal || exercise == Exercise::FlipEdge ||
+                       exercise == Exercise::SplitEdge || exercise == Exercise::Upsample;
+  if (on_mesh && report.mine.ran && !report.mine.mesh) {
+    report.mine.ran = false;
+    report.mine.error = "no mesh came back from " + std::string(exercise_info(exercise).function);
+  }
+  if (on_mesh && report.mine.mesh && !report.mine.validation) report.mine.validation = validate(*report.mine.mesh);
+  if (!report.mine.ran) {
+    add_run_failure(exercise, report, out);
+    report.equal = false;
+    return report;
+  }
+  switch (exercise) {
+    case Exercise::CurveStep: compare_curve(input, report, out); break;
+    case Exercise::PatchEvaluate: compare_patch(input, report, out); break;
+    case Exercise::VertexNormal: compare_normal(input, report, out); break;
+    case Exercise::FlipEdge: compare_flip(input, report, out); break;
+    case Exercise::SplitEdge: compare_split(input, report, out); break;
+    case Exercise::Upsample: compare_upsample(input, report, out); break;
+  }
+  return report;
+}
+
+}  // namespace meshedit
