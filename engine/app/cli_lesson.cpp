@@ -1,0 +1,36 @@
+// `meshedit lesson FILE --headless [--answers ANSWERS.lua]`: runs a lesson through every step with no
+// window (engine/script/lesson_headless.h), printing what each step says; exit 0 when every step ran to its
+// end, 1 with the failing step's file:line on stderr otherwise. The window mode of a lesson is opened with
+// `meshedit FILE.lua`; without --headless this command says so (usage error, exit 2).
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/cli_commands.h"
+#include "app/cli_lesson.h"
+#include "script/lesson_headless.h"
+#include "script/lua_runtime.h"
+
+namespace meshedit {
+
+int run_lesson(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const bool headless = take_flag(args, "--headless");
+  const std::optional<std::string> answers = take_option(args, "--answers");
+  reject_unknown_options(args);
+  if (args.size() != 1) {
+    throw UsageError("lesson needs one file: meshedit lesson FILE.lua --headless [--answers ANSWERS.lua]");
+  }
+  if (!headless) {
+    throw UsageError("lesson runs with --headless here; open a lesson in the window with: meshedit " + args.front());
+  }
+  std::optional<std::filesystem::path> answers_path;
+  if (answers) answers_path = *answers;
+  const HeadlessOutcome outcome = run_lesson_headless(args.front(), answers_path, out);
+  out.flush();
+  if (!outcome.failure.empty()) throw ScriptError(outcome.failure);
+  return 0;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,103 @@
+// HeadlessHost: records each LessonHost call as a line and keeps the scene state (see headless_host.h).
+#include "script/headless_host.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace meshedit {
+namespace {
+
+// Shortest round-trip-ish form for messages: 30, 0.5, -2.25 (no trailing zeros).
+std::string number(double value) {
+  char buffer[32];
+  std::snprintf(buffer, sizeof buffer, "%.10g", value);
+  return buffer;
+}
+
+std::string mesh_summary(const HalfedgeMesh& mesh) {
+  return "(" + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(mesh.num_edges()) + " edges, " +
+         std::to_string(mesh.num_faces()) + " faces)";
+}
+
+}  // namespace
+
+std::string colour_hex(glm::vec3 colour) {
+  char buffer[8];
+  const auto byte = [](float c) {
+    const float clamped = std::isnan(c) ? 0.0f : std::clamp(c, 0.0f, 1.0f);
+    return static_cast<unsigned>(std::lround(clamped * 255.0f));
+  };
+  std::snprintf(buffer, sizeof buffer, "#%02x%02x%02x", byte(colour.r), byte(colour.g), byte(colour.b));
+  return buffer;
+}
+
+void HeadlessHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh) {
+  if (!mesh) {
+    calls_.push_back("show_mesh (none)");
+    shown_mesh_.reset();
+    screen_mesh_.reset();
+    return;
+  }
+  calls_.push_back("show_mesh " + mesh_summary(*mesh));
+  screen_mesh_ = std::make_shared<HalfedgeMesh>(*mesh);
+  shown_mesh_ = std::move(mesh);
+  curve_.reset();
+  patches_.clear();
+  selection_ = {};
+}
+
+void HeadlessHost::show_curve(const BezierCurve& curve) {
+  calls_.push_back("show_curve " + std::to_string(curve.control_points.size()) + " points");
+  curve_ = curve;
+  patches_.clear();
+  shown_mesh_.reset();
+  screen_mesh_.reset();
+  selection_ = {};
+}
+
+void HeadlessHost::show_patches(const std::vector<BezierPatch>& patches) {
+  calls_.push_back("show_patches " + std::to_string(patches.size()));
+  patches_ = patches;
+  curve_.reset();
+  shown_mesh_.reset();
+  screen_mesh_.reset();
+  selection_ = {};
+}
+
+void HeadlessHost::highlight(ElementRef element, glm::vec3 colour) {
+  calls_.push_back("highlight " + format_id(element) + " " + colour_hex(colour));
+  highlights_[element] = colour;
+}
+
+void HeadlessHost::label(ElementRef element, const std::string& text) {
+  calls_.push_back("label " + format_id(element) + " \"" + text + "\"");
+  labels_[element] = text;
+}
+
+void HeadlessHost::clear_annotations() {
+  calls_.push_back("clear_annotations");
+  highlights_.clear();
+  labels_.clear();
+}
+
+void HeadlessHost::camera(const CameraRequest& request) {
+  std::string line = "camera";
+  if (request.reset) line += " reset";
+  if (request.fit) line += " fit";
+  if (request.yaw_degrees) line += " yaw=" + number(*request.yaw_degrees);
+  if (request.pitch_degrees) line += " pitch=" + number(*request.pitch_degrees);
+  if (request.distance) line += " distance=" + number(*request.distance);
+  if (request.target) {
+    line += " target=(" + number(request.target->x) + ", " + number(request.target->y) + ", " +
+            number(request.target->z) + ")";
+  }
+  calls_.push_back(line);
+  cameras_.push_back(request);
+}
+
+std::shared_ptr<HalfedgeMesh> HeadlessHost::current_mesh() const {
+  return screen_mesh_ ? std::make_shared<HalfedgeMesh>(*screen_mesh_) : nullptr;
+}
+
+}  // namespace meshedit

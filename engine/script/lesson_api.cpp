@@ -1,0 +1,647 @@
+// The lesson globals (see lesson_api.h): argument checking, the calls into the host, and the small Lua
+// prelude that builds wait_for and animate out of yields, so a condition or an animation frame runs inside
+// the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget).
+#include "script/lesson_api.h"
+
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <exception>
+#include <initializer_list>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <lua.hpp>
+
+#include "script/binding_support.h"
+#include "script/lua_runtime.h"
+#include "script/mesh_bindings.h"
+
+namespace meshedit {
+namespace {
+
+constexpr const char* kPreludeName = "(lesson api)";
+constexpr const char* kPreludeSource = "@(lesson api)";
+
+constexpr const char* kPrelude = R"lua(local api = __lesson_api
+__lesson_api = nil
+local check_wait, wait, check_animate, frame, min = api.check_wait, api.wait, api.check_animate, api.frame, math.min
+function wait_for(spec)
+  if check_wait(spec) == "condition" then
+    local condition = spec.condition
+    local value = condition()
+    while not value do
+      wait(spec)
+      value = condition()
+    end
+    return value
+  end
+  return wait(spec)
+end
+function animate(seconds, fn)
+  check_animate(seconds, fn)
+  if seconds <= 0 then
+    fn(1)
+    return
+  end
+  fn(0)
+  local elapsed = 0
+  while elapsed < seconds do
+    elapsed = elapsed + frame(seconds, elapsed)
+    fn(min(elapsed / seconds, 1))
+  end
+end
+)lua";
+
+LessonScript& script_of(lua_State* L) { return *static_cast<LessonScript*>(lua_touserdata(L, lua_upvalueindex(1))); }
+
+// Where the lesson called the running API function.
+std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
+
+[[noreturn]] void raise(lua_State* L, const std::string& message) {
+  const std::string where = caller_where(L);
+  lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
+  lua_error(L);
+  __builtin_unreachable();  // lua_error never returns (it throws in this C++ build of Lua)
+}
+
+// Runs an API function with C++ exceptions (from the host, or bad_alloc) turned into Lua errors; the
+// message is copied out first so the Lua error starts after the C++ exception is finished.
+template <lua_CFunction F>
+int lesson_guarded(lua_State* L) {
+  std::string message;
+  try {
+    return F(L);
+  } catch (const std::exception& e) {
+    message = e.what();
+  }
+  raise(L, message);
+}
+
+void require_step(lua_State* L, const char* name) {
+  const LessonScript& script = script_of(L);
+  if (script.phase == LessonScript::Phase::Step) return;
+  raise(L, std::string(name) + " can only be used inside a step: step(\"title\", function() ... end)");
+}
+
+void require_loading(lua_State* L, const char* name) {
+  if (script_of(L).phase == LessonScript::Phase::Loading) return;
+  raise(L, std::string(name) + " can only be used at the top level of a lesson file, not inside a step");
+}
+
+// A wait or an animation frame may only yield the step's own coroutine.
+void require_step_thread(lua_State* L, const char* name) {
+  require_step(L, name);
+  if (L != script_of(L).step_thread) {
+    raise(L, std::string(name) + " works in the step itself, not inside a coroutine of your own");
+  }
+  if (!lua_isyieldable(L)) {
+    raise(L, std::string(name) + " cannot wait here (inside a metamethod or a C function)");
+  }
+}
+
+std::string type_name(lua_State* L, int index) { return luaL_typename(L, index); }
+
+// Checks that the table at `index` has only the listed string keys.
+void check_fields(lua_State* L, int index, const char* call, std::initializer_list<const char*> allowed) {
+  index = lua_absindex(L, index);
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    lua_pop(L, 1);
+    bool ok = false;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      for (const char* name : allowed) ok = ok || std::strcmp(lua_tostring(L, -1), name) == 0;
+    }
+    if (!ok) {
+      std::string list;
+      for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+      const std::string key = lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'"
+                                                             : "a " + type_name(L, -1) + " key";
+      raise(L, std::string(call) + ": unknown field " + key + " (fields: " + list + ")");
+    }
+  }
+}
+
+std::optional<ElementKind> kind_by_name(const std::string& name) {
+  for (ElementKind kind : kAllKinds) {
+    if (name == kind_name(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+// An element handle (of any mesh) or an id string ("e7"), else nullopt.
+std::optional<ElementRef> to_element(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TSTRING) return parse_element(lua_tostring(L, index));
+  if (const Handle* handle = test_handle(L, index)) return handle->ref();
+  return std::nullopt;
+}
+
+ElementRef check_element(lua_State* L, int index, const char* call) {
+  if (std::optional<ElementRef> element = to_element(L, index)) return *element;
+  if (lua_type(L, index) == LUA_TSTRING) {
+    raise(L, std::string(call) + ": '" + lua_tostring(L, index) + "' is not an element id (like v3, h12, e7, f2, b0)");
+  }
+  raise(L, std::string(call) + ": expected an element (a handle or an id like \"e7\"), got " + type_name(L, index));
+}
+
+// The value of wait_for{click=...} / {selection=...}: "any", a kind name, an id, or a handle.
+void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
+  if (lua_type(L, index) == LUA_TSTRING) {
+    const std::string text = lua_tostring(L, index);
+    if (text == "any") return;
+    if (std::optional<ElementKind> kind = kind_by_name(text)) {
+      wait.element_kind = kind;
+      return;
+    }
+  }
+  if (std::optional<ElementRef> element = to_element(L, index)) {
+    wait.element = *element;
+    return;
+  }
+  const std::string got = lua_type(L, index) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, index)) + "'"
+                                                            : "a " + type_name(L, index);
+  raise(L, std::string("wait_for: ") + field +
+               " must be an element kind (vertex, halfedge, edge, face, boundary), an id like \"e7\", an element or "
+               "\"any\"; got " + got);
+}
+
+std::string default_hint(const LessonWait& wait) {
+  switch (wait.kind) {
+    case LessonWait::Kind::Key: return "Press " + wait.name;
+    case LessonWait::Kind::Click: return "Click " + wait.describe().substr(std::strlen("a click on "));
+    case LessonWait::Kind::Selection: return "Select " + wait.describe().substr(std::strlen("the selection of "));
+    case LessonWait::Kind::Button: return "Press " + wait.name;
+    default: return "";
+  }
+}
+
+// Parses wait_for's table at `index` (exactly one of key, click, selection, condition, button; an optional
+// hint) into a LessonWait, with `where` set to the lesson line.
+LessonWait parse_wait(lua_State* L, int index) {
+  if (!lua_istable(L, index)) {
+    raise(L, "wait_for: expected a table like {key=\"F\"}, {click=\"vertex\"}, {selection=\"e7\"}, "
+             "{condition=function() ... end} or {button=\"Continue\"}, got " + type_name(L, index));
+  }
+  check_fields(L, index, "wait_for", {"key", "click", "selection", "condition", "button", "hint"});
+  LessonWait wait;
+  int kinds = 0;
+  for (const char* field : {"key", "click", "selection", "condition", "button"}) {
+    lua_getfield(L, index, field);
+    const int value = lua_gettop(L);
+    if (!lua_isnil(L, value)) {
+      ++kinds;
+      const std::string name = field;
+      if (name == "key" || name == "button") {
+        if (lua_type(L, value) != LUA_TSTRING || lua_rawlen(L, value) == 0) {
+          raise(L, "wait_for: " + name + " must be a non-empty string, got " + type_name(L, value));
+        }
+        wait.kind = name == "key" ? LessonWait::Kind::Key : LessonWait::Kind::Button;
+        wait.name = lua_tostring(L, value);
+      } else if (name == "condition") {
+        if (!lua_isfunction(L, value)) raise(L, "wait_for: condition must be a function, got " + type_name(L, value));
+        wait.kind = LessonWait::Kind::Condition;
+      } else {
+        wait.kind = name == "click" ? LessonWait::Kind::Click : LessonWait::Kind::Selection;
+        read_target(L, value, field, wait);
+      }
+    }
+    lua_pop(L, 1);
+  }
+  if (kinds != 1) {
+    raise(L, kinds == 0 ? "wait_for: say what to wait for: key, click, selection, condition or button"
+                        : "wait_for: wait for one thing at a time (key, click, selection, condition or button)");
+  }
+  lua_getfield(L, index, "hint");
+  if (!lua_isnil(L, -1)) {
+    if (lua_type(L, -1) != LUA_TSTRING) raise(L, "wait_for: hint must be a string, got " + type_name(L, -1));
+    wait.hint = lua_tostring(L, -1);
+  } else {
+    wait.hint = default_hint(wait);
+  }
+  lua_pop(L, 1);
+  wait.where = caller_where(L);
+  return wait;
+}
+
+// ---- points, curves, patches ------------------------------------------------------------------------
+
+// A point: a table with numeric x, y (z optional) or a list {x, y[, z]}.
+bool read_point(lua_State* L, int index, glm::dvec3& out) {
+  if (!lua_istable(L, index)) return false;
+  index = lua_absindex(L, index);
+  lua_getfield(L, index, "x");
+  const bool named = lua_type(L, -1) == LUA_TNUMBER;
+  lua_pop(L, 1);
+  double c[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    if (named) lua_getfield(L, index, i == 0 ? "x" : i == 1 ? "y" : "z");
+    else lua_geti(L, index, i + 1);
+    const int type = lua_type(L, -1);
+    if (type == LUA_TNUMBER) c[i] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    if (type != LUA_TNUMBER && (i < 2 || type != LUA_TNIL)) return false;
+  }
+  out = {c[0], c[1], c[2]};
+  return true;
+}
+
+// The `points` field of a curve or patch userdata (from the Bézier bindings), or the table itself.
+void push_points_table(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TUSERDATA) lua_getfield(L, index, "points");
+  else lua_pushvalue(L, index);
+}
+
+std::vector<glm::dvec3> read_points(lua_State* L, int index, const std::string& what) {
+  push_points_table(L, index);
+  const int list = lua_gettop(L);
+  if (!lua_istable(L, list)) raise(L, "show: " + what + " needs a list of points, got " + type_name(L, list));
+  std::vector<glm::dvec3> points;
+  const lua_Integer n = luaL_len(L, list);
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_geti(L, list, i);
+    glm::dvec3 p{};
+    if (!read_point(L, -1, p)) {
+      raise(L, "show: point " + std::to_string(i) + " of " + what + " is not a point ({x=, y=, z=} or {x, y, z})");
+    }
+    points.push_back(p);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return points;
+}
+
+std::string userdata_name(lua_State* L, int index) {
+  if (lua_type(L, index) != LUA_TUSERDATA) return "";
+  std::string name;
+  if (luaL_getmetafield(L, index, "__name") != LUA_TNIL) {
+    if (lua_type(L, -1) == LUA_TSTRING) name = lua_tostring(L, -1);
+    lua_pop(L, 1);
+  }
+  return name;
+}
+
+void show_curve(lua_State* L, LessonHost& host, int index) {
+  const std::vector<glm::dvec3> points = read_points(L, index, "a curve");
+  if (points.empty()) raise(L, "show: a curve needs at least one point");
+  BezierCurve curve;
+  for (size_t i = 0; i < points.size(); ++i) {
+    if (points[i].z != 0.0) {
+      char z[32];
+      std::snprintf(z, sizeof z, "%g", points[i].z);
+      raise(L, "show: curves are drawn in 2D, but point " + std::to_string(i + 1) + " has z = " + z);
+    }
+    curve.control_points.emplace_back(points[i].x, points[i].y);
+  }
+  host.show_curve(curve);
+}
+
+BezierPatch read_patch(lua_State* L, int index, const std::string& what) {
+  const std::vector<glm::dvec3> points = read_points(L, index, what);
+  if (points.size() != 16) {
+    raise(L, "show: " + what + " needs 16 control points (4 rows of 4), got " + std::to_string(points.size()));
+  }
+  BezierPatch patch;
+  for (size_t i = 0; i < 16; ++i) patch.points[i] = points[i];
+  return patch;
+}
+
+// ---- colours ----------------------------------------------------------------------------------------
+
+struct NamedColour {
+  const char* name;
+  glm::vec3 rgb;
+};
+const NamedColour kColours[] = {
+    {"red", {1.0f, 0.0f, 0.0f}},    {"green", {0.0f, 0.8f, 0.0f}}, {"blue", {0.2f, 0.4f, 1.0f}},
+    {"yellow", {1.0f, 0.9f, 0.0f}}, {"orange", {1.0f, 0.5f, 0.0f}}, {"magenta", {1.0f, 0.0f, 1.0f}},
+    {"pink", {1.0f, 0.5f, 0.7f}},   {"cyan", {0.0f, 0.9f, 0.9f}},  {"purple", {0.6f, 0.2f, 0.8f}},
+    {"white", {1.0f, 1.0f, 1.0f}},  {"grey", {0.5f, 0.5f, 0.5f}},  {"gray", {0.5f, 0.5f, 0.5f}},
+    {"black", {0.0f, 0.0f, 0.0f}}};
+constexpr glm::vec3 kDefaultHighlight{1.0f, 0.5f, 0.0f};  // orange, the app's "just changed" colour
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+glm::vec3 read_colour(lua_State* L, int index) {
+  if (lua_isnoneornil(L, index)) return kDefaultHighlight;
+  if (lua_type(L, index) == LUA_TSTRING) {
+    const std::string text = lua_tostring(L, index);
+    for (const NamedColour& c : kColours) {
+      if (text == c.name) return c.rgb;
+    }
+    if (text.size() == 7 && text[0] == '#') {
+      glm::vec3 rgb{};
+      bool ok = true;
+      for (int i = 0; i < 3; ++i) {
+        const int hi = hex_digit(text[1 + 2 * i]), lo = hex_digit(text[2 + 2 * i]);
+        ok = ok && hi >= 0 && lo >= 0;
+        rgb[i] = static_cast<float>(hi * 16 + lo) / 255.0f;
+      }
+      if (ok) return rgb;
+    }
+    std::string names;
+    for (const NamedColour& c : kColours) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    raise(L, "unknown colour '" + text + "' (use " + names + ", \"#rrggbb\" or {r, g, b} from 0 to 1)");
+  }
+  if (lua_istable(L, index)) {
+    glm::dvec3 p{};
+    lua_getfield(L, index, "r");
+    const bool named = lua_type(L, -1) == LUA_TNUMBER;
+    lua_pop(L, 1);
+    bool ok = true;
+    for (int i = 0; i < 3; ++i) {
+      if (named) lua_getfield(L, index, i == 0 ? "r" : i == 1 ? "g" : "b");
+      else lua_geti(L, index, i + 1);
+      ok = ok && lua_type(L, -1) == LUA_TNUMBER;
+      p[i] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      ok = ok && p[i] >= 0.0 && p[i] <= 1.0;
+    }
+    if (ok) return glm::vec3(p);
+    raise(L, "a colour table needs three numbers from 0 to 1: {r, g, b} or {r=, g=, b=}");
+  }
+  raise(L, "expected a colour (a name like \"red\", \"#rrggbb\" or {r, g, b}), got " + type_name(L, index));
+}
+
+// Calls fn(element) for the element at `index`, or for each element of a list there.
+template <class Fn>
+void for_each_element(lua_State* L, int index, const char* call, Fn fn) {
+  if (lua_istable(L, index)) {
+    const lua_Integer n = luaL_len(L, index);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_geti(L, index, i);
+      fn(check_element(L, lua_gettop(L), call));
+      lua_pop(L, 1);
+    }
+    return;
+  }
+  fn(check_element(L, index, call));
+}
+
+// ---- the globals ------------------------------------------------------------------------------------
+
+int api_lesson(lua_State* L) {
+  require_loading(L, "lesson{}");
+  if (!lua_istable(L, 1)) raise(L, "lesson: expected a table like {title=\"...\", summary=\"...\"}");
+  check_fields(L, 1, "lesson", {"title", "summary"});
+  LessonScript& script = script_of(L);
+  for (const char* field : {"title", "summary"}) {
+    lua_getfield(L, 1, field);
+    if (!lua_isnil(L, -1)) {
+      if (lua_type(L, -1) != LUA_TSTRING) raise(L, std::string("lesson: ") + field + " must be a string");
+      (std::strcmp(field, "title") == 0 ? script.title : script.summary) = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);
+  }
+  return 0;
+}
+
+int api_step(lua_State* L) {
+  require_loading(L, "step()");
+  if (lua_type(L, 1) != LUA_TSTRING) raise(L, "step: the first argument is the step's title, got " + type_name(L, 1));
+  if (!lua_isfunction(L, 2)) {
+    raise(L, "step: the second argument is the step's body, function() ... end, got " + type_name(L, 2));
+  }
+  LessonScript& script = script_of(L);
+  LessonStepDef def;
+  def.title = lua_tostring(L, 1);
+  def.where = caller_where(L);
+  lua_pushvalue(L, 2);
+  def.function_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  script.steps.push_back(std::move(def));
+  return 0;
+}
+
+int api_say(lua_State* L) {
+  require_step(L, "say()");
+  if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
+    raise(L, "say: expected text, got " + type_name(L, 1));
+  }
+  script_of(L).said.emplace_back(lua_tostring(L, 1));
+  return 0;
+}
+
+int api_show(lua_State* L) {
+  require_step(L, "show()");
+  LessonHost& host = *script_of(L).host;
+  if (std::shared_ptr<HalfedgeMesh> mesh = to_mesh(L, 1)) {
+    host.show_mesh(std::move(mesh));
+    return 0;
+  }
+  const std::string name = userdata_name(L, 1);
+  if (name == "curve") {
+    show_curve(L, host, 1);
+    return 0;
+  }
+  if (name == "patch") {
+    host.show_patches({read_patch(L, 1, "a patch")});
+    return 0;
+  }
+  if (lua_istable(L, 1) && luaL_len(L, 1) > 0) {
+    lua_geti(L, 1, 1);
+    glm::dvec3 p{};
+    const bool curve = read_point(L, -1, p);
+    lua_pop(L, 1);
+    if (curve) {
+      show_curve(L, host, 1);
+      return 0;
+    }
+    std::vector<BezierPatch> patches;
+    const lua_Integer n = luaL_len(L, 1);
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_geti(L, 1, i);
+      patches.push_back(read_patch(L, lua_gettop(L), "patch " + std::to_string(i)));
+      lua_pop(L, 1);
+    }
+    host.show_patches(patches);
+    return 0;
+  }
+  raise(L, "show: expected a mesh, a curve (a list of points) or patches (a list of 16-point lists), got " +
+               (name.empty() ? type_name(L, 1) : name));
+}
+
+int api_highlight(lua_State* L) {
+  require_step(L, "highlight()");
+  const glm::vec3 colour = read_colour(L, 2);
+  LessonHost& host = *script_of(L).host;
+  for_each_element(L, 1, "highlight", [&](ElementRef element) { host.highlight(element, colour); });
+  return 0;
+}
+
+int api_label(lua_State* L) {
+  require_step(L, "label()");
+  const ElementRef element = check_element(L, 1, "label");
+  if (lua_isnoneornil(L, 2)) raise(L, "label: the second argument is the text to show");
+  const std::string text = luaL_tolstring(L, 2, nullptr);
+  lua_pop(L, 1);
+  script_of(L).host->label(element, text);
+  return 0;
+}
+
+int api_clear(lua_State* L) {
+  require_step(L, "clear()");
+  script_of(L).host->clear_annotations();
+  return 0;
+}
+
+int api_camera(lua_State* L) {
+  require_step(L, "camera()");
+  CameraRequest request;
+  if (lua_type(L, 1) == LUA_TSTRING) {
+    const std::string word = lua_tostring(L, 1);
+    if (word == "fit") request.fit = true;
+    else if (word == "reset") request.reset = true;
+    else raise(L, "camera: '" + word + "' is not a camera request (use \"fit\", \"reset\" or a table)");
+  } else if (lua_istable(L, 1)) {
+    check_fields(L, 1, "camera", {"fit", "reset", "yaw", "pitch", "distance", "target"});
+    lua_getfield(L, 1, "fit");
+    request.fit = lua_toboolean(L, -1);
+    lua_getfield(L, 1, "reset");
+    request.reset = lua_toboolean(L, -1);
+    lua_pop(L, 2);
+    const auto number = [&](const char* field, std::optional<double>& out) {
+      lua_getfield(L, 1, field);
+      if (!lua_isnil(L, -1)) {
+        if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
+          raise(L, std::string("camera: ") + field + " must be a number");
+        }
+        out = lua_tonumber(L, -1);
+      }
+      lua_pop(L, 1);
+    };
+    number("yaw", request.yaw_degrees);
+    number("pitch", request.pitch_degrees);
+    number("distance", request.distance);
+    if (request.distance && *request.distance <= 0.0) raise(L, "camera: distance must be positive");
+    lua_getfield(L, 1, "target");
+    if (!lua_isnil(L, -1)) {
+      glm::dvec3 target{};
+      if (!read_point(L, -1, target)) raise(L, "camera: target must be a point ({x=, y=, z=} or {x, y, z})");
+      request.target = target;
+    }
+    lua_pop(L, 1);
+  } else {
+    raise(L, "camera: expected \"fit\", \"reset\" or a table like {yaw=30, pitch=20, distance=4}");
+  }
+  script_of(L).host->camera(request);
+  return 0;
+}
+
+int api_current_mesh(lua_State* L) {
+  require_step(L, "current_mesh()");
+  std::shared_ptr<HalfedgeMesh> mesh = script_of(L).host->current_mesh();
+  if (mesh) push_mesh(L, std::move(mesh));
+  else lua_pushnil(L);
+  return 1;
+}
+
+int api_selection(lua_State* L) {
+  require_step(L, "selection()");
+  LessonHost& host = *script_of(L).host;
+  const ElementRef selected = host.current_selection();
+  if (selected.valid()) push_element_value(L, host, selected);
+  else lua_pushnil(L);
+  return 1;
+}
+
+// ---- helpers the prelude calls ------------------------------------------------------------------------
+
+int api_check_wait(lua_State* L) {
+  require_step_thread(L, "wait_for()");
+  const LessonWait wait = parse_wait(L, 1);
+  lua_pushstring(L, wait.kind == LessonWait::Kind::Condition ? "condition" : "event");
+  return 1;
+}
+
+int api_wait(lua_State* L) {
+  require_step_thread(L, "wait_for()");
+  LessonScript& script = script_of(L);
+  script.wait = parse_wait(L, 1);
+  script.api_yield = true;
+  return lua_yield(L, 0);  // the runner resumes with what the wait returns
+}
+
+int api_check_animate(lua_State* L) {
+  require_step_thread(L, "animate()");
+  if (lua_type(L, 1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, 1)) || lua_tonumber(L, 1) < 0) {
+    raise(L, "animate: the first argument is the length in seconds (a number >= 0), got " +
+                 (lua_type(L, 1) == LUA_TNUMBER ? std::string(lua_tostring(L, 1)) : type_name(L, 1)));
+  }
+  if (!lua_isfunction(L, 2)) raise(L, "animate: the second argument is function(t) ... end, got " + type_name(L, 2));
+  return 0;
+}
+
+int api_frame(lua_State* L) {
+  require_step_thread(L, "animate()");
+  LessonScript& script = script_of(L);
+  LessonWait wait;
+  wait.kind = LessonWait::Kind::Animation;
+  wait.seconds = lua_tonumber(L, 1);
+  wait.elapsed = lua_tonumber(L, 2);
+  wait.where = caller_where(L);
+  script.wait = wait;
+  script.api_yield = true;
+  return lua_yield(L, 0);  // the runner resumes with the frame's dt
+}
+
+void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f) {
+  lua_pushlightuserdata(L, &script);
+  lua_pushcclosure(L, f, 1);
+  lua_setfield(L, -2, name);
+}
+
+}  // namespace
+
+std::string lesson_where(lua_State* L, int first_level) {
+  lua_Debug ar;
+  for (int level = first_level; lua_getstack(L, level, &ar); ++level) {
+    if (!lua_getinfo(L, "Sl", &ar)) break;
+    if (ar.currentline <= 0 || std::strcmp(ar.source, kPreludeSource) == 0) continue;
+    return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
+  }
+  return "";
+}
+
+void push_element_value(lua_State* L, LessonHost& host, ElementRef element) {
+  std::shared_ptr<HalfedgeMesh> mesh = host.current_mesh();
+  if (!mesh || !element.valid() || element.index >= mesh->capacity(element.kind)) {
+    lua_pushstring(L, format_id(element).c_str());
+    return;
+  }
+  push_mesh(L, std::move(mesh));
+  lua_getfield(L, -1, kind_name(element.kind));  // mesh:vertex(i), mesh:edge(i), ...
+  lua_insert(L, -2);
+  lua_pushinteger(L, element.index);
+  lua_call(L, 2, 1);
+}
+
+void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
+  lua_State* L = runtime.state();
+  lua_pushglobaltable(L);
+  set_function(L, script, "lesson", lesson_guarded<api_lesson>);
+  set_function(L, script, "step", lesson_guarded<api_step>);
+  set_function(L, script, "say", lesson_guarded<api_say>);
+  set_function(L, script, "show", lesson_guarded<api_show>);
+  set_function(L, script, "highlight", lesson_guarded<api_highlight>);
+  set_function(L, script, "label", lesson_guarded<api_label>);
+  set_function(L, script, "clear", lesson_guarded<api_clear>);
+  set_function(L, script, "camera", lesson_guarded<api_camera>);
+  set_function(L, script, "current_mesh", lesson_guarded<api_current_mesh>);
+  set_function(L, script, "selection", lesson_guarded<api_selection>);
+  lua_newtable(L);
+  set_function(L, script, "check_wait", lesson_guarded<api_check_wait>);
+  set_function(L, script, "wait", lesson_guarded<api_wait>);
+  set_function(L, script, "check_animate", lesson_guarded<api_check_animate>);
+  set_function(L, script, "frame", lesson_guarded<api_frame>);
+  lua_setfield(L, -2, "__lesson_api");
+  lua_pop(L, 1);
+  runtime.run_string(kPrelude, kPreludeName);
+}
+
+}  // namespace meshedit

@@ -1,0 +1,68 @@
+// LessonHost: everything a lesson can ask of the application, and nothing else. The window implements it
+// with its document, views and camera; HeadlessHost (headless_host.h) records the calls for tests and for
+// `meshedit lesson FILE --headless`.
+//
+// Invariants (what every implementation keeps, so a lesson behaves the same in the window and headless):
+// - The runner calls these only from inside LessonRunner's own calls (load/next/back/reload/update/deliver),
+//   never from another thread. A host must not call back into the runner from inside one of these.
+// - show_mesh receives the lesson's own mesh (the object the script holds): the lesson may keep changing it
+//   after the call. A host that wants a stable picture copies it; the lesson calls show() again after a
+//   change it wants seen.
+// - current_mesh() returns a copy (or nullptr when no mesh is on screen): the app's document owns its mesh,
+//   and a script must never hold a pointer into it.
+// - Highlights and labels belong to the current step: the runner calls clear_annotations() when a step
+//   starts (Next, Back, reload), so each step rebuilds its own marks. What is shown (mesh, curve,
+//   patches) stays until a step shows something else.
+// - Element references are ids of the mesh on screen (format_id prints them: v12 h37 e5 f3 b0); a host
+//   ignores ids that are not in its mesh rather than failing.
+#pragma once
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "core/bezier.h"
+#include "core/halfedge_mesh.h"
+#include "core/ids.h"
+
+namespace meshedit {
+
+// What `camera{...}` asks for. Several fields may be set together; the host applies reset, then fit, then
+// the orbit values that are present.
+struct CameraRequest {
+  bool reset = false;                  // back to the default view
+  bool fit = false;                    // frame everything shown
+  std::optional<double> yaw_degrees;   // orbit angle around the up axis
+  std::optional<double> pitch_degrees; // angle above the horizon
+  std::optional<double> distance;      // from the target
+  std::optional<glm::dvec3> target;    // the point the camera orbits
+};
+
+class LessonHost {
+ public:
+  virtual ~LessonHost() = default;
+
+  // ---- what is on screen ----
+  virtual void show_mesh(std::shared_ptr<HalfedgeMesh> mesh) = 0;
+  virtual void show_curve(const BezierCurve& curve) = 0;
+  virtual void show_patches(const std::vector<BezierPatch>& patches) = 0;
+
+  // ---- marks on the shown mesh (colour components in [0, 1]) ----
+  virtual void highlight(ElementRef element, glm::vec3 colour) = 0;
+  virtual void label(ElementRef element, const std::string& text) = 0;
+  // Removes every highlight and label.
+  virtual void clear_annotations() = 0;
+
+  virtual void camera(const CameraRequest& request) = 0;
+
+  // ---- what the student sees and has done ----
+  // A copy of the mesh on screen (with the student's edits), or nullptr when none is shown.
+  virtual std::shared_ptr<HalfedgeMesh> current_mesh() const = 0;
+  // The selected element, or an invalid ElementRef when nothing is selected.
+  virtual ElementRef current_selection() const = 0;
+};
+
+}  // namespace meshedit

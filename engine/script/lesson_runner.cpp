@@ -1,0 +1,315 @@
+// LessonRunner: loading a lesson into a fresh runtime, running each step as a coroutine, and turning every
+// failure into error() (see lesson_runner.h for the invariants).
+//
+// All Lua work (creating the step's thread, resuming it, pushing what a wait returns) runs inside a
+// trampoline called through LuaRuntime::call, so it is protected (an allocation failure is a Lua error, not
+// a panic) and inside a fresh budget window. The step's thread gets the main thread's count hook before each
+// resume, so the runtime's limits reach code running in the coroutine.
+#include "script/lesson_runner.h"
+
+#include <algorithm>
+#include <cmath>
+#include <exception>
+#include <fstream>
+#include <iterator>
+
+#include <lua.hpp>
+
+#include "script/lesson_api.h"
+
+namespace meshedit {
+namespace {
+
+const std::string kEmptyText;
+const std::vector<std::string> kNoBlocks;
+const LessonWait kNoWait;
+
+std::string error_text(lua_State* co, const LuaLimits& limits) {
+  std::string message;
+  if (lua_type(co, -1) == LUA_TSTRING) message = lua_tostring(co, -1);
+  else message = std::string("(error object is a ") + luaL_typename(co, -1) + " value)";
+  // A memory error carries no position (Lua builds no message for it): the coroutine's stack, which an error
+  // leaves in place, still says where it was.
+  if (message == "not enough memory") {
+    const std::string where = lesson_where(co, 0);
+    message = (where.empty() ? "" : where + ": ") + "memory limit exceeded (" +
+              std::to_string(limits.memory_bytes >> 20) + " MB)";
+  }
+  return message;
+}
+
+}  // namespace
+
+LuaLimits LessonRunner::default_limits() {
+  LuaLimits limits;
+  limits.instructions = 200'000'000;
+  limits.wall_seconds = 10.0;
+  return limits;
+}
+
+LessonRunner::LessonRunner(LessonHost& host, LuaLimits limits) : host_(host), limits_(limits) {}
+
+LessonRunner::~LessonRunner() = default;
+
+void LessonRunner::set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
+
+bool LessonRunner::load(const std::filesystem::path& path) {
+  if (busy_) return false;
+  path_ = path;
+  return load_file(0);
+}
+
+bool LessonRunner::reload() {
+  if (busy_) return false;
+  if (path_.empty()) {
+    load_error_ = "no lesson to reload";
+    return false;
+  }
+  return load_file(index_);
+}
+
+bool LessonRunner::load_file(size_t index) {
+  std::ifstream in(path_, std::ios::binary);
+  if (!in) {
+    load_error_ = "cannot open " + path_.string();
+    return false;
+  }
+  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  if (!text.empty() && text[0] == '#') text = "--" + text;  // a shebang line, as lua.c skips it
+  const std::string chunk = path_.filename().string();
+
+  auto script = std::make_unique<LessonScript>();
+  script->host = &host_;
+  std::unique_ptr<LuaRuntime> runtime;
+  busy_ = true;
+  std::string failure;
+  try {
+    runtime = std::make_unique<LuaRuntime>(limits_);
+    runtime->set_print([this](const std::string& line) {
+      if (print_) print_(line);
+    });
+    open_lesson_api(*runtime, *script);
+    runtime->load(text, chunk);
+    runtime->start_budget();
+    runtime->call(0, 0);
+  } catch (const std::exception& e) {  // ScriptError, or bad_alloc while building the state
+    failure = e.what();
+  }
+  busy_ = false;
+  if (failure.empty() && script->steps.empty()) {
+    failure = chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
+  }
+  if (!failure.empty()) {
+    load_error_ = failure;
+    return false;
+  }
+  script->phase = LessonScript::Phase::Idle;
+  if (script->title.empty()) script->title = path_.stem().string();
+  load_error_.clear();
+  thread_ref_ = LUA_NOREF;  // it belonged to the old runtime
+  runtime_ = std::move(runtime);
+  script_ = std::move(script);
+  start_step(std::min(index, script_->steps.size() - 1));
+  return true;
+}
+
+void LessonRunner::next() {
+  if (!script_ || busy_) return;
+  if (index_ + 1 < script_->steps.size()) start_step(index_ + 1);
+}
+
+void LessonRunner::back() {
+  if (!script_ || busy_) return;
+  start_step(index_ > 0 ? index_ - 1 : 0);
+}
+
+void LessonRunner::restart_step() {
+  if (!script_ || busy_) return;
+  start_step(index_);
+}
+
+void LessonRunner::go_to(size_t index) {
+  if (!script_ || busy_) return;
+  start_step(std::min(index, script_->steps.size() - 1));
+}
+
+void LessonRunner::fail(const std::string& message) {
+  state_ = StepState::Failed;
+  step_error_ = message;
+  if (script_) script_->wait = {};
+}
+
+void LessonRunner::start_step(size_t index) {
+  index_ = index;
+  step_error_.clear();
+  script_->said.clear();
+  script_->wait = {};
+  script_->step_thread = nullptr;
+  state_ = StepState::Waiting;
+  std::string failure;
+  busy_ = true;
+  try {
+    host_.clear_annotations();
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  busy_ = false;
+  if (!failure.empty()) return fail(failure);
+
+  const int function_ref = script_->steps[index].function_ref;
+  failure = protected_call([&](lua_State* L) {
+    if (thread_ref_ != LUA_NOREF) luaL_unref(L, LUA_REGISTRYINDEX, thread_ref_);
+    thread_ref_ = LUA_NOREF;
+    lua_State* co = lua_newthread(L);
+    thread_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, function_ref);
+    lua_xmove(L, co, 1);
+    script_->step_thread = co;
+  });
+  if (!failure.empty()) return fail(failure);
+  resume(nullptr);
+}
+
+void LessonRunner::resume(const std::function<int(lua_State*)>& push) {
+  enum class Outcome { None, Yielded, Finished, Failed };
+  Outcome outcome = Outcome::None;
+  std::string message;
+  const std::string failure = protected_call([&](lua_State* L) {
+    lua_rawgeti(L, LUA_REGISTRYINDEX, thread_ref_);
+    lua_State* co = lua_tothread(L, -1);
+    lua_pop(L, 1);  // the registry keeps it
+    if (!co) luaL_error(L, "lesson runner: the step has no coroutine");
+    const int nargs = push ? push(L) : 0;
+    lua_xmove(L, co, nargs);
+    // The coroutine runs under the same limits as the window just opened on the main thread.
+    lua_sethook(co, lua_gethook(L), lua_gethookmask(L), lua_gethookcount(L));
+    script_->wait = {};
+    script_->api_yield = false;
+    script_->phase = LessonScript::Phase::Step;
+    int nresults = 0;
+    const int status = lua_resume(co, L, nargs, &nresults);
+    script_->phase = LessonScript::Phase::Idle;
+    if (status == LUA_YIELD && script_->api_yield) {
+      lua_pop(co, nresults);
+      outcome = Outcome::Yielded;
+    } else if (status == LUA_YIELD) {
+      const std::string where = lesson_where(co, 0);
+      message = (where.empty() ? "" : where + ": ") +
+                std::string("coroutine.yield stopped the step; wait with wait_for or animate");
+      outcome = Outcome::Failed;
+    } else if (status == LUA_OK) {
+      lua_pop(co, nresults);
+      outcome = Outcome::Finished;
+    } else {
+      message = error_text(co, limits_);
+      outcome = Outcome::Failed;
+    }
+  });
+  script_->phase = LessonScript::Phase::Idle;
+  switch (outcome) {
+    case Outcome::None: return fail(failure);  // the step never ran: pushing its arguments failed
+    case Outcome::Failed: return fail(message);
+    case Outcome::Finished:
+      state_ = StepState::Finished;
+      script_->wait = {};
+      return;
+    case Outcome::Yielded: state_ = StepState::Waiting; return;
+  }
+}
+
+int LessonRunner::trampoline(lua_State* L) {
+  auto* self = static_cast<LessonRunner*>(lua_touserdata(L, 1));
+  lua_settop(L, 0);
+  std::string message;
+  try {
+    (*self->body_)(L);
+    return 0;
+  } catch (const std::exception& e) {  // from the host (current_mesh...): must not cross the Lua frames
+    message = e.what();
+  }
+  return luaL_error(L, "%s", message.c_str());
+}
+
+std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& body) {
+  lua_State* L = runtime_->state();
+  body_ = &body;
+  busy_ = true;
+  std::string failure;
+  try {
+    lua_pushcfunction(L, &LessonRunner::trampoline);  // a light C function and a light userdata: no allocation
+    lua_pushlightuserdata(L, this);
+    runtime_->start_budget();
+    runtime_->call(1, 0);
+  } catch (const std::exception& e) {
+    failure = e.what();
+  }
+  busy_ = false;
+  body_ = nullptr;
+  return failure;
+}
+
+void LessonRunner::update(double dt) {
+  if (!script_ || busy_ || state_ != StepState::Waiting) return;
+  const LessonWait wait = script_->wait;
+  switch (wait.kind) {
+    case LessonWait::Kind::Condition: return resume(nullptr);
+    case LessonWait::Kind::Animation: {
+      const double seconds = std::isfinite(dt) && dt > 0.0 ? dt : 0.0;
+      return resume([seconds](lua_State* L) {
+        lua_pushnumber(L, seconds);
+        return 1;
+      });
+    }
+    case LessonWait::Kind::Selection: {
+      ElementRef selected;
+      busy_ = true;
+      std::string failure;
+      try {
+        selected = host_.current_selection();
+      } catch (const std::exception& e) {
+        failure = e.what();
+      }
+      busy_ = false;
+      if (!failure.empty()) return fail(failure);
+      if (!wait.selection_matches(selected)) return;
+      return resume([this, selected](lua_State* L) {
+        push_element_value(L, host_, selected);
+        return 1;
+      });
+    }
+    default: return;
+  }
+}
+
+bool LessonRunner::deliver(const LessonEvent& event) {
+  if (!script_ || busy_ || state_ != StepState::Waiting || !script_->wait.matches(event)) return false;
+  resume([this, &event](lua_State* L) {
+    if (event.kind == LessonEvent::Kind::Key || event.kind == LessonEvent::Kind::Button) {
+      lua_pushstring(L, event.name.c_str());
+    } else {
+      push_element_value(L, host_, event.element);
+    }
+    return 1;
+  });
+  return true;
+}
+
+const std::string& LessonRunner::title() const { return script_ ? script_->title : kEmptyText; }
+
+const std::string& LessonRunner::summary() const { return script_ ? script_->summary : kEmptyText; }
+
+std::vector<std::string> LessonRunner::step_titles() const {
+  std::vector<std::string> titles;
+  if (script_) {
+    for (const LessonStepDef& step : script_->steps) titles.push_back(step.title);
+  }
+  return titles;
+}
+
+size_t LessonRunner::step_count() const { return script_ ? script_->steps.size() : 0; }
+
+const std::vector<std::string>& LessonRunner::said() const { return script_ ? script_->said : kNoBlocks; }
+
+const LessonWait& LessonRunner::waiting_for() const { return script_ ? script_->wait : kNoWait; }
+
+}  // namespace meshedit

@@ -1,0 +1,118 @@
+// LessonRunner: runs a lesson file (see lesson_api.h for the Lua globals) step by step for the app, with no
+// window of its own. Each step body runs as a coroutine that yields to the app at wait_for and animate; the
+// app calls update(dt) every frame and deliver(event) for keys, clicks, selections and button presses.
+//
+// Invariants:
+// - Nothing here throws: a file that does not load, a Lua error in a step, a limit being hit, or an exception
+//   from the host becomes error() ("welcome.lua:12: message") and the runner keeps working: next, back,
+//   go_to, restart_step and reload stay possible.
+// - Each load uses a fresh LuaRuntime. A load that fails keeps the lesson that was running before (if any),
+//   so a typo saved during hot reload never takes the panel away; its error stays in error() until a load
+//   succeeds.
+// - Entering a step (next, back, go_to, restart_step, a reload) clears the host's highlights and labels,
+//   forgets what the step said and runs its body from the start: a step rebuilds its own scene. Back is
+//   "run the previous step again from its start".
+// - reload() keeps the step index (clamped to the new number of steps).
+// - Every resume of a step (its start, each event, each update that wakes it) opens its own budget window
+//   of the runtime's limits: a step that loops forever stops with the budget message, never hangs the app.
+//   One call (update, deliver, next...) resumes a step at most once.
+// - Calls made from inside a host callback (re-entrant) are ignored: deliver returns false, the others do
+//   nothing.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <functional>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "script/lesson_events.h"
+#include "script/lesson_host.h"
+#include "script/lua_runtime.h"
+
+namespace meshedit {
+
+struct LessonScript;
+
+class LessonRunner {
+ public:
+  enum class StepState {
+    Empty,     // no lesson loaded
+    Waiting,   // the step waits (waiting_for() says for what)
+    Finished,  // the step's body returned; Next goes on
+    Failed,    // the step stopped on an error (error() says where)
+  };
+
+  // Limits for one resume of a step: far below LuaRuntime's defaults, since the window waits for each one.
+  static LuaLimits default_limits();
+
+  explicit LessonRunner(LessonHost& host, LuaLimits limits = default_limits());
+  ~LessonRunner();
+  LessonRunner(const LessonRunner&) = delete;
+  LessonRunner& operator=(const LessonRunner&) = delete;
+
+  // Where the lesson's print() goes (each line without its newline); applies to later loads too.
+  void set_print(std::function<void(const std::string&)> print);
+
+  // Loads the file and starts its first step. False when the file cannot be read or run, or defines no step
+  // (error() says why).
+  bool load(const std::filesystem::path& path);
+  // Loads the same file again and starts the same step index (clamped). False as load().
+  bool reload();
+
+  void next();          // the following step (nothing at the last one)
+  void back();          // the previous step, from its start (step 1 starts again)
+  void restart_step();  // the current step again, from its start
+  void go_to(size_t index);  // that step (clamped), from its start
+
+  // Advances the current wait: an animation by `dt` seconds, a condition checked again, a selection wait
+  // met by the host's current selection.
+  void update(double dt);
+  // Gives an app event to the waiting step. True when it was what the step waited for (the step resumed).
+  bool deliver(const LessonEvent& event);
+
+  // ---- what the lesson panel shows (references stay valid until the next non-const call) ----
+  bool loaded() const { return script_ != nullptr; }
+  const std::filesystem::path& path() const { return path_; }
+  const std::string& title() const;    // lesson{title=} or the file's stem
+  const std::string& summary() const;  // lesson{summary=}
+  std::vector<std::string> step_titles() const;
+  size_t step_count() const;
+  size_t current_step() const { return index_; }  // 0-based
+  StepState step_state() const { return state_; }
+  bool step_finished() const { return state_ == StepState::Finished; }
+  // The markdown blocks say() gave in the current step, in order.
+  const std::vector<std::string>& said() const;
+  // What the current step waits for (kind None when it does not wait).
+  const LessonWait& waiting_for() const;
+  // "" when all is well; else "file:line: message" of the failed load or the failed step.
+  const std::string& error() const { return load_error_.empty() ? step_error_ : load_error_; }
+
+ private:
+  bool load_file(size_t index);
+  void start_step(size_t index);
+  // Resumes the step's coroutine with what `push` leaves on the stack (nullptr: nothing).
+  void resume(const std::function<int(lua_State*)>& push);
+  // Runs `body` on the main thread inside a fresh budget window; returns "" or the error message.
+  std::string protected_call(const std::function<void(lua_State*)>& body);
+  static int trampoline(lua_State* L);
+  void fail(const std::string& message);
+
+  LessonHost& host_;
+  LuaLimits limits_;
+  std::function<void(const std::string&)> print_;
+  std::filesystem::path path_;
+  // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.
+  std::unique_ptr<LessonScript> script_;
+  std::unique_ptr<LuaRuntime> runtime_;
+  const std::function<void(lua_State*)>* body_ = nullptr;  // what trampoline() runs
+  int thread_ref_ = -2;  // LUA_NOREF: the current step's coroutine in the registry
+  size_t index_ = 0;
+  StepState state_ = StepState::Empty;
+  std::string load_error_, step_error_;
+  bool busy_ = false;
+};
+
+}  // namespace meshedit

@@ -1,0 +1,161 @@
+// run_lesson_headless in process: the welcome lesson with its answers file passes every step; scripted edits
+// reach the mesh the lesson reads; a wait with no answer, a Lua error and a bad answers file fail with one
+// line naming the file, line and step.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/mesh_build.h"
+#include "core/mesh_ops.h"
+#include "core/primitives.h"
+#include "script/lesson_headless.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+std::filesystem::path write_file(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
+  const auto path = dir / name;
+  std::ofstream(path) << text;
+  return path;
+}
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+TEST(LessonHeadless, TheWelcomeLessonPassesWithItsAnswers) {
+  const auto source = testing::source_dir();
+  std::ostringstream out;
+  const auto answers = source / "tests" / "script" / "lessons" / "welcome_answers.lua";
+  const HeadlessOutcome outcome = run_lesson_headless(source / "lessons" / "welcome.lua", answers, out);
+  EXPECT_EQ(outcome.failure, "");
+  EXPECT_EQ(outcome.steps, 5u);
+  EXPECT_EQ(outcome.passed, 5u);
+  const std::string text = out.str();
+  EXPECT_EQ(text.rfind("Welcome to MeshEdit (welcome.lua, 5 steps)\n", 0), 0u) << text;
+  EXPECT_TRUE(contains(text, "\nstep 3/5: Pick a vertex\n")) << text;
+  EXPECT_TRUE(contains(text, "  > key W\n")) << text;
+  EXPECT_TRUE(contains(text, "  > click v0\n")) << text;
+  // The lesson read the clicked vertex from the mesh on screen: v0 of the cube has degree 6.
+  EXPECT_TRUE(contains(text, "  You picked v0. 6 edges meet there")) << text;
+  EXPECT_FALSE(contains(text, "**")) << "markdown is printed as plain text";
+  EXPECT_FALSE(contains(text, "not awaited")) << text;
+  EXPECT_EQ(text.substr(text.size() - std::string("\n5 steps passed\n").size()), "\n5 steps passed\n");
+}
+
+constexpr const char* kFlipLesson = R"lua(lesson { title = "Flip" }
+step("Show", function() show(meshedit.cube()) say("A cube.") end)
+step("Flip it", function()
+  wait_for { selection = "e7" }
+  wait_for { key = "F" }
+  local h = current_mesh():edge(7).halfedge
+  say("e7 now joins " .. tostring(h.vertex) .. " and " .. tostring(h.twin.vertex))
+end)
+)lua";
+
+TEST(LessonHeadless, ScriptedEditsChangeTheMeshTheLessonReads) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome =
+      run_lesson_headless(write_file(dir, "flip.lua", kFlipLesson),
+                          testing::source_dir() / "tests" / "script" / "lessons" / "flip_answers.lua", out);
+  ASSERT_EQ(outcome.failure, "") << out.str();
+  EXPECT_EQ(outcome.passed, 2u);
+  // What core's flip gives on the same cube.
+  HalfedgeMesh cube = build_halfedge_mesh(make_cube());
+  ASSERT_TRUE(flip(cube, EdgeId(7)).ok());
+  const HalfedgeId h = cube.halfedge(EdgeId(7));
+  const std::string expected = "  e7 now joins " + format_id(cube.vertex(h)) + " and " +
+                               format_id(cube.vertex(cube.twin(h))) + "\n";
+  EXPECT_TRUE(contains(out.str(), "  > selection e7\n  > flip e7\n  > key F\n" + expected)) << out.str();
+}
+
+TEST(LessonHeadless, AWaitWithoutAnswerFailsNamingFileLineAndStep) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(write_file(dir, "lesson.lua", R"lua(step("Look", function() end)
+step("Flip it", function()
+  wait_for { key = "F" }
+end)
+)lua"), std::nullopt, out);
+  EXPECT_EQ(outcome.failure, "lesson.lua:3: step 2 'Flip it': waiting for key F (no scripted answer)");
+  EXPECT_EQ(outcome.passed, 1u);
+  EXPECT_EQ(outcome.steps, 2u);
+  EXPECT_TRUE(contains(out.str(), "\n1 of 2 steps passed\n")) << out.str();
+}
+
+TEST(LessonHeadless, WaitsThatNeedNoAnswerGoOnByThemselves) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(write_file(dir, "lesson.lua", R"lua(step("Auto", function()
+  wait_for { button = "Continue" }
+  wait_for { condition = function() return true end }
+  animate(2, function(t) end)
+  say("through")
+end)
+step("Stray answers", function()
+  wait_for { key = "F" }
+end)
+)lua"), write_file(dir, "answers.lua", "return { [2] = { {key = 'X'}, {key = 'F'} }, [1] = {} }\n"), out);
+  EXPECT_EQ(outcome.failure, "") << out.str();
+  EXPECT_TRUE(contains(out.str(), "  > button Continue (pressed)\n  through\n  done\n")) << out.str();
+  EXPECT_TRUE(contains(out.str(), "  > key X (not awaited: the step waits for key F)\n  > key F\n")) << out.str();
+  EXPECT_TRUE(contains(out.str(), "\n2 steps passed\n")) << out.str();
+}
+
+TEST(LessonHeadless, ALuaErrorInAStepFailsWithItsLine) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(write_file(dir, "lesson.lua", R"lua(step("Broken", function()
+  say("about to")
+  local m = meshedit.cube()
+  m:nonsense()
+end)
+)lua"), std::nullopt, out);
+  EXPECT_EQ(outcome.failure.rfind("lesson.lua:4: step 1 'Broken': ", 0), 0u) << outcome.failure;
+  EXPECT_EQ(outcome.passed, 0u);
+}
+
+TEST(LessonHeadless, ALessonThatDoesNotLoadFails) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(dir / "missing.lua", std::nullopt, out);
+  EXPECT_EQ(outcome.failure, "cannot open " + (dir / "missing.lua").string());
+  EXPECT_EQ(outcome.steps, 0u);
+}
+
+TEST(LessonHeadless, ABadAnswersFileIsAnError) {
+  const auto dir = testing::scratch_dir();
+  const auto lesson = write_file(dir, "lesson.lua", "step('A', function() end)\n");
+  std::ostringstream out;
+  const auto fails_with = [&](const std::string& answers, const std::string& message) {
+    try {
+      run_lesson_headless(lesson, write_file(dir, "answers.lua", answers), out);
+      ADD_FAILURE() << "no error for " << answers;
+    } catch (const ScriptError& e) {
+      EXPECT_EQ(std::string(e.what()), message);
+    }
+  };
+  fails_with("return { [1] = { {press = 'F'} } }\n",
+             "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
+             "collapse or subdivide)");
+  fails_with("return 3\n", "answers.lua: must return a table of answers per step, like { [2] = { {key = \"F\"} } }");
+  fails_with("return { ['A'] = { {key = 'F', click = 'v0'} } }\n",
+             "answers.lua: step 'A', answer 1: give exactly one answer per table");
+  fails_with("return {\n  [1] = { {key = 'F'} \n}\n",
+             "answers.lua:4: '}' expected (to close '{' at line 1) near <eof>");
+}
+
+TEST(LessonHeadless, ARefusedScriptedEditFails) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(
+      write_file(dir, "lesson.lua", "step('Flip', function() show(meshedit.cube()) wait_for { key = 'F' } end)\n"),
+      write_file(dir, "answers.lua", "return { { {flip = 'v3'} } }\n"), out);
+  EXPECT_EQ(outcome.failure, "step 1 'Flip': answer flip = \"v3\": expected an edge id like e7");
+}
+
+}  // namespace
+}  // namespace meshedit
