@@ -10,6 +10,8 @@
 #include <vector>
 
 #include "app/cli_commands.h"
+#include "app/cli_grade.h"
+#include "app/cli_lesson.h"
 
 namespace meshedit {
 namespace {
@@ -27,6 +29,10 @@ constexpr const char* kUsage =
     "  render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
     "                                       a picture without a display (EGL); also --vertices --halfedges\n"
     "  run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
+    "  grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap]\n"
+    "        --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions\n"
+    "  lesson FILE.lua --headless [--answers ANSWERS.lua]\n"
+    "                                       run a lesson's steps with scripted answers (no window)\n"
     "\n"
     "options for files with Bézier patches (.bez): --resolution N (tessellation per patch, default 16)\n"
     "with no command, or a file as the first argument, meshedit opens the window\n";
@@ -35,8 +41,8 @@ constexpr const char* kUsage =
 // like a file or an option (meshedit teapot.dae, meshedit --actions t.txt), else the word itself, which
 // run_cli reports as unknown.
 std::string command_name(const std::vector<std::string>& args) {
-  static const std::set<std::string> commands = {"demo",   "info", "convert", "subdivide", "render", "run",
-                                                 "help",   "-h",   "--help",  "--version"};
+  static const std::set<std::string> commands = {"demo",  "info", "convert", "subdivide", "render", "run",
+                                                 "lesson", "grade", "help", "-h",       "--help", "--version"};
   if (args.empty()) return "window";
   const std::string& first = args.front();
   if (commands.count(first)) return first;
@@ -66,6 +72,8 @@ int run_cli(int argc, char** argv) {
     if (command == "subdivide") return run_subdivide(args, std::cout);
     if (command == "render") return run_render(args, std::cout);
     if (command == "run") return run_run(args, std::cout);
+    if (command == "grade") return run_grade(args, std::cout);
+    if (command == "lesson") return run_lesson(args, std::cout);
     throw UsageError("unknown command '" + command + "'");
   } catch (const UsageError& e) {
     std::cerr << "meshedit: " << e.what() << " (see meshedit --help)\n";

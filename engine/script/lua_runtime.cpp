@@ -117,12 +117,15 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
     if (self->instructions_ > self->limits_.instructions) {
       self->kill_message_ =
           "instruction budget exceeded (" + std::to_string(self->limits_.instructions) + " instructions)";
+      self->kill_limit_ = ScriptError::Limit::Instructions;
     } else if (self->memory_hit_) {
       self->kill_message_ = "memory limit exceeded (" + megabytes(self->limits_.memory_bytes) + ")";
+      self->kill_limit_ = ScriptError::Limit::Memory;
     } else if (std::chrono::steady_clock::now() > self->deadline_) {
       std::ostringstream s;
       s << "time limit exceeded (" << self->limits_.wall_seconds << " s)";
       self->kill_message_ = s.str();
+      self->kill_limit_ = ScriptError::Limit::Time;
     } else {
       // A coroutine made in an earlier, stopped run may still carry the every-instruction hook.
       if (lua_gethookcount(L) != kHookInterval) lua_sethook(L, &LuaRuntime::count_hook, LUA_MASKCOUNT, kHookInterval);
@@ -139,19 +142,37 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
 }
 
 int LuaRuntime::print_function(lua_State* L) {
+  LuaRuntime* self = runtime_of(L);
   const int n = lua_gettop(L);
+  // The room left under the cap, counting the newline the host adds; text past it is never built.
+  const bool capped = self->print_limit_ > 0;
+  size_t room = capped ? (self->printed_ < self->print_limit_ ? self->print_limit_ - self->printed_ : 0) : SIZE_MAX;
+  if (capped && self->print_truncated_) return 0;
   std::string line;
-  for (int i = 1; i <= n; ++i) {
+  bool cut = false;
+  for (int i = 1; i <= n && !cut; ++i) {
     size_t len = 0;
     const char* s = luaL_tolstring(L, i, &len);
     if (i > 1) line += '\t';
-    line.append(s, len);
+    if (capped && line.size() + len + 1 > room) {
+      line.append(s, room > line.size() + 1 ? room - line.size() - 1 : 0);
+      cut = true;
+    } else {
+      line.append(s, len);
+    }
     lua_pop(L, 1);
   }
-  LuaRuntime* self = runtime_of(L);
+  if (capped && !cut && line.size() + 1 > room) cut = true;
+  std::string note;
+  if (cut) {
+    self->print_truncated_ = true;
+    note = "[output truncated: more than " + std::to_string(self->print_limit_) + " bytes printed]";
+  }
+  self->printed_ += line.size() + 1;
   std::string failure;
   try {
-    if (self->print_) self->print_(line);
+    if (self->print_ && (!cut || !line.empty())) self->print_(line);
+    if (self->print_ && cut) self->print_(note);
   } catch (const std::exception& e) {  // a host callback's exception must not cross Lua frames
     failure = e.what();
   }
@@ -179,6 +200,8 @@ int LuaRuntime::load_function(lua_State* L) {
       if (lua_type(L, -1) != LUA_TSTRING) return luaL_error(L, "reader function must return a string");
       size_t n = 0;
       const char* piece = lua_tolstring(L, -1, &n);
+      // The pieces are gathered in C++ memory, outside the allocator's cap: cap them too.
+      if (pieces.size() + n > runtime_of(L)->limits_.memory_bytes) return luaL_error(L, "chunk too large to load");
       pieces.append(piece, n);
       lua_pop(L, 1);
     }
@@ -196,6 +219,25 @@ int LuaRuntime::load_function(lua_State* L) {
     lua_pushvalue(L, 4);
     if (!lua_setupvalue(L, -2, 1)) lua_pop(L, 1);
   }
+  return 1;
+}
+
+// setmetatable that refuses a metatable with a __gc field: Lua runs finalizers with hooks switched off, so a
+// finalizer that loops would escape every limit. (A field added later does not mark the object, and a
+// placeholder __gc is refused too, so no finalizer written in Lua ever runs.)
+int setmetatable_function(lua_State* L) {
+  const int t = lua_type(L, 2);
+  luaL_checktype(L, 1, LUA_TTABLE);
+  luaL_argexpected(L, t == LUA_TNIL || t == LUA_TTABLE, 2, "nil or table");
+  if (t == LUA_TTABLE) {
+    lua_pushliteral(L, "__gc");
+    const bool has_gc = lua_rawget(L, 2) != LUA_TNIL;
+    lua_pop(L, 1);
+    if (has_gc) return luaL_error(L, "__gc metamethods are not allowed in scripts");
+  }
+  if (luaL_getmetafield(L, 1, "__metatable") != LUA_TNIL) return luaL_error(L, "cannot change a protected metatable");
+  lua_settop(L, 2);
+  lua_setmetatable(L, 1);
   return 1;
 }
 
@@ -241,6 +283,8 @@ void LuaRuntime::open_whitelist() {
   lua_setfield(L_, -2, "load");
   lua_pushcfunction(L_, &LuaRuntime::collectgarbage_function);
   lua_setfield(L_, -2, "collectgarbage");
+  lua_pushcfunction(L_, setmetatable_function);
+  lua_setfield(L_, -2, "setmetatable");
   lua_getfield(L_, -1, LUA_OSLIBNAME);
   keep_only(L_, {"clock", "time", "date", "difftime"});
   lua_pop(L_, 1);
@@ -263,37 +307,72 @@ void LuaRuntime::open_whitelist() {
 }
 
 void LuaRuntime::start_run() {
-  instructions_ = 0;
-  killed_ = false;
-  kill_message_.clear();
-  memory_hit_ = false;
-  memory_hit_where_.clear();
-  deadline_ = std::chrono::steady_clock::now() +
-              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                  std::chrono::duration<double>(limits_.wall_seconds));
+  start_budget();
   lua_sethook(L_, &LuaRuntime::count_hook, LUA_MASKCOUNT, kHookInterval);
 }
 
-int LuaRuntime::call(int nargs) {
+void LuaRuntime::start_budget() {
+  instructions_ = 0;
+  killed_ = false;
+  kill_limit_ = ScriptError::Limit::None;
+  kill_message_.clear();
+  memory_hit_ = false;
+  memory_hit_where_.clear();
+  printed_ = 0;
+  print_truncated_ = false;
+  window_open_ = true;
+  deadline_ = std::chrono::steady_clock::now() +
+              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                  std::chrono::duration<double>(limits_.wall_seconds));
+}
+
+int LuaRuntime::protected_call(int nargs, int nresults) {
   const int base = lua_gettop(L_) - nargs;  // the function's slot
   lua_pushcfunction(L_, message_handler);
   lua_insert(L_, base);
-  const int status = lua_pcall(L_, nargs, LUA_MULTRET, base);
+  const int status = lua_pcall(L_, nargs, nresults, base);
   lua_remove(L_, base);
   return status;
 }
 
-void LuaRuntime::throw_error() {
+ScriptError::Limit LuaRuntime::limit_hit() const {
+  if (killed_) return kill_limit_;
+  return memory_hit_ ? ScriptError::Limit::Memory : ScriptError::Limit::None;
+}
+
+void LuaRuntime::throw_error(int base, bool end_window) {
   std::string message;
   if (lua_type(L_, -1) == LUA_TSTRING) message = lua_tostring(L_, -1);
   else message = std::string("(error object is a ") + luaL_typename(L_, -1) + " value)";
-  lua_settop(L_, 0);
+  lua_settop(L_, base);
   // A memory error skips the message handler: give it the place and the reason it really has.
   if (memory_hit_ && !killed_ && message == "not enough memory") {
     message = memory_hit_where_ + "memory limit exceeded (" + megabytes(limits_.memory_bytes) + ")";
   }
+  const ScriptError::Limit limit = limit_hit();
   lua_sethook(L_, nullptr, 0, 0);
-  throw ScriptError(message);
+  if (end_window) window_open_ = false;
+  throw ScriptError(message, limit);
+}
+
+void LuaRuntime::load(std::string_view code, const std::string& chunk_name) {
+  const int base = lua_gettop(L_);
+  const std::string name = "@" + chunk_name;
+  if (luaL_loadbufferx(L_, code.data(), code.size(), name.c_str(), "t") != LUA_OK) throw_error(base, false);
+}
+
+int LuaRuntime::call(int nargs, int nresults) {
+  const int base = lua_gettop(L_) - nargs - 1;
+  if (base < 0 || !lua_isfunction(L_, base + 1)) {
+    lua_settop(L_, base < 0 ? 0 : base);
+    throw ScriptError("LuaRuntime::call: no function below the arguments");
+  }
+  if (!window_open_) start_budget();
+  // A window whose limit was already hit stays stopped: the next instruction errors again.
+  lua_sethook(L_, &LuaRuntime::count_hook, LUA_MASKCOUNT, killed_ || memory_hit_ ? 1 : kHookInterval);
+  if (protected_call(nargs, nresults) != LUA_OK) throw_error(base, false);
+  lua_sethook(L_, nullptr, 0, 0);
+  return lua_gettop(L_) - base;
 }
 
 std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std::string& chunk_name) {
@@ -301,11 +380,11 @@ std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std
   start_run();
   const std::string name = "@" + chunk_name;
   if (luaL_loadbufferx(L_, code.data(), code.size(), name.c_str(), "t") != LUA_OK) throw_error();
-  if (call(0) != LUA_OK) throw_error();
+  if (protected_call(0, LUA_MULTRET) != LUA_OK) throw_error();
   const int n = lua_gettop(L_);
   lua_pushcfunction(L_, to_strings);
   lua_insert(L_, 1);
-  if (call(n) != LUA_OK) throw_error();
+  if (protected_call(n, LUA_MULTRET) != LUA_OK) throw_error();
   std::vector<std::string> results;
   for (int i = 1; i <= n; ++i) {
     size_t len = 0;
@@ -314,6 +393,7 @@ std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std
   }
   lua_settop(L_, 0);
   lua_sethook(L_, nullptr, 0, 0);
+  window_open_ = false;
   return results;
 }
 
@@ -340,9 +420,10 @@ void LuaRuntime::run_file(const std::filesystem::path& path, const std::vector<s
   const std::string body = !code.empty() && code[0] == '#' ? "--" + code : code;
   if (luaL_loadbufferx(L_, body.data(), body.size(), name.c_str(), "t") != LUA_OK) throw_error();
   for (const auto& a : args) lua_pushstring(L_, a.c_str());
-  if (call(static_cast<int>(args.size())) != LUA_OK) throw_error();
+  if (protected_call(static_cast<int>(args.size()), LUA_MULTRET) != LUA_OK) throw_error();
   lua_settop(L_, 0);
   lua_sethook(L_, nullptr, 0, 0);
+  window_open_ = false;
 }
 
 }  // namespace meshedit

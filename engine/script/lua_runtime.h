@@ -6,14 +6,22 @@
 //   into Lua.
 // - The instruction budget, the memory cap and the wall-clock deadline are checked in one count hook.
 //   Once any of them is exceeded the runtime is "killed": the hook is re-armed to fire on every instruction
-//   and errors each time, so a `pcall` in the script cannot swallow the stop; it lasts until the next run.
+//   and errors each time, so a `pcall` in the script cannot swallow the stop; it lasts until the next window.
 // - Globals are built by whitelist: base (without dofile, loadfile, warn; load is text-only; collectgarbage
-//   only "count", "collect" and "step"), string (without dump), table, math, utf8, coroutine, and os with only
-//   clock, time, date, difftime. No io, package/require or debug. The string metatable is protected.
+//   only "count", "collect" and "step"; setmetatable refuses __gc, because Lua runs finalizers with hooks off),
+//   string (without dump), table, math, utf8, coroutine, and os with only clock, time, date, difftime. No io,
+//   package/require or debug. The string metatable is protected.
 // - The `meshedit` module (mesh_bindings.h) is opened in every runtime.
 // - The wall clock is checked in the hook only: a long call into C (a pathological string pattern, one big
 //   C++ operation) is not interrupted; a watchdog thread or a child process is the backstop for that.
 // - Every error a run reports is a string starting with `file:line:` when Lua knows the line.
+// - Limits are counted per budget window: run_string and run_file each open their own; a host calling
+//   functions itself (load + call) opens one with start_budget(), and every call in it shares the budget,
+//   so a grader can give a whole test one budget however many times it calls into the script.
+// - print output is capped per window (set_print_limit): past the cap the callback gets one
+//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++.
+// - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
+//   of a run nor closing the state can run script code outside the hook.
 #pragma once
 
 #include <chrono>
@@ -34,7 +42,14 @@ namespace meshedit {
 // A script failed: the Lua error message ("loop.lua:3: instruction budget exceeded (10000000 instructions)").
 class ScriptError : public std::runtime_error {
  public:
+  // Which limit stopped the script, if one did (a grader reports a timeout differently from an error).
+  enum class Limit { None, Instructions, Memory, Time };
   using std::runtime_error::runtime_error;
+  ScriptError(const std::string& message, Limit limit) : std::runtime_error(message), limit_(limit) {}
+  Limit limit() const { return limit_; }
+
+ private:
+  Limit limit_ = Limit::None;
 };
 
 struct LuaLimits {
@@ -54,8 +69,15 @@ class LuaRuntime {
 
   lua_State* state() { return L_; }
   const LuaLimits& limits() const { return limits_; }
+  // New limits; they apply from the next budget window (the memory cap applies at once).
+  void set_limits(const LuaLimits& limits) { limits_ = limits; }
   // Where `print` writes: one call per print, the arguments joined by tabs, without the newline.
   void set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
+  // At most `bytes` of printed text (tabs and newlines counted) reach the callback per budget window;
+  // 0 means no cap (the default).
+  void set_print_limit(size_t bytes) { print_limit_ = bytes; }
+  // Whether output was dropped in the current (or last) window.
+  bool print_truncated() const { return print_truncated_; }
 
   // Runs Lua source text (text only, never bytecode); `chunk_name` is what errors show before `:line:`
   // (give "loop.lua", not "@loop.lua"). Returns the chunk's results converted with tostring.
@@ -64,6 +86,20 @@ class LuaRuntime {
   // Runs a file with `arg` set as lua.c does: arg[0] = the path, arg[1..] = args; `...` is args too.
   // Throws ScriptError (a missing or unreadable file included).
   void run_file(const std::filesystem::path& path, const std::vector<std::string>& args = {});
+
+  // The host-driven way to run code: compile, then call within a budget window.
+  // Compiles source text (never bytecode) and pushes the chunk as a function. Throws ScriptError with the
+  // syntax error; the stack is then as before.
+  void load(std::string_view code, const std::string& chunk_name);
+  // Opens a new budget window: the instruction count, the memory flag, the kill and the print count restart,
+  // and the wall-clock deadline is limits().wall_seconds from now.
+  void start_budget();
+  // Calls the function below the top `nargs` values within the current window (one is opened if none is),
+  // under a message handler that never runs __tostring. Leaves `nresults` results (LUA_MULTRET for all) in
+  // place of the function and arguments and returns how many. Throws ScriptError on any error or limit; the
+  // stack is then as it was below the function. After a limit was hit, later calls in the same window fail
+  // at their first Lua instruction with the same limit (a budget is per window, not per call).
+  int call(int nargs, int nresults);
 
   // Bytes Lua holds now.
   size_t memory_used() const { return memory_used_; }
@@ -76,19 +112,27 @@ class LuaRuntime {
   static int collectgarbage_function(lua_State* L);
   void open_whitelist();
   void start_run();
-  // Runs the function on top of the stack with `nargs` arguments below it; leaves results on the stack.
-  int call(int nargs);
-  [[noreturn]] void throw_error();
+  // Runs the function below the top `nargs` values; leaves results on the stack; returns the Lua status.
+  int protected_call(int nargs, int nresults);
+  // Throws the error on top of the stack as ScriptError, after cutting the stack to `base` values;
+  // run_string/run_file end their window with it, call() keeps the window (a test's budget outlives errors).
+  [[noreturn]] void throw_error(int base = 0, bool end_window = true);
+  ScriptError::Limit limit_hit() const;
   void note_memory_hit();
 
   LuaLimits limits_;
   lua_State* L_ = nullptr;
   std::function<void(const std::string&)> print_;
+  size_t print_limit_ = 0;
+  size_t printed_ = 0;
+  bool print_truncated_ = false;
+  bool window_open_ = false;
   size_t memory_used_ = 0;
   bool memory_hit_ = false;
   std::string memory_hit_where_;  // "file:line: " of the allocation that hit the cap
   uint64_t instructions_ = 0;
   bool killed_ = false;
+  ScriptError::Limit kill_limit_ = ScriptError::Limit::None;
   std::string kill_message_;       // without location
   std::chrono::steady_clock::time_point deadline_;
 };

@@ -9,6 +9,8 @@
 
 #include "script/lua_runtime.h"
 
+#include <lua.hpp>
+
 namespace meshedit {
 namespace {
 
@@ -145,6 +147,112 @@ TEST(LuaRuntime, LoadIsTextOnly) {
   EXPECT_EQ(lua.run_string("return load('return x', 'c', 't', {x = 5})()", "t.lua"), std::vector<std::string>{"5"});
   EXPECT_EQ(error_of(lua, "collectgarbage('stop')"),
             "t.lua:1: bad argument #1 to 'collectgarbage' (option 'stop' is not allowed)");
+}
+
+TEST(LuaRuntime, PrintIsCappedPerWindow) {
+  LuaRuntime lua;
+  std::vector<std::string> printed;
+  lua.set_print([&](const std::string& line) { printed.push_back(line); });
+  lua.set_print_limit(10);
+  lua.run_string("print('abcd') print('efghijkl') print('never')", "t.lua");
+  // 'abcd' + newline = 5 bytes; the second line gets the 4 that are left (its newline is the 10th byte).
+  EXPECT_EQ(printed, (std::vector<std::string>{"abcd", "efgh", "[output truncated: more than 10 bytes printed]"}));
+  EXPECT_TRUE(lua.print_truncated());
+  printed.clear();
+  // A megabyte print is cut without being built in full, and the next window starts a fresh count.
+  lua.run_string("print(string.rep('x', 1 << 20)) print('y')", "t.lua");
+  EXPECT_EQ(printed, (std::vector<std::string>{"xxxxxxxxx", "[output truncated: more than 10 bytes printed]"}));
+  printed.clear();
+  lua.run_string("print('ok')", "t.lua");
+  EXPECT_EQ(printed, std::vector<std::string>{"ok"});
+  EXPECT_FALSE(lua.print_truncated());
+}
+
+TEST(LuaRuntime, SetmetatableRefusesFinalizers) {
+  LuaRuntime lua;
+  EXPECT_EQ(error_of(lua, "setmetatable({}, {__gc = function() while true do end end})"),
+            "t.lua:1: __gc metamethods are not allowed in scripts");
+  // A placeholder would mark the object for finalization as well.
+  EXPECT_EQ(error_of(lua, "setmetatable({}, {__gc = true})"), "t.lua:1: __gc metamethods are not allowed in scripts");
+  EXPECT_EQ(lua.run_string("local t = setmetatable({}, {__index = function() return 7 end}) return t.x", "t.lua"),
+            std::vector<std::string>{"7"});
+  EXPECT_EQ(error_of(lua, "local t = setmetatable({}, {__metatable = 1}) setmetatable(t, {})"),
+            "t.lua:1: cannot change a protected metatable");
+}
+
+TEST(LuaRuntime, LoadAndCallShareOneBudgetWindow) {
+  LuaRuntime lua(LuaLimits{1'000'000, size_t(64) << 20, 60.0});
+  lua_State* L = lua.state();
+  lua.load("function spin(n) local s = 0 for i = 1, n do s = s + i end return s end", "lib.lua");
+  lua.start_budget();
+  EXPECT_EQ(lua.call(0, 0), 0);
+  lua_getglobal(L, "spin");
+  lua_pushinteger(L, 1000);
+  ASSERT_EQ(lua.call(1, LUA_MULTRET), 1);
+  EXPECT_EQ(lua_tointeger(L, -1), 500500);
+  lua_settop(L, 0);
+  // Two calls of 400k iterations each: the second one runs out of the window's budget.
+  lua_getglobal(L, "spin");
+  lua_pushinteger(L, 100'000);
+  EXPECT_EQ(lua.call(1, 1), 1);
+  lua_settop(L, 0);
+  lua_pushinteger(L, 99);  // stays below the function: the stack is restored to it after an error
+  lua_getglobal(L, "spin");
+  lua_pushinteger(L, 1'000'000);
+  try {
+    lua.call(1, 1);
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), "lib.lua:1: instruction budget exceeded (1000000 instructions)");
+    EXPECT_EQ(e.limit(), ScriptError::Limit::Instructions);
+  }
+  EXPECT_EQ(lua_gettop(L), 1);
+  // The window stays stopped: even a tiny call fails until a new window opens.
+  lua_getglobal(L, "spin");
+  lua_pushinteger(L, 1);
+  EXPECT_THROW(lua.call(1, 1), ScriptError);
+  lua.start_budget();
+  lua_getglobal(L, "spin");
+  lua_pushinteger(L, 3);
+  EXPECT_EQ(lua.call(1, 1), 1);
+  EXPECT_EQ(lua_tointeger(L, -1), 6);
+  lua_settop(L, 0);
+}
+
+TEST(LuaRuntime, LoadReportsSyntaxErrorsAndErrorsSayWhichLimit) {
+  LuaRuntime lua(LuaLimits{1'000'000'000, size_t(32) << 20, 60.0});
+  lua_State* L = lua.state();
+  try {
+    lua.load("x = = 1", "student.lua");
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), "student.lua:1: unexpected symbol near '='");
+    EXPECT_EQ(e.limit(), ScriptError::Limit::None);
+  }
+  EXPECT_EQ(lua_gettop(L), 0);
+  lua.load("local t = {} while true do pcall(function() t[#t + 1] = ('x'):rep(1 << 22) end) end", "grow.lua");
+  try {
+    lua.start_budget();
+    lua.call(0, 0);
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(e.limit(), ScriptError::Limit::Memory) << e.what();
+  }
+  LuaRuntime slow(LuaLimits{~uint64_t(0) >> 1, size_t(64) << 20, 0.05});
+  slow.load("while true do end", "slow.lua");
+  try {
+    slow.call(0, 0);
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), "slow.lua:1: time limit exceeded (0.05 s)");
+    EXPECT_EQ(e.limit(), ScriptError::Limit::Time);
+  }
+}
+
+TEST(LuaRuntime, LoadReaderPiecesAreCapped) {
+  LuaRuntime lua(LuaLimits{1'000'000'000, size_t(16) << 20, 60.0});
+  const std::string message = error_of(lua, "local s = ('-'):rep(1 << 20)\nload(function() return s end)", "r.lua");
+  EXPECT_EQ(message, "r.lua:2: chunk too large to load");
 }
 
 }  // namespace

@@ -1,0 +1,112 @@
+// `meshedit grade`: grades Lua submissions with an instructor's suite.
+//
+//   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap]
+//   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]
+//
+// One submission: prints the readable report (or, with --tap, only TAP) on `out`, ending with
+// "N passed, N failed", and writes Gradescope's results.json (--results; default ./results.json) and JUnit XML
+// (--junit). A class: grades every folder in parallel processes (--jobs, default: the number of processors),
+// writes FOLDER/<submission>/results.json for each and FOLDER/summary.csv + summary.json (FOLDER defaults to
+// ./grading-results), and prints one line per submission.
+// The exit status says whether grading worked, not the score: 0 graded (even a submission that fails to
+// load, crashes, hangs or runs out of memory: those tests fail, results.json is still written), 1 the grader
+// could not grade (the suite does not load, a folder is missing, a file cannot be written), 2 bad arguments.
+// Without a display or GL; nothing but the result files is written; student code runs only in child
+// processes (engine/grade).
+#include "app/cli_grade.h"
+
+#include <iostream>
+#include <thread>
+
+#include "app/cli_commands.h"
+#include "core/value_format.h"
+#include "grade/class_grading.h"
+#include "grade/grader.h"
+#include "grade/results_writers.h"
+#include "grade/submission.h"
+#include "grade/suite.h"
+
+namespace meshedit {
+namespace {
+
+// Removes `--submissions A B C` (every argument up to the next option) and returns the folders.
+std::vector<std::string> take_list(std::vector<std::string>& args, const std::string& name) {
+  std::vector<std::string> values;
+  for (size_t i = 0; i < args.size(); ++i) {
+    if (args[i] != name) continue;
+    size_t j = i + 1;
+    while (j < args.size() && args[j].rfind("--", 0) != 0) values.push_back(args[j++]);
+    if (values.empty()) throw UsageError(name + " needs at least one folder");
+    args.erase(args.begin() + static_cast<long>(i), args.begin() + static_cast<long>(j));
+    break;
+  }
+  return values;
+}
+
+int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>& args, std::ostream& out) {
+  const std::string results = take_option(args, "--results").value_or("results.json");
+  const auto junit = take_option(args, "--junit");
+  const bool tap = take_flag(args, "--tap");
+  reject_unknown_options(args);
+  if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
+  const Submission submission = Submission::read(folder);
+  out.flush();
+  const GradeReport report = grade(suite, submission);
+  write_file_atomically(results, gradescope_json(report));
+  if (junit) write_file_atomically(*junit, junit_xml(report));
+  out << (tap ? tap_text(report) : text_report(report));
+  out.flush();
+  return 0;
+}
+
+int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vector<std::string>& args,
+               std::ostream& out) {
+  const std::string folder = take_option(args, "--out").value_or("grading-results");
+  const unsigned cores = std::thread::hardware_concurrency();
+  int jobs = static_cast<int>(cores == 0 ? 1 : cores);
+  if (const auto text = take_option(args, "--jobs")) jobs = parse_count(*text, "--jobs", 256);
+  if (jobs < 1) throw UsageError("--jobs must be at least 1");
+  for (const char* single : {"--results", "--junit", "--tap"}) {
+    for (const auto& a : args) {
+      if (a == single) throw UsageError(std::string(single) + " is for one --submission; a class gets --out");
+    }
+  }
+  reject_unknown_options(args);
+  if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
+  std::vector<std::filesystem::path> paths(folders.begin(), folders.end());
+  out.flush();
+  const std::vector<ClassEntry> entries = grade_class(suite, paths, folder, jobs);
+  write_file_atomically(std::filesystem::path(folder) / "summary.csv", class_summary_csv(entries));
+  write_file_atomically(std::filesystem::path(folder) / "summary.json", class_summary_json(entries));
+  size_t graded = 0;
+  for (const auto& e : entries) {
+    if (e.status == "graded") {
+      ++graded;
+      out << e.name << ": " << format_number(e.score) << " / " << format_number(e.max_score) << " (" << e.passed
+          << " passed, " << e.failed << " failed)\n";
+    } else {
+      out << e.name << ": not graded: " << e.problem << "\n";
+    }
+  }
+  out << graded << " of " << entries.size() << " submissions graded; summary in "
+      << (std::filesystem::path(folder) / "summary.csv").string() << "\n";
+  out.flush();
+  return graded == entries.size() ? 0 : 1;
+}
+
+}  // namespace
+
+int run_grade(const std::vector<std::string>& arguments, std::ostream& out) {
+  std::vector<std::string> args = arguments;
+  const std::vector<std::string> many = take_list(args, "--submissions");
+  const auto suite_path = take_option(args, "--suite");
+  const auto one = take_option(args, "--submission");
+  if (!suite_path) throw UsageError("grade needs --suite SUITE.lua");
+  if (one.has_value() == !many.empty()) {
+    throw UsageError("grade needs either --submission DIR or --submissions DIR...");
+  }
+  std::unique_ptr<Suite> suite = Suite::load(*suite_path);
+  return one ? grade_one(*suite, *one, args, out) : grade_many(*suite, many, args, out);
+}
+
+}  // namespace meshedit

@@ -1,0 +1,41 @@
+// Grading a whole class: many submission folders against one suite, several at a time, each in its own
+// worker process, with one results.json per submission and a summary of all of them (CSV and JSON).
+//
+// Invariants:
+// - A worker grades one submission (grade() forks its tests as usual) and writes that submission's own
+//   results.json (in out/<name>/); student code never runs in a worker, only in the workers' children. The
+//   summary is written by the calling process alone, from the results files, after every worker ended.
+// - At most `jobs` workers run at once. A worker that fails (its results.json is missing or unreadable) is
+//   listed with status "error" and a reason; the others are unaffected.
+// - Submission names are the folders' base names; two folders with the same base name get "name", "name-2".
+// - Rows are in the order the folders were given.
+#pragma once
+
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "grade/grader.h"
+#include "grade/suite.h"
+
+namespace meshedit {
+
+struct ClassEntry {
+  std::string name;                 // the submission's name (its folder's base name)
+  std::filesystem::path folder;
+  std::filesystem::path results;    // out/<name>/results.json
+  std::string status = "error";     // "graded" or "error"
+  std::string problem;              // why, for "error"
+  double score = 0.0;
+  double max_score = 0.0;
+  size_t passed = 0;
+  size_t failed = 0;
+};
+
+std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesystem::path>& folders,
+                                    const std::filesystem::path& out, int jobs, const GradeOptions& options = {});
+
+std::string class_summary_csv(const std::vector<ClassEntry>& entries);
+std::string class_summary_json(const std::vector<ClassEntry>& entries);
+
+}  // namespace meshedit

@@ -1,0 +1,87 @@
+// The values the autograder passes around: a test as the suite declares it, what one run of it found (made
+// in the child process, sent to the parent), and the graded result the writers turn into files.
+//
+// Invariants:
+// - A TestRun only records facts (checks, the error, printed text); scores are computed once, by the parent
+//   (score_test in grader.h), so nothing running beside student code decides a grade.
+// - Visibility is one of Gradescope's four words; the suite loader refuses anything else.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace meshedit {
+
+// How a test run ended when it did not run to its end.
+enum class RunEnd {
+  Completed,   // the test function returned
+  Error,       // a Lua error (the student's or the suite's)
+  LoadError,   // a student file did not compile or failed while it ran
+  Timeout,     // the time limit or the instruction budget (in the child), or the parent's wall-clock kill
+  Memory,      // the Lua memory cap
+  Crash,       // the child died without a report (a signal, an exit, an unreadable report)
+};
+
+const char* run_end_name(RunEnd end);  // "completed", "error", "load error", "timeout", "memory", "crash"
+
+struct CheckResult {
+  bool passed = false;
+  std::string message;  // what was checked, and for a failure what was wrong
+};
+
+// What one test run found.
+struct TestRun {
+  std::vector<CheckResult> checks;
+  std::optional<double> fraction;  // set by expect.score(f): the share of the points, overriding the checks
+  RunEnd end = RunEnd::Completed;
+  std::string error;               // the message when end != Completed
+  std::string output;              // what the student's code printed (capped)
+  bool output_truncated = false;
+};
+
+// A test as the suite declares it (everything the parent needs to run and report it).
+struct TestSpec {
+  std::string number;                   // "1.2"; defaults to the 1-based position
+  std::string name;
+  double points = 1.0;
+  std::string visibility = "visible";   // visible | hidden | after_due_date | after_published
+  double time_limit = 10.0;             // seconds of wall clock for the whole test
+  size_t memory_mb = 256;               // the student state's Lua memory cap
+  bool partial = false;                 // score = points * passed checks / checks
+  std::vector<std::string> files;       // student files loaded for this test
+  std::vector<std::string> reference;   // reference functions installed in the student's globals
+  std::vector<std::string> allow_api;   // mesh API normally hidden from students that this test allows
+  std::vector<std::string> tags;
+  int run_ref = -1;                     // registry reference of the run function in the suite's state
+};
+
+// A graded test, ready for the writers.
+struct TestResult {
+  std::string number;
+  std::string name;
+  std::string visibility;
+  std::vector<std::string> tags;
+  double score = 0.0;
+  double max_score = 0.0;
+  bool passed = false;
+  RunEnd end = RunEnd::Completed;
+  std::string failure;  // the first problem in one line ("" when passed), for JUnit/TAP messages
+  std::string output;   // the full text shown to the student
+  double seconds = 0.0;
+};
+
+struct GradeReport {
+  std::string suite_name;
+  std::vector<TestResult> tests;
+  std::string output;  // top-level text: the suite, the files found and whether they compile
+  double score = 0.0;
+  double max_score = 0.0;
+  double execution_time = 0.0;  // seconds
+
+  size_t passed() const;
+  size_t failed() const { return tests.size() - passed(); }
+};
+
+}  // namespace meshedit

@@ -1,0 +1,189 @@
+// grade(): one child per test, the child's report, and the scoring rules (see grader.h).
+#include "grade/grader.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <csignal>
+#include <sstream>
+
+#include <nlohmann/json.hpp>
+
+#include "grade/child_process.h"
+
+namespace meshedit {
+namespace {
+
+constexpr size_t kFailuresShown = 8;
+
+double round_score(double x) { return std::round(x * 1e6) / 1e6; }
+
+RunEnd end_from_name(const std::string& name) {
+  for (RunEnd e : {RunEnd::Completed, RunEnd::Error, RunEnd::LoadError, RunEnd::Timeout, RunEnd::Memory, RunEnd::Crash}) {
+    if (name == run_end_name(e)) return e;
+  }
+  throw GradeError("unknown end '" + name + "' in a test report");
+}
+
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+}  // namespace
+
+const char* run_end_name(RunEnd end) {
+  switch (end) {
+    case RunEnd::Completed: return "completed";
+    case RunEnd::Error: return "error";
+    case RunEnd::LoadError: return "load error";
+    case RunEnd::Timeout: return "timeout";
+    case RunEnd::Memory: return "memory";
+    case RunEnd::Crash: return "crash";
+  }
+  return "?";
+}
+
+size_t GradeReport::passed() const {
+  size_t n = 0;
+  for (const auto& t : tests) n += t.passed ? 1 : 0;
+  return n;
+}
+
+std::string encode_test_run(const TestRun& run) {
+  nlohmann::json j;
+  j["checks"] = nlohmann::json::array();
+  for (const auto& c : run.checks) j["checks"].push_back({{"passed", c.passed}, {"message", c.message}});
+  if (run.fraction) j["fraction"] = *run.fraction;
+  j["end"] = run_end_name(run.end);
+  j["error"] = run.error;
+  j["output"] = run.output;
+  j["output_truncated"] = run.output_truncated;
+  // Student text may hold any bytes: replace invalid UTF-8 rather than fail.
+  return j.dump(-1, ' ', false, nlohmann::json::error_handler_t::replace);
+}
+
+TestRun decode_test_run(const std::string& text) {
+  TestRun run;
+  try {
+    const nlohmann::json j = nlohmann::json::parse(text);
+    for (const auto& c : j.at("checks")) run.checks.push_back({c.at("passed").get<bool>(), c.at("message").get<std::string>()});
+    if (j.contains("fraction")) run.fraction = j.at("fraction").get<double>();
+    run.end = end_from_name(j.at("end").get<std::string>());
+    run.error = j.at("error").get<std::string>();
+    run.output = j.at("output").get<std::string>();
+    run.output_truncated = j.at("output_truncated").get<bool>();
+  } catch (const nlohmann::json::exception& e) {
+    throw GradeError(std::string("malformed test report: ") + e.what());
+  }
+  return run;
+}
+
+TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) {
+  TestResult r;
+  r.number = spec.number;
+  r.name = spec.name;
+  r.visibility = spec.visibility;
+  r.tags = spec.tags;
+  r.max_score = spec.points;
+  r.end = run.end;
+  r.seconds = seconds;
+  size_t passed = 0;
+  for (const auto& c : run.checks) passed += c.passed ? 1 : 0;
+  const size_t failed = run.checks.size() - passed;
+  const bool stopped = run.end != RunEnd::Completed;
+  double fraction = 0.0;
+  if (stopped) {
+    fraction = spec.partial ? double(passed) / double(run.checks.size() + 1) : 0.0;
+  } else if (run.fraction) {
+    fraction = std::clamp(*run.fraction, 0.0, 1.0);
+  } else if (spec.partial) {
+    fraction = run.checks.empty() ? 1.0 : double(passed) / double(run.checks.size());
+  } else {
+    fraction = failed == 0 ? 1.0 : 0.0;
+  }
+  r.score = round_score(spec.points * fraction);
+  r.passed = !stopped && failed == 0 && r.score >= r.max_score;
+
+  std::ostringstream out;
+  if (stopped) {
+    out << (run.end == RunEnd::Timeout ? "Timed out: " : run.end == RunEnd::Memory ? "Out of memory: "
+            : run.end == RunEnd::Crash ? "Crashed: " : run.end == RunEnd::LoadError ? "Load error: " : "Error: ")
+        << run.error << "\n";
+    if (r.failure.empty()) r.failure = run.error;
+  }
+  // The first failures say enough; a loop over 40 elements should not print 40 near-identical lines.
+  size_t shown = 0;
+  for (const auto& c : run.checks) {
+    if (c.passed) continue;
+    if (shown++ < kFailuresShown) out << "FAILED: " << c.message << "\n";
+    if (r.failure.empty()) r.failure = c.message;
+  }
+  if (shown > kFailuresShown) out << "... and " << plural(shown - kFailuresShown, "more failed check", "more failed checks") << "\n";
+  if (r.passed) {
+    out << (run.checks.empty() ? std::string("Passed.") : "Passed: " + plural(passed, "check", "checks") + ".") << "\n";
+  } else if (!run.checks.empty()) {
+    out << plural(passed, "check", "checks") << " of " << run.checks.size() << " passed.\n";
+  }
+  if (!run.output.empty()) {
+    out << "\nYour code printed:\n" << run.output;
+    if (run.output_truncated && run.output.back() != '\n') out << "\n";
+  }
+  if (r.failure.empty() && !r.passed) r.failure = "score below the maximum";
+  r.output = out.str();
+  return r;
+}
+
+GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions& options) {
+  const auto start = std::chrono::steady_clock::now();
+  GradeReport report;
+  report.suite_name = suite.name();
+  std::ostringstream top;
+  top << "Suite " << suite.name() << ": " << plural(suite.tests().size(), "test", "tests") << ".\n";
+  std::string files;
+  for (const auto& f : submission.files()) files += (files.empty() ? "" : ", ") + f.relative;
+  top << "Files submitted: " << (files.empty() ? "none" : files) << ".\n";
+  for (const auto& name : suite.named_files()) {
+    if (!submission.find(name)) top << "Missing: " << name << " (the tests that need it fail).\n";
+  }
+  for (const auto& note : submission.notes()) top << "Note: " << note << ".\n";
+
+  std::string filter_note;
+  for (size_t i = 0; i < suite.tests().size(); ++i) {
+    if (options.time_limit_cap > 0) suite.cap_time_limit(i, options.time_limit_cap);
+    const TestSpec& spec = suite.tests()[i];
+    ChildLimits limits;
+    limits.wall_seconds = spec.time_limit + options.kill_grace_seconds;
+    limits.memory_bytes = options.child_memory_bytes + (spec.memory_mb << 20);
+    limits.filter_syscalls = options.filter_syscalls;
+    const ChildResult child = run_in_child(limits, [&] { return encode_test_run(suite.run_test_here(i, submission)); });
+    if (!child.filter_problem.empty() && filter_note.empty()) {
+      filter_note = "Note: the system call filter is not available here (" + child.filter_problem +
+                    "); the Lua sandbox and the process limits still apply.\n";
+    }
+    TestRun run;
+    if (child.report_complete) {
+      try {
+        run = decode_test_run(child.report);
+      } catch (const GradeError& e) {
+        run.end = RunEnd::Crash;
+        run.error = e.what();
+      }
+    } else {
+      run.end = child.timed_out || child.signal == SIGXCPU ? RunEnd::Timeout : RunEnd::Crash;
+      run.error = describe_child_end(child, spec.time_limit);
+      // What the child printed outside Lua (C++ messages) helps explain a crash; student prints are lost.
+      if (!child.err.empty()) run.error += "\n" + child.err.substr(0, 2000);
+    }
+    TestResult result = score_test(spec, run, child.seconds);
+    report.score += result.score;
+    report.max_score += spec.points;
+    if (options.on_test) options.on_test(result);
+    report.tests.push_back(std::move(result));
+  }
+  report.score = round_score(report.score);
+  report.output = top.str() + filter_note;
+  report.execution_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  return report;
+}
+
+}  // namespace meshedit

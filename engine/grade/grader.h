@@ -1,0 +1,43 @@
+// grade(): runs every test of a suite against a submission, each in its own child process, and scores the
+// results. The parent (this function's caller) is the only process that decides scores or writes files.
+//
+// Invariants:
+// - One child per test (child_process.h) with the test's time limit plus a grace period as the wall-clock
+//   kill; a test whose child hangs, crashes or runs out of memory fails with a sentence saying so, and the
+//   other tests still run.
+// - The child sends its TestRun as JSON; a report that is missing, cut or malformed is a crash, never a pass.
+// - Scores: a test with an error (student or suite), a timeout or a crash scores 0, unless it is partial,
+//   when it keeps points * passed / (checks + 1). Otherwise: expect.score's fraction if set; partial: points
+//   * passed / checks; else all points when every check passed (a test with no checks passes), 0 if not.
+//   Scores are rounded to 1e-6; a test passes when its score is its max_score and nothing failed.
+// - The report lists the files the suite names that the submission lacks, and the submission's notes.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "grade/grade_types.h"
+#include "grade/submission.h"
+#include "grade/suite.h"
+
+namespace meshedit {
+
+struct GradeOptions {
+  double kill_grace_seconds = 1.0;        // added to a test's time limit before the parent kills its child
+  double time_limit_cap = 0.0;            // when > 0, no test gets more seconds than this (quick checks)
+  size_t child_memory_bytes = size_t(2) << 30;
+  bool filter_syscalls = true;
+  std::function<void(const TestResult&)> on_test;  // called after each test (progress)
+};
+
+GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions& options = {});
+
+// The scoring rules above, for one test.
+TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds);
+
+// The child's report and back (JSON).
+std::string encode_test_run(const TestRun& run);
+// Throws GradeError for a malformed report.
+TestRun decode_test_run(const std::string& text);
+
+}  // namespace meshedit

@@ -1,0 +1,228 @@
+// StudentState: the fresh sandboxed state of one test, its restricted API, and calls into it (see
+// student_state.h).
+#include "grade/student_state.h"
+
+#include <algorithm>
+
+#include <lua.hpp>
+
+#include "grade/reference_functions.h"
+#include "grade/value_bridge.h"
+#include "script/bezier_bindings.h"
+#include "script/mesh_bindings.h"
+
+namespace meshedit {
+namespace {
+
+// Entries that touch files: never available to student code.
+const char* const kFileFunctions[] = {"load", "load_curve", "load_patches"};
+const char* const kFileMethods[] = {"save"};
+
+struct Hideable {
+  const char* api_name;  // how a suite allows it
+  bool method;           // a mesh method (else a meshedit function)
+  const char* field;
+};
+const Hideable kHideable[] = {{"mesh:flip", true, "flip"},
+                              {"mesh:split", true, "split"},
+                              {"mesh:collapse", true, "collapse"},
+                              {"mesh:loop_subdivide", true, "loop_subdivide"},
+                              {"meshedit.curve", false, "curve"},
+                              {"meshedit.patch", false, "patch"}};
+
+void clear_field(lua_State* L, int table, const char* field) {
+  lua_pushnil(L);
+  lua_setfield(L, table, field);
+}
+
+struct Setup {
+  const StudentOptions* options;
+  int* returned_ref;
+};
+
+// Runs in protected mode on a fresh state: removes what students may not use, makes the returned-tables list.
+int setup(lua_State* L) {
+  const auto* s = static_cast<Setup*>(lua_touserdata(L, 1));
+  const auto allowed = [&](const char* name) {
+    return std::find(s->options->allow_api.begin(), s->options->allow_api.end(), name) != s->options->allow_api.end();
+  };
+  lua_getglobal(L, "meshedit");
+  const int module = lua_gettop(L);
+  if (!lua_istable(L, module)) return luaL_error(L, "the meshedit module is missing");
+  // The whole module first (curves and patches too), so that what a test allows is there to allow.
+  open_bezier_bindings(L);
+  luaL_getmetatable(L, "mesh");
+  if (!lua_istable(L, -1)) return luaL_error(L, "the mesh metatable is missing");
+  lua_getfield(L, -1, "__index");
+  const int methods = lua_gettop(L);
+  // The grader can only hide methods kept in a table; fail loudly if the bindings ever change that.
+  if (!lua_istable(L, methods)) return luaL_error(L, "the mesh methods are not a table: cannot restrict them");
+  for (const char* f : kFileFunctions) clear_field(L, module, f);
+  for (const char* f : kFileMethods) clear_field(L, methods, f);
+  for (const auto& h : kHideable) {
+    if (!allowed(h.api_name)) clear_field(L, h.method ? methods : module, h.field);
+  }
+  lua_newtable(L);
+  *s->returned_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  return 0;
+}
+
+struct Call {
+  StudentState* self;
+  const std::string* name;
+  lua_State* suite;
+  int first;
+  int nargs;
+  bool only_check;  // has(): push whether the function exists
+};
+
+}  // namespace
+
+const std::vector<std::string>& hideable_api_names() {
+  static const std::vector<std::string> names = [] {
+    std::vector<std::string> v;
+    for (const auto& h : kHideable) v.emplace_back(h.api_name);
+    return v;
+  }();
+  return names;
+}
+
+StudentState::StudentState(const StudentOptions& options) : runtime_(options.limits), options_(options) {
+  runtime_.set_print([this](const std::string& line) {
+    output_ += line;
+    output_ += '\n';
+  });
+  runtime_.set_print_limit(options.output_bytes);
+  lua_State* L = runtime_.state();
+  MeshLimits mesh_limits_for_students;
+  mesh_limits_for_students.elements_per_kind = uint32_t(1) << 22;
+  mesh_limits_for_students.storage_bytes = std::max<size_t>(options.limits.memory_bytes, size_t(64) << 20);
+  set_mesh_limits(L, mesh_limits_for_students);
+  Setup s{&options_, &returned_tables_ref_};
+  lua_pushcfunction(L, setup);
+  lua_pushlightuserdata(L, &s);
+  runtime_.call(1, 0);
+  install_references();
+}
+
+void StudentState::install_references() {
+  lua_State* L = runtime_.state();
+  for (const auto& name : options_.reference) {
+    lua_pushcfunction(L, [](lua_State* S) {
+      const auto* n = static_cast<const std::string*>(lua_touserdata(S, 1));
+      if (!install_reference_function(S, *n)) return luaL_error(S, "unknown reference function '%s'", n->c_str());
+      return 0;
+    });
+    lua_pushlightuserdata(L, const_cast<std::string*>(&name));
+    runtime_.call(1, 0);
+  }
+}
+
+void StudentState::load(const Submission& submission, const std::vector<std::string>& files) {
+  lua_State* L = runtime_.state();
+  for (const auto& name : files) {
+    const SubmissionFile* file = submission.find(name);
+    if (!file) throw LoadFailure("the submission has no " + name, ScriptError::Limit::None);
+    try {
+      runtime_.load(file->text, name);
+      runtime_.call(0, 1);
+    } catch (const ScriptError& e) {
+      throw LoadFailure(e.what(), e.limit());
+    }
+    if (lua_istable(L, -1)) {
+      lua_rawgeti(L, LUA_REGISTRYINDEX, returned_tables_ref_);
+      lua_insert(L, -2);
+      lua_rawseti(L, -2, static_cast<lua_Integer>(lua_rawlen(L, -2) + 1));
+    }
+    lua_settop(L, 0);
+  }
+  install_references();
+}
+
+void StudentState::push_function(const std::string& name) {
+  lua_State* L = runtime_.state();
+  lua_pushglobaltable(L);
+  lua_pushlstring(L, name.data(), name.size());
+  lua_rawget(L, -2);
+  lua_remove(L, -2);
+  if (lua_isfunction(L, -1)) return;
+  lua_pop(L, 1);
+  lua_rawgeti(L, LUA_REGISTRYINDEX, returned_tables_ref_);
+  const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
+  for (lua_Integer i = 1; i <= n; ++i) {
+    lua_rawgeti(L, -1, i);
+    lua_pushlstring(L, name.data(), name.size());
+    lua_rawget(L, -2);
+    if (lua_isfunction(L, -1)) {
+      lua_replace(L, -3);
+      lua_pop(L, 1);
+      return;
+    }
+    lua_pop(L, 2);
+  }
+  lua_pop(L, 1);
+  lua_pushnil(L);
+}
+
+int StudentState::call_trampoline(lua_State* L) {
+  auto* c = static_cast<Call*>(lua_touserdata(L, 1));
+  lua_settop(L, 0);
+  c->self->push_function(*c->name);
+  if (c->only_check) {
+    lua_pushboolean(L, lua_isfunction(L, -1));
+    return 1;
+  }
+  if (!lua_isfunction(L, -1)) {
+    lua_pushfstring(L, "the submission does not define a function %s", c->name->c_str());
+    return lua_error(L);
+  }
+  std::string failure;
+  try {
+    ValueBridge bridge(c->suite, L, BridgeOptions{.bezier_as_tables = true});
+    for (int i = 0; i < c->nargs; ++i) bridge.copy(c->first + i, "argument " + std::to_string(i + 1));
+  } catch (const BridgeError& e) {
+    failure = std::string("the grader could not pass ") + e.what();
+  }
+  if (!failure.empty()) {
+    lua_pushstring(L, failure.c_str());
+    return lua_error(L);
+  }
+  lua_call(L, c->nargs, LUA_MULTRET);
+  return lua_gettop(L);
+}
+
+bool StudentState::has(const std::string& name) {
+  lua_State* L = runtime_.state();
+  const int base = lua_gettop(L);
+  Call c{this, &name, nullptr, 0, 0, true};
+  lua_pushcfunction(L, call_trampoline);
+  lua_pushlightuserdata(L, &c);
+  runtime_.call(1, 1);
+  const bool result = lua_toboolean(L, -1);
+  lua_settop(L, base);
+  return result;
+}
+
+int StudentState::call(const std::string& name, lua_State* suite, int first, int nargs) {
+  lua_State* L = runtime_.state();
+  const int base = lua_gettop(L);
+  Call c{this, &name, suite, first, nargs, false};
+  lua_pushcfunction(L, call_trampoline);
+  lua_pushlightuserdata(L, &c);
+  const int n = runtime_.call(1, LUA_MULTRET);
+  struct Restore {
+    lua_State* L;
+    int base;
+    ~Restore() { lua_settop(L, base); }
+  } restore{L, base};
+  luaL_checkstack(suite, n + 8, "too many results");
+  ValueBridge bridge(L, suite);
+  try {
+    for (int i = 1; i <= n; ++i) bridge.copy(base + i, "result " + std::to_string(i));
+  } catch (const BridgeError& e) {
+    throw BridgeError(name + " returned a value the grader cannot read: " + e.what());
+  }
+  return n;
+}
+
+}  // namespace meshedit

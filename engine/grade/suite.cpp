@@ -1,0 +1,492 @@
+// Suite: loading a suite file (the suite{} and test{} declarations) and running one test in this process
+// (see suite.h).
+#include "grade/suite.h"
+
+#include <algorithm>
+#include <cmath>
+#include <fstream>
+#include <optional>
+#include <set>
+#include <sstream>
+#include <type_traits>
+
+#include <lua.hpp>
+
+#include "grade/expectations.h"
+#include "grade/reference_functions.h"
+#include "grade/student_state.h"
+#include "script/bezier_bindings.h"
+
+namespace meshedit {
+namespace {
+
+constexpr double kMaxTimeLimit = 600.0;
+constexpr double kDefaultTimeLimit = 10.0;
+constexpr size_t kDefaultMemoryMb = 256;
+constexpr size_t kSuiteMemoryBytes = size_t(1) << 30;
+// Lua instructions per second of a test's time limit: the budget is a deterministic backstop only, set well
+// above what any machine runs in that time, so the wall clock is what a slow solution meets.
+constexpr double kInstructionsPerSecond = 2e9;
+
+const std::set<std::string> kVisibilities = {"visible", "hidden", "after_due_date", "after_published"};
+
+struct Fields {
+  std::optional<std::string> name, number, visibility;
+  std::optional<double> points, time_limit, memory_mb, output_kb;
+  std::optional<bool> partial;
+  std::optional<std::vector<std::string>> files, reference, allow_api, tags;
+  int run_ref = LUA_NOREF;
+};
+
+LuaLimits limits_for(double seconds, size_t memory_bytes) {
+  LuaLimits l;
+  l.wall_seconds = seconds;
+  l.memory_bytes = memory_bytes;
+  l.instructions = static_cast<uint64_t>(std::max(1.0, seconds) * kInstructionsPerSecond);
+  return l;
+}
+
+}  // namespace
+
+// What the files declared: one scope of suite{} defaults per file (the suite file is scope 0, each include
+// adds one), and the tests, each with the scope it was declared in.
+struct Suite::Declarations {
+  std::vector<Fields> scopes{Fields{}};
+  size_t current = 0;
+  std::vector<std::pair<Fields, size_t>> tests;
+};
+
+struct Suite::Context {
+  StudentState* student = nullptr;
+  bool student_failed = false;
+  std::string student_error;
+  ScriptError::Limit student_limit = ScriptError::Limit::None;
+};
+
+// The C functions of the suite's Lua API (friends of Suite).
+struct SuiteApi {
+  static Suite& suite_of(lua_State* L) { return *static_cast<Suite*>(lua_touserdata(L, lua_upvalueindex(1))); }
+
+  static std::vector<std::string> string_list(lua_State* L, int index, const char* field) {
+    if (!lua_istable(L, index)) luaL_error(L, "field '%s' must be a list of strings", field);
+    std::vector<std::string> out;
+    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, index));
+    for (lua_Integer i = 1; i <= n; ++i) {
+      lua_rawgeti(L, index, i);
+      if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "field '%s' must be a list of strings", field);
+      out.emplace_back(lua_tostring(L, -1));
+      lua_pop(L, 1);
+    }
+    return out;
+  }
+
+  static double number_field(lua_State* L, int index, const char* field, double min, double max) {
+    if (lua_type(L, index) != LUA_TNUMBER) luaL_error(L, "field '%s' must be a number", field);
+    const double x = lua_tonumber(L, index);
+    if (!(x >= min && x <= max)) luaL_error(L, "field '%s' must be between %f and %f", field, min, max);
+    return x;
+  }
+
+  // Reads the declaration table at argument 1 into `f`; `test` says which fields are allowed.
+  static void read_fields(lua_State* L, Fields& f, bool test) {
+    luaL_checktype(L, 1, LUA_TTABLE);
+    static const std::set<std::string> suite_fields = {"name",      "files",     "time_limit", "memory_mb", "visibility",
+                                                       "reference", "allow_api", "partial",    "output_kb"};
+    static const std::set<std::string> test_fields = {"name",  "points",    "number",    "visibility", "time_limit",
+                                                      "memory_mb", "partial", "files",     "reference",  "allow_api",
+                                                      "tags",  "run"};
+    const auto& allowed = test ? test_fields : suite_fields;
+    lua_pushnil(L);
+    while (lua_next(L, 1) != 0) {
+      lua_pop(L, 1);
+      if (lua_type(L, -1) != LUA_TSTRING || !allowed.count(lua_tostring(L, -1))) {
+        std::string names;
+        for (const auto& n : allowed) names += (names.empty() ? "" : ", ") + n;
+        const std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, -1);
+        luaL_error(L, "%s: unknown field '%s' (fields: %s)", test ? "test" : "suite", key.c_str(), names.c_str());
+      }
+    }
+    const auto get = [&](const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; };
+    if (get("name")) {
+      if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "field 'name' must be a string");
+      f.name = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);
+    if (test) {
+      if (!f.name || f.name->empty()) luaL_error(L, "test: field 'name' is required");
+      if (get("number")) {
+        if (lua_type(L, -1) != LUA_TSTRING && lua_type(L, -1) != LUA_TNUMBER) luaL_error(L, "field 'number' must be a string");
+        f.number = lua_tostring(L, -1);
+      }
+      lua_pop(L, 1);
+      if (get("points")) f.points = number_field(L, -1, "points", 0.0, 1e6);
+      lua_pop(L, 1);
+      if (get("tags")) f.tags = string_list(L, lua_gettop(L), "tags");
+      lua_pop(L, 1);
+      if (lua_getfield(L, 1, "run") != LUA_TFUNCTION) {
+        luaL_error(L, "test '%s': field 'run' must be a function(student, expect)", f.name->c_str());
+      }
+      f.run_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    }
+    if (get("visibility")) {
+      if (lua_type(L, -1) != LUA_TSTRING || !kVisibilities.count(lua_tostring(L, -1))) {
+        luaL_error(L, "field 'visibility' must be visible, hidden, after_due_date or after_published");
+      }
+      f.visibility = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);
+    if (get("time_limit")) f.time_limit = number_field(L, -1, "time_limit", 0.01, kMaxTimeLimit);
+    lua_pop(L, 1);
+    if (get("memory_mb")) f.memory_mb = number_field(L, -1, "memory_mb", 4, 8192);
+    lua_pop(L, 1);
+    if (!test && get("output_kb")) f.output_kb = number_field(L, -1, "output_kb", 1, 1024);
+    if (!test) lua_pop(L, 1);
+    if (get("partial")) {
+      if (!lua_isboolean(L, -1)) luaL_error(L, "field 'partial' must be true or false");
+      f.partial = lua_toboolean(L, -1);
+    }
+    lua_pop(L, 1);
+    if (get("files")) f.files = string_list(L, lua_gettop(L), "files");
+    lua_pop(L, 1);
+    if (get("reference")) {
+      f.reference = string_list(L, lua_gettop(L), "reference");
+      for (const auto& r : *f.reference) {
+        if (!is_reference_function(r)) {
+          std::string names;
+          for (const auto& n : reference_function_names()) names += (names.empty() ? "" : ", ") + n;
+          luaL_error(L, "unknown reference function '%s' (there are: %s)", r.c_str(), names.c_str());
+        }
+      }
+    }
+    lua_pop(L, 1);
+    if (get("allow_api")) {
+      f.allow_api = string_list(L, lua_gettop(L), "allow_api");
+      const auto& names = hideable_api_names();
+      for (const auto& a : *f.allow_api) {
+        if (std::find(names.begin(), names.end(), a) == names.end()) {
+          std::string all;
+          for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
+          luaL_error(L, "allow_api: unknown entry '%s' (there are: %s)", a.c_str(), all.c_str());
+        }
+      }
+    }
+    lua_pop(L, 1);
+  }
+
+  static int declare_suite(lua_State* L) {
+    Suite& s = suite_of(L);
+    if (!s.declarations_) return luaL_error(L, "suite{} can only be called while the suite file loads");
+    read_fields(L, s.declarations_->scopes[s.declarations_->current], false);
+    return 0;
+  }
+
+  static int declare_test(lua_State* L) {
+    Suite& s = suite_of(L);
+    if (!s.declarations_) return luaL_error(L, "test{} can only be called while the suite file loads");
+    Fields f;
+    read_fields(L, f, true);
+    s.declarations_->tests.emplace_back(std::move(f), s.declarations_->current);
+    return 0;
+  }
+
+  // include("curve.lua"): runs another suite file (relative to this suite's folder) in the same state, so one
+  // assignment suite can gather the parts' suites. Only while loading. The included file's suite{} defaults
+  // apply to its own tests only (then the including file's, then the built-in ones).
+  static int include(lua_State* L) {
+    Suite& s = suite_of(L);
+    if (!s.declarations_) return luaL_error(L, "include() can only be called while the suite file loads");
+    const std::string name = luaL_checkstring(L, 1);
+    const std::filesystem::path path = s.folder_ / name;
+    std::string text;
+    {
+      std::ifstream in(path, std::ios::binary);
+      if (!in) return luaL_error(L, "include: cannot open %s", path.string().c_str());
+      std::ostringstream buffer;
+      buffer << in.rdbuf();
+      text = buffer.str();
+    }
+    const std::string chunk = "@" + (std::filesystem::path(s.chunk_folder_) / name).generic_string();
+    if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return lua_error(L);
+    Suite::Declarations& d = *s.declarations_;
+    const size_t outer = d.current;
+    d.scopes.emplace_back();
+    d.current = d.scopes.size() - 1;
+    lua_call(L, 0, 0);  // an error leaves the scope set: loading fails as a whole anyway
+    d.current = outer;
+    return 0;
+  }
+
+  static Suite::Context& context(lua_State* L) {
+    Suite& s = suite_of(L);
+    if (!s.current_ || !s.current_->student) luaL_error(L, "student can only be used while a test runs");
+    return *s.current_;
+  }
+
+  // student.NAME(...): the submission's function, run in its sandbox.
+  static int call_named(lua_State* L, const std::string& name, int first) {
+    Suite::Context& c = context(L);
+    const int nargs = lua_gettop(L) - first + 1;
+    std::string error;
+    ScriptError::Limit limit = ScriptError::Limit::None;
+    int n = 0;
+    bool failed = false;
+    try {
+      n = c.student->call(name, L, first, nargs);
+    } catch (const ScriptError& e) {
+      error = e.what();
+      limit = e.limit();
+      failed = true;
+    } catch (const std::exception& e) {
+      error = e.what();
+      failed = true;
+    }
+    if (failed) {
+      c.student_failed = true;
+      c.student_error = error;
+      c.student_limit = limit;
+      lua_pushlstring(L, error.data(), error.size());
+      return lua_error(L);
+    }
+    return n;
+  }
+
+  static int student_function(lua_State* L) {
+    const std::string name = lua_tostring(L, lua_upvalueindex(2));
+    return call_named(L, name, 1);
+  }
+
+  static int student_call(lua_State* L) {
+    const std::string name = luaL_checkstring(L, 1);
+    return call_named(L, name, 2);
+  }
+
+  static int student_has(lua_State* L) {
+    Suite::Context& c = context(L);
+    const std::string name = luaL_checkstring(L, 1);
+    std::string error;
+    bool result = false;
+    try {
+      result = c.student->has(name);
+    } catch (const std::exception& e) {
+      error = e.what();
+    }
+    if (!error.empty()) return luaL_error(L, "%s", error.c_str());
+    lua_pushboolean(L, result);
+    return 1;
+  }
+
+  static int student_output(lua_State* L) {
+    Suite::Context& c = context(L);
+    lua_pushlstring(L, c.student->output().data(), c.student->output().size());
+    return 1;
+  }
+
+  // __index of the student table: the reserved names, else a function calling the student's NAME.
+  static int student_index(lua_State* L) {
+    const std::string key = luaL_checkstring(L, 2);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    if (key == "has") lua_pushcclosure(L, student_has, 1);
+    else if (key == "call") lua_pushcclosure(L, student_call, 1);
+    else if (key == "output") lua_pushcclosure(L, student_output, 1);
+    else {
+      lua_pushvalue(L, 2);
+      lua_pushcclosure(L, student_function, 2);
+    }
+    return 1;
+  }
+
+  static void push_student_table(lua_State* L, Suite* s) {
+    lua_newtable(L);
+    lua_createtable(L, 0, 2);
+    lua_pushlightuserdata(L, s);
+    lua_pushcclosure(L, student_index, 1);
+    lua_setfield(L, -2, "__index");
+    lua_pushliteral(L, "student");
+    lua_setfield(L, -2, "__metatable");
+    lua_setmetatable(L, -2);
+  }
+};
+
+Suite::Suite() = default;
+Suite::~Suite() = default;
+
+std::unique_ptr<Suite> Suite::load(const std::filesystem::path& path) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) throw GradeError("cannot open the suite " + path.string());
+  std::ostringstream text;
+  text << in.rdbuf();
+  std::filesystem::path folder = path.parent_path();
+  if (folder.empty()) folder = ".";
+  // Named by the path as given, as lua.c names scripts: "suites/curve.lua" must not read like the student's
+  // curve.lua in messages.
+  return from_text(text.str(), path.generic_string(), std::filesystem::absolute(folder).lexically_normal());
+}
+
+std::unique_ptr<Suite> Suite::from_text(std::string_view text, const std::string& chunk_name,
+                                        const std::filesystem::path& folder) {
+  std::unique_ptr<Suite> s(new Suite());
+  s->runtime_ = std::make_unique<LuaRuntime>(limits_for(60.0, kSuiteMemoryBytes));
+  s->declarations_ = std::make_unique<Declarations>();
+  lua_State* L = s->runtime_->state();
+  // The Bézier part of the module (curves and patches: the references of parts 1 and 2).
+  if (lua_getglobal(L, "meshedit") == LUA_TTABLE) open_bezier_bindings(L);
+  lua_pop(L, 1);
+  lua_pushlightuserdata(L, s.get());
+  lua_pushcclosure(L, SuiteApi::declare_suite, 1);
+  lua_setglobal(L, "suite");
+  lua_pushlightuserdata(L, s.get());
+  lua_pushcclosure(L, SuiteApi::declare_test, 1);
+  lua_setglobal(L, "test");
+  lua_pushlightuserdata(L, s.get());
+  lua_pushcclosure(L, SuiteApi::include, 1);
+  lua_setglobal(L, "include");
+  s->folder_ = folder;
+  s->chunk_folder_ = std::filesystem::path(chunk_name).parent_path().generic_string();
+  lua_pushstring(L, folder.string().c_str());
+  lua_setglobal(L, "SUITE_DIR");
+  try {
+    s->runtime_->run_string(text, chunk_name);
+  } catch (const ScriptError& e) {
+    throw GradeError(std::string("the suite did not load: ") + e.what());
+  }
+  s->finish_loading(chunk_name);
+  return s;
+}
+
+void Suite::finish_loading(const std::string& chunk_name) {
+  const Declarations& d = *declarations_;
+  const Fields& top = d.scopes[0];
+  name_ = top.name.value_or(std::filesystem::path(chunk_name).stem().string());  // "flip" for suites/flip.lua
+  if (top.output_kb) output_bytes_ = static_cast<size_t>(*top.output_kb * 1024);
+  if (d.tests.empty()) throw GradeError("the suite " + chunk_name + " declares no test");
+  for (size_t i = 0; i < d.tests.size(); ++i) {
+    const Fields& f = d.tests[i].first;
+    const Fields& own = d.scopes[d.tests[i].second];
+    // The test's field, else its file's suite{}, else the suite file's, else the built-in default.
+    const auto pick = [&](const auto member, auto fallback) {
+      using Value = std::decay_t<decltype(*(f.*member))>;
+      for (const Fields* source : {&f, &own, &top}) {
+        if ((source->*member).has_value()) return Value(*(source->*member));
+      }
+      return Value(fallback);
+    };
+    TestSpec t;
+    t.name = *f.name;
+    t.number = f.number.value_or(std::to_string(i + 1));
+    t.points = f.points.value_or(1.0);
+    t.visibility = pick(&Fields::visibility, std::string("visible"));
+    t.time_limit = pick(&Fields::time_limit, kDefaultTimeLimit);
+    t.memory_mb = static_cast<size_t>(pick(&Fields::memory_mb, double(kDefaultMemoryMb)));
+    t.partial = pick(&Fields::partial, false);
+    t.files = pick(&Fields::files, std::vector<std::string>{});
+    t.reference = pick(&Fields::reference, std::vector<std::string>{});
+    t.allow_api = pick(&Fields::allow_api, std::vector<std::string>{});
+    t.tags = f.tags.value_or(std::vector<std::string>{});
+    t.run_ref = f.run_ref;
+    tests_.push_back(std::move(t));
+  }
+  declarations_.reset();
+}
+
+void Suite::cap_time_limit(size_t index, double seconds) {
+  if (index < tests_.size()) tests_[index].time_limit = std::min(tests_[index].time_limit, seconds);
+}
+
+std::vector<std::string> Suite::files_for(const TestSpec& spec, const Submission& submission) const {
+  if (!spec.files.empty()) return spec.files;
+  std::vector<std::string> all;
+  for (const auto& f : submission.files()) all.push_back(f.name);
+  return all;
+}
+
+std::vector<std::string> Suite::named_files() const {
+  std::vector<std::string> names;
+  for (const auto& t : tests_) names.insert(names.end(), t.files.begin(), t.files.end());
+  std::sort(names.begin(), names.end());
+  names.erase(std::unique(names.begin(), names.end()), names.end());
+  return names;
+}
+
+namespace {
+
+RunEnd end_for_limit(ScriptError::Limit limit, RunEnd otherwise) {
+  switch (limit) {
+    case ScriptError::Limit::Instructions:
+    case ScriptError::Limit::Time: return RunEnd::Timeout;
+    case ScriptError::Limit::Memory: return RunEnd::Memory;
+    case ScriptError::Limit::None: break;
+  }
+  return otherwise;
+}
+
+}  // namespace
+
+TestRun Suite::run_test_here(size_t index, const Submission& submission) {
+  TestRun run;
+  if (index >= tests_.size()) {
+    run.end = RunEnd::Error;
+    run.error = "no test number " + std::to_string(index);
+    return run;
+  }
+  const TestSpec& spec = tests_[index];
+  TestRecorder recorder(run);
+  recorder_slot_ = &recorder;
+  Context context;
+  struct Clear {
+    Suite* s;
+    ~Clear() {
+      s->current_ = nullptr;
+      s->recorder_slot_ = nullptr;
+    }
+  } clear{this};
+  std::optional<StudentState> student;
+  try {
+    StudentOptions options;
+    options.limits = limits_for(spec.time_limit, spec.memory_mb << 20);
+    options.output_bytes = output_bytes_;
+    options.reference = spec.reference;
+    options.allow_api = spec.allow_api;
+    student.emplace(options);
+    context.student = &*student;
+    current_ = &context;
+    student->runtime().start_budget();
+    try {
+      student->load(submission, files_for(spec, submission));
+    } catch (const LoadFailure& e) {
+      run.end = end_for_limit(e.limit(), RunEnd::LoadError);
+      run.error = std::string("the submission did not load: ") + e.what();
+      run.output = student->output();
+      run.output_truncated = student->output_truncated();
+      return run;
+    }
+    lua_State* L = runtime_->state();
+    runtime_->set_limits(limits_for(spec.time_limit, kSuiteMemoryBytes));
+    runtime_->start_budget();
+    lua_settop(L, 0);
+    lua_rawgeti(L, LUA_REGISTRYINDEX, spec.run_ref);
+    SuiteApi::push_student_table(L, this);
+    push_expect_table(L, &recorder_slot_);
+    try {
+      runtime_->call(2, 0);
+    } catch (const ScriptError& e) {
+      if (context.student_failed && context.student_error == e.what()) {
+        run.end = end_for_limit(context.student_limit, RunEnd::Error);
+      } else {
+        run.end = end_for_limit(e.limit(), RunEnd::Error);
+      }
+      run.error = e.what();
+    }
+    lua_settop(L, 0);
+  } catch (const std::exception& e) {  // the student state could not be made: the grader's problem
+    run.end = RunEnd::Error;
+    run.error = std::string("the grader could not run this test: ") + e.what();
+  }
+  recorder_slot_ = nullptr;
+  if (student) {
+    run.output = student->output();
+    run.output_truncated = student->output_truncated();
+  }
+  return run;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,197 @@
+// `meshedit grade` end to end through the built binary: the report on stdout ending with "N passed, N
+// failed", results.json (also for submissions that do not compile, hang or run out of memory while loading),
+// --junit and --tap, the exit-status rules (0 graded whatever the score, 1 the grader could not grade, 2 bad
+// arguments), a hostile file trying to write results.json, and a whole class with --submissions.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include <nlohmann/json.hpp>
+
+#include "grade_test_support.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::grading_dir;
+using testing::read_text;
+using testing::write_text;
+
+struct Outcome {
+  int status = -1;
+  std::string out, err;
+};
+
+Outcome run_meshedit(const fs::path& dir, const std::string& arguments) {
+  const auto out = dir / "grade_stdout.txt", err = dir / "grade_stderr.txt";
+  const std::string command = "cd '" + dir.string() + "' && '" + std::string(MESHEDIT_BINARY) + "' " + arguments +
+                              " >'" + out.string() + "' 2>'" + err.string() + "'";
+  const int raw = std::system(command.c_str());
+  Outcome o;
+  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  o.out = read_text(out);
+  o.err = read_text(err);
+  return o;
+}
+
+// dir/name/flip.lua from a fixture.
+fs::path submission(const fs::path& dir, const std::string& name, const fs::path& fixture) {
+  write_text(dir / name / "flip.lua", read_text(fixture));
+  return dir / name;
+}
+
+std::string suite_arg(const char* relative) { return "--suite '" + (grading_dir() / relative).string() + "'"; }
+
+bool ends_with(const std::string& s, const std::string& tail) {
+  return s.size() >= tail.size() && s.compare(s.size() - tail.size(), tail.size(), tail) == 0;
+}
+
+TEST(CliGrade, GradesASubmissionAndWritesResults) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir, "alice", grading_dir() / "students" / "flip_correct.lua");
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission alice --junit junit.xml");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.err, "");
+  EXPECT_TRUE(ends_with(o.out, "\nScore: 10 / 10\n5 passed, 0 failed\n")) << o.out;
+  const auto results = nlohmann::json::parse(read_text(dir / "results.json"));  // the default path
+  EXPECT_EQ(results.at("score"), 10.0);
+  EXPECT_EQ(results.at("tests").size(), 5u);
+  EXPECT_EQ(results["tests"][4]["visibility"], "hidden");
+  const std::string junit = read_text(dir / "junit.xml");
+  EXPECT_NE(junit.find("<testsuites name=\"flip_edge\" tests=\"5\" failures=\"0\" errors=\"0\""), std::string::npos) << junit;
+}
+
+TEST(CliGrade, AFailingSubmissionIsStillAGradingThatWorked) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir, "bob", grading_dir() / "students" / "flip_forgets_faces.lua");
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission bob --results out/r.json --tap");
+  EXPECT_EQ(o.status, 0) << o.err;
+  // With --tap, stdout is TAP only.
+  EXPECT_EQ(o.out.rfind("TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles\n", 0), 0u) << o.out;
+  EXPECT_TRUE(ends_with(o.out, "# score 3.142857 / 10\n# 1 passed, 4 failed\n")) << o.out;
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "r.json")).at("score"), 3.142857);
+}
+
+struct Broken {
+  const char* fixture;
+  const char* message;  // in the output of both tests
+};
+
+TEST(CliGrade, ResultsAreWrittenWhenTheSubmissionDoesNotLoadHangsOrRunsOutOfMemory) {
+  const Broken cases[] = {
+      {"syntax_error.lua", "Load error: the submission did not load: flip.lua:4: 'then' expected near 'return'"},
+      {"hangs_at_load.lua", "Timed out: the submission did not load: flip.lua:3: time limit exceeded (0.5 s)"},
+      {"memory_at_load.lua", "Out of memory: the submission did not load: flip.lua:3: memory limit exceeded (32 MB)"},
+  };
+  for (const Broken& c : cases) {
+    SCOPED_TRACE(c.fixture);
+    const fs::path dir = testing::scratch_dir();
+    submission(dir, "s", grading_dir() / "broken" / c.fixture);
+    const Outcome o = run_meshedit(dir, "grade " + suite_arg("broken/broken_suite.lua") + " --submission s");
+    EXPECT_EQ(o.status, 0) << o.err;
+    EXPECT_TRUE(ends_with(o.out, "0 passed, 2 failed\n")) << o.out;
+    const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
+    EXPECT_EQ(results.at("score"), 0.0);
+    ASSERT_EQ(results.at("tests").size(), 2u);
+    for (const auto& t : results.at("tests")) {
+      EXPECT_EQ(t.at("status"), "failed");
+      EXPECT_EQ(t.at("output").get<std::string>().rfind(c.message, 0), 0u) << t.at("output");
+    }
+  }
+  // An empty submission: every test says which file is missing.
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "empty");
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("broken/broken_suite.lua") + " --submission empty");
+  EXPECT_EQ(o.status, 0) << o.err;
+  const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
+  EXPECT_EQ(results["tests"][0]["output"], "Load error: the submission did not load: the submission has no flip.lua\n");
+  EXPECT_NE(results.at("output").get<std::string>().find("Missing: flip.lua"), std::string::npos);
+}
+
+TEST(CliGrade, AHostileFileCannotWriteTheResults) {
+  const fs::path dir = testing::scratch_dir();
+  write_text(dir / "eve" / "flip.lua", read_text(grading_dir() / "students" / "flip_correct.lua"));
+  write_text(dir / "eve" / "split.lua", read_text(grading_dir() / "hostile" / "io_open_results.lua"));
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("hostile/hostile_suite.lua") + " --submission eve");
+  EXPECT_EQ(o.status, 0) << o.err;
+  const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
+  EXPECT_EQ(results.at("score"), 3.0);
+  EXPECT_EQ(results["tests"][1]["output"], "Error: split.lua:3: attempt to index a nil value (global 'io')\n");
+}
+
+TEST(CliGrade, ExitStatusSaysWhetherGradingWorked) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir, "s", grading_dir() / "students" / "flip_correct.lua");
+  write_text(dir / "bad_suite.lua", "test{ name = 'x', run = function() end, points = 'many' }\n");
+  Outcome o = run_meshedit(dir, "grade --suite bad_suite.lua --submission s");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.err, "meshedit: the suite did not load: bad_suite.lua:1: field 'points' must be a number\n");
+  EXPECT_FALSE(fs::exists(dir / "results.json"));  // no results from a grader that did not work
+  o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission nowhere");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.err, "meshedit: the submission folder nowhere does not exist\n");
+  o = run_meshedit(dir, "grade --submission s");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "meshedit: grade needs --suite SUITE.lua (see meshedit --help)\n");
+  o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua"));
+  EXPECT_EQ(o.status, 2);
+  o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission s --submissions s");
+  EXPECT_EQ(o.status, 2);
+  EXPECT_EQ(o.err, "meshedit: grade needs either --submission DIR or --submissions DIR... (see meshedit --help)\n");
+  o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission s --colour");
+  EXPECT_EQ(o.status, 2);
+  o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission s --results /proc/none/r.json");
+  EXPECT_EQ(o.status, 1);
+  EXPECT_EQ(o.err, "meshedit: cannot write /proc/none/r.json\n");
+}
+
+TEST(CliGrade, AWholeClassInParallel) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir / "class", "alice", grading_dir() / "students" / "flip_correct.lua");
+  submission(dir / "class", "bob", grading_dir() / "students" / "flip_forgets_faces.lua");
+  submission(dir / "class", "carol", grading_dir() / "students" / "flip_boundary.lua");
+  const Outcome o = run_meshedit(
+      dir, "grade " + suite_arg("suites/flip.lua") + " --submissions class/alice class/bob class/carol --jobs 2 --out marks");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.out,
+            "alice: 10 / 10 (5 passed, 0 failed)\n"
+            "bob: 3.142857 / 10 (1 passed, 4 failed)\n"
+            "carol: 9 / 10 (4 passed, 1 failed)\n"
+            "3 of 3 submissions graded; summary in marks/summary.csv\n");
+  EXPECT_EQ(read_text(dir / "marks" / "summary.csv"),
+            "submission,status,score,max_score,passed,failed,results,problem\n"
+            "alice,graded,10,10,5,0,marks/alice/results.json,\n"
+            "bob,graded,3.142857,10,1,4,marks/bob/results.json,\n"
+            "carol,graded,9,10,4,1,marks/carol/results.json,\n");
+  const auto summary = nlohmann::json::parse(read_text(dir / "marks" / "summary.json"));
+  ASSERT_EQ(summary.size(), 3u);
+  EXPECT_EQ(summary[1]["submission"], "bob");
+  EXPECT_EQ(summary[1]["score"], 3.142857);
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "marks" / "carol" / "results.json")).at("score"), 9.0);
+}
+
+TEST(CliGrade, TheGradescopeRunAutograderScript) {
+  const fs::path dir = testing::scratch_dir();
+  const fs::path solutions = testing::source_dir() / "tests" / "script" / "solutions";
+  fs::create_directories(dir / "submission");
+  for (const auto& f : fs::directory_iterator(solutions)) fs::copy_file(f.path(), dir / "submission" / f.path().filename());
+  const std::string command = "AUTOGRADER_ROOT='" + dir.string() + "' MESHEDIT='" + std::string(MESHEDIT_BINARY) +
+                              "' SUITE='" + (grading_dir() / "suites" / "all.lua").string() + "' '" +
+                              (grading_dir() / "gradescope" / "run_autograder").string() + "' > '" +
+                              (dir / "stdout.txt").string() + "' 2>&1";
+  const int raw = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(raw));
+  EXPECT_EQ(WEXITSTATUS(raw), 0) << read_text(dir / "stdout.txt");
+  const auto results = nlohmann::json::parse(read_text(dir / "results" / "results.json"));
+  EXPECT_EQ(results.at("score"), 56.0);
+  EXPECT_EQ(results.at("tests").size(), 29u);
+  EXPECT_TRUE(ends_with(read_text(dir / "stdout.txt"), "29 passed, 0 failed\n"));
+}
+
+}  // namespace
+}  // namespace meshedit

@@ -1,0 +1,80 @@
+// The flip_edge grading suite (tests/grading/suites/flip.lua) over the flip fixtures in
+// tests/grading/students/: the correct flip written with pointer writes scores 10/10; each buggy one loses
+// exactly the points of the tests its mistake breaks, with a message naming the element that is wrong.
+#include <gtest/gtest.h>
+
+#include <map>
+#include <string>
+
+#include "grade/results_writers.h"
+#include "grade_test_support.h"
+
+namespace meshedit {
+namespace {
+
+using testing::grading_dir;
+using testing::read_text;
+
+GradeReport grade_flip(const std::string& fixture) {
+  auto suite = Suite::load(grading_dir() / "suites" / "flip.lua");
+  return grade(*suite, testing::submission_of({{"flip.lua", read_text(grading_dir() / "students" / fixture)}}),
+               testing::quick_options());
+}
+
+// number -> score of the tests that failed.
+std::map<std::string, double> failed(const GradeReport& report) {
+  std::map<std::string, double> out;
+  for (const auto& t : report.tests) {
+    if (!t.passed) out[t.number] = t.score;
+  }
+  return out;
+}
+
+const TestResult& test_numbered(const GradeReport& report, const std::string& number) {
+  for (const auto& t : report.tests) {
+    if (t.number == number) return t;
+  }
+  throw std::runtime_error("no test " + number);
+}
+
+TEST(FlipSuite, TheCorrectFlipScoresFullMarks) {
+  const GradeReport report = grade_flip("flip_correct.lua");
+  EXPECT_EQ(report.score, 10.0);
+  EXPECT_EQ(report.max_score, 10.0);
+  EXPECT_EQ(summary_line(report), "5 passed, 0 failed");
+  for (const auto& t : report.tests) EXPECT_EQ(t.output.rfind("Passed: ", 0), 0u) << t.number << ": " << t.output;
+}
+
+TEST(FlipSuite, ForgettingTheFacesHalfedgesLosesPointsNamingTheFace) {
+  const GradeReport report = grade_flip("flip_forgets_faces.lua");
+  EXPECT_EQ(report.score, 3.142857);
+  EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.1", 0.0}, {"4.2", 2.142857}, {"4.4", 0.0}, {"4.5", 0.0}}));
+  EXPECT_NE(test_numbered(report, "4.1").output.find(
+                "FAILED: flip_edge(e2) of a 1x1 grid: the mesh is not valid: f0: f0.halfedge is h0, but h0.face is f1"),
+            std::string::npos)
+      << test_numbered(report, "4.1").output;
+  EXPECT_NE(test_numbered(report, "4.2").output.find("30 checks of 42 passed."), std::string::npos);
+}
+
+TEST(FlipSuite, ForgettingTheVerticesHalfedgesLosesPointsNamingTheVertex) {
+  const GradeReport report = grade_flip("flip_forgets_vertices.lua");
+  EXPECT_EQ(report.score, 5.478261);
+  EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.2", 2.478261}, {"4.4", 0.0}, {"4.5", 0.0}}));
+  EXPECT_NE(test_numbered(report, "4.2").output.find(
+                "FAILED: flip_edge(e0) of a cube: the mesh is not valid: v0: v0.halfedge is h0, but h0 leaves v6"),
+            std::string::npos)
+      << test_numbered(report, "4.2").output;
+}
+
+TEST(FlipSuite, FlippingABoundaryEdgeLosesOnlyThatTest) {
+  const GradeReport report = grade_flip("flip_boundary.lua");
+  EXPECT_EQ(report.score, 9.0);
+  EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.3", 0.0}}));
+  EXPECT_NE(test_numbered(report, "4.3").output.find(
+                "FAILED: flip_edge(e0) on the boundary of a 2x2 grid returns nil: expected nil, got e0"),
+            std::string::npos)
+      << test_numbered(report, "4.3").output;
+}
+
+}  // namespace
+}  // namespace meshedit
