@@ -24,7 +24,13 @@ EditorApp::EditorApp()
     : mesh_renderer_(std::make_unique<MeshRenderer>(shaders_)),
       patch_renderer_(std::make_unique<MeshRenderer>(shaders_)),
       overlay_renderer_(std::make_unique<OverlayRenderer>(shaders_)),
-      curve_(make_curve_editor(default_curve())) {}
+      curve_(make_curve_editor(default_curve())) {
+  lesson_host_ = std::make_unique<WindowLessonHost>(*this);
+  lesson_ = std::make_unique<LessonRunner>(*lesson_host_);
+  lesson_panel_.lessons_dir = lessons_dir();
+  refresh_lessons(lesson_panel_);
+  lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
+}
 
 EditorApp::~EditorApp() = default;
 
@@ -47,6 +53,7 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
 }
 
 bool EditorApp::open(const std::filesystem::path& path) {
+  if (path.extension() == ".lua") return open_lesson(path);
   try {
     const LoadedFile file = load_file(path);
     switch (file.kind) {
@@ -116,6 +123,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
   viewport_width_ = std::max(1, width);
   viewport_height_ = std::max(1, height);
   read_mouse_and_keys(width, height);
+  update_lesson(frame_ms);
 
   const glm::vec4 bg = mesh_renderer_->style().background;
   glViewport(0, 0, viewport_width_, viewport_height_);
@@ -152,6 +160,7 @@ void EditorApp::draw_mesh_view(int width, int height) {
   highlights.changed = doc_.last.index.elements();
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
   if (show_labels_) draw_id_labels(width, height);
+  draw_lesson_marks(width, height);
 }
 
 void EditorApp::draw_patch_view() {
@@ -185,13 +194,16 @@ void EditorApp::run_console(const std::string& code) {
 void EditorApp::draw_console() {
   if (!console_panel_.open) return;
   const ImGuiViewport* main = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + 8, main->Pos.y + main->Size.y - 300), ImGuiCond_FirstUseEver);
+  // Bottom middle: the lesson panel takes the bottom left.
+  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x * 0.37f, main->Pos.y + main->Size.y - 300),
+                          ImGuiCond_FirstUseEver);
   draw_console_panel(console_, console_panel_, doc_, selection_);
   keep_if_alive(selection_, doc_.mesh);  // a line may have deleted what was selected
 }
 
 void EditorApp::draw_view_panels(float frame_ms) {
   draw_console();
+  draw_lesson();
   if (mode_ != ViewMode::Mesh) return;
   const ImGuiViewport* main = ImGui::GetMainViewport();
   const float menu = ImGui::GetFrameHeight();

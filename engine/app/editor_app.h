@@ -17,14 +17,17 @@
 #include <optional>
 #include <string>
 
+#include "app/window_lesson_host.h"
 #include "core/bezier.h"
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
 #include "render/overlay_renderer.h"
 #include "render/shader_library.h"
 #include "render/view_options.h"
+#include "script/lesson_runner.h"
 #include "ui/curve_editor.h"
 #include "ui/inspector.h"
+#include "ui/lesson_panel.h"
 #include "ui/mesh_document.h"
 #include "ui/patch_view.h"
 #include "ui/pointer_tables.h"
@@ -55,6 +58,17 @@ class EditorApp {
   bool open(const std::filesystem::path& path);
   // Shows `mesh` as a new document (the default cube when started without a file).
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
+  // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
+  void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
+  void show_curve(const BezierCurve& curve);
+  void show_patches(const std::vector<BezierPatch>& patches);
+
+  // Loads a lesson file into the lesson panel (also what open() does with a .lua file). Returns whether it
+  // loaded; on failure the panel shows the error with file:line.
+  bool open_lesson(const std::filesystem::path& path);
+  LessonRunner& lesson() { return *lesson_; }
+  // True while something on screen moves by itself (a lesson animation): the window must not sleep.
+  bool animating() const;
 
   // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
   // size, and builds the panels. Call between ImGui::NewFrame() and ImGui::Render().
@@ -78,6 +92,9 @@ class EditorApp {
   void write_pending_screenshot(int width, int height);
 
   bool quit_requested() const { return quit_requested_; }
+  OrbitCamera& camera() { return camera_; }
+  void fit_view() { fit_camera(); }
+  void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
   MeshDocument& document() { return doc_; }
   Selection& selection() { return selection_; }
@@ -96,7 +113,11 @@ class EditorApp {
   void message(Severity severity, const std::string& text);
   void remember_recent(const std::filesystem::path& path);
   void fit_camera();
-  void reset_view();  // Space: back to the fitted view
+  bool apply_key(int key, KeyMods mods);
+  void draw_lesson_marks(int width, int height);
+  void update_lesson(float frame_ms);
+  void tell_lesson_key(int key, KeyMods mods);
+  void draw_lesson();
   Viewport viewport() const { return {viewport_width_, viewport_height_}; }
 
   ShaderLibrary shaders_;
@@ -113,6 +134,10 @@ class EditorApp {
   InspectorState inspector_;
   TablesState tables_;
   StatusBarState status_bar_;
+  std::unique_ptr<WindowLessonHost> lesson_host_;
+  std::unique_ptr<LessonRunner> lesson_;
+  LessonPanelState lesson_panel_;
+  ElementRef lesson_selection_;  // the selection the lesson last heard about
   ScriptConsole console_;
   ConsolePanelState console_panel_;
   CurveEditorState curve_;

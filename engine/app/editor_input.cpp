@@ -25,6 +25,12 @@ std::string timestamped_screenshot_name() {
 }  // namespace
 
 bool EditorApp::handle_key(int key, KeyMods mods) {
+  const bool handled = apply_key(key, mods);
+  tell_lesson_key(key, mods);  // after the key acted, so a lesson that waits for F sees the flipped mesh
+  return handled;
+}
+
+bool EditorApp::apply_key(int key, KeyMods mods) {
   // Keys that work in every view.
   if (mods.ctrl && key == GLFW_KEY_O) {
     show_open_panel_ = true;
@@ -100,6 +106,7 @@ void EditorApp::click(int x, int y) {
   if (picked.valid()) {
     select_element(doc_, selection_, picked);
     reveal_in_tables(tables_, picked);
+    if (lesson_->loaded()) lesson_->deliver(LessonEvent::click(picked));
   } else {
     selection_.selected = {};
   }

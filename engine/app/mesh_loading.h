@@ -27,5 +27,7 @@ PolygonMesh polygons_of(const LoadedFile& file, const std::filesystem::path& pat
 
 // The assets/ folder: beside the binary (installed layout), else in the source tree.
 std::filesystem::path assets_dir();
+// The lessons/ folder, found the same way.
+std::filesystem::path lessons_dir();
 
 }  // namespace meshedit

@@ -16,6 +16,8 @@ const std::map<std::string, int>& arities() {
       {"hover", 2},           {"open", 1},          {"save", 1},           {"screenshot", 1},
       {"expect-selected", 1}, {"expect-field", 3},  {"expect-changed", 2}, {"expect-message", -1},
       {"expect-valid", 0},    {"quit", 0},           {"console", -1},       {"expect-console", -1},
+      {"lesson-next", 0},     {"lesson-back", 0},   {"lesson-button", -1}, {"expect-lesson-step", 2},
+      {"expect-lesson-said", -1},
   };
   return table;
 }

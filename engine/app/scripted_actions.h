@@ -8,6 +8,8 @@
 //   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
 //   expect-message TEXT...         expect-valid        quit
 //   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)
+//   lesson-next   lesson-back   lesson-button LABEL...
+//   expect-lesson-step 3 waiting|finished|failed   expect-lesson-said TEXT...  (the step said TEXT)
 #pragma once
 
 #include <string>

@@ -115,6 +115,22 @@ class ActionPlayer {
     } else if (a.verb == "expect-message") {
       const std::string& got = app.document().message.text;
       if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "status line is '" + got + "'");
+    } else if (a.verb == "lesson-next") {
+      app.lesson().next();
+    } else if (a.verb == "lesson-back") {
+      app.lesson().back();
+    } else if (a.verb == "lesson-button") {
+      if (!app.lesson().deliver(LessonEvent::button(rest_of_line(a)))) fail(a, "the lesson is not waiting for it");
+    } else if (a.verb == "expect-lesson-step") {
+      const LessonRunner& lesson = app.lesson();
+      static const char* const states[] = {"empty", "waiting", "finished", "failed"};
+      const std::string got = std::to_string(lesson.current_step() + 1) + " " +
+                              states[int(lesson.step_state())];
+      if (got != args[0] + " " + args[1]) fail(a, "lesson is at step " + got + " (" + lesson.error() + ")");
+    } else if (a.verb == "expect-lesson-said") {
+      bool found = false;
+      for (const std::string& block : app.lesson().said()) found = found || block.find(rest_of_line(a)) != std::string::npos;
+      if (!found) fail(a, "the current step did not say it");
     } else if (a.verb == "console") {
       app.run_console(rest_of_line(a));
     } else if (a.verb == "expect-console") {
@@ -182,6 +198,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   auto last = std::chrono::steady_clock::now();
   float frame_ms = 0.0f;
   while (!window.should_close() && !app.quit_requested()) {
+    window.set_lazy(!player.active() && !app.animating());
     window.begin_frame();
     for (const std::string& dropped : window.take_dropped_files()) app.open(dropped);
     app.frame(window.framebuffer_width(), window.framebuffer_height(), frame_ms);

@@ -84,6 +84,19 @@ void OrbitCamera::orbit(double dx_pixels, double dy_pixels) {
   pitch_ = std::clamp(pitch_ + dy_pixels * kRadiansPerPixel, -kMaxPitch, kMaxPitch);
 }
 
+void OrbitCamera::set_angles(double yaw_degrees, double pitch_degrees) {
+  if (std::isfinite(yaw_degrees)) yaw_ = std::remainder(yaw_degrees * kPi / 180.0, 2.0 * kPi);
+  if (std::isfinite(pitch_degrees)) pitch_ = std::clamp(pitch_degrees * kPi / 180.0, -kMaxPitch, kMaxPitch);
+}
+
+void OrbitCamera::set_distance(double distance) {
+  if (std::isfinite(distance) && distance > 0.0) distance_ = distance;
+}
+
+void OrbitCamera::set_target(const glm::dvec3& target) {
+  if (std::isfinite(target.x) && std::isfinite(target.y) && std::isfinite(target.z)) target_ = target;
+}
+
 void OrbitCamera::pan(double dx_pixels, double dy_pixels, Viewport viewport) {
   const double height = std::max(1, viewport.height);
   const double world_per_pixel = 2.0 * distance_ * std::tan(fov_y_radians(viewport.aspect()) * 0.5) / height;

@@ -82,6 +82,12 @@ class OrbitCamera {
   void zoom(double steps);
 
   // Changing the up axis or the field of view changes what reset() returns to, not the current view.
+  // Sets the view directly (lessons ask for a view by angles): pitch is clamped to +-89 degrees, the
+  // distance to a positive value; non-finite values are ignored.
+  void set_angles(double yaw_degrees, double pitch_degrees);
+  void set_distance(double distance);
+  void set_target(const glm::dvec3& target);
+
   void set_up_axis(UpAxis axis);
   UpAxis up_axis() const { return up_axis_; }
   void set_fov_degrees(double degrees);

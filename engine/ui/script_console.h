@@ -50,6 +50,8 @@ class ScriptConsole {
   // Runs `code` against the document (see the invariants). Empty or blank code does nothing.
   void submit(MeshDocument& doc, const Selection& selection, const std::string& code);
 
+  // Adds output that comes from elsewhere (a lesson's print) to the transcript, under the same caps.
+  void append_output(std::string text) { add(ConsoleEntryKind::Output, std::move(text)); }
   const std::deque<ConsoleEntry>& entries() const { return entries_; }
   void clear() { entries_.clear(); }
   // Walks the history from the newest line (Up) back to the oldest; Down goes forward and ends at "".

@@ -239,3 +239,33 @@ TEST(OrbitCamera, ProjectionIsBehindTheEyeForPointsBehindIt) {
 
 }  // namespace
 }  // namespace meshedit
+
+namespace meshedit {
+namespace {
+
+TEST(OrbitCamera, SetAnglesDistanceAndTargetAreTakenAsGivenWithinTheirLimits) {
+  OrbitCamera camera;
+  camera.set_angles(45.0, 30.0);
+  camera.set_distance(7.5);
+  camera.set_target(glm::dvec3(1, 2, 3));
+  EXPECT_NEAR(camera.yaw_degrees(), 45.0, 1e-12);
+  EXPECT_NEAR(camera.pitch_degrees(), 30.0, 1e-12);
+  EXPECT_EQ(camera.distance(), 7.5);
+  EXPECT_EQ(camera.target(), glm::dvec3(1, 2, 3));
+  EXPECT_NEAR(glm::length(camera.eye() - camera.target()), 7.5, 1e-12);
+
+  camera.set_angles(400.0, 120.0);  // yaw wraps, pitch stops short of the pole
+  EXPECT_NEAR(camera.yaw_degrees(), 40.0, 1e-9);
+  EXPECT_NEAR(camera.pitch_degrees(), 89.0, 1e-9);
+  camera.set_distance(-1.0);
+  camera.set_distance(std::nan(""));
+  camera.set_target(glm::dvec3(std::nan(""), 0, 0));
+  camera.set_angles(std::nan(""), 10.0);  // only the finite angle is taken
+  EXPECT_EQ(camera.distance(), 7.5);
+  EXPECT_EQ(camera.target(), glm::dvec3(1, 2, 3));
+  EXPECT_NEAR(camera.yaw_degrees(), 40.0, 1e-9);
+  EXPECT_NEAR(camera.pitch_degrees(), 10.0, 1e-9);
+}
+
+}  // namespace
+}  // namespace meshedit

@@ -1,0 +1,158 @@
+// EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
+// selection, the lesson panel with hot reload, and the lesson's highlights and labels over the mesh.
+#include <GLFW/glfw3.h>
+#include <imgui.h>
+
+#include "app/editor_app.h"
+#include "app/mesh_loading.h"
+#include "render/labels.h"
+#include "render/mesh_geometry.h"
+
+namespace meshedit {
+namespace {
+
+ImU32 to_imgui(glm::vec3 colour) {
+  return IM_COL32(int(colour.r * 255.0f), int(colour.g * 255.0f), int(colour.b * 255.0f), 255);
+}
+
+// "F", "shift+L", "ctrl+Z", "Space": the names lessons wait for (lesson_events.h compares them ignoring case).
+std::string key_name(int key, KeyMods mods) {
+  std::string name;
+  if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) name = std::string(1, char('A' + (key - GLFW_KEY_A)));
+  else if (key == GLFW_KEY_SPACE) name = "Space";
+  else if (key == GLFW_KEY_ESCAPE) name = "Escape";
+  else return {};
+  if (mods.shift) name = "shift+" + name;
+  if (mods.ctrl) name = "ctrl+" + name;
+  return name;
+}
+
+}  // namespace
+
+void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
+  const bool was_mesh_view = mode_ == ViewMode::Mesh;
+  replace_mesh(doc_, mesh, "");
+  selection_ = {};
+  mode_ = ViewMode::Mesh;
+  mesh_renderer_->update(doc_.mesh);
+  if (fit || !was_mesh_view) fit_camera();
+}
+
+void EditorApp::show_curve(const BezierCurve& curve) {
+  curve_ = make_curve_editor(curve);
+  mode_ = ViewMode::Curve;
+}
+
+void EditorApp::show_patches(const std::vector<BezierPatch>& patches) {
+  patches_ = make_patch_view(patches);
+  mode_ = ViewMode::Patches;
+  update_tessellation(patches_);
+  if (patches_.tessellation.mesh) {
+    patch_renderer_->update(*patches_.tessellation.mesh);
+    camera_.fit(patch_renderer_->bounds());
+    camera_.zoom(-kFitZoomOutSteps);
+  }
+}
+
+bool EditorApp::open_lesson(const std::filesystem::path& path) {
+  const bool loaded = load_lesson(*lesson_, lesson_panel_, path);
+  lesson_selection_ = selection_.selected;
+  message(loaded ? Severity::Info : Severity::Error,
+          loaded ? "lesson " + path.filename().string() : lesson_->error());
+  if (loaded) title_ = "MeshEdit - " + lesson_->title();
+  return loaded;
+}
+
+bool EditorApp::animating() const {
+  return lesson_->step_state() == LessonRunner::StepState::Waiting &&
+         lesson_->waiting_for().kind == LessonWait::Kind::Animation;
+}
+
+void EditorApp::update_lesson(float frame_ms) {
+  if (!lesson_->loaded()) return;
+  // A selection made any way (a click, the tables, N/T walking, a scripted `select`) is news for the lesson.
+  if (selection_.selected != lesson_selection_) {
+    lesson_selection_ = selection_.selected;
+    if (selection_.selected.valid()) lesson_->deliver(LessonEvent::selection(selection_.selected));
+  }
+  const double dt = std::min(0.25, double(frame_ms) / 1000.0);  // a long stall must not skip an animation
+  reload_if_changed(*lesson_, lesson_panel_, dt);
+  lesson_->update(dt);
+}
+
+void EditorApp::tell_lesson_key(int key, KeyMods mods) {
+  if (!lesson_->loaded()) return;
+  const std::string name = key_name(key, mods);
+  if (!name.empty()) lesson_->deliver(LessonEvent::key(name));
+}
+
+void EditorApp::draw_lesson() {
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  // Bottom left, under the inspector: the mesh stays in the middle of the view.
+  ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + main->Size.y * 0.56f), ImGuiCond_FirstUseEver);
+  ImGui::SetNextWindowSize(ImVec2(std::min(440.0f, main->Size.x * 0.36f), main->Size.y * 0.39f), ImGuiCond_FirstUseEver);
+  draw_lesson_panel(*lesson_, lesson_panel_);
+  if (!lesson_panel_.requested) return;
+  const std::filesystem::path requested = *lesson_panel_.requested;
+  lesson_panel_.requested.reset();
+  if (requested.empty()) {  // "Lessons": back to the list with a fresh runner
+    lesson_host_->clear_annotations();
+    lesson_ = std::make_unique<LessonRunner>(*lesson_host_);
+    lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
+    return;
+  }
+  open_lesson(requested);
+}
+
+void EditorApp::draw_lesson_marks(int width, int height) {
+  const LessonMarks& marks = lesson_host_->marks();
+  if (marks.highlights.empty() && marks.labels.empty()) return;
+  const HalfedgeMesh& mesh = doc_.mesh;
+  Overlay overlay;
+  overlay.on_top = true;
+  for (const auto& [element, colour] : marks.highlights) {
+    const glm::vec4 rgba(colour, 1.0f);
+    if (!mesh.alive(element)) continue;
+    switch (element.kind) {
+      case ElementKind::Vertex:
+        overlay.points.push_back({mesh.position(VertexId(element.index)), rgba, 14.0f});
+        break;
+      case ElementKind::Edge:
+        if (const auto s = edge_segment(mesh, EdgeId(element.index))) {
+          overlay.lines.push_back({{glm::dvec3(s->start), glm::dvec3(s->end)}, rgba, 5.0f, false});
+        }
+        break;
+      case ElementKind::Halfedge:
+        if (const auto a = halfedge_arrow(mesh, HalfedgeId(element.index))) {
+          overlay.lines.push_back(
+              {{glm::dvec3(a->tail), glm::dvec3(a->tip), glm::dvec3(a->barb_inner)}, rgba, 4.0f, false});
+        }
+        break;
+      case ElementKind::Face:
+      case ElementKind::Boundary:
+        if (const auto corners = face_corners(mesh, element.face_id())) {
+          overlay.lines.push_back({*corners, rgba, 4.0f, true});
+        }
+        break;
+    }
+  }
+  overlay_renderer_->draw(camera_, viewport(), overlay);
+
+  const ImGuiIO& io = ImGui::GetIO();
+  const float to_window_x = width > 0 ? io.DisplaySize.x / float(width) : 1.0f;
+  const float to_window_y = height > 0 ? io.DisplaySize.y / float(height) : 1.0f;
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  for (const auto& [element, text] : marks.labels) {
+    const auto anchor = label_anchor(mesh, element);
+    if (!anchor) continue;
+    const ScreenPoint s = camera_.project(*anchor, viewport());
+    if (!s.in_front) continue;
+    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
+    const ImVec2 corner(float(s.pixel.x) * to_window_x - size.x * 0.5f, float(s.pixel.y) * to_window_y - size.y - 6);
+    draw->AddRectFilled(ImVec2(corner.x - 3, corner.y - 2), ImVec2(corner.x + size.x + 3, corner.y + size.y + 2),
+                        IM_COL32(20, 20, 20, 210), 3.0f);
+    draw->AddText(corner, to_imgui(glm::vec3(1.0f, 0.85f, 0.3f)), text.c_str());
+  }
+}
+
+}  // namespace meshedit

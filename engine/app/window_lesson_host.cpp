@@ -1,0 +1,48 @@
+// WindowLessonHost: see window_lesson_host.h.
+#include "app/window_lesson_host.h"
+
+#include "app/editor_app.h"
+
+namespace meshedit {
+
+void WindowLessonHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh) {
+  if (!mesh) return;
+  app_.show_lesson_mesh(*mesh, !shown_this_step_);
+  shown_this_step_ = true;
+}
+
+void WindowLessonHost::show_curve(const BezierCurve& curve) { app_.show_curve(curve); }
+
+void WindowLessonHost::show_patches(const std::vector<BezierPatch>& patches) { app_.show_patches(patches); }
+
+void WindowLessonHost::highlight(ElementRef element, glm::vec3 colour) {
+  marks_.highlights.emplace_back(element, colour);
+}
+
+void WindowLessonHost::label(ElementRef element, const std::string& text) { marks_.labels.emplace_back(element, text); }
+
+void WindowLessonHost::clear_annotations() {
+  marks_ = {};
+  shown_this_step_ = false;
+}
+
+void WindowLessonHost::camera(const CameraRequest& request) {
+  if (request.reset) app_.reset_view();
+  if (request.fit) app_.fit_view();
+  OrbitCamera& camera = app_.camera();
+  if (request.yaw_degrees || request.pitch_degrees) {
+    camera.set_angles(request.yaw_degrees.value_or(camera.yaw_degrees()),
+                      request.pitch_degrees.value_or(camera.pitch_degrees()));
+  }
+  if (request.distance) camera.set_distance(*request.distance);
+  if (request.target) camera.set_target(*request.target);
+}
+
+std::shared_ptr<HalfedgeMesh> WindowLessonHost::current_mesh() const {
+  if (app_.mode() != ViewMode::Mesh) return nullptr;
+  return std::make_shared<HalfedgeMesh>(app_.document().mesh);
+}
+
+ElementRef WindowLessonHost::current_selection() const { return app_.selection().selected; }
+
+}  // namespace meshedit

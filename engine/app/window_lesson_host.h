@@ -1,0 +1,51 @@
+// WindowLessonHost: what a lesson asks of the window (lesson_host.h), done with the EditorApp's document,
+// views and camera.
+//
+// Invariants:
+// - show_mesh copies the lesson's mesh into the document (the document owns what the window edits; the
+//   lesson keeps its own object). The first show of a step fits the camera; later shows in the same step keep
+//   the student's view.
+// - Highlights and labels live in LessonMarks until clear_annotations() (each step start); ids that are not
+//   in the shown mesh are kept but draw nothing.
+#pragma once
+
+#include <string>
+#include <utility>
+#include <vector>
+
+#include <glm/vec3.hpp>
+
+#include "script/lesson_host.h"
+
+namespace meshedit {
+
+class EditorApp;
+
+struct LessonMarks {
+  std::vector<std::pair<ElementRef, glm::vec3>> highlights;
+  std::vector<std::pair<ElementRef, std::string>> labels;
+};
+
+class WindowLessonHost : public LessonHost {
+ public:
+  explicit WindowLessonHost(EditorApp& app) : app_(app) {}
+
+  void show_mesh(std::shared_ptr<HalfedgeMesh> mesh) override;
+  void show_curve(const BezierCurve& curve) override;
+  void show_patches(const std::vector<BezierPatch>& patches) override;
+  void highlight(ElementRef element, glm::vec3 colour) override;
+  void label(ElementRef element, const std::string& text) override;
+  void clear_annotations() override;
+  void camera(const CameraRequest& request) override;
+  std::shared_ptr<HalfedgeMesh> current_mesh() const override;
+  ElementRef current_selection() const override;
+
+  const LessonMarks& marks() const { return marks_; }
+
+ private:
+  EditorApp& app_;
+  LessonMarks marks_;
+  bool shown_this_step_ = false;
+};
+
+}  // namespace meshedit

@@ -1,0 +1,149 @@
+// The lesson panel: see lesson_panel.h for the contract.
+#include "ui/lesson_panel.h"
+
+#include <algorithm>
+#include <system_error>
+
+#include <imgui.h>
+
+#include "script/lesson_text.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+
+fs::file_time_type modified(const fs::path& path) {
+  std::error_code ec;
+  const auto time = fs::last_write_time(path, ec);
+  return ec ? fs::file_time_type{} : time;
+}
+
+const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kHintColour(1.0f, 0.8f, 0.35f, 1.0f);
+
+void draw_lesson_list(LessonPanelState& state) {
+  ImGui::TextWrapped("Pick a lesson. Each one is a Lua file in %s; edit it and save, and the lesson reloads.",
+                     state.lessons_dir.string().c_str());
+  ImGui::Separator();
+  if (state.lesson_files.empty()) ImGui::TextDisabled("(no lessons found)");
+  for (const fs::path& file : state.lesson_files) {
+    if (ImGui::Selectable(file.stem().string().c_str())) state.requested = file;
+  }
+}
+
+// Lesson text is written with line breaks inside paragraphs; the panel wraps by itself, so a single line
+// break becomes a space. Blank lines (paragraphs) and lines starting a list item stay.
+std::string reflow(const std::string& text) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    const bool lone_break = text[i] == '\n' && i + 1 < text.size() && text[i + 1] != '\n' &&
+                            (i == 0 || text[i - 1] != '\n') && text.compare(i + 1, 2, "- ") != 0;
+    out += lone_break ? ' ' : text[i];
+  }
+  return out;
+}
+
+void draw_step_body(LessonRunner& runner) {
+  for (const std::string& block : runner.said()) {
+    ImGui::TextWrapped("%s", reflow(markdown_to_plain(block)).c_str());
+    ImGui::Spacing();
+  }
+  const LessonWait& wait = runner.waiting_for();
+  if (wait.kind == LessonWait::Kind::Button) {
+    if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
+  } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
+    ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
+  } else if (wait.waiting()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kHintColour);
+    ImGui::TextWrapped("-> %s", wait.hint.empty() ? wait.describe().c_str() : wait.hint.c_str());
+    ImGui::PopStyleColor();
+  }
+  if (runner.step_finished()) ImGui::TextDisabled("Step done: press Next.");
+}
+
+}  // namespace
+
+void refresh_lessons(LessonPanelState& state) {
+  state.lesson_files.clear();
+  std::error_code ec;
+  for (const auto& entry : fs::directory_iterator(state.lessons_dir, ec)) {
+    if (entry.path().extension() == ".lua") state.lesson_files.push_back(entry.path());
+  }
+  std::sort(state.lesson_files.begin(), state.lesson_files.end(), [](const fs::path& a, const fs::path& b) {
+    const bool a_welcome = a.stem() == "welcome", b_welcome = b.stem() == "welcome";
+    return a_welcome != b_welcome ? a_welcome : a.filename() < b.filename();
+  });
+}
+
+bool load_lesson(LessonRunner& runner, LessonPanelState& state, const fs::path& path) {
+  state.loaded_time = modified(path);
+  state.since_check = 0.0;
+  state.open = true;
+  return runner.load(path);
+}
+
+bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt) {
+  if (runner.path().empty()) return false;
+  state.since_check += dt;
+  if (state.since_check < LessonPanelState::kReloadCheckSeconds) return false;
+  state.since_check = 0.0;
+  const auto time = modified(runner.path());
+  if (time == state.loaded_time) return false;
+  state.loaded_time = time;
+  runner.reload();
+  return true;
+}
+
+void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
+  if (!state.open) return;
+  const std::string title = (runner.loaded() ? runner.title() : std::string("Lessons")) + "###lesson";
+  if (!ImGui::Begin(title.c_str(), &state.open)) {
+    ImGui::End();
+    return;
+  }
+  if (!runner.error().empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::TextWrapped("%s", runner.error().c_str());
+    ImGui::PopStyleColor();
+    ImGui::Separator();
+  }
+  if (!runner.loaded()) {
+    draw_lesson_list(state);
+    ImGui::End();
+    return;
+  }
+  const std::vector<std::string> steps = runner.step_titles();
+  const size_t current = runner.current_step();
+  const std::string step_line = "Step " + std::to_string(current + 1) + " of " + std::to_string(steps.size()) +
+                                ": " + (current < steps.size() ? steps[current] : std::string());
+  ImGui::SetNextItemWidth(-1);
+  if (ImGui::BeginCombo("##steps", step_line.c_str())) {
+    for (size_t i = 0; i < steps.size(); ++i) {
+      const std::string item = std::to_string(i + 1) + ". " + steps[i];
+      if (ImGui::Selectable(item.c_str(), i == current)) runner.go_to(i);
+    }
+    ImGui::EndCombo();
+  }
+  ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing()), false);
+  draw_step_body(runner);
+  ImGui::EndChild();
+  ImGui::BeginDisabled(current == 0);
+  if (ImGui::Button("< Back")) runner.back();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  ImGui::BeginDisabled(current + 1 >= steps.size());
+  if (ImGui::Button("Next >")) runner.next();
+  ImGui::EndDisabled();
+  ImGui::SameLine();
+  if (ImGui::Button("Reload")) runner.reload();
+  ImGui::SameLine();
+  if (ImGui::Button("Lessons")) {
+    refresh_lessons(state);
+    state.requested = fs::path();  // empty: back to the list
+  }
+  ImGui::End();
+}
+
+}  // namespace meshedit

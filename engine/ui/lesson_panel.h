@@ -1,0 +1,45 @@
+// The lesson panel: a lesson's title, its steps, what the current step said, what it waits for, its error
+// with file:line, and Back / Next / Reload; with no lesson loaded, the list of lessons to start.
+//
+// Invariants:
+// - The panel only reads the runner and calls its public actions (next, back, go_to, reload, deliver of a
+//   button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
+// - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
+//   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame.
+#pragma once
+
+#include <filesystem>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "script/lesson_runner.h"
+
+namespace meshedit {
+
+struct LessonPanelState {
+  static constexpr double kReloadCheckSeconds = 0.5;
+
+  bool open = true;
+  std::filesystem::path lessons_dir;                 // where the lesson list comes from
+  std::vector<std::filesystem::path> lesson_files;   // *.lua in lessons_dir, sorted; filled by refresh_lessons
+  std::optional<std::filesystem::path> requested;    // a lesson the user picked from the list this frame
+  std::filesystem::file_time_type loaded_time{};
+  double since_check = 0.0;
+};
+
+// Lists lessons_dir's *.lua files (welcome.lua first, then by name). A missing folder gives an empty list.
+void refresh_lessons(LessonPanelState& state);
+
+// Loads `path` into the runner and remembers its modification time for hot reload.
+bool load_lesson(LessonRunner& runner, LessonPanelState& state, const std::filesystem::path& path);
+
+// Reloads the lesson when its file changed on disk (checked at most every kReloadCheckSeconds of `dt`).
+// Returns whether it reloaded.
+bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt);
+
+// Draws the panel. A lesson picked from the list is left in state.requested for the caller to load (the app
+// also has to switch views).
+void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state);
+
+}  // namespace meshedit

@@ -1,0 +1,80 @@
+// Lessons in the real window under Xvfb: `meshedit lessons/welcome.lua` opens the lesson panel on its first
+// step; keys, a click on a vertex and Next reach the lesson through the same handlers a student uses, the
+// lesson's highlight and label are drawn, and a broken lesson shows its file:line without taking the window.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "app/editor_app.h"
+#include "app/window_test_support.h"
+#include "core/mesh_build.h"
+#include "core/primitives.h"
+#include "render/camera.h"
+#include "render/image_file.h"
+#include "render/mesh_geometry.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+using testing::run_window;
+using testing::WindowRun;
+using testing::XServer;
+namespace fs = std::filesystem;
+
+TEST(WindowLesson, TheWelcomeLessonFollowsKeysClicksAndNext) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path lesson = testing::source_dir() / "lessons" / "welcome.lua";
+
+  // The lesson shows the cube and the window fits it as it fits any mesh.
+  OrbitCamera camera;
+  camera.fit(mesh_bounds(build_halfedge_mesh(make_cube())));
+  camera.zoom(-EditorApp::kFitZoomOutSteps);
+  const ScreenPoint v7 = camera.project(build_halfedge_mesh(make_cube()).position(VertexId(7)), {1280, 800});
+  ASSERT_TRUE(v7.in_front);
+
+  std::ostringstream actions;
+  actions << "frames 3\n"
+          << "expect-lesson-step 1 finished\n"
+          << "expect-lesson-said is a workbench\n"
+          << "lesson-next\n"
+          << "expect-lesson-step 2 waiting\n"
+          << "key F\n"
+          << "expect-lesson-step 2 waiting\n"  // not the key it asked for
+          << "key W\n"
+          << "expect-lesson-step 2 finished\n"
+          << "lesson-next\n"
+          << "frames 2\n"
+          << "click " << int(v7.pixel.x) << " " << int(v7.pixel.y) << "\n"
+          << "expect-selected v7\n"
+          << "expect-lesson-step 3 finished\n"
+          << "expect-lesson-said You picked **v7**\n"
+          << "frames 2\n"
+          << "screenshot " << (dir / "lesson.png").string() << "\n"
+          << "frames 2\n"
+          << "lesson-back\n"
+          << "expect-lesson-step 2 waiting\n"  // Back runs the step again from its start
+          << "quit\n";
+  const WindowRun run = run_window(x.display(), lesson, actions.str(), dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_EQ(read_png(dir / "lesson.png").width, 1280);
+}
+
+TEST(WindowLesson, ABrokenLessonShowsFileAndLineAndTheWindowKeepsWorking) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path lesson = dir / "broken.lua";
+  std::ofstream(lesson) << "lesson{title = 'Broken'}\nstep('One', function()\n  say('hello')\n  nosuch()\nend)\n";
+  const std::string actions =
+      "frames 2\nexpect-lesson-step 1 failed\nexpect-message broken.lua\nselect e3\nkey F\n"
+      "expect-message flip e3\nexpect-valid\nquit\n";
+  const WindowRun run = run_window(x.display(), lesson, actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
+}  // namespace
+}  // namespace meshedit

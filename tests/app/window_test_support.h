@@ -1,0 +1,96 @@
+// Shared by the window tests: an X server (the existing DISPLAY or an Xvfb started for the test), running
+// the real binary with a scripted-actions file, and `expect-field` lines for every pointer of a mesh.
+#pragma once
+
+#include <signal.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <sstream>
+#include <string>
+
+#include "core/halfedge_mesh.h"
+
+namespace meshedit::testing {
+
+namespace fs = std::filesystem;
+
+
+// An X server for the test: the existing DISPLAY, or an Xvfb started here and stopped at the end.
+class XServer {
+ public:
+  XServer() {
+    if (const char* display = std::getenv("DISPLAY"); display && *display) {
+      display_ = display;
+      return;
+    }
+    if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) return;
+    for (int number = 90 + int(::getpid() % 50); number < 200; ++number) {
+      if (fs::exists("/tmp/.X11-unix/X" + std::to_string(number)) || fs::exists("/tmp/.X" + std::to_string(number) + "-lock")) continue;
+      pid_ = ::fork();
+      if (pid_ == 0) {
+        const std::string name = ":" + std::to_string(number);
+        ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp", (char*)nullptr);
+        ::_exit(127);
+      }
+      for (int tries = 0; tries < 100 && !fs::exists("/tmp/.X11-unix/X" + std::to_string(number)); ++tries) {
+        ::usleep(50000);
+      }
+      if (fs::exists("/tmp/.X11-unix/X" + std::to_string(number))) display_ = ":" + std::to_string(number);
+      return;
+    }
+  }
+  ~XServer() {
+    if (pid_ > 0) {
+      ::kill(pid_, SIGTERM);
+      ::waitpid(pid_, nullptr, 0);
+    }
+  }
+  const std::string& display() const { return display_; }
+
+ private:
+  std::string display_;
+  pid_t pid_ = -1;
+};
+
+struct WindowRun {
+  int status = -1;
+  std::string output;
+};
+
+inline WindowRun run_window(const std::string& display, const fs::path& mesh, const std::string& actions, const fs::path& dir) {
+  const fs::path script = dir / "actions.txt";
+  std::ofstream(script) << actions;
+  const fs::path log = dir / "log.txt";
+  const std::string command = "DISPLAY=" + display + " timeout 120 '" + std::string(MESHEDIT_BINARY) + "' '" +
+                              mesh.string() + "' --size 1280x800 --actions '" + script.string() + "' >'" +
+                              log.string() + "' 2>&1";
+  WindowRun run;
+  const int raw = std::system(command.c_str());
+  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
+  std::ifstream in(log);
+  std::stringstream text;
+  text << in.rdbuf();
+  run.output = text.str();
+  return run;
+}
+
+// `expect-field` lines for every pointer of every live element of `mesh`.
+inline std::string expect_every_pointer(const HalfedgeMesh& mesh) {
+  std::ostringstream out;
+  for (HalfedgeId h : mesh.halfedges()) {
+    out << "expect-field " << format_id(h) << " next " << format_id(mesh.next(h)) << "\n"
+        << "expect-field " << format_id(h) << " twin " << format_id(mesh.twin(h)) << "\n"
+        << "expect-field " << format_id(h) << " vertex " << format_id(mesh.vertex(h)) << "\n"
+        << "expect-field " << format_id(h) << " edge " << format_id(mesh.edge(h)) << "\n"
+        << "expect-field " << format_id(h) << " face " << format_id(mesh.face(h)) << "\n";
+  }
+  for (VertexId v : mesh.vertices()) out << "expect-field " << format_id(v) << " halfedge " << format_id(mesh.halfedge(v)) << "\n";
+  for (FaceId f : mesh.faces()) out << "expect-field " << format_id(f) << " halfedge " << format_id(mesh.halfedge(f)) << "\n";
+  return out.str();
+}
+
+}  // namespace meshedit::testing
