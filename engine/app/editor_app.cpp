@@ -58,18 +58,10 @@ bool EditorApp::open(const std::filesystem::path& path) {
     const LoadedFile file = load_file(path);
     switch (file.kind) {
       case FileKind::Curve:
-        curve_ = make_curve_editor(file.curve);
-        mode_ = ViewMode::Curve;
+        show_curve(file.curve);
         break;
       case FileKind::Patches:
-        patches_ = make_patch_view(file.patches);
-        mode_ = ViewMode::Patches;
-        update_tessellation(patches_);
-        if (patches_.tessellation.mesh) {
-          patch_renderer_->update(*patches_.tessellation.mesh);
-          camera_.fit(patch_renderer_->bounds());
-          camera_.zoom(-kFitZoomOutSteps);
-        }
+        show_patches(file.patches);
         break;
       case FileKind::Mesh:
         show_mesh(build_from_file(file.mesh, path).mesh, path.string());

@@ -11,6 +11,7 @@
 
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
+#include "script/binding_support.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -25,19 +26,6 @@ struct CurveBox {
 struct PatchBox {
   BezierPatch patch;
 };
-
-// Runs a binding with C++ exceptions (FileError, bad_alloc) turned into Lua errors; the message is copied
-// out first so the Lua error (a C++ throw in this build of Lua) starts after the C++ exception is done.
-template <lua_CFunction F>
-int guarded(lua_State* L) {
-  std::string message;
-  try {
-    return F(L);
-  } catch (const std::exception& e) {
-    message = e.what();
-  }
-  return luaL_error(L, "%s", message.c_str());
-}
 
 // ---- conversions ------------------------------------------------------------------------------------
 
