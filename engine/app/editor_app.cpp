@@ -54,6 +54,7 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
 
 bool EditorApp::open(const std::filesystem::path& path) {
   if (path.extension() == ".lua") return open_lesson(path);
+  exercises_.finish_replay(doc_);
   try {
     const LoadedFile file = load_file(path);
     switch (file.kind) {
@@ -179,6 +180,7 @@ void EditorApp::draw_patch_view() {
 void EditorApp::run_console(const std::string& code) {
   console_panel_.open = true;
   console_panel_.scroll_to_bottom = true;
+  exercises_.finish_replay(doc_);
   console_.submit(doc_, selection_, code);
   keep_if_alive(selection_, doc_.mesh);
 }
@@ -196,6 +198,12 @@ void EditorApp::draw_console() {
 void EditorApp::draw_view_panels(float frame_ms) {
   draw_console();
   draw_lesson();
+  if (mode_ == ViewMode::Mesh) {  // also when closed: the session notices edits made elsewhere
+    const ImGuiViewport* viewport = ImGui::GetMainViewport();
+    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x * 0.3f, viewport->Pos.y + 60), ImGuiCond_FirstUseEver);
+    draw_exercise_panel(exercises_, exercise_panel_, doc_, selection_);
+    keep_if_alive(selection_, doc_.mesh);
+  }
   if (mode_ != ViewMode::Mesh) return;
   const ImGuiViewport* main = ImGui::GetMainViewport();
   const float menu = ImGui::GetFrameHeight();

@@ -26,6 +26,7 @@
 #include "render/view_options.h"
 #include "script/lesson_runner.h"
 #include "ui/curve_editor.h"
+#include "ui/exercise_panel.h"
 #include "ui/inspector.h"
 #include "ui/lesson_panel.h"
 #include "ui/mesh_document.h"
@@ -83,6 +84,7 @@ class EditorApp {
   // Opens the console and runs `code` in it, as if typed there and Enter pressed.
   void run_console(const std::string& code);
   const ScriptConsole& console() const { return console_; }
+  ExerciseSession& exercises() { return exercises_; }
 
   // Saves the current mesh (.obj .gltf .glb); reports the outcome in the status line.
   bool save(const std::filesystem::path& path);
@@ -138,6 +140,8 @@ class EditorApp {
   std::unique_ptr<LessonRunner> lesson_;
   LessonPanelState lesson_panel_;
   ElementRef lesson_selection_;  // the selection the lesson last heard about
+  ExerciseSession exercises_;
+  ExercisePanelState exercise_panel_;
   ScriptConsole console_;
   ConsolePanelState console_panel_;
   CurveEditorState curve_;

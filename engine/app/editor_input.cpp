@@ -31,6 +31,14 @@ bool EditorApp::handle_key(int key, KeyMods mods) {
 }
 
 bool EditorApp::apply_key(int key, KeyMods mods) {
+  // An edit or an undo in the middle of a replay would leave a half-replayed state in the history.
+  for (int edit_key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_Z, GLFW_KEY_Y}) {
+    if (key == edit_key) exercises_.finish_replay(doc_);
+  }
+  if (key == GLFW_KEY_X && !mods.ctrl) {
+    exercise_panel_.open = !exercise_panel_.open;
+    return true;
+  }
   // Keys that work in every view.
   if (mods.ctrl && key == GLFW_KEY_O) {
     show_open_panel_ = true;
@@ -123,7 +131,7 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
     for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
                     GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
-                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT}) {
+                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X}) {
       if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
     }
   }

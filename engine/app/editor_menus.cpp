@@ -75,6 +75,7 @@ void EditorApp::draw_menu_bar() {
     ImGui::Separator();
     ImGui::MenuItem("Inspector", "I", &inspector_.open);
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
+    ImGui::MenuItem("Exercises: mine vs reference", "X", &exercise_panel_.open);
     if (ImGui::MenuItem("Lua console", "`", &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
     if (ImGui::MenuItem("Reset view", "Space")) reset_view();
     ImGui::EndMenu();
@@ -155,6 +156,7 @@ void EditorApp::draw_help_panel() {
         {"I", "inspector"},
         {"E", "curve view: one more de Casteljau level"},
         {"Space", "reset the view"},
+        {"X", "exercises: run your flip/split/upsample/normals (scripts/student) or the reference; replay writes"},
         {"` (backquote)", "Lua console: `mesh` is the mesh shown, `selected` the selection; Up/Down for history"},
         {"P", "screenshot (PNG in the current folder)"},
         {"Ctrl+O", "open a file (or drop one on the window)"},

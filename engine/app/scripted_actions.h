@@ -10,6 +10,7 @@
 //   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)
 //   lesson-next   lesson-back   lesson-button LABEL...
 //   expect-lesson-step 3 waiting|finished|failed   expect-lesson-said TEXT...  (the step said TEXT)
+//   exercise flip FOLDER   run-mine   run-reference   replay-start   replay-step K   replay-finish
 #pragma once
 
 #include <string>

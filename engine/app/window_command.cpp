@@ -131,6 +131,22 @@ class ActionPlayer {
       bool found = false;
       for (const std::string& block : app.lesson().said()) found = found || block.find(rest_of_line(a)) != std::string::npos;
       if (!found) fail(a, "the current step did not say it");
+    } else if (a.verb == "exercise") {
+      const auto exercise = find_exercise(args[0]);
+      if (!exercise || !app.exercises().set_exercise(*exercise)) throw std::runtime_error("no mesh exercise " + args[0]);
+      app.exercises().set_folder(args[1]);
+    } else if (a.verb == "run-mine" || a.verb == "run-reference") {
+      ExerciseSession& session = app.exercises();
+      const Check check = a.verb == "run-mine" ? session.run_mine(app.document(), app.selection())
+                                               : session.run_reference(app.document(), app.selection());
+      if (!check) fail(a, check.reason);
+    } else if (a.verb == "replay-start") {
+      if (const Check check = app.exercises().start_replay(app.document()); !check) fail(a, check.reason);
+    } else if (a.verb == "replay-step") {
+      const Check check = app.exercises().replay_step(app.document(), std::stoul(args[0]));
+      if (!check) fail(a, check.reason);
+    } else if (a.verb == "replay-finish") {
+      app.exercises().finish_replay(app.document());
     } else if (a.verb == "console") {
       app.run_console(rest_of_line(a));
     } else if (a.verb == "expect-console") {

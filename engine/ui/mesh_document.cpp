@@ -167,6 +167,15 @@ bool step_history(MeshDocument& doc, bool forward) {
 bool undo(MeshDocument& doc) { return step_history(doc, false); }
 bool redo(MeshDocument& doc) { return step_history(doc, true); }
 
+void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from) {
+  HalfedgeMesh before = from ? std::move(*from) : doc.mesh;
+  const uint64_t old_version = doc.mesh.version();
+  doc.mesh = std::move(mesh);
+  doc.mesh.bump_version_above(old_version);  // caches keyed by version must not take it for the old state
+  record_last_change(doc, std::move(label), std::move(before));
+  set_message(doc, Severity::Info, change_summary(doc));
+}
+
 size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit) {
   size_t count = 0;
   // Slots present in only one of the two meshes: every field of theirs counts (diff lists them all).

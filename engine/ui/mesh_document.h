@@ -2,7 +2,7 @@
 // message line the status bar shows.
 //
 // Invariants:
-// - Every change to `mesh` goes through apply_operation(), undo(), redo() or replace_mesh(); code that
+// - Every change to `mesh` goes through apply_operation(), undo(), redo(), replace_mesh() or show_state(); code that
 //   assigns `mesh` directly must call replace_mesh() instead, or the caches below may describe another mesh.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
 //   same version()); only `message` changes.
@@ -164,6 +164,12 @@ auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
 // "undo flip e5" / "redo flip e5". Return false and set a message when there is nothing to undo/redo.
 bool undo(MeshDocument& doc);
 bool redo(MeshDocument& doc);
+
+// Shows `mesh` in the document without touching history (the exercise replay steps through a recorded
+// operation this way): the mesh is replaced, its version moves above the old one, and `last` becomes the diff
+// from `from` (default: the mesh shown until now) to `mesh`, labelled `label`. generation and history stay.
+void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
+                std::optional<HalfedgeMesh> from = std::nullopt);
 
 // How many fields differ between the two states (the rules of core diff(), so it equals diff().size()), or
 // some number above `limit` once the count passes it (it stops early). O(slots); allocates nothing.

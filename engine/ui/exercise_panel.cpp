@@ -1,0 +1,255 @@
+// The Exercises panel: see exercise_panel.h for the contract.
+#include "ui/exercise_panel.h"
+
+#include <algorithm>
+#include <unordered_map>
+#include <utility>
+
+#include <imgui.h>
+
+#include "core/history.h"
+
+namespace meshedit {
+namespace {
+
+const ImVec4 kRed(1.0f, 0.45f, 0.4f, 1.0f);
+const ImVec4 kGreen(0.5f, 0.9f, 0.5f, 1.0f);
+const ImVec4 kGrey(0.65f, 0.65f, 0.65f, 1.0f);
+const ImVec4 kCurrent(1.0f, 0.75f, 0.3f, 1.0f);
+
+void text(const std::string& line) { ImGui::TextUnformatted(line.c_str(), line.c_str() + line.size()); }
+
+void coloured(const ImVec4& colour, const std::string& line) {
+  ImGui::PushStyleColor(ImGuiCol_Text, colour);
+  ImGui::TextWrapped("%s", line.c_str());
+  ImGui::PopStyleColor();
+}
+
+void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_validation) {
+  ImGui::PushID(who);  // "yours" and "the reference" each have their own tree nodes
+  if (!outcome.error.empty()) {
+    coloured(kRed, std::string(who) + " failed: " + outcome.error);
+  } else if (!outcome.refused.empty()) {
+    text(std::string(who) + " refused: " + outcome.refused);
+  } else if (outcome.ran) {
+    text(std::string(who) + " returned " + outcome.returned);
+  }
+  if (show_validation && outcome.validation) {
+    const ValidationReport& report = *outcome.validation;
+    coloured(report.ok() ? kGreen : kRed, std::string(who) + " after the call: " + report.summary());
+    if (!report.ok() && ImGui::TreeNode("problems", "%s: %zu problems", who, report.total)) {
+      for (const Violation& violation : report.violations) text(violation.message);
+      ImGui::TreePop();
+    }
+  }
+  if (!outcome.output.empty() && ImGui::TreeNode("print", "print output (%zu lines)", outcome.output.size())) {
+    for (const std::string& line : outcome.output) text(line);
+    ImGui::TreePop();
+  }
+  ImGui::PopID();
+}
+
+void draw_report(const ExerciseRun& run) {
+  const ExerciseReport& report = run.report;
+  text(run.label + "  (" + run.input.describe(run.exercise) + ")");
+  if (!run.mine) {
+    draw_outcome("the reference", report.reference, false);
+    return;
+  }
+  if (report.identical) {
+    coloured(kGreen, "identical to the reference (pointer for pointer)");
+  } else if (report.equal) {
+    coloured(kGreen, "equal to the reference (up to renumbering and rounding)");
+  } else {
+    coloured(kRed, report.summary());
+  }
+  if (!report.differences.empty() && ImGui::TreeNodeEx("differences", ImGuiTreeNodeFlags_DefaultOpen, "differences (%zu)",
+                                                       report.total_differences)) {
+    for (const std::string& line : report.differences) coloured(kRed, "- " + line);
+    if (report.total_differences > report.differences.size())
+      text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
+    ImGui::TreePop();
+  }
+  if (!report.notes.empty() && ImGui::TreeNode("notes", "notes (%zu)", report.notes.size())) {
+    for (const std::string& line : report.notes) text("- " + line);
+    ImGui::TreePop();
+  }
+  draw_outcome("yours", report.mine, true);
+  draw_outcome("the reference", report.reference, false);
+}
+
+void draw_pointer_table(const std::vector<PointerRow>& rows) {
+  if (rows.empty()) return;
+  const size_t differing = size_t(std::count_if(rows.begin(), rows.end(), [](const PointerRow& r) { return r.differs(); }));
+  if (!ImGui::CollapsingHeader("changed pointers, mine vs reference", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  text(std::to_string(rows.size()) + " fields changed, " + std::to_string(differing) + " differ");
+  const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY;
+  if (!ImGui::BeginTable("pointers", 4, flags, ImVec2(0, 220))) return;
+  ImGui::TableSetupScrollFreeze(0, 1);
+  ImGui::TableSetupColumn("field");
+  ImGui::TableSetupColumn("before");
+  ImGui::TableSetupColumn("mine");
+  ImGui::TableSetupColumn("reference");
+  ImGui::TableHeadersRow();
+  ImGuiListClipper clipper;
+  clipper.Begin(int(rows.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const PointerRow& row = rows[size_t(i)];
+      ImGui::TableNextRow();
+      ImGui::TableNextColumn();
+      text(format_id(row.element) + "." + row.field);
+      ImGui::TableNextColumn();
+      text(row.before);
+      for (const std::string* value : {&row.mine, &row.reference}) {
+        ImGui::TableNextColumn();
+        if (row.differs()) {
+          ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImVec4(0.55f, 0.1f, 0.1f, 0.65f)));
+        }
+        text(*value);
+      }
+    }
+  }
+  ImGui::EndTable();
+}
+
+void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc) {
+  const size_t n = session.replay_length();
+  if (n == 0) return;
+  if (!ImGui::CollapsingHeader("replay your writes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  const bool replaying = session.replaying();
+  if (!replaying) {
+    ImGui::BeginDisabled(!session.can_replay(doc));
+    if (ImGui::Button("Replay")) session.start_replay(doc);
+    ImGui::EndDisabled();
+    ImGui::SameLine();
+    text(std::to_string(n) + " writes recorded");
+  } else {
+    const size_t k = session.replay_position();
+    if (ImGui::Button("|<")) session.replay_step(doc, 0);
+    ImGui::SameLine();
+    if (ImGui::Button("<")) session.replay_step(doc, k == 0 ? 0 : k - 1);
+    ImGui::SameLine();
+    if (ImGui::Button(">")) session.replay_step(doc, k + 1);
+    ImGui::SameLine();
+    if (ImGui::Button(">|")) session.replay_step(doc, n);
+    ImGui::SameLine();
+    if (ImGui::Button("Done")) session.finish_replay(doc);
+    int slider = int(session.replay_position());
+    ImGui::SetNextItemWidth(-1);
+    const std::string format = "write %d/" + std::to_string(n);
+    if (ImGui::SliderInt("##k", &slider, 0, int(n), format.c_str())) {
+      session.replay_step(doc, size_t(std::max(slider, 0)));
+    }
+  }
+  const std::vector<RecordedEdit>& edits = session.edits();
+  const size_t current = session.replaying() ? session.replay_position() : 0;
+  state.writes_drawn = 0;
+  ImGui::BeginChild("writes", ImVec2(0, 180), true);
+  ImGuiListClipper clipper;
+  clipper.Begin(int(edits.size()));
+  while (clipper.Step()) {
+    for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
+      const RecordedEdit& edit = edits[size_t(i)];
+      const std::string line = std::to_string(i + 1) + ". " + describe(edit) + (edit.where.empty() ? "" : "   " + edit.where);
+      const bool is_current = session.replaying() && size_t(i) + 1 == current;
+      const bool done = session.replaying() && size_t(i) + 1 < current;
+      ImGui::PushStyleColor(ImGuiCol_Text, is_current ? kCurrent : done ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kGrey);
+      if (ImGui::Selectable((line + "##w" + std::to_string(i)).c_str(), is_current) && session.replaying()) {
+        session.replay_step(doc, size_t(i) + 1);
+      }
+      ImGui::PopStyleColor();
+      ++state.writes_drawn;
+    }
+  }
+  if (state.follow_replay && session.replaying() && current > 0) {
+    const float row = ImGui::GetTextLineHeightWithSpacing();
+    const float y = row * float(current - 1);
+    if (y < ImGui::GetScrollY() || y > ImGui::GetScrollY() + ImGui::GetWindowHeight() - 2 * row) {
+      ImGui::SetScrollY(y - ImGui::GetWindowHeight() * 0.5f);
+    }
+  }
+  ImGui::EndChild();
+}
+
+}  // namespace
+
+std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows) {
+  std::vector<PointerRow> rows;
+  const HalfedgeMesh* before = run.input.mesh.get();
+  const HalfedgeMesh* mine = run.report.mine.mesh.get();
+  const HalfedgeMesh* reference = run.report.reference.mesh.get();
+  if (!run.mine || !before || !mine || !reference) return rows;
+  std::unordered_map<std::string, size_t> index;
+  auto key = [](const FieldChange& c) { return format_id(c.element) + "." + c.field; };
+  const std::vector<FieldChange> mine_changes = diff(*before, *mine);
+  const std::vector<FieldChange> reference_changes = diff(*before, *reference);
+  for (const FieldChange& change : mine_changes) {
+    if (rows.size() >= max_rows) break;
+    index.emplace(key(change), rows.size());
+    rows.push_back({change.element, change.field, change.before, change.after, change.before});
+  }
+  for (const FieldChange& change : reference_changes) {
+    const auto found = index.find(key(change));
+    if (found != index.end()) {
+      rows[found->second].reference = change.after;
+    } else if (rows.size() < max_rows) {
+      // Only the reference changed it: mine still holds the value from before.
+      rows.push_back({change.element, change.field, change.before, change.before, change.after});
+    }
+  }
+  return rows;
+}
+
+void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
+                         Selection& selection) {
+  session.sync(doc);
+  if (!state.open) return;
+  ImGui::SetNextWindowSize(ImVec2(520, 640), ImGuiCond_FirstUseEver);
+  if (!ImGui::Begin("Exercises", &state.open)) {
+    ImGui::End();
+    return;
+  }
+  const ExerciseInfo& active = exercise_info(session.exercise());
+  ImGui::SetNextItemWidth(220);
+  if (ImGui::BeginCombo("exercise", active.title)) {
+    for (const Exercise exercise : mesh_exercises()) {
+      const ExerciseInfo& info = exercise_info(exercise);
+      if (ImGui::Selectable(info.title, exercise == session.exercise())) session.set_exercise(exercise);
+    }
+    ImGui::EndCombo();
+  }
+  text(session.file().string());
+  ImGui::TextDisabled("%s", active.signature);
+  const bool run_mine = ImGui::Button("Run mine");
+  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+  state.run_mine_x = 0.5f * (low.x + high.x);
+  state.run_mine_y = 0.5f * (low.y + high.y);
+  if (run_mine) session.run_mine(doc, selection);
+  ImGui::SameLine();
+  if (ImGui::Button("Run reference")) session.run_reference(doc, selection);
+  if (session.loads() > 0 && session.file_changed()) {  // two stat calls a frame
+    ImGui::SameLine();
+    ImGui::TextDisabled("(saved since the last run: reloads on the next)");
+  }
+  if (!session.load_error().empty()) coloured(kRed, session.load_error());
+  ImGui::Separator();
+
+  const std::optional<ExerciseRun>& run = session.last_run();
+  if (run) {
+    draw_report(*run);
+    if (run->serial != state.rows_serial) {
+      state.rows = (run->exercise == Exercise::FlipEdge || run->exercise == Exercise::SplitEdge)
+                       ? pointer_rows(*run, ExercisePanelState::kMaxPointerRows)
+                       : std::vector<PointerRow>{};
+      state.rows_serial = run->serial;
+    }
+    draw_pointer_table(state.rows);
+    if (run->mine) draw_replay(session, state, doc);
+  } else if (session.load_error().empty()) {
+    ImGui::TextDisabled("select an element and press Run mine");
+  }
+  ImGui::End();
+}
+
+}  // namespace meshedit

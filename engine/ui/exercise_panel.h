@@ -1,0 +1,53 @@
+// The "Exercises" panel: choose a mesh exercise, run the student's function ("mine") or the reference on the
+// selection, read the report (verdict, differences, notes, validation of mine, print output, errors with
+// file:line), compare the changed pointers side by side, and replay the student's writes one by one.
+//
+// Invariants:
+// - The panel draws and forwards clicks; every change to the document goes through ExerciseSession.
+// - The side-by-side rows are computed once per run (ExerciseRun::serial), not per frame, and at most
+//   kMaxPointerRows are kept; the write list is clipped (ImGuiListClipper), so a long recording costs O(rows
+//   on screen) per frame.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "core/halfedge_mesh.h"
+#include "ui/exercise_session.h"
+#include "ui/mesh_document.h"
+#include "ui/selection.h"
+
+namespace meshedit {
+
+// One changed field in the side-by-side table: its value before the run, in mine and in the reference.
+struct PointerRow {
+  ElementRef element;
+  std::string field;
+  std::string before;
+  std::string mine;
+  std::string reference;
+  bool differs() const { return mine != reference; }
+};
+
+// Every field that mine or the reference changed (from the run's input), in the order of core diff(): rows
+// only one side changed show the unchanged value on the other. Empty for runs without both meshes.
+std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows);
+
+struct ExercisePanelState {
+  static constexpr size_t kMaxPointerRows = 5000;
+  bool open = false;
+  bool follow_replay = true;      // scroll the write list to the current write
+  uint64_t rows_serial = 0;       // the run the cached rows belong to
+  std::vector<PointerRow> rows;
+  size_t writes_drawn = 0;        // rows of the write list drawn in the last frame (tests)
+  float run_mine_x = -1.0f;       // where "Run mine" was drawn in the last frame, its centre (tests click it)
+  float run_mine_y = -1.0f;
+};
+
+// Draws the "Exercises" window (nothing when state.open is false).
+void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
+                         Selection& selection);
+
+}  // namespace meshedit

@@ -1,0 +1,275 @@
+// ExerciseSession: see exercise_session.h for the contract.
+//
+// Kept here: the document is only written through apply_operation (the run, one undo entry) and show_state
+// (replay frames, no history), and every replay frame is rebuilt from the run's before-mesh with core replay(),
+// so stepping backwards is as exact as stepping forwards.
+#include "ui/exercise_session.h"
+
+#include <algorithm>
+#include <exception>
+#include <system_error>
+#include <utility>
+
+#include "core/mesh_error.h"
+#include "script/lua_runtime.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+const char* operation_word(Exercise exercise) {
+  switch (exercise) {
+    case Exercise::FlipEdge: return "flip";
+    case Exercise::SplitEdge: return "split";
+    case Exercise::VertexNormal: return "normal";
+    case Exercise::Upsample: return "upsample";
+    default: return exercise_info(exercise).name;
+  }
+}
+
+// The input the active exercise takes from the selection, or why the selection does not fit.
+OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, const Selection& selection) {
+  auto mesh = std::make_shared<const HalfedgeMesh>(doc.mesh);
+  switch (exercise) {
+    case Exercise::FlipEdge:
+    case Exercise::SplitEdge: {
+      const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
+      if (!edge.ok()) return {edge.check, {}};
+      return {Check::yes(), ExerciseInput::edge(std::move(mesh), edge.value)};
+    }
+    case Exercise::VertexNormal: {
+      const ElementRef ref = selection.selected;
+      if (!ref.valid() || ref.kind != ElementKind::Vertex) return {Check::no("select a vertex first"), {}};
+      if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
+      return {Check::yes(), ExerciseInput::vertex(std::move(mesh), VertexId(ref.index))};
+    }
+    case Exercise::Upsample: return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
+    default: break;
+  }
+  return {Check::no(std::string(exercise_info(exercise).name) + " is not a mesh exercise"), {}};
+}
+
+std::string point_text(const std::vector<glm::dvec3>& points) {
+  if (points.empty()) return "nothing";
+  const glm::dvec3& p = points.front();
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+}
+
+}  // namespace
+
+std::filesystem::path default_student_folder() {
+  // engine/ui/exercise_session.cpp -> the source tree.
+  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "scripts" / "student";
+}
+
+std::vector<Exercise> mesh_exercises() {
+  return {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
+}
+
+bool is_mesh_exercise(Exercise exercise) {
+  const auto all = mesh_exercises();
+  return std::find(all.begin(), all.end(), exercise) != all.end();
+}
+
+ExerciseSession::ExerciseSession(std::filesystem::path folder) : folder_(std::move(folder)) {}
+
+void ExerciseSession::set_folder(std::filesystem::path folder) {
+  folder_ = std::move(folder);
+  code_.reset();
+  loaded_path_.clear();
+}
+
+bool ExerciseSession::set_exercise(Exercise exercise) {
+  if (!is_mesh_exercise(exercise)) return false;
+  if (exercise != exercise_) {
+    exercise_ = exercise;
+    code_.reset();
+    loaded_path_.clear();
+  }
+  return true;
+}
+
+std::filesystem::path ExerciseSession::file() const { return folder_ / exercise_info(exercise_).file; }
+
+bool ExerciseSession::file_changed() const {
+  if (!code_ || loaded_path_ != file()) return true;
+  std::error_code error;
+  const auto time = std::filesystem::last_write_time(loaded_path_, error);
+  if (error) return true;
+  const auto size = std::filesystem::file_size(loaded_path_, error);
+  return error || time != loaded_time_ || size != loaded_size_;
+}
+
+bool ExerciseSession::ensure_loaded() {
+  if (!file_changed()) return true;
+  const std::filesystem::path path = file();
+  code_.reset();
+  loaded_path_.clear();
+  std::error_code error;
+  // Taken before loading: a save during the load makes the next run load again rather than miss it.
+  const auto time = std::filesystem::last_write_time(path, error);
+  const auto size = error ? uintmax_t(0) : std::filesystem::file_size(path, error);
+  ++loads_;
+  try {
+    code_ = load_student_file(path);
+  } catch (const std::exception& e) {
+    load_error_ = e.what();
+    return false;
+  }
+  load_error_.clear();
+  loaded_path_ = path;
+  loaded_time_ = time;
+  loaded_size_ = size;
+  return true;
+}
+
+Check ExerciseSession::run_mine(MeshDocument& doc, Selection& selection) { return run(doc, selection, true); }
+Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { return run(doc, selection, false); }
+
+Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
+  finish_replay(doc);
+  const std::string who = mine ? "mine" : "reference";
+  OpResult<ExerciseInput> input = input_for(exercise_, doc, selection);
+  if (!input.ok()) {
+    set_message(doc, Severity::Warning, who + ": " + input.check.reason);
+    return input.check;
+  }
+  if (mine && !ensure_loaded()) {
+    run_.reset();
+    set_message(doc, Severity::Error, load_error_);
+    return Check::no(load_error_);
+  }
+
+  ExerciseRun result;
+  result.exercise = exercise_;
+  result.mine = mine;
+  result.serial = ++runs_;
+  std::string target = input.value.element.valid() ? " " + format_id(input.value.element) : std::string();
+  result.label = who + ": " + operation_word(exercise_) + target;
+  result.input = input.value;
+  try {
+    if (mine) {
+      RunOptions options;
+      options.record_edits = true;
+      result.report = check_exercise(*code_, exercise_, result.input, options);
+    } else {
+      result.report.exercise = exercise_;
+      result.report.reference = meshedit::run_reference(exercise_, result.input);
+    }
+  } catch (const std::exception& e) {  // check_exercise promises not to throw; a bug must not close the window
+    set_message(doc, Severity::Error, result.label + ": " + e.what());
+    run_.reset();
+    return Check::no(e.what());
+  }
+
+  const ExerciseOutcome& outcome = mine ? result.report.mine : result.report.reference;
+  const bool failed = !outcome.error.empty();
+  if (failed && mine) result.label = "mine (error): " + std::string(operation_word(exercise_)) + target;
+  Check check = Check::yes();
+  if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) {
+    const uint64_t seen = doc.mesh.version();
+    check = apply_operation(doc, result.label, [&](HalfedgeMesh& mesh) {
+      mesh = *outcome.mesh;
+      mesh.bump_version_above(seen);
+      return Check::yes();
+    });
+    result.applied = check.ok;
+    keep_if_alive(selection, doc.mesh);
+  }
+  // The status line says what happened beyond "N fields changed".
+  std::string verdict;
+  if (failed) {
+    verdict = outcome.error;
+  } else if (!mine) {
+    verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
+    if (exercise_ == Exercise::VertexNormal) verdict = "normal " + point_text(outcome.points);
+  } else {
+    verdict = result.report.summary();
+    if (outcome.validation && !outcome.validation->ok()) verdict += "; yours is invalid: " + outcome.validation->summary();
+  }
+  const std::string changed = result.applied ? doc.message.text : result.label + ": nothing changed";
+  set_message(doc, failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info,
+              changed + " (" + verdict + ")");
+  result.generation = doc.generation;
+  result.version = doc.mesh.version();
+  run_ = std::move(result);
+  if (failed) return Check::no(outcome.error);
+  return check;
+}
+
+const std::vector<RecordedEdit>& ExerciseSession::edits() const {
+  static const std::vector<RecordedEdit> none;
+  return run_ && run_->mine ? run_->report.mine.edits : none;
+}
+
+size_t ExerciseSession::replay_length() const { return edits().size(); }
+
+bool ExerciseSession::can_replay(const MeshDocument& doc) const {
+  if (!run_ || !run_->mine || !run_->applied || edits().empty() || !run_->input.mesh) return false;
+  if (replaying_) return true;
+  return doc.generation == run_->generation && doc.mesh.version() == run_->version;
+}
+
+void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
+                           std::optional<HalfedgeMesh> from) {
+  show_state(doc, std::move(mesh), std::move(label), std::move(from));
+  shown_generation_ = doc.generation;
+  shown_version_ = doc.mesh.version();
+}
+
+Check ExerciseSession::start_replay(MeshDocument& doc) {
+  if (!can_replay(doc)) {
+    const Check no = Check::no("nothing to replay: run mine on a mesh exercise first (and do not edit in between)");
+    set_message(doc, Severity::Warning, no.reason);
+    return no;
+  }
+  replaying_ = true;
+  position_ = 0;
+  const HalfedgeMesh& before = *run_->input.mesh;
+  show(doc, before, "replay 0/" + std::to_string(replay_length()) + ": before " + run_->label, before);
+  return Check::yes();
+}
+
+Check ExerciseSession::replay_step(MeshDocument& doc, size_t k) {
+  if (!replaying_) return Check::no("no replay in progress");
+  k = std::min(k, replay_length());
+  const HalfedgeMesh& before = *run_->input.mesh;
+  const std::vector<RecordedEdit>& log = edits();
+  try {
+    HalfedgeMesh previous = replay(before, log, k == 0 ? 0 : k - 1);
+    HalfedgeMesh state = previous;
+    std::string label = "replay 0/" + std::to_string(log.size()) + ": before " + run_->label;
+    if (k > 0) {
+      apply_edit(state, log[k - 1]);
+      const RecordedEdit& edit = log[k - 1];
+      label = "replay " + std::to_string(k) + "/" + std::to_string(log.size()) + ": " + describe(edit) +
+              (edit.where.empty() ? "" : "  (" + edit.where + ")");
+    }
+    show(doc, std::move(state), std::move(label), std::move(previous));
+  } catch (const std::exception& e) {
+    // The recording promises a faithful replay; if it is not, say so and go back to the real result.
+    const Check no = Check::no(std::string("replay failed at write ") + std::to_string(k) + ": " + e.what());
+    finish_replay(doc);
+    set_message(doc, Severity::Error, no.reason);
+    return no;
+  }
+  position_ = k;
+  return Check::yes();
+}
+
+void ExerciseSession::finish_replay(MeshDocument& doc) {
+  if (!replaying_) return;
+  sync(doc);
+  if (!replaying_) return;  // the document moved on: leave it alone
+  replaying_ = false;
+  const HalfedgeMesh& before = *run_->input.mesh;
+  show(doc, *run_->report.mine.mesh, run_->label, before);
+  run_->generation = doc.generation;
+  run_->version = doc.mesh.version();
+}
+
+void ExerciseSession::sync(const MeshDocument& doc) {
+  if (replaying_ && (doc.generation != shown_generation_ || doc.mesh.version() != shown_version_)) replaying_ = false;
+}
+
+}  // namespace meshedit
