@@ -1,0 +1,363 @@
+// The part 4, 5, 6 and "bring your own mesh" lessons: each runs headless with its answers file through every
+// step (run_lesson_headless, as CI's `meshedit lesson --headless` does) and says the numbers the core gives;
+// driven step by step on a HeadlessHost, the labels and highlights name the right elements, and each check
+// waits until the mesh on screen really is right (a wrong edit leaves the step waiting).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <filesystem>
+#include <iterator>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <glm/geometric.hpp>
+
+#include "core/loop_subdivision.h"
+#include "core/mesh_build.h"
+#include "core/mesh_ops.h"
+#include "core/primitives.h"
+#include "script/headless_host.h"
+#include "script/lesson_headless.h"
+#include "script/lesson_runner.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+std::filesystem::path lesson_path(const std::string& name) { return testing::source_dir() / "lessons" / (name + ".lua"); }
+
+// Runs lessons/NAME.lua headless with tests/script/lessons/NAME_answers.lua; expects every step to pass with
+// every answer awaited and used. Returns the transcript.
+std::string run_headless(const std::string& name, size_t steps) {
+  std::ostringstream out;
+  const auto answers = testing::source_dir() / "tests" / "script" / "lessons" / (name + "_answers.lua");
+  const HeadlessOutcome outcome = run_lesson_headless(lesson_path(name), answers, out);
+  const std::string text = out.str();
+  EXPECT_EQ(outcome.failure, "") << text;
+  EXPECT_EQ(outcome.steps, steps) << text;
+  EXPECT_EQ(outcome.passed, steps) << text;
+  EXPECT_FALSE(contains(text, "not awaited")) << text;
+  EXPECT_FALSE(contains(text, "not used")) << text;
+  EXPECT_FALSE(contains(text, "**")) << "markdown is printed as plain text";
+  return text;
+}
+
+// Everything the current step said, joined.
+std::string said(const LessonRunner& runner) {
+  std::string all;
+  for (const std::string& block : runner.said()) all += block + "\n";
+  return all;
+}
+
+std::string colour_of(const HeadlessHost& host, ElementRef element) {
+  const auto it = host.highlights().find(element);
+  return it == host.highlights().end() ? "" : colour_hex(it->second);
+}
+
+std::string label_of(const HeadlessHost& host, ElementRef element) {
+  const auto it = host.labels().find(element);
+  return it == host.labels().end() ? "" : it->second;
+}
+
+size_t step_index(const LessonRunner& runner, const std::string& title) {
+  const std::vector<std::string> titles = runner.step_titles();
+  const auto it = std::find(titles.begin(), titles.end(), title);
+  EXPECT_NE(it, titles.end()) << title;
+  return static_cast<size_t>(it - titles.begin());
+}
+
+// Applies an edit to a copy of the screen mesh and puts it back, as the window's key would.
+template <class Edit>
+void edit_screen(HeadlessHost& host, Edit&& edit) {
+  std::shared_ptr<HalfedgeMesh> mesh = host.current_mesh();
+  ASSERT_TRUE(mesh);
+  edit(*mesh);
+  host.set_current_mesh(mesh);
+}
+
+// The diamond as the lessons build it: a, b, c, d = v0..v3, f0 = (a, b, c), f1 = (b, a, d).
+HalfedgeMesh diamond() {
+  PolygonMesh polygons;
+  polygons.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
+  polygons.add_face({0, 1, 2});
+  polygons.add_face({1, 0, 3});
+  return build_halfedge_mesh(polygons);
+}
+
+// ---- part 4: edge flip ----
+
+TEST(LessonsB, EdgeFlipPassesHeadlessAndListsTheChangedFields) {
+  const std::string text = run_headless("4_edge_flip", 4);
+  EXPECT_EQ(text.rfind("Part 4: Edge flip (4_edge_flip.lua, 4 steps)\n", 0), 0u) << text;
+  EXPECT_TRUE(contains(text, "  > selection e0\n")) << text;
+  EXPECT_TRUE(contains(text, "  > flip e0\n\n  Flipped. e now runs from d to c, and the mesh still passes validation."))
+      << text;
+  // The diagram's names for the ids the builder gives: h1 is stored as h3, h2 as h1, h3 as h2.
+  EXPECT_TRUE(contains(text, "h0 is h0, h1 is h3, h2 is h1, h3 is h2, h4 is h4, h5 is h5.")) << text;
+  // The diff, in the diagram's names: exactly the after-list of mesh_ops.h.
+  EXPECT_TRUE(contains(text, "every field the flip changed (10 in all)")) << text;
+  for (const char* line : {"- h0.next: h2 to h3", "- h0.vertex: a to d", "- h2.next: h3 to h1", "- h2.face: f0 to f1",
+                           "- h3.next: h0 to h4", "- h1.next: h4 to h5", "- h1.vertex: b to c", "- h4.next: h5 to h0",
+                           "- h4.face: f1 to f0", "- h5.next: h1 to h2"}) {
+    EXPECT_TRUE(contains(text, std::string("  ") + line + "\n")) << line << "\n" << text;
+  }
+}
+
+TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("4_edge_flip"))) << runner.error();
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  const HalfedgeMesh mesh = diamond();
+  const HalfedgeId h0 = mesh.halfedge(EdgeId(0));
+  const HalfedgeId h1 = mesh.twin(h0), h2 = mesh.next(h0), h3 = mesh.next(h2), h4 = mesh.next(h1),
+                   h5 = mesh.next(h4);
+  EXPECT_EQ(h1, HalfedgeId(3));
+  EXPECT_EQ(h2, HalfedgeId(1));
+  const std::pair<ElementRef, std::string> expected[] = {
+      {VertexId(0), "a"},     {VertexId(1), "b"},     {VertexId(2), "c"},     {VertexId(3), "d"},
+      {FaceId(0), "f0"},      {FaceId(1), "f1"},      {h0, "h0"},             {h1, "h1"},
+      {h2, "h2"},             {h3, "h3"},             {h4, "h4"},             {h5, "h5"},
+      {mesh.twin(h2), "h6"},  {mesh.twin(h3), "h7"},  {mesh.twin(h4), "h8"},  {mesh.twin(h5), "h9"}};
+  EXPECT_EQ(host.labels().size(), std::size(expected));
+  for (const auto& [element, name] : expected) EXPECT_EQ(label_of(host, element), name) << format_id(element);
+  EXPECT_TRUE(mesh.is_boundary(mesh.twin(h2)));
+  EXPECT_EQ(colour_of(host, EdgeId(0)), "#ffe600");
+}
+
+TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("4_edge_flip")));
+  runner.go_to(step_index(runner, "Flip it yourself"));
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Selection);
+  host.set_selection(EdgeId(0));
+  ASSERT_TRUE(runner.deliver(LessonEvent::selection(EdgeId(0))));
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Condition);
+  // A split is not a flip: the step keeps waiting.
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(0)).ok()); });
+  runner.update(0.0);
+  EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting);
+  // Undo it (a fresh diamond), then flip.
+  host.set_current_mesh(std::make_shared<HalfedgeMesh>(diamond()));
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(flip(m, EdgeId(0)).ok()); });
+  runner.update(0.0);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  EXPECT_TRUE(contains(said(runner), "e now runs from **d** to **c**")) << said(runner);
+  // The next step highlights exactly the elements whose fields changed.
+  runner.next();
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  for (ElementRef changed : {ElementRef(HalfedgeId(0)), ElementRef(HalfedgeId(1)), ElementRef(HalfedgeId(2)),
+                             ElementRef(HalfedgeId(3)), ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5))}) {
+    EXPECT_EQ(colour_of(host, changed), "#ff8000") << format_id(changed);
+  }
+  EXPECT_EQ(host.highlights().size(), 6u);
+}
+
+// ---- part 5: edge split ----
+
+TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
+  const std::string text = run_headless("5_edge_split", 4);
+  EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
+      << text;
+  EXPECT_TRUE(contains(text, "edges ea = e5, ec = e6, ed = e7; faces g0 = f2 and g1 = f3; halfedges n0 to n5 = h10 "
+                             "to h15. The mesh now has 5 vertices, 8 edges, 4 faces"))
+      << text;
+  EXPECT_TRUE(contains(text, "now runs from v4 (m) to v1 (b).")) << text;
+  // The grid: e0 is the bottom row's first boundary edge; m = v9 at its midpoint, on the boundary.
+  EXPECT_TRUE(contains(text, "This grid has 9 vertices, 16 edges, 8 faces. Click the yellow edge on its bottom row (e0)"))
+      << text;
+  HalfedgeMesh grid = build_halfedge_mesh(make_grid(2, 2));
+  ASSERT_TRUE(grid.is_boundary(EdgeId(0)));
+  const OpResult<VertexId> m = split(grid, EdgeId(0));
+  ASSERT_TRUE(m.ok());
+  EXPECT_EQ(m.value, VertexId(9));
+  EXPECT_TRUE(contains(text, "m = v9 sits on the boundary at (0.5, 0, 0) with " +
+                                 std::to_string(grid.degree(m.value)) + " neighbours. The mesh has 10 vertices, "
+                                 "18 edges, 9 faces"))
+      << text;
+  EXPECT_TRUE(contains(text, "m's halfedge is " + format_id(grid.halfedge(m.value)) + ", which lies on the boundary"))
+      << text;
+}
+
+TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("5_edge_split")));
+  runner.go_to(step_index(runner, "Split the middle edge"));
+  host.set_selection(EdgeId(0));
+  ASSERT_TRUE(runner.deliver(LessonEvent::selection(EdgeId(0))));
+  runner.update(0.0);
+  EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "selecting is not splitting";
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(0)).ok()); });
+  runner.update(0.0);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  EXPECT_EQ(label_of(host, VertexId(4)), "m");
+  EXPECT_EQ(label_of(host, EdgeId(5)), "ea");
+  EXPECT_EQ(label_of(host, EdgeId(6)), "ec");
+  EXPECT_EQ(label_of(host, EdgeId(7)), "ed");
+  EXPECT_EQ(label_of(host, FaceId(2)), "g0");
+  EXPECT_EQ(label_of(host, FaceId(3)), "g1");
+  EXPECT_EQ(colour_of(host, VertexId(4)), "#ffe600");
+  EXPECT_EQ(colour_of(host, EdgeId(6)), "#ff8000");
+  // The core's documented ids: ec = e6 joins m and c (v2), ed = e7 joins m and d (v3).
+  const HalfedgeMesh* screen = host.screen_mesh();
+  ASSERT_TRUE(screen);
+  EXPECT_EQ(screen->vertex(screen->halfedge(EdgeId(6))), VertexId(4));
+  EXPECT_EQ(screen->vertex(screen->twin(screen->halfedge(EdgeId(6)))), VertexId(2));
+  EXPECT_EQ(screen->vertex(screen->twin(screen->halfedge(EdgeId(7)))), VertexId(3));
+}
+
+// ---- part 6: Loop subdivision ----
+
+TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
+  const std::string text = run_headless("6_loop_subdivision", 10);
+  EXPECT_TRUE(contains(text, "The yellow vertex v0 has 6 neighbours, so u = 0.0625: it will go from (-0.5, -0.5, "
+                             "-0.5) to (-0.3125, -0.3125, -0.3125).")) << text;
+  EXPECT_TRUE(contains(text, "Every one of the 18 original edges has been split with the same split as part 5. The "
+                             "mesh now has 26 vertices, 72 edges, 48 faces")) << text;
+  EXPECT_TRUE(contains(text, "Of the 36 edges the splits made across faces, 12 joined an old vertex to a new one"))
+      << text;
+  EXPECT_TRUE(contains(text, "give exactly the mesh the app's L gives")) << text;
+  EXPECT_TRUE(contains(text, "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << text;
+  EXPECT_TRUE(contains(text, "the degrees of v0 to v7 are 6, 4, 4, 4, 4, 4, 4, 6.")) << text;
+  EXPECT_TRUE(contains(text, "All six split: 14 vertices, 36 edges, 24 faces, and every corner has degree 6.")) << text;
+  EXPECT_TRUE(contains(text, "After two steps: 194 vertices, 576 edges, 384 faces. All 8 corners are 0.5954 from the "
+                             "centre")) << text;
+  EXPECT_TRUE(contains(text, "Now 25 vertices, 56 edges, 32 faces, still 1 boundary loop. The corner moved from (0, 0, "
+                             "0) to (0.125, 0.125, 0)")) << text;
+
+  // The asymmetry numbers are the core's: corners of the plain cube after two steps.
+  HalfedgeMesh cube = build_halfedge_mesh(make_cube());
+  ASSERT_TRUE(loop_subdivide(cube).ok);
+  ASSERT_TRUE(loop_subdivide(cube).ok);
+  double lo = 1e9, hi = 0;
+  for (uint32_t i = 0; i < 8; ++i) {
+    const double r = glm::length(cube.position(VertexId(i)));
+    lo = std::min(lo, r);
+    hi = std::max(hi, r);
+  }
+  char range[96];
+  std::snprintf(range, sizeof range, "the 8 corners are between %.4f and %.4f from the centre", lo, hi);
+  EXPECT_TRUE(contains(text, range)) << range << "\n" << text;
+  EXPECT_GT(hi - lo, 0.05);
+}
+
+TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("6_loop_subdivision")));
+  // The core's phases on the same cube.
+  HalfedgeMesh cube = build_halfedge_mesh(make_cube());
+  OpResult<LoopState> state = loop_compute_positions(cube);
+  ASSERT_TRUE(state.ok());
+  loop_split_edges(cube, state.value);
+
+  runner.go_to(step_index(runner, "Phase 2: split every edge"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  const HalfedgeMesh* screen = host.screen_mesh();
+  ASSERT_TRUE(screen);
+  ASSERT_EQ(screen->vertex_capacity(), cube.vertex_capacity());
+  for (uint32_t i = 0; i < cube.vertex_capacity(); ++i) {
+    EXPECT_EQ(screen->position(VertexId(i)), cube.position(VertexId(i))) << i;
+    EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? "#ffe600" : "") << i;
+  }
+  size_t cross = 0;
+  for (EdgeId e : cube.edges()) {
+    const bool is_cross = e.index < state.value.is_new_edge.size() && state.value.is_new_edge[e.index];
+    cross += is_cross;
+    EXPECT_EQ(colour_of(host, e), is_cross ? "#ff8000" : "") << format_id(e);
+  }
+  EXPECT_EQ(cross, 36u);
+
+  loop_flip_edges(cube, state.value);
+  runner.go_to(step_index(runner, "Phase 3: flip"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  screen = host.screen_mesh();
+  for (HalfedgeId h : cube.halfedges()) {
+    EXPECT_EQ(screen->next(h), cube.next(h)) << format_id(h);
+    EXPECT_EQ(screen->vertex(h), cube.vertex(h)) << format_id(h);
+  }
+  EXPECT_EQ(host.highlights().size(), 12u);
+
+  loop_commit_positions(cube, state.value);
+  runner.go_to(step_index(runner, "Phase 4: move"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  screen = host.screen_mesh();
+  for (VertexId v : cube.vertices()) {
+    EXPECT_NEAR(glm::length(screen->position(v) - cube.position(v)), 0.0, 1e-12) << format_id(v);
+  }
+}
+
+TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("6_loop_subdivision")));
+  runner.go_to(step_index(runner, "The pre-split fix"));
+  const uint32_t diagonals[] = {2, 7, 11, 14, 16, 17};
+  for (uint32_t e : diagonals) EXPECT_EQ(colour_of(host, EdgeId(e)), "#ffe600") << e;
+  EXPECT_EQ(host.highlights().size(), 6u);
+  for (size_t i = 0; i < 5; ++i) {
+    edit_screen(host, [&](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(diagonals[i])).ok()); });
+    runner.update(0.0);
+    EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << i;
+  }
+  // The sixth split meets the first check; the second waits for two steps of L.
+  edit_screen(host, [&](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(diagonals[5])).ok()); });
+  runner.update(0.0);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting);
+  EXPECT_TRUE(contains(said(runner), "All six split: 14 vertices, 36 edges, 24 faces")) << said(runner);
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(loop_subdivide(m).ok); });
+  runner.update(0.0);
+  EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "one L of two";
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(loop_subdivide(m).ok); });
+  runner.update(0.0);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  EXPECT_TRUE(contains(said(runner), "All 8 corners are 0.5954 from the centre")) << said(runner);
+}
+
+// ---- bring your own mesh ----
+
+TEST(LessonsB, BringYourOwnMeshPassesHeadlessOnTheStandIn) {
+  const std::string text = run_headless("byo_mesh", 4);
+  EXPECT_TRUE(contains(text, "Your mesh has 12 vertices, 30 edges, 20 faces and 0 boundary loop(s). Its Euler "
+                             "characteristic V - E + F is 2: a closed surface like a sphere. The validator says: valid."))
+      << text;
+  EXPECT_TRUE(contains(text, "Three triangles on one edge (a \"fin\"): from_polygons: the edge between vertices 0 and "
+                             "1 is shared by 3 faces")) << text;
+  EXPECT_TRUE(contains(text, "Two triangles facing opposite ways: from_polygons: faces 0 and 1 both go from vertex 0 "
+                             "to vertex 1")) << text;
+  EXPECT_TRUE(contains(text, "Two triangles touching at one vertex (a bow-tie): from_polygons: vertex 0 is a bow-tie"))
+      << text;
+  EXPECT_TRUE(contains(text, "Subdivided: 42 vertices, 120 edges, 80 faces")) << text;
+}
+
+TEST(LessonsB, BringYourOwnMeshReadsTheStudentsMesh) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("byo_mesh")));
+  runner.go_to(step_index(runner, "Open it"));
+  // The student opens a grid of quads: the lesson reports its boundary and asks for triangles.
+  PolygonMesh quads;
+  quads.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
+  quads.add_face({0, 1, 2, 3});
+  quads.add_face({1, 4, 5, 2});
+  host.set_current_mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(quads)));
+  ASSERT_TRUE(runner.deliver(LessonEvent::button("My mesh is open")));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  const std::string text = said(runner);
+  EXPECT_TRUE(contains(text, "Your mesh has 6 vertices, 7 edges, 2 faces and 1 boundary loop(s). Its Euler "
+                             "characteristic V - E + F is 1.")) << text;
+  EXPECT_TRUE(contains(text, "Some faces have 4 sides")) << text;
+  runner.go_to(step_index(runner, "Subdivide it"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  EXPECT_TRUE(contains(said(runner), "Loop subdivision needs triangles")) << said(runner);
+}
+
+}  // namespace
+}  // namespace meshedit
