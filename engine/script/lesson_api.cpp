@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <cstring>
 #include <exception>
+#include <filesystem>
 #include <initializer_list>
 #include <memory>
 #include <optional>
@@ -541,6 +542,15 @@ int api_current_mesh(lua_State* L) {
   return 1;
 }
 
+// Not tied to a phase: a lesson may load its assets at the top level as well as inside a step.
+int api_lesson_file(lua_State* L) {
+  const std::filesystem::path relative(luaL_checkstring(L, 1));
+  const LessonScript& script = script_of(L);
+  const std::filesystem::path full = relative.is_absolute() ? relative : script.directory / relative;
+  lua_pushstring(L, full.lexically_normal().string().c_str());
+  return 1;
+}
+
 int api_selection(lua_State* L) {
   require_step(L, "selection()");
   LessonHost& host = *script_of(L).host;
@@ -634,6 +644,7 @@ void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
   set_function(L, script, "camera", lesson_guarded<api_camera>);
   set_function(L, script, "current_mesh", lesson_guarded<api_current_mesh>);
   set_function(L, script, "selection", lesson_guarded<api_selection>);
+  set_function(L, script, "lesson_file", lesson_guarded<api_lesson_file>);
   lua_newtable(L);
   set_function(L, script, "check_wait", lesson_guarded<api_check_wait>);
   set_function(L, script, "wait", lesson_guarded<api_wait>);

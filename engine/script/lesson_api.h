@@ -25,6 +25,8 @@
 //   camera "fit" | "reset" | { fit =, reset =, yaw =, pitch = (degrees), distance =, target = point }
 //   current_mesh() -> a copy of the mesh on screen (with the student's edits), or nil
 //   selection()    -> the selected element (a handle on a copy of the mesh on screen), or nil
+//   lesson_file(relative) -> the path of a file next to the lesson ("../assets/teapot.bez" from lessons/),
+//                            for meshedit.load/load_patches/load_curve; callable at any phase
 //
 // Invariants:
 // - `lesson{}` and `step()` are accepted only while the file's top level runs (phase Loading); scene calls
@@ -37,6 +39,7 @@
 // - Host calls are made with C++ exceptions turned into Lua errors: nothing thrown crosses a Lua frame.
 #pragma once
 
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -62,6 +65,7 @@ struct LessonScript {
   Phase phase = Phase::Loading;
   std::string title, summary;
   std::vector<LessonStepDef> steps;
+  std::filesystem::path directory;  // the lesson file's folder (lesson_file() resolves against it); may be empty
 
   // The running step (phase Step): its coroutine, what it said, what it waits for.
   lua_State* step_thread = nullptr;

@@ -80,6 +80,7 @@ bool LessonRunner::load_file(size_t index) {
 
   auto script = std::make_unique<LessonScript>();
   script->host = &host_;
+  script->directory = path_.parent_path();  // lesson_file() finds assets next to the lesson
   std::unique_ptr<LuaRuntime> runtime;
   busy_ = true;
   std::string failure;

@@ -1,0 +1,205 @@
+// The lessons for parts 1-3 (lessons/1_de_casteljau.lua, 2_bezier_patches.lua, 3_halfedge_walks.lua): each
+// passes every step headless with its answers file, says the numbers the core computes, rejects a wrong quiz
+// answer, and marks the elements its walks really reach (checked against the core mesh's own pointers through
+// HeadlessHost). Also lesson_file(), which the teapot lesson uses to find assets/teapot.bez.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <set>
+#include <sstream>
+#include <string>
+
+#include "core/bezier.h"
+#include "core/mesh_build.h"
+#include "core/primitives.h"
+#include "io/bez_io.h"
+#include "script/headless_host.h"
+#include "script/lesson_headless.h"
+#include "script/lesson_runner.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
+
+struct Headless {
+  HeadlessOutcome outcome;
+  std::string text;
+};
+
+Headless run(const std::string& stem) {
+  const auto source = testing::source_dir();
+  std::ostringstream out;
+  Headless result;
+  result.outcome = run_lesson_headless(source / "lessons" / (stem + ".lua"),
+                                       source / "tests" / "script" / "lessons" / (stem + "_answers.lua"), out);
+  result.text = out.str();
+  return result;
+}
+
+std::filesystem::path lesson_path(const std::string& stem) {
+  return testing::source_dir() / "lessons" / (stem + ".lua");
+}
+
+TEST(LessonsA, DeCasteljauPassesEveryStep) {
+  const Headless r = run("1_de_casteljau");
+  ASSERT_EQ(r.outcome.failure, "") << r.text;
+  EXPECT_EQ(r.outcome.steps, 6u);
+  EXPECT_EQ(r.outcome.passed, 6u);
+  // The levels of (0,0) (1,2) (3,2) (4,0) at t = 0.5, worked by hand.
+  EXPECT_TRUE(contains(r.text, "  - level 1: (0.5, 1), (2, 2), (3.5, 1)\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  - level 2: (1.25, 1.5), (2.75, 1.5)\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  - level 3: (2, 1.5)\n")) << r.text;
+  // The quiz: a wrong count does not move the step on; the right one does.
+  EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 3)\n  > key 3\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  Right: 3.")) << r.text;
+  // B(0.25) = 27/64 P0 + 27/64 P1 + 9/64 P2 + 1/64 P3 = (0.90625, 1.125).
+  EXPECT_TRUE(contains(r.text, "At t = 0.25 it is (0.90625, 1.125)")) << r.text;
+  EXPECT_TRUE(contains(r.text, "left half has control points (0, 0), (0.5, 1), (1.25, 1.5), (2, 1.5) and the right "
+                               "half (2, 1.5), (2.75, 1.5), (3.5, 1), (4, 0). Checked against the levels: they "
+                               "match."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "  > button Continue (pressed)\n")) << r.text;
+}
+
+TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndTracesIt) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("1_de_casteljau"))) << runner.error();
+  ASSERT_TRUE(host.shown_curve().has_value());
+  EXPECT_EQ(host.shown_curve()->control_points,
+            (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
+  runner.go_to(3);  // "Moving t": the animation shows the left part of the split, growing with t
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Animation);
+  host.clear_calls();
+  runner.update(1.5);  // half of the 3 s animation: t = 0.5
+  ASSERT_TRUE(host.shown_curve().has_value());
+  EXPECT_EQ(host.shown_curve()->control_points,
+            (std::vector<glm::dvec2>{{0, 0}, {0.5, 1}, {1.25, 1.5}, {2, 1.5}}));
+  EXPECT_EQ(host.calls(), (std::vector<std::string>{"show_curve 4 points"}));
+}
+
+TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
+  const Headless r = run("2_bezier_patches");
+  ASSERT_EQ(r.outcome.failure, "") << r.text;
+  EXPECT_EQ(r.outcome.steps, 5u);
+  EXPECT_EQ(r.outcome.passed, 5u);
+  // The hill at (0.5, 0.5): rows 0 and 3 are flat (z 0), rows 1 and 2 reach z 1.5 in their middle; the column
+  // (0, 1.5, 1.5, 0) at 0.5 is 1.125.
+  EXPECT_TRUE(contains(r.text, "the four row points are (1.5, 0, 0), (1.5, 1, 1.5), (1.5, 2, 1.5), (1.5, 3, 0), and "
+                               "the column curve through them gives (1.5, 1.5, 1.125)."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 5)\n  > key 5\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "made of 32 Bézier patches")) << r.text;
+  EXPECT_TRUE(contains(r.text, "only 512 control points")) << r.text;
+  EXPECT_TRUE(contains(r.text, "The same point.")) << r.text;
+  EXPECT_FALSE(contains(r.text, "They differ!")) << r.text;
+}
+
+TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("2_bezier_patches"))) << runner.error();
+  ASSERT_EQ(host.shown_patches().size(), 1u);
+  EXPECT_EQ(host.shown_patches()[0].points[5], glm::dvec3(1, 1, 2));   // row 1, column 1: raised
+  EXPECT_EQ(host.shown_patches()[0].points[4], glm::dvec3(0, 1, 0));   // row 1, column 0: flat edge
+  runner.go_to(2);
+  ASSERT_EQ(runner.error(), "");
+  const std::vector<BezierPatch> teapot = read_bez(testing::source_dir() / "assets" / "teapot.bez");
+  ASSERT_EQ(teapot.size(), 32u);
+  ASSERT_EQ(host.shown_patches().size(), teapot.size());
+  for (size_t i = 0; i < teapot.size(); ++i) EXPECT_EQ(host.shown_patches()[i].points, teapot[i].points) << i;
+}
+
+TEST(LessonsA, HalfedgeWalksPassesEveryStep) {
+  const Headless r = run("3_halfedge_walks");
+  ASSERT_EQ(r.outcome.failure, "") << r.text;
+  EXPECT_EQ(r.outcome.steps, 6u);
+  EXPECT_EQ(r.outcome.passed, 6u);
+  EXPECT_TRUE(contains(r.text, "After 3 steps of next the walk is back at the start: f0 is a triangle.")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > click f5\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "You clicked f5.")) << r.text;
+  EXPECT_TRUE(contains(r.text, "so v0 has degree 6 (the mesh agrees: v:degree() is 6)")) << r.text;
+  // A 3x2 grid has 2 * (3 + 2) = 10 boundary edges.
+  EXPECT_TRUE(contains(r.text, ": 10 steps around the grid and back to the start")) << r.text;
+  // The boundary condition stays false for a vertex and an interior edge, and holds for e0.
+  EXPECT_TRUE(contains(r.text, "  > selection v1 (not awaited")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > selection e1 (not awaited")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  Yes: e0 is on the boundary.")) << r.text;
+  // v0 of the cube lies in both triangles of each of its three sides: the weighted sum is the diagonal.
+  EXPECT_TRUE(contains(r.text, "meets the 6 orange triangles, and the normal comes out as (-0.577, -0.577, -0.577)."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "  > key Q\n")) << r.text;
+}
+
+TEST(LessonsA, HalfedgeWalksMarkWhatThePointersReach) {
+  const HalfedgeMesh cube = build_halfedge_mesh(make_cube());
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("3_halfedge_walks"))) << runner.error();
+  // Step 1: face f0 and the three halfedges of its next-loop, labelled in walking order.
+  const HalfedgeId h0 = cube.halfedge(FaceId::face(0));
+  const HalfedgeId h1 = cube.next(h0), h2 = cube.next(h1);
+  EXPECT_EQ(host.labels(), (std::map<ElementRef, std::string>{
+                               {ElementRef(h0), "h"}, {ElementRef(h1), "h.next"}, {ElementRef(h2), "h.next.next"}}));
+  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(h0))), "#ff0000");
+  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(FaceId::face(0)))), "#ffe600");
+  EXPECT_EQ(host.highlights().size(), 4u);
+
+  // Step 2: every halfedge leaving v0, numbered in the order h = h.twin.next reaches them.
+  runner.go_to(1);
+  const VertexId v0(0);
+  std::map<ElementRef, std::string> expected{{ElementRef(v0), "v0"}};
+  HalfedgeId h = cube.halfedge(v0);
+  for (int k = 1; k <= 6; ++k) {
+    EXPECT_EQ(cube.vertex(h), v0);
+    expected[ElementRef(h)] = std::to_string(k);
+    h = cube.next(cube.twin(h));
+  }
+  EXPECT_EQ(h, cube.halfedge(v0));
+  EXPECT_EQ(host.labels(), expected);
+  EXPECT_EQ(runner.waiting_for().kind, LessonWait::Kind::Key);
+  EXPECT_EQ(runner.waiting_for().name, "T");
+
+  // Step 3: the boundary loop of the 3x2 grid, every halfedge of it green.
+  runner.go_to(2);
+  const HalfedgeMesh grid = build_halfedge_mesh(make_grid(3, 2));
+  std::set<ElementRef> loop;
+  for (uint32_t i = 0; i < grid.num_halfedges(); ++i) {
+    if (grid.is_boundary(HalfedgeId(i))) loop.insert(ElementRef(HalfedgeId(i)));
+  }
+  ASSERT_EQ(loop.size(), 10u);
+  std::set<ElementRef> green;
+  for (const auto& [element, colour] : host.highlights()) {
+    EXPECT_EQ(colour_hex(colour), "#00cc00") << format_id(element);
+    green.insert(element);
+  }
+  EXPECT_EQ(green, loop);
+  EXPECT_EQ(runner.waiting_for().kind, LessonWait::Kind::Condition);
+  host.set_selection(ElementRef(EdgeId(1)));  // interior: the wait goes on
+  runner.update(0.0);
+  EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting);
+  host.set_selection(ElementRef(EdgeId(0)));
+  runner.update(0.0);
+  EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+}
+
+TEST(LessonsA, LessonFileResolvesNextToTheLesson) {
+  const std::filesystem::path scratch = testing::scratch_dir();
+  const auto dir = scratch / "lessons";
+  std::filesystem::create_directories(dir);
+  const auto path = dir / "paths.lua";
+  std::ofstream(path) << "local top = lesson_file('../assets/x.bez')\n"
+                         "step('A', function() say(top) say(lesson_file('y.bzc')) say(lesson_file('/abs/z')) end)\n";
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(path)) << runner.error();
+  EXPECT_EQ(runner.said(), (std::vector<std::string>{(scratch / "assets" / "x.bez").lexically_normal().string(),
+                                                     (dir / "y.bzc").lexically_normal().string(),
+                                                     "/abs/z"}));
+}
+
+}  // namespace
+}  // namespace meshedit
