@@ -121,6 +121,9 @@ step("Your turn", function()
 # Your code
 
 Open `scripts/student/curve.lua` and write `evaluate_step(points, t)`: given a list of points, return
-the next level, one point fewer. Switch the curve view from **reference** to **mine** to run your
-function: when your step is right, **E** shows the same levels you saw in this lesson.]]
+the next level, one point fewer. Check it against the reference from a terminal:
+
+    meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student
+
+Each failed test says what differs (a missing point, weights the wrong way round...).]]
 end)

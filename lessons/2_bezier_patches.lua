@@ -105,6 +105,9 @@ step("Your turn", function()
 
 Open `scripts/student/patch.lua` and write `evaluate(patch, u, v)`. `patch.points` holds the 16 control
 points row by row (`patch.points[row * 4 + col + 1]`). Use your curve step from part 1: four rows at **u**,
-then the column at **v**. Run it as **mine** instead of the reference: when it is right, it gives the very
-points of the teapot you saw here.]]
+then the column at **v**. Check it against the reference from a terminal:
+
+    meshedit grade --suite tests/grading/suites/patch.lua --submission scripts/student
+
+When it is right, it gives the very points of the teapot you saw here.]]
 end)

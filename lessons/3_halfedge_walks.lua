@@ -177,5 +177,6 @@ step("Your turn", function()
 
 Open `scripts/student/normals.lua` and write `vertex_normal(v)`: walk around `v` with `h = h.twin.next`,
 add the cross products of the faces you meet (skip boundary halfedges, which have no face) and return
-the sum normalized. Switch to Phong shading with **Q** to see your normals at work.]]
+the sum normalized. To try it, select a vertex, press **X** for the exercises panel, choose the vertex
+normal and press **Run mine**: the panel compares your normal with the reference's.]]
 end)

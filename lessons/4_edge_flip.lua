@@ -155,5 +155,6 @@ below the view show the same thing: the changed cells are highlighted, and the *
   say [[
 When you write `flip_edge` yourself, collect every element first (h0 to h5, a to d, f0, f1), then set
 every pointer. Press **F** three more times in the app: after four flips every pointer is back where it
-started.]]
+started. To run your own `flip_edge` (scripts/student/flip.lua), select an edge, press **X** and **Run
+mine**: the panel puts your pointers beside the reference's and replays your writes one by one.]]
 end)
