@@ -1,0 +1,136 @@
+---@meta grading
+-- LuaLS type descriptions of a grading suite's globals (engine/grade/suite.h, expectations.h), for editors
+-- only. A suite also has the whole `meshedit` module (meshedit.lua).
+
+---@alias Visibility "visible"|"hidden"|"after_due_date"|"after_published"
+
+---Defaults for every test of the file (all optional).
+---@class SuiteSpec
+---@field name? string
+---@field files? string[] student files to load, in order ("flip.lua")
+---@field time_limit? number seconds
+---@field memory_mb? number
+---@field visibility? Visibility
+---@field reference? string[] reference functions given to student code: "flip_edge", "split_edge", "upsample", "vertex_normal", "evaluate_step", "evaluate"
+---@field allow_api? string[] exercise operations student code may call: "mesh:flip", "meshedit.curve", ...
+---@field partial? boolean
+---@field output_kb? number
+
+---@param spec SuiteSpec
+function suite(spec) end
+
+---@class TestSpec: SuiteSpec
+---@field name string required
+---@field run fun(student: Student, expect: Expect) required
+---@field points? number
+---@field number? string "1.1"
+---@field tags? string[]
+
+---Declares a test. Unknown fields are errors.
+---@param spec TestSpec
+function test(spec) end
+
+---Runs another suite file of the same folder here; suite{} defaults merge field by field.
+---@param file string
+function include(file) end
+
+---The folder of the suite file, for fixtures: meshedit.load(SUITE_DIR .. "/cow.dae"). Load fixtures at the top
+---level: a running test cannot open files.
+---@type string
+SUITE_DIR = ""
+
+---The submission, seen from a test. student.NAME(...) calls the submission's function NAME in its sandbox
+---(arguments and results are copied; meshes are shared).
+---@class Student
+---@field [string] fun(...): ...
+local Student = {}
+
+---@param name string
+---@return boolean
+function Student.has(name) end
+
+---Same as student[name](...).
+---@param name string
+---@return ...
+function Student.call(name, ...) end
+
+---What the student's code printed so far.
+---@return string
+function Student.output() end
+
+---The checks. Each records one result and returns true when it passed. expect(value, message) = expect.truthy.
+---@class Expect
+---@overload fun(value: any, message?: string): boolean
+local Expect = {}
+
+---@param value any
+---@param message? string
+---@return boolean
+function Expect.truthy(value, message) end
+
+---@param value any
+---@param message? string
+---@return boolean
+function Expect.falsy(value, message) end
+
+---@param value any
+---@param message? string
+---@return boolean
+function Expect.is_nil(value, message) end
+
+---Deep equality of plain values, tables, vec3s, handles and meshes.
+---@param actual any
+---@param expected any
+---@param message? string
+---@return boolean
+function Expect.equal(actual, expected, message) end
+
+---Numbers, points, and lists of those item by item.
+---@param actual number|point|(number|point)[]
+---@param expected number|point|(number|point)[]
+---@param tolerance number
+---@param message? string
+---@return boolean
+function Expect.near(actual, expected, tolerance, message) end
+
+---validate() finds nothing.
+---@param mesh Mesh
+---@param message? string
+---@return boolean
+function Expect.valid(mesh, message) end
+
+---Equal up to renumbering.
+---@param yours Mesh
+---@param reference Mesh
+---@param tolerance number
+---@param message? string
+---@return boolean
+function Expect.mesh_equal(yours, reference, tolerance, message) end
+
+---Equal pointer for pointer, same ids.
+---@param yours Mesh
+---@param reference Mesh
+---@param tolerance number
+---@param message? string
+---@return boolean
+function Expect.same_pointers(yours, reference, tolerance, message) end
+
+---@param mesh Mesh
+---@param counts {vertices?: integer, edges?: integer, faces?: integer, halfedges?: integer, boundaries?: integer}
+---@param message? string
+---@return boolean
+function Expect.counts(mesh, counts, message) end
+
+---@param message? string
+---@return boolean
+function Expect.pass(message) end
+
+---@param message? string
+---@return boolean
+function Expect.fail(message) end
+
+---The test's share of its points in [0, 1] (the last call wins).
+---@param fraction number
+---@param message? string
+---@return boolean
+function Expect.score(fraction, message) end
