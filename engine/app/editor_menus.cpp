@@ -1,4 +1,5 @@
 // The menu bar, the open/save panel (a small file browser with a recent list) and the key help.
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <algorithm>
@@ -50,15 +51,20 @@ void EditorApp::draw_menu_bar() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, doc_.history.can_undo())) undo_edit(doc_, selection_);
-    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, doc_.history.can_redo())) redo_edit(doc_, selection_);
+    // Menu items go through the key handler, so they do exactly what the keys do (a running replay is
+    // finished first, a lesson waiting for F hears about it).
+    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, doc_.history.can_undo())) handle_key(GLFW_KEY_Z, {true, false});
+    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, doc_.history.can_redo())) handle_key(GLFW_KEY_Y, {true, false});
     ImGui::Separator();
-    if (ImGui::MenuItem("Flip edge", "F")) flip_selected(doc_, selection_);
-    if (ImGui::MenuItem("Split edge", "S")) split_selected(doc_, selection_);
-    if (ImGui::MenuItem("Collapse edge", "C")) collapse_selected(doc_, selection_);
-    if (ImGui::MenuItem("Loop subdivision", "L")) loop_subdivide_all(doc_, selection_, loop_weights_);
+    if (ImGui::MenuItem("Flip edge", "F")) {  // F on a halfedge walks to its face; the menu item always flips
+      exercises_.finish_replay(doc_);
+      flip_selected(doc_, selection_);
+    }
+    if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
+    if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
+    if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
     const std::string phase = "Loop: " + next_loop_phase_label(doc_);
-    if (ImGui::MenuItem(phase.c_str(), "Shift+L")) loop_subdivide_step(doc_, selection_, loop_weights_);
+    if (ImGui::MenuItem(phase.c_str(), "Shift+L")) handle_key(GLFW_KEY_L, {false, true});
     bool loop_beta = loop_weights_ == LoopWeights::Loop;
     if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
       loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
