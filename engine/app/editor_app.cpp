@@ -198,14 +198,12 @@ void EditorApp::draw_console() {
 void EditorApp::draw_view_panels(float frame_ms) {
   draw_console();
   draw_lesson();
-  if (mode_ == ViewMode::Mesh) {  // also when closed: the session notices edits made elsewhere
-    const ImGuiViewport* viewport = ImGui::GetMainViewport();
-    ImGui::SetNextWindowPos(ImVec2(viewport->Pos.x + viewport->Size.x * 0.3f, viewport->Pos.y + 60), ImGuiCond_FirstUseEver);
-    draw_exercise_panel(exercises_, exercise_panel_, doc_, selection_);
-    keep_if_alive(selection_, doc_.mesh);
-  }
   if (mode_ != ViewMode::Mesh) return;
   const ImGuiViewport* main = ImGui::GetMainViewport();
+  // Drawn (a no-op) also when closed: the session notices edits made elsewhere.
+  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x * 0.3f, main->Pos.y + 60), ImGuiCond_FirstUseEver);
+  draw_exercise_panel(exercises_, exercise_panel_, doc_, selection_);
+  keep_if_alive(selection_, doc_.mesh);
   const float menu = ImGui::GetFrameHeight();
   const float status = draw_status_bar(doc_, selection_, status_bar_, frame_ms);
   const float panel_width = std::min(420.0f, main->Size.x * 0.34f);

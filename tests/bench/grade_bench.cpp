@@ -12,22 +12,13 @@
 #include <filesystem>
 #include <string>
 
+#include "bench/bench_support.h"
 #include "grade/grader.h"
 #include "grade/submission.h"
 #include "grade/suite.h"
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-long arg(int argc, char** argv, const char* name, long fallback) {
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], name) == 0) return std::strtol(argv[i + 1], nullptr, 10);
-  }
-  return fallback;
-}
-
-}  // namespace
+using meshedit::bench::arg;
+using meshedit::bench::min_ms;
 
 int main(int argc, char** argv) {
   using namespace meshedit;
@@ -38,13 +29,8 @@ int main(int argc, char** argv) {
     std::printf("grading tests/script/solutions, minimum of %d runs\n", reps);
     for (const char* part : {"curve", "patch", "normals", "flip", "split", "upsample", "all"}) {
       const auto suite = Suite::load(source / "tests" / "grading" / "suites" / (std::string(part) + ".lua"));
-      double best = 1e300;
       GradeReport report;
-      for (int i = 0; i < reps; ++i) {
-        const auto start = Clock::now();
-        report = grade(*suite, solutions);
-        best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-      }
+      const double best = min_ms(reps, [] {}, [&] { report = grade(*suite, solutions); });
       std::printf("  %-9s %2zu tests  %5.1f / %-4.0f points  %8.1f ms\n", part, report.tests.size(), report.score,
                   report.max_score, best);
     }

@@ -17,6 +17,7 @@
 
 #include <lua.hpp>
 
+#include "bench/bench_support.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
@@ -27,18 +28,7 @@
 namespace {
 
 namespace fs = std::filesystem;
-using Clock = std::chrono::steady_clock;
-
-double min_ms(int reps, const std::function<void()>& setup, const std::function<void()>& work) {
-  double best = 1e300;
-  for (int i = 0; i < reps; ++i) {
-    setup();
-    const auto start = Clock::now();
-    work();
-    best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-  }
-  return best;
-}
+using meshedit::bench::min_ms;
 
 const char* option(int argc, char** argv, const char* name, const char* fallback) {
   for (int i = 1; i + 1 < argc; ++i) {

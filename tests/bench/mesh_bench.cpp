@@ -10,36 +10,15 @@
 #include <functional>
 #include <string>
 
+#include "bench/bench_support.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/normals.h"
 #include "core/primitives.h"
 #include "core/validate.h"
 
-namespace {
-
-using Clock = std::chrono::steady_clock;
-
-// Minimum wall time of `reps` runs of `work`, in milliseconds; `setup` runs untimed before each.
-double min_ms(int reps, const std::function<void()>& setup, const std::function<void()>& work) {
-  double best = 1e300;
-  for (int i = 0; i < reps; ++i) {
-    setup();
-    const auto start = Clock::now();
-    work();
-    best = std::min(best, std::chrono::duration<double, std::milli>(Clock::now() - start).count());
-  }
-  return best;
-}
-
-long arg(int argc, char** argv, const char* name, long fallback) {
-  for (int i = 1; i + 1 < argc; ++i) {
-    if (std::strcmp(argv[i], name) == 0) return std::strtol(argv[i + 1], nullptr, 10);
-  }
-  return fallback;
-}
-
-}  // namespace
+using meshedit::bench::arg;
+using meshedit::bench::min_ms;
 
 int main(int argc, char** argv) {
   using namespace meshedit;
