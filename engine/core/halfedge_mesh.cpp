@@ -177,7 +177,7 @@ size_t HalfedgeMesh::memory_bytes() const {
 
 namespace {
 // Positions compare bit for bit, so a NaN equals itself and a mesh is always same_as its copy.
-bool same_bits(const std::vector<glm::dvec3>& a, const std::vector<glm::dvec3>& b) {
+bool same_bits(const MeshArray<glm::dvec3>& a, const MeshArray<glm::dvec3>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(glm::dvec3)) == 0);
 }
 }  // namespace

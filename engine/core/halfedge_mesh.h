@@ -25,9 +25,14 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/big_array_allocator.h"
 #include "core/ids.h"
 
 namespace meshedit {
+
+// The storage of every per-element array (see big_array_allocator.h for why big arrays are mapped apart).
+template <class T>
+using MeshArray = std::vector<T, BigArrayAllocator<T>>;
 
 // Iterates the live ids of one kind; the end is fixed when the range is made, so elements appended
 // during the loop are not visited (the "only split the original edges" rule of Loop subdivision).
@@ -36,7 +41,7 @@ class AliveRange {
  public:
   class Iterator {
    public:
-    Iterator(const std::vector<uint8_t>* alive, uint32_t i, uint32_t end, uint32_t tag)
+    Iterator(const MeshArray<uint8_t>* alive, uint32_t i, uint32_t end, uint32_t tag)
         : alive_(alive), i_(i), end_(end), tag_(tag) { skip(); }
     IdT operator*() const { return IdT(i_ | tag_); }
     Iterator& operator++() { ++i_; skip(); return *this; }
@@ -44,20 +49,21 @@ class AliveRange {
     bool operator==(const Iterator& o) const { return i_ == o.i_; }
    private:
     void skip() { while (i_ < end_ && !(*alive_)[i_]) ++i_; }
-    const std::vector<uint8_t>* alive_;
+    const MeshArray<uint8_t>* alive_;
     uint32_t i_, end_, tag_;
   };
-  AliveRange(const std::vector<uint8_t>* alive, uint32_t tag = 0)
+  AliveRange(const MeshArray<uint8_t>* alive, uint32_t tag = 0)
       : alive_(alive), end_(static_cast<uint32_t>(alive->size())), tag_(tag) {}
   Iterator begin() const { return Iterator(alive_, 0, end_, tag_); }
   Iterator end() const { return Iterator(alive_, end_, end_, tag_); }
  private:
-  const std::vector<uint8_t>* alive_;
+  const MeshArray<uint8_t>* alive_;
   uint32_t end_, tag_;
 };
 
 struct PolygonMesh;
 struct BuildReport;
+struct MeshStorage;
 
 class HalfedgeMesh {
  public:
@@ -174,28 +180,30 @@ class HalfedgeMesh {
  private:
   // The builder fills the arrays directly: one pass per array instead of one push per element.
   friend HalfedgeMesh build_halfedge_mesh(const PolygonMesh& polygons, BuildReport* report);
+  // Whole-mesh fast paths (Loop subdivision) write the arrays directly through it (mesh_storage.h).
+  friend struct MeshStorage;
   void touch() { ++version_; }
 
   // Halfedge arrays, indexed by HalfedgeId.
-  std::vector<HalfedgeId> h_next_;    // h.next
-  std::vector<HalfedgeId> h_twin_;    // h.twin
-  std::vector<VertexId> h_vertex_;    // h.vertex (tail)
-  std::vector<EdgeId> h_edge_;        // h.edge
-  std::vector<FaceId> h_face_;        // h.face (a face or a boundary loop)
-  std::vector<uint8_t> h_alive_;
+  MeshArray<HalfedgeId> h_next_;    // h.next
+  MeshArray<HalfedgeId> h_twin_;    // h.twin
+  MeshArray<VertexId> h_vertex_;    // h.vertex (tail)
+  MeshArray<EdgeId> h_edge_;        // h.edge
+  MeshArray<FaceId> h_face_;        // h.face (a face or a boundary loop)
+  MeshArray<uint8_t> h_alive_;
   // Vertex arrays, indexed by VertexId.
-  std::vector<HalfedgeId> v_halfedge_;  // v.halfedge (outgoing)
-  std::vector<glm::dvec3> v_position_;  // v.position
-  std::vector<uint8_t> v_alive_;
+  MeshArray<HalfedgeId> v_halfedge_;  // v.halfedge (outgoing)
+  MeshArray<glm::dvec3> v_position_;  // v.position
+  MeshArray<uint8_t> v_alive_;
   // Edge arrays, indexed by EdgeId.
-  std::vector<HalfedgeId> e_halfedge_;  // e.halfedge
-  std::vector<uint8_t> e_alive_;
+  MeshArray<HalfedgeId> e_halfedge_;  // e.halfedge
+  MeshArray<uint8_t> e_alive_;
   // Face arrays, indexed by FaceId::slot() of real faces.
-  std::vector<HalfedgeId> f_halfedge_;  // f.halfedge
-  std::vector<uint8_t> f_alive_;
+  MeshArray<HalfedgeId> f_halfedge_;  // f.halfedge
+  MeshArray<uint8_t> f_alive_;
   // Boundary-loop arrays, indexed by FaceId::slot() of boundary loops.
-  std::vector<HalfedgeId> b_halfedge_;  // b.halfedge
-  std::vector<uint8_t> b_alive_;
+  MeshArray<HalfedgeId> b_halfedge_;  // b.halfedge
+  MeshArray<uint8_t> b_alive_;
 
   size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
   uint64_t version_ = 0;

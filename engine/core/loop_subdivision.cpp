@@ -9,10 +9,9 @@
 //   cached by valence, so the cost is O(V + E + F) plus what split() and flip() cost.
 #include "core/loop_subdivision.h"
 
-#include <cmath>
-#include <numbers>
 #include <string>
 
+#include "core/loop_rules.h"
 #include "core/mesh_ops.h"
 #include "core/validate.h"
 
@@ -20,32 +19,7 @@ namespace meshedit {
 
 namespace {
 
-// u for an interior vertex of valence n, cached because Loop's weight needs a cosine.
-class ValenceWeights {
- public:
-  explicit ValenceWeights(LoopWeights weights) : weights_(weights) { cache_.reserve(32); }
-
-  double operator()(uint32_t n) {
-    if (n >= cache_.size()) {
-      const size_t from = cache_.size();
-      cache_.resize(n + 1);
-      for (size_t k = from; k <= n; ++k) cache_[k] = compute(static_cast<uint32_t>(k));
-    }
-    return cache_[n];
-  }
-
- private:
-  double compute(uint32_t n) const {
-    if (n == 0) return 0.0;
-    if (weights_ == LoopWeights::Course) return n == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * n);
-    const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * std::numbers::pi / n);
-    const double beta = 5.0 / 8.0 - c * c;
-    return beta / n;
-  }
-
-  LoopWeights weights_;
-  std::vector<double> cache_;
-};
+using loop_rules::ValenceWeights;
 
 // Sets flags[index] = 1, growing the array if split() allocated past the size reserved for it.
 void mark(std::vector<uint8_t>& flags, uint32_t index) {
@@ -109,9 +83,9 @@ OpResult<LoopState> loop_compute_positions(const HalfedgeMesh& mesh, LoopWeights
     glm::dvec3& out = state.vertex_position[v.index];
     if (rim_count == 0) {
       const double u = weight(valence);
-      out = (1.0 - valence * u) * p + u * neighbour_sum;
+      out = loop_rules::interior_vertex(p, neighbour_sum, valence, u);
     } else if (rim_count == 2) {
-      out = 0.75 * p + 0.125 * (rim[0] + rim[1]);
+      out = loop_rules::boundary_vertex(p, rim[0], rim[1]);
     } else {
       // Not reachable on a mesh validate() accepts (one boundary loop per vertex means exactly two
       // boundary edges); keeping the vertex is the least surprising answer.
@@ -127,12 +101,12 @@ OpResult<LoopState> loop_compute_positions(const HalfedgeMesh& mesh, LoopWeights
     const glm::dvec3& b = mesh.position(mesh.vertex(t));
     glm::dvec3& out = state.edge_position[e.index];
     if (mesh.face(h).is_boundary() || mesh.face(t).is_boundary()) {
-      out = 0.5 * (a + b);
+      out = loop_rules::boundary_edge(a, b);
     } else {
       // Triangles: the corner opposite h is the tail of next(next(h)).
       const glm::dvec3& c = mesh.position(mesh.vertex(mesh.next(mesh.next(h))));
       const glm::dvec3& d = mesh.position(mesh.vertex(mesh.next(mesh.next(t))));
-      out = 0.375 * (a + b) + 0.125 * (c + d);
+      out = loop_rules::interior_edge(a, b, c, d);
     }
   }
   return result;
@@ -185,7 +159,7 @@ void loop_commit_positions(HalfedgeMesh& mesh, const LoopState& state) {
   }
 }
 
-Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights) {
+Check loop_subdivide_by_phases(HalfedgeMesh& mesh, LoopWeights weights) {
   OpResult<LoopState> computed = loop_compute_positions(mesh, weights);
   if (!computed.ok()) return computed.check;
   LoopState& state = computed.value;

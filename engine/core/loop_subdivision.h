@@ -1,4 +1,5 @@
-// Loop subdivision (Part 6), as four phases a lesson can step through, plus one call for all four.
+// Loop subdivision (Part 6), as four phases a lesson can step through, plus one call for all four and a fast
+// whole-mesh path that gives the identical result.
 //
 //   1. loop_compute_positions: new positions for the original vertices and a position for each
 //      original edge's midpoint vertex, from the original mesh (nothing changes yet);
@@ -52,7 +53,14 @@ void loop_split_edges(HalfedgeMesh& mesh, LoopState& state);
 void loop_flip_edges(HalfedgeMesh& mesh, LoopState& state);
 void loop_commit_positions(HalfedgeMesh& mesh, const LoopState& state);
 
-// All four phases; refuses (and changes nothing) like can_loop_subdivide.
-Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course);
+// All four phases in turn, through split() and flip(): the teaching path, what a lesson steps through.
+// Refuses (and changes nothing) like can_loop_subdivide.
+Check loop_subdivide_by_phases(HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course);
+
+// `levels` levels of Loop subdivision in a few passes over the flat arrays (loop_subdivision_fast.cpp): the same
+// mesh as `levels` calls of loop_subdivide_by_phases, id for id, pointer for pointer and bit for bit (a test
+// holds them together on every fixture). The input is checked once, like can_loop_subdivide; a refused mesh is
+// left unchanged. `threads` > 1 splits each pass over that many threads (the result does not depend on it).
+Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course, int levels = 1, int threads = 1);
 
 }  // namespace meshedit

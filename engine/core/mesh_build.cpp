@@ -238,7 +238,7 @@ HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
   m.e_alive_.assign(m.e_halfedge_.size(), 1);
 
   // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
-  m.v_position_ = in.positions;
+  m.v_position_.assign(in.positions.begin(), in.positions.end());
   m.v_halfedge_.assign(in.num_vertices(), HalfedgeId());
   for (uint32_t h = 0; h < num_interior; ++h) {
     auto& slot = m.v_halfedge_[c.tail(h)];

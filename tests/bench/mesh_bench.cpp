@@ -1,7 +1,9 @@
 // mesh_bench: prints how long the core's hot paths take on a generated torus (not a test: no timing is
 // asserted anywhere). Each figure is the minimum over --reps runs, on one thread.
 //
-//   mesh_bench [--faces N] [--levels L] [--reps R]     defaults: 100000 faces, 1 level, 5 reps
+//   mesh_bench [--faces N] [--levels L] [--reps R] [--threads T] [--fast-only 1]
+//   defaults: 100000 faces, 1 level, 5 reps, 2 threads for the second fast-path row; --fast-only skips the
+//   (slow) phase-by-phase teaching path.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -25,6 +27,7 @@ int main(int argc, char** argv) {
   const auto faces = static_cast<uint32_t>(std::max(8L, arg(argc, argv, "--faces", 100000)));
   const int levels = static_cast<int>(std::clamp(arg(argc, argv, "--levels", 1), 1L, 4L));
   const int reps = static_cast<int>(std::clamp(arg(argc, argv, "--reps", 5), 1L, 100L));
+  const bool fast_only = arg(argc, argv, "--fast-only", 0) != 0;
 
   const PolygonMesh torus = make_torus_with_faces(faces);
   std::printf("torus: %zu vertices, %zu faces; minimum of %d runs, one thread\n", torus.num_vertices(),
@@ -43,16 +46,27 @@ int main(int argc, char** argv) {
   const double validate_ms = min_ms(reps, [] {}, [&] { (void)validate(mesh); });
   std::printf("%-34s %9.2f ms\n", "validate", validate_ms);
 
-  for (LoopWeights weights : {LoopWeights::Course, LoopWeights::Loop}) {
+  const int threads = static_cast<int>(std::clamp(arg(argc, argv, "--threads", 2), 1L, 64L));
+  const auto loop_row = [&](const char* path, LoopWeights weights, int thread_count,
+                            const std::function<void(HalfedgeMesh&)>& run) {
     HalfedgeMesh work;
-    const double loop = min_ms(reps, [&] { work = mesh; }, [&] {
-      for (int i = 0; i < levels; ++i) loop_subdivide(work, weights);
-    });
-    char label[64];
-    std::snprintf(label, sizeof label, "Loop subdivision x%d (%s)", levels,
-                  weights == LoopWeights::Course ? "course" : "loop");
-    std::printf("%-34s %9.2f ms  %7.2f M output faces/s  (%zu faces)\n", label, loop,
-                work.num_faces() / loop / 1e3, work.num_faces());
+    const double ms = min_ms(reps, [&] { work = HalfedgeMesh(); work = mesh; }, [&] { run(work); });
+    char label[80];
+    std::snprintf(label, sizeof label, "Loop x%d %s (%s, %d thr)", levels, path,
+                  weights == LoopWeights::Course ? "course" : "loop", thread_count);
+    std::printf("%-34s %9.2f ms  %7.2f M output faces/s  (%zu faces, %.1f bytes/face)\n", label, ms,
+                work.num_faces() / ms / 1e3, work.num_faces(), double(work.memory_bytes()) / work.num_faces());
+  };
+  for (LoopWeights weights : {LoopWeights::Course, LoopWeights::Loop}) {
+    if (!fast_only) {
+      loop_row("phases", weights, 1, [&](HalfedgeMesh& m) {
+        for (int i = 0; i < levels; ++i) loop_subdivide_by_phases(m, weights);
+      });
+    }
+    loop_row("fast", weights, 1, [&](HalfedgeMesh& m) { loop_subdivide(m, weights, levels, 1); });
+    if (threads > 1) {
+      loop_row("fast", weights, threads, [&](HalfedgeMesh& m) { loop_subdivide(m, weights, levels, threads); });
+    }
   }
   return 0;
 }

@@ -1,0 +1,327 @@
+// Loop subdivision in a few passes over the flat arrays: the same mesh, id for id and bit for bit, as the
+// teaching path (loop_subdivide_by_phases: split every original edge in id order, flip the new edges that join an
+// old and a new vertex, move the vertices), computed without replaying it.
+//
+// Why this is possible (and what the equality test in tests/core/loop_fast_test.cpp holds us to):
+// - Ids. split() appends its elements in a documented order (mesh_ops.h), so the k-th live original edge, with bb
+//   boundary edges before it, gets vertex V0 + k, edges E0 + 3k - bb (ea, ec, ed), faces F0 + 2k - bb (g0, g1) and
+//   halfedges H0 + 6k - 2bb (n0..n5); a boundary split makes no ed, g1, n4, n5.
+// - Locality. A split rewires only the two triangles beside its edge, and a flip only the two triangles beside the
+//   flipped edge, which lie inside one original triangle. So each original triangle T ends up as a function of
+//   T alone: the order (by edge id) in which its three edges were split and, for each, whether T's halfedge was
+//   split()'s h0 (T's side gets n0, n2, n3, g0) or h1 (n1, n4, n5, g1). pass_triangles replays those three
+//   splits and the one flip on a 12-halfedge local copy of T and writes the result.
+// - The one flip per triangle is the crossing edge of T's first split (it joins the first midpoint to the corner
+//   opposite); the other two crossing edges join two midpoints. Flips never move a vertex's halfedge here: old
+//   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
+// - An old vertex's halfedge x changes only when x is split()'s h0 of its edge (it becomes that split's n0).
+// - Positions use loop_rules.h with the same neighbour order, so they are the same doubles.
+// Passes write disjoint elements per index (parallel_for), and each reads only what no pass running at the same
+// time writes: vertex points go to a temporary array until every vertex has read its neighbours.
+#include <algorithm>
+#include <vector>
+
+#include "core/loop_rules.h"
+#include "core/loop_subdivision.h"
+#include "core/mesh_storage.h"
+#include "core/parallel_for.h"
+
+namespace meshedit {
+namespace {
+
+constexpr uint32_t kBoundaryFlag = 0x80000000u;
+
+// Where the split of one original edge puts its new elements.
+struct EdgePlan {
+  uint32_t rank = 0;             // k: live original edges before this one
+  uint32_t boundary_before = 0;  // bb, with kBoundaryFlag set when this edge is on a boundary
+  bool boundary() const { return (boundary_before & kBoundaryFlag) != 0; }
+  uint32_t bb() const { return boundary_before & ~kBoundaryFlag; }
+};
+
+struct Level {
+  uint32_t v0, h0, e0, f0;  // capacities before the level
+  MeshStorage::View m;
+  std::vector<EdgePlan> plan;  // by original edge id (dead edges: unused)
+
+  uint32_t vertex_of(uint32_t e) const { return v0 + plan[e].rank; }
+  uint32_t first_edge(uint32_t e) const { return e0 + 3 * plan[e].rank - plan[e].bb(); }
+  uint32_t first_face(uint32_t e) const { return f0 + 2 * plan[e].rank - plan[e].bb(); }
+  uint32_t first_halfedge(uint32_t e) const { return h0 + 6 * plan[e].rank - 2 * plan[e].bb(); }
+  // split()'s h0 for edge e: e.halfedge, or its twin when e.halfedge lies on a boundary loop.
+  uint32_t face_side(uint32_t e) const {
+    const HalfedgeId h = m.edge_halfedge[e];
+    return m.face[h.index].is_boundary() ? m.twin[h.index].index : h.index;
+  }
+};
+
+// Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded).
+void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_edges) {
+  L.plan.assign(L.e0, EdgePlan{});
+  const size_t chunks = chunk_count(threads, L.e0);
+  std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
+  const auto is_boundary = [&](uint32_t e) {
+    const HalfedgeId h = L.m.edge_halfedge[e];
+    return L.m.face[h.index].is_boundary() || L.m.face[L.m.twin[h.index].index].is_boundary();
+  };
+  parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
+    uint32_t n = 0, b = 0;
+    for (size_t e = begin; e < end; ++e) {
+      if (!L.m.edge_alive[e]) continue;
+      ++n;
+      if (is_boundary(uint32_t(e))) {
+        ++b;
+        L.plan[e].boundary_before = kBoundaryFlag;
+      }
+    }
+    live[chunk + 1] = n;
+    bound[chunk + 1] = b;
+  });
+  for (size_t c = 0; c < chunks; ++c) {
+    live[c + 1] += live[c];
+    bound[c + 1] += bound[c];
+  }
+  parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
+    uint32_t n = live[chunk], b = bound[chunk];
+    for (size_t e = begin; e < end; ++e) {
+      if (!L.m.edge_alive[e]) continue;
+      EdgePlan& p = L.plan[e];
+      p.rank = n++;
+      const bool on_boundary = p.boundary();
+      p.boundary_before = b | (on_boundary ? kBoundaryFlag : 0);
+      b += on_boundary ? 1 : 0;
+    }
+  });
+  live_edges = live[chunks];
+  boundary_edges = bound[chunks];
+}
+
+// Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge.
+void pass_vertices(Level& L, LoopWeights weights, int threads, std::vector<glm::dvec3>& points) {
+  parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
+    loop_rules::ValenceWeights weight(weights);
+    const MeshStorage::View& m = L.m;
+    for (size_t v = begin; v < end; ++v) {
+      if (!m.vertex_alive[v]) continue;
+      const glm::dvec3& p = m.position[v];
+      const uint32_t start = m.vertex_halfedge[v].index;
+      glm::dvec3 neighbour_sum(0.0), rim[2];
+      uint32_t valence = 0, rim_count = 0;
+      uint32_t h = start;
+      do {
+        const uint32_t t = m.twin[h].index;
+        const glm::dvec3& q = m.position[m.vertex[t].index];
+        neighbour_sum += q;
+        ++valence;
+        if (m.face[h].is_boundary() || m.face[t].is_boundary()) {
+          if (rim_count < 2) rim[rim_count] = q;
+          ++rim_count;
+        }
+        h = m.next[t].index;
+      } while (h != start);
+      if (rim_count == 0) {
+        points[v] = loop_rules::interior_vertex(p, neighbour_sum, valence, weight(valence));
+      } else if (rim_count == 2) {
+        points[v] = loop_rules::boundary_vertex(p, rim[0], rim[1]);
+      } else {
+        points[v] = p;
+      }
+      const uint32_t e = m.edge[start].index;
+      if (L.face_side(e) == start) m.vertex_halfedge[v] = HalfedgeId(L.first_halfedge(e));  // becomes n0
+    }
+  });
+}
+
+// Pass 2: per original edge, its midpoint vertex, the new edges' halfedges, the new halfedges' twins and edges,
+// and on a boundary edge the loop's side (n1 inserted after h1).
+void pass_edges(Level& L, int threads) {
+  parallel_for(threads, L.e0, [&](size_t begin, size_t end) {
+    const MeshStorage::View& m = L.m;
+    for (size_t e = begin; e < end; ++e) {
+      if (!m.edge_alive[e]) continue;
+      const auto edge = uint32_t(e);
+      const bool boundary = L.plan[e].boundary();
+      const uint32_t h0 = L.face_side(edge), h1 = m.twin[h0].index;
+      const uint32_t mid = L.vertex_of(edge), ea = L.first_edge(edge), n0 = L.first_halfedge(edge);
+      const glm::dvec3& a = m.position[m.vertex[h0].index];
+      const glm::dvec3& b = m.position[m.vertex[h1].index];
+      if (boundary) {
+        m.position[mid] = loop_rules::boundary_edge(a, b);
+      } else {
+        const glm::dvec3& c = m.position[m.vertex[m.next[m.next[h0].index].index].index];
+        const glm::dvec3& d = m.position[m.vertex[m.next[m.next[h1].index].index].index];
+        m.position[mid] = loop_rules::interior_edge(a, b, c, d);
+      }
+      m.vertex_halfedge[mid] = HalfedgeId(n0 + 1);
+      const uint32_t pairs = boundary ? 2 : 3;  // (n0, n1) on ea, (n2, n3) on ec, (n4, n5) on ed
+      for (uint32_t i = 0; i < pairs; ++i) {
+        const uint32_t x = n0 + 2 * i, y = x + 1;
+        m.edge_halfedge[ea + i] = HalfedgeId(x);
+        m.twin[x] = HalfedgeId(y);
+        m.twin[y] = HalfedgeId(x);
+        m.edge[x] = m.edge[y] = EdgeId(ea + i);
+      }
+      if (boundary) {
+        const uint32_t n1 = n0 + 1;
+        m.next[n1] = m.next[h1];
+        m.face[n1] = m.face[h1];
+        m.vertex[n1] = VertexId(mid);
+        m.next[h1] = HalfedgeId(n1);
+      }
+    }
+  });
+}
+
+// One original triangle, replayed locally. Slots: 0-2 the original halfedges x0 x1 x2 (x0 = T.halfedge), then
+// per side i the new halfedges on T's side: o_i (the other half of the split edge) at 3 + i, p_i (midpoint to the
+// opposite corner) at 6 + i, q_i (its twin) at 9 + i. Local faces: 0 = T, 1 + i = the face split i made on T's side.
+struct LocalTriangle {
+  uint32_t next[12];
+  uint8_t face[12];
+  uint32_t vertex[12];
+  uint32_t id[12];
+  uint8_t face_halfedge[4];
+  uint32_t face_id[4];
+};
+
+void replay_triangle(const Level& L, uint32_t f, LocalTriangle& t) {
+  const MeshStorage::View& m = L.m;
+  uint32_t x[3];
+  x[0] = m.face_halfedge[f].index;
+  x[1] = m.next[x[0]].index;
+  x[2] = m.next[x[1]].index;
+  bool side_h0[3];
+  uint32_t rank[3], mid[3];
+  for (uint32_t i = 0; i < 3; ++i) {
+    const uint32_t e = m.edge[x[i]].index;
+    const EdgePlan& p = L.plan[e];
+    side_h0[i] = p.boundary() || m.edge_halfedge[e].index == x[i];
+    rank[i] = p.rank;
+    mid[i] = L.vertex_of(e);
+    const uint32_t n0 = L.first_halfedge(e), g0 = L.first_face(e);
+    t.id[i] = x[i];
+    t.next[i] = (i + 1) % 3;
+    t.face[i] = 0;
+    t.vertex[i] = m.vertex[x[i]].index;
+    t.id[3 + i] = side_h0[i] ? n0 : n0 + 1;      // n0 or n1
+    t.id[6 + i] = side_h0[i] ? n0 + 2 : n0 + 4;  // n2 or n4
+    t.id[9 + i] = side_h0[i] ? n0 + 3 : n0 + 5;  // n3 or n5
+    t.face_id[1 + i] = side_h0[i] ? g0 : g0 + 1;
+  }
+  t.face_id[0] = f;
+  t.face_halfedge[0] = 0;
+
+  uint32_t order[3] = {0, 1, 2};
+  std::sort(order, order + 3, [&](uint32_t a, uint32_t b) { return rank[a] < rank[b]; });
+
+  for (uint32_t i : order) {
+    // split(): the current triangle prev -> x -> nx becomes L = (F, p, prev) and R = (S, nx, q), F running from
+    // x's tail to the midpoint and S from the midpoint on; x keeps its face, the other triangle is the new face.
+    const uint32_t xs = i, o = 3 + i, p = 6 + i, q = 9 + i;
+    const uint32_t nx = t.next[xs], prev = t.next[nx];
+    const uint32_t corner = t.vertex[prev];
+    const uint8_t old_face = t.face[xs], new_face = uint8_t(1 + i);
+    uint32_t first, second;
+    uint8_t first_face, second_face;
+    if (side_h0[i]) {  // x is h0: it becomes the second half; o = n0 is the first, from x's old tail
+      first = o, second = xs;
+      first_face = new_face, second_face = old_face;
+      t.vertex[o] = t.vertex[xs];
+      t.vertex[xs] = mid[i];
+    } else {  // x is h1: it stays the first half; o = n1 leaves the midpoint
+      first = xs, second = o;
+      first_face = old_face, second_face = new_face;
+      t.vertex[o] = mid[i];
+    }
+    t.vertex[p] = mid[i];
+    t.vertex[q] = corner;
+    t.next[first] = p, t.next[p] = prev, t.next[prev] = first;
+    t.next[second] = nx, t.next[nx] = q, t.next[q] = second;
+    t.face[first] = t.face[p] = t.face[prev] = first_face;
+    t.face[second] = t.face[nx] = t.face[q] = second_face;
+    t.face_halfedge[old_face] = uint8_t(xs);
+    t.face_halfedge[new_face] = uint8_t(o);
+  }
+
+  // flip() of the first split's crossing edge (its halfedge is p, leaving the midpoint).
+  const uint32_t h0 = 6 + order[0], h1 = 9 + order[0];
+  const uint32_t h2 = t.next[h0], h3 = t.next[h2], h4 = t.next[h1], h5 = t.next[h4];
+  const uint32_t c = t.vertex[h3], d = t.vertex[h5];
+  const uint8_t f0 = t.face[h0], f1 = t.face[h1];
+  t.vertex[h0] = d;
+  t.next[h0] = h3, t.next[h3] = h4, t.next[h4] = h0;
+  t.face[h4] = f0;
+  t.face_halfedge[f0] = uint8_t(h0);
+  t.vertex[h1] = c;
+  t.next[h1] = h5, t.next[h5] = h2, t.next[h2] = h1;
+  t.face[h2] = f1;
+  t.face_halfedge[f1] = uint8_t(h1);
+}
+
+// Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges.
+void pass_triangles(Level& L, int threads) {
+  parallel_for(threads, L.f0, [&](size_t begin, size_t end) {
+    const MeshStorage::View& m = L.m;
+    LocalTriangle t;
+    for (size_t f = begin; f < end; ++f) {
+      if (!m.face_alive[f]) continue;
+      replay_triangle(L, uint32_t(f), t);
+      for (uint32_t s = 0; s < 12; ++s) {
+        const uint32_t h = t.id[s];
+        m.next[h] = HalfedgeId(t.id[t.next[s]]);
+        m.face[h] = FaceId::face(t.face_id[t.face[s]]);
+        m.vertex[h] = VertexId(t.vertex[s]);
+      }
+      for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[t.face_id[g]] = HalfedgeId(t.id[t.face_halfedge[g]]);
+    }
+  });
+}
+
+void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads) {
+  Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(), mesh.face_capacity(),
+          MeshStorage::view(mesh), {}};
+  uint32_t live_edges = 0, boundary_edges = 0;
+  plan_edges(L, threads, live_edges, boundary_edges);
+  MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,
+                    L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges);
+  L.m = MeshStorage::view(mesh);
+
+  std::vector<glm::dvec3> points(L.v0);
+  pass_vertices(L, weights, threads, points);
+  pass_edges(L, threads);
+  pass_triangles(L, threads);
+  parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      if (L.m.vertex_alive[v]) L.m.position[v] = points[v];
+    }
+  });
+  MeshStorage::touch(mesh);
+}
+
+}  // namespace
+
+Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int threads) {
+  if (levels <= 0) return Check::yes();
+  // Checked once: a mesh this accepts subdivides into one it accepts again (valid, triangles, no two faces with
+  // the same corners), so later levels need no check.
+  if (Check ok = can_loop_subdivide(mesh); !ok) return ok;
+  // Room for the last level up front, so no level copies the arrays again. Per level, capacities grow by at most
+  // E vertices, 6E halfedges, 3E edges and 2E faces (fewer on a boundary), and the live counts become
+  // E' = 2E + 3F, F' = 4F.
+  size_t vertices = mesh.vertex_capacity(), halfedges = mesh.halfedge_capacity(), edges = mesh.edge_capacity(),
+         faces = mesh.face_capacity(), live_edges = mesh.num_edges(), live_faces = mesh.num_faces();
+  for (int i = 0; i < levels; ++i) {
+    vertices += live_edges;
+    halfedges += 6 * live_edges;
+    edges += 3 * live_edges;
+    faces += 2 * live_edges;
+    const size_t next_edges = 2 * live_edges + 3 * live_faces;
+    live_faces *= 4;
+    live_edges = next_edges;
+  }
+  MeshStorage::reserve_total(mesh, vertices, halfedges, edges, faces);
+  for (int i = 0; i < levels; ++i) subdivide_level(mesh, weights, threads);
+  return Check::yes();
+}
+
+}  // namespace meshedit

@@ -1,0 +1,70 @@
+// MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh fast paths (Loop subdivision) that compute
+// every pointer themselves and would only pay for per-call bookkeeping through the element API.
+//
+// Invariants: grow() appends live elements the way new_vertex()/new_halfedge()/... would (invalid pointers, zero
+// positions, alive flags set, live counts and version() updated), only faster; a View's pointers stay valid until
+// the next change of any array's size. Code that writes through a View must leave a mesh the element API could
+// have produced, and calls touch() when done.
+#pragma once
+
+#include <cstdint>
+
+#include "core/halfedge_mesh.h"
+
+namespace meshedit {
+
+struct MeshStorage {
+  struct View {
+    HalfedgeId* next;
+    HalfedgeId* twin;
+    VertexId* vertex;
+    EdgeId* edge;
+    FaceId* face;
+    HalfedgeId* vertex_halfedge;
+    glm::dvec3* position;
+    HalfedgeId* edge_halfedge;
+    HalfedgeId* face_halfedge;
+    const uint8_t* vertex_alive;
+    const uint8_t* edge_alive;
+    const uint8_t* face_alive;
+  };
+
+  static View view(HalfedgeMesh& m) {
+    return {m.h_next_.data(),     m.h_twin_.data(),     m.h_vertex_.data(),   m.h_edge_.data(),
+            m.h_face_.data(),     m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
+            m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
+  }
+
+  // Grows each kind to the given capacity with new live elements (capacities never shrink).
+  static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
+    m.live_vertices_ += vertices - m.vertex_capacity();
+    m.live_halfedges_ += halfedges - m.halfedge_capacity();
+    m.live_edges_ += edges - m.edge_capacity();
+    m.live_faces_ += faces - m.face_capacity();
+    m.v_halfedge_.resize(vertices);
+    m.v_position_.resize(vertices, glm::dvec3(0.0));
+    m.v_alive_.resize(vertices, 1);
+    m.h_next_.resize(halfedges);
+    m.h_twin_.resize(halfedges);
+    m.h_vertex_.resize(halfedges);
+    m.h_edge_.resize(halfedges);
+    m.h_face_.resize(halfedges);
+    m.h_alive_.resize(halfedges, 1);
+    m.e_halfedge_.resize(edges);
+    m.e_alive_.resize(edges, 1);
+    m.f_halfedge_.resize(faces);
+    m.f_alive_.resize(faces, 1);
+    m.touch();
+  }
+
+  // Makes room for this many elements of each kind in all, so later grow() calls up to it do not copy.
+  static void reserve_total(HalfedgeMesh& m, size_t vertices, size_t halfedges, size_t edges, size_t faces) {
+    m.reserve(vertices - std::min<size_t>(vertices, m.vertex_capacity()),
+              halfedges - std::min<size_t>(halfedges, m.halfedge_capacity()),
+              edges - std::min<size_t>(edges, m.edge_capacity()), faces - std::min<size_t>(faces, m.face_capacity()));
+  }
+
+  static void touch(HalfedgeMesh& m) { m.touch(); }
+};
+
+}  // namespace meshedit
