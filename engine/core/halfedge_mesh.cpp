@@ -29,11 +29,7 @@ bool HalfedgeMesh::alive(ElementRef r) const {
 
 void HalfedgeMesh::set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex,
                                  EdgeId edge, FaceId face) {
-  h_next_[h.index] = next;
-  h_twin_[h.index] = twin;
-  h_vertex_[h.index] = vertex;
-  h_edge_[h.index] = edge;
-  h_face_[h.index] = face;
+  h_[h.index] = HalfedgeRecord{next, twin, vertex, edge, face};
   touch();
 }
 
@@ -47,11 +43,7 @@ VertexId HalfedgeMesh::new_vertex(const glm::dvec3& position) {
 }
 
 HalfedgeId HalfedgeMesh::new_halfedge() {
-  h_next_.emplace_back();
-  h_twin_.emplace_back();
-  h_vertex_.emplace_back();
-  h_edge_.emplace_back();
-  h_face_.emplace_back();
+  h_.emplace_back();
   h_alive_.push_back(1);
   ++live_halfedges_;
   touch();
@@ -119,10 +111,7 @@ void HalfedgeMesh::reserve(size_t vertices, size_t halfedges, size_t edges, size
   v_halfedge_.reserve(v_halfedge_.size() + vertices);
   v_position_.reserve(v_position_.size() + vertices);
   v_alive_.reserve(v_alive_.size() + vertices);
-  for (auto* a : {&h_next_, &h_twin_}) a->reserve(a->size() + halfedges);
-  h_vertex_.reserve(h_vertex_.size() + halfedges);
-  h_edge_.reserve(h_edge_.size() + halfedges);
-  h_face_.reserve(h_face_.size() + halfedges);
+  h_.reserve(h_.size() + halfedges);
   h_alive_.reserve(h_alive_.size() + halfedges);
   e_halfedge_.reserve(e_halfedge_.size() + edges);
   e_alive_.reserve(e_alive_.size() + edges);
@@ -167,8 +156,7 @@ bool HalfedgeMesh::is_boundary(EdgeId e) const {
 }
 
 size_t HalfedgeMesh::memory_bytes() const {
-  return (h_next_.capacity() + h_twin_.capacity()) * sizeof(HalfedgeId) + h_vertex_.capacity() * sizeof(VertexId) +
-         h_edge_.capacity() * sizeof(EdgeId) + h_face_.capacity() * sizeof(FaceId) + h_alive_.capacity() +
+  return h_.capacity() * sizeof(HalfedgeRecord) + h_alive_.capacity() +
          v_halfedge_.capacity() * sizeof(HalfedgeId) + v_position_.capacity() * sizeof(glm::dvec3) +
          v_alive_.capacity() + e_halfedge_.capacity() * sizeof(HalfedgeId) + e_alive_.capacity() +
          f_halfedge_.capacity() * sizeof(HalfedgeId) + f_alive_.capacity() +
@@ -183,8 +171,7 @@ bool same_bits(const MeshArray<glm::dvec3>& a, const MeshArray<glm::dvec3>& b) {
 }  // namespace
 
 bool HalfedgeMesh::same_as(const HalfedgeMesh& o) const {
-  return h_next_ == o.h_next_ && h_twin_ == o.h_twin_ && h_vertex_ == o.h_vertex_ && h_edge_ == o.h_edge_ &&
-         h_face_ == o.h_face_ && h_alive_ == o.h_alive_ && v_halfedge_ == o.v_halfedge_ &&
+  return h_ == o.h_ && h_alive_ == o.h_alive_ && v_halfedge_ == o.v_halfedge_ &&
          same_bits(v_position_, o.v_position_) && v_alive_ == o.v_alive_ && e_halfedge_ == o.e_halfedge_ &&
          e_alive_ == o.e_alive_ && f_halfedge_ == o.f_halfedge_ && f_alive_ == o.f_alive_ &&
          b_halfedge_ == o.b_halfedge_ && b_alive_ == o.b_alive_;

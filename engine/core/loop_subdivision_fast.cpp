@@ -35,6 +35,7 @@ constexpr uint32_t kBoundaryFlag = 0x80000000u;
 struct EdgePlan {
   uint32_t rank = 0;             // k: live original edges before this one
   uint32_t boundary_before = 0;  // bb, with kBoundaryFlag set when this edge is on a boundary
+  uint32_t face_side = 0;        // split()'s h0: e.halfedge, or its twin when e.halfedge lies on a boundary loop
   bool boundary() const { return (boundary_before & kBoundaryFlag) != 0; }
   uint32_t bb() const { return boundary_before & ~kBoundaryFlag; }
 };
@@ -42,17 +43,13 @@ struct EdgePlan {
 struct Level {
   uint32_t v0, h0, e0, f0;  // capacities before the level
   MeshStorage::View m;
-  std::vector<EdgePlan> plan;  // by original edge id (dead edges: unused)
+  MeshArray<EdgePlan>& plan;  // by original edge id (dead edges: unused)
 
   uint32_t vertex_of(uint32_t e) const { return v0 + plan[e].rank; }
   uint32_t first_edge(uint32_t e) const { return e0 + 3 * plan[e].rank - plan[e].bb(); }
   uint32_t first_face(uint32_t e) const { return f0 + 2 * plan[e].rank - plan[e].bb(); }
   uint32_t first_halfedge(uint32_t e) const { return h0 + 6 * plan[e].rank - 2 * plan[e].bb(); }
-  // split()'s h0 for edge e: e.halfedge, or its twin when e.halfedge lies on a boundary loop.
-  uint32_t face_side(uint32_t e) const {
-    const HalfedgeId h = m.edge_halfedge[e];
-    return m.face[h.index].is_boundary() ? m.twin[h.index].index : h.index;
-  }
+  uint32_t face_side(uint32_t e) const { return plan[e].face_side; }
 };
 
 // Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded).
@@ -60,16 +57,15 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
   L.plan.assign(L.e0, EdgePlan{});
   const size_t chunks = chunk_count(threads, L.e0);
   std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
-  const auto is_boundary = [&](uint32_t e) {
-    const HalfedgeId h = L.m.edge_halfedge[e];
-    return L.m.face[h.index].is_boundary() || L.m.face[L.m.twin[h.index].index].is_boundary();
-  };
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
     uint32_t n = 0, b = 0;
     for (size_t e = begin; e < end; ++e) {
       if (!L.m.edge_alive[e]) continue;
       ++n;
-      if (is_boundary(uint32_t(e))) {
+      const uint32_t h = L.m.edge_halfedge[e].index, t = L.m.h[h].twin.index;
+      const bool h_on_loop = L.m.h[h].face.is_boundary();
+      L.plan[e].face_side = h_on_loop ? t : h;
+      if (h_on_loop || L.m.h[t].face.is_boundary()) {
         ++b;
         L.plan[e].boundary_before = kBoundaryFlag;
       }
@@ -97,7 +93,7 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
 }
 
 // Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge.
-void pass_vertices(Level& L, LoopWeights weights, int threads, std::vector<glm::dvec3>& points) {
+void pass_vertices(Level& L, LoopWeights weights, int threads, MeshArray<glm::dvec3>& points) {
   parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
     loop_rules::ValenceWeights weight(weights);
     const MeshStorage::View& m = L.m;
@@ -109,15 +105,15 @@ void pass_vertices(Level& L, LoopWeights weights, int threads, std::vector<glm::
       uint32_t valence = 0, rim_count = 0;
       uint32_t h = start;
       do {
-        const uint32_t t = m.twin[h].index;
-        const glm::dvec3& q = m.position[m.vertex[t].index];
+        const uint32_t t = m.h[h].twin.index;
+        const glm::dvec3& q = m.position[m.h[t].vertex.index];
         neighbour_sum += q;
         ++valence;
-        if (m.face[h].is_boundary() || m.face[t].is_boundary()) {
+        if (m.h[h].face.is_boundary() || m.h[t].face.is_boundary()) {
           if (rim_count < 2) rim[rim_count] = q;
           ++rim_count;
         }
-        h = m.next[t].index;
+        h = m.h[t].next.index;
       } while (h != start);
       if (rim_count == 0) {
         points[v] = loop_rules::interior_vertex(p, neighbour_sum, valence, weight(valence));
@@ -126,7 +122,7 @@ void pass_vertices(Level& L, LoopWeights weights, int threads, std::vector<glm::
       } else {
         points[v] = p;
       }
-      const uint32_t e = m.edge[start].index;
+      const uint32_t e = m.h[start].edge.index;
       if (L.face_side(e) == start) m.vertex_halfedge[v] = HalfedgeId(L.first_halfedge(e));  // becomes n0
     }
   });
@@ -141,15 +137,15 @@ void pass_edges(Level& L, int threads) {
       if (!m.edge_alive[e]) continue;
       const auto edge = uint32_t(e);
       const bool boundary = L.plan[e].boundary();
-      const uint32_t h0 = L.face_side(edge), h1 = m.twin[h0].index;
+      const uint32_t h0 = L.face_side(edge), h1 = m.h[h0].twin.index;
       const uint32_t mid = L.vertex_of(edge), ea = L.first_edge(edge), n0 = L.first_halfedge(edge);
-      const glm::dvec3& a = m.position[m.vertex[h0].index];
-      const glm::dvec3& b = m.position[m.vertex[h1].index];
+      const glm::dvec3& a = m.position[m.h[h0].vertex.index];
+      const glm::dvec3& b = m.position[m.h[h1].vertex.index];
       if (boundary) {
         m.position[mid] = loop_rules::boundary_edge(a, b);
       } else {
-        const glm::dvec3& c = m.position[m.vertex[m.next[m.next[h0].index].index].index];
-        const glm::dvec3& d = m.position[m.vertex[m.next[m.next[h1].index].index].index];
+        const glm::dvec3& c = m.position[m.h[m.h[m.h[h0].next.index].next.index].vertex.index];
+        const glm::dvec3& d = m.position[m.h[m.h[m.h[h1].next.index].next.index].vertex.index];
         m.position[mid] = loop_rules::interior_edge(a, b, c, d);
       }
       m.vertex_halfedge[mid] = HalfedgeId(n0 + 1);
@@ -157,16 +153,16 @@ void pass_edges(Level& L, int threads) {
       for (uint32_t i = 0; i < pairs; ++i) {
         const uint32_t x = n0 + 2 * i, y = x + 1;
         m.edge_halfedge[ea + i] = HalfedgeId(x);
-        m.twin[x] = HalfedgeId(y);
-        m.twin[y] = HalfedgeId(x);
-        m.edge[x] = m.edge[y] = EdgeId(ea + i);
+        m.h[x].twin = HalfedgeId(y);
+        m.h[y].twin = HalfedgeId(x);
+        m.h[x].edge = m.h[y].edge = EdgeId(ea + i);
       }
       if (boundary) {
         const uint32_t n1 = n0 + 1;
-        m.next[n1] = m.next[h1];
-        m.face[n1] = m.face[h1];
-        m.vertex[n1] = VertexId(mid);
-        m.next[h1] = HalfedgeId(n1);
+        m.h[n1].next = m.h[h1].next;
+        m.h[n1].face = m.h[h1].face;
+        m.h[n1].vertex = VertexId(mid);
+        m.h[h1].next = HalfedgeId(n1);
       }
     }
   });
@@ -188,21 +184,21 @@ void replay_triangle(const Level& L, uint32_t f, LocalTriangle& t) {
   const MeshStorage::View& m = L.m;
   uint32_t x[3];
   x[0] = m.face_halfedge[f].index;
-  x[1] = m.next[x[0]].index;
-  x[2] = m.next[x[1]].index;
+  x[1] = m.h[x[0]].next.index;
+  x[2] = m.h[x[1]].next.index;
   bool side_h0[3];
   uint32_t rank[3], mid[3];
   for (uint32_t i = 0; i < 3; ++i) {
-    const uint32_t e = m.edge[x[i]].index;
+    const uint32_t e = m.h[x[i]].edge.index;
     const EdgePlan& p = L.plan[e];
-    side_h0[i] = p.boundary() || m.edge_halfedge[e].index == x[i];
+    side_h0[i] = p.face_side == x[i];
     rank[i] = p.rank;
     mid[i] = L.vertex_of(e);
     const uint32_t n0 = L.first_halfedge(e), g0 = L.first_face(e);
     t.id[i] = x[i];
     t.next[i] = (i + 1) % 3;
     t.face[i] = 0;
-    t.vertex[i] = m.vertex[x[i]].index;
+    t.vertex[i] = m.h[x[i]].vertex.index;
     t.id[3 + i] = side_h0[i] ? n0 : n0 + 1;      // n0 or n1
     t.id[6 + i] = side_h0[i] ? n0 + 2 : n0 + 4;  // n2 or n4
     t.id[9 + i] = side_h0[i] ? n0 + 3 : n0 + 5;  // n3 or n5
@@ -268,25 +264,32 @@ void pass_triangles(Level& L, int threads) {
       replay_triangle(L, uint32_t(f), t);
       for (uint32_t s = 0; s < 12; ++s) {
         const uint32_t h = t.id[s];
-        m.next[h] = HalfedgeId(t.id[t.next[s]]);
-        m.face[h] = FaceId::face(t.face_id[t.face[s]]);
-        m.vertex[h] = VertexId(t.vertex[s]);
+        m.h[h].next = HalfedgeId(t.id[t.next[s]]);
+        m.h[h].face = FaceId::face(t.face_id[t.face[s]]);
+        m.h[h].vertex = VertexId(t.vertex[s]);
       }
       for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[t.face_id[g]] = HalfedgeId(t.id[t.face_halfedge[g]]);
     }
   });
 }
 
-void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads) {
+// Per-level scratch arrays, sized once for the last level so no level faults in fresh pages for them.
+struct Scratch {
+  MeshArray<EdgePlan> plan;
+  MeshArray<glm::dvec3> points;
+};
+
+void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch) {
   Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(), mesh.face_capacity(),
-          MeshStorage::view(mesh), {}};
+          MeshStorage::view(mesh), scratch.plan};
   uint32_t live_edges = 0, boundary_edges = 0;
   plan_edges(L, threads, live_edges, boundary_edges);
   MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,
                     L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges);
   L.m = MeshStorage::view(mesh);
 
-  std::vector<glm::dvec3> points(L.v0);
+  MeshArray<glm::dvec3>& points = scratch.points;
+  points.resize(L.v0);
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
   pass_triangles(L, threads);
@@ -310,7 +313,12 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
   // E' = 2E + 3F, F' = 4F.
   size_t vertices = mesh.vertex_capacity(), halfedges = mesh.halfedge_capacity(), edges = mesh.edge_capacity(),
          faces = mesh.face_capacity(), live_edges = mesh.num_edges(), live_faces = mesh.num_faces();
+  Scratch scratch;
   for (int i = 0; i < levels; ++i) {
+    if (i + 1 == levels) {
+      scratch.plan.reserve(edges);
+      scratch.points.reserve(vertices);
+    }
     vertices += live_edges;
     halfedges += 6 * live_edges;
     edges += 3 * live_edges;
@@ -320,7 +328,7 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
     live_edges = next_edges;
   }
   MeshStorage::reserve_total(mesh, vertices, halfedges, edges, faces);
-  for (int i = 0; i < levels; ++i) subdivide_level(mesh, weights, threads);
+  for (int i = 0; i < levels; ++i) subdivide_level(mesh, weights, threads, scratch);
   return Check::yes();
 }
 

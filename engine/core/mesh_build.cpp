@@ -1,4 +1,6 @@
 // Half-edge construction from indexed polygons (ids and refusals are specified in mesh_build.h).
+// Clean input takes the fast path (mesh_build_fast.cpp), which builds the same mesh; everything else, and every
+// refusal, goes through the checked build below.
 //
 // Twins are matched through the halfedges grouped by tail vertex and sorted by head vertex (a CSR
 // table), so the build is O(H log d) with no hash map and no quadratic case, even for a vertex of huge
@@ -8,7 +10,9 @@
 #include <algorithm>
 #include <sstream>
 
+#include "core/mesh_build_fast.h"
 #include "core/mesh_error.h"
+#include "core/mesh_storage.h"
 
 namespace meshedit {
 namespace {
@@ -51,6 +55,18 @@ struct Corners {
     return s;
   }
 };
+
+// Offsets that match the index list, and counts that fit 32-bit ids (the fast path relies on both too).
+void check_sizes(const PolygonMesh& in) {
+  const size_t num_interior = in.indices.size();
+  if (in.face_offsets.empty() || in.face_offsets.front() != 0 || in.face_offsets.back() != num_interior) {
+    throw MeshError("polygon offsets do not match the index list");
+  }
+  if (in.num_vertices() >= kNone / 2 || num_interior >= kNone / 2 || in.num_faces() >= FaceId::kBoundaryBit) {
+    throw MeshError("mesh too large: " + std::to_string(in.num_faces()) + " faces with " +
+                    std::to_string(num_interior) + " corners exceed 32-bit ids");
+  }
+}
 
 void check_faces(const PolygonMesh& in) {
   const size_t num_vertices = in.num_vertices();
@@ -132,15 +148,11 @@ Corners make_corners(const PolygonMesh& in) {
 
 }  // namespace
 
-HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
+namespace build_detail {
+
+HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
+  check_sizes(in);
   const size_t num_interior = in.indices.size();
-  if (in.face_offsets.empty() || in.face_offsets.front() != 0 || in.face_offsets.back() != num_interior) {
-    throw MeshError("polygon offsets do not match the index list");
-  }
-  if (in.num_vertices() >= kNone / 2 || num_interior >= kNone / 2 || in.num_faces() >= FaceId::kBoundaryBit) {
-    throw MeshError("mesh too large: " + std::to_string(in.num_faces()) + " faces with " +
-                    std::to_string(num_interior) + " corners exceed 32-bit ids");
-  }
   check_faces(in);
   const Corners c = make_corners(in);
 
@@ -186,90 +198,83 @@ HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
   const size_t num_halfedges = num_interior + num_boundary;
   if (num_halfedges >= kNone / 2) throw MeshError("mesh too large for 32-bit halfedge ids");
 
-  HalfedgeMesh m;
-  m.h_next_.resize(num_halfedges);
-  m.h_twin_.resize(num_halfedges);
-  m.h_vertex_.resize(num_halfedges);
-  m.h_edge_.resize(num_halfedges);
-  m.h_face_.resize(num_halfedges);
-  m.h_alive_.assign(num_halfedges, 1);
+  HalfedgeMesh mesh;
+  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
+  m.h.resize(num_halfedges);
+  m.h_alive.assign(num_halfedges, 1);
   for (uint32_t h = 0; h < num_interior; ++h) {
-    m.h_next_[h] = HalfedgeId(c.next[h]);
-    m.h_twin_[h] = HalfedgeId(twin[h]);
-    m.h_vertex_[h] = VertexId(c.tail(h));
-    m.h_face_[h] = FaceId::face(c.face_of[h]);
+    m.h[h].next = HalfedgeId(c.next[h]);
+    m.h[h].twin = HalfedgeId(twin[h]);
+    m.h[h].vertex = VertexId(c.tail(h));
+    m.h[h].face = FaceId::face(c.face_of[h]);
   }
-  m.f_halfedge_.resize(in.num_faces());
-  m.f_alive_.assign(in.num_faces(), 1);
-  for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge_[f] = HalfedgeId(in.face_offsets[f]);
+  m.f_halfedge.resize(in.num_faces());
+  m.f_alive.assign(in.num_faces(), 1);
+  for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge[f] = HalfedgeId(in.face_offsets[f]);
 
   // Walk each hole once, creating its boundary halfedges in walking order.
   std::vector<uint32_t> boundary_twin_of(num_interior, kNone);
   uint32_t next_boundary = static_cast<uint32_t>(num_interior);
   for (uint32_t start = 0; start < num_interior; ++start) {
     if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
-    const FaceId loop = FaceId::boundary(static_cast<uint32_t>(m.b_halfedge_.size()));
-    m.b_halfedge_.push_back(HalfedgeId(next_boundary));
-    m.b_alive_.push_back(1);
+    const FaceId loop = FaceId::boundary(static_cast<uint32_t>(m.b_halfedge.size()));
+    m.b_halfedge.push_back(HalfedgeId(next_boundary));
+    m.b_alive.push_back(1);
     uint32_t h = start;
     uint32_t previous = kNone;
     do {
       const uint32_t b = next_boundary++;
       boundary_twin_of[h] = b;
-      m.h_twin_[h] = HalfedgeId(b);
-      m.h_twin_[b] = HalfedgeId(h);
-      m.h_vertex_[b] = VertexId(c.head(h));
-      m.h_face_[b] = loop;
-      if (previous != kNone) m.h_next_[previous] = HalfedgeId(b);
+      m.h[h].twin = HalfedgeId(b);
+      m.h[b].twin = HalfedgeId(h);
+      m.h[b].vertex = VertexId(c.head(h));
+      m.h[b].face = loop;
+      if (previous != kNone) m.h[previous].next = HalfedgeId(b);
       previous = b;
       h = open_incoming[c.tail(h)];  // the open halfedge arriving where this one leaves
     } while (h != start);
-    m.h_next_[previous] = m.b_halfedge_.back();
+    m.h[previous].next = m.b_halfedge.back();
   }
 
   // Edges in order of their first halfedge.
   for (uint32_t h = 0; h < num_interior; ++h) {
-    if (m.h_edge_[h].valid()) continue;
-    const EdgeId e(static_cast<uint32_t>(m.e_halfedge_.size()));
-    m.e_halfedge_.push_back(HalfedgeId(h));
-    m.h_edge_[h] = e;
-    m.h_edge_[m.h_twin_[h].index] = e;
+    if (m.h[h].edge.valid()) continue;
+    const EdgeId e(static_cast<uint32_t>(m.e_halfedge.size()));
+    m.e_halfedge.push_back(HalfedgeId(h));
+    m.h[h].edge = e;
+    m.h[m.h[h].twin.index].edge = e;
   }
-  m.e_alive_.assign(m.e_halfedge_.size(), 1);
+  m.e_alive.assign(m.e_halfedge.size(), 1);
 
   // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
-  m.v_position_.assign(in.positions.begin(), in.positions.end());
-  m.v_halfedge_.assign(in.num_vertices(), HalfedgeId());
+  m.v_position.assign(in.positions.begin(), in.positions.end());
+  m.v_halfedge.assign(in.num_vertices(), HalfedgeId());
   for (uint32_t h = 0; h < num_interior; ++h) {
-    auto& slot = m.v_halfedge_[c.tail(h)];
+    auto& slot = m.v_halfedge[c.tail(h)];
     if (!slot.valid()) slot = HalfedgeId(h);
   }
   for (uint32_t b = static_cast<uint32_t>(num_interior); b < num_halfedges; ++b) {
-    m.v_halfedge_[m.h_vertex_[b].index] = HalfedgeId(b);
+    m.v_halfedge[m.h[b].vertex.index] = HalfedgeId(b);
   }
-  m.v_alive_.resize(in.num_vertices());
+  m.v_alive.resize(in.num_vertices());
   size_t unused = 0;
   for (size_t v = 0; v < in.num_vertices(); ++v) {
-    m.v_alive_[v] = m.v_halfedge_[v].valid() ? 1 : 0;
-    unused += m.v_alive_[v] ? 0 : 1;
+    m.v_alive[v] = m.v_halfedge[v].valid() ? 1 : 0;
+    unused += m.v_alive[v] ? 0 : 1;
   }
 
-  m.live_vertices_ = in.num_vertices() - unused;
-  m.live_halfedges_ = num_halfedges;
-  m.live_edges_ = m.e_halfedge_.size();
-  m.live_faces_ = in.num_faces();
-  m.live_boundaries_ = m.b_halfedge_.size();
+  MeshStorage::count_live(mesh, unused);
 
   // A vertex whose fan does not reach all its halfedges joins several surfaces (a bow-tie).
   for (uint32_t v = 0; v < in.num_vertices(); ++v) {
-    if (!m.v_alive_[v]) continue;
+    if (!m.v_alive[v]) continue;
     const uint32_t outgoing = c.out_start[v + 1] - c.out_start[v] + (open_incoming[v] != kNone ? 1 : 0);
     uint32_t walked = 0;
-    m.for_each_outgoing(VertexId(v), [&](HalfedgeId) { ++walked; });
+    mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId) { ++walked; });
     if (walked != outgoing) {
       std::vector<uint32_t> fan;  // only on the error path: which faces the fan reached
-      m.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
-        if (!m.face(h).is_boundary()) fan.push_back(m.face(h).slot());
+      mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
+        if (!mesh.face(h).is_boundary()) fan.push_back(mesh.face(h).slot());
       });
       std::vector<uint32_t> others;
       for (uint32_t i = c.out_start[v]; i < c.out_start[v + 1]; ++i) {
@@ -285,7 +290,21 @@ HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
   }
 
   if (report) report->unused_vertices = unused;
-  return m;
+  return mesh;
+}
+
+}  // namespace build_detail
+
+
+HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
+  check_sizes(in);
+  HalfedgeMesh fast;
+  size_t unused = 0;
+  if (build_detail::build_fast(in, fast, unused)) {
+    if (report) report->unused_vertices = unused;
+    return fast;
+  }
+  return build_detail::build_checked(in, report);
 }
 
 PolygonMesh to_polygon_mesh(const HalfedgeMesh& mesh) {

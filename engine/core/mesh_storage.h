@@ -7,6 +7,7 @@
 // have produced, and calls touch() when done.
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 
 #include "core/halfedge_mesh.h"
@@ -15,11 +16,7 @@ namespace meshedit {
 
 struct MeshStorage {
   struct View {
-    HalfedgeId* next;
-    HalfedgeId* twin;
-    VertexId* vertex;
-    EdgeId* edge;
-    FaceId* face;
+    HalfedgeRecord* h;
     HalfedgeId* vertex_halfedge;
     glm::dvec3* position;
     HalfedgeId* edge_halfedge;
@@ -30,8 +27,7 @@ struct MeshStorage {
   };
 
   static View view(HalfedgeMesh& m) {
-    return {m.h_next_.data(),     m.h_twin_.data(),     m.h_vertex_.data(),   m.h_edge_.data(),
-            m.h_face_.data(),     m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
+    return {m.h_.data(),          m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
             m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
   }
 
@@ -44,11 +40,7 @@ struct MeshStorage {
     m.v_halfedge_.resize(vertices);
     m.v_position_.resize(vertices, glm::dvec3(0.0));
     m.v_alive_.resize(vertices, 1);
-    m.h_next_.resize(halfedges);
-    m.h_twin_.resize(halfedges);
-    m.h_vertex_.resize(halfedges);
-    m.h_edge_.resize(halfedges);
-    m.h_face_.resize(halfedges);
+    m.h_.resize(halfedges);
     m.h_alive_.resize(halfedges, 1);
     m.e_halfedge_.resize(edges);
     m.e_alive_.resize(edges, 1);
@@ -65,6 +57,34 @@ struct MeshStorage {
   }
 
   static void touch(HalfedgeMesh& m) { m.touch(); }
+
+  // The arrays themselves, for a builder that sizes and fills them from nothing (mesh_build_fast.cpp).
+  struct Arrays {
+    MeshArray<HalfedgeRecord>& h;
+    MeshArray<uint8_t>& h_alive;
+    MeshArray<HalfedgeId>& v_halfedge;
+    MeshArray<glm::dvec3>& v_position;
+    MeshArray<uint8_t>& v_alive;
+    MeshArray<HalfedgeId>& e_halfedge;
+    MeshArray<uint8_t>& e_alive;
+    MeshArray<HalfedgeId>& f_halfedge;
+    MeshArray<uint8_t>& f_alive;
+    MeshArray<HalfedgeId>& b_halfedge;
+    MeshArray<uint8_t>& b_alive;
+  };
+  static Arrays arrays(HalfedgeMesh& m) {
+    return {m.h_,          m.h_alive_, m.v_halfedge_, m.v_position_, m.v_alive_,  m.e_halfedge_,
+            m.e_alive_,    m.f_halfedge_, m.f_alive_, m.b_halfedge_,  m.b_alive_};
+  }
+  // Sets the live counts from the alive flags' sizes after a builder filled the arrays (every element live but
+  // `dead_vertices` unused input vertices).
+  static void count_live(HalfedgeMesh& m, size_t dead_vertices) {
+    m.live_vertices_ = m.v_alive_.size() - dead_vertices;
+    m.live_halfedges_ = m.h_alive_.size();
+    m.live_edges_ = m.e_alive_.size();
+    m.live_faces_ = m.f_alive_.size();
+    m.live_boundaries_ = m.b_alive_.size();
+  }
 };
 
 }  // namespace meshedit

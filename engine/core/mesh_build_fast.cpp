@@ -1,0 +1,247 @@
+// The builder's fast path: the checked builder's exact mesh (ids in the order mesh_build.h specifies) for clean
+// input, in a few sequential passes and one table of outgoing halfedges, with no error bookkeeping.
+//
+// How it differs from the checked builder (mesh_build.cpp), which stays the reference and the only place that
+// explains a refusal: the outgoing halfedges of each vertex are stored as (head << 32 | halfedge) keys sorted in
+// place (no head lookups while sorting or searching), twins are found by scanning the head vertex's few keys, and
+// the pointers are written straight into the mesh's arrays. Anything unusual (a face with fewer than 3 or more
+// than kMaxFastCorners corners, a repeated corner, an index out of range, a doubled or inconsistent edge, a
+// repeated face, a bow-tie) makes it return false at once, and build_halfedge_mesh reruns the checked builder.
+// tests/core/mesh_build_fast_test.cpp holds the two to the same result.
+#include "core/mesh_build_fast.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <vector>
+
+#include "core/mesh_storage.h"
+
+namespace meshedit::build_detail {
+namespace {
+
+constexpr uint32_t kNone = kInvalidIndex;
+constexpr uint32_t kMaxFastCorners = 16;  // bigger polygons take the checked path (quadratic corner check here)
+
+uint32_t key_head(uint64_t key) { return uint32_t(key >> 32); }
+uint32_t key_halfedge(uint64_t key) { return uint32_t(key); }
+
+// Every face has 3..kMaxFastCorners distinct corners, all in range.
+bool faces_are_clean(const PolygonMesh& in) {
+  const uint32_t vertices = uint32_t(in.num_vertices());
+  const uint32_t* idx = in.indices.data();
+  for (size_t f = 0; f < in.num_faces(); ++f) {
+    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1], n = end - begin;
+    if (n < 3 || n > kMaxFastCorners) return false;
+    for (uint32_t i = begin; i < end; ++i) {
+      if (idx[i] >= vertices) return false;
+      for (uint32_t j = begin; j < i; ++j) {
+        if (idx[j] == idx[i]) return false;
+      }
+    }
+  }
+  return true;
+}
+
+// Outgoing halfedges by tail vertex: keys[start[v] .. start[v + 1]) = (head << 32 | h), sorted (so by head).
+struct Outgoing {
+  std::vector<uint32_t> start;
+  std::vector<uint64_t> keys;
+
+  // The first key of v whose head is >= u (or the range's end).
+  const uint64_t* lower(uint32_t v, uint32_t u) const {
+    const uint64_t* first = keys.data() + start[v];
+    const uint64_t* last = keys.data() + start[v + 1];
+    if (last - first <= 16) {
+      while (first != last && key_head(*first) < u) ++first;
+      return first;
+    }
+    return std::lower_bound(first, last, uint64_t(u) << 32);
+  }
+};
+
+Outgoing outgoing_table(const PolygonMesh& in) {
+  const size_t vertices = in.num_vertices();
+  const uint32_t* idx = in.indices.data();
+  Outgoing out;
+  out.start.assign(vertices + 1, 0);
+  for (uint32_t v : in.indices) ++out.start[v + 1];
+  for (size_t v = 0; v < vertices; ++v) out.start[v + 1] += out.start[v];
+  out.keys.resize(in.indices.size());
+  std::vector<uint32_t> cursor(out.start.begin(), out.start.end() - 1);
+  for (size_t f = 0; f < in.num_faces(); ++f) {
+    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
+    for (uint32_t h = begin; h < end; ++h) {
+      const uint32_t head = idx[h + 1 < end ? h + 1 : begin];
+      out.keys[cursor[idx[h]]++] = (uint64_t(head) << 32) | h;
+    }
+  }
+  for (size_t v = 0; v < vertices; ++v) {
+    uint64_t* first = out.keys.data() + out.start[v];
+    uint64_t* last = out.keys.data() + out.start[v + 1];
+    if (last - first <= 16) {
+      for (uint64_t* i = first + 1; i < last; ++i) {  // insertion sort: valences are small
+        const uint64_t k = *i;
+        uint64_t* j = i;
+        for (; j > first && *(j - 1) > k; --j) *j = *(j - 1);
+        *j = k;
+      }
+    } else {
+      std::sort(first, last);
+    }
+  }
+  return out;
+}
+
+// Interior twins; false on a doubled edge (two halfedges u -> v) or an edge with two halfedges v -> u.
+bool match_twins(const PolygonMesh& in, const Outgoing& out, std::vector<uint32_t>& twin) {
+  twin.assign(in.indices.size(), kNone);
+  for (uint32_t u = 0; u < in.num_vertices(); ++u) {
+    const uint32_t end = out.start[u + 1];
+    for (uint32_t i = out.start[u]; i < end; ++i) {
+      const uint32_t v = key_head(out.keys[i]);
+      if (i + 1 < end && key_head(out.keys[i + 1]) == v) return false;
+      const uint64_t* reverse = out.lower(v, u);
+      const uint64_t* last = out.keys.data() + out.start[v + 1];
+      if (reverse == last || key_head(*reverse) != u) continue;
+      if (reverse + 1 != last && key_head(reverse[1]) == u) return false;
+      twin[key_halfedge(out.keys[i])] = key_halfedge(*reverse);
+    }
+  }
+  return true;
+}
+
+// Sorted corners of face f, for the (rare) repeated-polygon check.
+std::vector<uint32_t> sorted_corners(const PolygonMesh& in, uint32_t f) {
+  std::vector<uint32_t> s(in.indices.begin() + in.face_offsets[f], in.indices.begin() + in.face_offsets[f + 1]);
+  std::sort(s.begin(), s.end());
+  return s;
+}
+
+}  // namespace
+
+bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertices) {
+  if (!faces_are_clean(in)) return false;
+  const uint32_t num_interior = uint32_t(in.indices.size());
+  const uint32_t num_vertices = uint32_t(in.num_vertices());
+  const uint32_t* idx = in.indices.data();
+
+  std::vector<uint32_t> twin;
+  {
+    const Outgoing out = outgoing_table(in);
+    if (!match_twins(in, out, twin)) return false;
+  }
+
+  // Boundary: at most one open halfedge may arrive at each vertex.
+  std::vector<uint32_t> open_incoming(num_vertices, kNone);
+  uint32_t num_boundary = 0;
+  for (size_t f = 0; f < in.num_faces(); ++f) {
+    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
+    for (uint32_t h = begin; h < end; ++h) {
+      if (twin[h] != kNone) continue;
+      const uint32_t head = idx[h + 1 < end ? h + 1 : begin];
+      if (open_incoming[head] != kNone) return false;
+      open_incoming[head] = h;
+      ++num_boundary;
+    }
+  }
+  const uint32_t num_halfedges = num_interior + num_boundary;
+  if (num_halfedges >= kNone / 2) return false;
+
+  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
+  m.h.resize(num_halfedges);
+  m.h_alive.assign(num_halfedges, 1);
+  HalfedgeRecord* h_ = m.h.data();
+  m.f_halfedge.resize(in.num_faces());
+  m.f_alive.assign(in.num_faces(), 1);
+  for (uint32_t f = 0; f < in.num_faces(); ++f) {
+    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
+    m.f_halfedge[f] = HalfedgeId(begin);
+    for (uint32_t h = begin; h < end; ++h) {
+      HalfedgeRecord& r = h_[h];
+      r.next = HalfedgeId(h + 1 < end ? h + 1 : begin);
+      r.twin = HalfedgeId(twin[h]);
+      r.vertex = VertexId(idx[h]);
+      r.face = FaceId::face(f);
+    }
+  }
+
+  // Two faces glued along an edge with the same corners are one face repeated.
+  for (uint32_t h = 0; h < num_interior; ++h) {
+    const uint32_t t = twin[h];
+    if (t == kNone || t < h) continue;
+    const uint32_t f = h_[h].face.slot(), g = h_[t].face.slot();
+    const uint32_t size_f = in.face_offsets[f + 1] - in.face_offsets[f];
+    if (size_f != in.face_offsets[g + 1] - in.face_offsets[g]) continue;
+    const bool same = size_f == 3 ? h_[h_[h_[h].next.index].next.index].vertex == h_[h_[h_[t].next.index].next.index].vertex
+                                  : sorted_corners(in, f) == sorted_corners(in, g);
+    if (same) return false;
+  }
+
+  // Each hole walked once from its first open halfedge, its loop's halfedges created in walking order.
+  std::vector<uint32_t> boundary_twin_of(num_boundary ? num_interior : 0, kNone);
+  uint32_t next_boundary = num_interior;
+  for (uint32_t start = 0; start < num_interior && num_boundary; ++start) {
+    if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
+    const FaceId loop = FaceId::boundary(uint32_t(m.b_halfedge.size()));
+    m.b_halfedge.push_back(HalfedgeId(next_boundary));
+    m.b_alive.push_back(1);
+    uint32_t h = start, previous = kNone;
+    do {
+      const uint32_t b = next_boundary++;
+      boundary_twin_of[h] = b;
+      h_[h].twin = HalfedgeId(b);
+      h_[b].twin = HalfedgeId(h);
+      h_[b].vertex = h_[h_[h].next.index].vertex;
+      h_[b].face = loop;
+      if (previous != kNone) h_[previous].next = HalfedgeId(b);
+      previous = b;
+      h = open_incoming[idx[h]];
+    } while (h != start);
+    h_[previous].next = m.b_halfedge.back();
+  }
+  twin = {};
+  boundary_twin_of = {};
+
+  // Edges in order of their first halfedge.
+  m.e_halfedge.reserve(num_halfedges / 2);
+  for (uint32_t h = 0; h < num_interior; ++h) {
+    if (h_[h].edge.valid()) continue;
+    const EdgeId e(uint32_t(m.e_halfedge.size()));
+    m.e_halfedge.push_back(HalfedgeId(h));
+    h_[h].edge = e;
+    h_[h_[h].twin.index].edge = e;
+  }
+  m.e_alive.assign(m.e_halfedge.size(), 1);
+
+  // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
+  m.v_position.assign(in.positions.begin(), in.positions.end());
+  m.v_halfedge.assign(num_vertices, HalfedgeId());
+  for (uint32_t h = 0; h < num_interior; ++h) {
+    HalfedgeId& slot = m.v_halfedge[idx[h]];
+    if (!slot.valid()) slot = HalfedgeId(h);
+  }
+  for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[h_[b].vertex.index] = HalfedgeId(b);
+  m.v_alive.resize(num_vertices);
+  size_t unused = 0;
+  std::vector<uint32_t> outgoing(num_vertices, 0);
+  for (uint32_t h = 0; h < num_halfedges; ++h) ++outgoing[h_[h].vertex.index];
+  for (uint32_t v = 0; v < num_vertices; ++v) {
+    const bool used = m.v_halfedge[v].valid();
+    m.v_alive[v] = used ? 1 : 0;
+    unused += used ? 0 : 1;
+    if (!used) continue;
+    // A vertex whose fan does not reach all its outgoing halfedges joins several surfaces (a bow-tie).
+    const uint32_t first = m.v_halfedge[v].index;
+    uint32_t h = first, walked = 0;
+    do {
+      if (++walked > outgoing[v]) return false;
+      h = h_[h_[h].twin.index].next.index;
+    } while (h != first);
+    if (walked != outgoing[v]) return false;
+  }
+  MeshStorage::count_live(mesh, unused);
+  unused_vertices = unused;
+  return true;
+}
+
+}  // namespace meshedit::build_detail

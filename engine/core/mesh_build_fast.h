@@ -1,0 +1,21 @@
+// The builder's two paths, used by build_halfedge_mesh (mesh_build.h): the fast one (mesh_build_fast.cpp) for
+// input it can vouch for, and the checked one for everything else. Tests hold the two to the same result.
+#pragma once
+
+#include <cstddef>
+
+#include "core/halfedge_mesh.h"
+#include "core/mesh_build.h"
+#include "core/polygon_mesh.h"
+
+namespace meshedit::build_detail {
+
+// Builds `out` from `in` exactly as the checked builder would (same ids, pointers, positions, liveness), and
+// sets `unused_vertices`. Returns false, leaving `out` unspecified, as soon as the input is anything but a clean
+// oriented manifold; the checked builder then runs and explains what is wrong. Never throws except bad_alloc.
+bool build_fast(const PolygonMesh& in, HalfedgeMesh& out, size_t& unused_vertices);
+
+// The checked builder (mesh_build.cpp): the reference result, and the MeshError that names what is wrong.
+HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report);
+
+}  // namespace meshedit::build_detail
