@@ -31,6 +31,33 @@ struct MeshStorage {
             m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
   }
 
+  // Read-only pointers for whole-mesh passes over a const mesh (normals), with every liveness flag, so a pass can
+  // check ids as the element API would.
+  struct ReadView {
+    const HalfedgeRecord* h;
+    const uint8_t* h_alive;
+    const HalfedgeId* vertex_halfedge;
+    const glm::dvec3* position;
+    const uint8_t* vertex_alive;
+    const HalfedgeId* face_halfedge;
+    const uint8_t* face_alive;
+    const uint8_t* boundary_alive;
+    uint32_t halfedges, vertices, faces, boundaries;  // capacities
+
+    bool alive(HalfedgeId x) const { return x.index < halfedges && h_alive[x.index]; }
+    bool alive(VertexId x) const { return x.index < vertices && vertex_alive[x.index]; }
+    bool alive(FaceId x) const {
+      if (!x.valid()) return false;
+      return x.is_boundary() ? x.slot() < boundaries && boundary_alive[x.slot()] : x.slot() < faces && face_alive[x.slot()];
+    }
+  };
+
+  static ReadView read_view(const HalfedgeMesh& m) {
+    return {m.h_.data(),         m.h_alive_.data(),       m.v_halfedge_.data(),     m.v_position_.data(),
+            m.v_alive_.data(),   m.f_halfedge_.data(),    m.f_alive_.data(),        m.b_alive_.data(),
+            m.halfedge_capacity(), m.vertex_capacity(),   m.face_capacity(),        m.boundary_capacity()};
+  }
+
   // Grows each kind to the given capacity with new live elements (capacities never shrink).
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.live_vertices_ += vertices - m.vertex_capacity();

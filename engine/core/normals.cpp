@@ -12,6 +12,9 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/mesh_storage.h"
+#include "core/parallel_for.h"
+
 namespace meshedit {
 
 namespace {
@@ -113,21 +116,92 @@ std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh) {
   return normals;
 }
 
-std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh) {
-  // Each face's vector area once (O(H) in total), then one fan walk per vertex summing them.
-  std::vector<glm::dvec3> areas(mesh.face_capacity(), glm::dvec3(0.0));
-  std::vector<uint8_t> closed(mesh.face_capacity(), 0);
-  for (FaceId f : mesh.faces()) closed[f.slot()] = face_term(mesh, f, areas[f.slot()]) ? 1 : 0;
+namespace {
 
-  const auto term = [&](FaceId f, glm::dvec3& out) {
-    out = areas[f.slot()];
-    return closed[f.slot()] != 0;
-  };
-  std::vector<glm::dvec3> normals(mesh.vertex_capacity(), glm::dvec3(0.0));
-  for (VertexId v : mesh.vertices()) {
-    glm::dvec3 sum;
-    if (sum_around_vertex(mesh, v, term, sum)) normals[v.index] = unit_or_zero(sum);
-  }
+// face_term for a face whose halfedge, its next and that one's next are live, close a triangle and leave live
+// vertices: the same arithmetic, without the generic walk. False (nothing written) for any other face.
+bool triangle_term(const MeshStorage::ReadView& r, uint32_t f, glm::dvec3& out) {
+  const HalfedgeId h0 = r.face_halfedge[f];
+  if (!r.alive(h0)) return false;
+  const HalfedgeId h1 = r.h[h0.index].next;
+  if (!r.alive(h1)) return false;
+  const HalfedgeId h2 = r.h[h1.index].next;
+  if (!r.alive(h2) || r.h[h2.index].next != h0) return false;
+  const VertexId v0 = r.h[h0.index].vertex, v1 = r.h[h1.index].vertex, v2 = r.h[h2.index].vertex;
+  if (!r.alive(v0) || !r.alive(v1) || !r.alive(v2)) return false;
+  // Term by term as face_term adds them, so the bits agree.
+  const glm::dvec3 origin = r.position[v0.index];
+  glm::dvec3 sum(0.0), previous(0.0);
+  const glm::dvec3 p1 = r.position[v1.index] - origin;
+  sum += glm::cross(previous, p1);
+  double size_sq = std::max(0.0, glm::dot(p1, p1));
+  previous = p1;
+  const glm::dvec3 p2 = r.position[v2.index] - origin;
+  sum += glm::cross(previous, p2);
+  size_sq = std::max(size_sq, glm::dot(p2, p2));
+  if (!(glm::length(sum) > kZeroAreaRelative * size_sq)) sum = glm::dvec3(0.0);
+  out = sum;
+  return true;
+}
+
+}  // namespace
+
+void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, NormalScratch& scratch, int threads) {
+  // Each face's vector area once (O(H) in total), then one fan walk per vertex summing them in the order
+  // sum_around_vertex does, with the same checks, so each normal equals vertex_normal(mesh, v) bit for bit.
+  const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
+  scratch.face_terms.resize(r.faces);
+  scratch.closed.resize(r.faces);
+  glm::dvec3* areas = scratch.face_terms.data();
+  uint8_t* closed = scratch.closed.data();
+  parallel_for(threads, r.faces, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f) {
+      if (!r.face_alive[f]) {
+        areas[f] = glm::dvec3(0.0);
+        closed[f] = 0;
+      } else if (triangle_term(r, uint32_t(f), areas[f])) {
+        closed[f] = 1;
+      } else {
+        closed[f] = face_term(mesh, FaceId::face(uint32_t(f)), areas[f]) ? 1 : 0;
+      }
+    }
+  });
+  normals.resize(r.vertices);
+  parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      normals[v] = glm::dvec3(0.0);
+      if (!r.vertex_alive[v]) continue;
+      // for_each_outgoing and sum_around_vertex, fused.
+      const HalfedgeId start = r.vertex_halfedge[v];
+      HalfedgeId h = start;
+      glm::dvec3 sum(0.0);
+      bool ok = true, fan_closed = false;
+      for (uint32_t steps = 0; steps <= r.halfedges; ++steps) {
+        if (!r.alive(h)) break;
+        const HalfedgeRecord& rec = r.h[h.index];
+        const FaceId f = rec.face;
+        if (!ok || !r.alive(f)) {
+          ok = false;
+        } else if (!f.is_boundary()) {
+          if (!closed[f.slot()]) ok = false;
+          sum += areas[f.slot()];
+        }
+        if (!r.alive(rec.twin)) break;
+        h = r.h[rec.twin.index].next;
+        if (h == start) {
+          fan_closed = true;
+          break;
+        }
+      }
+      if (fan_closed && ok) normals[v] = unit_or_zero(sum);
+    }
+  });
+}
+
+std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh, int threads) {
+  std::vector<glm::dvec3> normals;
+  NormalScratch scratch;
+  vertex_normals(mesh, normals, scratch, threads);
   return normals;
 }
 

@@ -14,6 +14,7 @@
 // - The whole-mesh versions equal the per-element ones exactly (same terms, same order).
 #pragma once
 
+#include <cstdint>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -28,6 +29,16 @@ glm::dvec3 vertex_normal(const HalfedgeMesh& mesh, VertexId v);
 
 // Indexed by id (size = capacity); dead slots hold zero vectors.
 std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh);
-std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh);
+std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh, int threads = 1);
+
+// The same, into `normals` (resized to the vertex capacity), with the per-face terms kept in `scratch`: a caller
+// that recomputes normals often (the renderer, benchmarks) keeps both and allocates nothing after the first call.
+// `threads` > 1 splits both passes; the result does not depend on it.
+struct NormalScratch {
+  std::vector<glm::dvec3> face_terms;
+  std::vector<uint8_t> closed;
+};
+void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, NormalScratch& scratch,
+                    int threads = 1);
 
 }  // namespace meshedit
