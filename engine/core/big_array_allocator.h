@@ -6,7 +6,8 @@
 // ../shared/research/perf_anchors.md); transparent huge pages fault 512 times fewer pages. Where THP is off or
 // refused, the mapping is ordinary memory and nothing else changes.
 //
-// Invariants: allocate(n) and deallocate(p, n) take the same branch for the same n (the size alone decides), so a
+// Invariants: construct() value-initialises like std::allocator unless a MeshStorage::grow caller asked otherwise
+// for its own thread; allocate(n) and deallocate(p, n) take the same branch for the same n (the size alone decides), so a
 // block is always returned to the allocator that made it; the allocator is stateless, so any two compare equal
 // and containers may swap or move storage freely. An mmap failure throws std::bad_alloc like operator new.
 #pragma once
@@ -14,6 +15,8 @@
 #include <cstddef>
 #include <cstdint>
 #include <new>
+#include <type_traits>
+#include <utility>
 
 #include <sys/mman.h>
 
@@ -23,6 +26,11 @@ namespace big_array_detail {
 
 inline constexpr size_t kHugePage = size_t(2) << 20;
 inline constexpr size_t kThreshold = size_t(4) << 20;
+
+// Set (on one thread, for the duration of a resize) by MeshStorage::grow, whose caller writes every field of the
+// new elements itself: default construction of trivially copyable elements is then skipped, saving a pass over
+// hundreds of megabytes.
+inline thread_local bool skip_default_init = false;
 
 inline size_t mapped_size(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
@@ -67,6 +75,19 @@ struct BigArrayAllocator {
       return;
     }
     munmap(p, big_array_detail::mapped_size(bytes));
+  }
+
+  // Value-initialises as std::allocator does, except while skip_default_init is set (see above).
+  template <class U>
+  void construct(U* p) noexcept(std::is_nothrow_default_constructible_v<U>) {
+    if constexpr (std::is_trivially_copyable_v<U>) {
+      if (big_array_detail::skip_default_init) return;
+    }
+    ::new (static_cast<void*>(p)) U();
+  }
+  template <class U, class... Args>
+  void construct(U* p, Args&&... args) {
+    ::new (static_cast<void*>(p)) U(std::forward<Args>(args)...);
   }
 
   template <class U>

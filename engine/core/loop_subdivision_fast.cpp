@@ -9,8 +9,9 @@
 // - Locality. A split rewires only the two triangles beside its edge, and a flip only the two triangles beside the
 //   flipped edge, which lie inside one original triangle. So each original triangle T ends up as a function of
 //   T alone: the order (by edge id) in which its three edges were split and, for each, whether T's halfedge was
-//   split()'s h0 (T's side gets n0, n2, n3, g0) or h1 (n1, n4, n5, g1). pass_triangles replays those three
-//   splits and the one flip on a 12-halfedge local copy of T and writes the result.
+//   split()'s h0 (T's side gets n0, n2, n3, g0) or h1 (n1, n4, n5, g1). Those three splits and the one flip are
+//   replayed once on slot numbers for each of the 6 x 8 cases (replay_case), and pass_triangles writes each
+//   triangle from its case.
 // - The one flip per triangle is the crossing edge of T's first split (it joins the first midpoint to the corner
 //   opposite); the other two crossing edges join two midpoints. Flips never move a vertex's halfedge here: old
 //   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
@@ -128,8 +129,8 @@ void pass_vertices(Level& L, LoopWeights weights, int threads, MeshArray<glm::dv
   });
 }
 
-// Pass 2: per original edge, its midpoint vertex, the new edges' halfedges, the new halfedges' twins and edges,
-// and on a boundary edge the loop's side (n1 inserted after h1).
+// Pass 2: per original edge, its midpoint vertex, the new edges' halfedges, and on a boundary edge the loop's side
+// (n1 inserted after h1).
 void pass_edges(Level& L, int threads) {
   parallel_for(threads, L.e0, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
@@ -149,126 +150,157 @@ void pass_edges(Level& L, int threads) {
         m.position[mid] = loop_rules::interior_edge(a, b, c, d);
       }
       m.vertex_halfedge[mid] = HalfedgeId(n0 + 1);
-      const uint32_t pairs = boundary ? 2 : 3;  // (n0, n1) on ea, (n2, n3) on ec, (n4, n5) on ed
-      for (uint32_t i = 0; i < pairs; ++i) {
-        const uint32_t x = n0 + 2 * i, y = x + 1;
-        m.edge_halfedge[ea + i] = HalfedgeId(x);
-        m.h[x].twin = HalfedgeId(y);
-        m.h[y].twin = HalfedgeId(x);
-        m.h[x].edge = m.h[y].edge = EdgeId(ea + i);
-      }
-      if (boundary) {
+      m.edge_halfedge[ea] = HalfedgeId(n0);      // ea: n0 a->m, n1 m->a
+      m.edge_halfedge[ea + 1] = HalfedgeId(n0 + 2);  // ec: n2 m->c, n3 c->m
+      if (!boundary) m.edge_halfedge[ea + 2] = HalfedgeId(n0 + 4);  // ed: n4 m->d, n5 d->m
+      if (boundary) {  // the loop's side: n1 after h1 (the face side's halfedges are written by pass_triangles)
         const uint32_t n1 = n0 + 1;
-        m.h[n1].next = m.h[h1].next;
-        m.h[n1].face = m.h[h1].face;
-        m.h[n1].vertex = VertexId(mid);
+        m.h[n1] = HalfedgeRecord{m.h[h1].next, HalfedgeId(n0), VertexId(mid), EdgeId(ea), m.h[h1].face};
         m.h[h1].next = HalfedgeId(n1);
       }
     }
   });
 }
 
-// One original triangle, replayed locally. Slots: 0-2 the original halfedges x0 x1 x2 (x0 = T.halfedge), then
-// per side i the new halfedges on T's side: o_i (the other half of the split edge) at 3 + i, p_i (midpoint to the
-// opposite corner) at 6 + i, q_i (its twin) at 9 + i. Local faces: 0 = T, 1 + i = the face split i made on T's side.
-struct LocalTriangle {
-  uint32_t next[12];
+// What one original triangle T becomes, as a function of the order in which its three edges were split and of
+// which side of each split T was on. Slots: 0-2 the original halfedges x0 x1 x2 (x0 = T.halfedge, x1 = x0.next);
+// per side i the new halfedges on T's side: o_i (the other half of the split edge) at 3 + i, p_i (from the
+// midpoint to the opposite corner) at 6 + i, q_i (its twin) at 9 + i. Faces: 0 = T, 1 + i = the face split i
+// made on T's side. Vertices: 0-2 the corners (x_i leaves corner i), 3 + i the midpoint of side i.
+struct TriangleCase {
+  uint8_t next[12];
   uint8_t face[12];
-  uint32_t vertex[12];
-  uint32_t id[12];
+  uint8_t vertex[12];
   uint8_t face_halfedge[4];
-  uint32_t face_id[4];
 };
 
-void replay_triangle(const Level& L, uint32_t f, LocalTriangle& t) {
-  const MeshStorage::View& m = L.m;
-  uint32_t x[3];
-  x[0] = m.face_halfedge[f].index;
-  x[1] = m.h[x[0]].next.index;
-  x[2] = m.h[x[1]].next.index;
-  bool side_h0[3];
-  uint32_t rank[3], mid[3];
-  for (uint32_t i = 0; i < 3; ++i) {
-    const uint32_t e = m.h[x[i]].edge.index;
-    const EdgePlan& p = L.plan[e];
-    side_h0[i] = p.face_side == x[i];
-    rank[i] = p.rank;
-    mid[i] = L.vertex_of(e);
-    const uint32_t n0 = L.first_halfedge(e), g0 = L.first_face(e);
-    t.id[i] = x[i];
-    t.next[i] = (i + 1) % 3;
+// Replays split() on T's three sides in `order`, then flip() of the first split's crossing edge, on slot numbers:
+// the writes of mesh_ops.h restricted to T, so the table below is the teaching path's result by construction.
+TriangleCase replay_case(const uint8_t order[3], const bool side_h0[3]) {
+  TriangleCase t{};
+  for (uint8_t i = 0; i < 3; ++i) {
+    t.next[i] = uint8_t((i + 1) % 3);
     t.face[i] = 0;
-    t.vertex[i] = m.h[x[i]].vertex.index;
-    t.id[3 + i] = side_h0[i] ? n0 : n0 + 1;      // n0 or n1
-    t.id[6 + i] = side_h0[i] ? n0 + 2 : n0 + 4;  // n2 or n4
-    t.id[9 + i] = side_h0[i] ? n0 + 3 : n0 + 5;  // n3 or n5
-    t.face_id[1 + i] = side_h0[i] ? g0 : g0 + 1;
+    t.vertex[i] = i;
   }
-  t.face_id[0] = f;
   t.face_halfedge[0] = 0;
-
-  uint32_t order[3] = {0, 1, 2};
-  std::sort(order, order + 3, [&](uint32_t a, uint32_t b) { return rank[a] < rank[b]; });
-
-  for (uint32_t i : order) {
-    // split(): the current triangle prev -> x -> nx becomes L = (F, p, prev) and R = (S, nx, q), F running from
-    // x's tail to the midpoint and S from the midpoint on; x keeps its face, the other triangle is the new face.
-    const uint32_t xs = i, o = 3 + i, p = 6 + i, q = 9 + i;
-    const uint32_t nx = t.next[xs], prev = t.next[nx];
-    const uint32_t corner = t.vertex[prev];
-    const uint8_t old_face = t.face[xs], new_face = uint8_t(1 + i);
-    uint32_t first, second;
-    uint8_t first_face, second_face;
+  for (int k = 0; k < 3; ++k) {
+    // split(): the current triangle prev -> x -> nx becomes (F, p, prev) and (S, nx, q), F running from x's tail
+    // to the midpoint and S from the midpoint on; x keeps its face, the other triangle is the new face.
+    const uint8_t i = order[k];
+    const uint8_t x = i, o = uint8_t(3 + i), p = uint8_t(6 + i), q = uint8_t(9 + i), mid = uint8_t(3 + i);
+    const uint8_t nx = t.next[x], prev = t.next[nx];
+    const uint8_t corner = t.vertex[prev];
+    const uint8_t old_face = t.face[x], new_face = uint8_t(1 + i);
+    uint8_t first, second, first_face, second_face;
     if (side_h0[i]) {  // x is h0: it becomes the second half; o = n0 is the first, from x's old tail
-      first = o, second = xs;
-      first_face = new_face, second_face = old_face;
-      t.vertex[o] = t.vertex[xs];
-      t.vertex[xs] = mid[i];
+      first = o, second = x, first_face = new_face, second_face = old_face;
+      t.vertex[o] = t.vertex[x];
+      t.vertex[x] = mid;
     } else {  // x is h1: it stays the first half; o = n1 leaves the midpoint
-      first = xs, second = o;
-      first_face = old_face, second_face = new_face;
-      t.vertex[o] = mid[i];
+      first = x, second = o, first_face = old_face, second_face = new_face;
+      t.vertex[o] = mid;
     }
-    t.vertex[p] = mid[i];
+    t.vertex[p] = mid;
     t.vertex[q] = corner;
     t.next[first] = p, t.next[p] = prev, t.next[prev] = first;
     t.next[second] = nx, t.next[nx] = q, t.next[q] = second;
     t.face[first] = t.face[p] = t.face[prev] = first_face;
     t.face[second] = t.face[nx] = t.face[q] = second_face;
-    t.face_halfedge[old_face] = uint8_t(xs);
-    t.face_halfedge[new_face] = uint8_t(o);
+    t.face_halfedge[old_face] = x;
+    t.face_halfedge[new_face] = o;
   }
-
   // flip() of the first split's crossing edge (its halfedge is p, leaving the midpoint).
-  const uint32_t h0 = 6 + order[0], h1 = 9 + order[0];
-  const uint32_t h2 = t.next[h0], h3 = t.next[h2], h4 = t.next[h1], h5 = t.next[h4];
-  const uint32_t c = t.vertex[h3], d = t.vertex[h5];
+  const uint8_t h0 = uint8_t(6 + order[0]), h1 = uint8_t(9 + order[0]);
+  const uint8_t h2 = t.next[h0], h3 = t.next[h2], h4 = t.next[h1], h5 = t.next[h4];
+  const uint8_t c = t.vertex[h3], d = t.vertex[h5];
   const uint8_t f0 = t.face[h0], f1 = t.face[h1];
   t.vertex[h0] = d;
   t.next[h0] = h3, t.next[h3] = h4, t.next[h4] = h0;
   t.face[h4] = f0;
-  t.face_halfedge[f0] = uint8_t(h0);
+  t.face_halfedge[f0] = h0;
   t.vertex[h1] = c;
   t.next[h1] = h5, t.next[h5] = h2, t.next[h2] = h1;
   t.face[h2] = f1;
-  t.face_halfedge[f1] = uint8_t(h1);
+  t.face_halfedge[f1] = h1;
+  return t;
 }
 
-// Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges.
+// The order of three ranks as an index: bit 0 = r0 < r1, bit 1 = r1 < r2, bit 2 = r0 < r2 (codes 2 and 5 cannot
+// happen for distinct ranks).
+unsigned order_code(uint32_t r0, uint32_t r1, uint32_t r2) {
+  return unsigned(r0 < r1) | unsigned(r1 < r2) << 1 | unsigned(r0 < r2) << 2;
+}
+
+// The 64 cases (order code x side bits), replayed once.
+const TriangleCase& triangle_case(unsigned order, unsigned sides) {
+  static const std::vector<TriangleCase> table = [] {
+    std::vector<TriangleCase> cases(64);
+    for (unsigned code = 0; code < 8; ++code) {
+      uint8_t order_of[3] = {0, 1, 2};
+      // Find a permutation whose comparisons give this code; impossible codes keep the identity.
+      const uint8_t perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
+      for (const auto& perm : perms) {
+        uint32_t r[3];
+        for (uint32_t k = 0; k < 3; ++k) r[perm[k]] = k;  // perm[k] is split k-th
+        if (order_code(r[0], r[1], r[2]) == code) std::copy(perm, perm + 3, order_of);
+      }
+      for (unsigned bits = 0; bits < 8; ++bits) {
+        const bool side_h0[3] = {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0};
+        cases[code * 8 + bits] = replay_case(order_of, side_h0);
+      }
+    }
+    return cases;
+  }();
+  return table[order * 8 + sides];
+}
+
+// Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case.
 void pass_triangles(Level& L, int threads) {
+  (void)triangle_case(0, 0);  // build the table before the threads start
   parallel_for(threads, L.f0, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
-    LocalTriangle t;
     for (size_t f = begin; f < end; ++f) {
       if (!m.face_alive[f]) continue;
-      replay_triangle(L, uint32_t(f), t);
-      for (uint32_t s = 0; s < 12; ++s) {
-        const uint32_t h = t.id[s];
-        m.h[h].next = HalfedgeId(t.id[t.next[s]]);
-        m.h[h].face = FaceId::face(t.face_id[t.face[s]]);
-        m.h[h].vertex = VertexId(t.vertex[s]);
+      uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
+      unsigned sides = 0;
+      id[0] = m.face_halfedge[f].index;
+      id[1] = m.h[id[0]].next.index;
+      id[2] = m.h[id[1]].next.index;
+      face_id[0] = uint32_t(f);
+      for (uint32_t i = 0; i < 3; ++i) {
+        const HalfedgeRecord& x = m.h[id[i]];
+        const uint32_t e = x.edge.index;
+        const EdgePlan& p = L.plan[e];
+        const bool side_h0 = p.face_side == id[i];
+        sides |= unsigned(side_h0) << i;
+        rank[i] = p.rank;
+        vertex_id[i] = x.vertex.index;
+        vertex_id[3 + i] = L.v0 + p.rank;
+        const uint32_t n0 = L.first_halfedge(e), ea = L.first_edge(e);
+        id[3 + i] = side_h0 ? n0 : n0 + 1;      // o: n0 or n1, on ea
+        id[6 + i] = side_h0 ? n0 + 2 : n0 + 4;  // p: n2 or n4, on ec or ed
+        id[9 + i] = id[6 + i] + 1;              // q: n3 or n5
+        twin_id[i] = side_h0 ? n0 + 1 : n0;
+        twin_id[3 + i] = id[9 + i];
+        twin_id[6 + i] = id[6 + i];
+        edge_id[i] = ea;
+        edge_id[3 + i] = edge_id[6 + i] = ea + (side_h0 ? 1 : 2);
+        face_id[1 + i] = L.first_face(e) + (side_h0 ? 0 : 1);
       }
-      for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[t.face_id[g]] = HalfedgeId(t.id[t.face_halfedge[g]]);
+      const TriangleCase& c = triangle_case(order_code(rank[0], rank[1], rank[2]), sides);
+      for (uint32_t s = 0; s < 3; ++s) {  // the original halfedges keep their twin and edge
+        HalfedgeRecord& r = m.h[id[s]];
+        r.next = HalfedgeId(id[c.next[s]]);
+        r.face = FaceId::face(face_id[c.face[s]]);
+        r.vertex = VertexId(vertex_id[c.vertex[s]]);
+      }
+      for (uint32_t s = 3; s < 12; ++s) {  // new halfedges: every field, in one store each
+        m.h[id[s]] = HalfedgeRecord{HalfedgeId(id[c.next[s]]), HalfedgeId(twin_id[s - 3]),
+                                    VertexId(vertex_id[c.vertex[s]]), EdgeId(edge_id[s - 3]),
+                                    FaceId::face(face_id[c.face[s]])};
+      }
+      for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
     }
   });
 }

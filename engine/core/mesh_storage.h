@@ -1,8 +1,8 @@
 // MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh fast paths (Loop subdivision) that compute
 // every pointer themselves and would only pay for per-call bookkeeping through the element API.
 //
-// Invariants: grow() appends live elements the way new_vertex()/new_halfedge()/... would (invalid pointers, zero
-// positions, alive flags set, live counts and version() updated), only faster; a View's pointers stay valid until
+// Invariants: grow() appends live elements (alive flags set, live counts and version() updated) and leaves their
+// fields for the caller to write, all of them; a View's pointers stay valid until
 // the next change of any array's size. Code that writes through a View must leave a mesh the element API could
 // have produced, and calls touch() when done.
 #pragma once
@@ -58,21 +58,24 @@ struct MeshStorage {
             m.halfedge_capacity(), m.vertex_capacity(),   m.face_capacity(),        m.boundary_capacity()};
   }
 
-  // Grows each kind to the given capacity with new live elements (capacities never shrink).
+  // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
+  // every pointer of every new element (and every new position) before the mesh is used. Capacities never shrink.
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
     m.live_faces_ += faces - m.face_capacity();
-    m.v_halfedge_.resize(vertices);
-    m.v_position_.resize(vertices, glm::dvec3(0.0));
     m.v_alive_.resize(vertices, 1);
-    m.h_.resize(halfedges);
     m.h_alive_.resize(halfedges, 1);
-    m.e_halfedge_.resize(edges);
     m.e_alive_.resize(edges, 1);
-    m.f_halfedge_.resize(faces);
     m.f_alive_.resize(faces, 1);
+    big_array_detail::skip_default_init = true;
+    m.v_halfedge_.resize(vertices);
+    m.v_position_.resize(vertices);
+    m.h_.resize(halfedges);
+    m.e_halfedge_.resize(edges);
+    m.f_halfedge_.resize(faces);
+    big_array_detail::skip_default_init = false;
     m.touch();
   }
 
