@@ -51,7 +51,6 @@ void describe_curve_levels(CurveMineLevels& mine, int shown) {
   }
 }
 
-
 CurveMineLevels start_curve_levels(std::span<const glm::dvec2> control_points) {
   CurveMineLevels mine;
   std::vector<glm::dvec3> level0;
