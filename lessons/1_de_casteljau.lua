@@ -121,7 +121,15 @@ step("Your turn", function()
 # Your code
 
 Open `scripts/student/curve.lua` and write `evaluate_step(points, t)`: given a list of points, return
-the next level, one point fewer. Check it against the reference from a terminal:
+the next level, one point fewer.
+
+Check it right here: tick **mine** in the curve view (or press **M**), then press **E**. Each level is now made
+by your function from the level before and checked against the reference. A level that differs is drawn in
+orange over the reference's (grey), its first wrong point ringed, and the line above the curve names the level,
+the point and both values; a Lua error shows its `curve.lua:LINE`. Save the file and the view runs the new
+version; drag the points or move t to try other inputs.
+
+Or check it from a terminal, with the grading suite:
 
     meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student
 

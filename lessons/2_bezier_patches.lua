@@ -105,7 +105,14 @@ step("Your turn", function()
 
 Open `scripts/student/patch.lua` and write `evaluate(patch, u, v)`. `patch.points` holds the 16 control
 points row by row (`patch.points[row * 4 + col + 1]`). Use your curve step from part 1: four rows at **u**,
-then the column at **v**. Check it against the reference from a terminal:
+then the column at **v**.
+
+Check it right here: tick **mine** in the patch view (or press **M**). The probe point at (u, v) is then also
+computed by your `evaluate`: a green dot inside the red P(u, v) when it is right, an orange dot joined to P(u, v)
+when it is not, with both points in the panel (and a hint when u and v are swapped); a Lua error shows its
+`patch.lua:LINE`. Move u and v, pick other patches; save the file and the view runs the new version.
+
+Or check it from a terminal, with the grading suite:
 
     meshedit grade --suite tests/grading/suites/patch.lua --submission scripts/student
 

@@ -1,7 +1,8 @@
 -- Part 6: Loop subdivision, phase by phase. The lesson runs the four phases itself in Lua (the same phases the
 -- app's Shift+L steps through, engine/core/loop_subdivision.h), shows the mesh after each, and checks the
--- result against the app's own one-call subdivision. Then the student subdivides with L, meets the cube's
--- asymmetry and fixes it by pre-splitting, sees how corners round off, and subdivides a mesh with a boundary.
+-- result against the app's own one-call subdivision. Then the student runs the app's phases with Shift+L, each
+-- checked against the Lua ones, meets the cube's asymmetry and fixes it by pre-splitting, sees how corners
+-- round off, and subdivides a mesh with a boundary.
 -- CI runs it headless:
 --   meshedit lesson lessons/6_loop_subdivision.lua --headless \
 --     --answers tests/script/lessons/6_loop_subdivision_answers.lua
@@ -189,24 +190,74 @@ step("Phase 4: move", function()
   end
 end)
 
-step("Your turn: L", function()
-  local cube = meshedit.cube()
-  show(cube)
+local PHASE_NAMES = { "compute new positions", "split every original edge",
+  "flip new edges joining an old and a new vertex", "move every vertex to its new position" }
+
+-- Whether `mesh` is `expected`: the same counts, every vertex at the same place and every edge between the same
+-- two vertices (ids compared, as the app's phases and the Lua ones number alike). False for anything else.
+local function same_mesh(mesh, expected)
+  if not mesh or mesh:num_vertices() ~= expected:num_vertices() or mesh:num_edges() ~= expected:num_edges()
+    or mesh:num_faces() ~= expected:num_faces() then
+    return false
+  end
+  local ok, same = pcall(function()
+    for v in expected:vertices() do
+      if (mesh:vertex(index(v)).position - v.position):length() > 1e-9 then return false end
+    end
+    for e in expected:edges() do
+      local h, g = e.halfedge, mesh:edge(index(e)).halfedge
+      local a, b, c, d = index(h.vertex), index(h.twin.vertex), index(g.vertex), index(g.twin.vertex)
+      if not ((a == c and b == d) or (a == d and b == c)) then return false end
+    end
+    return true
+  end)
+  return ok and same
+end
+
+-- What phase `phase` did to the cube on screen (`mesh`), with the elements it touched marked.
+local function phase_report(phase, mesh, state)
+  clear()
+  if phase == 1 then
+    return "Phase 1 computed every new position and changed nothing: the cube still has " .. counts(mesh) .. "."
+  elseif phase == 2 then
+    for i = state.V, mesh:num_vertices() - 1 do highlight(mesh:vertex(i), "yellow") end
+    return "Phase 2 split all " .. state.E .. " original edges: now " .. counts(mesh) .. ", the new vertices "
+      .. "(yellow) still at the midpoints."
+  elseif phase == 3 then
+    for _, i in ipairs(state.flipped) do highlight(mesh:edge(i), "orange") end
+    return "Phase 3 flipped the " .. #state.flipped .. " new edges joining an old and a new vertex (orange): still "
+      .. counts(mesh) .. "."
+  end
+  highlight(mesh:vertex(0), "yellow")
+  return "Phase 4 moved every vertex: v0 went from " .. tostring(meshedit.cube():vertex(0).position) .. " to "
+    .. tostring(mesh:vertex(0).position) .. "."
+end
+
+step("Your turn: Shift+L", function()
+  show(meshedit.cube())
   camera "fit"
   say [[
-Now do it yourself on a fresh cube. Press **Shift+L** four times to run the four phases one by one (the status
-bar names each phase), or **L** once for a whole step.]]
-  local mesh = wait_for {
-    hint = "Press L (or Shift+L four times)",
-    condition = function()
-      local m = current_mesh()
-      -- The counts are final after phase 2; v0 moving shows phase 4 ran too.
-      return m and m:num_faces() == 4 * cube:num_faces() and m:num_vertices() == cube:num_vertices() + cube:num_edges()
-        and (m:vertex(0).position - cube:vertex(0).position):length() > 1e-9 and m:validate() and m
-    end,
-  }
-  say("One step done: " .. counts(mesh) .. ", valid. Press **L** again and again to watch the surface converge; "
-    .. "each step multiplies the faces by four, so stop after four or five.")
+Now run the four phases yourself on a fresh cube: press **Shift+L** four times (the status bar names each phase).
+After each press this lesson compares the mesh on screen with its own Lua phases.]]
+  local phase, mesh = 1, nil
+  while phase <= 4 do
+    wait_for { key = "shift+L", hint = "Press Shift+L: phase " .. phase .. " of 4, " .. PHASE_NAMES[phase] }
+    mesh = current_mesh()
+    local expected, state = cube_after(phase)
+    if same_mesh(mesh, expected) then
+      say(phase_report(phase, mesh, state))
+      phase = phase + 1
+    else
+      show(meshedit.cube())
+      clear()
+      say("That is not the cube after phase " .. phase .. " (did another key change the mesh?). Here is a fresh "
+        .. "cube: press **Shift+L** again, from phase 1.")
+      phase = 1
+    end
+  end
+  say("One step done: " .. counts(mesh) .. ", " .. (mesh:validate() and "valid" or "NOT valid") .. ". Press **L** "
+    .. "to run all four phases at once, again and again, to watch the surface converge; each step multiplies the "
+    .. "faces by four, so stop after four or five.")
 end)
 
 step("The cube's asymmetry", function()

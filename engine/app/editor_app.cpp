@@ -136,7 +136,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
       const float menu = ImGui::GetFrameHeight();
       ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + menu));
       ImGui::SetNextWindowSize(ImVec2(main->Size.x, main->Size.y - menu));
-      draw_curve_editor(curve_);
+      draw_curve_editor(curve_, "Curve editor", &bezier_mine_);
       break;
     }
   }
@@ -159,7 +159,12 @@ void EditorApp::draw_mesh_view(int width, int height) {
 void EditorApp::draw_patch_view() {
   ImGui::SetNextWindowPos(ImVec2(0, ImGui::GetFrameHeight()), ImGuiCond_Appearing);
   ImGui::SetNextWindowSize(ImVec2(520, 380), ImGuiCond_Appearing);
-  draw_patch_view_panel(patches_);
+  draw_patch_view_panel(patches_, "Patch view", &bezier_mine_);
+  // The panel computed this frame's point (when open); asking again is a cached lookup.
+  const PatchMinePoint* mine = nullptr;
+  if (bezier_mine_.patch_on() && !patches_.patches.empty()) {
+    mine = &bezier_mine_.patch_point(patches_.patches[patches_.selected_patch], patches_.u, patches_.v);
+  }
   if (patches_.show_surface && patches_.tessellation.mesh) {
     patch_renderer_->update(*patches_.tessellation.mesh);
     patch_renderer_->draw(camera_, viewport(), view_options_, {});
@@ -167,7 +172,7 @@ void EditorApp::draw_patch_view() {
   // The control net and the (u, v) probe, drawn over the surface so the probe points stay visible.
   Overlay overlay;
   overlay.on_top = true;
-  for (const PatchOverlayItem& item : patch_view_overlay(patches_)) {
+  for (const PatchOverlayItem& item : patch_view_overlay(patches_, mine)) {
     if (item.points_only) {
       for (const auto& p : item.points) overlay.points.push_back({p, item.colour, item.width});
     } else {

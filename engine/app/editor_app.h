@@ -25,6 +25,7 @@
 #include "render/shader_library.h"
 #include "render/view_options.h"
 #include "script/lesson_runner.h"
+#include "ui/bezier_mine.h"
 #include "ui/curve_editor.h"
 #include "ui/exercise_panel.h"
 #include "ui/inspector.h"
@@ -85,6 +86,8 @@ class EditorApp {
   void run_console(const std::string& code);
   const ScriptConsole& console() const { return console_; }
   ExerciseSession& exercises() { return exercises_; }
+  // The "mine" switches of the curve and patch views (M), with their results.
+  BezierMine& bezier_mine() { return bezier_mine_; }
 
   // Saves the current mesh (.obj .gltf .glb); reports the outcome in the status line.
   bool save(const std::filesystem::path& path);
@@ -142,6 +145,7 @@ class EditorApp {
   ElementRef lesson_selection_;  // the selection the lesson last heard about
   ExerciseSession exercises_;
   ExercisePanelState exercise_panel_;
+  BezierMine bezier_mine_;
   ScriptConsole console_;
   ConsolePanelState console_panel_;
   CurveEditorState curve_;

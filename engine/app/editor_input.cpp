@@ -2,7 +2,8 @@
 //   mesh view   F flip, S split, C collapse, L Loop subdivision (Shift+L: one phase), W wireframe,
 //               Q flat/smooth shading, I inspector, Space reset view, Ctrl+Z undo, Ctrl+Y redo,
 //               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
-//   curve view  E one more de Casteljau level, C the whole curve
+//   curve view  E one more de Casteljau level, C the whole curve, M "mine" (levels from scripts/student/curve.lua)
+//   patch view  M "mine" (the probe point from scripts/student/patch.lua)
 //   everywhere  P screenshot, Ctrl+O open, F1 help, Esc clears the selection
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -65,7 +66,12 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
   if (mode_ == ViewMode::Curve) {
     if (key == GLFW_KEY_E) step_level(curve_);
     else if (key == GLFW_KEY_C) toggle_curve(curve_);
+    else if (key == GLFW_KEY_M) bezier_mine_.set_curve_on(!bezier_mine_.curve_on());
     else return false;
+    return true;
+  }
+  if (mode_ == ViewMode::Patches && key == GLFW_KEY_M) {
+    bezier_mine_.set_patch_on(!bezier_mine_.patch_on());
     return true;
   }
   if (key == GLFW_KEY_W) {
@@ -131,7 +137,7 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
     for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
                     GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
-                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X}) {
+                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X, GLFW_KEY_M}) {
       if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
     }
   }

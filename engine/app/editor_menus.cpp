@@ -161,6 +161,8 @@ void EditorApp::draw_help_panel() {
         {"W / Q", "wireframe / flat or smooth shading"},
         {"I", "inspector"},
         {"E", "curve view: one more de Casteljau level"},
+        {"M", "curve view: levels from your evaluate_step; patch view: the probe from your evaluate "
+              "(scripts/student, checked against the reference)"},
         {"Space", "reset the view"},
         {"X", "exercises: run your flip/split/upsample/normals (scripts/student) or the reference; replay writes"},
         {"` (backquote)", "Lua console: `mesh` is the mesh shown, `selected` the selection; Up/Down for history"},

@@ -18,7 +18,7 @@ const std::map<std::string, int>& arities() {
       {"expect-valid", 0},    {"quit", 0},           {"console", -1},       {"expect-console", -1},
       {"lesson-next", 0},     {"lesson-back", 0},   {"lesson-button", -1}, {"expect-lesson-step", 2},
       {"expect-lesson-said", -1}, {"exercise", 2},  {"run-mine", 0},      {"run-reference", 0},
-      {"replay-start", 0},    {"replay-step", 1},   {"replay-finish", 0},
+      {"replay-start", 0},    {"replay-step", 1},   {"replay-finish", 0}, {"expect-mine", -1},
   };
   return table;
 }

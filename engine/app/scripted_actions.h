@@ -11,6 +11,9 @@
 //   lesson-next   lesson-back   lesson-button LABEL...
 //   expect-lesson-step 3 waiting|finished|failed   expect-lesson-said TEXT...  (the step said TEXT)
 //   exercise flip FOLDER   run-mine   run-reference   replay-start   replay-step K   replay-finish
+//   exercise curve|patch FOLDER   (where the curve and patch views' "mine", key M, reads curve.lua, patch.lua)
+//   expect-mine TEXT...   (the "mine" line of the curve or patch view on screen contains TEXT; computed when a
+//                          frame draws the view, so put `frames 1` after the key that changes it)
 #pragma once
 
 #include <string>

@@ -133,8 +133,22 @@ class ActionPlayer {
       if (!found) fail(a, "the current step did not say it");
     } else if (a.verb == "exercise") {
       const auto exercise = find_exercise(args[0]);
-      if (!exercise || !app.exercises().set_exercise(*exercise)) throw std::runtime_error("no mesh exercise " + args[0]);
-      app.exercises().set_folder(args[1]);
+      if (exercise == Exercise::CurveStep || exercise == Exercise::PatchEvaluate) {
+        app.bezier_mine().set_folder(args[1]);
+      } else if (!exercise || !app.exercises().set_exercise(*exercise)) {
+        throw std::runtime_error("no exercise " + args[0]);
+      } else {
+        app.exercises().set_folder(args[1]);
+      }
+    } else if (a.verb == "expect-mine") {
+      const BezierMine& mine = app.bezier_mine();
+      const bool curve = app.mode() == ViewMode::Curve;
+      if (!(curve ? mine.curve_on() : app.mode() == ViewMode::Patches && mine.patch_on())) {
+        fail(a, "no \"mine\" switch is on in the view on screen");
+      } else if (const std::string& got = curve ? mine.curve().message : mine.patch().message;
+                 got.find(rest_of_line(a)) == std::string::npos) {
+        fail(a, "the mine line is '" + got + "'");
+      }
     } else if (a.verb == "run-mine" || a.verb == "run-reference") {
       ExerciseSession& session = app.exercises();
       const Check check = a.verb == "run-mine" ? session.run_mine(app.document(), app.selection())

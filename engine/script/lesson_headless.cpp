@@ -22,7 +22,7 @@ namespace {
 constexpr size_t kMaxRoundsPerStep = 100000;
 
 struct Answer {
-  enum class Kind { Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide };
+  enum class Kind { Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", ...
   std::string value;  // "F", "v3", "vertex", "Continue", "e7" ("" for subdivide)
@@ -37,7 +37,13 @@ struct Answers {
 const std::pair<const char*, Answer::Kind> kAnswerFields[] = {
     {"key", Answer::Kind::Key},   {"click", Answer::Kind::Click}, {"selection", Answer::Kind::Selection},
     {"button", Answer::Kind::Button}, {"flip", Answer::Kind::Flip},   {"split", Answer::Kind::Split},
-    {"collapse", Answer::Kind::Collapse}, {"subdivide", Answer::Kind::Subdivide}};
+    {"collapse", Answer::Kind::Collapse}, {"subdivide", Answer::Kind::Subdivide},
+    {"loop_phase", Answer::Kind::LoopPhase}};
+
+bool is_edit(Answer::Kind kind) {
+  return kind == Answer::Kind::Flip || kind == Answer::Kind::Split || kind == Answer::Kind::Collapse ||
+         kind == Answer::Kind::Subdivide || kind == Answer::Kind::LoopPhase;
+}
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -57,13 +63,13 @@ Answer read_answer(lua_State* L, const std::string& where) {
                                      [&](const auto& field) { return key == field.first; });
     if (found == std::end(kAnswerFields)) {
       throw ScriptError(where + ": unknown answer '" + key +
-                        "' (use key, click, selection, button, flip, split, collapse or subdivide)");
+                        "' (use key, click, selection, button, flip, split, collapse, subdivide or loop_phase)");
     }
     answer.kind = found->second;
     answer.field = key;
-    if (answer.kind == Answer::Kind::Subdivide) {
+    if (answer.kind == Answer::Kind::Subdivide || answer.kind == Answer::Kind::LoopPhase) {
       if (lua_type(L, -1) != LUA_TBOOLEAN || !lua_toboolean(L, -1)) {
-        throw ScriptError(where + ": write subdivide = true");
+        throw ScriptError(where + ": write " + key + " = true");
       }
     } else {
       if (lua_type(L, -1) != LUA_TSTRING) throw ScriptError(where + ": " + key + " must be a string");
@@ -273,8 +279,7 @@ class HeadlessDriver {
         break;
       }
     }
-    if (!used && answer.kind != Answer::Kind::Flip && answer.kind != Answer::Kind::Split &&
-        answer.kind != Answer::Kind::Collapse && answer.kind != Answer::Kind::Subdivide) {
+    if (!used && !is_edit(answer.kind)) {
       out_ << " (not awaited: the step waits for " << wait.describe() << ")";
     }
     out_ << '\n';
@@ -294,6 +299,8 @@ class HeadlessDriver {
     if (answer.kind == Answer::Kind::Subdivide) {
       out_ << "  > subdivide";
       check = loop_subdivide(*mesh);
+    } else if (answer.kind == Answer::Kind::LoopPhase) {
+      check = loop_phase(*mesh);
     } else {
       const std::optional<ElementRef> element = parse_element(answer.value);
       if (!element || element->kind != ElementKind::Edge) {
@@ -310,13 +317,50 @@ class HeadlessDriver {
       return "answer " + answer.field + (answer.value.empty() ? "" : " " + answer.value) + " refused: " + check.reason;
     }
     host_.set_current_mesh(mesh);
+    if (answer.kind == Answer::Kind::LoopPhase && loop_.next_phase > 1) loop_.left = std::move(mesh);
     return "";
   }
+
+  // Shift+L: the next Loop phase on `mesh` (a copy of the screen mesh), as the window's loop_subdivide_step.
+  Check loop_phase(HalfedgeMesh& mesh) {
+    if (loop_.next_phase > 1 && (!loop_.left || host_.screen_mesh() != loop_.left.get())) {
+      out_ << "  (the mesh changed after Loop phase " << loop_.next_phase - 1 << "; starting again)\n";
+      loop_ = LoopPhases{};
+    }
+    const int phase = loop_.next_phase;
+    static const char* const kPhaseNames[] = {"", "compute new positions", "split every original edge",
+                                              "flip new edges joining an old and a new vertex",
+                                              "move every vertex to its new position"};
+    out_ << "  > loop phase " << phase << "/4: " << kPhaseNames[phase];
+    if (phase == 1) {
+      OpResult<LoopState> state = loop_compute_positions(mesh, LoopWeights::Course);
+      if (!state.ok()) return state.check;
+      loop_.state = std::move(state.value);
+    } else if (phase == 2) {
+      loop_split_edges(mesh, loop_.state);
+    } else if (phase == 3) {
+      loop_flip_edges(mesh, loop_.state);
+    } else {
+      loop_commit_positions(mesh, loop_.state);
+    }
+    loop_.next_phase = phase == 4 ? 1 : phase + 1;
+    if (phase == 4) loop_.state = LoopState{};
+    return Check::yes();
+  }
+
+  // Where Shift+L is in Loop subdivision: the next phase, what phase 1 computed, and the screen mesh the last
+  // phase left (kept alive, so a new mesh at the same address cannot pass for it).
+  struct LoopPhases {
+    int next_phase = 1;
+    LoopState state;
+    std::shared_ptr<HalfedgeMesh> left;
+  };
 
   std::ostream& out_;
   HeadlessHost host_;
   LessonRunner runner_;
   std::string step_name_;
+  LoopPhases loop_;
 };
 
 }  // namespace

@@ -10,7 +10,9 @@
 //   }
 // Answers: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"}, and the
 // edits a key would make in the window, applied to the mesh on screen: {flip = "e7"}, {split = "e7"},
-// {collapse = "e7"}, {subdivide = true}. A headless key press only tells the lesson; it edits nothing.
+// {collapse = "e7"}, {subdivide = true} (L), {loop_phase = true} (Shift+L: the next of Loop subdivision's four
+// phases, core/loop_subdivision.h). A headless key press only tells the lesson; it edits nothing, so the
+// window's Shift+L is {loop_phase = true} followed by {key = "shift+L"}.
 //
 // Invariants:
 // - An answer the step does not wait for is used up and reported ("not awaited"), as a student's stray key.
@@ -18,6 +20,10 @@
 //   anything else fails with "lesson.lua:LINE: step 3 'Flip it': waiting for key F (no scripted answer)".
 // - Animations advance in frames of a tenth of their length (at least 1/60 s); a step that needs more than
 //   100000 frames or answers fails rather than hanging.
+// - loop_phase keeps the phases' state between answers as the window's document does (ui/document_actions.h):
+//   phase 1 computes and changes nothing, phases 2-4 change the mesh on screen, and when the mesh on screen is
+//   not the one the last phase left (the lesson showed another, another edit answer changed it), the next
+//   loop_phase starts again at phase 1. The course's weights, as L and the exercises use.
 #pragma once
 
 #include <cstddef>

@@ -13,6 +13,8 @@
 #include <glm/geometric.hpp>
 #include <imgui.h>
 
+#include "ui/bezier_mine.h"
+
 namespace meshedit {
 
 namespace {
@@ -260,6 +262,12 @@ constexpr ImU32 kSplitLeftColour = IM_COL32(255, 170, 60, 120);
 constexpr ImU32 kSplitRightColour = IM_COL32(170, 120, 255, 120);
 constexpr ImU32 kSplitLeftRing = IM_COL32(255, 170, 60, 255);
 constexpr ImU32 kSplitRightRing = IM_COL32(170, 120, 255, 255);
+// "Mine": a level of yours that is not the reference's, the reference's level it should have been (ghosted),
+// a Lua error, and levels that match.
+constexpr ImU32 kWarningColour = IM_COL32(255, 120, 0, 255);
+constexpr ImU32 kGhostColour = IM_COL32(235, 235, 235, 150);
+constexpr ImU32 kErrorColour = IM_COL32(255, 90, 90, 255);
+constexpr ImU32 kMineOkColour = IM_COL32(120, 230, 120, 255);
 constexpr ImU32 kBackground = IM_COL32(18, 18, 24, 255);
 constexpr ImU32 kFrameColour = IM_COL32(70, 70, 80, 255);
 
@@ -299,7 +307,45 @@ std::string format_points(std::span<const glm::dvec2> points) {
   return text;
 }
 
-void draw_canvas(CurveEditorState& state, ImVec2 size) {
+glm::dvec2 flat(const glm::dvec3& p) { return {p.x, p.y}; }
+
+std::vector<glm::dvec2> flat(const std::vector<glm::dvec3>& points) {
+  std::vector<glm::dvec2> out;
+  out.reserve(points.size());
+  for (const glm::dvec3& p : points) out.push_back(flat(p));
+  return out;
+}
+
+// Your levels 0..shown (fewer when yours stopped earlier).
+std::vector<std::vector<glm::dvec2>> mine_shown_levels(const CurveMineLevels& mine, int shown) {
+  std::vector<std::vector<glm::dvec2>> levels;
+  for (int k = 0; k < static_cast<int>(mine.levels.size()) && k <= shown; ++k) levels.push_back(flat(mine.levels[k]));
+  return levels;
+}
+
+ImU32 mine_message_colour(const CurveMineLevels& mine, int shown) {
+  if (mine.load_failed || (!mine.error.empty() && mine.failed_level <= shown)) return kErrorColour;
+  if (mine.failed() && mine.failed_level <= shown) return kWarningColour;
+  return kMineOkColour;
+}
+
+// Under your level that differs: the reference's level, ghosted, and a line from your wrong point to the
+// reference's, each labelled.
+void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels& mine) {
+  const std::vector<glm::dvec2> reference = flat(mine.reference_level);
+  draw_polyline(dl, view, reference, kGhostColour, 1.0f);
+  for (const glm::dvec2& p : reference) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 5.0f, kGhostColour, 0, 1.5f);
+  if (mine.wrong_point < 0) return;
+  const ImVec2 yours = to_imvec(curve_to_screen(view, flat(mine.mine_point)));
+  const ImVec2 theirs = to_imvec(curve_to_screen(view, flat(mine.reference_point)));
+  dl->AddLine(yours, theirs, kWarningColour, 1.0f);
+  dl->AddCircle(yours, 11.0f, kWarningColour, 0, 2.0f);
+  dl->AddText(ImVec2(yours.x + 13.0f, yours.y - 8.0f), kWarningColour, "yours");
+  dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), kGhostColour, "reference");
+}
+
+// The canvas; `mine` is the student's levels when the switch is on (else null).
+void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
@@ -317,6 +363,10 @@ void draw_canvas(CurveEditorState& state, ImVec2 size) {
     handle_canvas_input(state, input);
   }
 
+  const int shown = clamped_levels(state);
+  const CurveMineLevels* yours =
+      mine && mine->curve_on() ? &mine->curve_levels(state.curve.control_points, state.t, shown) : nullptr;
+
   const ImVec2 p1(p0.x + size.x, p0.y + size.y);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, p1, true);
@@ -331,11 +381,14 @@ void draw_canvas(CurveEditorState& state, ImVec2 size) {
   draw_polyline(dl, view, halves.right, kSplitRightColour, 8.0f);
   draw_polyline(dl, view, points, kControlColour, 2.0f);
 
-  const auto levels = shown_levels(state);
+  const auto levels = yours ? mine_shown_levels(*yours, shown) : shown_levels(state);
+  const int wrong_level = yours && yours->error.empty() ? yours->failed_level : -1;
   for (size_t k = 1; k < levels.size(); ++k) {
-    const ImU32 colour = level_colour(static_cast<int>(k));
-    draw_polyline(dl, view, levels[k], colour, 1.5f);
-    draw_points(dl, view, levels[k], colour, 4.0f);
+    const bool wrong = static_cast<int>(k) == wrong_level;
+    if (wrong) draw_mismatch(dl, view, *yours);
+    const ImU32 colour = wrong ? kWarningColour : level_colour(static_cast<int>(k));
+    draw_polyline(dl, view, levels[k], colour, wrong ? 3.0f : 1.5f);
+    draw_points(dl, view, levels[k], colour, wrong ? 5.0f : 4.0f);
   }
 
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
@@ -350,30 +403,70 @@ void draw_canvas(CurveEditorState& state, ImVec2 size) {
     dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, kSplitRightRing, 0, 2.0f);
   }
 
-  if (levels.size() > 1 && levels.back().size() == 1) {
+  if (levels.size() > 1 && levels.back().size() == 1 && static_cast<int>(levels.size()) - 1 != wrong_level) {
     const ImVec2 c = to_imvec(curve_to_screen(view, levels.back()[0]));
     dl->AddCircleFilled(c, 7.0f, kFinalColour);
     dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), kFinalColour, "C(t)");
   }
 
   char status[128];
-  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d", state.t, clamped_levels(state),
-                std::max(0, static_cast<int>(points.size()) - 1));
+  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d%s", state.t, shown,
+                std::max(0, static_cast<int>(points.size()) - 1), yours ? "   mine: your evaluate_step" : "");
   dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), IM_COL32(220, 220, 220, 255), status);
+  if (yours) {
+    const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
+                mine_message_colour(*yours, shown), line.c_str(), nullptr, std::max(size.x - 16.0f, 50.0f));
+  }
   dl->AddText(ImVec2(p0.x + 8.0f, p1.y - ImGui::GetTextLineHeight() - 6.0f), IM_COL32(150, 150, 160, 255),
-              "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve");
+              "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine");
   dl->PopClipRect();
 }
 
-void draw_level_table(const CurveEditorState& state) {
+void table_text_row(const char* name, ImU32 colour, const std::string& text) {
+  const ImVec4 c = ImGui::ColorConvertU32ToFloat4(colour);
+  ImGui::TableNextRow();
+  ImGui::TableNextColumn();
+  ImGui::TextColored(c, "%s", name);
+  ImGui::TableNextColumn();
+  ImGui::PushStyleColor(ImGuiCol_Text, c);
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+// With "mine": your levels, the one that differs in the warning colour followed by the reference's and the
+// checker's diagnosis; a Lua error in red.
+void draw_mine_rows(const CurveMineLevels& mine, int shown) {
+  const ImU32 disabled = ImGui::GetColorU32(ImGuiCol_TextDisabled);
+  for (int k = 0; k < static_cast<int>(mine.levels.size()); ++k) {
+    const bool wrong = k == mine.failed_level;
+    const bool final_point = k > 0 && mine.levels[k].size() == 1;
+    const ImU32 colour = k > shown ? disabled : wrong ? kWarningColour : final_point ? kFinalColour : level_colour(k);
+    table_text_row(std::to_string(k).c_str(), colour, format_points(flat(mine.levels[k])));
+  }
+  if (!mine.failed() || mine.failed_level > shown) {
+    if (!mine.complete()) table_text_row("...", disabled, "the next level comes from your evaluate_step when E shows it");
+    return;
+  }
+  if (!mine.error.empty()) {
+    table_text_row(mine.load_failed ? "error" : ("error " + std::to_string(mine.failed_level)).c_str(), kErrorColour,
+                   mine.error);
+    return;
+  }
+  table_text_row("reference", kGhostColour, format_points(flat(mine.reference_level)));
+  for (const std::string& line : mine.details) table_text_row("", kWarningColour, "- " + line);
+}
+
+void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine) {
   const auto levels = all_levels(state);
   const int shown = clamped_levels(state);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
   if (!ImGui::BeginTable("levels", 2, flags)) return;
-  ImGui::TableSetupColumn("level", ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn(mine ? "level (yours)" : "level", ImGuiTableColumnFlags_WidthFixed);
   ImGui::TableSetupColumn("points", ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
-  for (int k = 0; k < static_cast<int>(levels.size()); ++k) {
+  if (mine) draw_mine_rows(*mine, shown);
+  for (int k = 0; !mine && k < static_cast<int>(levels.size()); ++k) {
     const bool is_shown = k <= shown;
     const ImVec4 colour = is_shown ? ImGui::ColorConvertU32ToFloat4(
                                          k + 1 == static_cast<int>(levels.size()) && k > 0 ? kFinalColour
@@ -407,7 +500,7 @@ void draw_level_table(const CurveEditorState& state) {
 
 }  // namespace
 
-void draw_curve_editor_contents(CurveEditorState& state) {
+void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
   const int n = point_count(state);
   if (ImGui::Button("Step (E)")) step_level(state);
   ImGui::SameLine();
@@ -424,6 +517,15 @@ void draw_curve_editor_contents(CurveEditorState& state) {
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Fit view")) fit_view(state);
+  if (mine) {
+    ImGui::SameLine();
+    bool on = mine->curve_on();
+    if (ImGui::Checkbox("mine (M)", &on)) mine->set_curve_on(on);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("levels from your evaluate_step in %s, checked against the reference",
+                        mine->curve_file().path().string().c_str());
+    }
+  }
 
   double t = state.t;
   const double t_min = 0.0;
@@ -435,17 +537,18 @@ void draw_curve_editor_contents(CurveEditorState& state) {
   const float line = ImGui::GetFrameHeightWithSpacing();
   const float table_height = std::clamp(avail.y * 0.3f, 3.0f * line, 12.0f * line);
   const ImVec2 canvas_size(std::max(avail.x, 240.0f), std::max(avail.y - table_height, 180.0f));
-  draw_canvas(state, canvas_size);
+  draw_canvas(state, canvas_size, mine);
 
   ImGui::BeginChild("level_table", ImVec2(0.0f, 0.0f), false);
-  draw_level_table(state);
+  // The canvas computed this frame's levels: reading them back runs no Lua.
+  draw_level_table(state, mine && mine->curve_on() ? &mine->curve() : nullptr);
   ImGui::EndChild();
 }
 
-void draw_curve_editor(CurveEditorState& state, const char* title) {
+void draw_curve_editor(CurveEditorState& state, const char* title, BezierMine* mine) {
   // The wheel belongs to t over the canvas: the window itself must not scroll with it.
   if (ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar)) {
-    draw_curve_editor_contents(state);
+    draw_curve_editor_contents(state, mine);
   }
   ImGui::End();
 }

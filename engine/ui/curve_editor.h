@@ -12,7 +12,9 @@
 // - the curve never drops below 2 control points through remove_point (a curve loaded with fewer keeps
 //   them; nothing here requires 2);
 // - control points stay finite: add_point and drag_point refuse NaN or infinite positions.
-// The app owns the keyboard: it maps E to step_level and C to toggle_curve.
+// The app owns the keyboard: it maps E to step_level, C to toggle_curve and M to the "mine" switch. With "mine"
+// on (bezier_mine.h), the levels drawn are the student's evaluate_step's, the first one that is not the
+// reference's in the warning colour over the reference's.
 #pragma once
 
 #include <span>
@@ -23,6 +25,8 @@
 #include "core/bezier.h"
 
 namespace meshedit {
+
+class BezierMine;
 
 // ---- view transform --------------------------------------------------------------------------------
 
@@ -149,11 +153,12 @@ void handle_canvas_input(CurveEditorState& state, const CanvasInput& input);
 
 // ---- ImGui -----------------------------------------------------------------------------------------
 
-// An ImGui window (`title`) with the controls (step, curve, split, fit, add/remove, the t slider), the
-// canvas and the table of every level's points. Place and size it with SetNextWindowPos/Size before
-// calling. Needs a current ImGui context inside NewFrame/Render; makes no GL calls.
-void draw_curve_editor(CurveEditorState& state, const char* title = "Curve editor");
+// An ImGui window (`title`) with the controls (step, curve, split, fit, add/remove, the t slider, and the
+// "mine" switch when `mine` is given), the canvas and the table of every level's points. Place and size it
+// with SetNextWindowPos/Size before calling. Needs a current ImGui context inside NewFrame/Render; makes no GL
+// calls. With mine->curve_on(), runs the student's code through mine->curve_levels once per frame.
+void draw_curve_editor(CurveEditorState& state, const char* title = "Curve editor", BezierMine* mine = nullptr);
 // The same contents drawn into the current window or child (for embedding).
-void draw_curve_editor_contents(CurveEditorState& state);
+void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine = nullptr);
 
 }  // namespace meshedit

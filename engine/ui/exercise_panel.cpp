@@ -221,6 +221,7 @@ void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, Me
   }
   text(session.file().string());
   ImGui::TextDisabled("%s", active.signature);
+  ImGui::TextDisabled("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views");
   const bool run_mine = ImGui::Button("Run mine");
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   state.run_mine_x = 0.5f * (low.x + high.x);

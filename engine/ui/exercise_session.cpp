@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <exception>
-#include <system_error>
 #include <utility>
 
 #include "core/mesh_error.h"
@@ -57,11 +56,6 @@ std::string point_text(const std::vector<glm::dvec3>& points) {
 
 }  // namespace
 
-std::filesystem::path default_student_folder() {
-  // engine/ui/exercise_session.cpp -> the source tree.
-  return std::filesystem::path(__FILE__).parent_path().parent_path().parent_path() / "scripts" / "student";
-}
-
 std::vector<Exercise> mesh_exercises() {
   return {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
 }
@@ -71,57 +65,22 @@ bool is_mesh_exercise(Exercise exercise) {
   return std::find(all.begin(), all.end(), exercise) != all.end();
 }
 
-ExerciseSession::ExerciseSession(std::filesystem::path folder) : folder_(std::move(folder)) {}
+ExerciseSession::ExerciseSession(std::filesystem::path folder)
+    : folder_(std::move(folder)), student_(folder_ / exercise_info(exercise_).file) {}
 
 void ExerciseSession::set_folder(std::filesystem::path folder) {
   folder_ = std::move(folder);
-  code_.reset();
-  loaded_path_.clear();
+  student_.set_path(file());
 }
 
 bool ExerciseSession::set_exercise(Exercise exercise) {
   if (!is_mesh_exercise(exercise)) return false;
-  if (exercise != exercise_) {
-    exercise_ = exercise;
-    code_.reset();
-    loaded_path_.clear();
-  }
+  exercise_ = exercise;
+  student_.set_path(file());
   return true;
 }
 
 std::filesystem::path ExerciseSession::file() const { return folder_ / exercise_info(exercise_).file; }
-
-bool ExerciseSession::file_changed() const {
-  if (!code_ || loaded_path_ != file()) return true;
-  std::error_code error;
-  const auto time = std::filesystem::last_write_time(loaded_path_, error);
-  if (error) return true;
-  const auto size = std::filesystem::file_size(loaded_path_, error);
-  return error || time != loaded_time_ || size != loaded_size_;
-}
-
-bool ExerciseSession::ensure_loaded() {
-  if (!file_changed()) return true;
-  const std::filesystem::path path = file();
-  code_.reset();
-  loaded_path_.clear();
-  std::error_code error;
-  // Taken before loading: a save during the load makes the next run load again rather than miss it.
-  const auto time = std::filesystem::last_write_time(path, error);
-  const auto size = error ? uintmax_t(0) : std::filesystem::file_size(path, error);
-  ++loads_;
-  try {
-    code_ = load_student_file(path);
-  } catch (const std::exception& e) {
-    load_error_ = e.what();
-    return false;
-  }
-  load_error_.clear();
-  loaded_path_ = path;
-  loaded_time_ = time;
-  loaded_size_ = size;
-  return true;
-}
 
 Check ExerciseSession::run_mine(MeshDocument& doc, Selection& selection) { return run(doc, selection, true); }
 Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { return run(doc, selection, false); }
@@ -136,8 +95,8 @@ Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
   }
   if (mine && !ensure_loaded()) {
     run_.reset();
-    set_message(doc, Severity::Error, load_error_);
-    return Check::no(load_error_);
+    set_message(doc, Severity::Error, load_error());
+    return Check::no(load_error());
   }
 
   ExerciseRun result;
@@ -151,7 +110,7 @@ Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
     if (mine) {
       RunOptions options;
       options.record_edits = true;
-      result.report = check_exercise(*code_, exercise_, result.input, options);
+      result.report = check_exercise(*student_.code(), exercise_, result.input, options);
     } else {
       result.report.exercise = exercise_;
       result.report.reference = meshedit::run_reference(exercise_, result.input);

@@ -3,9 +3,9 @@
 // replay of the student's operation in the document.
 //
 // Invariants:
-// - A student file is (re)loaded into a fresh StudentCode whenever its modification time or size differs from
-//   the loaded one (checked at each run, one stat call), so saving the file in an editor is enough. A file that
-//   does not load (syntax error, missing) leaves the document untouched and keeps the error ("flip.lua:3: ...").
+// - The student file is read through a StudentFile (student_file.h): loaded again when it is saved, so saving
+//   the file in an editor is enough. A file that does not load (syntax error, missing) leaves the document
+//   untouched and keeps the error ("flip.lua:3: ...").
 // - run_mine / run_reference never throw and change the document by at most one undoable operation, labelled
 //   "mine: flip e7" / "reference: flip e7" ("mine (error): ..." when the student's function failed half way);
 //   the student's result goes in even when it differs from the reference (validation says what broke). An
@@ -34,11 +34,9 @@
 #include "script/exercises.h"
 #include "ui/mesh_document.h"
 #include "ui/selection.h"
+#include "ui/student_file.h"
 
 namespace meshedit {
-
-// <source tree>/scripts/student (found from this file's compiled-in path).
-std::filesystem::path default_student_folder();
 
 // The exercises the window runs on its mesh: flip, split, normals, upsample (in the assignment's order).
 std::vector<Exercise> mesh_exercises();
@@ -68,12 +66,12 @@ class ExerciseSession {
   bool set_exercise(Exercise exercise);
   std::filesystem::path file() const;  // folder() / "flip.lua"
 
-  // The student file's modification time or size differ from the loaded one (or it is not loaded yet).
-  bool file_changed() const;
+  // The student file differs from the last load attempt (or there was none).
+  bool file_changed() const { return student_.changed(); }
   // Loads the file if file_changed(); returns false (and sets load_error()) when it does not load.
-  bool ensure_loaded();
-  const std::string& load_error() const { return load_error_; }
-  size_t loads() const { return loads_; }  // how many times a file was loaded (tests)
+  bool ensure_loaded() { return student_.ensure_loaded(); }
+  const std::string& load_error() const { return student_.error(); }
+  size_t loads() const { return student_.loads(); }  // how many times a file was loaded (tests)
 
   // The active exercise on the selection (edge or its halfedge for flip/split, vertex for normals, the whole
   // mesh for upsample). Refused (with doc.message) when the selection does not fit or the file does not load.
@@ -105,12 +103,7 @@ class ExerciseSession {
 
   std::filesystem::path folder_;
   Exercise exercise_ = Exercise::FlipEdge;
-  std::unique_ptr<StudentCode> code_;
-  std::filesystem::path loaded_path_;
-  std::filesystem::file_time_type loaded_time_{};
-  uintmax_t loaded_size_ = 0;
-  std::string load_error_;
-  size_t loads_ = 0;
+  StudentFile student_;
 
   std::optional<ExerciseRun> run_;
   uint64_t runs_ = 0;

@@ -15,6 +15,7 @@
 
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
+#include "ui/bezier_mine.h"
 
 namespace meshedit {
 
@@ -31,6 +32,9 @@ const glm::vec4 kColumnPolygonColour{0.2f, 0.85f, 1.0f, 1.0f};
 const glm::vec4 kColumnLevelColours[2] = {{0.35f, 0.55f, 1.0f, 1.0f}, {0.9f, 0.4f, 0.9f, 1.0f}};
 const glm::vec4 kColumnCurveColour{0.3f, 0.95f, 0.4f, 1.0f};
 const glm::vec4 kSurfacePointColour{1.0f, 0.25f, 0.25f, 1.0f};
+const glm::vec4 kMineOkColour{0.45f, 0.95f, 0.45f, 1.0f};    // yours is the reference's
+const glm::vec4 kMineWrongColour{1.0f, 0.47f, 0.0f, 1.0f};   // yours is not: the warning colour
+const glm::vec4 kMineErrorColour{1.0f, 0.35f, 0.35f, 1.0f};  // yours failed
 
 bool same_patches(const std::vector<BezierPatch>& a, const std::vector<BezierPatch>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(BezierPatch)) == 0);
@@ -137,7 +141,7 @@ bool update_tessellation(PatchViewState& state) {
   return true;
 }
 
-std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state) {
+std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, const PatchMinePoint* mine) {
   std::vector<PatchOverlayItem> items;
   const int count = static_cast<int>(state.patches.size());
   if (count == 0) return items;
@@ -154,6 +158,15 @@ std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state) {
   if (state.show_probe) {
     auto probe = build_probe_overlay(state.patches[selected], state.u, state.v);
     std::move(probe.begin(), probe.end(), std::back_inserter(items));
+    if (mine && mine->ran) {
+      const glm::vec4 colour = mine->equal ? kMineOkColour : kMineWrongColour;
+      if (!mine->equal) {
+        items.push_back(item({mine->mine, mine->reference}, colour, 2.0f, false, OverlayKind::MinePoint,
+                             "yours to P(u, v)"));
+      }
+      // Smaller than P(u, v)'s dot, so a right answer shows as a green dot inside the red one.
+      items.push_back(item({mine->mine}, colour, 8.0f, true, OverlayKind::MinePoint, "yours"));
+    }
   }
   return items;
 }
@@ -182,7 +195,7 @@ void table_row(const char* step, std::span<const glm::dvec3> points, glm::vec4 c
   ImGui::TextWrapped("%s", format_points(points).c_str());
 }
 
-void draw_evaluation_table(const PatchViewState& state) {
+void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mine) {
   if (state.patches.empty()) return;
   const PatchEvaluation eval = evaluate_patch_steps(state.patches[state.selected_patch], state.u, state.v);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
@@ -200,12 +213,26 @@ void draw_evaluation_table(const PatchViewState& state) {
     table_row(step, eval.column_levels[k], kColumnLevelColours[(k - 1) % 2]);
   }
   table_row("P(u, v)", std::span<const glm::dvec3>(&eval.point, 1), kSurfacePointColour);
+  if (mine && mine->ran) {
+    table_row("yours", std::span<const glm::dvec3>(&mine->mine, 1), mine->equal ? kMineOkColour : kMineWrongColour);
+  }
   ImGui::EndTable();
+}
+
+// With the switch on: the verdict on your point (file:line for an error) and the checker's diagnosis.
+void draw_mine_verdict(const PatchMinePoint& mine) {
+  const glm::vec4 colour = !mine.error.empty() ? kMineErrorColour : mine.equal ? kMineOkColour : kMineWrongColour;
+  ImGui::PushStyleColor(ImGuiCol_Text, to_imvec(colour));
+  ImGui::TextWrapped("mine: %s", mine.message.c_str());
+  if (!mine.equal) {
+    for (const std::string& line : mine.details) ImGui::TextWrapped("- %s", line.c_str());
+  }
+  ImGui::PopStyleColor();
 }
 
 }  // namespace
 
-void draw_patch_view_panel_contents(PatchViewState& state) {
+void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
   const int count = static_cast<int>(state.patches.size());
   int resolution = state.resolution;
   if (ImGui::SliderInt("resolution", &resolution, 1, kMaxPatchViewResolution)) set_resolution(state, resolution);
@@ -229,20 +256,35 @@ void draw_patch_view_panel_contents(PatchViewState& state) {
   ImGui::Checkbox("surface", &state.show_surface);
   ImGui::SameLine();
   ImGui::Checkbox("probe", &state.show_probe);
+  const PatchMinePoint* yours = nullptr;
+  if (mine) {
+    ImGui::SameLine();
+    bool on = mine->patch_on();
+    if (ImGui::Checkbox("mine (M)", &on)) mine->set_patch_on(on);
+    if (ImGui::IsItemHovered()) {
+      ImGui::SetTooltip("the probe point from your evaluate in %s, checked against the reference",
+                        mine->patch_file().path().string().c_str());
+    }
+    if (mine->patch_on() && count > 0) {
+      select_patch(state, state.selected_patch);
+      yours = &mine->patch_point(state.patches[state.selected_patch], state.u, state.v);
+    }
+  }
 
   update_tessellation(state);
   const PatchTessellation& cache = state.tessellation;
   ImGui::Text("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
               cache.polygons.num_faces(), static_cast<unsigned long long>(cache.rebuilds));
   if (!cache.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", cache.error.c_str());
+  if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 
   ImGui::Separator();
   ImGui::TextUnformatted("Separable evaluation: each row at u, then the column through them at v");
-  draw_evaluation_table(state);
+  draw_evaluation_table(state, yours);
 }
 
-void draw_patch_view_panel(PatchViewState& state, const char* title) {
-  if (ImGui::Begin(title)) draw_patch_view_panel_contents(state);
+void draw_patch_view_panel(PatchViewState& state, const char* title, BezierMine* mine) {
+  if (ImGui::Begin(title)) draw_patch_view_panel_contents(state, mine);
   ImGui::End();
   update_tessellation(state);  // a collapsed panel must not leave the surface stale
 }

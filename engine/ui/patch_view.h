@@ -3,7 +3,8 @@
 // evaluated at u, then the column curve through those four points evaluated at v.
 //
 // This module builds data and an ImGui panel only; the app hands the mesh to MeshRenderer and the
-// overlay polylines to the renderer's overlay drawing.
+// overlay polylines to the renderer's overlay drawing. With the "mine" switch on (bezier_mine.h), the probe
+// also shows the point the student's evaluate (scripts/student/patch.lua) gives, and how far it is from P(u, v).
 //
 // Invariants kept by the functions below (not by direct writes to the fields):
 // - resolution is in [1, kMaxPatchViewResolution]; u and v are finite and in [0, 1];
@@ -28,6 +29,9 @@
 
 namespace meshedit {
 
+class BezierMine;
+struct PatchMinePoint;
+
 inline constexpr int kMaxPatchViewResolution = 64;
 inline constexpr int kProbeCurveSamples = 32;  // segments of each sampled row and column curve
 
@@ -41,6 +45,7 @@ enum class OverlayKind {
   ColumnLevel,    // a de Casteljau level of the column curve at v (3 points, then 2)
   ColumnCurve,    // the column curve through the row points, in v (sampled)
   SurfacePoint,   // P(u, v) (one point)
+  MinePoint,      // the student's P(u, v) (one point), and the segment from it to the reference's when they differ
 };
 
 // One thing to draw over the surface, in the patches' own coordinates.
@@ -111,17 +116,20 @@ bool update_tessellation(PatchViewState& state);
 // What the renderer should draw over the surface, following the toggles:
 // - show_control_net: the nets of all patches (dim), except the selected one when the probe shows it;
 // - show_probe: build_probe_overlay of the selected patch at (u, v) (its net included, bright).
+// - mine (when given and show_probe): the student's point, green when it is the reference's, in the warning
+//   colour with a segment to P(u, v) when not (nothing when the student's code failed).
 // Empty when there are no patches.
-std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state);
+std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, const PatchMinePoint* mine = nullptr);
 
 // ---- ImGui -----------------------------------------------------------------------------------------
 
 // An ImGui window (`title`): resolution slider, patch selector, u and v sliders, the toggles, the
 // tessellation's numbers, and the table of the separable evaluation (row r at u -> point, then the
 // column's de Casteljau levels at v -> P(u, v)). Calls update_tessellation after its controls, so the
-// mesh is current for this frame's rendering. Needs a current ImGui frame; makes no GL calls.
-void draw_patch_view_panel(PatchViewState& state, const char* title = "Patch view");
+// mesh is current for this frame's rendering. Needs a current ImGui frame; makes no GL calls. Given `mine`,
+// adds the "mine" switch and, when it is on, your point, the verdict and any error (file:line).
+void draw_patch_view_panel(PatchViewState& state, const char* title = "Patch view", BezierMine* mine = nullptr);
 // The same contents drawn into the current window or child.
-void draw_patch_view_panel_contents(PatchViewState& state);
+void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine = nullptr);
 
 }  // namespace meshedit

@@ -24,8 +24,11 @@
 --   To see the reference: local c = meshedit.curve(points); c:levels(t), c:evaluate(t).
 --
 -- CHECKING
---   In the app, "mine" runs this function and compares every point with the reference step; the checker says
---   which point differs and by how much.
+--   In the app's curve view, tick "mine" (or press M) and press E: each level comes from this function, run on
+--   the level before, and is compared point by point with the reference step. A level that differs is drawn in
+--   orange over the reference's, and the view names the level, the point and both values; an error shows its
+--   curve.lua:LINE. The view reloads this file when you save it. From a terminal:
+--   meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student
 
 function evaluate_step(points, t)
   -- TODO: build and return the list of the n - 1 interpolated points.

@@ -28,8 +28,10 @@
 --   returns {rows = {q1..q4}, column_levels = {...}, point = ...}.
 --
 -- CHECKING
---   "mine" compares your point with the reference at the same (u, v); the checker tells you when your answer
---   is the reference at (v, u), which means rows and columns were swapped.
+--   In the app's patch view, tick "mine" (or press M): the probe point at (u, v) comes from this function too,
+--   and is compared with the reference at the same (u, v); the checker tells you when your answer is the
+--   reference at (v, u), which means rows and columns were swapped. The view reloads this file when you save
+--   it. From a terminal: meshedit grade --suite tests/grading/suites/patch.lua --submission scripts/student
 
 function evaluate(patch, u, v)
   -- TODO: evaluate the four rows at u, then the column of their results at v.

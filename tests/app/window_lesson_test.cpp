@@ -1,6 +1,7 @@
 // Lessons in the real window under Xvfb: `meshedit lessons/welcome.lua` opens the lesson panel on its first
 // step; keys, a click on a vertex and Next reach the lesson through the same handlers a student uses, the
 // lesson's highlight and label are drawn, and a broken lesson shows its file:line without taking the window.
+// Lesson 6's "Your turn: Shift+L" step follows the app's own Loop phases, one Shift+L at a time.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -73,6 +74,37 @@ TEST(WindowLesson, ABrokenLessonShowsFileAndLineAndTheWindowKeepsWorking) {
       "frames 2\nexpect-lesson-step 1 failed\nexpect-message broken.lua\nselect e3\nkey F\n"
       "expect-message flip e3\nexpect-valid\nquit\n";
   const WindowRun run = run_window(x.display(), lesson, actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
+TEST(WindowLesson, LessonSixFollowsTheAppsLoopPhasesKeyByKey) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  std::ostringstream actions;
+  actions << "frames 2\n";
+  for (int i = 0; i < 5; ++i) actions << "lesson-next\n";
+  actions << "frames 1\n"
+          << "expect-lesson-step 6 waiting\n"
+          << "key shift+L\n"
+          << "expect-message Loop 1/4\n"
+          << "expect-lesson-said Phase 1 computed every new position and changed nothing\n"
+          << "key shift+L\n"
+          << "expect-lesson-said Phase 2 split all 18 original edges: now 26 vertices, 72 edges, 48 faces\n"
+          << "key L\n"  // a whole subdivision instead of phase 3: the lesson starts again on a fresh cube
+          << "key shift+L\n"
+          << "expect-lesson-said That is not the cube after phase 3\n"
+          << "frames 1\n"
+          << "key shift+L\n"
+          << "key shift+L\n"
+          << "key shift+L\n"
+          << "key shift+L\n"
+          << "expect-valid\n"
+          << "expect-lesson-step 6 finished\n"
+          << "expect-lesson-said One step done: 26 vertices, 72 edges, 48 faces, valid.\n"
+          << "quit\n";
+  const WindowRun run =
+      run_window(x.display(), testing::source_dir() / "lessons" / "6_loop_subdivision.lua", actions.str(), dir);
   EXPECT_EQ(run.status, 0) << run.output;
 }
 

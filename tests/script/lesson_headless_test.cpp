@@ -8,9 +8,11 @@
 #include <sstream>
 #include <string>
 
+#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "core/value_format.h"
 #include "script/lesson_headless.h"
 #include "support/test_support.h"
 
@@ -140,7 +142,8 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse or subdivide)");
+             "collapse, subdivide or loop_phase)");
+  fails_with("return { [1] = { {loop_phase = 1} } }\n", "answers.lua: step 1, answer 1: write loop_phase = true");
   fails_with("return 3\n", "answers.lua: must return a table of answers per step, like { [2] = { {key = \"F\"} } }");
   fails_with("return { ['A'] = { {key = 'F', click = 'v0'} } }\n",
              "answers.lua: step 'A', answer 1: give exactly one answer per table");
@@ -155,6 +158,83 @@ TEST(LessonHeadless, ARefusedScriptedEditFails) {
       write_file(dir, "lesson.lua", "step('Flip', function() show(meshedit.cube()) wait_for { key = 'F' } end)\n"),
       write_file(dir, "answers.lua", "return { { {flip = 'v3'} } }\n"), out);
   EXPECT_EQ(outcome.failure, "step 1 'Flip': answer flip = \"v3\": expected an edge id like e7");
+}
+
+// Waits for Shift+L four times and says, after each, the counts and where v0 and the first new vertex are.
+constexpr const char* kPhaseLesson = R"lua(
+local function where(m, i) return i < m:num_vertices() and tostring(m:vertex(i).position) or "-" end
+step("Phases", function()
+  show(meshedit.cube())
+  for phase = 1, 4 do
+    wait_for { key = "shift+L" }
+    local m = current_mesh()
+    say("after " .. phase .. ": " .. m:num_vertices() .. " " .. m:num_edges() .. " " .. m:num_faces()
+      .. " v0 " .. where(m, 0) .. " v8 " .. where(m, 8) .. " valid " .. tostring(m:validate()))
+  end
+end)
+)lua";
+
+// What the core's phases give on a cube after `phases` of them, as kPhaseLesson says it.
+std::string core_after(int phases) {
+  HalfedgeMesh m = build_halfedge_mesh(make_cube());
+  OpResult<LoopState> state = loop_compute_positions(m);
+  EXPECT_TRUE(state.ok());
+  if (phases >= 2) loop_split_edges(m, state.value);
+  if (phases >= 3) loop_flip_edges(m, state.value);
+  if (phases >= 4) loop_commit_positions(m, state.value);
+  const auto where = [&](uint32_t i) {
+    return i < m.num_vertices() ? format_position(m.position(VertexId(i))) : std::string("-");
+  };
+  return "after " + std::to_string(phases) + ": " + std::to_string(m.num_vertices()) + " " +
+         std::to_string(m.num_edges()) + " " + std::to_string(m.num_faces()) + " v0 " + where(0) + " v8 " + where(8) +
+         " valid true";
+}
+
+TEST(LessonHeadless, LoopPhaseAnswersStepThroughTheCoresFourPhases) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  const HeadlessOutcome outcome = run_lesson_headless(
+      write_file(dir, "phases.lua", kPhaseLesson),
+      write_file(dir, "answers.lua",
+                 "local p = { {loop_phase = true}, {key = 'shift+L'} }\n"
+                 "return { { p[1], p[2], p[1], p[2], p[1], p[2], p[1], p[2] } }\n"),
+      out);
+  ASSERT_EQ(outcome.failure, "") << out.str();
+  const std::string text = out.str();
+  size_t at = 0;  // each phase, its key and what the lesson saw, in order
+  for (int phase = 1; phase <= 4; ++phase) {
+    static const char* const names[] = {"", "compute new positions", "split every original edge",
+                                        "flip new edges joining an old and a new vertex",
+                                        "move every vertex to its new position"};
+    const std::string answer = "  > loop phase " + std::to_string(phase) + "/4: " + names[phase] + "\n  > key shift+L\n";
+    at = text.find(answer, at);
+    ASSERT_NE(at, std::string::npos) << answer << text;
+    at = text.find("  " + core_after(phase) + "\n", at);
+    ASSERT_NE(at, std::string::npos) << core_after(phase) << "\n" << text;
+  }
+  // Phase 1 moves nothing; phase 4 moves v0 to the course weights' (-0.3125, ...).
+  EXPECT_TRUE(contains(core_after(1), "8 18 12 v0 (-0.5, -0.5, -0.5) v8 - valid true"));
+  EXPECT_TRUE(contains(core_after(4), "26 72 48 v0 (-0.3125, -0.3125, -0.3125)"));
+  EXPECT_FALSE(contains(text, "not awaited")) << text;
+}
+
+TEST(LessonHeadless, AnEditBetweenLoopPhasesStartsThemAgain) {
+  const auto dir = testing::scratch_dir();
+  std::ostringstream out;
+  // Phases 1 and 2, then a flip: the next loop_phase is phase 1 of the flipped mesh, and it changes nothing.
+  const HeadlessOutcome outcome = run_lesson_headless(
+      write_file(dir, "phases.lua", kPhaseLesson),
+      write_file(dir, "answers.lua",
+                 "return { { {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'},\n"
+                 "  {flip = 'e30'}, {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'} } }\n"),
+      out);
+  ASSERT_EQ(outcome.failure, "") << out.str();
+  const std::string text = out.str();
+  EXPECT_TRUE(contains(text, "  > flip e30\n  (the mesh changed after Loop phase 2; starting again)\n"
+                             "  > loop phase 1/4: compute new positions\n"))
+      << text;
+  EXPECT_TRUE(contains(text, "after 3: 26 72 48")) << text;  // phase 1 of the new run: still the split cube's counts
+  EXPECT_TRUE(contains(text, "after 4: 98 288 192")) << text;  // its phase 2 splits the 72 edges of the flipped mesh
 }
 
 }  // namespace

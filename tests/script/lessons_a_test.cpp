@@ -54,6 +54,9 @@ TEST(LessonsA, DeCasteljauPassesEveryStep) {
   EXPECT_TRUE(contains(r.text, "  - level 3: (2, 1.5)\n")) << r.text;
   // The quiz: a wrong count does not move the step on; the right one does.
   EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 3)\n  > key 3\n")) << r.text;
+  // The last step points to the view's own check first, then to the grader.
+  EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the curve view (or press M), then press E.")) << r.text;
+  EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/curve.lua")) << r.text;
   EXPECT_TRUE(contains(r.text, "  Right: 3.")) << r.text;
   // B(0.25) = 27/64 P0 + 27/64 P1 + 9/64 P2 + 1/64 P3 = (0.90625, 1.125).
   EXPECT_TRUE(contains(r.text, "At t = 0.25 it is (0.90625, 1.125)")) << r.text;
@@ -92,6 +95,8 @@ TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
                                "the column curve through them gives (1.5, 1.5, 1.125)."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 5)\n  > key 5\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the patch view (or press M).")) << r.text;
+  EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/patch.lua")) << r.text;
   EXPECT_TRUE(contains(r.text, "made of 32 Bézier patches")) << r.text;
   EXPECT_TRUE(contains(r.text, "only 512 control points")) << r.text;
   EXPECT_TRUE(contains(r.text, "The same point.")) << r.text;

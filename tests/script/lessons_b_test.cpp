@@ -224,6 +224,13 @@ TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
   EXPECT_TRUE(contains(text, "Of the 36 edges the splits made across faces, 12 joined an old vertex to a new one"))
       << text;
   EXPECT_TRUE(contains(text, "give exactly the mesh the app's L gives")) << text;
+  EXPECT_TRUE(contains(text, "  > loop phase 1/4: compute new positions\n  > key shift+L\n\n  Phase 1 computed every new "
+                             "position and changed nothing: the cube still has 8 vertices, 18 edges, 12 faces.")) << text;
+  EXPECT_TRUE(contains(text, "Phase 2 split all 18 original edges: now 26 vertices, 72 edges, 48 faces")) << text;
+  EXPECT_TRUE(contains(text, "Phase 3 flipped the 12 new edges joining an old and a new vertex (orange): still 26 "
+                             "vertices, 72 edges, 48 faces.")) << text;
+  EXPECT_TRUE(contains(text, "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, -0.3125, "
+                             "-0.3125).")) << text;
   EXPECT_TRUE(contains(text, "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << text;
   EXPECT_TRUE(contains(text, "the degrees of v0 to v7 are 6, 4, 4, 4, 4, 4, 4, 6.")) << text;
   EXPECT_TRUE(contains(text, "All six split: 14 vertices, 36 edges, 24 faces, and every corner has degree 6.")) << text;
@@ -292,6 +299,50 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
   for (VertexId v : cube.vertices()) {
     EXPECT_NEAR(glm::length(screen->position(v) - cube.position(v)), 0.0, 1e-12) << format_id(v);
   }
+}
+
+TEST(LessonsB, ShiftLStepChecksEveryPhaseAndStartsAgainOnAnotherEdit) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("6_loop_subdivision")));
+  runner.go_to(step_index(runner, "Your turn: Shift+L"));
+  const LessonEvent shift_l = LessonEvent::key("shift+L");
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Key);
+  EXPECT_EQ(runner.waiting_for().hint, "Press Shift+L: phase 1 of 4, compute new positions");
+  ASSERT_TRUE(host.screen_mesh());
+  // The window's Shift+L: the core's phase on the screen mesh, then the key.
+  LoopState state;
+  const auto phase = [&](int k) {
+    edit_screen(host, [&](HalfedgeMesh& m) {
+      if (k == 1) state = loop_compute_positions(m).value;
+      if (k == 2) loop_split_edges(m, state);
+      if (k == 3) loop_flip_edges(m, state);
+      if (k == 4) loop_commit_positions(m, state);
+    });
+    return runner.deliver(shift_l);
+  };
+  ASSERT_TRUE(phase(1));
+  EXPECT_TRUE(contains(said(runner), "Phase 1 computed every new position and changed nothing")) << said(runner);
+  EXPECT_EQ(runner.waiting_for().hint, "Press Shift+L: phase 2 of 4, split every original edge");
+  ASSERT_TRUE(phase(2));
+  EXPECT_TRUE(contains(said(runner), "Phase 2 split all 18 original edges: now 26 vertices, 72 edges, 48 faces"));
+  for (uint32_t i = 0; i < 26; ++i) EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? "#ffe600" : "") << i;
+
+  // L instead of phase 3 (a whole subdivision of the split cube), then Shift+L: not the cube after phase 3.
+  edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(loop_subdivide(m).ok); });
+  ASSERT_TRUE(runner.deliver(shift_l));
+  EXPECT_TRUE(contains(said(runner), "That is not the cube after phase 3")) << said(runner);
+  EXPECT_EQ(host.screen_mesh()->num_vertices(), 8u);  // a fresh cube, from phase 1
+  EXPECT_EQ(runner.waiting_for().hint, "Press Shift+L: phase 1 of 4, compute new positions");
+  EXPECT_TRUE(host.highlights().empty());
+
+  for (int k = 1; k <= 4; ++k) ASSERT_TRUE(phase(k)) << k;
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  EXPECT_TRUE(contains(said(runner), "Phase 3 flipped the 12 new edges")) << said(runner);
+  EXPECT_TRUE(contains(said(runner), "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, "
+                                     "-0.3125, -0.3125).")) << said(runner);
+  EXPECT_TRUE(contains(said(runner), "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << said(runner);
+  EXPECT_EQ(colour_of(host, VertexId(0)), "#ffe600");
 }
 
 TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {

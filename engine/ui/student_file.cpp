@@ -1,0 +1,50 @@
+// StudentFile: see student_file.h for the contract.
+#include "ui/student_file.h"
+
+#include <exception>
+#include <system_error>
+#include <utility>
+
+namespace meshedit {
+
+std::filesystem::path default_student_folder() {
+  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "scripts" / "student";
+}
+
+void StudentFile::set_path(std::filesystem::path path) {
+  if (path == path_) return;
+  path_ = std::move(path);
+  code_.reset();
+  attempted_ = false;
+}
+
+bool StudentFile::changed() const {
+  if (!attempted_ || attempted_path_ != path_) return true;
+  std::error_code error;
+  const auto time = std::filesystem::last_write_time(path_, error);
+  if (error) return true;
+  const auto size = std::filesystem::file_size(path_, error);
+  return error || time != attempted_time_ || size != attempted_size_;
+}
+
+bool StudentFile::ensure_loaded() {
+  if (!changed()) return code_ != nullptr;
+  code_.reset();
+  std::error_code error;
+  // Taken before loading: a save during the load makes the next call load again rather than miss it.
+  attempted_time_ = std::filesystem::last_write_time(path_, error);
+  attempted_size_ = error ? uintmax_t(0) : std::filesystem::file_size(path_, error);
+  attempted_path_ = path_;
+  attempted_ = true;
+  ++loads_;
+  try {
+    code_ = load_student_file(path_);
+  } catch (const std::exception& e) {
+    error_ = e.what();
+    return false;
+  }
+  error_.clear();
+  return true;
+}
+
+}  // namespace meshedit
