@@ -14,6 +14,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <functional>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -74,9 +75,26 @@ bool attempt(const std::string& who, Fn&& fn) {
   }
 }
 
-void set_cell(TableRow& row, const Entry& e, double value) {
-  if (e.slot < 0) row.ours = value;
-  else row.peer[e.slot] = value;
+double& cell(TableRow& row, const Entry& e) { return e.slot < 0 ? row.ours : row.peer[e.slot]; }
+
+// One timed job: `work` after an untimed `setup`; `after(round)` runs untimed once the round's time is taken.
+struct Job {
+  double* result;
+  std::function<void()> setup, work;
+  std::function<void(int)> after;
+};
+
+// Runs every job once per round, `reps` rounds, and keeps each job's minimum. On a machine shared with
+// others the load comes and goes; interleaving the contenders gives each of them the same mix of it.
+void run_interleaved(int reps, const std::vector<Job>& jobs) {
+  for (const Job& job : jobs) *job.result = NAN;
+  for (int round = 0; round < reps; ++round) {
+    for (const Job& job : jobs) {
+      const double ms = min_ms(1, job.setup, job.work);
+      *job.result = std::isnan(*job.result) ? ms : std::min(*job.result, ms);
+      if (job.after) job.after(round);
+    }
+  }
 }
 
 void mark_mismatch(TableRow& row, const Entry& e, const char* note) {
@@ -134,6 +152,7 @@ int main(int argc, char** argv) {
     row.label = "build, " + std::to_string(input.num_faces()) + " faces (ms)";
     row.target[0] = row.target[1] = 3.0;
     MeshCounts expected;
+    std::vector<Job> jobs;
     for (Entry& e : entries) {
       Contender& c = *e.contender;
       MeshCounts got;
@@ -152,9 +171,10 @@ int main(int argc, char** argv) {
         c.clear();
         continue;
       }
-      set_cell(row, e, min_ms(o.reps, [&] { c.clear(); }, [&] { c.build(input); }));
       c.clear();
+      jobs.push_back({&cell(row, e), [&c] { c.clear(); }, [&c, &input] { c.build(input); }, [&c](int) { c.clear(); }});
     }
+    run_interleaved(o.reps, jobs);
   }
 
   // ---- 2-5. Loop subdivision (closed, with holes), normals and memory on the closed result -------------
@@ -256,29 +276,40 @@ int main(int argc, char** argv) {
       }
     }
 
+    // Times, interleaved; each contender keeps its last subdivided mesh for the normals.
+    const Variant* v = &variant;
+    std::vector<Job> loop_jobs, normal_jobs;
     for (size_t i = 0; i < entries.size(); ++i) {
       if (!matched[i]) continue;
-      Entry& e = entries[i];
-      Contender& c = *e.contender;
-      set_cell(loop_row, e, min_ms(o.reps, [&] { c.build(variant.mesh); }, [&] { c.subdivide(o.levels, 1); }));
-      if (variant.closed) {
-        set_cell(normal_row, e, min_ms(o.reps, [&] { c.drop_normals(); }, [&] { c.compute_normals(1); }));
+      const Entry& e = entries[i];
+      Contender* c = e.contender.get();
+      const auto keep_last = [c, reps = o.reps](int round) { if (round + 1 < reps) c->clear(); };
+      loop_jobs.push_back({&cell(loop_row, e), [c, v] { c->build(v->mesh); }, [c, &o] { c->subdivide(o.levels, 1); },
+                           keep_last});
+      normal_jobs.push_back({&cell(normal_row, e), [c] { c->drop_normals(); }, [c] { c->compute_normals(1); }, {}});
+      if (e.slot >= 0 || !ours_threads_ok) continue;
+      if (ours_threads_subdivide) {
+        loop_jobs.push_back({&loop_row.ours_threads, [c, v] { c->build(v->mesh); },
+                             [c, &o] { c->subdivide(o.levels, o.threads); }, keep_last});
       }
-      if (e.slot < 0 && ours_threads_subdivide && ours_threads_ok) {
-        loop_row.ours_threads =
-            min_ms(o.reps, [&] { c.build(variant.mesh); }, [&] { c.subdivide(o.levels, o.threads); });
+      if (ours_threads_normals) {
+        normal_jobs.push_back({&normal_row.ours_threads, [c] { c->drop_normals(); },
+                               [c, &o] { c->compute_normals(o.threads); }, {}});
       }
-      if (e.slot < 0 && ours_threads_normals && ours_threads_ok && variant.closed) {
-        normal_row.ours_threads = min_ms(o.reps, [&] { c.drop_normals(); }, [&] { c.compute_normals(o.threads); });
-      }
-      c.clear();
-      if (variant.closed) {
-        const long long growth = rss_growth_in_child([&] { c.clear(); }, [&] {
-          c.build(variant.mesh);
-          c.subdivide(o.levels, 1);
-        });
-        if (growth >= 0) set_cell(memory_row, e, double(growth) / double(expected.faces));
-      }
+    }
+    run_interleaved(o.reps, loop_jobs);
+    if (variant.closed) run_interleaved(o.reps, normal_jobs);
+    for (Entry& e : entries) e.contender->clear();
+
+    // Memory at rest, one child per contender.
+    for (size_t i = 0; variant.closed && i < entries.size(); ++i) {
+      if (!matched[i]) continue;
+      Contender& c = *entries[i].contender;
+      const long long growth = rss_growth_in_child([&] { c.clear(); }, [&] {
+        c.build(variant.mesh);
+        c.subdivide(o.levels, 1);
+      });
+      if (growth >= 0) cell(memory_row, entries[i]) = double(growth) / double(expected.faces);
     }
     if (variant.closed) {
       std::printf("memory: growth of the resident set (after malloc_trim) of a forked child over build + subdivision, "
