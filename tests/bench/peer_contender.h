@@ -1,4 +1,4 @@
-// The interface peer_bench times: one half-edge library ("contender") behind the same five calls, so
+// The interface peer_bench times: one half-edge library ("contender") behind the same calls, so
 // MeshEdit, OpenMesh and CGAL get the same input and the same treatment. Each contender lives in its own
 // file (peer_ours.cpp, peer_openmesh.cpp, peer_cgal.cpp); the peers are compiled only when CMake finds
 // the library, which then defines MESHEDIT_HAVE_OPENMESH / MESHEDIT_HAVE_CGAL.
@@ -38,7 +38,7 @@ class Contender {
   // (boundary vertex 3/4 p + 1/8 of its two boundary neighbours, boundary edge point at the midpoint).
   virtual std::string boundary_rule() const = 0;
   virtual bool boundary_rule_like_ours() const = 0;
-  // How many threads its subdivision / normals can use (1: single thread only).
+  // Whether its subdivision / normals use the `threads` argument (false: single thread only).
   virtual bool takes_threads_for_subdivision() const { return false; }
   virtual bool takes_threads_for_normals() const { return false; }
 

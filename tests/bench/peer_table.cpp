@@ -10,7 +10,7 @@ namespace {
 // Three significant digits or more: 1234.5, 12.3, 1.23, 0.123.
 std::string number(double value, int decimals = -1) {
   if (std::isnan(value)) return "-";
-  if (decimals < 0) decimals = value >= 100 ? 1 : value >= 10 ? 1 : value >= 1 ? 2 : 3;
+  if (decimals < 0) decimals = value >= 10 ? 1 : value >= 1 ? 2 : 3;
   char text[32];
   std::snprintf(text, sizeof text, "%.*f", decimals, value);
   return text;
