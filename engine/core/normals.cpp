@@ -146,35 +146,20 @@ bool triangle_term(const MeshStorage::ReadView& r, uint32_t f, glm::dvec3& out) 
 
 }  // namespace
 
-void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, NormalScratch& scratch, int threads) {
-  // Each face's vector area once (O(H) in total), then one fan walk per vertex summing them in the order
-  // sum_around_vertex does, with the same checks, so each normal equals vertex_normal(mesh, v) bit for bit.
+void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
+  // vertex_normal for every vertex, with its for_each_outgoing / sum_around_vertex walk fused over the raw records
+  // and each triangle's term from triangle_term: the same terms in the same order, so the same bits. A face's term
+  // is recomputed for each of its corners rather than kept in a per-face array: that costs some arithmetic but no
+  // fresh memory, which on a big mesh costs more (page faults).
   const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
-  scratch.face_terms.resize(r.faces);
-  scratch.closed.resize(r.faces);
-  glm::dvec3* areas = scratch.face_terms.data();
-  uint8_t* closed = scratch.closed.data();
-  parallel_for(threads, r.faces, [&](size_t begin, size_t end) {
-    for (size_t f = begin; f < end; ++f) {
-      if (!r.face_alive[f]) {
-        areas[f] = glm::dvec3(0.0);
-        closed[f] = 0;
-      } else if (triangle_term(r, uint32_t(f), areas[f])) {
-        closed[f] = 1;
-      } else {
-        closed[f] = face_term(mesh, FaceId::face(uint32_t(f)), areas[f]) ? 1 : 0;
-      }
-    }
-  });
   normals.resize(r.vertices);
   parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       normals[v] = glm::dvec3(0.0);
       if (!r.vertex_alive[v]) continue;
-      // for_each_outgoing and sum_around_vertex, fused.
       const HalfedgeId start = r.vertex_halfedge[v];
       HalfedgeId h = start;
-      glm::dvec3 sum(0.0);
+      glm::dvec3 sum(0.0), term;
       bool ok = true, fan_closed = false;
       for (uint32_t steps = 0; steps <= r.halfedges; ++steps) {
         if (!r.alive(h)) break;
@@ -183,8 +168,8 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
         if (!ok || !r.alive(f)) {
           ok = false;
         } else if (!f.is_boundary()) {
-          if (!closed[f.slot()]) ok = false;
-          sum += areas[f.slot()];
+          if (!triangle_term(r, f.slot(), term) && !face_term(mesh, f, term)) ok = false;
+          sum += term;
         }
         if (!r.alive(rec.twin)) break;
         h = r.h[rec.twin.index].next;
@@ -200,8 +185,7 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
 
 std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh, int threads) {
   std::vector<glm::dvec3> normals;
-  NormalScratch scratch;
-  vertex_normals(mesh, normals, scratch, threads);
+  vertex_normals(mesh, normals, threads);
   return normals;
 }
 

@@ -31,14 +31,9 @@ glm::dvec3 vertex_normal(const HalfedgeMesh& mesh, VertexId v);
 std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh);
 std::vector<glm::dvec3> vertex_normals(const HalfedgeMesh& mesh, int threads = 1);
 
-// The same, into `normals` (resized to the vertex capacity), with the per-face terms kept in `scratch`: a caller
-// that recomputes normals often (the renderer, benchmarks) keeps both and allocates nothing after the first call.
-// `threads` > 1 splits both passes; the result does not depend on it.
-struct NormalScratch {
-  std::vector<glm::dvec3> face_terms;
-  std::vector<uint8_t> closed;
-};
-void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, NormalScratch& scratch,
-                    int threads = 1);
+// The same, into `normals` (resized to the vertex capacity): a caller that recomputes normals often (the renderer,
+// benchmarks) keeps the vector and allocates nothing after the first call. `threads` > 1 splits the vertices over
+// that many threads; the result does not depend on it.
+void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads = 1);
 
 }  // namespace meshedit

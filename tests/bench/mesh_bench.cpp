@@ -40,11 +40,10 @@ int main(int argc, char** argv) {
   std::printf("%-34s %9.1f bytes/face\n", "  memory at rest", double(mesh.memory_bytes()) / mesh.num_faces());
 
   std::vector<glm::dvec3> normals;
-  NormalScratch scratch;
   const int threads = static_cast<int>(std::clamp(arg(argc, argv, "--threads", 2), 1L, 64L));
   for (int t : {1, threads}) {
     if (t == threads && t == 1 && !normals.empty()) break;
-    const double normal_ms = min_ms(reps, [] {}, [&] { vertex_normals(mesh, normals, scratch, t); });
+    const double normal_ms = min_ms(reps, [] {}, [&] { vertex_normals(mesh, normals, t); });
     char label[64];
     std::snprintf(label, sizeof label, "area-weighted vertex normals (%d thr)", t);
     std::printf("%-34s %9.2f ms  %7.2f M faces/s\n", label, normal_ms, mesh.num_faces() / normal_ms / 1e3);

@@ -1,6 +1,6 @@
 // peer_bench's MeshEdit contender: the public core API only (build_halfedge_mesh, loop_subdivide with
-// LoopWeights::Loop once per level, vertex_normals), so it measures whatever the core is at the time.
-// A thread count is passed only when the core's functions take one (detected at compile time below).
+// LoopWeights::Loop for all levels in one call, vertex_normals into the contender's vector, as the peers fill
+// theirs), so it measures whatever the core is at the time.
 #include <stdexcept>
 
 #include "bench/peer_contender.h"
@@ -12,52 +12,24 @@
 namespace meshedit::bench {
 namespace {
 
-// True when the core offers loop_subdivide(mesh, weights, levels, threads) / vertex_normals(mesh, threads).
-// Templates so that the call is only looked at, never compiled, while the core does not have it.
-template <class Mesh>
-constexpr bool kLoopTakesThreads = requires(Mesh& m) { loop_subdivide(m, LoopWeights::Loop, 1, 2); };
-template <class Mesh>
-constexpr bool kNormalsTakeThreads = requires(const Mesh& m) { vertex_normals(m, 2); };
-
-template <class Mesh>
-Check subdivide_once(Mesh& mesh, int threads) {
-  if constexpr (kLoopTakesThreads<Mesh>) {
-    return loop_subdivide(mesh, LoopWeights::Loop, 1, threads);
-  } else {
-    (void)threads;
-    return loop_subdivide(mesh, LoopWeights::Loop);
-  }
-}
-
-template <class Mesh>
-std::vector<glm::dvec3> normals_of(const Mesh& mesh, int threads) {
-  if constexpr (kNormalsTakeThreads<Mesh>) {
-    return vertex_normals(mesh, threads);
-  } else {
-    (void)threads;
-    return vertex_normals(mesh);
-  }
-}
-
 class Ours final : public Contender {
  public:
   std::string name() const override { return "ours"; }
   std::string library() const override { return "MeshEdit core (HalfedgeMesh, double positions)"; }
   std::string boundary_rule() const override { return "3/4 p + 1/8 boundary neighbours, edge midpoint"; }
   bool boundary_rule_like_ours() const override { return true; }
-  bool takes_threads_for_subdivision() const override { return kLoopTakesThreads<HalfedgeMesh>; }
-  bool takes_threads_for_normals() const override { return kNormalsTakeThreads<HalfedgeMesh>; }
+  bool takes_threads_for_subdivision() const override { return true; }
+  bool takes_threads_for_normals() const override { return true; }
 
   void build(const PolygonMesh& triangles) override { mesh_ = build_halfedge_mesh(triangles); }
 
+  // All levels in one call: the input is checked once and the arrays are sized once for the last level.
   void subdivide(int levels, int threads) override {
-    for (int i = 0; i < levels; ++i) {
-      const Check done = subdivide_once(mesh_, threads);
-      if (!done) throw std::runtime_error("loop_subdivide refused: " + done.reason);
-    }
+    const Check done = loop_subdivide(mesh_, LoopWeights::Loop, levels, threads);
+    if (!done) throw std::runtime_error("loop_subdivide refused: " + done.reason);
   }
 
-  void compute_normals(int threads) override { normals_ = normals_of(mesh_, threads); }
+  void compute_normals(int threads) override { vertex_normals(mesh_, normals_, threads); }
   void drop_normals() override { normals_ = {}; }
   void clear() override {
     mesh_ = HalfedgeMesh();

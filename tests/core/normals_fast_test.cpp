@@ -16,9 +16,8 @@ namespace {
 
 ::testing::AssertionResult same_as_per_vertex(const HalfedgeMesh& m, int threads) {
   std::vector<glm::dvec3> all;
-  NormalScratch scratch;
-  for (int round = 0; round < 2; ++round) {  // the second round reuses the buffers
-    vertex_normals(m, all, scratch, threads);
+  for (int round = 0; round < 2; ++round) {  // the second round reuses the vector
+    vertex_normals(m, all, threads);
     if (all.size() != m.vertex_capacity()) return ::testing::AssertionFailure() << "size " << all.size();
     for (uint32_t v = 0; v < m.vertex_capacity(); ++v) {
       const glm::dvec3 one = vertex_normal(m, VertexId(v));
