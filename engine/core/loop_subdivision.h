@@ -47,6 +47,8 @@ struct LoopState {
 };
 
 Check can_loop_subdivide(const HalfedgeMesh& mesh);
+// Every check, always, without quick_check.h's shortcut (for tests of that shortcut).
+Check can_loop_subdivide_without_shortcut(const HalfedgeMesh& mesh);
 // Each phase assumes the previous ones ran on the same mesh; phase 1 refuses what can_loop_subdivide refuses.
 OpResult<LoopState> loop_compute_positions(const HalfedgeMesh& mesh, LoopWeights weights = LoopWeights::Course);
 void loop_split_edges(HalfedgeMesh& mesh, LoopState& state);

@@ -42,10 +42,14 @@ struct MeshStorage {
     const HalfedgeId* face_halfedge;
     const uint8_t* face_alive;
     const uint8_t* boundary_alive;
-    uint32_t halfedges, vertices, faces, boundaries;  // capacities
+    const HalfedgeId* edge_halfedge;
+    const uint8_t* edge_alive;
+    const HalfedgeId* boundary_halfedge;
+    uint32_t halfedges, vertices, faces, boundaries, edges;  // capacities
 
     bool alive(HalfedgeId x) const { return x.index < halfedges && h_alive[x.index]; }
     bool alive(VertexId x) const { return x.index < vertices && vertex_alive[x.index]; }
+    bool alive(EdgeId x) const { return x.index < edges && edge_alive[x.index]; }
     bool alive(FaceId x) const {
       if (!x.valid()) return false;
       return x.is_boundary() ? x.slot() < boundaries && boundary_alive[x.slot()] : x.slot() < faces && face_alive[x.slot()];
@@ -53,9 +57,10 @@ struct MeshStorage {
   };
 
   static ReadView read_view(const HalfedgeMesh& m) {
-    return {m.h_.data(),         m.h_alive_.data(),       m.v_halfedge_.data(),     m.v_position_.data(),
-            m.v_alive_.data(),   m.f_halfedge_.data(),    m.f_alive_.data(),        m.b_alive_.data(),
-            m.halfedge_capacity(), m.vertex_capacity(),   m.face_capacity(),        m.boundary_capacity()};
+    return {m.h_.data(),           m.h_alive_.data(),     m.v_halfedge_.data(),  m.v_position_.data(),
+            m.v_alive_.data(),     m.f_halfedge_.data(),  m.f_alive_.data(),     m.b_alive_.data(),
+            m.e_halfedge_.data(),  m.e_alive_.data(),     m.b_halfedge_.data(),  m.halfedge_capacity(),
+            m.vertex_capacity(),   m.face_capacity(),     m.boundary_capacity(), m.edge_capacity()};
   }
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write

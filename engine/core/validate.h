@@ -67,6 +67,9 @@ struct ValidationReport {
   std::string summary() const;
 };
 
+// Starts with quick_check.h's mesh_is_clean, so a valid mesh costs a few array passes.
 ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations = 100);
+// Every check, always (for tests of the quick path).
+ValidationReport validate_without_shortcut(const HalfedgeMesh& mesh, size_t max_violations = 100);
 
 }  // namespace meshedit

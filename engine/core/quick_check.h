@@ -1,0 +1,18 @@
+// Quick sufficient checks: true only for a mesh the full checks accept, in a few passes over the raw arrays with
+// no report to build. False says nothing: the caller then runs the full check (validate(), can_loop_subdivide's
+// own), which finds and words the problem. validate() and can_loop_subdivide() start with these, so a valid mesh
+// (the common case: every frame's status bar, every subdivision) costs a fraction of a full validation.
+//
+// Invariant (held by tests/core/quick_check_test.cpp on fixtures and randomly broken meshes):
+//   mesh_is_clean(m)  implies  validate(m).ok();
+//   loop_input_is_clean(m)  implies  can_loop_subdivide(m).
+#pragma once
+
+#include "core/halfedge_mesh.h"
+
+namespace meshedit {
+
+bool mesh_is_clean(const HalfedgeMesh& mesh);
+bool loop_input_is_clean(const HalfedgeMesh& mesh);
+
+}  // namespace meshedit

@@ -1,0 +1,109 @@
+// The quick sufficient checks (quick_check.h) never accept what the full checks refuse: on valid fixtures they
+// say yes (or the speed-up would be lost), and on hundreds of meshes broken by random pointer writes, deletions,
+// non-finite positions and local operations, a yes always comes with validate().ok() / can_loop_subdivide().
+#include <cmath>
+#include <limits>
+#include <random>
+
+#include <gtest/gtest.h>
+
+#include "core/loop_subdivision.h"
+#include "core/mesh_build.h"
+#include "core/mesh_ops.h"
+#include "core/primitives.h"
+#include "core/quick_check.h"
+#include "core/validate.h"
+
+namespace meshedit {
+namespace {
+
+TEST(QuickCheck, AcceptsTheValidFixtures) {
+  for (const PolygonMesh& p : {make_tetrahedron(), make_cube(), make_icosahedron(), make_grid(6, 4), make_fan(30),
+                               make_torus(11, 7)}) {
+    const HalfedgeMesh m = build_halfedge_mesh(p);
+    EXPECT_TRUE(mesh_is_clean(m));
+    EXPECT_TRUE(loop_input_is_clean(m));
+  }
+  const HalfedgeMesh quads = build_halfedge_mesh(make_cube_quads());
+  EXPECT_TRUE(mesh_is_clean(quads));
+  EXPECT_FALSE(loop_input_is_clean(quads));  // not triangles
+}
+
+TEST(QuickCheck, AcceptsMeshesAfterLocalOperationsWithDeadSlots) {
+  HalfedgeMesh m = build_halfedge_mesh(make_torus(9, 7));
+  std::mt19937 random(7);
+  for (int step = 0; step < 200; ++step) {
+    const EdgeId e(random() % m.edge_capacity());
+    if (!m.alive(e)) continue;
+    switch (random() % 3) {
+      case 0: (void)flip(m, e); break;
+      case 1: (void)split(m, e); break;
+      default: (void)collapse(m, e); break;
+    }
+  }
+  ASSERT_TRUE(validate_without_shortcut(m).ok());
+  EXPECT_TRUE(mesh_is_clean(m));
+}
+
+// One face id on two cycles (the halfedges of a face that shares no edge with f0 relabelled as f0's, that face
+// deleted): every pointer is live and paired, but not every halfedge of f0 is in f0's cycle.
+TEST(QuickCheck, RefusesAFaceWithTwoCycles) {
+  HalfedgeMesh m = build_halfedge_mesh(make_torus(6, 5));
+  const FaceId f0 = FaceId::face(0);
+  FaceId f1;
+  for (FaceId f : m.faces()) {
+    bool touches = f == f0;
+    m.for_each_face_halfedge(f, [&](HalfedgeId h) { touches = touches || m.face(m.twin(h)) == f0; });
+    if (!touches) {
+      f1 = f;
+      break;
+    }
+  }
+  ASSERT_TRUE(f1.valid());
+  std::vector<HalfedgeId> cycle;
+  m.for_each_face_halfedge(f1, [&](HalfedgeId h) { cycle.push_back(h); });
+  for (HalfedgeId h : cycle) m.set_face(h, f0);
+  m.delete_element(f1);
+  ASSERT_FALSE(validate_without_shortcut(m).ok());
+  EXPECT_FALSE(mesh_is_clean(m));
+  EXPECT_FALSE(validate(m).ok());
+}
+
+TEST(QuickCheck, NeverAcceptsWhatTheFullChecksRefuse) {
+  size_t refused = 0;
+  for (uint32_t seed = 1; seed <= 600; ++seed) {
+    HalfedgeMesh m = build_halfedge_mesh(seed % 3 == 0 ? make_grid(4, 3) : seed % 3 == 1 ? make_torus(6, 5) : make_cube());
+    std::mt19937 random(seed);
+    const int writes = 1 + int(random() % 3);
+    for (int i = 0; i < writes; ++i) {
+      const uint32_t hc = m.halfedge_capacity();
+      const HalfedgeId h(random() % hc);
+      switch (random() % 10) {
+        case 0: m.set_next(h, HalfedgeId(random() % (hc + 2))); break;
+        case 1: m.set_twin(h, HalfedgeId(random() % hc)); break;
+        case 2: m.set_vertex(h, VertexId(random() % (m.vertex_capacity() + 1))); break;
+        case 3: m.set_edge(h, EdgeId(random() % m.edge_capacity())); break;
+        case 4: m.set_face(h, random() % 4 ? FaceId::face(random() % m.face_capacity()) : FaceId::boundary(0)); break;
+        case 5: m.set_halfedge(VertexId(random() % m.vertex_capacity()), HalfedgeId(random() % hc)); break;
+        case 6: m.set_halfedge(EdgeId(random() % m.edge_capacity()), HalfedgeId(random() % hc)); break;
+        case 7: m.set_halfedge(FaceId::face(random() % m.face_capacity()), HalfedgeId(random() % hc)); break;
+        case 8: m.set_position(VertexId(random() % m.vertex_capacity()),
+                               glm::dvec3(std::numeric_limits<double>::quiet_NaN())); break;
+        default: m.delete_element(EdgeId(random() % m.edge_capacity())); break;
+      }
+    }
+    const ValidationReport full = validate_without_shortcut(m);
+    refused += full.ok() ? 0 : 1;
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    if (mesh_is_clean(m)) {
+      EXPECT_TRUE(full.ok()) << full.summary();
+    }
+    if (loop_input_is_clean(m)) {
+      EXPECT_TRUE(can_loop_subdivide_without_shortcut(m).ok);
+    }
+  }
+  EXPECT_GT(refused, 400u);  // the fuzz really breaks meshes
+}
+
+}  // namespace
+}  // namespace meshedit
