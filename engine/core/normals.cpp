@@ -23,38 +23,53 @@ namespace {
 // products of a collinear polygon leaves ~1e-17 relative noise, which must not become a direction.
 constexpr double kZeroAreaRelative = 1e-14;
 
-// Twice f's vector area (Newell's sum, taken relative to the first corner so precision does not depend
-// on where the mesh sits), or zero for a face with (numerically) no area. False, with zero, if the cycle
-// does not close or reaches a dead vertex.
-bool face_term(const HalfedgeMesh& mesh, FaceId f, glm::dvec3& out) {
+// Twice the vector area of the face cycle that starts at `start` (Newell's sum, taken relative to start's tail so
+// precision does not depend on where the mesh sits), or zero for a face with (numerically) no area. False, with
+// zero, if the cycle does not close, has fewer than 3 halfedges, or reaches a dead halfedge or vertex.
+bool face_term_from(const HalfedgeMesh& mesh, HalfedgeId start, glm::dvec3& out) {
   out = glm::dvec3(0.0);
-  if (!mesh.alive(f)) return false;
   bool ok = true;
   bool first = true;
   glm::dvec3 origin(0.0), previous(0.0);
   double size_sq = 0.0;  // squared distance of the farthest corner from the first
-  const bool closed = mesh.for_each_face_halfedge(f, [&](HalfedgeId h) {
+  bool closed = false;
+  HalfedgeId h = start;
+  uint32_t steps = 0;
+  for (; steps <= mesh.halfedge_capacity(); ++steps) {
+    if (!mesh.alive(h)) break;
     const VertexId v = mesh.vertex(h);
     if (!ok || !mesh.alive(v)) {
       ok = false;
-      return;
-    }
-    if (first) {
+    } else if (first) {
       origin = mesh.position(v);
       first = false;
-      return;
+    } else {
+      const glm::dvec3 p = mesh.position(v) - origin;
+      out += glm::cross(previous, p);  // the closing term cross(last, origin - origin) is zero
+      size_sq = std::max(size_sq, glm::dot(p, p));
+      previous = p;
     }
-    const glm::dvec3 p = mesh.position(v) - origin;
-    out += glm::cross(previous, p);  // the closing term cross(last, origin - origin) is zero
-    size_sq = std::max(size_sq, glm::dot(p, p));
-    previous = p;
-  });
+    h = mesh.next(h);
+    if (h == start) {
+      closed = steps >= 2;  // a cycle of one or two halfedges is no face
+      break;
+    }
+  }
   if (!closed || !ok) {
     out = glm::dvec3(0.0);
     return false;
   }
   if (!(glm::length(out) > kZeroAreaRelative * size_sq)) out = glm::dvec3(0.0);
   return true;
+}
+
+// The term of f from its own halfedge (face normals and areas).
+bool face_term(const HalfedgeMesh& mesh, FaceId f, glm::dvec3& out) {
+  if (!mesh.alive(f)) {
+    out = glm::dvec3(0.0);
+    return false;
+  }
+  return face_term_from(mesh, mesh.halfedge(f), out);
 }
 
 // Unit vector along `n`, or zero when `n` is zero (or not finite).
@@ -64,8 +79,8 @@ glm::dvec3 unit_or_zero(const glm::dvec3& n) {
   return n / length;
 }
 
-// The summed vector areas of v's real faces, taking each face's term from `term_of`.
-// False (and zero) if the fan does not close or meets a dead face.
+// The summed vector areas of v's real faces, each face's term taken from the outgoing halfedge h of the fan
+// (term_of(h, term)). False (and zero) if the fan does not close or meets a dead face.
 template <class FaceTerm>
 bool sum_around_vertex(const HalfedgeMesh& mesh, VertexId v, FaceTerm&& term_of, glm::dvec3& sum) {
   sum = glm::dvec3(0.0);
@@ -79,7 +94,7 @@ bool sum_around_vertex(const HalfedgeMesh& mesh, VertexId v, FaceTerm&& term_of,
     }
     if (f.is_boundary()) return;
     glm::dvec3 term;
-    if (!term_of(f, term)) ok = false;
+    if (!term_of(h, term)) ok = false;
     sum += term;
   });
   if (!closed || !ok) {
@@ -105,7 +120,7 @@ glm::dvec3 vertex_normal(const HalfedgeMesh& mesh, VertexId v) {
   // area * unit normal is the vector area itself, so no per-face normalisation is needed; the common
   // factor 1/2 does not change the direction.
   glm::dvec3 sum;
-  const auto term = [&](FaceId f, glm::dvec3& out) { return face_term(mesh, f, out); };
+  const auto term = [&](HalfedgeId h, glm::dvec3& out) { return face_term_from(mesh, h, out); };
   if (!sum_around_vertex(mesh, v, term, sum)) return glm::dvec3(0.0);
   return unit_or_zero(sum);
 }
@@ -118,25 +133,23 @@ std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh) {
 
 namespace {
 
-// face_term for a face whose halfedge, its next and that one's next are live, close a triangle and leave live
-// vertices: the same arithmetic, without the generic walk. False (nothing written) for any other face.
-bool triangle_term(const MeshStorage::ReadView& r, uint32_t f, glm::dvec3& out) {
-  const HalfedgeId h0 = r.face_halfedge[f];
-  if (!r.alive(h0)) return false;
-  const HalfedgeId h1 = r.h[h0.index].next;
-  if (!r.alive(h1)) return false;
-  const HalfedgeId h2 = r.h[h1.index].next;
-  if (!r.alive(h2) || r.h[h2.index].next != h0) return false;
-  const VertexId v0 = r.h[h0.index].vertex, v1 = r.h[h1.index].vertex, v2 = r.h[h2.index].vertex;
-  if (!r.alive(v0) || !r.alive(v1) || !r.alive(v2)) return false;
-  // Term by term as face_term adds them, so the bits agree.
-  const glm::dvec3 origin = r.position[v0.index];
+// face_term_from(h) when h, its next and that one's next are live, close a 3-cycle and leave live vertices: the
+// same arithmetic without the generic walk. False (nothing written) for any other start.
+bool triangle_term_from(const MeshStorage::ReadView& r, HalfedgeId h0, glm::dvec3& out) {
+  const HalfedgeRecord& a = r.h[h0.index];
+  if (a.next == h0 || !r.alive(a.next)) return false;
+  const HalfedgeRecord& b = r.h[a.next.index];
+  if (b.next == h0 || !r.alive(b.next)) return false;
+  const HalfedgeRecord& c = r.h[b.next.index];
+  if (c.next != h0 || !r.alive(a.vertex) || !r.alive(b.vertex) || !r.alive(c.vertex)) return false;
+  // Term by term as face_term_from adds them, so the bits agree.
+  const glm::dvec3 origin = r.position[a.vertex.index];
   glm::dvec3 sum(0.0), previous(0.0);
-  const glm::dvec3 p1 = r.position[v1.index] - origin;
+  const glm::dvec3 p1 = r.position[b.vertex.index] - origin;
   sum += glm::cross(previous, p1);
   double size_sq = std::max(0.0, glm::dot(p1, p1));
   previous = p1;
-  const glm::dvec3 p2 = r.position[v2.index] - origin;
+  const glm::dvec3 p2 = r.position[c.vertex.index] - origin;
   sum += glm::cross(previous, p2);
   size_sq = std::max(size_sq, glm::dot(p2, p2));
   if (!(glm::length(sum) > kZeroAreaRelative * size_sq)) sum = glm::dvec3(0.0);
@@ -148,9 +161,9 @@ bool triangle_term(const MeshStorage::ReadView& r, uint32_t f, glm::dvec3& out) 
 
 void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
   // vertex_normal for every vertex, with its for_each_outgoing / sum_around_vertex walk fused over the raw records
-  // and each triangle's term from triangle_term: the same terms in the same order, so the same bits. A face's term
-  // is recomputed for each of its corners rather than kept in a per-face array: that costs some arithmetic but no
-  // fresh memory, which on a big mesh costs more (page faults).
+  // and each triangle's term from triangle_term_from: the same terms in the same order, so the same bits. Each
+  // face's term is taken from the vertex's own halfedge, so the walk reads the vertex's one-ring and nothing of
+  // the faces' other halfedges, and needs no per-face array (fresh memory costs more than the arithmetic).
   const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
   normals.resize(r.vertices);
   parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
@@ -168,7 +181,7 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
         if (!ok || !r.alive(f)) {
           ok = false;
         } else if (!f.is_boundary()) {
-          if (!triangle_term(r, f.slot(), term) && !face_term(mesh, f, term)) ok = false;
+          if (!triangle_term_from(r, h, term) && !face_term_from(mesh, h, term)) ok = false;
           sum += term;
         }
         if (!r.alive(rec.twin)) break;

@@ -6,7 +6,9 @@
 //   collinear triangle, however rounded). A boundary loop's FaceId is accepted too and gives the loop's
 //   polygon, which runs the other way round from the faces beside the hole.
 // - A vertex normal is the sum over the vertex's real faces of (face area x face unit normal) — for a
-//   triangle that is half the cross product of two edges — normalised. Boundary loops are skipped, so
+//   triangle that is half the cross product of two edges — normalised. Each face's vector area is Newell's sum
+//   taken from the vertex itself (for a triangle (v, a, b): cross(a - v, b - v)), with the zero-area rule
+//   measured from v. Boundary loops are skipped, so
 //   boundary vertices get the normal of the faces they do have. A vertex with no area around it gets
 //   the zero vector.
 // - Walks are bounded and every id is checked before it is followed: a broken mesh yields zero vectors

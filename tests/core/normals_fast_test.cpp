@@ -49,13 +49,13 @@ TEST(NormalsFast, TwoThreadsOnABigSubdividedTorus) {
 }
 
 TEST(NormalsFast, BrokenMeshesGiveTheSameAnswersAsThePerVertexWalk) {
-  for (uint32_t seed = 1; seed <= 40; ++seed) {
+  for (uint32_t seed = 1; seed <= 300; ++seed) {
     HalfedgeMesh m = build_halfedge_mesh(seed % 2 ? make_torus(6, 5) : make_grid(5, 4));
     std::mt19937 random(seed);
     for (int i = 0; i < 3; ++i) {
       const HalfedgeId h(random() % m.halfedge_capacity());
       switch (random() % 6) {
-        case 0: m.set_next(h, HalfedgeId(random() % (m.halfedge_capacity() + 3))); break;
+        case 0: m.set_next(h, random() % 4 ? HalfedgeId(random() % (m.halfedge_capacity() + 3)) : h); break;
         case 1: m.set_twin(h, HalfedgeId(random() % m.halfedge_capacity())); break;
         case 2: m.set_vertex(h, VertexId(random() % (m.vertex_capacity() + 2))); break;
         case 3: m.set_face(h, FaceId::face(random() % (m.face_capacity() + 2))); break;
