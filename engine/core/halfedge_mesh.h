@@ -182,6 +182,11 @@ class HalfedgeMesh {
   // Memory held by the arrays, in bytes (capacity, not size).
   size_t memory_bytes() const;
 
+  // True while the mesh is unchanged since a builder or an operation that checks its result declared it a valid
+  // mesh whose faces are all triangles (build_halfedge_mesh, loop_subdivide); any mutation ends it. Whole-mesh
+  // passes (vertex_normals) may then skip per-step checks. Never true for a mesh nobody vouched for.
+  bool proven_valid_triangles() const { return proven_version_ == version_; }
+
   // Exact equality of every array (ids, pointers, liveness, positions bit for bit); version is ignored.
   bool same_as(const HalfedgeMesh& other) const;
 
@@ -210,6 +215,7 @@ class HalfedgeMesh {
 
   size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
   uint64_t version_ = 0;
+  uint64_t proven_version_ = ~uint64_t(0);  // version_ at which MeshStorage::vouch was called
 };
 
 template <class Fn>

@@ -361,6 +361,7 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
   }
   MeshStorage::reserve_total(mesh, vertices, halfedges, edges, faces);
   for (int i = 0; i < levels; ++i) subdivide_level(mesh, weights, threads, scratch);
+  MeshStorage::vouch_valid_triangles(mesh);  // accepted input, so the result is valid, and all triangles
   return Check::yes();
 }
 

@@ -241,6 +241,7 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   }
   MeshStorage::count_live(mesh, unused);
   unused_vertices = unused;
+  if (in.indices.size() == 3 * in.num_faces() && unused == 0) MeshStorage::vouch_valid_triangles(mesh);
   return true;
 }
 

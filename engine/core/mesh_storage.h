@@ -93,6 +93,10 @@ struct MeshStorage {
 
   static void touch(HalfedgeMesh& m) { m.touch(); }
 
+  // Declares the mesh, as it is now, valid with triangle faces only (HalfedgeMesh::proven_valid_triangles). Only
+  // for code that has established it: the builder's fast path, Loop subdivision of an accepted mesh.
+  static void vouch_valid_triangles(HalfedgeMesh& m) { m.proven_version_ = m.version_; }
+
   // The arrays themselves, for a builder that sizes and fills them from nothing (mesh_build_fast.cpp).
   struct Arrays {
     MeshArray<HalfedgeRecord>& h;

@@ -157,6 +157,51 @@ bool triangle_term_from(const MeshStorage::ReadView& r, HalfedgeId h0, glm::dvec
   return true;
 }
 
+// The term of triangle (v, a, b) taken from v, as face_term_from computes it.
+glm::dvec3 corner_term(const glm::dvec3& v, const glm::dvec3& a, const glm::dvec3& b) {
+  glm::dvec3 sum(0.0), previous(0.0);
+  const glm::dvec3 p1 = a - v;
+  sum += glm::cross(previous, p1);
+  double size_sq = std::max(0.0, glm::dot(p1, p1));
+  previous = p1;
+  const glm::dvec3 p2 = b - v;
+  sum += glm::cross(previous, p2);
+  size_sq = std::max(size_sq, glm::dot(p2, p2));
+  if (!(glm::length(sum) > kZeroAreaRelative * size_sq)) sum = glm::dvec3(0.0);
+  return sum;
+}
+
+// vertex_normals on a mesh proven valid with triangle faces only: around v, the face of the k-th outgoing
+// halfedge h_k (v -> w_k) is (v, w_k, w_{k-1}), since h_k follows twin(h_{k-1}) in its face; so the one-ring
+// positions give every term, with no check and no read of the faces' other halfedges. Same terms, same order,
+// same bits as vertex_normal.
+void ring_normals(const MeshStorage::ReadView& r, std::vector<glm::dvec3>& normals, int threads) {
+  parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      if (!r.vertex_alive[v]) {
+        normals[v] = glm::dvec3(0.0);
+        continue;
+      }
+      const glm::dvec3& p = r.position[v];
+      const HalfedgeId start = r.vertex_halfedge[v];
+      // w_{-1}: the tail of the halfedge before h_0 in h_0's face (for a boundary h_0 it is never used).
+      const HalfedgeRecord& first = r.h[start.index];
+      glm::dvec3 previous = r.position[r.h[r.h[first.next.index].next.index].vertex.index];
+      glm::dvec3 sum(0.0);
+      HalfedgeId h = start;
+      do {
+        const HalfedgeRecord& rec = r.h[h.index];
+        const HalfedgeRecord& twin = r.h[rec.twin.index];
+        const glm::dvec3& w = r.position[twin.vertex.index];
+        if (!rec.face.is_boundary()) sum += corner_term(p, w, previous);
+        previous = w;
+        h = twin.next;
+      } while (h != start);
+      normals[v] = unit_or_zero(sum);
+    }
+  });
+}
+
 }  // namespace
 
 void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
@@ -166,6 +211,10 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
   // the faces' other halfedges, and needs no per-face array (fresh memory costs more than the arithmetic).
   const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
   normals.resize(r.vertices);
+  if (mesh.proven_valid_triangles()) {
+    ring_normals(r, normals, threads);
+    return;
+  }
   parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       normals[v] = glm::dvec3(0.0);

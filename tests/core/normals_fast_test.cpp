@@ -70,3 +70,27 @@ TEST(NormalsFast, BrokenMeshesGiveTheSameAnswersAsThePerVertexWalk) {
 
 }  // namespace
 }  // namespace meshedit
+
+namespace meshedit {
+namespace {
+
+// The one-ring path runs only on meshes vouched for (built from clean triangles, or Loop-subdivided), and any
+// change takes the vouching back.
+TEST(NormalsFast, OnlyVouchedMeshesTakeTheOneRingPath) {
+  HalfedgeMesh m = build_halfedge_mesh(make_torus(8, 6));
+  EXPECT_TRUE(m.proven_valid_triangles());
+  EXPECT_TRUE(same_as_per_vertex(m, 1));
+  EXPECT_FALSE(build_halfedge_mesh(make_cube_quads()).proven_valid_triangles());
+  m.set_position(VertexId(3), m.position(VertexId(3)) + glm::dvec3(0.25, 0.0, 0.0));
+  EXPECT_FALSE(m.proven_valid_triangles());
+  EXPECT_TRUE(same_as_per_vertex(m, 1));
+  ASSERT_TRUE(loop_subdivide(m, LoopWeights::Course, 2, 1));
+  EXPECT_TRUE(m.proven_valid_triangles());
+  EXPECT_TRUE(same_as_per_vertex(m, 1));
+  HalfedgeMesh grid = build_halfedge_mesh(make_grid(7, 5));  // boundary vertices: fans with a boundary halfedge
+  ASSERT_TRUE(grid.proven_valid_triangles());
+  EXPECT_TRUE(same_as_per_vertex(grid, 2));
+}
+
+}  // namespace
+}  // namespace meshedit
