@@ -91,6 +91,8 @@ void EditorApp::draw_lesson() {
   // Bottom left, under the inspector: the mesh stays in the middle of the view.
   ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + main->Size.y * 0.56f), ImGuiCond_FirstUseEver);
   ImGui::SetNextWindowSize(ImVec2(std::min(440.0f, main->Size.x * 0.36f), main->Size.y * 0.39f), ImGuiCond_FirstUseEver);
+  // A curve or a set of patches fills the window: the list starts folded there, until a lesson is loaded.
+  if (mode_ != ViewMode::Mesh && !lesson_->loaded()) ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
   draw_lesson_panel(*lesson_, lesson_panel_);
   if (!lesson_panel_.requested) return;
   const std::filesystem::path requested = *lesson_panel_.requested;
