@@ -66,6 +66,20 @@ TEST(LoopFast, SameAsPhasesAfterRandomEdits) {
   }
 }
 
+// Dead slots that never held anything (a face, edge and vertex made and deleted at once, pointers invalid) are
+// skipped by every pass, wherever they sit among the live ids.
+TEST(LoopFast, DeadSlotsWithInvalidPointers) {
+  HalfedgeMesh m = build_halfedge_mesh(make_torus(20, 12));
+  for (int i = 0; i < 40; ++i) {
+    m.delete_element(m.new_face());
+    m.delete_element(m.new_edge());
+    m.delete_element(m.new_vertex());
+    m.delete_element(m.new_halfedge());
+  }
+  ASSERT_TRUE(validate(m).ok());
+  EXPECT_TRUE(testing::loop_paths_agree(m, LoopWeights::Loop, 2, 1));
+}
+
 TEST(LoopFast, RefusesLikeThePhasesAndChangesNothing) {
   HalfedgeMesh quads = build_halfedge_mesh(make_cube_quads());
   const HalfedgeMesh before = quads;
