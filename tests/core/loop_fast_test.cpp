@@ -14,6 +14,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "support/random_edits.h"
 #include "support/loop_equality.h"
 
 namespace meshedit {
@@ -50,16 +51,7 @@ TEST(LoopFast, SameAsPhasesWithTwoThreads) {
 TEST(LoopFast, SameAsPhasesAfterRandomEdits) {
   for (uint32_t seed = 1; seed <= 12; ++seed) {
     HalfedgeMesh m = build_halfedge_mesh(seed % 2 ? make_torus(9, 7) : make_grid(8, 6));
-    std::mt19937 random(seed);
-    for (int step = 0; step < 60; ++step) {
-      const EdgeId e(random() % m.edge_capacity());
-      if (!m.alive(e)) continue;
-      switch (random() % 3) {
-        case 0: (void)flip(m, e); break;
-        case 1: (void)split(m, e); break;
-        default: (void)collapse(m, e); break;
-      }
-    }
+    testing::random_local_edits(m, seed, 60);
     ASSERT_TRUE(validate(m).ok());
     SCOPED_TRACE("seed " + std::to_string(seed));
     EXPECT_TRUE(testing::loop_paths_agree(m, seed % 3 ? LoopWeights::Course : LoopWeights::Loop, 2, 1));

@@ -13,6 +13,7 @@
 #include "core/primitives.h"
 #include "core/quick_check.h"
 #include "core/validate.h"
+#include "support/random_edits.h"
 
 namespace meshedit {
 namespace {
@@ -31,16 +32,7 @@ TEST(QuickCheck, AcceptsTheValidFixtures) {
 
 TEST(QuickCheck, AcceptsMeshesAfterLocalOperationsWithDeadSlots) {
   HalfedgeMesh m = build_halfedge_mesh(make_torus(9, 7));
-  std::mt19937 random(7);
-  for (int step = 0; step < 200; ++step) {
-    const EdgeId e(random() % m.edge_capacity());
-    if (!m.alive(e)) continue;
-    switch (random() % 3) {
-      case 0: (void)flip(m, e); break;
-      case 1: (void)split(m, e); break;
-      default: (void)collapse(m, e); break;
-    }
-  }
+  testing::random_local_edits(m, 7, 200);
   ASSERT_TRUE(validate_without_shortcut(m).ok());
   EXPECT_TRUE(mesh_is_clean(m));
 }
