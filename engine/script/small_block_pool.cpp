@@ -1,0 +1,64 @@
+// SmallBlockPool (see small_block_pool.h for the contract).
+#include "script/small_block_pool.h"
+
+#include <algorithm>
+#include <cstdlib>
+#include <cstring>
+#include <new>
+
+namespace meshedit {
+
+SmallBlockPool::~SmallBlockPool() {
+  for (void* slab : slabs_) std::free(slab);
+}
+
+void* SmallBlockPool::take(size_t bytes) {
+  const size_t c = size_class(bytes);
+  if (FreeBlock* block = free_[c]) {
+    free_[c] = block->next;
+    return block;
+  }
+  const size_t rounded = (c + 1) * kGranule;
+  if (size_t(end_ - next_) < rounded) {
+    if (slabs_.size() == slabs_.capacity()) {
+      try {
+        slabs_.reserve(std::max<size_t>(16, 2 * slabs_.size()));
+      } catch (const std::bad_alloc&) {
+        return nullptr;
+      }
+    }
+    void* slab = std::malloc(kSlabBytes);  // malloc's alignment is at least kGranule
+    if (!slab) return nullptr;
+    slabs_.push_back(slab);
+    next_ = static_cast<char*>(slab);
+    end_ = next_ + kSlabBytes;
+  }
+  void* block = next_;
+  next_ += rounded;
+  return block;
+}
+
+void SmallBlockPool::release(void* ptr, size_t bytes) {
+  if (!ptr) return;
+  if (!small(bytes)) {
+    std::free(ptr);
+    return;
+  }
+  auto* block = static_cast<FreeBlock*>(ptr);
+  const size_t c = size_class(bytes);
+  block->next = free_[c];
+  free_[c] = block;
+}
+
+void* SmallBlockPool::resize(void* ptr, size_t old_bytes, size_t bytes) {
+  if (!ptr) return small(bytes) ? take(bytes) : std::malloc(bytes);
+  if (small(old_bytes) && small(bytes) && size_class(old_bytes) == size_class(bytes)) return ptr;
+  if (!small(old_bytes) && !small(bytes)) return std::realloc(ptr, bytes);
+  void* moved = small(bytes) ? take(bytes) : std::malloc(bytes);
+  if (!moved) return nullptr;
+  std::memcpy(moved, ptr, std::min(old_bytes, bytes));
+  release(ptr, old_bytes);
+  return moved;
+}
+
+}  // namespace meshedit
