@@ -9,9 +9,9 @@
 // - Every write goes through make_change, so it is journaled and recorded (with file:line) like any change.
 // - Only id and kind can be read from a dead element; anything else raises "attempt to use dead halfedge h37"
 //   before the key is looked at further.
-// - Dispatch never depends on how fast it is: a key is first compared by the address of its interned text
-//   (Lua keeps one copy of each short string) and, failing that, by its characters, so a key is understood
-//   the same way on either path.
+// - A key means the same whichever way it is found: first by the address of its interned text (Lua keeps one
+//   copy of each short string, so a key built at run time has the literal's address), failing that by its
+//   characters.
 #pragma once
 
 #include <cstdint>

@@ -17,7 +17,7 @@
 // tables (table_bindings.cpp)
 //   mesh:tables() -> {vertices={{id="v0", halfedge="h0", position=vec3}...}, halfedges={{id=, next=, twin=,
 //                    vertex=, edge=, face=}...}, edges={{id=, halfedge=}...}, faces=..., boundaries=...}
-// handles (handle_bindings.cpp)
+// handles (handle_bindings.cpp; fields in handle_fields.cpp, methods in handle_methods.cpp)
 //   tostring(x) -> "h37"; ==; x.id x.kind x.mesh; h.next h.twin h.vertex h.edge h.face; v.halfedge v.position;
 //   e.halfedge; f.halfedge; v:degree() f:degree(); x:is_boundary(); h:prev(); f:halfedges() f:vertices()
 //   v:halfedges() v:neighbors() (iterators); writable: every pointer field and v.position;

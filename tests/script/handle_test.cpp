@@ -85,8 +85,9 @@ TEST(Handles, DeadElementsRefuseEverythingButIdAndKind) {
 TEST(Handles, KeysAreUnderstoodHoweverTheStringWasMade) {
   MeshScript s(make_grid(1, 1));
   // Keys built at run time are the same interned strings as the literals.
-  EXPECT_EQ(s.run("local h = m:halfedge(0) local k = 'ne' .. 'xt' return tostring(h[k]), tostring(h[('TWIN'):lower()]), "
-                  "h[string.rep('i', 1) .. 'd'], h.vertex:degree(), h[table.concat({'is', 'boundary'}, '_')](h)"),
+  EXPECT_EQ(s.run("local h = m:halfedge(0) local k = 'ne' .. 'xt' "
+                  "return tostring(h[k]), tostring(h[('TWIN'):lower()]), h[string.rep('i', 1) .. 'd'], "
+                  "h.vertex:degree(), h[table.concat({'is', 'boundary'}, '_')](h)"),
             (Strings{"h1", format_id(s.mesh->twin(HalfedgeId(0))), "0",
                      std::to_string(s.mesh->degree(VertexId(0))), "false"}));
   EXPECT_EQ(s.run("local h = m:halfedge(0) local k = 'ne' .. 'xt' h[k] = h.next return tostring(h.next)"),
