@@ -158,7 +158,7 @@ std::optional<std::string> difference(lua_State* L, int a, int b, const std::str
       const Handle* ha = test_handle(L, a);
       const Handle* hb = test_handle(L, b);
       if (ha || hb) {
-        if (!ha || !hb || ha->mesh != hb->mesh || ha->ref() != hb->ref()) return mismatch();
+        if (!ha || !hb || ha->mesh() != hb->mesh() || ha->ref() != hb->ref()) return mismatch();
         return std::nullopt;
       }
       auto ma = to_mesh(L, a);

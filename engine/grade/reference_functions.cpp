@@ -32,7 +32,7 @@ int flip_edge(lua_State* L) {
   const Handle& e = edge_of(L, box);
   const OpResult<EdgeId> result = flip(*box.mesh, EdgeId(e.index));
   if (!result.ok()) return push_refusal(L, result.check.reason);
-  push_handle(L, box.mesh, result.value);
+  push_handle_at(L, 1, result.value);
   return 1;
 }
 
@@ -41,7 +41,7 @@ int split_edge(lua_State* L) {
   const Handle& e = edge_of(L, box);
   const OpResult<VertexId> result = split(*box.mesh, EdgeId(e.index));
   if (!result.ok()) return push_refusal(L, result.check.reason);
-  push_handle(L, box.mesh, result.value);
+  push_handle_at(L, 1, result.value);
   return 1;
 }
 
@@ -56,7 +56,7 @@ int upsample(lua_State* L) {
 int vertex_normal_function(lua_State* L) {
   Handle& v = check_handle(L, 1, ElementKind::Vertex);
   check_alive(L, v);
-  push_vec3(L, vertex_normal(*v.mesh, VertexId(v.index)));
+  push_vec3(L, vertex_normal(v.m(), VertexId(v.index)));
   return 1;
 }
 

@@ -86,7 +86,7 @@ void ValueBridge::copy_value(int index, int depth, const std::string& path) {
         return;
       }
       if (const Handle* h = test_handle(from_, index)) {
-        push_handle(to_, h->mesh, h->ref());
+        push_handle(to_, h->mesh(), h->ref());
         return;
       }
       if (const auto* points = to_curve(from_, index)) {

@@ -37,6 +37,22 @@ void notify_recorders(BindingState& state, lua_State* L, const HalfedgeMesh* mes
   }
 }
 
+void begin_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, bool operation) {
+  for (const EditRecorder* recorder : state.recorders) {
+    if (recorder->watches(mesh.get()) && recorder->full()) {
+      luaL_error(L, "more than %d changes recorded; is there a loop that never ends?", int(recorder->max_edits()));
+    }
+  }
+  if (!operation && state.journals.empty()) return;
+  if (EditJournal* journal = find_journal(state, mesh, operation)) journal->before_change(*mesh, operation);
+}
+
+void end_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit) {
+  if (!state.recorders.empty()) notify_recorders(state, L, mesh.get(), edit);
+  if (state.journals.empty()) return;
+  if (EditJournal* journal = find_journal(state, mesh, false)) journal->after_change(*mesh, std::move(edit));
+}
+
 }  // namespace
 
 BindingState::~BindingState() {
@@ -139,14 +155,7 @@ std::string room_refusal(lua_State* L, const HalfedgeMesh& mesh, size_t count) {
 }
 
 void begin_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, bool operation) {
-  BindingState& state = binding_state(L);
-  for (const EditRecorder* recorder : state.recorders) {
-    if (recorder->watches(mesh.get()) && recorder->full()) {
-      luaL_error(L, "more than %d changes recorded; is there a loop that never ends?", int(recorder->max_edits()));
-    }
-  }
-  if (!operation && state.journals.empty()) return;
-  if (EditJournal* journal = find_journal(state, mesh, operation)) journal->before_change(*mesh, operation);
+  begin_change(L, binding_state(L), mesh, operation);
 }
 
 bool recorded(lua_State* L, const HalfedgeMesh* mesh) {
@@ -161,16 +170,17 @@ void record_only(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, Record
 }
 
 void end_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit) {
-  BindingState& state = binding_state(L);
-  if (!state.recorders.empty()) notify_recorders(state, L, mesh.get(), edit);
-  if (state.journals.empty()) return;
-  if (EditJournal* journal = find_journal(state, mesh, false)) journal->after_change(*mesh, std::move(edit));
+  end_change(L, binding_state(L), mesh, std::move(edit));
 }
 
 void make_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit) {
-  begin_change(L, mesh, false);
+  make_change(L, binding_state(L), mesh, std::move(edit));
+}
+
+void make_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit) {
+  begin_change(L, state, mesh, false);
   apply_edit(*mesh, edit);
-  end_change(L, mesh, std::move(edit));
+  end_change(L, state, mesh, std::move(edit));
 }
 
 std::string script_where(lua_State* L) {

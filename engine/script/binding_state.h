@@ -89,6 +89,8 @@ bool recorded(lua_State* L, const HalfedgeMesh* mesh);
 void record_only(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit);
 // begin_change, apply_edit, end_change: how Set, Create and Delete edits are made.
 void make_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit);
+// The same with L's BindingState already at hand (field writes keep it in their closure).
+void make_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit);
 
 // "flip.lua:12": the file name (without folders) and line of the innermost Lua function running on L; empty
 // when no Lua function with a line is on the stack.

@@ -2,9 +2,14 @@
 // and element handles, the argument checks with Lua's usual messages, and `guarded`.
 //
 // Invariants:
-// - A MeshBox and every Handle hold a shared_ptr to their HalfedgeMesh, so a handle never dangles; a handle
-//   whose element is dead or past the end is refused by check_alive ("attempt to use dead halfedge h37"),
-//   never read out of range.
+// - A MeshBox holds a shared_ptr to its HalfedgeMesh that never changes after the box is made (restore and
+//   undo replace the mesh's contents, never the pointer).
+// - A Handle is plain data (no destructor, no __gc): the MeshBox it points to is the userdata stored as the
+//   handle's user value 1, so the box (and with it the mesh) lives at least as long as the handle, and
+//   `box` never dangles while the handle can be reached. A handle whose element is dead or past the end is
+//   refused by check_alive ("attempt to use dead halfedge h37"), never read out of range.
+// - Two handles are the same element when their meshes (not their boxes) and refs are equal: one mesh may
+//   have several boxes (push_mesh makes a new one each time).
 // - A handle's metatable carries its kind under a private key, so test_handle is one lookup and a table or
 //   another library's userdata is never mistaken for a handle.
 // - No C++ exception crosses into Lua: every lua_CFunction registered by the module is wrapped in guarded<>.
@@ -23,14 +28,16 @@ namespace meshedit {
 inline constexpr const char* kMeshType = "mesh";
 
 struct MeshBox {
-  std::shared_ptr<HalfedgeMesh> mesh;
+  const std::shared_ptr<HalfedgeMesh> mesh;
 };
 
 struct Handle {
-  std::shared_ptr<HalfedgeMesh> mesh;
-  ElementKind kind;
+  MeshBox* box;  // the box in the handle's user value 1 (which keeps it alive)
   uint32_t index;  // the slot (no boundary bit)
+  ElementKind kind;
 
+  const std::shared_ptr<HalfedgeMesh>& mesh() const { return box->mesh; }
+  HalfedgeMesh& m() const { return *box->mesh; }
   ElementRef ref() const { return ElementRef(kind, index); }
   std::string name() const { return format_id(ref()); }
 };
@@ -51,11 +58,18 @@ int guarded(lua_State* L) {
   return luaL_error(L, "%s", message.c_str());
 }
 
-// ---- handles (handle_bindings.cpp) ----------------------------------------------------------------------
+// ---- handles (handle_bindings.cpp; fields: handle_fields.h; methods: handle_methods.h) ---------------------
 // Registers the five handle metatables (call once per state, before any handle is pushed).
 void open_handle_metatables(lua_State* L);
-// Pushes a handle for `ref`, or nil when ref is invalid (a null pointer).
+// Pushes a handle for `ref` of the mesh whose MeshBox userdata is at stack index `box`, or nil when ref is
+// invalid (a null pointer). `metatable`: the stack index of ref.kind's handle metatable, or 0 to look it up.
+void push_handle_at(lua_State* L, int box, ElementRef ref, int metatable = 0);
+// A handle for `ref` on the mesh of `h`, the handle at stack index `handle` (anchored to h's box).
+void push_sibling_handle(lua_State* L, const Handle& h, int handle, ElementRef ref, int metatable = 0);
+// The same for a mesh with no box at hand: makes a MeshBox for it first (slower; not for loops).
 void push_handle(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, ElementRef ref);
+// Pushes the handle metatable of `kind`.
+void push_handle_metatable(lua_State* L, ElementKind kind);
 // The handle at `index`, or nullptr for anything else.
 Handle* test_handle(lua_State* L, int index);
 

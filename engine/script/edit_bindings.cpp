@@ -32,7 +32,7 @@ int mesh_new(lua_State* L) {
   edit.element = ElementRef(K, box.mesh->capacity(K));
   const ElementRef made = edit.element;
   make_change(L, box.mesh, std::move(edit));
-  push_handle(L, box.mesh, made);
+  push_handle_at(L, 1, made);
   return 1;
 }
 

@@ -199,7 +199,7 @@ void read_result(lua_State* L, Exercise exercise, const std::shared_ptr<Halfedge
     case Exercise::FlipEdge:
     case Exercise::SplitEdge: {
       if (const Handle* h = test_handle(L, top)) {
-        if (h->mesh == mesh) out.element = h->ref();
+        if (h->mesh() == mesh) out.element = h->ref();
         else out.returned += " of another mesh";
       }
       return;

@@ -2,7 +2,6 @@
 // enforces every limit (see lua_runtime.h for the invariants).
 #include "script/lua_runtime.h"
 
-#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -76,7 +75,7 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
   auto* self = static_cast<LuaRuntime*>(ud);
   const size_t old = ptr ? old_size : 0;  // old_size is a type tag when ptr is null
   if (new_size == 0) {
-    std::free(ptr);
+    self->pool_.release(ptr, old);
     self->memory_used_ -= old;
     return nullptr;
   }
@@ -86,7 +85,7 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
     self->note_memory_hit();
     return nullptr;
   }
-  void* result = std::realloc(ptr, new_size);
+  void* result = self->pool_.resize(ptr, old, new_size);
   if (result) self->memory_used_ = self->memory_used_ - old + new_size;
   return result;
 }

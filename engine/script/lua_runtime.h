@@ -20,6 +20,8 @@
 //   so a grader can give a whole test one budget however many times it calls into the script.
 // - print output is capped per window (set_print_limit): past the cap the callback gets one
 //   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++.
+// - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
+//   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
 //   of a run nor closing the state can run script code outside the hook.
 #pragma once
@@ -33,6 +35,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include "script/small_block_pool.h"
 
 struct lua_State;
 struct lua_Debug;
@@ -121,6 +125,7 @@ class LuaRuntime {
   void note_memory_hit();
 
   LuaLimits limits_;
+  SmallBlockPool pool_;  // Lua's small blocks; outlives the lua_close in ~LuaRuntime, which returns them
   lua_State* L_ = nullptr;
   std::function<void(const std::string&)> print_;
   size_t print_limit_ = 0;

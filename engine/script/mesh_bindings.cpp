@@ -17,7 +17,7 @@
 // tables (table_bindings.cpp)
 //   mesh:tables() -> {vertices={{id="v0", halfedge="h0", position=vec3}...}, halfedges={{id=, next=, twin=,
 //                    vertex=, edge=, face=}...}, edges={{id=, halfedge=}...}, faces=..., boundaries=...}
-// handles (handle_bindings.cpp)
+// handles (handle_bindings.cpp; fields in handle_fields.cpp, methods in handle_methods.cpp)
 //   tostring(x) -> "h37"; ==; x.id x.kind x.mesh; h.next h.twin h.vertex h.edge h.face; v.halfedge v.position;
 //   e.halfedge; f.halfedge; v:degree() f:degree(); x:is_boundary(); h:prev(); f:halfedges() f:vertices()
 //   v:halfedges() v:neighbors() (iterators); writable: every pointer field and v.position;
@@ -73,7 +73,7 @@ int mesh_eq(lua_State* L) {
   return 1;
 }
 
-// Iterator closure: upvalues mesh userdata, kind, next slot, end slot.
+// Iterator closure: upvalues mesh userdata, kind, next slot, end slot, the kind's handle metatable.
 int mesh_iterate_step(lua_State* L) {
   const auto& mesh = static_cast<MeshBox*>(lua_touserdata(L, lua_upvalueindex(1)))->mesh;
   const auto kind = static_cast<ElementKind>(lua_tointeger(L, lua_upvalueindex(2)));
@@ -83,7 +83,7 @@ int mesh_iterate_step(lua_State* L) {
   if (i >= end) return 0;
   lua_pushinteger(L, i + 1);
   lua_replace(L, lua_upvalueindex(3));
-  push_handle(L, mesh, ElementRef(kind, i));
+  push_handle_at(L, lua_upvalueindex(1), ElementRef(kind, i), lua_upvalueindex(5));
   return 1;
 }
 
@@ -94,17 +94,19 @@ int mesh_iterate(lua_State* L) {
   lua_pushinteger(L, static_cast<lua_Integer>(K));
   lua_pushinteger(L, 0);
   lua_pushinteger(L, box.mesh->capacity(K));
-  lua_pushcclosure(L, mesh_iterate_step, 4);
+  push_handle_metatable(L, K);
+  lua_pushcclosure(L, mesh_iterate_step, 5);
   return 1;
 }
 
+// The element of `box` (the mesh at 1) of `kind` and id `i`.
 int push_element(lua_State* L, const MeshBox& box, ElementKind kind, lua_Integer i) {
   const uint32_t capacity = box.mesh->capacity(kind);
   if (i < 0 || i >= lua_Integer(capacity)) {
     return luaL_error(L, "no %s with id %I in this mesh (%s ids go from 0 to %d)", kind_name(kind), i,
                       kind_name(kind), int(capacity) - 1);
   }
-  push_handle(L, box.mesh, ElementRef(kind, static_cast<uint32_t>(i)));
+  push_handle_at(L, 1, ElementRef(kind, static_cast<uint32_t>(i)));
   return 1;
 }
 
@@ -152,7 +154,7 @@ int mesh_validate(lua_State* L) {
   for (size_t i = 0; i < report.violations.size(); ++i) {
     const Violation& v = report.violations[i];
     lua_createtable(L, 0, 3);
-    push_handle(L, box.mesh, v.element);
+    push_handle_at(L, 1, v.element);
     lua_setfield(L, -2, "element");
     lua_pushstring(L, invariant_name(v.invariant));
     lua_setfield(L, -2, "invariant");

@@ -2,9 +2,10 @@
 // in mesh_bindings.cpp's header comment; the C++ recorder a host uses is in edit_recorder.h.
 //
 // Invariants:
-// - A mesh userdata and every handle hold a shared_ptr to the same HalfedgeMesh, so a handle keeps its mesh
-//   alive and is never dangling; a handle whose element is dead (or past the end) raises
-//   "attempt to use dead halfedge h37" when used, never reads out of range.
+// - A mesh userdata holds a shared_ptr to its HalfedgeMesh, and every handle keeps the mesh userdata it was made
+//   from alive (binding_support.h), so a handle keeps its mesh alive and is never dangling; a handle whose
+//   element is dead (or past the end) raises "attempt to use dead halfedge h37" when used, never reads out of
+//   range.
 // - Reads of pointer fields return the stored id as a handle even when that id is dead (a broken mesh stays
 //   inspectable); an invalid id reads as nil. Writes accept live handles of the same mesh, or nil.
 // - Nothing a script does to a mesh (any pointer written anywhere) makes a binding crash or hang: every walk

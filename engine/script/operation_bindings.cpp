@@ -43,7 +43,7 @@ int run_edge_operation(lua_State* L, const char* name) {
   const Result result = Operation(*box.mesh, EdgeId(e.index));
   if (!result.ok()) return push_refusal(L, result.check.reason);
   end_change(L, box.mesh, operation_edit(name, e.ref(), ElementRef(result.value)));
-  push_handle(L, box.mesh, result.value);
+  push_handle_at(L, 1, result.value);
   return 1;
 }
 

@@ -1,6 +1,7 @@
 // lua_bench: what scripts pay for the mesh API (not a test: nothing is asserted). Prints the cost of one
 // handle field read and write, of iteration and of v.position beside the interpreter's own costs (an empty
-// loop, a plain-table field read), then a student-style Lua `upsample` against the core's Loop subdivision.
+// loop, a plain-table field read, a call to a C function that does nothing, a userdata field read through a C
+// __index that does nothing), then a student-style Lua `upsample` against the core's Loop subdivision.
 //
 //   lua_bench [--mesh FILE] [--upsample FILE.lua] [--reads N] [--reps R]
 // Defaults: the course teapot (../shared/data/cs184/dae/teapot.dae, 2464 faces) when present, else a torus of
@@ -70,17 +71,34 @@ int main(int argc, char** argv) {
   lua_setglobal(lua.state(), "mesh");
   lua_pushinteger(lua.state(), reads);
   lua_setglobal(lua.state(), "N");
+  // The interpreter's own floor for a binding: a C function that returns its argument, and a userdata whose
+  // __index is a C function that returns the key (no work, no allocation).
+  lua_pushcfunction(lua.state(), [](lua_State* L) { lua_settop(L, 1); return 1; });
+  lua_setglobal(lua.state(), "c_identity");
+  lua_newuserdatauv(lua.state(), 8, 0);
+  lua_createtable(lua.state(), 0, 1);
+  lua_pushcfunction(lua.state(), [](lua_State* L) { lua_settop(L, 2); return 1; });
+  lua_setfield(lua.state(), -2, "__index");
+  lua_setmetatable(lua.state(), -2);
+  lua_setglobal(lua.state(), "u");
 
   // Each loop body does one operation N times; the empty loop is subtracted to leave the operation's cost.
   auto per_op_ns = [&](const char* body) {
     const std::string code = "local h = mesh:halfedge(0) local v = mesh:vertex(0) local t = {next = 1} "
-                             "local n = h.next local x for i = 1, N do " + std::string(body) + " end";
+                             "local f, u = c_identity, u local n = h.next local x for i = 1, N do " +
+                             std::string(body) + " end";
     return min_ms(reps, [] {}, [&] { lua.run_string(code, "bench.lua"); }) * 1e6 / double(reads);
   };
   const double empty = per_op_ns("");
   std::printf("%-36s %8.1f ns\n", "empty Lua loop iteration", empty);
-  std::printf("%-36s %8.1f ns\n", "plain table field read (t.next)", per_op_ns("x = t.next") - empty);
-  std::printf("%-36s %8.1f ns\n", "handle field read (h.next)", per_op_ns("x = h.next") - empty);
+  const double table_read = per_op_ns("x = t.next") - empty;
+  const double c_call = per_op_ns("x = f(h)") - empty;
+  std::printf("%-36s %8.1f ns\n", "plain table field read (t.next)", table_read);
+  std::printf("%-36s %8.1f ns\n", "C function call (f(h))", c_call);
+  std::printf("%-36s %8.1f ns\n", "empty C __index (u.next)", per_op_ns("x = u.next") - empty);
+  const double handle_read = per_op_ns("x = h.next") - empty;
+  std::printf("%-36s %8.1f ns  (%.1fx a table read plus a C call)\n", "handle field read (h.next)", handle_read,
+              handle_read / (table_read + c_call));
   std::printf("%-36s %8.1f ns\n", "handle field write (h.next = n)", per_op_ns("h.next = n") - empty);
   std::printf("%-36s %8.1f ns\n", "position read (v.position)", per_op_ns("x = v.position") - empty);
   std::printf("%-36s %8.1f ns\n", "method call (v:degree())", per_op_ns("x = v:degree()") - empty);
