@@ -108,6 +108,7 @@ class EditorApp {
  private:
   void read_mouse_and_keys(int width, int height);
   void draw_mesh_view(int width, int height);
+  void apply_size_defaults();
   void draw_patch_view();
   void draw_id_labels(int width, int height);
   void draw_menu_bar();
@@ -132,6 +133,7 @@ class EditorApp {
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;
+  bool large_mesh_ = false;  // the shown mesh is past RenderStyle::large_mesh_triangles (apply_size_defaults)
   ViewMode mode_ = ViewMode::Mesh;
 
   MeshDocument doc_;
