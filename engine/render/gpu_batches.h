@@ -46,6 +46,7 @@ class BufferTexture {
   void write(size_t offset, const void* data, size_t bytes);
   void bind(GLuint unit) const;
   size_t bytes() const { return bytes_; }  // allocated
+  GLuint buffer() const { return buffer_.get(); }
 
  private:
   GLenum format_;
@@ -75,6 +76,7 @@ class SegmentBatch {
   void draw_lines() const;
   size_t count() const { return count_; }
   size_t bytes() const;
+  GLuint buffer() const { return items_.buffer(); }
 
  private:
   VertexArray vao_;  // holds no attributes; core profile needs one bound to draw
@@ -95,6 +97,7 @@ class PointBatch {
   void draw() const;
   size_t count() const { return count_; }
   size_t bytes() const { return bytes_; }
+  GLuint buffer() const { return items_.get(); }
 
  private:
   VertexArray vao_;

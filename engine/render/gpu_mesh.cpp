@@ -150,6 +150,37 @@ void GpuMesh::draw_triangles(GLint extra_location, GLuint unit) const {
   glDrawElements(GL_TRIANGLES, GLsizei(extra_count_ * 3), GL_UNSIGNED_INT, nullptr);
 }
 
+namespace {
+template <class T>
+void read_buffer(GLenum target, GLuint buffer, size_t count, std::vector<T>& out) {
+  out.resize(count);
+  if (count == 0) return;
+  glBindBuffer(target, buffer);
+  glGetBufferSubData(target, 0, GLsizeiptr(count * sizeof(T)), out.data());
+}
+}  // namespace
+
+void GpuMesh::read(SlotGeometry& out, std::vector<EdgeSegment>* slot_arrows) const {
+  const size_t vertices = points.count();
+  read_buffer(GL_ARRAY_BUFFER, positions_.get(), vertices, out.positions);
+  read_buffer(GL_ARRAY_BUFFER, normals_.get(), vertices, out.smooth_normals);
+  read_buffer(GL_ARRAY_BUFFER, points.buffer(), vertices, out.points);
+  glBindVertexArray(face_vao_.get());
+  read_buffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get(), face_count_ * 3, out.triangles);
+  glBindVertexArray(extra_vao_.get());
+  read_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), extra_count_ * 3, out.extra_triangles);
+  glBindVertexArray(0);
+  read_buffer(GL_TEXTURE_BUFFER, extra_faces_.buffer(), extra_count_, out.extra_faces);
+  read_buffer(GL_TEXTURE_BUFFER, face_normals.buffer(), face_count_, out.face_normals);
+  read_buffer(GL_TEXTURE_BUFFER, edges.buffer(), edges.count(), out.edges);
+  std::vector<EdgeSegment> boundary;
+  read_buffer(GL_TEXTURE_BUFFER, boundary_edges.buffer(), boundary_edges.count(), boundary);
+  out.boundary_edges.clear();
+  for (const EdgeSegment& s : boundary) out.boundary_edges.push_back(s.edge);
+  if (slot_arrows != nullptr) read_buffer(GL_TEXTURE_BUFFER, arrows.buffer(), arrows.count(), *slot_arrows);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+}
+
 size_t GpuMesh::bytes() const {
   return (vertex_slots_ * 2 * sizeof(glm::vec3)) + face_slots_ * 3 * sizeof(uint32_t) + extra_count_ * 4 * sizeof(uint32_t) +
          face_normals.bytes() + edges.bytes() + boundary_edges.bytes() + arrows.bytes() + points.bytes();

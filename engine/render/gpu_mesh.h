@@ -45,6 +45,9 @@ class GpuMesh {
   PointBatch points;
 
   size_t bytes() const;
+  // Reads every buffer back into slot arrays (tests compare them with build_slot_geometry); `arrows` too when given.
+  // Counts and bounds are not on the GPU and are left alone.
+  void read(SlotGeometry& out, std::vector<EdgeSegment>* arrows) const;
 
  private:
   VertexArray face_vao_, extra_vao_;

@@ -652,6 +652,15 @@ bool MeshRenderer::pick_is_cheap(const OrbitCamera& camera, Viewport viewport) c
                          r.pick_key_for(camera, viewport) == r.pick_key);
 }
 
+void MeshRenderer::read_gpu_buffers(SlotGeometry& out, std::vector<EdgeSegment>& arrows) const {
+  const Impl& r = *impl_;
+  const bool with_arrows = r.arrows_geometry == r.geometry;
+  r.gpu.read(out, with_arrows ? &arrows : nullptr);
+  if (!with_arrows) arrows.clear();
+  out.counts = r.slots.counts;
+  out.bounds = r.slots.bounds;
+}
+
 void MeshRenderer::invalidate() { impl_->uploaded = false; }
 
 const BoundingBox& MeshRenderer::bounds() const { return impl_->slots.bounds; }

@@ -42,10 +42,12 @@
 #include <memory>
 #include <span>
 #include <string>
+#include <vector>
 
 #include "core/halfedge_mesh.h"
 #include "render/camera.h"
 #include "render/shader_library.h"
+#include "render/slot_geometry.h"
 #include "render/view_options.h"
 
 namespace meshedit {
@@ -58,7 +60,7 @@ struct RenderStats {
   uint64_t id_passes = 0;          // id-buffer redraws by pick()
   size_t last_update_bytes = 0;    // bytes the last update() that changed anything sent to the GPU
   size_t last_update_slots = 0;    // slots it rewrote (every slot for a full rebuild)
-  double last_id_pass_ms = 0.0;    // the last id-buffer redraw, including glFinish-free CPU side and the read
+  double last_id_pass_ms = 0.0;    // wall time of the last id-buffer redraw (to glFinish)
   std::string last_rebuild_reason; // why the last full rebuild was not a patch ("no change description", ...)
   size_t triangles = 0, edges = 0, boundary_edges = 0, vertices = 0, arrows = 0;
   size_t skipped_faces = 0, skipped_edges = 0;  // live elements the last update could not draw
@@ -92,6 +94,10 @@ class MeshRenderer {
   ElementRef pick(const OrbitCamera& camera, Viewport viewport, int x, int y);
   // True when pick() at this camera and viewport would only read pixels (the id buffer is current).
   bool pick_is_cheap(const OrbitCamera& camera, Viewport viewport) const;
+
+  // The GPU buffers read back in slot layout (tests: they must equal build_slot_geometry of the mesh), with the
+  // arrows when they are built (else `arrows` is emptied). Slow; not for frames.
+  void read_gpu_buffers(SlotGeometry& out, std::vector<EdgeSegment>& arrows) const;
 
   // Bounding box of the uploaded mesh (for OrbitCamera::fit).
   const BoundingBox& bounds() const;
