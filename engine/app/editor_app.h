@@ -69,7 +69,8 @@ class EditorApp {
   // loaded; on failure the panel shows the error with file:line.
   bool open_lesson(const std::filesystem::path& path);
   LessonRunner& lesson() { return *lesson_; }
-  // True while something on screen moves by itself (a lesson animation): the window must not sleep.
+  // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
+  // the window must not sleep.
   bool animating() const;
 
   // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
@@ -163,6 +164,11 @@ class EditorApp {
 
   int viewport_width_ = 1, viewport_height_ = 1;
   bool dragging_ = false;
+  // A hover waiting for the mouse to rest, because the id buffer is stale and slow to redraw (read_mouse_and_keys).
+  static constexpr double kSlowIdPassMs = 30.0;
+  static constexpr double kHoverRestSeconds = 0.15;
+  bool hover_pending_ = false;
+  double mouse_moved_at_ = 0.0;
   std::optional<std::filesystem::path> screenshot_path_;
   bool quit_requested_ = false;
 };

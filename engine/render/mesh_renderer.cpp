@@ -125,7 +125,9 @@ constexpr float kBackOffsetFactor = 16.0f;
 // one pixel of its own depth slope: the grazing front side further than the back one, so a fringe of
 // back colour would win there. The back pass is pushed much further to lose it; the price is that a
 // back side closer than that margin in front of a front side is hidden, which real scenes rarely have.
-void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program) {
+// A large closed mesh (no boundary, every face drawn) shows no back side from outside: its back pass, a quarter of
+// llvmpipe's frame there, is skipped (`front_only`).
+void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program, bool front_only) {
   const GLint extra = program.uniform("u_extra");
   glUniform1i(program.uniform("u_extra_faces"), 3);
   glEnable(GL_POLYGON_OFFSET_FILL);
@@ -134,6 +136,11 @@ void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program) {
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
   mesh.draw_triangles(extra, 3);
+  if (front_only) {
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    return;
+  }
   glCullFace(GL_FRONT);
   glDepthFunc(GL_LESS);
   glPolygonOffset(kBackOffsetFactor, 1.0f);
@@ -179,6 +186,9 @@ struct MeshRenderer::Impl {
   void ensure_pick_target(Viewport viewport);
   void count_gpu_bytes();
   PickKey pick_key_for(const OrbitCamera& camera, Viewport viewport) const;
+  bool front_only() const {
+    return is_large_mesh(stats.triangles, style) && stats.boundary_edges == 0 && stats.skipped_faces == 0;
+  }
 
   ShaderProgram face, face_pick, segment, segment_pick, point, point_pick;
   gl::GpuMesh gpu;
@@ -408,7 +418,7 @@ void MeshRenderer::Impl::draw_faces(const gl::CameraUniforms& uniforms, const Or
   changed[kFaceSlot].bind(2);
   glUniform1i(face.uniform("u_face_normals"), 1);
   glUniform1i(face.uniform("u_changed"), 2);
-  draw_triangles(gpu, face);
+  draw_triangles(gpu, face, front_only());
 }
 
 void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniforms, const ViewOptions& options,
@@ -486,7 +496,7 @@ void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfe
   face_pick.use();
   gl::set_camera(face_pick, uniforms);
   glUniform1ui(face_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Face));
-  draw_triangles(gpu, face_pick);
+  draw_triangles(gpu, face_pick, front_only());
 
   // Edges and arrows as hairlines: pick() reads a window around the cursor, so one within its radius is
   // found (and wins over the face by priority); hairlines cost llvmpipe half what wide segments do.

@@ -23,7 +23,8 @@
 // - draw() and pick() read the mesh given to the last update() for the few highlighted elements and,
 //   when first asked for them, the halfedge arrows: that mesh must still exist (the app calls update()
 //   every frame before draw(), so it always does).
-// - A large mesh (RenderStyle::large_mesh_triangles) is drawn single-sampled, whatever the framebuffer has.
+// - A large mesh (RenderStyle::large_mesh_triangles) is drawn single-sampled, whatever the framebuffer has, and
+//   when it is closed (no boundary edge, no face skipped) without the pass that shows back sides.
 // - A broken mesh (left so by a script) is drawn as far as it can be walked (mesh_geometry.h): faces
 //   whose cycle does not close are skipped and counted, nothing loops or reads out of range.
 // - Picking is exact: an id pass renders faces, then edges and halfedge arrows (when shown) as hairlines

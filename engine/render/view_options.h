@@ -55,8 +55,9 @@ struct RenderStyle {
   float vertex_size = 7.0f;
   float highlight_vertex_size = 11.0f;
   // Above this many triangles a mesh is "large": drawn without multisampling (which doubles llvmpipe's frame
-  // time and shows little on triangles a few pixels wide), and the app turns the wireframe off by default (at a
-  // million triangles it costs more than the faces and paints the view black). At or below it nothing changes.
+  // time and shows little on triangles a few pixels wide) and, when closed, without its back sides (unseen from
+  // outside); the app turns the wireframe off by default (at a million triangles it costs more than the faces and
+  // paints the view black). At or below it nothing changes.
   size_t large_mesh_triangles = 100000;
 };
 

@@ -56,7 +56,9 @@ void expect_buffers_equal_full_build(const MeshRenderer& renderer, const Halfedg
   EXPECT_TRUE(same_bytes(gpu.edges, full.edges));
   EXPECT_EQ(gpu.boundary_edges, full.boundary_edges);
   EXPECT_TRUE(gpu.counts == full.counts);
-  if (arrows) EXPECT_TRUE(same_bytes(gpu_arrows, build_slot_arrows(mesh)));
+  if (arrows) {
+    EXPECT_TRUE(same_bytes(gpu_arrows, build_slot_arrows(mesh)));
+  }
 }
 
 class RendererUpdate : public GlTest {
