@@ -99,6 +99,7 @@ class EditorApp {
 
   bool quit_requested() const { return quit_requested_; }
   OrbitCamera& camera() { return camera_; }
+  const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
   void fit_view() { fit_camera(); }
   void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }

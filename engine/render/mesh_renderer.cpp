@@ -242,6 +242,7 @@ void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) 
   gpu.arrows.set_count(0);
   uploaded_state(source);
   ++stats.uploads;
+  stats.last_update_patch = false;
   stats.last_update_bytes = gl::uploaded_bytes() - sent;
   stats.last_update_slots = g.positions.size() + g.face_normals.size() + g.edges.size();
   stats.last_rebuild_reason = std::move(reason);
@@ -284,6 +285,7 @@ bool MeshRenderer::Impl::patch(const HalfedgeMesh& source, const MeshChange& cha
   uploaded_state(source);
   if (with_arrows) arrows_geometry = geometry;
   ++stats.patches;
+  stats.last_update_patch = true;
   stats.last_update_bytes = gl::uploaded_bytes() - sent;
   stats.last_update_slots = p->slots();
   return true;
