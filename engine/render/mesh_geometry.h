@@ -1,4 +1,6 @@
-// What the renderer draws of a HalfedgeMesh, built on the CPU: pure functions, no GL, unit-tested.
+// What the renderer draws of a HalfedgeMesh, built on the CPU: pure functions, no GL, unit-tested. The rules below
+// decide what is drawable; the renderer's buffers lay the same things out by element slot (slot_geometry.h), and
+// build_mesh_geometry is the compact reference they are tested against.
 //
 // Every primitive carries the id of its element, for colouring and picking.
 // - Faces become triangles fanned from the face's first halfedge (h0's vertex, then each consecutive
