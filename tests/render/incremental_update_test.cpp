@@ -1,5 +1,5 @@
 // plan_update against the full build, on the CPU: after every step of long random runs of flips, splits, collapses,
-// undos, redos and raw pointer writes (which break the mesh), the patched slot arrays equal build_slot_geometry of
+// undos, redos, now and then a Loop subdivision, and raw pointer writes (which break the mesh), the patched slot arrays equal build_slot_geometry of
 // the new state byte for byte (a step with no patch rebuilds, as the renderer does). A flip on a big mesh rewrites
 // a few dozen slots. The drawn set of the slot layout equals build_mesh_geometry's.
 #include <algorithm>
@@ -10,6 +10,7 @@
 #include <gtest/gtest.h>
 
 #include "core/history.h"
+#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
@@ -95,10 +96,15 @@ RunCounts random_run(HalfedgeMesh mesh, uint32_t seed, int steps, bool raw_write
   Mirror mirror(mesh);
   for (int step = 0; step < steps; ++step) {
     const HalfedgeMesh before = mesh;
-    const int what = int(rng() % (raw_writes ? 9 : 7));
+    constexpr int kLoop = 100;  // now and then on a small mesh: every element changes, a big patch
+    const int what = rng() % 80 == 0 && mesh.num_faces() < 600 ? kLoop : int(rng() % (raw_writes ? 9 : 7));
     std::string label;
     const EdgeId e(uint32_t(rng() % std::max<uint32_t>(mesh.edge_capacity(), 1)));
     switch (what) {
+      case kLoop:
+        label = "Loop subdivision";
+        if (loop_subdivide(mesh)) history.record(label, before);
+        break;
       case 0:
       case 1:
         label = "flip";
