@@ -103,8 +103,11 @@ class ActionPlayer {
     } else if (a.verb == "expect-gpu-update") {
       const RenderStats& stats = app.mesh_render_stats();
       const std::string got = stats.last_update_patch ? "patch" : "rebuild";
-      if (args[0] != "patch" && args[0] != "rebuild") throw std::runtime_error("expect-gpu-update takes patch or rebuild");
-      if (got != args[0]) fail(a, "the last update was a " + got + (stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")"));
+      if (args[0] != "patch" && args[0] != "rebuild") {
+        throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+      }
+      const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
+      if (got != args[0]) fail(a, "the last update was a " + got + why);
     } else if (a.verb == "screenshot") {
       app.request_screenshot(args[0]);
     } else if (a.verb == "expect-selected") {

@@ -3,8 +3,9 @@
 // SegmentBatch: segments (EdgeSegment layout: start, end, id, flags) in a buffer texture, drawn as two
 // triangles each by shaders/segment.vert; optional per-segment styles (RGBA8 colour, width) for overlays.
 // PointBatch: points (VertexPoint layout: position, id), optional per-point styles (colour, size).
-// Invariant: count() is the number of items drawn: those of the last upload, or of allocate() and set_count(). Styles are read only by overlays
-// (u_element_colours false); mesh batches have none and take colours from their elements' state.
+// Invariant: count() is the number of items drawn: those of the last upload, or of allocate() and set_count().
+// Styles are read only by overlays (u_element_colours false); mesh batches have none and take colours from their
+// elements' state.
 #pragma once
 
 #include <cstddef>

@@ -91,7 +91,8 @@ void GpuMesh::apply(const SlotPatch& p) {
   for_each_run<Normal, glm::vec3>(
       p.normals, [](const Normal& x) { return x.second; },
       [&](uint32_t first, const std::vector<glm::vec3>& run) {
-        write_buffer(GL_ARRAY_BUFFER, normals_.get(), first * sizeof(glm::vec3), run.data(), run.size() * sizeof(glm::vec3));
+        write_buffer(GL_ARRAY_BUFFER, normals_.get(), first * sizeof(glm::vec3), run.data(),
+                     run.size() * sizeof(glm::vec3));
       });
   std::vector<std::pair<uint32_t, const FacePatch*>> faces;
   faces.reserve(p.faces.size());
@@ -182,7 +183,8 @@ void GpuMesh::read(SlotGeometry& out, std::vector<EdgeSegment>* slot_arrows) con
 }
 
 size_t GpuMesh::bytes() const {
-  return (vertex_slots_ * 2 * sizeof(glm::vec3)) + face_slots_ * 3 * sizeof(uint32_t) + extra_count_ * 4 * sizeof(uint32_t) +
+  return vertex_slots_ * 2 * sizeof(glm::vec3) + face_slots_ * 3 * sizeof(uint32_t) +
+         extra_count_ * 4 * sizeof(uint32_t) +
          face_normals.bytes() + edges.bytes() + boundary_edges.bytes() + arrows.bytes() + points.bytes();
 }
 

@@ -238,7 +238,10 @@ std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeM
     const bool is = !hidden(segment) && (segment.flags & kEdgeBoundaryFlag);
     if (was || is) patch.boundary_changed = true;
     if (was && !is) std::erase(state.boundary_edges, e);
-    if (is && !was) state.boundary_edges.insert(std::lower_bound(state.boundary_edges.begin(), state.boundary_edges.end(), e), e);
+    if (is && !was) {
+      std::vector<uint32_t>& list = state.boundary_edges;
+      list.insert(std::lower_bound(list.begin(), list.end(), e), e);
+    }
     if (e < after.edge_capacity()) patch.edges.emplace_back(e, segment);
   }
   if (patch.boundary_changed) {

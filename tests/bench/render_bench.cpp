@@ -228,7 +228,8 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
 
   // Picking.
   const ScreenPoint v0 = camera.project(mesh.position(VertexId(0)), viewport);
-  const int x = std::clamp(int(v0.pixel.x), 0, viewport.width - 1), y = std::clamp(int(v0.pixel.y), 0, viewport.height - 1);
+  const int x = std::clamp(int(v0.pixel.x), 0, viewport.width - 1);
+  const int y = std::clamp(int(v0.pixel.y), 0, viewport.height - 1);
   start = Clock::now();
   const ElementRef first = renderer.pick(camera, viewport, x, y);
   line("pick, id buffer redrawn (after a camera move)", "%10.2f ms", ms_since(start), format_id(first));
@@ -236,8 +237,10 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   line("pick, same camera (reads 9x9 pixels)", "%10.3f ms", again.median);
 
   // Local edits: a patch against a full rebuild of the same state.
-  time_edit(renderer, mesh, "flip", [](HalfedgeMesh& m) { return bool(flip(m, edge_for(m, m.edge_capacity() / 3, can_flip))); });
-  time_edit(renderer, mesh, "split", [](HalfedgeMesh& m) { return bool(split(m, edge_for(m, m.edge_capacity() / 2, can_split))); });
+  time_edit(renderer, mesh, "flip",
+            [](HalfedgeMesh& m) { return bool(flip(m, edge_for(m, m.edge_capacity() / 3, can_flip))); });
+  time_edit(renderer, mesh, "split",
+            [](HalfedgeMesh& m) { return bool(split(m, edge_for(m, m.edge_capacity() / 2, can_split))); });
   time_edit(renderer, mesh, "collapse",
             [](HalfedgeMesh& m) { return bool(collapse(m, edge_for(m, m.edge_capacity() / 5, can_collapse))); });
 
@@ -299,7 +302,8 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> counts = parse_counts(arg(argc, argv, "--faces", "10000,100000,1000000"));
   const int frames = std::clamp(std::atoi(arg(argc, argv, "--frames", "10")), 1, 1000);
   const int samples = std::clamp(std::atoi(arg(argc, argv, "--samples", "4")), 0, 16);
-  const uint32_t table_faces = uint32_t(std::clamp(std::atol(arg(argc, argv, "--tables-faces", "1000000")), 8L, 4000000L));
+  const long table_faces_arg = std::atol(arg(argc, argv, "--tables-faces", "1000000"));
+  const uint32_t table_faces = uint32_t(std::clamp(table_faces_arg, 8L, 4000000L));
   Viewport viewport{1280, 800};
   std::sscanf(arg(argc, argv, "--size", "1280x800"), "%dx%d", &viewport.width, &viewport.height);
 

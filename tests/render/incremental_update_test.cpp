@@ -1,7 +1,8 @@
 // plan_update against the full build, on the CPU: after every step of long random runs of flips, splits, collapses,
-// undos, redos, now and then a Loop subdivision, and raw pointer writes (which break the mesh), the patched slot arrays equal build_slot_geometry of
-// the new state byte for byte (a step with no patch rebuilds, as the renderer does). A flip on a big mesh rewrites
-// a few dozen slots. The drawn set of the slot layout equals build_mesh_geometry's.
+// undos, redos, now and then a Loop subdivision, and raw pointer writes (which break the mesh), the patched slot
+// arrays equal build_slot_geometry of the new state byte for byte (a step with no patch rebuilds, as the renderer
+// does). A flip on a big mesh rewrites a few dozen slots. The drawn set of the slot layout equals
+// build_mesh_geometry's.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
