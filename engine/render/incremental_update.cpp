@@ -91,7 +91,6 @@ struct Planner {
     if (f >= mesh.face_capacity()) return true;
     draw_face(mesh, FaceId::face(f), d, walk, nullptr, kMaxWalk);
     if (d.walk == FaceWalk::TooLong) return fail("f" + std::to_string(f) + " is longer than the walk limit");
-    if (d.corners.size() > 3) return fail("f" + std::to_string(f) + " is a polygon (its packed triangles would move)");
     return true;
   }
 };
@@ -104,6 +103,10 @@ SlotState slot_state(const HalfedgeMesh& mesh, const SlotGeometry& g) {
   s.counts = g.counts;
   s.boundary_edges = g.boundary_edges;
   s.bounds = g.bounds;
+  if (!g.extra_faces.empty()) {
+    s.extra_first.assign(g.face_normals.size(), kInvalidIndex);
+    for (size_t i = g.extra_faces.size(); i-- > 0;) s.extra_first[g.extra_faces[i]] = uint32_t(i);
+  }
   return s;
 }
 
@@ -186,6 +189,14 @@ std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeM
     if (after.alive(FaceId::face(f))) {
       if (new_draw.drawn()) counts.triangles += new_draw.triangle_count();
       else ++counts.skipped_faces;
+    }
+    // A polygon keeps its packed later triangles where they are only if it has as many as before.
+    const size_t extra = new_draw.triangle_count() > 0 ? new_draw.triangle_count() - 1 : 0;
+    const size_t old_extra = old_draw.triangle_count() > 0 ? old_draw.triangle_count() - 1 : 0;
+    if (extra != old_extra) return p.fail("f" + std::to_string(f) + " has another number of triangles"), std::nullopt;
+    for (size_t i = 0; i < extra; ++i) {
+      const uint32_t packed = state.extra_first[f] + uint32_t(i);
+      patch.extra_triangles.push_back({packed, {new_draw.corners[0], new_draw.corners[i + 2], new_draw.corners[i + 3]}});
     }
     if (f >= after.face_capacity()) continue;
     FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw)};
@@ -278,6 +289,9 @@ void apply_patch(SlotGeometry& g, std::vector<EdgeSegment>* arrows, const SlotPa
     g.face_normals[f.face] = f.normal;
   }
   for (const auto& [e, segment] : patch.edges) g.edges[e] = segment;
+  for (const auto& [i, triangle] : patch.extra_triangles) {
+    std::copy(triangle.begin(), triangle.end(), g.extra_triangles.begin() + 3 * long(i));
+  }
   if (patch.boundary_changed) g.boundary_edges = patch.boundary_edges;
   g.counts = patch.counts;
   g.bounds = patch.bounds;

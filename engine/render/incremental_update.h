@@ -16,8 +16,9 @@
 // Following those reads backwards needs "who points at this": the halfedges leaving a vertex (found by walking its
 // fan), the halfedges whose twin is h, the edges whose halfedge is h. Each search is certified complete by the
 // counts in MeshReferences (walked fan size == halfedges leaving the vertex, and so on), so a broken mesh cannot
-// hide a dependency: when a certificate fails, or a face has more than three corners (polygons' packed fan
-// triangles would move), or a walk is longer than kMaxWalk, there is no patch and the caller rebuilds everything.
+// hide a dependency: when a certificate fails, or a polygon's number of fan triangles changes (its packed later
+// triangles would move; the same number is rewritten in place), or a walk is longer than kMaxWalk, there is no patch
+// and the caller rebuilds everything.
 #pragma once
 
 #include <array>
@@ -45,6 +46,7 @@ struct SlotPatch {
   std::vector<std::pair<uint32_t, VertexPoint>> points;  // also the positions: a point's position, 0 when hidden
   std::vector<std::pair<uint32_t, glm::vec3>> normals;
   std::vector<FacePatch> faces;
+  std::vector<std::pair<uint32_t, std::array<uint32_t, 3>>> extra_triangles;  // packed index -> triangle
   std::vector<std::pair<uint32_t, EdgeSegment>> edges;
   std::vector<std::pair<uint32_t, std::array<EdgeSegment, 3>>> arrows;  // only when asked for
   bool boundary_changed = false;           // a boundary edge (before or after) is among the edges
@@ -53,7 +55,9 @@ struct SlotPatch {
   SlotCounts counts;                     // of `after`
   BoundingBox bounds;                    // the old box grown by the moved points (it never shrinks)
 
-  size_t slots() const { return points.size() + normals.size() + faces.size() + edges.size() + arrows.size(); }
+  size_t slots() const {
+    return points.size() + normals.size() + faces.size() + extra_triangles.size() + edges.size() + arrows.size();
+  }
 };
 
 // What the renderer keeps between updates besides the GPU buffers.
@@ -62,6 +66,8 @@ struct SlotState {
   SlotCounts counts;
   std::vector<uint32_t> boundary_edges;
   BoundingBox bounds;
+  std::vector<uint32_t> extra_first;  // per face slot: its first packed triangle (kInvalidIndex: none); empty when
+                                      // no face has any
 };
 
 inline constexpr uint32_t kMaxWalk = 1024;  // longest face cycle or vertex fan an update walks

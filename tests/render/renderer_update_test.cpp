@@ -11,6 +11,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "gl_test_support.h"
+#include "quad_torus.h"
 
 namespace meshedit {
 namespace {
@@ -113,6 +114,22 @@ TEST_F(RendererUpdate, EditsUndoAndRedoArePatchedAndEqualAFullBuild) {
   }
   EXPECT_LE(outgrown, 3);
   EXPECT_GT(renderer.stats().patches, 80u);
+}
+
+TEST_F(RendererUpdate, MovedVerticesOfQuadsArePatchedTheirPackedTrianglesToo) {
+  MeshRenderer renderer{ShaderLibrary()};
+  HalfedgeMesh mesh = build_halfedge_mesh(quad_torus(12, 8));
+  renderer.update(mesh);
+  std::mt19937 rng(3);
+  for (int step = 0; step < 30; ++step) {
+    const HalfedgeMesh before = mesh;
+    const VertexId v(uint32_t(rng() % mesh.vertex_capacity()));
+    mesh.set_position(v, mesh.position(v) * 1.1);
+    update_with_change(renderer, before, mesh);
+  }
+  EXPECT_EQ(renderer.stats().uploads, 1u);
+  EXPECT_EQ(renderer.stats().patches, 30u);
+  expect_buffers_equal_full_build(renderer, mesh, false);
 }
 
 TEST_F(RendererUpdate, AFlipOnABigMeshSendsBytesForTheEditNotTheMesh) {
