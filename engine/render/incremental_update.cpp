@@ -195,8 +195,8 @@ std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeM
     const size_t old_extra = old_draw.triangle_count() > 0 ? old_draw.triangle_count() - 1 : 0;
     if (extra != old_extra) return p.fail("f" + std::to_string(f) + " has another number of triangles"), std::nullopt;
     for (size_t i = 0; i < extra; ++i) {
-      const uint32_t packed = state.extra_first[f] + uint32_t(i);
-      patch.extra_triangles.push_back({packed, {new_draw.corners[0], new_draw.corners[i + 2], new_draw.corners[i + 3]}});
+      const std::vector<uint32_t>& c = new_draw.corners;
+      patch.extra_triangles.push_back({state.extra_first[f] + uint32_t(i), {c[0], c[i + 2], c[i + 3]}});
     }
     if (f >= after.face_capacity()) continue;
     FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw)};

@@ -2,8 +2,8 @@
 // new values, found from the elements the change touched, in time proportional to them, not to the mesh. No GL.
 //
 // Given the state the buffers show (`before`), the new state (`after`) and every element whose fields differ
-// between them (the document's diff), the patch rewrites exactly the slots whose values differ, so applying it to
-// build_slot_geometry(before) gives build_slot_geometry(after), byte for byte (tests check it on long random runs of
+// between them (the document's diff), the patch rewrites every slot whose value differs (and a few around them that
+// come out the same), so applying it to build_slot_geometry(before) gives build_slot_geometry(after), byte for byte (tests check it on long random runs of
 // flips, splits, collapses, undos, redos and raw pointer writes). The dirty slots follow from what each value reads:
 // - a face slot reads the face's walk (its halfedges' alive, face, next, vertex; its corners' alive and position):
 //   it is dirty when the face changed, when a changed halfedge lies in it in either state, or when it has a
