@@ -1,12 +1,13 @@
 #version 330 core
-// Mesh faces, shaded flat (the face's Newell normal) or Phong (interpolated area-weighted vertex
+// Mesh faces (one triangle slot per face, see render/slot_geometry.h), shaded flat (the face's Newell normal) or Phong (interpolated area-weighted vertex
 // normals, plus a highlight). Back sides get their own colour so an inside-out face shows. Hovered,
 // selected and changed faces are tinted: hovered and selected by id (uniforms), changed by a flag per
 // face (a buffer texture), so a selection change never touches the big buffers.
 in vec3 v_world;
 in vec3 v_normal;
 
-uniform usamplerBuffer u_triangle_faces;  // face slot of each triangle, by gl_PrimitiveID
+uniform bool u_extra;                     // false: gl_PrimitiveID is the face slot (the first triangle of each face)
+uniform usamplerBuffer u_extra_faces;     // true: the face slot of each later fan triangle of a polygon
 uniform samplerBuffer u_face_normals;     // unit face normal by face slot (zero if degenerate)
 uniform usamplerBuffer u_changed;         // 1 for faces the last operation changed, by face slot
 uniform uint u_selected;                  // face slot, or 0xFFFFFFFF
@@ -23,7 +24,7 @@ uniform vec4 u_changed_colour;
 out vec4 o_colour;
 
 void main() {
-  uint face = texelFetch(u_triangle_faces, gl_PrimitiveID).r;
+  uint face = u_extra ? texelFetch(u_extra_faces, gl_PrimitiveID).r : uint(gl_PrimitiveID);
   vec3 n = texelFetch(u_face_normals, int(face)).xyz;
   if (dot(n, n) < 0.25) {
     // A degenerate face has no normal of its own: use the triangle's, turned to its front side.

@@ -24,11 +24,20 @@ uniform vec4 u_changed_colour;
 uniform float u_base_size;
 uniform float u_highlight_size;
 uniform float u_pick_size;
+// Mesh points sit at their vertex slot; a slot with nothing to draw has the invalid id and is skipped.
+uniform bool u_hide_invalid;
 
 flat out vec4 v_colour;
 flat out uint v_id;
 
 void main() {
+  if (u_hide_invalid && a_id == 0xFFFFFFFFu) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume
+    gl_PointSize = 1.0;
+    v_colour = vec4(0.0);
+    v_id = a_id;
+    return;
+  }
   vec4 colour = a_colour;
   float size = a_size;
   if (u_element_colours) {

@@ -47,7 +47,13 @@ void main() {
   vec3 a_start = uintBitsToFloat(t0.xyz);
   vec3 a_end = uintBitsToFloat(uvec3(t0.w, t1.xy));
   uint a_id = t1.z;
-  uint a_flags = t1.w;  // 1: boundary edge
+  uint a_flags = t1.w;  // 1: boundary edge, 2: hidden (a slot with nothing to draw)
+  if ((a_flags & 2u) != 0u) {
+    gl_Position = vec4(2.0, 2.0, 2.0, 1.0);  // outside the clip volume: nothing is drawn
+    v_colour = vec4(0.0);
+    v_id = 0xFFFFFFFFu;
+    return;
+  }
 
   vec4 colour;
   float width;

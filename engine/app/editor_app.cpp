@@ -146,14 +146,39 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 }
 
 void EditorApp::draw_mesh_view(int width, int height) {
-  mesh_renderer_->update(doc_.mesh);
+  // The document's last change lets the renderer rewrite only what an edit touched (it checks the versions).
+  MeshRenderer::MeshChange change;
+  if (doc_.last.before && doc_.last.listed && doc_.last.version_before) {
+    change.before = &*doc_.last.before;
+    change.elements = doc_.last.index.elements();
+    change.version_before = *doc_.last.version_before;
+    change.version_after = doc_.last.version_after;
+  }
+  mesh_renderer_->update(doc_.mesh, change.before != nullptr ? &change : nullptr);
+  apply_size_defaults();
   Highlights highlights;
   highlights.hovered = selection_.hovered;
   highlights.selected = selection_.selected;
   highlights.changed = doc_.last.index.elements();
+  highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
   if (show_labels_) draw_id_labels(width, height);
   draw_lesson_marks(width, height);
+}
+
+void EditorApp::apply_size_defaults() {
+  // The wireframe's default follows the mesh's size class when it changes (opening a file, a subdivision);
+  // W still toggles it in between. The renderer drops multisampling for large meshes by itself.
+  const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
+  if (large != large_mesh_) {
+    large_mesh_ = large;
+    view_options_.wireframe = !large;
+  }
+  status_bar_.note.clear();
+  if (large) {
+    status_bar_.note = "large mesh: no multisampling";
+    if (!view_options_.wireframe) status_bar_.note += ", wireframe off (W shows it)";
+  }
 }
 
 void EditorApp::draw_patch_view() {

@@ -69,7 +69,8 @@ class EditorApp {
   // loaded; on failure the panel shows the error with file:line.
   bool open_lesson(const std::filesystem::path& path);
   LessonRunner& lesson() { return *lesson_; }
-  // True while something on screen moves by itself (a lesson animation): the window must not sleep.
+  // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
+  // the window must not sleep.
   bool animating() const;
 
   // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
@@ -98,6 +99,7 @@ class EditorApp {
 
   bool quit_requested() const { return quit_requested_; }
   OrbitCamera& camera() { return camera_; }
+  const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
   void fit_view() { fit_camera(); }
   void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
@@ -108,6 +110,7 @@ class EditorApp {
  private:
   void read_mouse_and_keys(int width, int height);
   void draw_mesh_view(int width, int height);
+  void apply_size_defaults();
   void draw_patch_view();
   void draw_id_labels(int width, int height);
   void draw_menu_bar();
@@ -132,6 +135,7 @@ class EditorApp {
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;
+  bool large_mesh_ = false;  // the shown mesh is past RenderStyle::large_mesh_triangles (apply_size_defaults)
   ViewMode mode_ = ViewMode::Mesh;
 
   MeshDocument doc_;
@@ -161,6 +165,11 @@ class EditorApp {
 
   int viewport_width_ = 1, viewport_height_ = 1;
   bool dragging_ = false;
+  // A hover waiting for the mouse to rest, because the id buffer is stale and slow to redraw (read_mouse_and_keys).
+  static constexpr double kSlowIdPassMs = 30.0;
+  static constexpr double kHoverRestSeconds = 0.15;
+  bool hover_pending_ = false;
+  double mouse_moved_at_ = 0.0;
   std::optional<std::filesystem::path> screenshot_path_;
   bool quit_requested_ = false;
 };

@@ -165,9 +165,28 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     if (!dragging_ && !io.KeyShift) click(x, y);
     dragging_ = false;
   }
-  // Picking while the camera moves would redraw the whole id buffer every frame; wait for the drag to end.
+  // Picking while the camera moves would redraw the whole id buffer every frame; wait for the drag to end. After
+  // a camera move the id buffer is stale: when redrawing it is slow (a large mesh on llvmpipe), the hover waits
+  // until the mouse rests, so moving across the view right after an orbit drops no frame.
   const bool moving_camera = panning || dragging_;
-  if (!moving_camera && (io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f)) hover(x, y);
+  const bool mouse_moved = io.MouseDelta.x != 0.0f || io.MouseDelta.y != 0.0f;
+  const double now = ImGui::GetTime();
+  if (moving_camera) {
+    hover_pending_ = false;
+  } else if (mouse_moved) {
+    const bool cheap = mesh_renderer_->pick_is_cheap(camera_, viewport()) ||
+                       mesh_renderer_->stats().last_id_pass_ms < kSlowIdPassMs;
+    if (cheap) {
+      hover(x, y);
+      hover_pending_ = false;
+    } else {
+      hover_pending_ = true;
+      mouse_moved_at_ = now;
+    }
+  } else if (hover_pending_ && now - mouse_moved_at_ >= kHoverRestSeconds) {
+    hover(x, y);
+    hover_pending_ = false;
+  }
 }
 
 }  // namespace meshedit

@@ -64,6 +64,7 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
 }
 
 bool EditorApp::animating() const {
+  if (hover_pending_) return true;
   return lesson_->step_state() == LessonRunner::StepState::Waiting &&
          lesson_->waiting_for().kind == LessonWait::Kind::Animation;
 }

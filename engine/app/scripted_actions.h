@@ -14,6 +14,9 @@
 //   exercise curve|patch FOLDER   (where the curve and patch views' "mine", key M, reads curve.lua, patch.lua)
 //   expect-mine TEXT...   (the "mine" line of the curve or patch view on screen contains TEXT; computed when a
 //                          frame draws the view, so put `frames 1` after the key that changes it)
+//   orbit DX DY           (the camera turns as a drag of DX, DY pixels would turn it)
+//   expect-gpu-update patch|rebuild   (how the mesh view's last geometry update went: the slots an edit touched
+//                          rewritten in place, or everything rebuilt; drawn in the next frame, so `frames 1` first)
 #pragma once
 
 #include <string>

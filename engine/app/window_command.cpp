@@ -98,6 +98,16 @@ class ActionPlayer {
       if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
     } else if (a.verb == "save") {
       if (!app.save(args[0])) throw std::runtime_error(app.document().message.text);
+    } else if (a.verb == "orbit") {
+      app.camera().orbit(std::stod(args[0]), std::stod(args[1]));
+    } else if (a.verb == "expect-gpu-update") {
+      const RenderStats& stats = app.mesh_render_stats();
+      const std::string got = stats.last_update_patch ? "patch" : "rebuild";
+      if (args[0] != "patch" && args[0] != "rebuild") {
+        throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+      }
+      const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
+      if (got != args[0]) fail(a, "the last update was a " + got + why);
     } else if (a.verb == "screenshot") {
       app.request_screenshot(args[0]);
     } else if (a.verb == "expect-selected") {

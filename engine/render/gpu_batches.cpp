@@ -22,13 +22,42 @@ void style_attributes(GLuint colour, GLuint size) {
   glVertexAttribPointer(size, 1, GL_FLOAT, GL_FALSE, sizeof(ItemStyle), offset(offsetof(ItemStyle, size)));
 }
 
+size_t g_uploaded_bytes = 0;
+
 }  // namespace
+
+size_t uploaded_bytes() { return g_uploaded_bytes; }
+void count_upload(size_t bytes) { g_uploaded_bytes += bytes; }
+
+void write_buffer(GLenum target, GLuint buffer, size_t offset, const void* data, size_t bytes) {
+  if (bytes == 0) return;
+  glBindBuffer(target, buffer);
+  glBufferSubData(target, GLintptr(offset), GLsizeiptr(bytes), data);
+  count_upload(bytes);
+}
+
+void allocate_buffer(GLenum target, GLuint buffer, size_t capacity, const void* data, size_t bytes) {
+  glBindBuffer(target, buffer);
+  glBufferData(target, GLsizeiptr(std::max<size_t>(capacity, 16)), nullptr, GL_DYNAMIC_DRAW);
+  if (bytes > 0) glBufferSubData(target, 0, GLsizeiptr(bytes), data);
+  count_upload(bytes);
+}
 
 SegmentBatch::SegmentBatch() : vao_(make_vertex_array()), items_(GL_RGBA32UI), styles_(GL_RG32UI) {}
 
 void SegmentBatch::upload(const EdgeSegment* items, size_t count, GLenum usage) {
   items_.upload(items, count * sizeof(EdgeSegment), usage);
+  count_ = capacity_ = count;
+}
+
+void SegmentBatch::allocate(const EdgeSegment* items, size_t count, size_t capacity) {
+  items_.allocate(capacity * sizeof(EdgeSegment), items, count * sizeof(EdgeSegment));
   count_ = count;
+  capacity_ = capacity;
+}
+
+void SegmentBatch::write(size_t first, const EdgeSegment* items, size_t count) {
+  items_.write(first * sizeof(EdgeSegment), items, count * sizeof(EdgeSegment));
 }
 
 void SegmentBatch::upload_styles(const ItemStyle* styles, size_t count, GLenum usage) {
@@ -66,8 +95,19 @@ PointBatch::PointBatch() : vao_(make_vertex_array()), items_(make_buffer()), sty
 void PointBatch::upload(const VertexPoint* items, size_t count, GLenum usage) {
   glBindBuffer(GL_ARRAY_BUFFER, items_.get());
   glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(count * sizeof(VertexPoint)), items, usage);
+  count_upload(count * sizeof(VertexPoint));
   count_ = count;
   bytes_ = count * sizeof(VertexPoint);
+}
+
+void PointBatch::allocate(const VertexPoint* items, size_t count, size_t capacity) {
+  allocate_buffer(GL_ARRAY_BUFFER, items_.get(), capacity * sizeof(VertexPoint), items, count * sizeof(VertexPoint));
+  count_ = count;
+  bytes_ = std::max<size_t>(capacity * sizeof(VertexPoint), 16);
+}
+
+void PointBatch::write(size_t first, const VertexPoint* items, size_t count) {
+  write_buffer(GL_ARRAY_BUFFER, items_.get(), first * sizeof(VertexPoint), items, count * sizeof(VertexPoint));
 }
 
 void PointBatch::upload_styles(const ItemStyle* styles, size_t count, GLenum usage) {
@@ -97,7 +137,21 @@ void BufferTexture::upload(const void* data, size_t bytes, GLenum usage) {
   glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
   glTexBuffer(GL_TEXTURE_BUFFER, format_, buffer_.get());
   glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  count_upload(bytes);
   bytes_ = bytes;
+}
+
+void BufferTexture::allocate(size_t capacity, const void* data, size_t bytes) {
+  allocate_buffer(GL_TEXTURE_BUFFER, buffer_.get(), capacity, data, bytes);
+  glBindTexture(GL_TEXTURE_BUFFER, texture_.get());
+  glTexBuffer(GL_TEXTURE_BUFFER, format_, buffer_.get());
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  bytes_ = std::max<size_t>(capacity, 16);
+}
+
+void BufferTexture::write(size_t offset, const void* data, size_t bytes) {
+  write_buffer(GL_TEXTURE_BUFFER, buffer_.get(), offset, data, bytes);
+  glBindBuffer(GL_TEXTURE_BUFFER, 0);
 }
 
 void BufferTexture::bind(GLuint unit) const {

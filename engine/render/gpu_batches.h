@@ -3,8 +3,9 @@
 // SegmentBatch: segments (EdgeSegment layout: start, end, id, flags) in a buffer texture, drawn as two
 // triangles each by shaders/segment.vert; optional per-segment styles (RGBA8 colour, width) for overlays.
 // PointBatch: points (VertexPoint layout: position, id), optional per-point styles (colour, size).
-// Invariant: count() is the number of items in the last upload. Styles are read only by overlays
-// (u_element_colours false); mesh batches have none and take colours from their elements' state.
+// Invariant: count() is the number of items drawn: those of the last upload, or of allocate() and set_count().
+// Styles are read only by overlays (u_element_colours false); mesh batches have none and take colours from their
+// elements' state.
 #pragma once
 
 #include <cstddef>
@@ -26,14 +27,27 @@ struct ItemStyle {
   float size = 1.0f;  // width of a segment or diameter of a point, in pixels
 };
 
+// Bytes sent to the GPU by every upload and write below and by the renderer's own buffer writes, since the
+// program started (the renderer reports the difference across one update).
+size_t uploaded_bytes();
+void count_upload(size_t bytes);
+// glBufferSubData of `bytes` at `offset` into `buffer` (bound to `target`), counted.
+void write_buffer(GLenum target, GLuint buffer, size_t offset, const void* data, size_t bytes);
+// glBufferData of `capacity` bytes, the first `bytes` from `data` (counted), the rest undefined.
+void allocate_buffer(GLenum target, GLuint buffer, size_t capacity, const void* data, size_t bytes);
+
 // A buffer texture (samplerBuffer / usamplerBuffer) over its own buffer; `format` e.g. GL_R32UI.
 class BufferTexture {
  public:
   explicit BufferTexture(GLenum format);
   // Never empty on the GPU (one zero element at least), so a fetch is always defined.
   void upload(const void* data, size_t bytes, GLenum usage);
+  // Room for `capacity` bytes, the first `bytes` from `data`; later write()s fill the rest in place.
+  void allocate(size_t capacity, const void* data, size_t bytes);
+  void write(size_t offset, const void* data, size_t bytes);
   void bind(GLuint unit) const;
-  size_t bytes() const { return bytes_; }
+  size_t bytes() const { return bytes_; }  // allocated
+  GLuint buffer() const { return buffer_.get(); }
 
  private:
   GLenum format_;
@@ -48,6 +62,12 @@ class SegmentBatch {
  public:
   SegmentBatch();
   void upload(const EdgeSegment* items, size_t count, GLenum usage);
+  // Room for `capacity` segments, the first `count` from `items`; write() rewrites segments in place and
+  // set_count() says how many are drawn.
+  void allocate(const EdgeSegment* items, size_t count, size_t capacity);
+  void write(size_t first, const EdgeSegment* items, size_t count);
+  void set_count(size_t count) { count_ = count; }
+  size_t capacity() const { return capacity_; }
   void upload_styles(const ItemStyle* styles, size_t count, GLenum usage);
   // Binds the segments to texture unit 1 and the styles to unit 2 (the shaders' u_segments, u_styles)
   // and draws two triangles per segment.
@@ -57,21 +77,28 @@ class SegmentBatch {
   void draw_lines() const;
   size_t count() const { return count_; }
   size_t bytes() const;
+  GLuint buffer() const { return items_.buffer(); }
 
  private:
   VertexArray vao_;  // holds no attributes; core profile needs one bound to draw
   BufferTexture items_, styles_;
-  size_t count_ = 0;
+  size_t count_ = 0, capacity_ = 0;
 };
 
 class PointBatch {
  public:
   PointBatch();
   void upload(const VertexPoint* items, size_t count, GLenum usage);
+  // As SegmentBatch's.
+  void allocate(const VertexPoint* items, size_t count, size_t capacity);
+  void write(size_t first, const VertexPoint* items, size_t count);
+  void set_count(size_t count) { count_ = count; }
+  size_t capacity() const { return bytes_ / sizeof(VertexPoint); }
   void upload_styles(const ItemStyle* styles, size_t count, GLenum usage);
   void draw() const;
   size_t count() const { return count_; }
   size_t bytes() const { return bytes_; }
+  GLuint buffer() const { return items_.get(); }
 
  private:
   VertexArray vao_;

@@ -23,28 +23,31 @@ constexpr double kArrowHead = 0.25;
 
 bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
-// Collects f's cycle (see the header's rule for a drawable face). With `visited` (one flag per halfedge
-// slot), every halfedge is walked at most once over all calls; without it the walk is bounded by the
-// halfedge capacity.
-bool walk_face(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited) {
+// Collects f's cycle (see the header's rule for a drawable face); see walk_face_cycle.
+FaceWalk walk(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited,
+              uint32_t max_steps) {
   cycle.clear();
-  if (f.is_boundary() || !mesh.alive(f)) return false;
+  if (f.is_boundary() || !mesh.alive(f)) return FaceWalk::Broken;
   const HalfedgeId start = mesh.halfedge(f);
   HalfedgeId h = start;
-  const uint32_t bound = mesh.halfedge_capacity();
+  const uint32_t bound = std::min(mesh.halfedge_capacity(), max_steps);
   for (uint32_t steps = 0; steps <= bound; ++steps) {
-    if (!mesh.alive(h) || mesh.face(h) != f) return false;
+    if (!mesh.alive(h) || mesh.face(h) != f) return FaceWalk::Broken;
     if (visited != nullptr) {
-      if ((*visited)[h.index]) return false;
+      if ((*visited)[h.index]) return FaceWalk::Broken;
       (*visited)[h.index] = 1;
     }
     const VertexId v = mesh.vertex(h);
-    if (!mesh.alive(v) || !finite(mesh.position(v))) return false;
+    if (!mesh.alive(v) || !finite(mesh.position(v))) return FaceWalk::Broken;
     cycle.push_back(h);
     h = mesh.next(h);
-    if (h == start) return cycle.size() >= 3;
+    if (h == start) return cycle.size() >= 3 ? FaceWalk::Closed : FaceWalk::Broken;
   }
-  return false;
+  return bound < mesh.halfedge_capacity() ? FaceWalk::TooLong : FaceWalk::Broken;
+}
+
+bool walk_face(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited) {
+  return walk(mesh, f, cycle, visited, kInvalidIndex) == FaceWalk::Closed;
 }
 
 glm::dvec3 cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle) {
@@ -93,6 +96,20 @@ void add_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle, 
 }
 
 }  // namespace
+
+FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
+                         std::vector<uint8_t>* visited, uint32_t max_steps) {
+  return walk(mesh, f, cycle, visited, max_steps);
+}
+
+glm::dvec3 face_cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle) {
+  return cycle_centre(mesh, cycle);
+}
+
+void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
+                      std::vector<HalfedgeArrow>& out) {
+  add_arrows(mesh, cycle, out);
+}
 
 std::optional<EdgeSegment> edge_segment(const HalfedgeMesh& mesh, EdgeId e) {
   if (!mesh.alive(e)) return std::nullopt;

@@ -1,4 +1,6 @@
-// What the renderer draws of a HalfedgeMesh, built on the CPU: pure functions, no GL, unit-tested.
+// What the renderer draws of a HalfedgeMesh, built on the CPU: pure functions, no GL, unit-tested. The rules below
+// decide what is drawable; the renderer's buffers lay the same things out by element slot (slot_geometry.h), and
+// build_mesh_geometry is the compact reference they are tested against.
 //
 // Every primitive carries the id of its element, for colouring and picking.
 // - Faces become triangles fanned from the face's first halfedge (h0's vertex, then each consecutive
@@ -30,6 +32,7 @@
 namespace meshedit {
 
 inline constexpr uint32_t kEdgeBoundaryFlag = 1u;
+inline constexpr uint32_t kEdgeHiddenFlag = 2u;  // a slot with nothing to draw (slot_geometry.h); shaders skip it
 
 struct EdgeSegment {
   glm::vec3 start{0.0f};
@@ -70,6 +73,20 @@ struct MeshGeometry {
 };
 
 MeshGeometry build_mesh_geometry(const HalfedgeMesh& mesh);
+
+// One face's walk by the rule above. Closed: `cycle` holds its halfedges from halfedge(f) on. Broken: the face
+// is not drawable. TooLong: it did not close within `max_steps` halfedges (only when max_steps is below the
+// halfedge capacity; the caller decides what to do). With `visited` (one flag per halfedge slot, shared by the
+// calls of one whole-mesh build) no halfedge is walked twice; a halfedge is marked only once its face matched,
+// so the flags never change another face's outcome.
+enum class FaceWalk { Closed, Broken, TooLong };
+FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
+                         std::vector<uint8_t>* visited, uint32_t max_steps);
+// The mean of a closed cycle's corners (where its arrows lean to), and the arrows of a closed cycle, appended
+// in cycle order: what build_halfedge_arrows makes for that face.
+glm::dvec3 face_cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle);
+void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
+                      std::vector<HalfedgeArrow>& out);
 // Arrows of every halfedge of every drawable face, face by face in id order, each cycle from the face's
 // halfedge. Costs about 100 bytes per halfedge on the GPU, so the renderer builds it only on demand.
 std::vector<HalfedgeArrow> build_halfedge_arrows(const HalfedgeMesh& mesh);

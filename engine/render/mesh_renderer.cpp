@@ -1,19 +1,21 @@
 // MeshRenderer (see mesh_renderer.h for the contract).
 //
-// GPU layout, rebuilt by update() only when the mesh or its version changes:
-// - faces: positions and smooth normals indexed by vertex id, an index buffer of fanned triangles, and
-//   two buffer textures looked up by gl_PrimitiveID / face slot (triangle -> face, face -> normal), so
-//   flat shading needs no duplicated vertices;
-// - edges (and a second batch with the boundary edges only), vertices, and on demand halfedge arrows,
-//   as segments and points (gpu_batches.h).
+// GPU layout (gpu_mesh.h, slot_geometry.h), by element slot so an edit rewrites only its slots:
+// - faces: positions and smooth normals by vertex slot, one triangle per face slot (gl_PrimitiveID = face slot) plus
+//   the packed later triangles of polygons, and face normals by face slot in a buffer texture, so flat shading
+//   needs no duplicated vertices;
+// - edges by edge slot (and a compact batch of the boundary edges), points by vertex slot, and on demand halfedge
+//   arrows by halfedge slot, as segments and points (gpu_batches.h); empty slots are hidden.
+// update() keeps them current: a full build (build_slot_geometry) or a patch (incremental_update.h).
 // Highlights never touch those: hovered and selected are uniforms (one id per kind), "changed" is one
-// byte per element in a buffer texture per kind. Elements that are highlighted but whose full pass is
-// off (no wireframe, no vertices, no arrows) are drawn again from small batches built from the mesh for
-// just those elements.
+// byte per element in a buffer texture per kind, rewritten where the list changed. Elements that are highlighted
+// but whose full pass is off (no wireframe, no vertices, no arrows) are drawn again from small batches built from
+// the mesh for just those elements.
 #include "render/mesh_renderer.h"
 
 #include <algorithm>
 #include <array>
+#include <chrono>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -24,6 +26,8 @@
 
 #include "render/gl_objects.h"
 #include "render/gpu_batches.h"
+#include "render/gpu_mesh.h"
+#include "render/incremental_update.h"
 #include "render/mesh_geometry.h"
 #include "render/pick_id.h"
 #include "render/render_error.h"
@@ -115,24 +119,32 @@ struct PickKey {
 // back-coloured pixel from the cube's silhouettes in the three-quarter view, 16 leaves a margin.
 constexpr float kBackOffsetFactor = 16.0f;
 
-// Every face triangle of the bound vertex array, pushed back by polygon offset so lines and points
+// Every face triangle of `mesh` with the bound program, pushed back by polygon offset so lines and points
 // drawn later at the same depth win. Front sides first, then back sides where they are nearer. Along a
 // silhouette a front and a back side meet at equal depth, and polygon offset pushes each back by about
 // one pixel of its own depth slope: the grazing front side further than the back one, so a fringe of
 // back colour would win there. The back pass is pushed much further to lose it; the price is that a
 // back side closer than that margin in front of a front side is hidden, which real scenes rarely have.
-void draw_triangles(GLuint vertex_array, size_t index_count) {
+// A large closed mesh (no boundary, every face drawn) shows no back side from outside: its back pass, a quarter of
+// llvmpipe's frame there, is skipped (`front_only`).
+void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program, bool front_only) {
+  const GLint extra = program.uniform("u_extra");
+  glUniform1i(program.uniform("u_extra_faces"), 3);
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
-  glBindVertexArray(vertex_array);
   glFrontFace(GL_CCW);  // faces are counter-clockwise seen from outside (core/primitives.h)
   glEnable(GL_CULL_FACE);
   glCullFace(GL_BACK);
-  glDrawElements(GL_TRIANGLES, GLsizei(index_count), GL_UNSIGNED_INT, nullptr);
+  mesh.draw_triangles(extra, 3);
+  if (front_only) {
+    glDisable(GL_CULL_FACE);
+    glDisable(GL_POLYGON_OFFSET_FILL);
+    return;
+  }
   glCullFace(GL_FRONT);
   glDepthFunc(GL_LESS);
   glPolygonOffset(kBackOffsetFactor, 1.0f);
-  glDrawElements(GL_TRIANGLES, GLsizei(index_count), GL_UNSIGNED_INT, nullptr);
+  mesh.draw_triangles(extra, 3);
   glDepthFunc(GL_LEQUAL);
   glCullFace(GL_BACK);
   glDisable(GL_CULL_FACE);
@@ -153,28 +165,17 @@ struct MeshRenderer::Impl {
         segment_pick(shaders.program("segment.vert", "id.frag")),
         point(shaders.program("point.vert", "point.frag")),
         point_pick(shaders.program("point.vert", "id.frag")),
-        face_vao(gl::make_vertex_array()),
-        positions(gl::make_buffer()),
-        normals(gl::make_buffer()),
-        indices(gl::make_buffer()),
         changed{gl::BufferTexture(GL_R8UI), gl::BufferTexture(GL_R8UI), gl::BufferTexture(GL_R8UI),
                 gl::BufferTexture(GL_R8UI)} {
-    glBindVertexArray(face_vao.get());
-    glBindBuffer(GL_ARRAY_BUFFER, positions.get());
-    glEnableVertexAttribArray(0);
-    glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    glBindBuffer(GL_ARRAY_BUFFER, normals.get());
-    glEnableVertexAttribArray(1);
-    glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
-    glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, indices.get());
-    glBindVertexArray(0);
     GLint max_texels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
     max_buffer_texels = size_t(std::max(max_texels, 0));
   }
 
-  void upload(const HalfedgeMesh& mesh);
-  void refresh_changed(const std::vector<ElementRef>& list);
+  void upload(const HalfedgeMesh& mesh, std::string reason);
+  bool patch(const HalfedgeMesh& mesh, const MeshChange& change);
+  void uploaded_state(const HalfedgeMesh& mesh);
+  void refresh_changed(std::span<const ElementRef> list, uint64_t key);
   void refresh_focus(ElementRef hovered, ElementRef selected);
   void ensure_arrows();
   void draw_faces(const gl::CameraUniforms& uniforms, const OrbitCamera& camera, const ViewOptions& options,
@@ -184,18 +185,16 @@ struct MeshRenderer::Impl {
   void draw_ids(const gl::CameraUniforms& uniforms, bool halfedges);
   void ensure_pick_target(Viewport viewport);
   void count_gpu_bytes();
+  PickKey pick_key_for(const OrbitCamera& camera, Viewport viewport) const;
+  bool front_only() const {
+    return is_large_mesh(stats.triangles, style) && stats.boundary_edges == 0 && stats.skipped_faces == 0;
+  }
 
   ShaderProgram face, face_pick, segment, segment_pick, point, point_pick;
-  gl::VertexArray face_vao;
-  gl::Buffer positions, normals, indices;
-  size_t index_count = 0;
-  size_t vertex_bytes = 0;  // of each of `positions` and `normals`
-  gl::BufferTexture triangle_faces{GL_R32UI};
-  gl::BufferTexture face_normals{GL_RGBA32F};
+  gl::GpuMesh gpu;
+  SlotState slots;  // what the buffers describe besides themselves (counts, references, boundary list)
   std::array<gl::BufferTexture, kKindSlots> changed;
-  std::array<std::vector<uint8_t>, kKindSlots> changed_flags;
-  gl::SegmentBatch edges, boundary_edges, arrows;
-  gl::PointBatch points;
+  std::array<std::vector<uint8_t>, kKindSlots> changed_flags;  // CPU copies, sized to what is allocated
   gl::SegmentBatch changed_edges, changed_arrows, focus_edges, focus_arrows;
   gl::PointBatch changed_points, focus_points;
   size_t max_buffer_texels = 0;
@@ -205,12 +204,13 @@ struct MeshRenderer::Impl {
   uint64_t version = 0;
   MeshKey uploaded_key;
   bool uploaded = false;
-  BoundingBox bounds;
-  // Keys of the derived uploads; each is refreshed when its key no longer matches.
-  uint64_t arrows_upload = ~uint64_t(0);   // the `uploads` count the arrows were built for
-  uint64_t changed_upload = ~uint64_t(0);
-  std::vector<ElementRef> changed_list;
-  uint64_t focus_upload = ~uint64_t(0);
+  // +1 whenever the geometry changes (a full build or a patch); derived uploads are keyed by it.
+  uint64_t geometry = 0;
+  uint64_t arrows_geometry = ~uint64_t(0);  // the geometry the arrows show
+  uint64_t changed_geometry = ~uint64_t(0);
+  uint64_t changed_key = 0;
+  std::vector<ElementRef> changed_list;  // the list the flags show
+  uint64_t focus_geometry = ~uint64_t(0);
   ElementRef focus_hovered, focus_selected;
 
   ViewOptions last_options;
@@ -224,85 +224,130 @@ struct MeshRenderer::Impl {
   RenderStyle style;
 };
 
-void MeshRenderer::Impl::upload(const HalfedgeMesh& source) {
-  const MeshGeometry g = build_mesh_geometry(source);
-  // Buffer textures: one texel per triangle, face, or element flag; two per edge segment.
-  const size_t largest = std::max({g.triangle_count(), g.face_normals.size(), size_t(source.vertex_capacity()),
-                                   size_t(source.halfedge_capacity()), 2 * g.edges.size()});
+void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) {
+  const size_t sent = gl::uploaded_bytes();
+  SlotGeometry g = build_slot_geometry(source);
+  // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot.
+  const size_t largest = gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
+                                                     size_t(source.halfedge_capacity()), 2 * g.edges.size(),
+                                                     g.extra_faces.size()}));
   if (largest > max_buffer_texels) {
     throw RenderError("the mesh is too large to draw: it needs " + std::to_string(largest) +
                       " texels in one buffer texture, and this OpenGL allows " + std::to_string(max_buffer_texels));
   }
-  glBindBuffer(GL_ARRAY_BUFFER, positions.get());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.positions.size() * sizeof(glm::vec3)), g.positions.data(),
-               GL_STATIC_DRAW);
-  glBindBuffer(GL_ARRAY_BUFFER, normals.get());
-  glBufferData(GL_ARRAY_BUFFER, GLsizeiptr(g.smooth_normals.size() * sizeof(glm::vec3)), g.smooth_normals.data(),
-               GL_STATIC_DRAW);
-  glBindVertexArray(face_vao.get());
-  glBufferData(GL_ELEMENT_ARRAY_BUFFER, GLsizeiptr(g.triangle_corners.size() * sizeof(uint32_t)),
-               g.triangle_corners.data(), GL_STATIC_DRAW);
-  glBindVertexArray(0);
-  index_count = g.triangle_corners.size();
-  vertex_bytes = g.positions.size() * sizeof(glm::vec3);
+  gpu.upload(g);
+  slots = slot_state(source, g);
+  stats.arrows = 0;
+  arrows_geometry = ~uint64_t(0);  // stale until asked for again
+  gpu.arrows.set_count(0);
+  uploaded_state(source);
+  ++stats.uploads;
+  stats.last_update_patch = false;
+  stats.last_update_bytes = gl::uploaded_bytes() - sent;
+  stats.last_update_slots = g.positions.size() + g.face_normals.size() + g.edges.size();
+  stats.last_rebuild_reason = std::move(reason);
+}
 
-  triangle_faces.upload(g.triangle_faces.data(), g.triangle_faces.size() * sizeof(uint32_t), GL_STATIC_DRAW);
-  std::vector<glm::vec4> normals4(g.face_normals.size());
-  for (size_t i = 0; i < normals4.size(); ++i) normals4[i] = glm::vec4(g.face_normals[i], 0.0f);
-  face_normals.upload(normals4.data(), normals4.size() * sizeof(glm::vec4), GL_STATIC_DRAW);
-
-  edges.upload(g.edges.data(), g.edges.size(), GL_STATIC_DRAW);
-  std::vector<EdgeSegment> boundary;
-  for (const EdgeSegment& s : g.edges) {
-    if (s.flags & kEdgeBoundaryFlag) boundary.push_back(s);
-  }
-  boundary_edges.upload(boundary.data(), boundary.size(), GL_STATIC_DRAW);
-  points.upload(g.points.data(), g.points.size(), GL_STATIC_DRAW);
-
+// The bookkeeping both kinds of update share, once the buffers show `source`.
+void MeshRenderer::Impl::uploaded_state(const HalfedgeMesh& source) {
   mesh = &source;
   version = source.version();
   uploaded_key = MeshKey::of(source);
   uploaded = true;
-  bounds = g.bounds;
   pick_valid = false;
-  ++stats.uploads;
-  stats.triangles = g.triangle_count();
-  stats.edges = g.edges.size();
-  stats.boundary_edges = boundary.size();
-  stats.vertices = g.points.size();
-  stats.arrows = 0;
-  stats.skipped_faces = g.skipped_faces.size();
-  stats.skipped_edges = g.skipped_edges.size();
-  arrows.upload(nullptr, 0, GL_STATIC_DRAW);  // stale until asked for again
+  ++geometry;
+  stats.triangles = slots.counts.triangles;
+  stats.edges = slots.counts.edges;
+  stats.boundary_edges = slots.boundary_edges.size();
+  stats.vertices = slots.counts.vertices;
+  stats.skipped_faces = slots.counts.skipped_faces;
+  stats.skipped_edges = slots.counts.skipped_edges;
   count_gpu_bytes();
 }
 
-void MeshRenderer::Impl::refresh_changed(const std::vector<ElementRef>& list) {
-  if (changed_upload == stats.uploads && list == changed_list) return;
+bool MeshRenderer::Impl::patch(const HalfedgeMesh& source, const MeshChange& change) {
+  const HalfedgeMesh& before = *change.before;
+  // The change must start from exactly the state the buffers show and end at the mesh given.
+  if (!uploaded || mesh != &source || version != change.version_before || before.version() != change.version_before ||
+      source.version() != change.version_after || !(MeshKey::of(before).sizes == uploaded_key.sizes)) {
+    return false;
+  }
+  const size_t sent = gl::uploaded_bytes();
+  const bool with_arrows = arrows_geometry == geometry;
+  std::string why;
+  const std::optional<SlotPatch> p = plan_update(before, source, change.elements, slots, with_arrows, why);
+  if (!p || !gpu.fits(*p) || (with_arrows && !gpu.arrows_fit(*p))) {
+    upload(source, p ? "the mesh outgrew its buffers" : why);
+    return true;
+  }
+  gpu.apply(*p);
+  if (with_arrows) gpu.apply_arrows(*p);
+  uploaded_state(source);
+  if (with_arrows) arrows_geometry = geometry;
+  ++stats.patches;
+  stats.last_update_patch = true;
+  stats.last_update_bytes = gl::uploaded_bytes() - sent;
+  stats.last_update_slots = p->slots();
+  return true;
+}
+
+void MeshRenderer::Impl::refresh_changed(std::span<const ElementRef> list, uint64_t key) {
+  const bool same_list = key != 0 ? key == changed_key : std::equal(list.begin(), list.end(), changed_list.begin(),
+                                                                    changed_list.end());
+  if (changed_geometry == geometry && same_list) return;
   const std::array<uint32_t, kKindSlots> capacity = {mesh->vertex_capacity(), mesh->halfedge_capacity(),
                                                      mesh->edge_capacity(), mesh->face_capacity()};
-  for (int k = 0; k < kKindSlots; ++k) changed_flags[k].assign(capacity[k], 0);
+  // Flags: the previous list's cleared, the new list's set, and only those bytes sent, unless a kind outgrew
+  // its allocation (then that kind is sent whole, with room to grow).
+  std::array<std::vector<uint32_t>, kKindSlots> touched;
+  for (const ElementRef& ref : changed_list) {
+    const int slot = slot_of(ref.kind);
+    if (slot >= 0 && ref.valid() && ref.index < changed_flags[slot].size()) {
+      changed_flags[slot][ref.index] = 0;
+      touched[slot].push_back(ref.index);
+    }
+  }
+  std::array<bool, kKindSlots> reallocate{};
+  for (int k = 0; k < kKindSlots; ++k) {
+    if (changed_flags[k].size() < capacity[k] || changed_flags[k].empty()) {
+      changed_flags[k].resize(gl::with_headroom(capacity[k]), 0);
+      reallocate[k] = true;
+    }
+  }
   ItemLists items;
   for (ElementRef ref : list) {
     const int slot = slot_of(ref.kind);
-    if (slot < 0 || !ref.valid() || ref.index >= changed_flags[slot].size()) continue;
+    if (slot < 0 || !ref.valid() || ref.index >= capacity[slot]) continue;
     changed_flags[slot][ref.index] = 1;
+    touched[slot].push_back(ref.index);
     items.add(*mesh, ref);
   }
   for (int k = 0; k < kKindSlots; ++k) {
-    changed[k].upload(changed_flags[k].data(), changed_flags[k].size(), GL_DYNAMIC_DRAW);
+    if (reallocate[k]) {
+      changed[k].allocate(changed_flags[k].size(), changed_flags[k].data(), changed_flags[k].size());
+      continue;
+    }
+    std::sort(touched[k].begin(), touched[k].end());
+    touched[k].erase(std::unique(touched[k].begin(), touched[k].end()), touched[k].end());
+    for (size_t i = 0; i < touched[k].size();) {
+      size_t j = i + 1;
+      while (j < touched[k].size() && touched[k][j] == touched[k][i] + (j - i)) ++j;
+      changed[k].write(touched[k][i], &changed_flags[k][touched[k][i]], j - i);
+      i = j;
+    }
   }
   changed_edges.upload(items.edges.data(), items.edges.size(), GL_DYNAMIC_DRAW);
   changed_arrows.upload(items.arrows.data(), items.arrows.size(), GL_DYNAMIC_DRAW);
   changed_points.upload(items.points.data(), items.points.size(), GL_DYNAMIC_DRAW);
-  changed_list = list;
-  changed_upload = stats.uploads;
+  changed_list.assign(list.begin(), list.end());
+  changed_key = key;
+  changed_geometry = geometry;
   ++stats.highlight_uploads;
   count_gpu_bytes();
 }
 
 void MeshRenderer::Impl::refresh_focus(ElementRef hovered, ElementRef selected) {
-  if (focus_upload == stats.uploads && hovered == focus_hovered && selected == focus_selected) return;
+  if (focus_geometry == geometry && hovered == focus_hovered && selected == focus_selected) return;
   ItemLists items;
   items.add(*mesh, hovered);
   if (selected != hovered) items.add(*mesh, selected);
@@ -311,36 +356,45 @@ void MeshRenderer::Impl::refresh_focus(ElementRef hovered, ElementRef selected) 
   focus_points.upload(items.points.data(), items.points.size(), GL_STREAM_DRAW);
   focus_hovered = hovered;
   focus_selected = selected;
-  focus_upload = stats.uploads;
+  focus_geometry = geometry;
   ++stats.highlight_uploads;
 }
 
 void MeshRenderer::Impl::ensure_arrows() {
-  if (arrows_upload == stats.uploads) return;
-  arrows_upload = stats.uploads;
-  // Three segments of two texels per halfedge; past the driver's limit (22 million halfedges on
+  if (arrows_geometry == geometry) return;
+  arrows_geometry = geometry;
+  // Three segments of two texels per halfedge slot; past the driver's limit (22 million halfedges on
   // llvmpipe) there are no arrows, which would be unreadable at that size anyway.
-  if (6 * size_t(mesh->num_halfedges()) > max_buffer_texels) return;
-  const std::vector<HalfedgeArrow> built = build_halfedge_arrows(*mesh);
-  std::vector<EdgeSegment> segments;
-  segments.reserve(built.size() * 3);
-  for (const HalfedgeArrow& arrow : built) add_arrow_segments(arrow, segments);
-  arrows.upload(segments.data(), segments.size(), GL_STATIC_DRAW);
-  stats.arrows = built.size();
+  if (6 * gl::with_headroom(mesh->halfedge_capacity()) > max_buffer_texels) {
+    gpu.arrows.set_count(0);
+    stats.arrows = 0;
+    arrows_geometry = ~uint64_t(0);
+    return;
+  }
+  gpu.upload_arrows(build_slot_arrows(*mesh));
+  stats.arrows = mesh->halfedge_capacity();
   ++stats.arrow_uploads;
   pick_valid = false;
   count_gpu_bytes();
 }
 
 void MeshRenderer::Impl::count_gpu_bytes() {
-  size_t total = index_count * sizeof(uint32_t) + 2 * vertex_bytes;
-  total += triangle_faces.bytes() + face_normals.bytes();
+  size_t total = gpu.bytes();
   for (const auto& flags : changed) total += flags.bytes();
-  for (const gl::SegmentBatch* b : {&edges, &boundary_edges, &arrows, &changed_edges, &changed_arrows}) {
-    total += b->bytes();
-  }
-  total += points.bytes() + changed_points.bytes();
+  for (const gl::SegmentBatch* b : {&changed_edges, &changed_arrows}) total += b->bytes();
+  total += changed_points.bytes();
   stats.gpu_bytes = total;
+}
+
+PickKey MeshRenderer::Impl::pick_key_for(const OrbitCamera& camera, Viewport viewport) const {
+  PickKey key;
+  key.mesh = mesh;
+  key.version = version;
+  key.view_projection = camera.view_projection(viewport);
+  key.width = viewport.width;
+  key.height = viewport.height;
+  key.halfedges = last_options.show_halfedges;
+  return key;
 }
 
 void MeshRenderer::Impl::draw_faces(const gl::CameraUniforms& uniforms, const OrbitCamera& camera,
@@ -362,13 +416,11 @@ void MeshRenderer::Impl::draw_faces(const gl::CameraUniforms& uniforms, const Or
   set_colour(face, "u_selected_colour", style.selected);
   set_colour(face, "u_hovered_colour", style.hovered);
   set_colour(face, "u_changed_colour", style.changed);
-  triangle_faces.bind(0);
-  face_normals.bind(1);
+  gpu.face_normals.bind(1);
   changed[kFaceSlot].bind(2);
-  glUniform1i(face.uniform("u_triangle_faces"), 0);
   glUniform1i(face.uniform("u_face_normals"), 1);
   glUniform1i(face.uniform("u_changed"), 2);
-  draw_triangles(face_vao.get(), index_count);
+  draw_triangles(gpu, face, front_only());
 }
 
 void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniforms, const ViewOptions& options,
@@ -401,12 +453,12 @@ void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniform
   const bool hairlines = style.wire_width <= 1.0f;
   if (options.wireframe && hairlines) {
     glUniform1i(segment.uniform("u_lines"), 1);
-    edges.draw_lines();
+    gpu.edges.draw_lines();
     glUniform1i(segment.uniform("u_lines"), 0);
   } else if (options.wireframe) {
-    edges.draw();
+    gpu.edges.draw();
   }
-  if (options.show_boundary && (!options.wireframe || hairlines)) boundary_edges.draw();
+  if (options.show_boundary && (!options.wireframe || hairlines)) gpu.boundary_edges.draw();
   changed_edges.draw();
   focus_edges.draw();
 
@@ -417,7 +469,7 @@ void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniform
   glUniform1ui(segment.uniform("u_selected"), id_if(highlights.selected, ElementKind::Halfedge));
   glUniform1ui(segment.uniform("u_hovered"), id_if(highlights.hovered, ElementKind::Halfedge));
   changed[kHalfedgeSlot].bind(0);
-  if (options.show_halfedges) arrows.draw();
+  if (options.show_halfedges) gpu.arrows.draw();
   changed_arrows.draw();
   focus_arrows.draw();
 
@@ -436,7 +488,8 @@ void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniform
   glUniform1ui(point.uniform("u_selected"), id_if(highlights.selected, ElementKind::Vertex));
   glUniform1ui(point.uniform("u_hovered"), id_if(highlights.hovered, ElementKind::Vertex));
   changed[kVertexSlot].bind(0);
-  if (options.show_vertices) points.draw();
+  glUniform1i(point.uniform("u_hide_invalid"), 1);
+  if (options.show_vertices) gpu.points.draw();
   changed_points.draw();
   focus_points.draw();
 }
@@ -445,9 +498,7 @@ void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfe
   face_pick.use();
   gl::set_camera(face_pick, uniforms);
   glUniform1ui(face_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Face));
-  glUniform1i(face_pick.uniform("u_triangle_faces"), 0);
-  triangle_faces.bind(0);
-  draw_triangles(face_vao.get(), index_count);
+  draw_triangles(gpu, face_pick, front_only());
 
   // Edges and arrows as hairlines: pick() reads a window around the cursor, so one within its radius is
   // found (and wins over the face by priority); hairlines cost llvmpipe half what wide segments do.
@@ -463,10 +514,10 @@ void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfe
   glUniform1f(segment_pick.uniform("u_cap"), 0.0f);
   glUniform1ui(segment_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Edge));
   glDepthMask(GL_FALSE);
-  edges.draw_lines();
+  gpu.edges.draw_lines();
   if (halfedges) {
     glUniform1ui(segment_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Halfedge));
-    arrows.draw_lines();
+    gpu.arrows.draw_lines();
   }
   glDepthMask(GL_TRUE);
 
@@ -475,7 +526,8 @@ void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfe
   glUniform1i(point_pick.uniform("u_element_colours"), 0);
   glUniform1f(point_pick.uniform("u_pick_size"), 1.0f);  // one pixel each: dots would cover neighbours
   glUniform1ui(point_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Vertex));
-  points.draw();
+  glUniform1i(point_pick.uniform("u_hide_invalid"), 1);
+  gpu.points.draw();
 }
 
 void MeshRenderer::Impl::ensure_pick_target(Viewport viewport) {
@@ -503,10 +555,11 @@ MeshRenderer::MeshRenderer(const ShaderLibrary& shaders) : impl_(std::make_uniqu
 
 MeshRenderer::~MeshRenderer() = default;
 
-void MeshRenderer::update(const HalfedgeMesh& mesh) {
+void MeshRenderer::update(const HalfedgeMesh& mesh, const MeshChange* change) {
   Impl& r = *impl_;
   if (r.uploaded && r.uploaded_key == MeshKey::of(mesh)) return;
-  r.upload(mesh);
+  if (change != nullptr && change->before != nullptr && r.patch(mesh, *change)) return;
+  r.upload(mesh, !r.uploaded ? "first upload" : change == nullptr ? "no change description" : "another mesh state");
 }
 
 void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const ViewOptions& options,
@@ -514,7 +567,7 @@ void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const View
   Impl& r = *impl_;
   r.last_options = options;
   if (!r.uploaded || viewport.width < 1 || viewport.height < 1) return;
-  r.refresh_changed(highlights.changed);
+  r.refresh_changed(highlights.changed, highlights.changed_key);
   r.refresh_focus(highlights.hovered, highlights.selected);
   if (options.show_halfedges) r.ensure_arrows();
 
@@ -524,8 +577,14 @@ void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const View
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
+  // A large mesh is drawn single-sampled even into a multisampled framebuffer (see RenderStyle).
+  const bool multisample = glIsEnabled(GL_MULTISAMPLE) == GL_TRUE;
+  const bool single_sample = multisample && is_large_mesh(r.stats.triangles, r.style);
+  if (single_sample) glDisable(GL_MULTISAMPLE);
   r.draw_faces(uniforms, camera, options, highlights);
   r.draw_lines_and_points(uniforms, options, highlights);
+  if (single_sample) glEnable(GL_MULTISAMPLE);
+  r.stats.multisampled = multisample && !single_sample;
   glBindVertexArray(0);
   glUseProgram(0);
 }
@@ -538,15 +597,10 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
 
   gl::FramebufferScope restore;
   r.ensure_pick_target(viewport);
-  PickKey key;
-  key.mesh = r.mesh;
-  key.version = r.version;
-  key.view_projection = camera.view_projection(viewport);
-  key.width = viewport.width;
-  key.height = viewport.height;
-  key.halfedges = halfedges;
+  const PickKey key = r.pick_key_for(camera, viewport);
   glBindFramebuffer(GL_FRAMEBUFFER, r.pick_framebuffer.get());
   if (!r.pick_valid || !(key == r.pick_key)) {
+    const auto start = std::chrono::steady_clock::now();
     glViewport(0, 0, viewport.width, viewport.height);
     const GLuint background[4] = {0, 0, 0, 0};
     const GLfloat far_depth = 1.0f;
@@ -563,6 +617,9 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
     r.pick_key = key;
     r.pick_valid = true;
     ++r.stats.id_passes;
+    glFinish();  // so the time below is the pass's, not the next read's
+    r.stats.last_id_pass_ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
   }
 
   // The window around the cursor, clamped to the viewport; OpenGL's rows count from the bottom.
@@ -601,9 +658,24 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
   return nearest;
 }
 
+bool MeshRenderer::pick_is_cheap(const OrbitCamera& camera, Viewport viewport) const {
+  const Impl& r = *impl_;
+  return !r.uploaded || (r.pick_valid && r.pick_size.width == viewport.width && r.pick_size.height == viewport.height &&
+                         r.pick_key_for(camera, viewport) == r.pick_key);
+}
+
+void MeshRenderer::read_gpu_buffers(SlotGeometry& out, std::vector<EdgeSegment>& arrows) const {
+  const Impl& r = *impl_;
+  const bool with_arrows = r.arrows_geometry == r.geometry;
+  r.gpu.read(out, with_arrows ? &arrows : nullptr);
+  if (!with_arrows) arrows.clear();
+  out.counts = r.slots.counts;
+  out.bounds = r.slots.bounds;
+}
+
 void MeshRenderer::invalidate() { impl_->uploaded = false; }
 
-const BoundingBox& MeshRenderer::bounds() const { return impl_->bounds; }
+const BoundingBox& MeshRenderer::bounds() const { return impl_->slots.bounds; }
 const RenderStats& MeshRenderer::stats() const { return impl_->stats; }
 RenderStyle& MeshRenderer::style() { return impl_->style; }
 

@@ -2,20 +2,29 @@
 // selection and "changed" colours) and picks the element under a pixel. Needs a current OpenGL 3.3 core
 // context (a GLFW window's or an OffscreenContext) for its whole life.
 //
-// Per frame, the app calls:   update(mesh);  draw(camera, viewport, options, highlights);
+// Per frame, the app calls:   update(mesh[, change]);  draw(camera, viewport, options, highlights);
 // and on mouse moves:         pick(camera, viewport, x, y)
 //
 // Invariants and costs:
-// - update() rebuilds GPU buffers only when it sees a different mesh object or a new mesh.version() (or,
-//   as a safety net, different element counts); an idle frame does no per-element work on the CPU
-//   (stats().uploads counts the rebuilds, so tests and the benchmark can prove it). A mesh object that
-//   is assigned another mesh (opening a file into the same document) must not keep its old version:
-//   call bump_version_above(old version) on it, or invalidate() here.
-// - A selection or hover change only sets uniforms; a new `changed` list re-uploads one byte per element
-//   of each kind; neither touches the geometry buffers.
+// - The GPU buffers are laid out by element slot (slot_geometry.h) and always hold exactly what a full build of
+//   the last updated mesh state gives (tests compare them byte for byte after long runs of edits).
+// - update() does nothing when it sees the mesh object and version it last saw (or, as a safety net, other
+//   element counts mean a change): an idle frame or a camera move does no per-element work on the CPU and
+//   uploads nothing (stats().uploads, patches and last_update_bytes prove it).
+// - A change described by a MeshChange (the document's diff: the state before and every element that changed)
+//   is applied in place: only the slots whose values change are recomputed and rewritten (glBufferSubData of
+//   runs of slots), new elements go into room kept at the end, in time proportional to the edit, not the mesh
+//   (incremental_update.h). Anything else, or a change the planner cannot certify (a broken mesh, a polygon
+//   touched), is a full rebuild. A mesh object that is assigned another mesh (opening a file into the same
+//   document) must not keep its old version: call bump_version_above(old version) on it, or invalidate() here.
+// - A selection or hover change only sets uniforms; a new `changed` list rewrites the flag bytes of the elements
+//   it and the previous list name; neither touches the geometry buffers. A list with the same nonzero key as the
+//   last one is not read at all.
 // - draw() and pick() read the mesh given to the last update() for the few highlighted elements and,
 //   when first asked for them, the halfedge arrows: that mesh must still exist (the app calls update()
 //   every frame before draw(), so it always does).
+// - A large mesh (RenderStyle::large_mesh_triangles) is drawn single-sampled, whatever the framebuffer has, and
+//   when it is closed (no boundary edge, no face skipped) without the pass that shows back sides.
 // - A broken mesh (left so by a script) is drawn as far as it can be walked (mesh_geometry.h): faces
 //   whose cycle does not close are skipped and counted, nothing loops or reads out of range.
 // - Picking is exact: an id pass renders faces, then edges and halfedge arrows (when shown) as hairlines
@@ -23,7 +32,8 @@
 //   reads a small window around the cursor and prefers vertex > halfedge > edge > face within a few
 //   pixels (pick_id.h); among the vertices seen, the one projecting nearest the cursor. The id
 //   buffer is redrawn only when the camera, viewport, mesh or options changed since the last pick, so
-//   hovering over a still view reads a few pixels only.
+//   hovering over a still view reads a few pixels only; pick_is_cheap() says whether the next pick would
+//   redraw it (the app waits for the mouse to rest after a camera move before it hovers).
 // - Edges and arrows are drawn over the faces without z-fighting: faces are pushed back with polygon
 //   offset. draw() leaves depth testing on and binds program 0 and vertex array 0 when it returns; it
 //   does not clear (the caller clears to style().background or its own colour).
@@ -31,22 +41,34 @@
 
 #include <cstdint>
 #include <memory>
+#include <span>
+#include <string>
+#include <vector>
 
 #include "core/halfedge_mesh.h"
 #include "render/camera.h"
 #include "render/shader_library.h"
+#include "render/slot_geometry.h"
 #include "render/view_options.h"
 
 namespace meshedit {
 
 struct RenderStats {
-  uint64_t uploads = 0;            // geometry rebuilds by update()
-  uint64_t arrow_uploads = 0;      // halfedge-arrow rebuilds (only while arrows are shown)
+  uint64_t uploads = 0;            // full geometry rebuilds by update()
+  uint64_t patches = 0;            // in-place updates by update() (a MeshChange it could apply)
+  uint64_t arrow_uploads = 0;      // full halfedge-arrow rebuilds (only while arrows are shown)
   uint64_t highlight_uploads = 0;  // rebuilds of the changed flags or the highlighted items
   uint64_t id_passes = 0;          // id-buffer redraws by pick()
-  size_t triangles = 0, edges = 0, boundary_edges = 0, vertices = 0, arrows = 0;
+  bool last_update_patch = false;  // the last update() that changed anything was a patch (not a full rebuild)
+  size_t last_update_bytes = 0;    // bytes the last update() that changed anything sent to the GPU
+  size_t last_update_slots = 0;    // slots it rewrote (every slot for a full rebuild)
+  double last_id_pass_ms = 0.0;    // wall time of the last id-buffer redraw (to glFinish)
+  std::string last_rebuild_reason; // why the last full rebuild was not a patch ("no change description", ...)
+  size_t triangles = 0, edges = 0, boundary_edges = 0, vertices = 0;  // drawn
+  size_t arrows = 0;                            // halfedge slots in the arrow batch (when built)
   size_t skipped_faces = 0, skipped_edges = 0;  // live elements the last update could not draw
   size_t gpu_bytes = 0;                         // buffer memory the renderer holds
+  bool multisampled = false;                    // the last draw() used multisampling (off for large meshes)
 };
 
 class MeshRenderer {
@@ -57,7 +79,15 @@ class MeshRenderer {
   MeshRenderer(const MeshRenderer&) = delete;
   MeshRenderer& operator=(const MeshRenderer&) = delete;
 
-  void update(const HalfedgeMesh& mesh);
+  // What changed since the state the renderer last saw: `before` is that state (a copy; the document keeps it),
+  // `elements` every element with a field that differs (each once), and the versions of the updated mesh object
+  // before and after. update() trusts it only when the versions and element counts match what it holds.
+  struct MeshChange {
+    const HalfedgeMesh* before = nullptr;
+    std::span<const ElementRef> elements;
+    uint64_t version_before = 0, version_after = 0;
+  };
+  void update(const HalfedgeMesh& mesh, const MeshChange* change = nullptr);
   // Forces the next update() to rebuild, whatever the version says.
   void invalidate();
   void draw(const OrbitCamera& camera, Viewport viewport, const ViewOptions& options, const Highlights& highlights);
@@ -65,6 +95,12 @@ class MeshRenderer {
   // the background, a pixel outside the viewport, or before any update(). Halfedges are pickable only
   // when the last draw() showed them. Restores the caller's framebuffer and viewport.
   ElementRef pick(const OrbitCamera& camera, Viewport viewport, int x, int y);
+  // True when pick() at this camera and viewport would only read pixels (the id buffer is current).
+  bool pick_is_cheap(const OrbitCamera& camera, Viewport viewport) const;
+
+  // The GPU buffers read back in slot layout (tests: they must equal build_slot_geometry of the mesh), with the
+  // arrows when they are built (else `arrows` is emptied). Slow; not for frames.
+  void read_gpu_buffers(SlotGeometry& out, std::vector<EdgeSegment>& arrows) const;
 
   // Bounding box of the uploaded mesh (for OrbitCamera::fit).
   const BoundingBox& bounds() const;

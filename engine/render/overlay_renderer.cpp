@@ -89,6 +89,7 @@ void OverlayRenderer::draw(const OrbitCamera& camera, Viewport viewport, const O
   r.point.use();
   gl::set_camera(r.point, uniforms);
   glUniform1i(r.point.uniform("u_element_colours"), 0);
+  glUniform1i(r.point.uniform("u_hide_invalid"), 0);
   glUniform1f(r.point.uniform("u_pick_size"), 0.0f);
   r.points.draw();
   glEnable(GL_DEPTH_TEST);

@@ -6,7 +6,9 @@
 //   boundary edges  green       faces  blue-grey, their back sides  grey-red (an inside-out face shows)
 #pragma once
 
-#include <vector>
+#include <cstddef>
+#include <cstdint>
+#include <span>
 
 #include <glm/vec4.hpp>
 
@@ -24,10 +26,14 @@ struct ViewOptions {
 
 // Hovered and selected are one element each (an invalid ElementRef for none); `changed` lists what the
 // last operation touched. A boundary loop's ref is ignored (it has no area to colour).
+// `changed` is not owned (the app points it at the document's list; it must outlive draw()). With a nonzero
+// `changed_key`, equal keys promise an equal list (the app passes the document's last.serial), so a frame
+// with the same key reads nothing of the list; with key 0 the renderer compares the list itself.
 struct Highlights {
   ElementRef hovered;
   ElementRef selected;
-  std::vector<ElementRef> changed;
+  std::span<const ElementRef> changed;
+  uint64_t changed_key = 0;
 };
 
 struct RenderStyle {
@@ -48,6 +54,14 @@ struct RenderStyle {
   float arrow_width = 1.5f;
   float vertex_size = 7.0f;
   float highlight_vertex_size = 11.0f;
+  // Above this many triangles a mesh is "large": drawn without multisampling (which doubles llvmpipe's frame
+  // time and shows little on triangles a few pixels wide) and, when closed, without its back sides (unseen from
+  // outside); the app turns the wireframe off by default (at a million triangles it costs more than the faces and
+  // paints the view black). At or below it nothing changes.
+  size_t large_mesh_triangles = 100000;
 };
+
+// Whether a mesh of this many triangles is drawn the cheap way (see RenderStyle::large_mesh_triangles).
+inline bool is_large_mesh(size_t triangles, const RenderStyle& style) { return triangles > style.large_mesh_triangles; }
 
 }  // namespace meshedit

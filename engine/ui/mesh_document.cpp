@@ -24,9 +24,12 @@ std::string plural(size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// Replaces doc.last by the change from `before` to the current mesh.
-void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before) {
+// Replaces doc.last by the change from `before` to the current mesh; `previous`: `before` is the state the document
+// showed until now.
+void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before, bool previous = true) {
   LastChange last;
+  if (previous) last.version_before = before.version();
+  last.version_after = doc.mesh.version();
   last.label = std::move(label);
   last.change_count = count_changes(before, doc.mesh, doc.limits.max_listed_changes);
   last.listed = last.change_count <= doc.limits.max_listed_changes;
@@ -168,11 +171,12 @@ bool undo(MeshDocument& doc) { return step_history(doc, false); }
 bool redo(MeshDocument& doc) { return step_history(doc, true); }
 
 void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from) {
+  const bool previous = !from;
   HalfedgeMesh before = from ? std::move(*from) : doc.mesh;
   const uint64_t old_version = doc.mesh.version();
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // caches keyed by version must not take it for the old state
-  record_last_change(doc, std::move(label), std::move(before));
+  record_last_change(doc, std::move(label), std::move(before), previous);
   set_message(doc, Severity::Info, change_summary(doc));
 }
 

@@ -80,6 +80,11 @@ struct LastChange {
   ChangeIndex index;                       // built from `changes`
   std::optional<HalfedgeMesh> before;      // the mesh before the change (absent before the first change)
   uint64_t serial = 0;                     // +1 every time this struct is replaced
+  // mesh.version() just before and after the change, when `before` is exactly the state the document showed
+  // until then (not after show_state with a `from`): a renderer that showed that version can apply `changes`
+  // in place instead of rebuilding. Absent otherwise.
+  std::optional<uint64_t> version_before;
+  uint64_t version_after = 0;
 };
 
 struct DocumentLimits {

@@ -71,6 +71,10 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
         if (pressed) selection.selected = doc.message.element;
       }
     }
+    if (!state.note.empty()) {
+      ImGui::SameLine(0.0f, 24.0f);
+      ImGui::TextDisabled("%s", state.note.c_str());
+    }
     ImGui::SameLine(0.0f, 24.0f);
     if (doc.history.can_undo()) ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
     if (doc.history.can_redo()) {

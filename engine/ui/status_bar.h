@@ -1,6 +1,6 @@
 // The status bar along the bottom of the window: V/E/F/H counts, Euler characteristic, validation state (green
 // "valid", or red with the first broken invariant and a button that selects its element), the message line,
-// undo/redo hints and the frame time.
+// a standing note from the view (a large mesh drawn the cheap way), undo/redo hints and the frame time.
 //
 // Invariants:
 // - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
@@ -9,6 +9,7 @@
 #pragma once
 
 #include <cstddef>
+#include <string>
 
 #include "ui/element_link.h"
 #include "ui/mesh_document.h"
@@ -19,6 +20,7 @@ namespace meshedit {
 struct StatusBarState {
   size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
   UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
+  std::string note;  // a standing remark from the view ("large mesh: wireframe off (W)"); "" for none
 };
 
 // Draws the bar as a borderless window across the bottom of the main viewport. Returns its height in pixels,

@@ -1,26 +1,33 @@
-// render_bench: frame times of the mesh view on generated tori, offscreen through EGL (llvmpipe on a
-// machine without a GPU). Not a test: it prints numbers and asserts nothing.
+// render_bench: the window's costs on generated tori, offscreen through EGL (llvmpipe on a machine without a GPU),
+// and the pointer tables' frame at 6M+ halfedges. Not a test: it prints numbers and asserts nothing.
 //
-//   render_bench [--faces N[,N...]] [--frames F] [--size WxH] [--samples S]
-//   defaults: 10000,100000,1000000 faces, 10 frames, 1280x800, 4x multisampling
+//   render_bench [--faces N[,N...]] [--frames F] [--size WxH] [--samples S] [--tables-faces N] [--no-tables]
+//   defaults: 10000,100000,1000000 faces, 10 frames, 1280x800, 4x multisampling, tables on 1M faces subdivided once
 //
-// For each mesh: the first update() (CPU geometry + upload), the time of a clear alone, the frame time
-// (clear + draw + glFinish; minimum and median of F frames) with the wireframe on and off, update() on
-// an unchanged version (what every idle frame pays: no per-element work, the upload counter does not
-// move) against update() after one vertex moved (a full rebuild), and pick(): the first one redraws the
-// id buffer, the next ones at the same camera only read a few pixels.
+// For each mesh: the first update (CPU build + upload); a clear alone; the frame (clear + update + draw + glFinish;
+// minimum and median of F frames) as drawn before the large-mesh defaults (4x multisampling, wireframe) and as the
+// app now draws it by default (a large mesh: single-sampled, no wireframe); an idle update() and an orbit frame with
+// the counters that prove they do no per-element work; pick() with the id buffer redrawn and at the same camera;
+// update() after a flip, a split and a collapse (a patch of the touched slots) against a full rebuild, with the
+// bytes sent, and what the document's own bookkeeping of the flip costs (snapshot, diff).
+// Then the pointer tables (the halfedge tab) in the headless ImGui harness: the frame at the first row, the middle and
+// the end, and the worst frame of a scroll through a window's worth of rows.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <functional>
+#include <limits>
 #include <string>
 #include <vector>
 
 #include <epoxy/gl.h>
 
+#include "core/history.h"
+#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
+#include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
@@ -28,6 +35,9 @@
 #include "render/render_error.h"
 #include "render/render_target.h"
 #include "render/shader_library.h"
+#include "support/imgui_harness.h"
+#include "ui/mesh_document.h"
+#include "ui/pointer_tables.h"
 
 namespace {
 
@@ -45,6 +55,13 @@ const char* arg(int argc, char** argv, const char* name, const char* fallback) {
   return fallback;
 }
 
+bool flag(int argc, char** argv, const char* name) {
+  for (int i = 1; i < argc; ++i) {
+    if (std::strcmp(argv[i], name) == 0) return true;
+  }
+  return false;
+}
+
 std::vector<uint32_t> parse_counts(const std::string& text) {
   std::vector<uint32_t> counts;
   size_t start = 0;
@@ -60,7 +77,7 @@ std::vector<uint32_t> parse_counts(const std::string& text) {
 }
 
 struct Timing {
-  double min = 0.0, median = 0.0;
+  double min = 0.0, median = 0.0, max = 0.0;
 };
 
 Timing time_frames(int frames, const std::function<void()>& frame) {
@@ -71,7 +88,212 @@ Timing time_frames(int frames, const std::function<void()>& frame) {
     times.push_back(ms_since(start));
   }
   std::sort(times.begin(), times.end());
-  return {times.front(), times[times.size() / 2]};
+  return {times.front(), times[times.size() / 2], times.back()};
+}
+
+void line(const char* label, const char* format, double value, const std::string& note = {}) {
+  std::printf("  %-52s ", label);
+  std::printf(format, value);
+  if (!note.empty()) std::printf("  (%s)", note.c_str());
+  std::printf("\n");
+}
+
+std::vector<ElementRef> changed_elements(const HalfedgeMesh& before, const HalfedgeMesh& after) {
+  std::vector<ElementRef> out;
+  for (const FieldChange& c : diff(before, after)) {
+    if (out.empty() || !(out.back() == c.element)) out.push_back(c.element);
+  }
+  return out;
+}
+
+// An edge the operation accepts, searched from `start`.
+template <class Can>
+EdgeId edge_for(const HalfedgeMesh& mesh, uint32_t start, Can&& can) {
+  for (uint32_t i = start; i < mesh.edge_capacity(); ++i) {
+    if (can(mesh, EdgeId(i))) return EdgeId(i);
+  }
+  return EdgeId(0);
+}
+
+// Times update() after `op` changed the mesh: as a patch (with the change described) and as a full rebuild of the
+// same change (the same renderer, no description).
+void time_edit(MeshRenderer& renderer, HalfedgeMesh& mesh, const char* name,
+               const std::function<bool(HalfedgeMesh&)>& op) {
+  const HalfedgeMesh before = mesh;
+  if (!op(mesh)) {
+    std::printf("  %s refused\n", name);
+    return;
+  }
+  const std::vector<ElementRef> elements = changed_elements(before, mesh);
+  MeshRenderer::MeshChange change{&before, elements, before.version(), mesh.version()};
+  auto start = Clock::now();
+  renderer.update(mesh, &change);
+  glFinish();
+  const double patch_ms = ms_since(start);
+  const RenderStats patched = renderer.stats();
+  char label[96], note[160];
+  std::snprintf(label, sizeof label, "update() after a %s (patch)", name);
+  std::snprintf(note, sizeof note, "%zu elements changed, %zu slots, %zu bytes sent%s", elements.size(),
+                patched.last_update_slots, patched.last_update_bytes,
+                patched.patches == 0 ? "; NOT a patch" : "");
+  line(label, "%10.3f ms", patch_ms, note);
+  // The same state again as a full rebuild.
+  renderer.invalidate();
+  start = Clock::now();
+  renderer.update(mesh);
+  glFinish();
+  std::snprintf(label, sizeof label, "update() after a %s (full rebuild)", name);
+  std::snprintf(note, sizeof note, "%.1f MB sent", double(renderer.stats().last_update_bytes) / 1e6);
+  line(label, "%10.3f ms", ms_since(start), note);
+}
+
+void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& target, const ShaderLibrary& shaders) {
+  HalfedgeMesh mesh = build_halfedge_mesh(make_torus_with_faces(faces));
+  MeshRenderer renderer(shaders);
+  std::printf("\ntorus: %zu triangles, %zu vertices\n", mesh.num_faces(), mesh.num_vertices());
+
+  auto start = Clock::now();
+  renderer.update(mesh);
+  glFinish();
+  char note[160];
+  std::snprintf(note, sizeof note, "%.1f MB of GPU buffers", double(renderer.stats().gpu_bytes) / 1e6);
+  line("first update (build + upload)", "%10.2f ms", ms_since(start), note);
+  OrbitCamera camera;
+  camera.fit(renderer.bounds());
+
+  const Timing clear = time_frames(frames, [&] {
+    target.clear(renderer.style().background);
+    glFinish();
+  });
+  std::snprintf(note, sizeof note, "median %.2f", clear.median);
+  line("clear only (min)", "%10.2f ms", clear.min, note);
+
+  const bool large = is_large_mesh(renderer.stats().triangles, renderer.style());
+  const auto frame_time = [&](const ViewOptions& options, size_t large_threshold) {
+    const size_t saved = renderer.style().large_mesh_triangles;
+    renderer.style().large_mesh_triangles = large_threshold;
+    renderer.draw(camera, viewport, options, {});  // llvmpipe compiles shader variants on first use
+    glFinish();
+    const Timing t = time_frames(frames, [&] {
+      renderer.update(mesh);
+      target.clear(renderer.style().background);
+      renderer.draw(camera, viewport, options, {});
+      glFinish();
+    });
+    renderer.style().large_mesh_triangles = saved;
+    return t;
+  };
+  const size_t never = std::numeric_limits<size_t>::max();
+  ViewOptions faces_only, wireframe;
+  faces_only.wireframe = false;
+  const Timing old_faces = frame_time(faces_only, never), old_wire = frame_time(wireframe, never);
+  std::snprintf(note, sizeof note, "median %.2f", old_faces.median);
+  line("frame, faces, 4x MSAA (min)", "%10.2f ms", old_faces.min, note);
+  std::snprintf(note, sizeof note, "median %.2f; the default before", old_wire.median);
+  line("frame, faces + wireframe, 4x MSAA (min)", "%10.2f ms", old_wire.min, note);
+  ViewOptions app_default;
+  app_default.wireframe = !large;
+  const Timing now = frame_time(app_default, renderer.style().large_mesh_triangles);
+  std::snprintf(note, sizeof note, "median %.2f; %s", now.median,
+                large ? "large: single-sampled, wireframe off" : "small: unchanged, 4x MSAA + wireframe");
+  line("frame, the app's default now (min)", "%10.2f ms", now.min, note);
+  if (large) {
+    const Timing wire = frame_time(wireframe, renderer.style().large_mesh_triangles);
+    std::snprintf(note, sizeof note, "median %.2f", wire.median);
+    line("frame, large mesh with W (single-sampled) (min)", "%10.2f ms", wire.min, note);
+  }
+
+  // Idle and orbit: the counters must not move.
+  renderer.draw(camera, viewport, app_default, {});
+  renderer.pick(camera, viewport, viewport.width / 2, viewport.height / 2);
+  const RenderStats settled = renderer.stats();
+  const Timing idle = time_frames(1000, [&] { renderer.update(mesh); });
+  const Timing orbit = time_frames(frames, [&] {
+    camera.orbit(3, 1);
+    renderer.update(mesh);
+    target.clear(renderer.style().background);
+    renderer.draw(camera, viewport, app_default, {});
+    glFinish();
+  });
+  const RenderStats after = renderer.stats();
+  std::snprintf(note, sizeof note, "uploads %llu -> %llu, patches %llu -> %llu",
+                static_cast<unsigned long long>(settled.uploads), static_cast<unsigned long long>(after.uploads),
+                static_cast<unsigned long long>(settled.patches), static_cast<unsigned long long>(after.patches));
+  line("update(), unchanged version (idle frame)", "%10.5f ms", idle.median, note);
+  std::snprintf(note, sizeof note, "median %.2f; id passes %llu -> %llu, highlight uploads %llu -> %llu", orbit.median,
+                static_cast<unsigned long long>(settled.id_passes), static_cast<unsigned long long>(after.id_passes),
+                static_cast<unsigned long long>(settled.highlight_uploads),
+                static_cast<unsigned long long>(after.highlight_uploads));
+  line("orbit frame (camera moved, update + draw) (min)", "%10.2f ms", orbit.min, note);
+
+  // Picking.
+  const ScreenPoint v0 = camera.project(mesh.position(VertexId(0)), viewport);
+  const int x = std::clamp(int(v0.pixel.x), 0, viewport.width - 1);
+  const int y = std::clamp(int(v0.pixel.y), 0, viewport.height - 1);
+  start = Clock::now();
+  const ElementRef first = renderer.pick(camera, viewport, x, y);
+  line("pick, id buffer redrawn (after a camera move)", "%10.2f ms", ms_since(start), format_id(first));
+  const Timing again = time_frames(100, [&] { renderer.pick(camera, viewport, x + 3, y); });
+  line("pick, same camera (reads 9x9 pixels)", "%10.3f ms", again.median);
+
+  // Local edits: a patch against a full rebuild of the same state.
+  time_edit(renderer, mesh, "flip",
+            [](HalfedgeMesh& m) { return bool(flip(m, edge_for(m, m.edge_capacity() / 3, can_flip))); });
+  time_edit(renderer, mesh, "split",
+            [](HalfedgeMesh& m) { return bool(split(m, edge_for(m, m.edge_capacity() / 2, can_split))); });
+  time_edit(renderer, mesh, "collapse",
+            [](HalfedgeMesh& m) { return bool(collapse(m, edge_for(m, m.edge_capacity() / 5, can_collapse))); });
+
+  // What the document itself does for one flip (undo snapshot, last.before, the diff): O(mesh), outside the renderer.
+  MeshDocument doc = make_document(mesh);
+  const EdgeId e = edge_for(doc.mesh, doc.mesh.edge_capacity() / 4, can_flip);
+  start = Clock::now();
+  apply_operation(doc, "flip", [&](HalfedgeMesh& m) { return flip(m, e); });
+  line("document: apply_operation(flip) (snapshot + diff)", "%10.2f ms", ms_since(start),
+       std::to_string(doc.last.change_count) + " fields changed");
+}
+
+// The halfedge tab of the pointer tables at 6M+ halfedges: frames at the top, the middle and the end, and the worst
+// frame of a scroll (mouse wheel) through more than a window of rows, which slides the laid-out window.
+void bench_tables(uint32_t faces, int frames) {
+  HalfedgeMesh mesh = build_halfedge_mesh(make_torus_with_faces(faces));
+  loop_subdivide(mesh, LoopWeights::Course, 1, 2);
+  MeshDocument doc = make_document(std::move(mesh));
+  std::printf("\npointer tables: %zu halfedges (a %u-face torus subdivided once), headless ImGui 1280x800\n",
+              doc.mesh.num_halfedges(), faces);
+  ui_testing::ImGuiHarness imgui;
+  Selection selection;
+  TablesState state;
+  state.active = TableTab::Halfedges;
+  const auto draw = [&] {
+    ImGui::SetNextWindowPos(ImVec2(0, 0));
+    ImGui::SetNextWindowSize(ImVec2(560, 760));
+    draw_pointer_tables(doc, selection, state);
+  };
+  const uint32_t n = doc.mesh.halfedge_capacity();
+  for (const uint32_t target : {0u, n / 2, n - 1}) {
+    reveal_in_tables(state, ElementRef(HalfedgeId(target)));
+    for (int i = 0; i < 4; ++i) imgui.frame(draw);  // the tab opens, the row scrolls into view, settles
+    const Timing t = time_frames(frames * 10, [&] { imgui.frame(draw); });
+    char label[96], note[96];
+    std::snprintf(label, sizeof label, "table frame at h%u (min)", target);
+    std::snprintf(note, sizeof note, "median %.3f, max %.3f; %zu rows read", t.median, t.max, state.rows_drawn);
+    line(label, "%10.3f ms", t.min, note);
+  }
+  // Scroll with the wheel from the middle: 3000 frames of 5 rows' worth each, past several window slides.
+  reveal_in_tables(state, ElementRef(HalfedgeId(n / 2)));
+  for (int i = 0; i < 4; ++i) imgui.frame(draw);
+  ImGuiIO& io = ImGui::GetIO();
+  io.MousePos = ImVec2(280, 400);
+  const uint32_t start_row = state.window_start[static_cast<int>(ElementKind::Halfedge)];
+  const Timing scroll = time_frames(3000, [&] {
+    io.MouseWheel = -5.0f;
+    imgui.frame(draw);
+  });
+  char note[160];
+  std::snprintf(note, sizeof note, "median %.3f, max %.3f; window start h%u -> h%u", scroll.median, scroll.max,
+                start_row, state.window_start[static_cast<int>(ElementKind::Halfedge)]);
+  line("table frame while scrolling (min)", "%10.3f ms", scroll.min, note);
 }
 
 }  // namespace
@@ -80,6 +302,8 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> counts = parse_counts(arg(argc, argv, "--faces", "10000,100000,1000000"));
   const int frames = std::clamp(std::atoi(arg(argc, argv, "--frames", "10")), 1, 1000);
   const int samples = std::clamp(std::atoi(arg(argc, argv, "--samples", "4")), 0, 16);
+  const long table_faces_arg = std::atol(arg(argc, argv, "--tables-faces", "1000000"));
+  const uint32_t table_faces = uint32_t(std::clamp(table_faces_arg, 8L, 4000000L));
   Viewport viewport{1280, 800};
   std::sscanf(arg(argc, argv, "--size", "1280x800"), "%dx%d", &viewport.width, &viewport.height);
 
@@ -89,66 +313,11 @@ int main(int argc, char** argv) {
     RenderTarget target(viewport.width, viewport.height, samples);
     std::printf("%s; %dx%d, %dx multisampling, %d frames per figure\n", context.description().c_str(),
                 viewport.width, viewport.height, target.samples(), frames);
-
-    for (uint32_t faces : counts) {
-      HalfedgeMesh mesh = build_halfedge_mesh(make_torus_with_faces(faces));
-      MeshRenderer renderer(shaders);
-      std::printf("\ntorus: %zu triangles, %zu vertices\n", mesh.num_faces(), mesh.num_vertices());
-
-      auto start = Clock::now();
-      renderer.update(mesh);
-      std::printf("  %-44s %10.2f ms  (%.1f MB of GPU buffers)\n", "first update (geometry + upload)", ms_since(start),
-                  double(renderer.stats().gpu_bytes) / 1e6);
-      OrbitCamera camera;
-      camera.fit(renderer.bounds());
-
-      const Timing clear = time_frames(frames, [&] {
-        target.clear(renderer.style().background);
-        glFinish();
-      });
-      std::printf("  %-44s %10.2f ms / %.2f ms\n", "clear only (min / median)", clear.min, clear.median);
-      for (bool wireframe : {false, true}) {
-        ViewOptions options;
-        options.wireframe = wireframe;
-        const Timing t = time_frames(frames, [&] {
-          renderer.update(mesh);
-          target.clear(renderer.style().background);
-          renderer.draw(camera, viewport, options, {});
-          glFinish();
-        });
-        char label[64];
-        std::snprintf(label, sizeof label, "frame, %s (min / median)", wireframe ? "faces + wireframe" : "faces only");
-        std::printf("  %-44s %10.2f ms / %.2f ms\n", label, t.min, t.median);
-      }
-
-      const uint64_t uploads = renderer.stats().uploads;
-      const Timing idle = time_frames(1000, [&] { renderer.update(mesh); });
-      std::printf("  %-44s %10.5f ms  (uploads %llu -> %llu)\n", "update(), unchanged version", idle.median,
-                  static_cast<unsigned long long>(uploads),
-                  static_cast<unsigned long long>(renderer.stats().uploads));
-      const Timing changed = time_frames(std::min(frames, 5), [&] {
-        mesh.set_position(VertexId(0), mesh.position(VertexId(0)) * 1.0);  // any write bumps the version
-        renderer.update(mesh);
-      });
-      std::printf("  %-44s %10.2f ms\n", "update(), changed version (full rebuild)", changed.median);
-
-      renderer.draw(camera, viewport, {}, {});
-      renderer.pick(camera, viewport, 0, 0);  // the first id pass also compiles its shaders (llvmpipe JITs)
-      camera.orbit(3, 0);
-      start = Clock::now();
-      // Where vertex 0 (on the outer equator) is seen: the pick has something to find.
-      const ScreenPoint v0 = camera.project(mesh.position(VertexId(0)), viewport);
-      const int x = int(v0.pixel.x), y = int(v0.pixel.y);
-      const ElementRef first = renderer.pick(camera, viewport, x, y);
-      const double first_ms = ms_since(start);
-      const Timing again =
-          time_frames(100, [&] { renderer.pick(camera, viewport, x + 3, y); });
-      std::printf("  %-44s %10.2f ms  (%s)\n", "pick, id buffer redrawn", first_ms, format_id(first).c_str());
-      std::printf("  %-44s %10.3f ms\n", "pick, same camera (reads 9x9 pixels)", again.median);
-    }
+    for (uint32_t faces : counts) bench_mesh(faces, frames, viewport, target, shaders);
   } catch (const RenderError& e) {
-    std::fprintf(stderr, "render_bench: %s\n", e.what());
-    return 1;
+    // No OpenGL here (the render tests skip too): the table figures need none.
+    std::fprintf(stderr, "render_bench: %s; the frame figures are skipped\n", e.what());
   }
+  if (!flag(argc, argv, "--no-tables")) bench_tables(table_faces, frames);
   return 0;
 }

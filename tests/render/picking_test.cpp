@@ -213,7 +213,8 @@ TEST_F(Picking, UpdateUploadsOncePerVersion) {
   renderer_->draw(camera_, kViewport, {}, highlights);
   highlights.hovered = VertexId(5);
   renderer_->draw(camera_, kViewport, {}, highlights);
-  highlights.changed = {ElementRef(FaceId::face(1)), ElementRef(HalfedgeId(4))};
+  const std::vector<ElementRef> changed = {ElementRef(FaceId::face(1)), ElementRef(HalfedgeId(4))};
+  highlights.changed = changed;
   renderer_->draw(camera_, kViewport, {}, highlights);
   renderer_->draw(camera_, kViewport, {}, highlights);
   EXPECT_EQ(renderer_->stats().uploads, 1u);
