@@ -4,7 +4,8 @@
 // Why: a subdivided mesh of millions of faces is hundreds of megabytes written once. On the machines MeshEdit runs
 // on, faulting in fresh 4 KiB pages costs about as much as the subdivision itself (~2 us a page, measured in
 // ../shared/research/perf_anchors.md); transparent huge pages fault 512 times fewer pages. Where THP is off or
-// refused, the mapping is ordinary memory and nothing else changes.
+// refused, the mapping is ordinary memory and nothing else changes. MESHEDIT_NO_HUGEPAGES=1 in the environment
+// skips the madvise, to measure what huge pages buy (peer_bench, 100k x 3 Loop: about 1.7x cold here).
 //
 // Invariants: construct() value-initialises like std::allocator unless a MeshStorage::grow caller asked otherwise
 // for its own thread; allocate(n) and deallocate(p, n) take the same branch for the same n (the size alone decides), so a
@@ -14,6 +15,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <cstdlib>
 #include <new>
 #include <type_traits>
 #include <utility>
@@ -47,7 +49,8 @@ inline void* map_aligned(size_t bytes) {
   if (end > aligned + size) munmap(reinterpret_cast<void*>(aligned + size), end - (aligned + size));
   void* p = reinterpret_cast<void*>(aligned);
 #ifdef MADV_HUGEPAGE
-  madvise(p, size, MADV_HUGEPAGE);
+  static const bool no_huge = std::getenv("MESHEDIT_NO_HUGEPAGES") != nullptr;
+  if (!no_huge) madvise(p, size, MADV_HUGEPAGE);
 #endif
   return p;
 }
