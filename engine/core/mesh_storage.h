@@ -1,10 +1,11 @@
-// MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh fast paths (Loop subdivision) that compute
-// every pointer themselves and would only pay for per-call bookkeeping through the element API.
+// MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh passes that would only pay for per-call
+// bookkeeping through the element API: Loop subdivision and the builder write through it (View, Arrays), normals
+// and the quick checks read through it (ReadView, which checks ids as alive() does).
 //
 // Invariants: grow() appends live elements (alive flags set, live counts and version() updated) and leaves their
-// fields for the caller to write, all of them; a View's pointers stay valid until
-// the next change of any array's size. Code that writes through a View must leave a mesh the element API could
-// have produced, and calls touch() when done.
+// fields for the caller to write, all of them; a View's pointers stay valid until the next change of any array's
+// size. Code that writes through a View must leave a mesh the element API could have produced, and calls touch()
+// when done. vouch_valid_triangles() is called only by code that has established what it vouches for.
 #pragma once
 
 #include <algorithm>
