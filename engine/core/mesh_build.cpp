@@ -150,6 +150,66 @@ Corners make_corners(const PolygonMesh& in) {
 
 namespace build_detail {
 
+size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
+                    const std::vector<uint32_t>& open_incoming, HalfedgeMesh& mesh) {
+  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
+  const auto num_interior = static_cast<uint32_t>(in.indices.size());
+  const auto num_halfedges = static_cast<uint32_t>(m.h.size());
+  HalfedgeRecord* h_ = m.h.data();
+
+  // Walk each hole once, creating its boundary halfedges in walking order.
+  std::vector<uint32_t> boundary_twin_of(num_halfedges > num_interior ? num_interior : 0, kNone);
+  uint32_t next_boundary = num_interior;
+  for (uint32_t start = 0; start < num_interior && next_boundary < num_halfedges; ++start) {
+    if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
+    const FaceId loop = FaceId::boundary(static_cast<uint32_t>(m.b_halfedge.size()));
+    m.b_halfedge.push_back(HalfedgeId(next_boundary));
+    m.b_alive.push_back(1);
+    uint32_t h = start;
+    uint32_t previous = kNone;
+    do {
+      const uint32_t b = next_boundary++;
+      boundary_twin_of[h] = b;
+      h_[h].twin = HalfedgeId(b);
+      h_[b].twin = HalfedgeId(h);
+      h_[b].vertex = h_[h_[h].next.index].vertex;  // h's head
+      h_[b].face = loop;
+      if (previous != kNone) h_[previous].next = HalfedgeId(b);
+      previous = b;
+      h = open_incoming[in.indices[h]];  // the open halfedge arriving where this one leaves
+    } while (h != start);
+    h_[previous].next = m.b_halfedge.back();
+  }
+
+  // Edges in order of their first halfedge.
+  m.e_halfedge.reserve(num_halfedges / 2);
+  for (uint32_t h = 0; h < num_interior; ++h) {
+    if (h_[h].edge.valid()) continue;
+    const EdgeId e(static_cast<uint32_t>(m.e_halfedge.size()));
+    m.e_halfedge.push_back(HalfedgeId(h));
+    h_[h].edge = e;
+    h_[h_[h].twin.index].edge = e;
+  }
+  m.e_alive.assign(m.e_halfedge.size(), 1);
+
+  // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
+  m.v_position.assign(in.positions.begin(), in.positions.end());
+  m.v_halfedge.assign(in.num_vertices(), HalfedgeId());
+  for (uint32_t h = 0; h < num_interior; ++h) {
+    HalfedgeId& slot = m.v_halfedge[in.indices[h]];
+    if (!slot.valid()) slot = HalfedgeId(h);
+  }
+  for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[h_[b].vertex.index] = HalfedgeId(b);
+  m.v_alive.resize(in.num_vertices());
+  size_t unused = 0;
+  for (size_t v = 0; v < in.num_vertices(); ++v) {
+    m.v_alive[v] = m.v_halfedge[v].valid() ? 1 : 0;
+    unused += m.v_alive[v] ? 0 : 1;
+  }
+  MeshStorage::count_live(mesh, unused);
+  return unused;
+}
+
 HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   check_sizes(in);
   const size_t num_interior = in.indices.size();
@@ -212,58 +272,7 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   m.f_alive.assign(in.num_faces(), 1);
   for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge[f] = HalfedgeId(in.face_offsets[f]);
 
-  // Walk each hole once, creating its boundary halfedges in walking order.
-  std::vector<uint32_t> boundary_twin_of(num_interior, kNone);
-  uint32_t next_boundary = static_cast<uint32_t>(num_interior);
-  for (uint32_t start = 0; start < num_interior; ++start) {
-    if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
-    const FaceId loop = FaceId::boundary(static_cast<uint32_t>(m.b_halfedge.size()));
-    m.b_halfedge.push_back(HalfedgeId(next_boundary));
-    m.b_alive.push_back(1);
-    uint32_t h = start;
-    uint32_t previous = kNone;
-    do {
-      const uint32_t b = next_boundary++;
-      boundary_twin_of[h] = b;
-      m.h[h].twin = HalfedgeId(b);
-      m.h[b].twin = HalfedgeId(h);
-      m.h[b].vertex = VertexId(c.head(h));
-      m.h[b].face = loop;
-      if (previous != kNone) m.h[previous].next = HalfedgeId(b);
-      previous = b;
-      h = open_incoming[c.tail(h)];  // the open halfedge arriving where this one leaves
-    } while (h != start);
-    m.h[previous].next = m.b_halfedge.back();
-  }
-
-  // Edges in order of their first halfedge.
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    if (m.h[h].edge.valid()) continue;
-    const EdgeId e(static_cast<uint32_t>(m.e_halfedge.size()));
-    m.e_halfedge.push_back(HalfedgeId(h));
-    m.h[h].edge = e;
-    m.h[m.h[h].twin.index].edge = e;
-  }
-  m.e_alive.assign(m.e_halfedge.size(), 1);
-
-  // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
-  m.v_position.assign(in.positions.begin(), in.positions.end());
-  m.v_halfedge.assign(in.num_vertices(), HalfedgeId());
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    auto& slot = m.v_halfedge[c.tail(h)];
-    if (!slot.valid()) slot = HalfedgeId(h);
-  }
-  for (uint32_t b = static_cast<uint32_t>(num_interior); b < num_halfedges; ++b) {
-    m.v_halfedge[m.h[b].vertex.index] = HalfedgeId(b);
-  }
-  m.v_alive.resize(in.num_vertices());
-  size_t unused = 0;
-  for (size_t v = 0; v < in.num_vertices(); ++v) {
-    m.v_alive[v] = m.v_halfedge[v].valid() ? 1 : 0;
-    unused += m.v_alive[v] ? 0 : 1;
-  }
-
-  MeshStorage::count_live(mesh, unused);
+  const size_t unused = finish_build(in, twin, open_incoming, mesh);
 
   // A vertex whose fan does not reach all its halfedges joins several surfaces (a bow-tie).
   for (uint32_t v = 0; v < in.num_vertices(); ++v) {

@@ -177,60 +177,13 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
     if (same) return false;
   }
 
-  // Each hole walked once from its first open halfedge, its loop's halfedges created in walking order.
-  std::vector<uint32_t> boundary_twin_of(num_boundary ? num_interior : 0, kNone);
-  uint32_t next_boundary = num_interior;
-  for (uint32_t start = 0; start < num_interior && num_boundary; ++start) {
-    if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
-    const FaceId loop = FaceId::boundary(uint32_t(m.b_halfedge.size()));
-    m.b_halfedge.push_back(HalfedgeId(next_boundary));
-    m.b_alive.push_back(1);
-    uint32_t h = start, previous = kNone;
-    do {
-      const uint32_t b = next_boundary++;
-      boundary_twin_of[h] = b;
-      h_[h].twin = HalfedgeId(b);
-      h_[b].twin = HalfedgeId(h);
-      h_[b].vertex = h_[h_[h].next.index].vertex;
-      h_[b].face = loop;
-      if (previous != kNone) h_[previous].next = HalfedgeId(b);
-      previous = b;
-      h = open_incoming[idx[h]];
-    } while (h != start);
-    h_[previous].next = m.b_halfedge.back();
-  }
-  twin = {};
-  boundary_twin_of = {};
+  const size_t unused = finish_build(in, twin, open_incoming, mesh);
 
-  // Edges in order of their first halfedge.
-  m.e_halfedge.reserve(num_halfedges / 2);
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    if (h_[h].edge.valid()) continue;
-    const EdgeId e(uint32_t(m.e_halfedge.size()));
-    m.e_halfedge.push_back(HalfedgeId(h));
-    h_[h].edge = e;
-    h_[h_[h].twin.index].edge = e;
-  }
-  m.e_alive.assign(m.e_halfedge.size(), 1);
-
-  // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
-  m.v_position.assign(in.positions.begin(), in.positions.end());
-  m.v_halfedge.assign(num_vertices, HalfedgeId());
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    HalfedgeId& slot = m.v_halfedge[idx[h]];
-    if (!slot.valid()) slot = HalfedgeId(h);
-  }
-  for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[h_[b].vertex.index] = HalfedgeId(b);
-  m.v_alive.resize(num_vertices);
-  size_t unused = 0;
+  // A vertex whose fan does not reach all its outgoing halfedges joins several surfaces (a bow-tie).
   std::vector<uint32_t> outgoing(num_vertices, 0);
   for (uint32_t h = 0; h < num_halfedges; ++h) ++outgoing[h_[h].vertex.index];
   for (uint32_t v = 0; v < num_vertices; ++v) {
-    const bool used = m.v_halfedge[v].valid();
-    m.v_alive[v] = used ? 1 : 0;
-    unused += used ? 0 : 1;
-    if (!used) continue;
-    // A vertex whose fan does not reach all its outgoing halfedges joins several surfaces (a bow-tie).
+    if (!m.v_alive[v]) continue;
     const uint32_t first = m.v_halfedge[v].index;
     uint32_t h = first, walked = 0;
     do {
@@ -239,7 +192,6 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
     } while (h != first);
     if (walked != outgoing[v]) return false;
   }
-  MeshStorage::count_live(mesh, unused);
   unused_vertices = unused;
   if (in.indices.size() == 3 * in.num_faces() && unused == 0) MeshStorage::vouch_valid_triangles(mesh);
   return true;

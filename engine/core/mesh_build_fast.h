@@ -3,6 +3,8 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
+#include <vector>
 
 #include "core/halfedge_mesh.h"
 #include "core/mesh_build.h"
@@ -14,6 +16,14 @@ namespace meshedit::build_detail {
 // sets `unused_vertices`. Returns false, leaving `out` unspecified, as soon as the input is anything but a clean
 // oriented manifold; the checked builder then runs and explains what is wrong. Never throws except bad_alloc.
 bool build_fast(const PolygonMesh& in, HalfedgeMesh& out, size_t& unused_vertices);
+
+// What both builders do once every interior halfedge has its next, twin (kInvalidIndex when open), vertex and face
+// and every face its halfedge (mesh_build.cpp): boundary loops, each hole walked from its first open halfedge;
+// edges in order of their first halfedge; vertex positions, halfedges and liveness; live counts. `twin` holds the
+// interior twins (kInvalidIndex when open) and open_incoming[v] the open halfedge arriving at v. Returns the number
+// of input vertices no face uses.
+size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
+                    const std::vector<uint32_t>& open_incoming, HalfedgeMesh& mesh);
 
 // The checked builder (mesh_build.cpp): the reference result, and the MeshError that names what is wrong.
 HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report);
