@@ -12,7 +12,6 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/mesh_storage.h"
 #include "core/parallel_for.h"
 
 namespace meshedit {
@@ -133,31 +132,7 @@ std::vector<glm::dvec3> face_normals(const HalfedgeMesh& mesh) {
 
 namespace {
 
-// face_term_from(h) when h, its next and that one's next are live, close a 3-cycle and leave live vertices: the
-// same arithmetic without the generic walk. False (nothing written) for any other start.
-bool triangle_term_from(const MeshStorage::ReadView& r, HalfedgeId h0, glm::dvec3& out) {
-  const HalfedgeRecord& a = r.h[h0.index];
-  if (a.next == h0 || !r.alive(a.next)) return false;
-  const HalfedgeRecord& b = r.h[a.next.index];
-  if (b.next == h0 || !r.alive(b.next)) return false;
-  const HalfedgeRecord& c = r.h[b.next.index];
-  if (c.next != h0 || !r.alive(a.vertex) || !r.alive(b.vertex) || !r.alive(c.vertex)) return false;
-  // Term by term as face_term_from adds them, so the bits agree.
-  const glm::dvec3 origin = r.position[a.vertex.index];
-  glm::dvec3 sum(0.0), previous(0.0);
-  const glm::dvec3 p1 = r.position[b.vertex.index] - origin;
-  sum += glm::cross(previous, p1);
-  double size_sq = std::max(0.0, glm::dot(p1, p1));
-  previous = p1;
-  const glm::dvec3 p2 = r.position[c.vertex.index] - origin;
-  sum += glm::cross(previous, p2);
-  size_sq = std::max(size_sq, glm::dot(p2, p2));
-  if (!(glm::length(sum) > kZeroAreaRelative * size_sq)) sum = glm::dvec3(0.0);
-  out = sum;
-  return true;
-}
-
-// The term of triangle (v, a, b) taken from v, as face_term_from computes it.
+// The term of triangle (v, a, b) taken from v: face_term_from's arithmetic, step by step, so the bits agree.
 glm::dvec3 corner_term(const glm::dvec3& v, const glm::dvec3& a, const glm::dvec3& b) {
   glm::dvec3 sum(0.0), previous(0.0);
   const glm::dvec3 p1 = a - v;
@@ -171,33 +146,45 @@ glm::dvec3 corner_term(const glm::dvec3& v, const glm::dvec3& a, const glm::dvec
   return sum;
 }
 
+// face_term_from(h0) for a live h0 whose next and that one's next are live, close a 3-cycle and leave live
+// vertices, without the generic walk. False (nothing written) for any other start.
+bool triangle_term_from(const HalfedgeMesh& mesh, HalfedgeId h0, glm::dvec3& out) {
+  const HalfedgeId h1 = mesh.next(h0);
+  if (h1 == h0 || !mesh.alive(h1)) return false;
+  const HalfedgeId h2 = mesh.next(h1);
+  if (h2 == h0 || !mesh.alive(h2) || mesh.next(h2) != h0) return false;
+  const VertexId a = mesh.vertex(h0), b = mesh.vertex(h1), c = mesh.vertex(h2);
+  if (!mesh.alive(a) || !mesh.alive(b) || !mesh.alive(c)) return false;
+  out = corner_term(mesh.position(a), mesh.position(b), mesh.position(c));
+  return true;
+}
+
 // vertex_normals on a mesh proven valid with triangle faces only: around v, the face of the k-th outgoing
 // halfedge h_k (v -> w_k) is (v, w_k, w_{k-1}), since h_k follows twin(h_{k-1}) in its face; so the one-ring
 // positions give every term, with no check and no read of the faces' other halfedges. Same terms, same order,
 // same bits as vertex_normal.
-void ring_normals(const MeshStorage::ReadView& r, std::vector<glm::dvec3>& normals, int threads) {
-  parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
-    for (size_t v = begin; v < end; ++v) {
-      if (!r.vertex_alive[v]) {
-        normals[v] = glm::dvec3(0.0);
+void ring_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
+  parallel_for(threads, mesh.vertex_capacity(), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      const VertexId v(static_cast<uint32_t>(i));
+      if (!mesh.alive(v)) {
+        normals[i] = glm::dvec3(0.0);
         continue;
       }
-      const glm::dvec3& p = r.position[v];
-      const HalfedgeId start = r.vertex_halfedge[v];
+      const glm::dvec3& p = mesh.position(v);
+      const HalfedgeId start = mesh.halfedge(v);
       // w_{-1}: the tail of the halfedge before h_0 in h_0's face (for a boundary h_0 it is never used).
-      const HalfedgeRecord& first = r.h[start.index];
-      glm::dvec3 previous = r.position[r.h[r.h[first.next.index].next.index].vertex.index];
+      glm::dvec3 previous = mesh.position(mesh.vertex(mesh.next(mesh.next(start))));
       glm::dvec3 sum(0.0);
       HalfedgeId h = start;
       do {
-        const HalfedgeRecord& rec = r.h[h.index];
-        const HalfedgeRecord& twin = r.h[rec.twin.index];
-        const glm::dvec3& w = r.position[twin.vertex.index];
-        if (!rec.face.is_boundary()) sum += corner_term(p, w, previous);
+        const HalfedgeId t = mesh.twin(h);
+        const glm::dvec3& w = mesh.position(mesh.vertex(t));
+        if (!mesh.face(h).is_boundary()) sum += corner_term(p, w, previous);
         previous = w;
-        h = twin.next;
+        h = mesh.next(t);
       } while (h != start);
-      normals[v] = unit_or_zero(sum);
+      normals[i] = unit_or_zero(sum);
     }
   });
 }
@@ -205,42 +192,22 @@ void ring_normals(const MeshStorage::ReadView& r, std::vector<glm::dvec3>& norma
 }  // namespace
 
 void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
-  // vertex_normal for every vertex, with its for_each_outgoing / sum_around_vertex walk fused over the raw records
-  // and each triangle's term from triangle_term_from: the same terms in the same order, so the same bits. Each
-  // face's term is taken from the vertex's own halfedge, so the walk reads the vertex's one-ring and nothing of
-  // the faces' other halfedges, and needs no per-face array (fresh memory costs more than the arithmetic).
-  const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
-  normals.resize(r.vertices);
+  // vertex_normal for every vertex, each triangle's term from triangle_term_from (the generic walk for anything
+  // else): the same terms in the same order, so the same bits. Each face's term is taken from the vertex's own
+  // halfedge, so no per-face array is needed (fresh memory costs more than the arithmetic on a big mesh).
+  normals.resize(mesh.vertex_capacity());
   if (mesh.proven_valid_triangles()) {
-    ring_normals(r, normals, threads);
+    ring_normals(mesh, normals, threads);
     return;
   }
-  parallel_for(threads, r.vertices, [&](size_t begin, size_t end) {
-    for (size_t v = begin; v < end; ++v) {
-      normals[v] = glm::dvec3(0.0);
-      if (!r.vertex_alive[v]) continue;
-      const HalfedgeId start = r.vertex_halfedge[v];
-      HalfedgeId h = start;
-      glm::dvec3 sum(0.0), term;
-      bool ok = true, fan_closed = false;
-      for (uint32_t steps = 0; steps <= r.halfedges; ++steps) {
-        if (!r.alive(h)) break;
-        const HalfedgeRecord& rec = r.h[h.index];
-        const FaceId f = rec.face;
-        if (!ok || !r.alive(f)) {
-          ok = false;
-        } else if (!f.is_boundary()) {
-          if (!triangle_term_from(r, h, term) && !face_term_from(mesh, h, term)) ok = false;
-          sum += term;
-        }
-        if (!r.alive(rec.twin)) break;
-        h = r.h[rec.twin.index].next;
-        if (h == start) {
-          fan_closed = true;
-          break;
-        }
-      }
-      if (fan_closed && ok) normals[v] = unit_or_zero(sum);
+  const auto term = [&](HalfedgeId h, glm::dvec3& out) {
+    return triangle_term_from(mesh, h, out) || face_term_from(mesh, h, out);
+  };
+  parallel_for(threads, mesh.vertex_capacity(), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      glm::dvec3 sum;
+      normals[i] = sum_around_vertex(mesh, VertexId(static_cast<uint32_t>(i)), term, sum) ? unit_or_zero(sum)
+                                                                                           : glm::dvec3(0.0);
     }
   });
 }
