@@ -1,6 +1,5 @@
 // MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh passes that would only pay for per-call
-// bookkeeping through the element API: Loop subdivision and the builder write through it (View, Arrays), normals
-// and the quick checks read through it (ReadView, which checks ids as alive() does).
+// bookkeeping through the element API: Loop subdivision and the builders write through it (View, Arrays).
 //
 // Invariants: grow() appends live elements (alive flags set, live counts and version() updated) and leaves their
 // fields for the caller to write, all of them; a View's pointers stay valid until the next change of any array's
@@ -30,38 +29,6 @@ struct MeshStorage {
   static View view(HalfedgeMesh& m) {
     return {m.h_.data(),          m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
             m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
-  }
-
-  // Read-only pointers for whole-mesh passes over a const mesh (normals), with every liveness flag, so a pass can
-  // check ids as the element API would.
-  struct ReadView {
-    const HalfedgeRecord* h;
-    const uint8_t* h_alive;
-    const HalfedgeId* vertex_halfedge;
-    const glm::dvec3* position;
-    const uint8_t* vertex_alive;
-    const HalfedgeId* face_halfedge;
-    const uint8_t* face_alive;
-    const uint8_t* boundary_alive;
-    const HalfedgeId* edge_halfedge;
-    const uint8_t* edge_alive;
-    const HalfedgeId* boundary_halfedge;
-    uint32_t halfedges, vertices, faces, boundaries, edges;  // capacities
-
-    bool alive(HalfedgeId x) const { return x.index < halfedges && h_alive[x.index]; }
-    bool alive(VertexId x) const { return x.index < vertices && vertex_alive[x.index]; }
-    bool alive(EdgeId x) const { return x.index < edges && edge_alive[x.index]; }
-    bool alive(FaceId x) const {
-      if (!x.valid()) return false;
-      return x.is_boundary() ? x.slot() < boundaries && boundary_alive[x.slot()] : x.slot() < faces && face_alive[x.slot()];
-    }
-  };
-
-  static ReadView read_view(const HalfedgeMesh& m) {
-    return {m.h_.data(),           m.h_alive_.data(),     m.v_halfedge_.data(),  m.v_position_.data(),
-            m.v_alive_.data(),     m.f_halfedge_.data(),  m.f_alive_.data(),     m.b_alive_.data(),
-            m.e_halfedge_.data(),  m.e_alive_.data(),     m.b_halfedge_.data(),  m.halfedge_capacity(),
-            m.vertex_capacity(),   m.face_capacity(),     m.boundary_capacity(), m.edge_capacity()};
   }
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write

@@ -11,83 +11,73 @@
 #include <cmath>
 #include <vector>
 
-#include "core/mesh_storage.h"
 
 namespace meshedit {
 namespace {
 
-bool clean(const HalfedgeMesh& mesh, bool loop_input) {
-  const MeshStorage::ReadView r = MeshStorage::read_view(mesh);
-  const size_t live = mesh.num_halfedges();
+bool clean(const HalfedgeMesh& m, bool loop_input) {
+  const size_t live = m.num_halfedges();
 
   // Halfedges: live targets, twins paired on one edge, next a permutation within one face.
-  std::vector<uint8_t> is_next(r.halfedges, 0), on_edge(r.edges, 0);
-  for (uint32_t h = 0; h < r.halfedges; ++h) {
-    if (!r.h_alive[h]) continue;
-    const HalfedgeRecord& x = r.h[h];
-    if (!r.alive(x.next) || !r.alive(x.twin) || !r.alive(x.vertex) || !r.alive(x.edge) || !r.alive(x.face)) {
-      return false;
-    }
-    if (x.twin.index == h) return false;
-    const HalfedgeRecord& t = r.h[x.twin.index];
-    if (t.twin.index != h || t.edge != x.edge || t.face == x.face) return false;
-    if (x.face.is_boundary() && t.face.is_boundary()) return false;
-    const HalfedgeRecord& n = r.h[x.next.index];
-    if (n.face != x.face || t.vertex != n.vertex || x.vertex == t.vertex) return false;
-    if (is_next[x.next.index]++ || on_edge[x.edge.index]++ > 1) return false;
+  std::vector<uint8_t> is_next(m.halfedge_capacity(), 0), on_edge(m.edge_capacity(), 0);
+  for (HalfedgeId h : m.halfedges()) {
+    const HalfedgeId next = m.next(h), twin = m.twin(h);
+    const EdgeId edge = m.edge(h);
+    const FaceId face = m.face(h);
+    if (!m.alive(next) || !m.alive(twin) || !m.alive(m.vertex(h)) || !m.alive(edge) || !m.alive(face)) return false;
+    if (twin == h || m.twin(twin) != h || m.edge(twin) != edge || m.face(twin) == face) return false;
+    if (face.is_boundary() && m.face(twin).is_boundary()) return false;
+    if (m.face(next) != face || m.vertex(twin) != m.vertex(next) || m.vertex(h) == m.vertex(twin)) return false;
+    if (is_next[next.index]++ || on_edge[edge.index]++ > 1) return false;
   }
-  for (uint32_t e = 0; e < r.edges; ++e) {
-    if (!r.edge_alive[e]) continue;
-    const HalfedgeId h = r.edge_halfedge[e];
-    if (on_edge[e] != 2 || !r.alive(h) || r.h[h.index].edge.index != e) return false;
+  for (EdgeId e : m.edges()) {
+    const HalfedgeId h = m.halfedge(e);
+    if (on_edge[e.index] != 2 || !m.alive(h) || m.edge(h) != e) return false;
   }
 
   // Faces and loops: each cycle from the element's halfedge has >= 3 halfedges (exactly 3 with distinct corners
   // for Loop input), and the cycles hold every live halfedge.
   size_t in_cycles = 0;
-  const auto cycle = [&](FaceId f, HalfedgeId first) {
-    if (!r.alive(first) || r.h[first.index].face != f) return false;
+  const auto cycle = [&](FaceId f) {
+    const HalfedgeId first = m.halfedge(f);
+    if (!m.alive(first) || m.face(first) != f) return false;
     size_t length = 0;
     HalfedgeId h = first;
     do {
       if (++length > live) return false;
-      h = r.h[h.index].next;
+      h = m.next(h);
     } while (h != first);
     if (length < 3) return false;
     if (loop_input && !f.is_boundary()) {
       if (length != 3) return false;
-      const HalfedgeRecord& a = r.h[first.index];
-      const HalfedgeRecord& b = r.h[a.next.index];
-      const VertexId v0 = a.vertex, v1 = b.vertex, v2 = r.h[b.next.index].vertex;
+      const VertexId v0 = m.vertex(first), v1 = m.vertex(m.next(first)), v2 = m.vertex(m.next(m.next(first)));
       if (v0 == v1 || v1 == v2 || v0 == v2) return false;
     }
     in_cycles += length;
     return true;
   };
-  for (uint32_t f = 0; f < r.faces; ++f) {
-    if (r.face_alive[f] && !cycle(FaceId::face(f), r.face_halfedge[f])) return false;
+  for (FaceId f : m.faces()) {
+    if (!cycle(f)) return false;
   }
-  for (uint32_t b = 0; b < r.boundaries; ++b) {
-    if (r.boundary_alive[b] && !cycle(FaceId::boundary(b), r.boundary_halfedge[b])) return false;
+  for (FaceId b : m.boundaries()) {
+    if (!cycle(b)) return false;
   }
   if (in_cycles != live) return false;
 
   // Vertices: a finite position; a fan from v.halfedge that leaves v at every step, closes, holds a face and at
   // most one boundary halfedge; and the fans hold every live halfedge.
   size_t in_fans = 0;
-  for (uint32_t v = 0; v < r.vertices; ++v) {
-    if (!r.vertex_alive[v]) continue;
-    const glm::dvec3& p = r.position[v];
+  for (VertexId v : m.vertices()) {
+    const glm::dvec3& p = m.position(v);
     if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
-    const HalfedgeId first = r.vertex_halfedge[v];
-    if (!r.alive(first)) return false;
+    const HalfedgeId first = m.halfedge(v);
+    if (!m.alive(first)) return false;
     size_t length = 0, boundary = 0;
     HalfedgeId h = first;
     do {
-      const HalfedgeRecord& x = r.h[h.index];
-      if (x.vertex.index != v || ++length > live) return false;
-      boundary += x.face.is_boundary() ? 1 : 0;
-      h = r.h[x.twin.index].next;
+      if (m.vertex(h) != v || ++length > live) return false;
+      boundary += m.face(h).is_boundary() ? 1 : 0;
+      h = m.next(m.twin(h));
     } while (h != first);
     if (boundary > 1 || boundary == length) return false;
     in_fans += length;
@@ -96,12 +86,10 @@ bool clean(const HalfedgeMesh& mesh, bool loop_input) {
 
   // Loop input: split() refuses an interior edge whose two triangles have the same third corner.
   if (loop_input) {
-    for (uint32_t e = 0; e < r.edges; ++e) {
-      if (!r.edge_alive[e]) continue;
-      const HalfedgeRecord& a = r.h[r.edge_halfedge[e].index];
-      const HalfedgeRecord& b = r.h[a.twin.index];
-      if (a.face.is_boundary() || b.face.is_boundary()) continue;
-      if (r.h[r.h[a.next.index].next.index].vertex == r.h[r.h[b.next.index].next.index].vertex) return false;
+    for (EdgeId e : m.edges()) {
+      const HalfedgeId a = m.halfedge(e), b = m.twin(a);
+      if (m.face(a).is_boundary() || m.face(b).is_boundary()) continue;
+      if (m.vertex(m.next(m.next(a))) == m.vertex(m.next(m.next(b)))) return false;
     }
   }
   return true;
