@@ -215,7 +215,7 @@ class HalfedgeMesh {
 
   size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
   uint64_t version_ = 0;
-  uint64_t proven_version_ = ~uint64_t(0);  // version_ at which MeshStorage::vouch was called
+  uint64_t proven_version_ = ~uint64_t(0);  // version_ at the last MeshStorage::vouch_valid_triangles
 };
 
 template <class Fn>

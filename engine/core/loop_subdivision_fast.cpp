@@ -284,7 +284,7 @@ void pass_triangles(Level& L, int threads) {
         sides |= unsigned(side_h0) << i;
         rank[i] = p.rank;
         vertex_id[i] = x.vertex.index;
-        vertex_id[3 + i] = L.v0 + p.rank;
+        vertex_id[3 + i] = L.vertex_of(e);
         const uint32_t n0 = L.first_halfedge(e), ea = L.first_edge(e);
         id[3 + i] = side_h0 ? n0 : n0 + 1;      // o: n0 or n1, on ea
         id[6 + i] = side_h0 ? n0 + 2 : n0 + 4;  // p: n2 or n4, on ec or ed
