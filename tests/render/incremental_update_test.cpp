@@ -17,24 +17,13 @@
 #include "core/primitives.h"
 #include "render/incremental_update.h"
 #include "quad_torus.h"
+#include "update_test_support.h"
 
 namespace meshedit {
 namespace {
 
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-// Every element whose fields differ, as the document's ChangeIndex lists them.
-std::vector<ElementRef> changed_elements(const HalfedgeMesh& before, const HalfedgeMesh& after) {
-  std::vector<ElementRef> out;
-  for (const FieldChange& c : diff(before, after)) {
-    if (out.empty() || !(out.back() == c.element)) out.push_back(c.element);
-  }
-  out.erase(std::unique(out.begin(), out.end()), out.end());
-  return out;
-}
+using testing::changed_elements;
+using testing::same_bytes;
 
 // The CPU mirror of a renderer: slot arrays and arrows kept up to date by patches, rebuilt when there is none.
 struct Mirror {

@@ -12,24 +12,14 @@
 #include "core/primitives.h"
 #include "gl_test_support.h"
 #include "quad_torus.h"
+#include "update_test_support.h"
 
 namespace meshedit {
 namespace {
 
 using testing::GlTest;
-
-template <class T>
-bool same_bytes(const std::vector<T>& a, const std::vector<T>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
-}
-
-std::vector<ElementRef> changed_elements(const HalfedgeMesh& before, const HalfedgeMesh& after) {
-  std::vector<ElementRef> out;
-  for (const FieldChange& c : diff(before, after)) {
-    if (out.empty() || !(out.back() == c.element)) out.push_back(c.element);
-  }
-  return out;
-}
+using testing::changed_elements;
+using testing::same_bytes;
 
 // Updates `renderer` from `before` to `mesh` with a change description, as the app does.
 void update_with_change(MeshRenderer& renderer, const HalfedgeMesh& before, const HalfedgeMesh& mesh) {
