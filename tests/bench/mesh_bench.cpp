@@ -41,13 +41,14 @@ int main(int argc, char** argv) {
 
   std::vector<glm::dvec3> normals;
   const int threads = static_cast<int>(std::clamp(arg(argc, argv, "--threads", 2), 1L, 64L));
-  for (int t : {1, threads}) {
-    if (t == threads && t == 1 && !normals.empty()) break;
-    const double normal_ms = min_ms(reps, [] {}, [&] { vertex_normals(mesh, normals, t); });
+  const auto normals_row = [&](int thread_count) {
+    const double normal_ms = min_ms(reps, [] {}, [&] { vertex_normals(mesh, normals, thread_count); });
     char label[64];
-    std::snprintf(label, sizeof label, "area-weighted vertex normals (%d thr)", t);
+    std::snprintf(label, sizeof label, "area-weighted vertex normals (%d thr)", thread_count);
     std::printf("%-34s %9.2f ms  %7.2f M faces/s\n", label, normal_ms, mesh.num_faces() / normal_ms / 1e3);
-  }
+  };
+  normals_row(1);
+  if (threads > 1) normals_row(threads);
 
   const double validate_ms = min_ms(reps, [] {}, [&] { (void)validate(mesh); });
   std::printf("%-34s %9.2f ms\n", "validate", validate_ms);
