@@ -18,10 +18,7 @@ using testing::WindowRun;
 using testing::XServer;
 namespace fs = std::filesystem;
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using testing::read_text;
 
 TEST(WindowBezierMine, CurveLevelsAndThePatchProbeComeFromTheStudentsFiles) {
   XServer x;

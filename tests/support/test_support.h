@@ -16,6 +16,9 @@ std::optional<std::filesystem::path> course_data_dir();
 // The project's source tree (for assets/ and tests/ files).
 std::filesystem::path source_dir();
 
+// The whole file as bytes; a failed expectation (and "") if it cannot be opened.
+std::string read_text(const std::filesystem::path& path);
+
 // A fresh empty directory under the system temp dir, unique to the running test.
 std::filesystem::path scratch_dir();
 

@@ -30,10 +30,7 @@ namespace fs = std::filesystem;
 
 fs::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
 
-std::string read_text(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
+using testing::read_text;
 
 // Writes `text` as `name` in `folder`, moving the modification time on so a rewrite is always seen as a save.
 void write_file(const fs::path& folder, const std::string& name, const std::string& text) {
