@@ -9,6 +9,9 @@
 //              [--closed | --boundary]   only the closed torus / only the torus with holes (default both)
 //              [--interior-only]         compare only points away from the boundary, as for a peer whose
 //                                        boundary rule differs from ours (for testing that path)
+//              [--cold]                  skip backing physical memory before each timed run (see
+//                                        back_physical_memory in bench_support.h), so each run pays whatever
+//                                        host faults the order of the jobs leaves it
 // Exit status: 0 when every check passed, 1 on a mismatch or a contender's failure, 2 for a wrong command line.
 #include <algorithm>
 #include <cmath>
@@ -35,8 +38,11 @@ namespace {
 struct Options {
   uint32_t faces = 100000, build_faces = 1000000;
   int levels = 3, reps = 5, threads = 2;
-  bool closed = true, boundary = true, interior_only = false;
+  bool closed = true, boundary = true, interior_only = false, cold = false;
 };
+
+// Enough for the largest contender's peak at the default sizes (CGAL, about 800 MB at 6.4M faces).
+constexpr size_t kBackedMiB = 1536;
 
 struct Entry {
   std::unique_ptr<Contender> contender;
@@ -49,6 +55,7 @@ bool parse(int argc, char** argv, Options& o) {
     if (a == "--closed") { o.boundary = false; continue; }
     if (a == "--boundary") { o.closed = false; continue; }
     if (a == "--interior-only") { o.interior_only = true; continue; }
+    if (a == "--cold") { o.cold = true; continue; }
     if (i + 1 >= argc) return false;
     char* end = nullptr;
     const long value = std::strtol(argv[++i], &end, 10);
@@ -86,11 +93,16 @@ struct Job {
 
 // Runs every job once per round, `reps` rounds, and keeps each job's minimum. On a machine shared with
 // others the load comes and goes; interleaving the contenders gives each of them the same mix of it.
-void run_interleaved(int reps, const std::vector<Job>& jobs) {
+// Unless `cold`, physical memory is backed right before every timed run, the same for every contender.
+void run_interleaved(int reps, bool cold, const std::vector<Job>& jobs) {
   for (const Job& job : jobs) *job.result = NAN;
   for (int round = 0; round < reps; ++round) {
     for (const Job& job : jobs) {
-      const double ms = min_ms(1, job.setup, job.work);
+      const auto setup = [&] {
+        job.setup();
+        if (!cold) back_physical_memory(kBackedMiB);
+      };
+      const double ms = min_ms(1, setup, job.work);
       *job.result = std::isnan(*job.result) ? ms : std::min(*job.result, ms);
       if (job.after) job.after(round);
     }
@@ -107,7 +119,7 @@ int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
     std::fprintf(stderr, "usage: peer_bench [--faces N] [--levels L] [--reps R] [--build-faces N] [--threads N] "
-                         "[--closed | --boundary] [--interior-only]\n");
+                         "[--closed | --boundary] [--interior-only] [--cold]\n");
     return 2;
   }
   std::vector<Entry> entries;
@@ -124,6 +136,8 @@ int main(int argc, char** argv) {
   const int thread_column = ours_threads_subdivide || ours_threads_normals ? o.threads : 1;
 
   std::printf("peer_bench: minimum of %d runs, single thread unless a column says otherwise; times in ms\n", o.reps);
+  if (o.cold) std::printf("  --cold: memory not backed before the runs; times depend on the host's page faults and the job order\n");
+  else std::printf("  before every timed run %zu MiB are touched and freed, so every contender gets backed pages (bench_support.h)\n", kBackedMiB);
   if (FILE* load = std::fopen("/proc/loadavg", "r")) {  // the machine is shared: say how busy it was
     double one = 0, five = 0;
     if (std::fscanf(load, "%lf %lf", &one, &five) == 2) std::printf("  load average at start: %.2f (1 min), %.2f (5 min)\n", one, five);
@@ -174,7 +188,7 @@ int main(int argc, char** argv) {
       c.clear();
       jobs.push_back({&cell(row, e), [&c] { c.clear(); }, [&c, &input] { c.build(input); }, [&c](int) { c.clear(); }});
     }
-    run_interleaved(o.reps, jobs);
+    run_interleaved(o.reps, o.cold, jobs);
   }
 
   // ---- 2-5. Loop subdivision (closed, with holes), normals and memory on the closed result -------------
@@ -297,8 +311,8 @@ int main(int argc, char** argv) {
                                [c, &o] { c->compute_normals(o.threads); }, {}});
       }
     }
-    run_interleaved(o.reps, loop_jobs);
-    if (variant.closed) run_interleaved(o.reps, normal_jobs);
+    run_interleaved(o.reps, o.cold, loop_jobs);
+    if (variant.closed) run_interleaved(o.reps, o.cold, normal_jobs);
     for (Entry& e : entries) e.contender->clear();
 
     // Memory at rest, one child per contender.
