@@ -34,6 +34,14 @@ inline constexpr size_t kThreshold = size_t(4) << 20;
 // hundreds of megabytes.
 inline thread_local bool skip_default_init = false;
 
+// Sets skip_default_init for its lifetime, on this thread (also when a resize throws).
+struct SkipDefaultInit {
+  SkipDefaultInit() { skip_default_init = true; }
+  ~SkipDefaultInit() { skip_default_init = false; }
+  SkipDefaultInit(const SkipDefaultInit&) = delete;
+  SkipDefaultInit& operator=(const SkipDefaultInit&) = delete;
+};
+
 inline size_t mapped_size(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
 
 // Maps `bytes` (rounded up to whole huge pages) at a huge-page boundary: maps one huge page more than needed and

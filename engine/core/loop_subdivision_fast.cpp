@@ -55,12 +55,13 @@ struct Level {
 
 // Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded).
 void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_edges) {
-  L.plan.assign(L.e0, EdgePlan{});
+  MeshStorage::resize_for_overwrite(L.plan, L.e0);  // every entry is written below, dead edges' too
   const size_t chunks = chunk_count(threads, L.e0);
   std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
     uint32_t n = 0, b = 0;
     for (size_t e = begin; e < end; ++e) {
+      L.plan[e] = EdgePlan{};
       if (!L.m.edge_alive[e]) continue;
       ++n;
       const uint32_t h = L.m.edge_halfedge[e].index, t = L.m.h[h].twin.index;
@@ -325,11 +326,11 @@ void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   uint32_t live_edges = 0, boundary_edges = 0;
   plan_edges(L, threads, live_edges, boundary_edges);
   MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,
-                    L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges);
+                    L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges, threads);
   L.m = MeshStorage::view(mesh);
 
   MeshArray<glm::dvec3>& points = scratch.points;
-  points.resize(L.v0);
+  MeshStorage::resize_for_overwrite(points, L.v0);  // written for live vertices, read only for them
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
   pass_triangles(L, threads);

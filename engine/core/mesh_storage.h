@@ -11,6 +11,7 @@
 #include <cstdint>
 
 #include "core/halfedge_mesh.h"
+#include "core/parallel_for.h"
 
 namespace meshedit {
 
@@ -33,23 +34,34 @@ struct MeshStorage {
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
   // every pointer of every new element (and every new position) before the mesh is used. Capacities never shrink.
-  static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
+  // The new alive flags are set on `threads` threads (for a big level they are tens of megabytes of fresh pages).
+  static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces,
+                   int threads = 1) {
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
     m.live_faces_ += faces - m.face_capacity();
-    m.v_alive_.resize(vertices, 1);
-    m.h_alive_.resize(halfedges, 1);
-    m.e_alive_.resize(edges, 1);
-    m.f_alive_.resize(faces, 1);
-    big_array_detail::skip_default_init = true;
-    m.v_halfedge_.resize(vertices);
-    m.v_position_.resize(vertices);
-    m.h_.resize(halfedges);
-    m.e_halfedge_.resize(edges);
-    m.f_halfedge_.resize(faces);
-    big_array_detail::skip_default_init = false;
+    grow_alive(m.v_alive_, vertices, threads);
+    grow_alive(m.h_alive_, halfedges, threads);
+    grow_alive(m.e_alive_, edges, threads);
+    grow_alive(m.f_alive_, faces, threads);
+    {
+      const big_array_detail::SkipDefaultInit skip;
+      m.v_halfedge_.resize(vertices);
+      m.v_position_.resize(vertices);
+      m.h_.resize(halfedges);
+      m.e_halfedge_.resize(edges);
+      m.f_halfedge_.resize(faces);
+    }
     m.touch();
+  }
+
+  // Resizes `a` to `n` leaving the new elements' bytes unset (whatever the memory held): for a caller that
+  // writes every one of them before reading any.
+  template <class T>
+  static void resize_for_overwrite(MeshArray<T>& a, size_t n) {
+    const big_array_detail::SkipDefaultInit skip;
+    a.resize(n);
   }
 
   // Makes room for this many elements of each kind in all, so later grow() calls up to it do not copy.
@@ -91,6 +103,14 @@ struct MeshStorage {
     m.live_edges_ = m.e_alive_.size();
     m.live_faces_ = m.f_alive_.size();
     m.live_boundaries_ = m.b_alive_.size();
+  }
+
+ private:
+  static void grow_alive(MeshArray<uint8_t>& alive, size_t n, int threads) {
+    const size_t old_size = alive.size();
+    resize_for_overwrite(alive, n);
+    uint8_t* fresh = alive.data() + old_size;
+    parallel_for(threads, n - old_size, [fresh](size_t begin, size_t end) { std::fill(fresh + begin, fresh + end, 1); });
   }
 };
 
