@@ -113,6 +113,8 @@ class HalfedgeMesh {
     return f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()];
   }
   const glm::dvec3& position(VertexId v) const { return v_position_[v.index]; }
+  // All five pointers of h at once (whole-mesh passes prefetch it).
+  const HalfedgeRecord& record(HalfedgeId h) const { return h_[h.index]; }
 
   void set_next(HalfedgeId h, HalfedgeId next) { h_[h.index].next = next; touch(); }
   void set_twin(HalfedgeId h, HalfedgeId twin) { h_[h.index].twin = twin; touch(); }

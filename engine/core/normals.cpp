@@ -4,7 +4,8 @@
 // - Every walk is bounded (HalfedgeMesh's own walks) and every id is checked with alive() before its
 //   pointers or position are read, so a broken mesh yields zero vectors, never a hang or a stray read.
 // - The per-element and whole-mesh functions add the same terms in the same order, so they agree bit
-//   for bit (the renderer uses one, tests and Lua the other).
+//   for bit, except on a mesh proven valid with triangle faces only: there vertex_normals adds each face's
+//   term (taken from the face's own halfedge) in face order, which agrees with vertex_normal to rounding.
 #include "core/normals.h"
 
 #include <algorithm>
@@ -12,6 +13,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/mesh_storage.h"
 #include "core/parallel_for.h"
 
 namespace meshedit {
@@ -159,32 +161,59 @@ bool triangle_term_from(const HalfedgeMesh& mesh, HalfedgeId h0, glm::dvec3& out
   return true;
 }
 
-// vertex_normals on a mesh proven valid with triangle faces only: around v, the face of the k-th outgoing
-// halfedge h_k (v -> w_k) is (v, w_k, w_{k-1}), since h_k follows twin(h_{k-1}) in its face; so the one-ring
-// positions give every term, with no check and no read of the faces' other halfedges. Same terms, same order,
-// same bits as vertex_normal.
-void ring_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
-  parallel_for(threads, mesh.vertex_capacity(), [&](size_t begin, size_t end) {
-    for (size_t i = begin; i < end; ++i) {
-      const VertexId v(static_cast<uint32_t>(i));
-      if (!mesh.alive(v)) {
-        normals[i] = glm::dvec3(0.0);
-        continue;
-      }
-      const glm::dvec3& p = mesh.position(v);
-      const HalfedgeId start = mesh.halfedge(v);
-      // w_{-1}: the tail of the halfedge before h_0 in h_0's face (for a boundary h_0 it is never used).
-      glm::dvec3 previous = mesh.position(mesh.vertex(mesh.next(mesh.next(start))));
-      glm::dvec3 sum(0.0);
-      HalfedgeId h = start;
-      do {
-        const HalfedgeId t = mesh.twin(h);
-        const glm::dvec3& w = mesh.position(mesh.vertex(t));
-        if (!mesh.face(h).is_boundary()) sum += corner_term(p, w, previous);
-        previous = w;
-        h = mesh.next(t);
-      } while (h != start);
-      normals[i] = unit_or_zero(sum);
+// Adds the term of every live face in [begin, end), taken from the face's own halfedge (face_term_from's
+// arithmetic, as face_normal uses it), to its three corners' sums. Only for a mesh proven valid with triangle faces.
+// After subdivision a face's halfedges and corners lie far apart in the arrays, so the chain face -> h0 -> h1 -> h2
+// and the corners' positions and sums are prefetched a few faces ahead, one link per stage (dead faces are skipped
+// there too: their halfedge may be any id).
+void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dvec3* sums) {
+  constexpr size_t kAhead = 32;
+  const auto live = [&](size_t f) { return f < end && mesh.alive(FaceId::face(uint32_t(f))); };
+  const auto first = [&](size_t f) -> const HalfedgeRecord& { return mesh.record(mesh.halfedge(FaceId::face(uint32_t(f)))); };
+  const auto prefetch_corner = [&](const HalfedgeRecord& r) {
+    __builtin_prefetch(&mesh.record(r.next));
+    __builtin_prefetch(&mesh.position(r.vertex));
+    __builtin_prefetch(&sums[r.vertex.index]);
+  };
+  for (size_t f = begin; f < end; ++f) {
+    if (live(f + 2 * kAhead)) __builtin_prefetch(&first(f + 2 * kAhead));
+    if (live(f + kAhead)) prefetch_corner(first(f + kAhead));
+    if (live(f + kAhead / 2)) prefetch_corner(mesh.record(first(f + kAhead / 2).next));
+    if (!live(f)) continue;
+    const HalfedgeRecord& r0 = first(f);
+    const HalfedgeRecord& r1 = mesh.record(r0.next);
+    const HalfedgeRecord& r2 = mesh.record(r1.next);
+    const glm::dvec3 term = corner_term(mesh.position(r0.vertex), mesh.position(r1.vertex), mesh.position(r2.vertex));
+    sums[r0.vertex.index] += term;
+    sums[r1.vertex.index] += term;
+    sums[r2.vertex.index] += term;
+  }
+}
+
+// vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
+// in face order (measured 3.7x faster than walking each vertex's fan at 6.4M faces, where the fan's halfedges are
+// a chain of dependent cache misses). Each vertex gets the same terms as vertex_normal, added in another order, so
+// the two agree to rounding. With more threads, each adds its chunk of faces into its own sums (the first into
+// `normals`) and the sums are added per vertex, so the result depends on the thread count, by rounding only.
+void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
+  const size_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity();
+  const size_t chunks = chunk_count(threads, faces);
+  normals.resize(vertices);
+  std::vector<MeshArray<glm::dvec3>> extra(chunks - 1);
+  parallel_chunks(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
+    glm::dvec3* sums = normals.data();
+    if (chunk > 0) {
+      MeshStorage::resize_for_overwrite(extra[chunk - 1], vertices);
+      sums = extra[chunk - 1].data();
+    }
+    std::fill(sums, sums + vertices, glm::dvec3(0.0));
+    add_face_terms(mesh, begin, end, sums);
+  });
+  parallel_for(threads, vertices, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      glm::dvec3 sum = normals[v];
+      for (const MeshArray<glm::dvec3>& more : extra) sum += more[v];
+      normals[v] = unit_or_zero(sum);
     }
   });
 }
@@ -197,7 +226,7 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
   // halfedge, so no per-face array is needed (fresh memory costs more than the arithmetic on a big mesh).
   normals.resize(mesh.vertex_capacity());
   if (mesh.proven_valid_triangles()) {
-    ring_normals(mesh, normals, threads);
+    face_order_normals(mesh, normals, threads);
     return;
   }
   const auto term = [&](HalfedgeId h, glm::dvec3& out) {
