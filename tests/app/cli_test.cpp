@@ -5,7 +5,6 @@
 #include <array>
 #include <cstdio>
 #include <fstream>
-#include <sstream>
 
 #include <unistd.h>
 
@@ -25,13 +24,6 @@ struct CommandRun {
   std::string out, err;
 };
 
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
-}
-
 std::string quoted(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
@@ -49,8 +41,8 @@ CommandRun meshedit(const std::vector<std::string>& args) {
   CommandRun run;
   const int raw = std::system(command.c_str());
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  run.out = slurp(dir / "out");
-  run.err = slurp(dir / "err");
+  run.out = testing::read_text(dir / "out");
+  run.err = testing::read_text(dir / "err");
   return run;
 }
 

@@ -5,7 +5,6 @@
 #include <filesystem>
 #include <fstream>
 #include <set>
-#include <sstream>
 #include <string>
 #include <vector>
 
@@ -26,13 +25,6 @@ std::string quoted(const std::string& s) {
   std::string q = "'";
   for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
   return q + "'";
-}
-
-std::string slurp(const fs::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::stringstream s;
-  s << in.rdbuf();
-  return s.str();
 }
 
 struct CommandResult {
@@ -57,8 +49,8 @@ class RenderCommand : public testing::GlTest {
     CommandResult run;
     const int raw = std::system(command.c_str());
     run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-    run.out = slurp(dir_ / "stdout");
-    run.err = slurp(dir_ / "stderr");
+    run.out = testing::read_text(dir_ / "stdout");
+    run.err = testing::read_text(dir_ / "stderr");
     return run;
   }
 

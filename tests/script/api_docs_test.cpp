@@ -4,7 +4,6 @@
 // only checked against the names listed here (copied from lesson_api.h, expectations.cpp and suite.cpp), since
 // they live in a lesson's or a suite's own state.
 #include <fstream>
-#include <iterator>
 #include <map>
 #include <regex>
 #include <set>
@@ -156,8 +155,7 @@ TEST_F(ApiDocs, AnUndocumentedNameIsCaught) {
 TEST(ApiDocsFiles, LessonAndGradingMetaFilesNameTheRealGlobals) {
   const auto dir = ::meshedit::testing::source_dir() / "scripts" / "api";
   Documented lesson = parse_meta(dir / "lesson.lua");
-  std::ifstream lesson_in(dir / "lesson.lua");
-  std::string text((std::istreambuf_iterator<char>(lesson_in)), std::istreambuf_iterator<char>());
+  const std::string text = ::meshedit::testing::read_text(dir / "lesson.lua");
   for (const char* name : {"lesson", "step", "say", "wait_for", "animate", "show", "highlight", "label", "clear",
                            "camera", "current_mesh", "selection", "lesson_file"}) {
     EXPECT_NE(text.find(std::string("\nfunction ") + name + "("), std::string::npos) << name;

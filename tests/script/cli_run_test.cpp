@@ -21,11 +21,6 @@ struct Outcome {
   std::string out, err;
 };
 
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // `dir` is the test's scratch_dir() (calling scratch_dir() again would empty it).
 Outcome run_meshedit(const std::filesystem::path& dir, const std::string& arguments) {
   const auto out = dir / "run_stdout.txt", err = dir / "run_stderr.txt";
@@ -35,8 +30,8 @@ Outcome run_meshedit(const std::filesystem::path& dir, const std::string& argume
   const int raw = std::system(command.c_str());
   Outcome o;
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  o.out = slurp(out);
-  o.err = slurp(err);
+  o.out = testing::read_text(out);
+  o.err = testing::read_text(err);
   return o;
 }
 

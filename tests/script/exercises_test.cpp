@@ -36,16 +36,11 @@ std::filesystem::path solution_file(Exercise e) {
   return testing::source_dir() / "tests" / "script" / "solutions" / exercise_info(e).file;
 }
 
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // The solution of `e` with `from` replaced by `to` (which must occur), saved under the exercise's file name
 // in a fresh folder; returns the loaded code.
 std::unique_ptr<StudentCode> variant(Exercise e, const std::vector<std::pair<std::string, std::string>>& edits,
                                      LuaLimits limits = {}) {
-  std::string text = read_text(solution_file(e));
+  std::string text = testing::read_text(solution_file(e));
   for (const auto& [from, to] : edits) {
     const size_t at = text.find(from);
     EXPECT_NE(at, std::string::npos) << "not in the solution: " << from;

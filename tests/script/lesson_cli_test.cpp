@@ -20,11 +20,6 @@ struct Outcome {
   std::string out, err;
 };
 
-std::string slurp(const std::filesystem::path& path) {
-  std::ifstream in(path);
-  return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
-}
-
 // Runs meshedit in `dir` (the test's scratch_dir()).
 Outcome run_meshedit(const std::filesystem::path& dir, const std::string& arguments) {
   const auto out = dir / "lesson_stdout.txt", err = dir / "lesson_stderr.txt";
@@ -33,8 +28,8 @@ Outcome run_meshedit(const std::filesystem::path& dir, const std::string& argume
   const int raw = std::system(command.c_str());
   Outcome o;
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  o.out = slurp(out);
-  o.err = slurp(err);
+  o.out = testing::read_text(out);
+  o.err = testing::read_text(err);
   return o;
 }
 

@@ -37,8 +37,7 @@ void write_file(const std::filesystem::path& path, const std::string& text) {
 
 // The solution flip with one line removed: f0 keeps pointing at a halfedge that left it.
 std::string broken_flip() {
-  std::ifstream in(solutions() / "flip.lua", std::ios::binary);
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::string text = testing::read_text(solutions() / "flip.lua");
   const std::string line = "  f0.halfedge = h0\n";
   const size_t at = text.find(line);
   EXPECT_NE(at, std::string::npos);
