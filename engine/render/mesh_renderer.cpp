@@ -29,6 +29,7 @@
 #include "render/gpu_mesh.h"
 #include "render/incremental_update.h"
 #include "render/mesh_geometry.h"
+#include "render/pick_from_faces.h"
 #include "render/pick_id.h"
 #include "render/render_error.h"
 
@@ -108,10 +109,11 @@ struct PickKey {
   glm::dmat4 view_projection{0.0};
   int width = 0, height = 0;
   bool halfedges = false;
+  bool faces_only = false;  // the pass drew faces only (pick_from_faces.h)
 
   bool operator==(const PickKey& o) const {
     return mesh == o.mesh && version == o.version && view_projection == o.view_projection && width == o.width &&
-           height == o.height && halfedges == o.halfedges;
+           height == o.height && halfedges == o.halfedges && faces_only == o.faces_only;
   }
 };
 
@@ -182,12 +184,17 @@ struct MeshRenderer::Impl {
                   const Highlights& highlights);
   void draw_lines_and_points(const gl::CameraUniforms& uniforms, const ViewOptions& options,
                              const Highlights& highlights);
-  void draw_ids(const gl::CameraUniforms& uniforms, bool halfedges);
+  void draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only);
   void ensure_pick_target(Viewport viewport);
   void count_gpu_bytes();
   PickKey pick_key_for(const OrbitCamera& camera, Viewport viewport) const;
   bool front_only() const {
     return is_large_mesh(stats.triangles, style) && stats.boundary_edges == 0 && stats.skipped_faces == 0;
+  }
+  // A large mesh whose live faces and edges are all drawn is picked from a faces-only id pass
+  // (pick_from_faces.h): every edge and vertex with a face is found through the faces around the cursor.
+  bool pick_faces_only() const {
+    return is_large_mesh(stats.triangles, style) && stats.skipped_faces == 0 && stats.skipped_edges == 0;
   }
 
   ShaderProgram face, face_pick, segment, segment_pick, point, point_pick;
@@ -394,6 +401,7 @@ PickKey MeshRenderer::Impl::pick_key_for(const OrbitCamera& camera, Viewport vie
   key.width = viewport.width;
   key.height = viewport.height;
   key.halfedges = last_options.show_halfedges;
+  key.faces_only = pick_faces_only();
   return key;
 }
 
@@ -494,11 +502,12 @@ void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniform
   focus_points.draw();
 }
 
-void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfedges) {
+void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only) {
   face_pick.use();
   gl::set_camera(face_pick, uniforms);
   glUniform1ui(face_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Face));
   draw_triangles(gpu, face_pick, front_only());
+  if (faces_only) return;
 
   // Edges and arrows as hairlines: pick() reads a window around the cursor, so one within its radius is
   // found (and wins over the face by priority); hairlines cost llvmpipe half what wide segments do.
@@ -593,7 +602,8 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
   Impl& r = *impl_;
   if (!r.uploaded || x < 0 || y < 0 || x >= viewport.width || y >= viewport.height) return ElementRef();
   const bool halfedges = r.last_options.show_halfedges;
-  if (halfedges) r.ensure_arrows();
+  const bool faces_only = r.pick_faces_only();
+  if (halfedges && !faces_only) r.ensure_arrows();
 
   gl::FramebufferScope restore;
   r.ensure_pick_target(viewport);
@@ -611,12 +621,13 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
     glEnable(GL_PROGRAM_POINT_SIZE);
-    r.draw_ids(gl::camera_uniforms(camera, viewport), halfedges);
+    r.draw_ids(gl::camera_uniforms(camera, viewport), halfedges, faces_only);
     glBindVertexArray(0);
     glUseProgram(0);
     r.pick_key = key;
     r.pick_valid = true;
     ++r.stats.id_passes;
+    r.stats.last_id_pass_faces_only = faces_only;
     glFinish();  // so the time below is the pass's, not the next read's
     r.stats.last_id_pass_ms =
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start).count();
@@ -634,6 +645,7 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
   for (int row = 0; row < h; ++row) {
     std::copy_n(bottom_up.begin() + long(row) * w, w, top_down.begin() + long(h - 1 - row) * w);
   }
+  if (faces_only) return pick_from_faces(*r.mesh, camera, viewport, PickWindow{top_down, w, h, x0, y0}, x, y, halfedges);
   const ElementRef chosen = choose_pick(top_down, w, h, x - x0, y - y0);
   if (chosen.kind != ElementKind::Vertex || !chosen.valid()) return chosen;
   // Two vertices can share a pixel on a dense mesh, the last drawn covering the other: among the

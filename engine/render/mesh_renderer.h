@@ -30,7 +30,9 @@
 // - Picking is exact: an id pass renders faces, then edges and halfedge arrows (when shown) as hairlines
 //   and vertices as single pixels, into an R32UI buffer, with the same depth test as the picture; pick()
 //   reads a small window around the cursor and prefers vertex > halfedge > edge > face within a few
-//   pixels (pick_id.h); among the vertices seen, the one projecting nearest the cursor. The id
+//   pixels (pick_id.h); among the vertices seen, the one projecting nearest the cursor. A large mesh whose
+//   live faces and edges are all drawn gets a faces-only id pass (a third of the cost) and its vertices,
+//   edges and arrows are found on the CPU from the faces seen around the cursor (pick_from_faces.h). The id
 //   buffer is redrawn only when the camera, viewport, mesh or options changed since the last pick, so
 //   hovering over a still view reads a few pixels only; pick_is_cheap() says whether the next pick would
 //   redraw it (the app waits for the mouse to rest after a camera move before it hovers).
@@ -63,6 +65,7 @@ struct RenderStats {
   size_t last_update_bytes = 0;    // bytes the last update() that changed anything sent to the GPU
   size_t last_update_slots = 0;    // slots it rewrote (every slot for a full rebuild)
   double last_id_pass_ms = 0.0;    // wall time of the last id-buffer redraw (to glFinish)
+  bool last_id_pass_faces_only = false;  // it drew faces only (a large mesh: pick_from_faces.h)
   std::string last_rebuild_reason; // why the last full rebuild was not a patch ("no change description", ...)
   size_t triangles = 0, edges = 0, boundary_edges = 0, vertices = 0;  // drawn
   size_t arrows = 0;                            // halfedge slots in the arrow batch (when built)

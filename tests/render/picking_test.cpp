@@ -1,5 +1,6 @@
-// Picking on a rendered cube (EGL, 256x256), checked against exact CPU ray casts and projections, and
-// the renderer's upload accounting: an idle frame or a selection change does no geometry work.
+// Picking on a rendered cube (EGL, 256x256), checked against exact CPU ray casts and projections, both by the
+// exact id pass and by the faces-only pass large meshes get (pick_from_faces.h; the threshold lowered to the
+// cube), and the renderer's upload accounting: an idle frame or a selection change does no geometry work.
 #include <cmath>
 #include <optional>
 
@@ -74,11 +75,16 @@ class Picking : public testing::GlTest {
     renderer_.reset();
     target_.reset();
   }
+  void check_arrows_pick_their_halfedges();
   ElementRef draw_and_pick(int x, int y, const ViewOptions& options = {}) {
     target_->clear(renderer_->style().background);
     renderer_->update(mesh_);
     renderer_->draw(camera_, kViewport, options, {});
     return renderer_->pick(camera_, kViewport, x, y);
+  }
+  // Large-mesh picking (a faces-only id pass) for any mesh, or the default threshold again.
+  void use_large_mesh_path(bool large) {
+    renderer_->style().large_mesh_triangles = large ? 0 : RenderStyle().large_mesh_triangles;
   }
   glm::ivec2 pixel_of(const glm::dvec3& p) const {
     const ScreenPoint s = camera_.project(p, kViewport);
@@ -118,27 +124,49 @@ TEST_F(Picking, FacesAcrossTheImageMatchExactRayCasts) {
 }
 
 TEST_F(Picking, TheNearestCornerPicksItsVertex) {
-  // v5 = (+0.5, -0.5, +0.5) is the corner nearest the eye in the three-quarter view (front, right, top).
-  const glm::ivec2 p = pixel_of(mesh_.position(VertexId(5)));
-  EXPECT_EQ(draw_and_pick(p.x, p.y), ElementRef(VertexId(5)));
-  // A few pixels off still finds it (kVertexPickRadius).
-  EXPECT_EQ(draw_and_pick(p.x + 3, p.y + 3), ElementRef(VertexId(5)));
-  EXPECT_NE(draw_and_pick(p.x + 6, p.y + 6), ElementRef(VertexId(5)));
+  for (const bool large : {false, true}) {
+    SCOPED_TRACE(large ? "faces-only pass" : "exact pass");
+    use_large_mesh_path(large);
+    // v5 = (+0.5, -0.5, +0.5) is the corner nearest the eye in the three-quarter view (front, right, top).
+    const glm::ivec2 p = pixel_of(mesh_.position(VertexId(5)));
+    EXPECT_EQ(draw_and_pick(p.x, p.y), ElementRef(VertexId(5)));
+    EXPECT_EQ(renderer_->stats().last_id_pass_faces_only, large);
+    // A few pixels off still finds it (kVertexPickRadius).
+    EXPECT_EQ(draw_and_pick(p.x + 3, p.y + 3), ElementRef(VertexId(5)));
+    EXPECT_NE(draw_and_pick(p.x + 6, p.y + 6), ElementRef(VertexId(5)));
+  }
 }
 
 TEST_F(Picking, AnEdgeMidpointPicksTheEdge) {
-  // The edge v4-v5 runs along the top of the front side, visible from above.
-  const EdgeId e = edge_between(mesh_, VertexId(4), VertexId(5));
-  ASSERT_TRUE(e.valid());
-  const glm::ivec2 p = pixel_of((mesh_.position(VertexId(4)) + mesh_.position(VertexId(5))) * 0.5);
-  EXPECT_EQ(draw_and_pick(p.x, p.y), ElementRef(e));
-  // Also without the wireframe: edges stay pickable.
-  ViewOptions plain;
-  plain.wireframe = false;
-  EXPECT_EQ(draw_and_pick(p.x, p.y, plain), ElementRef(e));
+  for (const bool large : {false, true}) {
+    SCOPED_TRACE(large ? "faces-only pass" : "exact pass");
+    use_large_mesh_path(large);
+    // The edge v4-v5 runs along the top of the front side, visible from above.
+    const EdgeId e = edge_between(mesh_, VertexId(4), VertexId(5));
+    ASSERT_TRUE(e.valid());
+    const glm::ivec2 p = pixel_of((mesh_.position(VertexId(4)) + mesh_.position(VertexId(5))) * 0.5);
+    EXPECT_EQ(draw_and_pick(p.x, p.y), ElementRef(e));
+    // Also without the wireframe: edges stay pickable.
+    ViewOptions plain;
+    plain.wireframe = false;
+    EXPECT_EQ(draw_and_pick(p.x, p.y, plain), ElementRef(e));
+    // The edge v2-v6 lies on the back, hidden: a pixel on its image gives what is in front, never the edge.
+    const EdgeId back = edge_between(mesh_, VertexId(2), VertexId(6));
+    ASSERT_TRUE(back.valid());
+    const glm::ivec2 q = pixel_of((mesh_.position(VertexId(2)) + mesh_.position(VertexId(6))) * 0.5);
+    EXPECT_NE(draw_and_pick(q.x, q.y), ElementRef(back));
+  }
 }
 
 TEST_F(Picking, ShownArrowsPickTheirHalfedge) {
+  for (const bool large : {false, true}) {
+    SCOPED_TRACE(large ? "faces-only pass" : "exact pass");
+    use_large_mesh_path(large);
+    check_arrows_pick_their_halfedges();
+  }
+}
+
+void Picking::check_arrows_pick_their_halfedges() {
   ViewOptions options;
   options.show_halfedges = true;
   int checked = 0;
@@ -169,18 +197,50 @@ TEST_F(Picking, OnADenseGridEveryVertexPicksItself) {
   mesh_ = build_halfedge_mesh(make_grid(40, 40));
   renderer_->update(mesh_);
   camera_.fit(renderer_->bounds());
-  target_->clear(renderer_->style().background);
-  ViewOptions options;
-  options.show_vertices = true;
-  renderer_->draw(camera_, kViewport, options, {});
-  int checked = 0;
-  for (VertexId v : mesh_.vertices()) {
-    if (v.index % 7 != 0) continue;
-    const glm::ivec2 p = pixel_of(mesh_.position(v));
-    EXPECT_EQ(renderer_->pick(camera_, kViewport, p.x, p.y), ElementRef(v)) << format_id(v);
-    ++checked;
+  for (const bool large : {false, true}) {
+    SCOPED_TRACE(large ? "faces-only pass" : "exact pass");
+    use_large_mesh_path(large);
+    target_->clear(renderer_->style().background);
+    ViewOptions options;
+    options.show_vertices = true;
+    renderer_->draw(camera_, kViewport, options, {});
+    int checked = 0;
+    for (VertexId v : mesh_.vertices()) {
+      if (v.index % 7 != 0) continue;
+      const glm::ivec2 p = pixel_of(mesh_.position(v));
+      EXPECT_EQ(renderer_->pick(camera_, kViewport, p.x, p.y), ElementRef(v)) << format_id(v);
+      ++checked;
+    }
+    EXPECT_EQ(checked, 241);  // 1681 vertices, every 7th
+    EXPECT_EQ(renderer_->stats().last_id_pass_faces_only, large);
   }
-  EXPECT_EQ(checked, 241);  // 1681 vertices, every 7th
+}
+
+TEST_F(Picking, LargeMeshPathAgreesWithTheExactPassInsideFaces) {
+  // Pixels well inside faces: both passes give the face a ray cast meets.
+  int checked = 0;
+  for (int y = 20; y < 256; y += 24) {
+    for (int x = 20; x < 256; x += 24) {
+      use_large_mesh_path(false);
+      const ElementRef exact = draw_and_pick(x, y);
+      if (exact.kind != ElementKind::Face) continue;  // background, or near an edge or vertex
+      use_large_mesh_path(true);
+      EXPECT_EQ(draw_and_pick(x, y), exact) << "pixel " << x << "," << y;
+      ++checked;
+    }
+  }
+  EXPECT_GE(checked, 30);  // 38 of the 100 pixels: the others are background or near an edge
+}
+
+TEST_F(Picking, ABrokenLargeMeshKeepsTheExactPass) {
+  // A face that cannot be walked: its edges may be drawn with no face around them, so only the exact pass
+  // finds them.
+  use_large_mesh_path(true);
+  mesh_.set_next(HalfedgeId(2), HalfedgeId(1));
+  renderer_->update(mesh_);
+  ASSERT_GT(renderer_->stats().skipped_faces, 0u);
+  EXPECT_TRUE(draw_and_pick(128, 128).valid());
+  EXPECT_FALSE(renderer_->stats().last_id_pass_faces_only);
 }
 
 TEST_F(Picking, BackgroundAndOutsidePixelsPickNothing) {
