@@ -2,7 +2,6 @@
 // exact id pass and by the faces-only pass large meshes get (pick_from_faces.h; the threshold lowered to the
 // cube), and the renderer's upload accounting: an idle frame or a selection change does no geometry work.
 #include <cmath>
-#include <optional>
 
 #include <gtest/gtest.h>
 #include <glm/geometric.hpp>
@@ -11,6 +10,7 @@
 #include "core/normals.h"
 #include "core/primitives.h"
 #include "gl_test_support.h"
+#include "ray_cast.h"
 #include "render/mesh_geometry.h"
 #include "render/overlay_renderer.h"
 #include "support/test_support.h"
@@ -20,44 +20,11 @@ namespace {
 
 constexpr Viewport kViewport{256, 256};
 
-// Distance along the ray to triangle (a, b, c), if it hits (Moller-Trumbore).
-std::optional<double> hit(const Ray& ray, const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
-  const glm::dvec3 e1 = b - a, e2 = c - a;
-  const glm::dvec3 p = glm::cross(ray.direction, e2);
-  const double det = glm::dot(e1, p);
-  if (std::abs(det) < 1e-14) return std::nullopt;
-  const glm::dvec3 t = ray.origin - a;
-  const double u = glm::dot(t, p) / det;
-  const glm::dvec3 q = glm::cross(t, e1);
-  const double v = glm::dot(ray.direction, q) / det;
-  const double s = glm::dot(e2, q) / det;
-  if (u < 0 || v < 0 || u + v > 1 || s <= 0) return std::nullopt;
-  return s;
-}
-
-// The face an exact ray cast through pixel (x, y)'s centre meets first.
+// The exact answers, for this test's viewport.
 ElementRef cast(const HalfedgeMesh& mesh, const OrbitCamera& camera, int x, int y) {
-  const Ray ray = camera.ray({x + 0.5, y + 0.5}, kViewport);
-  ElementRef best;
-  double nearest = 1e300;
-  for (FaceId f : mesh.faces()) {
-    const auto corners = face_corners(mesh, f);
-    if (auto s = hit(ray, (*corners)[0], (*corners)[1], (*corners)[2]); s && *s < nearest) {
-      nearest = *s;
-      best = f;
-    }
-  }
-  return best;
+  return testing::cast(mesh, camera, kViewport, x, y);
 }
-
-EdgeId edge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
-  for (EdgeId e : mesh.edges()) {
-    const HalfedgeId h = mesh.halfedge(e);
-    const VertexId u = mesh.vertex(h), v = mesh.vertex(mesh.twin(h));
-    if ((u == a && v == b) || (u == b && v == a)) return e;
-  }
-  return EdgeId();
-}
+using testing::edge_between;
 
 class Picking : public testing::GlTest {
  protected:
