@@ -136,6 +136,35 @@ void pass_edges(Level& L, int threads) {
   parallel_for(threads, L.e0, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
     for (size_t e = begin; e < end; ++e) {
+      // h0 -> twin, next -> their nexts -> the opposite corners' positions: a chain of cache misses, started
+      // for later edges one link per stage (dead edges skipped). The last two stages follow h1.next, which on a
+      // boundary edge is a loop halfedge whose next another edge rewrites meanwhile: they skip boundary edges.
+      const auto live = [&](size_t g) { return g < end && m.edge_alive[g]; };
+      const auto interior = [&](size_t g) { return live(g) && !L.plan[g].boundary(); };
+      if (live(e + 32)) __builtin_prefetch(&m.h[L.face_side(uint32_t(e + 32))]);
+      if (live(e + 24)) {
+        const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 24))];
+        __builtin_prefetch(&m.h[h0.twin.index]);
+        __builtin_prefetch(&m.h[h0.next.index]);
+      }
+      if (live(e + 16)) {
+        const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 16))];
+        const HalfedgeRecord& h1 = m.h[h0.twin.index];
+        __builtin_prefetch(&m.h[h1.next.index]);
+        __builtin_prefetch(&m.h[m.h[h0.next.index].next.index]);
+        __builtin_prefetch(&m.position[h0.vertex.index]);
+        __builtin_prefetch(&m.position[h1.vertex.index]);
+      }
+      if (interior(e + 8)) {
+        const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 8))];
+        const HalfedgeRecord& h1 = m.h[h0.twin.index];
+        __builtin_prefetch(&m.h[m.h[h1.next.index].next.index]);
+        __builtin_prefetch(&m.position[m.h[m.h[h0.next.index].next.index].vertex.index]);
+      }
+      if (interior(e + 4)) {
+        const HalfedgeRecord& h1 = m.h[m.h[L.face_side(uint32_t(e + 4))].twin.index];
+        __builtin_prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
+      }
       if (!m.edge_alive[e]) continue;
       const auto edge = uint32_t(e);
       const bool boundary = L.plan[e].boundary();
@@ -262,13 +291,23 @@ void pass_triangles(Level& L, int threads) {
   parallel_for(threads, L.f0, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
     for (size_t f = begin; f < end; ++f) {
-      // The chain face -> x0 -> x1 -> x2 is a few dependent cache misses: start it for later faces now.
-      // (Dead faces are skipped: their halfedge may be any id.)
-      if (f + 16 < end && m.face_alive[f + 16]) __builtin_prefetch(&m.h[m.face_halfedge[f + 16].index]);
-      if (f + 8 < end && m.face_alive[f + 8]) {
-        const HalfedgeRecord& ahead = m.h[m.face_halfedge[f + 8].index];
-        __builtin_prefetch(&m.h[ahead.next.index]);
-        __builtin_prefetch(&L.plan[ahead.edge.index]);
+      // The chain face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for later
+      // faces now, one link per stage. (Dead faces are skipped: their halfedge may be any id.)
+      const auto live = [&](size_t g) { return g < end && m.face_alive[g]; };
+      if (live(f + 24)) __builtin_prefetch(&m.h[m.face_halfedge[f + 24].index]);
+      if (live(f + 16)) {
+        const HalfedgeRecord& x0 = m.h[m.face_halfedge[f + 16].index];
+        __builtin_prefetch(&m.h[x0.next.index]);
+        __builtin_prefetch(&L.plan[x0.edge.index]);
+      }
+      if (live(f + 8)) {
+        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[f + 8].index].next.index];
+        __builtin_prefetch(&m.h[x1.next.index]);
+        __builtin_prefetch(&L.plan[x1.edge.index]);
+      }
+      if (live(f + 4)) {
+        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[f + 4].index].next.index].next.index];
+        __builtin_prefetch(&L.plan[x2.edge.index]);
       }
       if (!m.face_alive[f]) continue;
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
