@@ -25,6 +25,8 @@ ChangeJournal::ChangeJournal(HalfedgeMesh& mesh, std::optional<size_t> max_entri
       version_before_(mesh.version()),
       proven_before_(MeshStorage::proven_version(mesh)),
       max_entries_(max_entries ? *max_entries : default_cap(shape_before_)) {
+  // A journal already attached (an edit nested in another) could not see this one's writes: it takes its snapshot.
+  if (ChangeJournal* outer = MeshStorage::journal(mesh)) outer->fall_back();
   MeshStorage::set_journal(mesh, this);
 }
 

@@ -15,7 +15,8 @@
 //   (touched slots with their old values) or (the whole state before).
 // - revert() leaves the mesh exactly as it was when the journal was attached: contents, capacities, live counts,
 //   version() and proven_valid_triangles().
-// - One journal per mesh at a time; the destructor detaches it. The journal is not copied with the mesh.
+// - One journal per mesh at a time: attaching a second one (an edit nested in another) makes the first fall back to
+//   its snapshot. The destructor detaches it. The journal is not copied with the mesh.
 #pragma once
 
 #include <cstddef>
@@ -36,8 +37,8 @@ class ChangeJournal {
     SlotValues old;  // the slot's values before this write
   };
 
-  // Attaches to `mesh` (which must not have a journal yet). The default cap: half the mesh's slots (beyond that a
-  // snapshot is smaller than the log), at least 4096.
+  // Attaches to `mesh` (a journal already attached falls back first). The default cap: half the mesh's slots
+  // (beyond that a snapshot is smaller than the log), at least 4096.
   explicit ChangeJournal(HalfedgeMesh& mesh, std::optional<size_t> max_entries = std::nullopt);
   ~ChangeJournal();
   ChangeJournal(const ChangeJournal&) = delete;

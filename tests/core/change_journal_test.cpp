@@ -170,6 +170,14 @@ TEST(ChangeJournal, AssignmentAndMovingFromFallBack) {
   });
 }
 
+TEST(ChangeJournal, ANestedJournalMakesTheOuterOneFallBack) {
+  expect_fall_back([](HalfedgeMesh& m) {
+    ChangeJournal inner(m);
+    m.set_next(HalfedgeId(2), HalfedgeId(7));
+    EXPECT_FALSE(inner.has_snapshot());
+  });
+}
+
 TEST(ChangeJournal, LogCapFallsBack) {
   expect_fall_back(
       [](HalfedgeMesh& m) {
