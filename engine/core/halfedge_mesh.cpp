@@ -2,8 +2,13 @@
 #include "core/halfedge_mesh.h"
 
 #include <cstring>
+#include <type_traits>
 
 namespace meshedit {
+
+// Containers of meshes (the history's redo list) relocate them by moving only while moving cannot throw; a journal
+// link must not change that (JournalLink's move is noexcept).
+static_assert(std::is_nothrow_move_constructible_v<HalfedgeMesh>);
 
 uint32_t HalfedgeMesh::capacity(ElementKind kind) const {
   switch (kind) {
@@ -29,6 +34,7 @@ bool HalfedgeMesh::alive(ElementRef r) const {
 
 void HalfedgeMesh::set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex,
                                  EdgeId edge, FaceId face) {
+  log_write(h);
   h_[h.index] = HalfedgeRecord{next, twin, vertex, edge, face};
   touch();
 }
@@ -76,6 +82,7 @@ FaceId HalfedgeMesh::new_boundary() {
 
 void HalfedgeMesh::delete_element(VertexId v) {
   if (!alive(v)) return;
+  log_write(v);
   v_alive_[v.index] = 0;
   --live_vertices_;
   touch();
@@ -83,6 +90,7 @@ void HalfedgeMesh::delete_element(VertexId v) {
 
 void HalfedgeMesh::delete_element(HalfedgeId h) {
   if (!alive(h)) return;
+  log_write(h);
   h_alive_[h.index] = 0;
   --live_halfedges_;
   touch();
@@ -90,6 +98,7 @@ void HalfedgeMesh::delete_element(HalfedgeId h) {
 
 void HalfedgeMesh::delete_element(EdgeId e) {
   if (!alive(e)) return;
+  log_write(e);
   e_alive_[e.index] = 0;
   --live_edges_;
   touch();
@@ -97,6 +106,7 @@ void HalfedgeMesh::delete_element(EdgeId e) {
 
 void HalfedgeMesh::delete_element(FaceId f) {
   if (!alive(f)) return;
+  log_write(f);
   if (f.is_boundary()) {
     b_alive_[f.slot()] = 0;
     --live_boundaries_;

@@ -14,9 +14,13 @@
 // - The class never follows pointers on its own except in the bounded walks below, which stop after
 //   `halfedge_capacity()` steps, so a broken mesh can be inspected without hanging.
 // - Every mutation bumps `version()`, so caches (GPU buffers, tables) know when to refresh.
+// - While a ChangeJournal is attached (change_journal.h; off by default), every mutating member first reports the
+//   slot it is about to write, and every wholesale replacement (assignment, being moved from, MeshStorage's direct
+//   array access) makes the journal take a full snapshot first. Without a journal that costs one branch per write.
+//   The journal is not part of the value: a copy of a mesh has none.
 //
 // Connectivity invariants (twin of twin, closed face cycles, ...) are NOT enforced here: check them with
-// validate() (validate.h). The mesh is a plain copyable value; history.h keeps copies for undo.
+// validate() (validate.h). The mesh is a plain copyable value; history.h keeps copies or patches for undo.
 #pragma once
 
 #include <algorithm>
@@ -62,6 +66,42 @@ class AliveRange {
 };
 
 struct MeshStorage;
+class ChangeJournal;
+
+// The journal a mesh reports its writes to, or none (change_journal.h). Not part of the mesh's value: a copy starts
+// without one. Declared as the mesh's first member, so in the mesh's assignment it runs before any array is
+// replaced: a journaled mesh whose contents are about to be replaced (assigned to) or emptied (moved from) tells its
+// journal first, which takes a full snapshot of the state before the change and detaches.
+class JournalLink {
+ public:
+  JournalLink() = default;
+  JournalLink(const JournalLink&) noexcept {}
+  JournalLink(JournalLink&& from) noexcept { from.before_bulk_write(); }
+  JournalLink& operator=(const JournalLink&) {
+    before_bulk_write();
+    return *this;
+  }
+  JournalLink& operator=(JournalLink&& from) noexcept {
+    before_bulk_write();
+    from.before_bulk_write();
+    return *this;
+  }
+
+  // Before a write of one slot (kind, slot): the journal logs the slot's old values.
+  void before_write(ElementKind kind, uint32_t slot) {
+    if (journal_) [[unlikely]] note_write(kind, slot);
+  }
+  // Before a write the journal cannot follow slot by slot.
+  void before_bulk_write() noexcept {
+    if (journal_) [[unlikely]] fall_back();
+  }
+
+ private:
+  friend struct MeshStorage;
+  void note_write(ElementKind kind, uint32_t slot);  // change_journal.cpp
+  void fall_back() noexcept;                          // change_journal.cpp
+  ChangeJournal* journal_ = nullptr;
+};
 
 // The five pointers of one halfedge, stored together: a walk reads one cache line per halfedge, not five.
 struct HalfedgeRecord {
@@ -116,21 +156,22 @@ class HalfedgeMesh {
   // All five pointers of h at once (whole-mesh passes prefetch it).
   const HalfedgeRecord& record(HalfedgeId h) const { return h_[h.index]; }
 
-  void set_next(HalfedgeId h, HalfedgeId next) { h_[h.index].next = next; touch(); }
-  void set_twin(HalfedgeId h, HalfedgeId twin) { h_[h.index].twin = twin; touch(); }
-  void set_vertex(HalfedgeId h, VertexId v) { h_[h.index].vertex = v; touch(); }
-  void set_edge(HalfedgeId h, EdgeId e) { h_[h.index].edge = e; touch(); }
-  void set_face(HalfedgeId h, FaceId f) { h_[h.index].face = f; touch(); }
+  void set_next(HalfedgeId h, HalfedgeId next) { log_write(h); h_[h.index].next = next; touch(); }
+  void set_twin(HalfedgeId h, HalfedgeId twin) { log_write(h); h_[h.index].twin = twin; touch(); }
+  void set_vertex(HalfedgeId h, VertexId v) { log_write(h); h_[h.index].vertex = v; touch(); }
+  void set_edge(HalfedgeId h, EdgeId e) { log_write(h); h_[h.index].edge = e; touch(); }
+  void set_face(HalfedgeId h, FaceId f) { log_write(h); h_[h.index].face = f; touch(); }
   // The course's Halfedge::setNeighbors, with its argument order.
   void set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex, EdgeId edge,
                      FaceId face);
-  void set_halfedge(VertexId v, HalfedgeId h) { v_halfedge_[v.index] = h; touch(); }
-  void set_halfedge(EdgeId e, HalfedgeId h) { e_halfedge_[e.index] = h; touch(); }
+  void set_halfedge(VertexId v, HalfedgeId h) { log_write(v); v_halfedge_[v.index] = h; touch(); }
+  void set_halfedge(EdgeId e, HalfedgeId h) { log_write(e); e_halfedge_[e.index] = h; touch(); }
   void set_halfedge(FaceId f, HalfedgeId h) {
+    log_write(f);
     (f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()]) = h;
     touch();
   }
-  void set_position(VertexId v, const glm::dvec3& p) { v_position_[v.index] = p; touch(); }
+  void set_position(VertexId v, const glm::dvec3& p) { log_write(v); v_position_[v.index] = p; touch(); }
 
   // ---- allocation and deletion --------------------------------------------------------------------
   // New elements are live, appended at the end, with every pointer invalid and position (0,0,0).
@@ -197,6 +238,14 @@ class HalfedgeMesh {
   // per array instead of one call per element (mesh_storage.h).
   friend struct MeshStorage;
   void touch() { ++version_; }
+  void log_write(VertexId v) { journal_.before_write(ElementKind::Vertex, v.index); }
+  void log_write(HalfedgeId h) { journal_.before_write(ElementKind::Halfedge, h.index); }
+  void log_write(EdgeId e) { journal_.before_write(ElementKind::Edge, e.index); }
+  void log_write(FaceId f) {
+    journal_.before_write(f.is_boundary() ? ElementKind::Boundary : ElementKind::Face, f.slot());
+  }
+
+  JournalLink journal_;  // first member: see JournalLink
 
   // Halfedge arrays, indexed by HalfedgeId.
   MeshArray<HalfedgeRecord> h_;  // next, twin, vertex, edge, face

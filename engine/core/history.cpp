@@ -5,43 +5,34 @@
 //   formats only what differs; it reads a slot only below that mesh's capacity, so two unrelated meshes,
 //   or the arguments swapped, give a longer list but never a crash.
 // - History never holds more than max_depth undo entries; after undo/redo the mesh's version is above
-//   every version it had before, so caches keyed by version refresh.
+//   every version it had before, so caches keyed by version refresh. A patch entry ends with the version a snapshot
+//   entry would give: max(the restored state's recorded version, the version before the step) + 1.
 #include "core/history.h"
 
-#include <cstring>
+#include <type_traits>
 #include <utility>
 
-#include "core/value_format.h"
+#include "core/field_diff.h"
+#include "core/mesh_storage.h"
 
 namespace meshedit {
 namespace {
-
-template <class T>
-bool same(const T& a, const T& b) {
-  return a == b;
-}
-bool same(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0; }
-
-template <ElementKind K>
-std::string show(Id<K> id) {
-  return format_id(id);
-}
-std::string show(FaceId f) { return format_id(f); }
-std::string show(const glm::dvec3& p) { return format_position(p); }
-std::string show(bool alive) { return alive ? "alive" : "dead"; }
 
 // Appends the change of one field of one slot. `a`/`b` are null when the slot does not exist in that mesh.
 template <class Get>
 void compare(std::vector<FieldChange>& out, ElementRef element, const char* field, const HalfedgeMesh* a,
              const HalfedgeMesh* b, Get get) {
+  using T = std::decay_t<decltype(get(*a))>;
   if (a && b) {
-    const auto before = get(*a);
-    const auto after = get(*b);
-    if (!same(before, after)) out.push_back({element, field, show(before), show(after)});
+    const T before = get(*a);
+    const T after = get(*b);
+    field_diff::compare(out, element, field, &before, &after);
   } else if (b) {
-    out.push_back({element, field, "-", show(get(*b))});
+    const T after = get(*b);
+    field_diff::compare<T>(out, element, field, nullptr, &after);
   } else if (a) {
-    out.push_back({element, field, show(get(*a)), "-"});
+    const T before = get(*a);
+    field_diff::compare<T>(out, element, field, &before, nullptr);
   }
 }
 
@@ -89,7 +80,21 @@ std::vector<FieldChange> diff(const HalfedgeMesh& before, const HalfedgeMesh& af
 
 void History::record(std::string label, HalfedgeMesh before) {
   redo_.clear();
-  undo_.push_back({std::move(label), std::move(before)});
+  Entry entry;
+  entry.label = std::move(label);
+  entry.version = before.version();
+  entry.mesh = std::move(before);
+  undo_.push_back(std::move(entry));
+  while (undo_.size() > max_depth_) undo_.pop_front();
+}
+
+void History::record(std::string label, MeshPatch patch, uint64_t version_before) {
+  redo_.clear();
+  Entry entry;
+  entry.label = std::move(label);
+  entry.version = version_before;
+  entry.patch = std::move(patch);
+  undo_.push_back(std::move(entry));
   while (undo_.size() > max_depth_) undo_.pop_front();
 }
 
@@ -103,14 +108,32 @@ const std::string& History::redo_label() const {
   return redo_.empty() ? kNone : redo_.back().label;
 }
 
+const MeshPatch* History::undo_patch() const {
+  return undo_.empty() || !undo_.back().patch ? nullptr : &*undo_.back().patch;
+}
+
+const MeshPatch* History::redo_patch() const {
+  return redo_.empty() || !redo_.back().patch ? nullptr : &*redo_.back().patch;
+}
+
+void History::step(Entry& entry, HalfedgeMesh& mesh, bool forward) {
+  const uint64_t seen = mesh.version();
+  if (entry.mesh) {
+    std::swap(*entry.mesh, mesh);  // the entry now holds the state left, with its version
+  } else {
+    entry.patch->apply(mesh, forward);
+    MeshStorage::set_versions(mesh, entry.version, MeshStorage::proven_version(mesh));
+  }
+  entry.version = seen;
+  mesh.bump_version_above(seen);
+}
+
 bool History::undo(HalfedgeMesh& mesh) {
   if (undo_.empty()) return false;
   Entry entry = std::move(undo_.back());
   undo_.pop_back();
-  const uint64_t seen = mesh.version();
-  redo_.push_back({entry.label, std::move(mesh)});
-  mesh = std::move(entry.mesh);
-  mesh.bump_version_above(seen);
+  step(entry, mesh, false);
+  redo_.push_back(std::move(entry));
   return true;
 }
 
@@ -118,11 +141,9 @@ bool History::redo(HalfedgeMesh& mesh) {
   if (redo_.empty()) return false;
   Entry entry = std::move(redo_.back());
   redo_.pop_back();
-  const uint64_t seen = mesh.version();
-  undo_.push_back({entry.label, std::move(mesh)});
+  step(entry, mesh, true);
+  undo_.push_back(std::move(entry));
   while (undo_.size() > max_depth_) undo_.pop_front();
-  mesh = std::move(entry.mesh);
-  mesh.bump_version_above(seen);
   return true;
 }
 

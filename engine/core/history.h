@@ -1,28 +1,23 @@
-// Undo/redo by snapshots, and the field-by-field diff of two meshes.
+// Undo/redo by snapshots or patches, and the field-by-field diff of two meshes.
 //
-// The mesh is a copyable value and ids are never reused, so restoring a snapshot restores every id
-// exactly: pointer-table rows stay put, handles made before an operation stay valid after its undo,
-// handles made after it read as dead.
+// The mesh is a copyable value and ids are never reused, so restoring a state restores every id exactly: pointer-table
+// rows stay put, handles made before an operation stay valid after its undo, handles made after it read as dead.
+// An entry is either a whole snapshot of the state before (any change) or a patch (mesh_patch.h: the slots an edit
+// touched, before and after, for local edits): a patch is undone and redone in time proportional to the edit. Both
+// kinds give the same meshes and the same version() numbers.
 #pragma once
 
 #include <cstddef>
 #include <deque>
+#include <optional>
 #include <string>
 #include <vector>
 
+#include "core/field_change.h"
 #include "core/halfedge_mesh.h"
+#include "core/mesh_patch.h"
 
 namespace meshedit {
-
-// One changed field: (element, field, old, new), values printed with the id formatter ("h12", "b0", "-"
-// for an invalid id), positions as "(0.5, 0, 1)" with each coordinate in the shortest form that reads back
-// to the same double (value_format.h), liveness as "alive"/"dead".
-struct FieldChange {
-  ElementRef element;
-  std::string field;   // "next" "twin" "vertex" "edge" "face" "halfedge" "position" "alive"
-  std::string before;
-  std::string after;
-};
 
 // Every field that differs between two states of one mesh, in order of kind (vertices, halfedges,
 // edges, faces, boundaries), then id, then field in this order:
@@ -41,6 +36,9 @@ class History {
   // Records that an operation called `label` turned `before` into the current mesh. Clears redo.
   // When more than max_depth entries are kept, the oldest is dropped.
   void record(std::string label, HalfedgeMesh before);
+  // The same for an edit given as a patch from the state before to the current mesh; `version_before` is the
+  // mesh's version() before the edit (what a snapshot would have carried).
+  void record(std::string label, MeshPatch patch, uint64_t version_before);
 
   bool can_undo() const { return !undo_.empty(); }
   bool can_redo() const { return !redo_.empty(); }
@@ -56,11 +54,20 @@ class History {
   bool redo(HalfedgeMesh& mesh);
   void clear();
 
+  // The patch of the entry undo() (redo()) would apply next, or null when that entry is a snapshot or there is
+  // none. Its direction is the original edit's: undo applies it backward, redo forward.
+  const MeshPatch* undo_patch() const;
+  const MeshPatch* redo_patch() const;
+
  private:
   struct Entry {
     std::string label;
-    HalfedgeMesh mesh;
+    std::optional<HalfedgeMesh> mesh;  // a snapshot of the state this entry restores, or
+    std::optional<MeshPatch> patch;    // the edit between the two states (before -> after)
+    uint64_t version = 0;              // with a patch: the version() a snapshot of the restored state would carry
   };
+  // Moves `mesh` to the state `entry` restores; `entry` then describes the way back (for the other list).
+  static void step(Entry& entry, HalfedgeMesh& mesh, bool forward);
   size_t max_depth_;
   std::deque<Entry> undo_;
   std::vector<Entry> redo_;

@@ -1,9 +1,10 @@
 // MeshStorage: direct access to HalfedgeMesh's arrays for whole-mesh passes that would only pay for per-call
 // bookkeeping through the element API: Loop subdivision and the builders write through it (View, Arrays).
 //
-// Invariants: grow() appends live elements (alive flags set, live counts and version() updated) and leaves their
-// fields for the caller to write, all of them; a View's pointers stay valid until the next change of any array's
-// size. Code that writes through a View must leave a mesh the element API could have produced, and calls touch()
+// Invariants: a mesh with a ChangeJournal attached is told before view(), grow(), arrays() or set_slots() hands out
+// or changes its arrays (the journal takes a full snapshot then, since it cannot follow such writes slot by slot).
+// grow() appends live elements (alive flags set, live counts and version() updated) and leaves their fields for the
+// caller to write, all of them; a View's pointers stay valid until the next change of any array's size. Code that writes through a View must leave a mesh the element API could have produced, and calls touch()
 // when done. vouch_valid_triangles() is called only by code that has established what it vouches for.
 #pragma once
 
@@ -28,6 +29,7 @@ struct MeshStorage {
   };
 
   static View view(HalfedgeMesh& m) {
+    m.journal_.before_bulk_write();
     return {m.h_.data(),          m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
             m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
   }
@@ -37,6 +39,7 @@ struct MeshStorage {
   // The new alive flags are set on `threads` threads (for a big level they are tens of megabytes of fresh pages).
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces,
                    int threads = 1) {
+    m.journal_.before_bulk_write();
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
@@ -92,6 +95,7 @@ struct MeshStorage {
     MeshArray<uint8_t>& b_alive;
   };
   static Arrays arrays(HalfedgeMesh& m) {
+    m.journal_.before_bulk_write();
     return {m.h_,          m.h_alive_, m.v_halfedge_, m.v_position_, m.v_alive_,  m.e_halfedge_,
             m.e_alive_,    m.f_halfedge_, m.f_alive_, m.b_halfedge_,  m.b_alive_};
   }
@@ -103,6 +107,39 @@ struct MeshStorage {
     m.live_edges_ = m.e_alive_.size();
     m.live_faces_ = m.f_alive_.size();
     m.live_boundaries_ = m.b_alive_.size();
+  }
+
+  // ---- for undo and the change journal (mesh_patch.h, change_journal.h), which restore exact states ----
+  // The journal a mesh reports to (JournalLink); attach only a journal that detaches before it dies.
+  static ChangeJournal* journal(const HalfedgeMesh& m) { return m.journal_.journal_; }
+  static void set_journal(HalfedgeMesh& m, ChangeJournal* journal) { m.journal_.journal_ = journal; }
+  // Sets every array of each kind to these slot counts (kinds in ElementKind order): new slots are dead with
+  // invalid pointers and position (0,0,0); slots past the count are dropped. Live counts are set as given.
+  static void set_slots(HalfedgeMesh& m, const uint32_t (&capacity)[5], const size_t (&live)[5]) {
+    m.journal_.before_bulk_write();
+    m.v_halfedge_.resize(capacity[0]);
+    m.v_position_.resize(capacity[0]);
+    m.v_alive_.resize(capacity[0]);
+    m.h_.resize(capacity[1]);
+    m.h_alive_.resize(capacity[1]);
+    m.e_halfedge_.resize(capacity[2]);
+    m.e_alive_.resize(capacity[2]);
+    m.f_halfedge_.resize(capacity[3]);
+    m.f_alive_.resize(capacity[3]);
+    m.b_halfedge_.resize(capacity[4]);
+    m.b_alive_.resize(capacity[4]);
+    m.live_vertices_ = live[0];
+    m.live_halfedges_ = live[1];
+    m.live_edges_ = live[2];
+    m.live_faces_ = live[3];
+    m.live_boundaries_ = live[4];
+  }
+  // The version at the last vouch_valid_triangles, and a way to put back both counters exactly (a refused
+  // operation leaves the mesh with the version it had).
+  static uint64_t proven_version(const HalfedgeMesh& m) { return m.proven_version_; }
+  static void set_versions(HalfedgeMesh& m, uint64_t version, uint64_t proven_version) {
+    m.version_ = version;
+    m.proven_version_ = proven_version;
   }
 
  private:

@@ -1,8 +1,9 @@
 // MeshDocument operations (see mesh_document.h for the contracts).
 //
 // Invariants kept here:
-// - An operation is judged by its Check and by mesh.version(): a refusal restores the snapshot only if the
-//   version moved, so a well-behaved refusal costs no second copy.
+// - An operation runs under a change journal: a refusal reverts it (contents and version exactly), success keeps a
+//   patch (or, when the journal fell back, its snapshot) for the history and `last`. The mesh is copied only for
+//   snapshot-sized changes and when last.before cannot be rolled forward (see state_before).
 // - The diff is counted before it is formatted; above the cap it is not formatted at all.
 #include "ui/mesh_document.h"
 
@@ -10,7 +11,9 @@
 #include <cstring>
 #include <exception>
 
+#include "core/change_journal.h"
 #include "core/mesh_error.h"
+#include "core/mesh_storage.h"
 
 namespace meshedit {
 namespace {
@@ -24,23 +27,44 @@ std::string plural(size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
-// Replaces doc.last by the change from `before` to the current mesh; `previous`: `before` is the state the document
-// showed until now.
-void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before, bool previous = true) {
+// Replaces doc.last by the change from `before` to the current mesh, given by `patch` when it was local (then the
+// diff is made from the patch alone); `previous`: `before` is the state the document showed until now.
+void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before, std::optional<MeshPatch> patch,
+                        bool previous = true) {
   LastChange last;
   if (previous) last.version_before = before.version();
   last.version_after = doc.mesh.version();
   last.label = std::move(label);
-  last.change_count = count_changes(before, doc.mesh, doc.limits.max_listed_changes);
-  last.listed = last.change_count <= doc.limits.max_listed_changes;
+  const size_t limit = doc.limits.max_listed_changes;
+  last.change_count = patch ? patch_change_count(*patch, limit) : count_changes(before, doc.mesh, limit);
+  last.listed = last.change_count <= limit;
   if (last.listed) {
-    last.changes = diff(before, doc.mesh);
+    last.changes = patch ? patch_diff(*patch) : diff(before, doc.mesh);
     last.change_count = last.changes.size();
     last.index = ChangeIndex(last.changes);
   }
   last.before = std::move(before);
+  last.patch = std::move(patch);
   last.serial = doc.last.serial + 1;
   doc.last = std::move(last);
+}
+
+// The mesh as it was just before the change `patch` made to doc.mesh (whose version() and proven version were then
+// `version` and `proven`). Rolls last.before forward with last.patch when those describe exactly that state (time
+// proportional to both edits; last.before is used up, the caller replaces `last`); otherwise copies the mesh and
+// applies `patch` backward.
+HalfedgeMesh state_before(MeshDocument& doc, const MeshPatch& patch, uint64_t version, uint64_t proven) {
+  HalfedgeMesh before;
+  if (doc.last.before && doc.last.patch && doc.last.version_after == version) {
+    before = std::move(*doc.last.before);
+    doc.last.before.reset();
+    doc.last.patch->apply(before, true);
+  } else {
+    before = doc.mesh;
+    patch.apply(before, false);
+  }
+  MeshStorage::set_versions(before, version, proven);
+  return before;
 }
 
 std::string change_summary(const MeshDocument& doc) {
@@ -116,7 +140,7 @@ namespace detail {
 
 Check apply_check_operation(MeshDocument& doc, const std::string& label,
                             const std::function<Check(HalfedgeMesh&)>& op) {
-  HalfedgeMesh before = doc.mesh;
+  ChangeJournal journal(doc.mesh);
   Check check;
   Severity severity = Severity::Warning;
   ElementRef culprit;
@@ -130,18 +154,28 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label,
     check = Check::no(error.what());
     severity = Severity::Error;
   }
+  journal.detach();
   if (!check.ok) {
-    if (doc.mesh.version() != before.version()) doc.mesh = std::move(before);
+    journal.revert();
     if (check.reason.empty()) check.reason = "refused";
     set_message(doc, severity, label + ": " + check.reason, culprit);
     return check;
   }
-  if (doc.mesh.version() == before.version()) {
+  const uint64_t version_before = journal.version_before();
+  if (doc.mesh.version() == version_before) {
     set_message(doc, Severity::Info, label + ": nothing changed");
     return check;
   }
-  doc.history.record(label, before);
-  record_last_change(doc, label, std::move(before));
+  if (journal.has_snapshot()) {
+    HalfedgeMesh before = journal.take_snapshot();
+    doc.history.record(label, before);
+    record_last_change(doc, label, std::move(before), std::nullopt);
+  } else {
+    MeshPatch patch = make_patch(journal, doc.mesh);
+    HalfedgeMesh before = state_before(doc, patch, version_before, journal.proven_version_before());
+    doc.history.record(label, patch, version_before);
+    record_last_change(doc, label, std::move(before), std::move(patch));
+  }
   set_message(doc, Severity::Info, change_summary(doc));
   return check;
 }
@@ -158,9 +192,20 @@ bool step_history(MeshDocument& doc, bool forward) {
     return false;
   }
   const std::string label = std::string(word) + " " + (forward ? doc.history.redo_label() : doc.history.undo_label());
-  HalfedgeMesh before = doc.mesh;
-  forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
-  record_last_change(doc, label, std::move(before));
+  const MeshPatch* entry_patch = forward ? doc.history.redo_patch() : doc.history.undo_patch();
+  if (!entry_patch) {
+    // A snapshot entry: the whole mesh is swapped, so the diff needs the whole state before.
+    HalfedgeMesh before = doc.mesh;
+    forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
+    record_last_change(doc, label, std::move(before), std::nullopt);
+  } else {
+    // This step applies the entry's patch forward (redo) or backward (undo).
+    MeshPatch step = forward ? *entry_patch : entry_patch->reversed();
+    const uint64_t version = doc.mesh.version(), proven = MeshStorage::proven_version(doc.mesh);
+    forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
+    HalfedgeMesh before = state_before(doc, step, version, proven);
+    record_last_change(doc, label, std::move(before), std::move(step));
+  }
   set_message(doc, Severity::Info, change_summary(doc));
   return true;
 }
@@ -176,7 +221,7 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::op
   const uint64_t old_version = doc.mesh.version();
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // caches keyed by version must not take it for the old state
-  record_last_change(doc, std::move(label), std::move(before), previous);
+  record_last_change(doc, std::move(label), std::move(before), std::nullopt, previous);
   set_message(doc, Severity::Info, change_summary(doc));
 }
 

@@ -4,6 +4,12 @@
 // Invariants:
 // - Every change to `mesh` goes through apply_operation(), undo(), redo(), replace_mesh() or show_state(); code that
 //   assigns `mesh` directly must call replace_mesh() instead, or the caches below may describe another mesh.
+// - A local edit costs time proportional to the edit, not the mesh: apply_operation watches the edit with a change
+//   journal (core/change_journal.h) and keeps it as a patch (core/mesh_patch.h) in the history and in `last`;
+//   `last.before` is one trailing copy of the mesh, rolled forward with the previous change's patch. Only
+//   snapshot-sized changes (a whole-mesh pass such as Loop subdivision, an assignment of the whole mesh, a huge
+//   script), undo/redo of their snapshot entries, and the first change after one of them, after opening a mesh or
+//   after show_state (which has no patch to roll last.before forward with) copy the mesh.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
 //   same version()); only `message` changes.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
@@ -29,6 +35,7 @@
 #include "core/halfedge_mesh.h"
 #include "core/history.h"
 #include "core/loop_subdivision.h"
+#include "core/mesh_patch.h"
 #include "core/mesh_stats.h"
 #include "core/validate.h"
 
@@ -79,6 +86,9 @@ struct LastChange {
   bool listed = true;                      // false when the diff was larger than DocumentLimits::max_listed_changes
   ChangeIndex index;                       // built from `changes`
   std::optional<HalfedgeMesh> before;      // the mesh before the change (absent before the first change)
+  // The change from `before` to the mesh as a patch, when it was local: the next change rolls `before` forward with
+  // it instead of copying the mesh. Absent for snapshot-sized changes.
+  std::optional<MeshPatch> patch;
   uint64_t serial = 0;                     // +1 every time this struct is replaced
   // mesh.version() just before and after the change, when `before` is exactly the state the document showed
   // until then (not after show_state with a `from`): a renderer that showed that version can apply `changes`
@@ -91,8 +101,9 @@ struct DocumentLimits {
   // A diff with more fields than this is counted but not listed (a Loop subdivision of a million triangles
   // changes tens of millions of fields; formatting them all would take gigabytes).
   size_t max_listed_changes = 200000;
-  // Undo snapshots are whole meshes: the history keeps at most this many bytes' worth (at least 4 steps,
-  // at most 256), judged from the mesh's size when it is opened.
+  // Undo entries of snapshot-sized changes are whole meshes: the history keeps at most this many bytes' worth of
+  // them (at least 4 steps, at most 256), judged from the mesh's size when it is opened; local edits are patches,
+  // but count as steps all the same.
   size_t history_budget_bytes = size_t(2) << 30;
 };
 
@@ -147,8 +158,10 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, const s
 // Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
 //   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
 //   an exception becomes a refused Check whose reason is its message.
-// Costs two copies of the mesh (the undo snapshot and last.before) and a pass over every slot to count the diff:
-// O(size) per operation, never per frame.
+// A local edit (setters only, fewer writes than the journal's cap) costs time proportional to the edit: no copy of
+// the mesh, the diff made from the patch. A snapshot-sized one (MeshStorage's direct writes, assigning the mesh)
+// costs two copies of the mesh and a pass over every slot. The first edit after opening a mesh, show_state or a
+// snapshot-sized change copies the mesh once more (last.before has no patch to be rolled forward with).
 template <class Op>
 auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
   using Result = std::invoke_result_t<Op&, HalfedgeMesh&>;

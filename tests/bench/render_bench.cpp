@@ -248,13 +248,42 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   time_edit(renderer, mesh, "collapse",
             [](HalfedgeMesh& m) { return bool(collapse(m, edge_for(m, m.edge_capacity() / 5, can_collapse))); });
 
-  // What the document itself does for one flip (undo snapshot, last.before, the diff): O(mesh), outside the renderer.
+  // What the document itself does for an edit, outside the renderer: the change journal, the undo patch, last.before
+  // and the diff. The first edit after opening copies the mesh once (last.before has nothing to roll forward from);
+  // later edits, undo and redo roll it forward with the previous patch and cost time proportional to the edit. The
+  // first append to a tightly sized array reallocates it once, as any append does: the first split does it in the
+  // mesh (the operation itself, as "split alone" shows), the second in last.before (rolled forward with the first
+  // split); the third split shows the cost after that.
+  {
+    HalfedgeMesh alone = mesh;
+    const EdgeId e = edge_for(alone, alone.edge_capacity() / 2, can_split);
+    start = Clock::now();
+    (void)split(alone, e);
+    line("split alone, first append (no document)", "%10.3f ms", ms_since(start));
+  }
   MeshDocument doc = make_document(mesh);
-  const EdgeId e = edge_for(doc.mesh, doc.mesh.edge_capacity() / 4, can_flip);
-  start = Clock::now();
-  apply_operation(doc, "flip", [&](HalfedgeMesh& m) { return flip(m, e); });
-  line("document: apply_operation(flip) (snapshot + diff)", "%10.2f ms", ms_since(start),
-       std::to_string(doc.last.change_count) + " fields changed");
+  auto document_step = [&](const char* label, const std::function<void()>& step) {
+    start = Clock::now();
+    step();
+    line(label, "%10.3f ms", ms_since(start), std::to_string(doc.last.change_count) + " fields changed");
+  };
+  auto edit = [&](const char* label, const char* verb, uint32_t at) {
+    const bool flipping = verb[0] == 'f';
+    const EdgeId e = edge_for(doc.mesh, at, flipping ? can_flip : can_split);
+    document_step(label, [&] {
+      apply_operation(doc, verb, [&](HalfedgeMesh& m) { return flipping ? flip(m, e).check : split(m, e).check; });
+    });
+  };
+  const uint32_t edges = doc.mesh.edge_capacity();
+  edit("document: first apply_operation(flip) (copies last.before)", "flip", edges / 4);
+  edit("document: apply_operation(flip) (journal + patch)", "flip", edges / 3);
+  edit("document: apply_operation(split), first append", "split", edges / 2);
+  edit("document: apply_operation(split), last.before grows", "split", edges / 5);
+  edit("document: apply_operation(split)", "split", edges / 6);
+  document_step("document: undo (patch)", [&] { undo(doc); });
+  document_step("document: undo (patch), again", [&] { undo(doc); });
+  document_step("document: redo (patch)", [&] { redo(doc); });
+  document_step("document: redo (patch), again", [&] { redo(doc); });
 }
 
 // The halfedge tab of the pointer tables at 6M+ halfedges: frames at the top, the middle and the end, and the worst

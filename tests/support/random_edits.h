@@ -1,6 +1,7 @@
 // random_local_edits: flips, splits and collapses on random live edges (the core's checked operations, so the
 // mesh stays valid), leaving dead slots among the ids and irregular valences. Seeded mt19937, raw output only,
-// so a seed gives the same mesh on every platform.
+// so a seed gives the same mesh on every platform. random_edit_or_write: one such operation or a few raw writes
+// through the setters (broken pointers, new and deleted elements, a slot written twice), as a script would.
 #pragma once
 
 #include <cstdint>
@@ -19,6 +20,35 @@ inline void random_local_edits(HalfedgeMesh& m, uint32_t seed, int steps) {
       case 0: (void)flip(m, e); break;
       case 1: (void)split(m, e); break;
       default: (void)collapse(m, e); break;
+    }
+  }
+}
+
+// One random edit of `m` (which must have at least one face): a core operation on a random edge, or raw writes.
+inline void random_edit_or_write(HalfedgeMesh& m, std::mt19937& random) {
+  const EdgeId e(random() % m.edge_capacity());
+  switch (random() % 5) {
+    case 0: (void)flip(m, e); break;
+    case 1: (void)split(m, e); break;
+    case 2: (void)collapse(m, e); break;
+    case 3:
+      for (int i = 0; i < 4; ++i) {
+        const HalfedgeId h(random() % m.halfedge_capacity());
+        m.set_next(h, HalfedgeId(random() % m.halfedge_capacity()));
+        m.set_face(h, FaceId::boundary(0));
+        m.set_position(VertexId(random() % m.vertex_capacity()), {double(random() % 7), -0.0, 0.5});
+      }
+      break;
+    default: {
+      const VertexId v = m.new_vertex({1, 2, 3});
+      m.set_halfedge(v, HalfedgeId(random() % m.halfedge_capacity()));
+      m.delete_element(EdgeId(random() % m.edge_capacity()));
+      m.delete_element(FaceId::face(random() % m.face_capacity()));
+      const HalfedgeId h = m.new_halfedge();
+      m.set_neighbors(h, h, h, v, e, FaceId::face(0));
+      m.set_halfedge(FaceId::face(0), h);
+      m.set_position(v, {4, 5, 6});  // a slot written twice
+      break;
     }
   }
 }

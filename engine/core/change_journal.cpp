@@ -1,0 +1,80 @@
+// ChangeJournal and the mesh's JournalLink hooks (see change_journal.h for the invariants).
+#include "core/change_journal.h"
+
+#include <algorithm>
+#include <utility>
+
+#include "core/mesh_storage.h"
+
+namespace meshedit {
+
+void JournalLink::note_write(ElementKind kind, uint32_t slot) { journal_->note_write(kind, slot); }
+void JournalLink::fall_back() noexcept { journal_->fall_back(); }
+
+namespace {
+size_t default_cap(const MeshShape& shape) {
+  size_t slots = 0;
+  for (const uint32_t c : shape.capacity) slots += c;
+  return std::max<size_t>(4096, slots / 2);
+}
+}  // namespace
+
+ChangeJournal::ChangeJournal(HalfedgeMesh& mesh, std::optional<size_t> max_entries)
+    : mesh_(&mesh),
+      shape_before_(shape_of(mesh)),
+      version_before_(mesh.version()),
+      proven_before_(MeshStorage::proven_version(mesh)),
+      max_entries_(max_entries ? *max_entries : default_cap(shape_before_)) {
+  // A journal already attached (an edit nested in another) could not see this one's writes: it takes its snapshot.
+  if (ChangeJournal* outer = MeshStorage::journal(mesh)) outer->fall_back();
+  MeshStorage::set_journal(mesh, this);
+}
+
+ChangeJournal::~ChangeJournal() { detach(); }
+
+bool ChangeJournal::attached() const { return MeshStorage::journal(*mesh_) == this; }
+
+void ChangeJournal::detach() {
+  if (attached()) MeshStorage::set_journal(*mesh_, nullptr);
+}
+
+void ChangeJournal::note_write(ElementKind kind, uint32_t slot) {
+  if (slot >= shape_before_.capacity[static_cast<int>(kind)]) return;  // appended by this edit
+  log_.push_back({kind, slot, read_slot(*mesh_, kind, slot)});
+  if (log_.size() > max_entries_) fall_back();
+}
+
+void ChangeJournal::fall_back() noexcept {
+  if (!attached()) return;
+  detach();  // first: the copy and the undo below must not report to this journal
+  snapshot_.emplace(*mesh_);
+  undo_log(*snapshot_);
+  log_.clear();
+  log_.shrink_to_fit();
+}
+
+HalfedgeMesh ChangeJournal::take_snapshot() {
+  HalfedgeMesh snapshot = std::move(*snapshot_);
+  snapshot_.reset();
+  return snapshot;
+}
+
+void ChangeJournal::undo_log(HalfedgeMesh& target) const {
+  // A journal that follows writes slot by slot never sees an array shrink, so every logged slot is below the
+  // target's capacities; the slots appended by the edit go last, with set_shape.
+  for (auto it = log_.rbegin(); it != log_.rend(); ++it) write_slot(target, it->kind, it->slot, it->old);
+  set_shape(target, shape_before_);
+  MeshStorage::set_versions(target, version_before_, proven_before_);
+}
+
+void ChangeJournal::revert() {
+  detach();
+  if (snapshot_) {
+    *mesh_ = take_snapshot();
+    return;
+  }
+  undo_log(*mesh_);
+  log_.clear();
+}
+
+}  // namespace meshedit

@@ -1,0 +1,82 @@
+// ChangeJournal: records what an edit overwrites in a mesh, so the document can undo it, diff it and refuse it in
+// time proportional to the edit instead of copying the whole mesh (mesh_patch.h turns a journal into an undo patch).
+//
+// Use: attach a journal to a mesh (the constructor), run the edit, then either revert() (a refused or throwing edit)
+// or take the result: a patch (make_patch) or, after a fall-back, the full snapshot (take_snapshot).
+//
+// Invariants:
+// - While attached, every write through the mesh's members logs the written slot's old values first (an append-only
+//   log; the first entry of a slot holds its value before the edit). Slots appended by the edit are not logged:
+//   they are the ids past the capacities the journal saw when it was attached.
+// - Writes the journal cannot follow slot by slot (MeshStorage's direct array access, assigning to the mesh, moving
+//   from it) and a log longer than `max_entries` make it fall back: it copies the mesh right then, reverts its log on
+//   the copy, detaches and keeps that snapshot of the state before the edit (a fall-back that cannot allocate the
+//   copy ends the program: it may run inside a move, where no exception can leave). So a journal always yields either
+//   (touched slots with their old values) or (the whole state before).
+// - revert() leaves the mesh exactly as it was when the journal was attached: contents, capacities, live counts,
+//   version() and proven_valid_triangles().
+// - One journal per mesh at a time: attaching a second one (an edit nested in another) makes the first fall back to
+//   its snapshot. The destructor detaches it. The journal is not copied with the mesh.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "core/halfedge_mesh.h"
+#include "core/slot_values.h"
+
+namespace meshedit {
+
+class ChangeJournal {
+ public:
+  struct Entry {
+    ElementKind kind;
+    uint32_t slot;
+    SlotValues old;  // the slot's values before this write
+  };
+
+  // Attaches to `mesh` (a journal already attached falls back first). The default cap: half the mesh's slots
+  // (beyond that a snapshot is smaller than the log), at least 4096.
+  explicit ChangeJournal(HalfedgeMesh& mesh, std::optional<size_t> max_entries = std::nullopt);
+  ~ChangeJournal();
+  ChangeJournal(const ChangeJournal&) = delete;
+  ChangeJournal& operator=(const ChangeJournal&) = delete;
+
+  // Stops listening to the mesh (the log and snapshot stay). Idempotent.
+  void detach();
+  bool attached() const;
+
+  // True once the journal has fallen back to a full snapshot.
+  bool has_snapshot() const { return snapshot_.has_value(); }
+  // The state before the edit; only when has_snapshot(). Leaves the journal without it.
+  HalfedgeMesh take_snapshot();
+
+  // The log, in write order (empty after a fall-back), and what the mesh looked like when attached.
+  const std::vector<Entry>& log() const { return log_; }
+  const MeshShape& shape_before() const { return shape_before_; }
+  uint64_t version_before() const { return version_before_; }
+  uint64_t proven_version_before() const { return proven_before_; }
+
+  // Detaches and puts the mesh back exactly as it was when the journal was attached.
+  void revert();
+
+  // Called through the mesh's JournalLink: before one slot is written, and before a write it cannot follow.
+  void note_write(ElementKind kind, uint32_t slot);
+  void fall_back() noexcept;
+
+ private:
+  // Writes the logged old values back into `target` (newest first) and restores the shape and versions.
+  void undo_log(HalfedgeMesh& target) const;
+
+  HalfedgeMesh* mesh_;
+  MeshShape shape_before_;
+  uint64_t version_before_;
+  uint64_t proven_before_;
+  size_t max_entries_;
+  std::vector<Entry> log_;
+  std::optional<HalfedgeMesh> snapshot_;
+};
+
+}  // namespace meshedit

@@ -1,0 +1,134 @@
+// MeshPatch: made from a change journal, applied both ways, diffed (see mesh_patch.h for the invariants).
+#include "core/mesh_patch.h"
+
+#include <algorithm>
+#include <numeric>
+#include <utility>
+
+#include "core/field_diff.h"
+
+namespace meshedit {
+namespace {
+
+int index_of(ElementKind kind) { return static_cast<int>(kind); }
+
+bool exists(const MeshShape& shape, const SlotChange& s) { return s.slot < shape.capacity[index_of(s.kind)]; }
+
+// Calls add(element, field, before, after) for each field of one slot in diff()'s order; `before` / `after` point to
+// the field's value in that state, or are null when the slot does not exist there.
+template <class Add>
+void for_each_field(const SlotChange& s, bool in_before, bool in_after, Add&& add) {
+  const SlotValues* a = in_before ? &s.before : nullptr;
+  const SlotValues* b = in_after ? &s.after : nullptr;
+  auto field = [&](ElementRef element, const char* name, auto member) {
+    add(element, name, a ? &(a->*member) : nullptr, b ? &(b->*member) : nullptr);
+  };
+  auto record_field = [&](ElementRef element, const char* name, auto member) {
+    add(element, name, a ? &(a->record.*member) : nullptr, b ? &(b->record.*member) : nullptr);
+  };
+  switch (s.kind) {
+    case ElementKind::Vertex: {
+      const ElementRef v(VertexId(s.slot));
+      field(v, "halfedge", &SlotValues::halfedge);
+      field(v, "position", &SlotValues::position);
+      field(v, "alive", &SlotValues::alive);
+      break;
+    }
+    case ElementKind::Halfedge: {
+      const ElementRef h(HalfedgeId(s.slot));
+      record_field(h, "next", &HalfedgeRecord::next);
+      record_field(h, "twin", &HalfedgeRecord::twin);
+      record_field(h, "vertex", &HalfedgeRecord::vertex);
+      record_field(h, "edge", &HalfedgeRecord::edge);
+      record_field(h, "face", &HalfedgeRecord::face);
+      field(h, "alive", &SlotValues::alive);
+      break;
+    }
+    case ElementKind::Edge: {
+      const ElementRef e(EdgeId(s.slot));
+      field(e, "halfedge", &SlotValues::halfedge);
+      field(e, "alive", &SlotValues::alive);
+      break;
+    }
+    case ElementKind::Face:
+    case ElementKind::Boundary: {
+      const ElementRef f(s.kind == ElementKind::Boundary ? FaceId::boundary(s.slot) : FaceId::face(s.slot));
+      field(f, "halfedge", &SlotValues::halfedge);
+      field(f, "alive", &SlotValues::alive);
+      break;
+    }
+  }
+}
+
+}  // namespace
+
+MeshPatch MeshPatch::reversed() const {
+  MeshPatch r;
+  r.shape_before = shape_after;
+  r.shape_after = shape_before;
+  r.slots.reserve(slots.size());
+  for (const SlotChange& s : slots) r.slots.push_back({s.kind, s.slot, s.after, s.before});
+  return r;
+}
+
+void MeshPatch::apply(HalfedgeMesh& mesh, bool forward) const {
+  const MeshShape& target = forward ? shape_after : shape_before;
+  set_shape(mesh, target);
+  for (const SlotChange& s : slots) {
+    if (exists(target, s)) write_slot(mesh, s.kind, s.slot, forward ? s.after : s.before);
+  }
+}
+
+MeshPatch make_patch(const ChangeJournal& journal, const HalfedgeMesh& mesh) {
+  MeshPatch patch;
+  patch.shape_before = journal.shape_before();
+  patch.shape_after = shape_of(mesh);
+  // The first log entry of each slot holds its value before the edit: a stable sort by slot puts it first.
+  const std::vector<ChangeJournal::Entry>& log = journal.log();
+  auto key = [&](uint32_t i) { return (uint64_t(log[i].kind) << 32) | log[i].slot; };
+  std::vector<uint32_t> order(log.size());
+  std::iota(order.begin(), order.end(), 0u);
+  std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });
+  size_t next = 0;
+  for (int k = 0; k < kElementKindCount; ++k) {
+    const auto kind = static_cast<ElementKind>(k);
+    // Touched slots that existed before (all below the old capacity), then the appended ones, keeps slot order.
+    for (; next < order.size() && log[order[next]].kind == kind; ++next) {
+      const ChangeJournal::Entry& first = log[order[next]];
+      while (next + 1 < order.size() && key(order[next + 1]) == key(order[next])) ++next;
+      const SlotValues after = read_slot(mesh, kind, first.slot);
+      if (!same_state(first.old, after)) patch.slots.push_back({kind, first.slot, first.old, after});
+    }
+    const uint32_t old_capacity = patch.shape_before.capacity[k], new_capacity = patch.shape_after.capacity[k];
+    for (uint32_t slot = old_capacity; slot < new_capacity; ++slot) {
+      patch.slots.push_back({kind, slot, SlotValues{}, read_slot(mesh, kind, slot)});
+    }
+  }
+  return patch;
+}
+
+std::vector<FieldChange> patch_diff(const MeshPatch& patch) {
+  std::vector<FieldChange> out;
+  for (const SlotChange& s : patch.slots) {
+    for_each_field(s, exists(patch.shape_before, s), exists(patch.shape_after, s),
+                   [&](ElementRef element, const char* name, const auto* before, const auto* after) {
+                     field_diff::compare(out, element, name, before, after);
+                   });
+  }
+  return out;
+}
+
+size_t patch_change_count(const MeshPatch& patch, size_t limit) {
+  size_t count = 0;
+  for (const SlotChange& s : patch.slots) {
+    for_each_field(s, exists(patch.shape_before, s), exists(patch.shape_after, s),
+                   [&](ElementRef, const char*, const auto* before, const auto* after) {
+                     if (before && after) count += !field_diff::same(*before, *after);
+                     else count += before || after;
+                   });
+    if (count > limit) return count;
+  }
+  return count;
+}
+
+}  // namespace meshedit
