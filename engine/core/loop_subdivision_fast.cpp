@@ -365,7 +365,7 @@ void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   uint32_t live_edges = 0, boundary_edges = 0;
   plan_edges(L, threads, live_edges, boundary_edges);
   MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,
-                    L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges, threads);
+                    L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges);
   L.m = MeshStorage::view(mesh);
 
   MeshArray<glm::dvec3>& points = scratch.points;

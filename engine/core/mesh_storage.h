@@ -12,7 +12,6 @@
 #include <cstdint>
 
 #include "core/halfedge_mesh.h"
-#include "core/parallel_for.h"
 
 namespace meshedit {
 
@@ -36,18 +35,16 @@ struct MeshStorage {
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
   // every pointer of every new element (and every new position) before the mesh is used. Capacities never shrink.
-  // The new alive flags are set on `threads` threads (for a big level they are tens of megabytes of fresh pages).
-  static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces,
-                   int threads = 1) {
+  static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.journal_.before_bulk_write();
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
     m.live_faces_ += faces - m.face_capacity();
-    grow_alive(m.v_alive_, vertices, threads);
-    grow_alive(m.h_alive_, halfedges, threads);
-    grow_alive(m.e_alive_, edges, threads);
-    grow_alive(m.f_alive_, faces, threads);
+    m.v_alive_.resize(vertices, 1);
+    m.h_alive_.resize(halfedges, 1);
+    m.e_alive_.resize(edges, 1);
+    m.f_alive_.resize(faces, 1);
     {
       const big_array_detail::SkipDefaultInit skip;
       m.v_halfedge_.resize(vertices);
@@ -142,13 +139,6 @@ struct MeshStorage {
     m.proven_version_ = proven_version;
   }
 
- private:
-  static void grow_alive(MeshArray<uint8_t>& alive, size_t n, int threads) {
-    const size_t old_size = alive.size();
-    resize_for_overwrite(alive, n);
-    uint8_t* fresh = alive.data() + old_size;
-    parallel_for(threads, n - old_size, [fresh](size_t begin, size_t end) { std::fill(fresh + begin, fresh + end, 1); });
-  }
 };
 
 }  // namespace meshedit

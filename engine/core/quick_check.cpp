@@ -15,6 +15,17 @@
 namespace meshedit {
 namespace {
 
+// Loop input beyond validity and triangles: split() refuses an interior edge whose two triangles have the same third
+// corner (two faces with the same corners, which a valid mesh may hold). Reads a valid mesh only.
+bool splits_cleanly(const HalfedgeMesh& m) {
+  for (EdgeId e : m.edges()) {
+    const HalfedgeId a = m.halfedge(e), b = m.twin(a);
+    if (m.face(a).is_boundary() || m.face(b).is_boundary()) continue;
+    if (m.vertex(m.next(m.next(a))) == m.vertex(m.next(m.next(b)))) return false;
+  }
+  return true;
+}
+
 bool clean(const HalfedgeMesh& m, bool loop_input) {
   const size_t live = m.num_halfedges();
 
@@ -84,20 +95,16 @@ bool clean(const HalfedgeMesh& m, bool loop_input) {
   }
   if (in_fans != live) return false;
 
-  // Loop input: split() refuses an interior edge whose two triangles have the same third corner.
-  if (loop_input) {
-    for (EdgeId e : m.edges()) {
-      const HalfedgeId a = m.halfedge(e), b = m.twin(a);
-      if (m.face(a).is_boundary() || m.face(b).is_boundary()) continue;
-      if (m.vertex(m.next(m.next(a))) == m.vertex(m.next(m.next(b)))) return false;
-    }
-  }
-  return true;
+  return !loop_input || splits_cleanly(m);
 }
 
 }  // namespace
 
 bool mesh_is_clean(const HalfedgeMesh& mesh) { return clean(mesh, false); }
-bool loop_input_is_clean(const HalfedgeMesh& mesh) { return clean(mesh, true); }
+bool loop_input_is_clean(const HalfedgeMesh& mesh) {
+  // A mesh vouched valid with triangle faces (just built or subdivided) needs only the split condition.
+  if (mesh.proven_valid_triangles()) return splits_cleanly(mesh);
+  return clean(mesh, true);
+}
 
 }  // namespace meshedit
