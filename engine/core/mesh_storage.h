@@ -4,8 +4,9 @@
 // Invariants: a mesh with a ChangeJournal attached is told before view(), grow(), arrays() or set_slots() hands out
 // or changes its arrays (the journal takes a full snapshot then, since it cannot follow such writes slot by slot).
 // grow() appends live elements (alive flags set, live counts and version() updated) and leaves their fields for the
-// caller to write, all of them; a View's pointers stay valid until the next change of any array's size. Code that writes through a View must leave a mesh the element API could have produced, and calls touch()
-// when done. vouch_valid_triangles() is called only by code that has established what it vouches for.
+// caller to write, all of them; a View's pointers stay valid until the next change of any array's size. Code that
+// writes through a View must leave a mesh the element API could have produced, and calls touch() when done.
+// vouch_valid_triangles() is called only by code that has established what it vouches for.
 #pragma once
 
 #include <algorithm>
@@ -138,7 +139,6 @@ struct MeshStorage {
     m.version_ = version;
     m.proven_version_ = proven_version;
   }
-
 };
 
 }  // namespace meshedit

@@ -645,7 +645,9 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
   for (int row = 0; row < h; ++row) {
     std::copy_n(bottom_up.begin() + long(row) * w, w, top_down.begin() + long(h - 1 - row) * w);
   }
-  if (faces_only) return pick_from_faces(*r.mesh, camera, viewport, PickWindow{top_down, w, h, x0, y0}, x, y, halfedges);
+  if (faces_only) {
+    return pick_from_faces(*r.mesh, camera, viewport, PickWindow{top_down, w, h, x0, y0}, x, y, halfedges);
+  }
   const ElementRef chosen = choose_pick(top_down, w, h, x - x0, y - y0);
   if (chosen.kind != ElementKind::Vertex || !chosen.valid()) return chosen;
   // Two vertices can share a pixel on a dense mesh, the last drawn covering the other: among the

@@ -91,7 +91,8 @@ ElementRef pick_from_faces(const HalfedgeMesh& mesh, const OrbitCamera& camera, 
     for (HalfedgeId h : cycle) {
       const VertexPoint point = slot_point(mesh, mesh.vertex(h));
       if (point.vertex != kInvalidIndex) {
-        if (auto d = screen.to_point(point.position); d && *d <= kVertexReachSq) vertex.offer(VertexId(point.vertex), *d);
+        const auto d = screen.to_point(point.position);
+        if (d && *d <= kVertexReachSq) vertex.offer(VertexId(point.vertex), *d);
       }
       if (halfedges) {
         for (const EdgeSegment& piece : slot_arrow(mesh, h)) {

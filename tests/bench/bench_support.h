@@ -41,8 +41,8 @@ inline void back_physical_memory(size_t mib) {
 #ifdef MADV_HUGEPAGE
   madvise(p, bytes, MADV_HUGEPAGE);
 #endif
-  auto* bytes_p = static_cast<volatile char*>(p);
-  for (size_t i = 0; i < bytes; i += 4096) bytes_p[i] = 1;
+  auto* memory = static_cast<volatile char*>(p);
+  for (size_t i = 0; i < bytes; i += 4096) memory[i] = 1;
   munmap(p, bytes);
 }
 

@@ -136,8 +136,13 @@ int main(int argc, char** argv) {
   const int thread_column = ours_threads_subdivide || ours_threads_normals ? o.threads : 1;
 
   std::printf("peer_bench: minimum of %d runs, single thread unless a column says otherwise; times in ms\n", o.reps);
-  if (o.cold) std::printf("  --cold: memory not backed before the runs; times depend on the host's page faults and the job order\n");
-  else std::printf("  before every timed run %zu MiB are touched and freed, so every contender gets backed pages (bench_support.h)\n", kBackedMiB);
+  if (o.cold) {
+    std::printf("  --cold: memory not backed before the runs; times depend on the host's page faults and the order "
+                "of the jobs\n");
+  } else {
+    std::printf("  before every timed run %zu MiB are touched and freed, so every contender gets backed pages "
+                "(bench_support.h)\n", kBackedMiB);
+  }
   if (FILE* load = std::fopen("/proc/loadavg", "r")) {  // the machine is shared: say how busy it was
     double one = 0, five = 0;
     if (std::fscanf(load, "%lf %lf", &one, &five) == 2) std::printf("  load average at start: %.2f (1 min), %.2f (5 min)\n", one, five);
