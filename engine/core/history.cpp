@@ -4,7 +4,8 @@
 // - diff() compares raw values (positions bit for bit, so -0 vs 0 and NaN payloads count as changes) and
 //   formats only what differs; it reads a slot only below that mesh's capacity, so two unrelated meshes,
 //   or the arguments swapped, give a longer list but never a crash.
-// - History never holds more than max_depth undo entries; after undo/redo the mesh's version is above
+// - History never holds more than max_depth undo entries, nor more than max_bytes in them unless that would leave
+//   fewer than kMinDepth; after undo/redo the mesh's version is above
 //   every version it had before, so caches keyed by version refresh. A patch entry ends with the version a snapshot
 //   entry would give: max(the restored state's recorded version, the version before the step) + 1.
 #include "core/history.h"
@@ -85,7 +86,7 @@ void History::record(std::string label, HalfedgeMesh before) {
   entry.version = before.version();
   entry.mesh = std::move(before);
   undo_.push_back(std::move(entry));
-  while (undo_.size() > max_depth_) undo_.pop_front();
+  trim();
 }
 
 void History::record(std::string label, MeshPatch patch, uint64_t version_before) {
@@ -95,7 +96,7 @@ void History::record(std::string label, MeshPatch patch, uint64_t version_before
   entry.version = version_before;
   entry.patch = std::move(patch);
   undo_.push_back(std::move(entry));
-  while (undo_.size() > max_depth_) undo_.pop_front();
+  trim();
 }
 
 const std::string& History::undo_label() const {
@@ -143,8 +144,23 @@ bool History::redo(HalfedgeMesh& mesh) {
   redo_.pop_back();
   step(entry, mesh, true);
   undo_.push_back(std::move(entry));
-  while (undo_.size() > max_depth_) undo_.pop_front();
+  trim();
   return true;
+}
+
+size_t History::bytes_of(const Entry& entry) {
+  if (entry.mesh) return entry.mesh->memory_bytes();
+  return entry.patch ? entry.patch->slots.capacity() * sizeof(SlotChange) : 0;
+}
+
+void History::trim() {
+  while (undo_.size() > max_depth_) undo_.pop_front();
+  size_t total = 0;
+  for (const Entry& entry : undo_) total += bytes_of(entry);
+  while (total > max_bytes_ && undo_.size() > kMinDepth) {
+    total -= bytes_of(undo_.front());
+    undo_.pop_front();
+  }
 }
 
 void History::clear() {

@@ -8,6 +8,7 @@
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <deque>
 #include <optional>
 #include <string>
@@ -31,10 +32,15 @@ std::vector<FieldChange> diff(const HalfedgeMesh& before, const HalfedgeMesh& af
 
 class History {
  public:
-  explicit History(size_t max_depth = 256) : max_depth_(max_depth) {}
+  // At most `max_depth` undo entries; and while they hold more than `max_bytes` in all (a snapshot its mesh's
+  // memory_bytes(), a patch its slots), the oldest are dropped, but never below kMinDepth entries: a snapshot of a
+  // huge mesh still gets a few steps, and small local edits get up to max_depth whatever the mesh's size.
+  static constexpr size_t kMinDepth = 4;
+  explicit History(size_t max_depth = 256, size_t max_bytes = SIZE_MAX)
+      : max_depth_(max_depth), max_bytes_(max_bytes) {}
 
-  // Records that an operation called `label` turned `before` into the current mesh. Clears redo.
-  // When more than max_depth entries are kept, the oldest is dropped.
+  // Records that an operation called `label` turned `before` into the current mesh. Clears redo, then drops the
+  // oldest entries past the limits above.
   void record(std::string label, HalfedgeMesh before);
   // The same for an edit given as a patch from the state before to the current mesh; `version_before` is the
   // mesh's version() before the edit (what a snapshot would have carried).
@@ -68,7 +74,11 @@ class History {
   };
   // Moves `mesh` to the state `entry` restores; `entry` then describes the way back (for the other list).
   static void step(Entry& entry, HalfedgeMesh& mesh, bool forward);
+  static size_t bytes_of(const Entry& entry);
+  // Drops the oldest undo entries past max_depth_, and past max_bytes_ down to kMinDepth.
+  void trim();
   size_t max_depth_;
+  size_t max_bytes_;
   std::deque<Entry> undo_;
   std::vector<Entry> redo_;
 };

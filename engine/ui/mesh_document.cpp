@@ -18,11 +18,6 @@
 namespace meshedit {
 namespace {
 
-size_t history_depth(const HalfedgeMesh& mesh, const DocumentLimits& limits) {
-  const size_t bytes = std::max<size_t>(mesh.memory_bytes(), 1);
-  return std::clamp<size_t>(limits.history_budget_bytes / bytes, 4, 256);
-}
-
 std::string plural(size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
@@ -116,7 +111,7 @@ MeshDocument make_document(HalfedgeMesh mesh, std::string path, DocumentLimits l
 }
 
 void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path) {
-  doc.history = History(history_depth(mesh, doc.limits));
+  doc.history = History(256, doc.limits.history_budget_bytes);
   const uint64_t old_version = doc.mesh.version();
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // no cache may take the new mesh for the old one

@@ -101,9 +101,8 @@ struct DocumentLimits {
   // A diff with more fields than this is counted but not listed (a Loop subdivision of a million triangles
   // changes tens of millions of fields; formatting them all would take gigabytes).
   size_t max_listed_changes = 200000;
-  // Undo entries of snapshot-sized changes are whole meshes: the history keeps at most this many bytes' worth of
-  // them (at least 4 steps, at most 256), judged from the mesh's size when it is opened; local edits are patches,
-  // but count as steps all the same.
+  // The history keeps at most this many bytes of undo entries (History: at least 4 steps, at most 256). Whole-mesh
+  // changes cost a snapshot of the mesh each, local edits only the slots they touched.
   size_t history_budget_bytes = size_t(2) << 30;
 };
 

@@ -241,6 +241,34 @@ TEST(MeshDocument, HistoryDepthFollowsTheMemoryBudget) {
   EXPECT_EQ(doc.history.undo_depth(), 4u);
 }
 
+TEST(MeshDocument, LocalEditsKeepADeepHistoryWhateverTheMeshSize) {
+  // A budget of two meshes: 20 local edits are small patches and all stay (a snapshot history would keep 4);
+  // two subdivisions are snapshots, and the second alone is over the budget, so only the 4 newest steps stay.
+  HalfedgeMesh grid = build_halfedge_mesh(make_grid(6, 6));
+  DocumentLimits limits;
+  limits.history_budget_bytes = 2 * grid.memory_bytes();
+  MeshDocument doc = make_document(std::move(grid), "", limits);
+  for (uint32_t i = 0; i < 20; ++i) {
+    ASSERT_TRUE(apply_operation(doc, "move v" + std::to_string(i), [i](HalfedgeMesh& m) {
+      m.set_position(V(i), glm::dvec3(i, 9.0, 0.0));
+      return Check::yes();
+    }).ok);
+  }
+  EXPECT_EQ(doc.history.undo_depth(), 20u);
+  for (const char* label : {"loop 1", "loop 2"}) {
+    ASSERT_TRUE(apply_operation(doc, label, [](HalfedgeMesh& m) { return loop_subdivide(m, LoopWeights::Loop); }).ok);
+  }
+  EXPECT_EQ(doc.history.undo_depth(), History::kMinDepth);
+  for (const char* label : {"loop 2", "loop 1", "move v19", "move v18"}) {
+    EXPECT_EQ(doc.history.undo_label(), label);
+    ASSERT_TRUE(undo(doc));
+  }
+  EXPECT_FALSE(doc.history.can_undo());
+  EXPECT_EQ(doc.mesh.num_faces(), 72u);  // the grid again, with v0..v17 still moved
+  EXPECT_EQ(doc.mesh.position(V(17)), glm::dvec3(17.0, 9.0, 0.0));
+  EXPECT_NE(doc.mesh.position(V(18)).y, 9.0);
+}
+
 TEST(MeshDocument, ReplaceMeshStartsAfresh) {
   MeshDocument doc = make_document(grid_1x1(), "a.obj");
   ASSERT_TRUE(apply_operation(doc, "flip e2", [](HalfedgeMesh& m) { return flip(m, E(2)); }).ok());
