@@ -17,33 +17,16 @@
 #include "core/mesh_patch.h"
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
+#include "support/diff_expect.h"
 #include "support/random_edits.h"
 
 namespace meshedit {
 namespace {
 
-// A torus after random local edits: dead slots among the ids, irregular valences.
-HalfedgeMesh edited_torus(uint32_t seed) {
-  HalfedgeMesh m = build_halfedge_mesh(make_torus(6, 8));
-  testing::random_local_edits(m, seed, 60);
-  return m;
-}
-
-// Lists diffs readably when they differ.
-void expect_same_diff(const std::vector<FieldChange>& got, const std::vector<FieldChange>& want) {
-  ASSERT_EQ(got.size(), want.size());
-  for (size_t i = 0; i < got.size(); ++i) {
-    EXPECT_EQ(got[i].element, want[i].element) << i;
-    EXPECT_EQ(got[i].field, want[i].field) << i;
-    EXPECT_EQ(got[i].before, want[i].before) << i;
-    EXPECT_EQ(got[i].after, want[i].after) << i;
-  }
-}
-
 TEST(ChangeJournal, PatchOfRandomEditsMatchesDiffAndAppliesBothWays) {
   for (uint32_t seed = 1; seed <= 40; ++seed) {
     SCOPED_TRACE(seed);
-    HalfedgeMesh mesh = edited_torus(seed);
+    HalfedgeMesh mesh = testing::edited_torus(seed);
     std::mt19937 random(seed);
     for (int step = 0; step < 8; ++step) {
       const HalfedgeMesh before = mesh;
@@ -55,9 +38,9 @@ TEST(ChangeJournal, PatchOfRandomEditsMatchesDiffAndAppliesBothWays) {
         patch = make_patch(journal, mesh);
       }
       const std::vector<FieldChange> expected = diff(before, mesh);
-      expect_same_diff(patch_diff(patch), expected);
+      testing::expect_same_diff(patch_diff(patch), expected);
       EXPECT_EQ(patch_change_count(patch, 1000000), expected.size());
-      expect_same_diff(patch_diff(patch.reversed()), diff(mesh, before));
+      testing::expect_same_diff(patch_diff(patch.reversed()), diff(mesh, before));
 
       HalfedgeMesh back = mesh;
       patch.apply(back, false);
@@ -78,7 +61,7 @@ TEST(ChangeJournal, PatchOfRandomEditsMatchesDiffAndAppliesBothWays) {
 TEST(ChangeJournal, RevertRestoresContentsAndVersion) {
   for (uint32_t seed = 1; seed <= 20; ++seed) {
     SCOPED_TRACE(seed);
-    HalfedgeMesh mesh = edited_torus(seed);
+    HalfedgeMesh mesh = testing::edited_torus(seed);
     const HalfedgeMesh before = mesh;
     std::mt19937 random(seed);
     ChangeJournal journal(mesh);
@@ -108,7 +91,7 @@ TEST(ChangeJournal, RevertKeepsAProvenMeshProven) {
 }
 
 TEST(ChangeJournal, IsNotCopiedWithTheMesh) {
-  HalfedgeMesh mesh = edited_torus(3);
+  HalfedgeMesh mesh = testing::edited_torus(3);
   ChangeJournal journal(mesh);
   HalfedgeMesh copy = mesh;
   EXPECT_EQ(MeshStorage::journal(copy), nullptr);
@@ -124,7 +107,7 @@ TEST(ChangeJournal, IsNotCopiedWithTheMesh) {
 }
 
 TEST(ChangeJournal, WritesToAppendedSlotsAreNotLogged) {
-  HalfedgeMesh mesh = edited_torus(4);
+  HalfedgeMesh mesh = testing::edited_torus(4);
   ChangeJournal journal(mesh);
   const VertexId v = mesh.new_vertex();
   mesh.set_position(v, {1, 1, 1});
@@ -135,7 +118,7 @@ TEST(ChangeJournal, WritesToAppendedSlotsAreNotLogged) {
 // Falls back in `write`, then checks the snapshot is the state before and the journal stopped listening.
 template <class Write>
 void expect_fall_back(Write&& write, std::optional<size_t> cap = std::nullopt) {
-  HalfedgeMesh mesh = edited_torus(5);
+  HalfedgeMesh mesh = testing::edited_torus(5);
   const HalfedgeMesh before = mesh;
   ChangeJournal journal(mesh, cap);
   mesh.set_next(HalfedgeId(0), HalfedgeId(7));  // logged, then undone on the snapshot
@@ -201,7 +184,7 @@ TEST(ChangeJournal, LoopSubdivisionFallsBackAndItsSnapshotIsExact) {
 // A patch entry ends undo and redo with the version a snapshot entry of the same edit gives, even when the recorded
 // state's version is above the mesh's (a snapshot restores its own version before moving above the one seen).
 TEST(ChangeJournal, PatchEntriesGiveTheVersionsOfSnapshotEntries) {
-  HalfedgeMesh with_patch = edited_torus(8);
+  HalfedgeMesh with_patch = testing::edited_torus(8);
   with_patch.bump_version_above(5000);
   const HalfedgeMesh before = with_patch;
   MeshPatch patch;

@@ -2,12 +2,15 @@
 // mesh stays valid), leaving dead slots among the ids and irregular valences. Seeded mt19937, raw output only,
 // so a seed gives the same mesh on every platform. random_edit_or_write: one such operation or a few raw writes
 // through the setters (broken pointers, new and deleted elements, a slot written twice), as a script would.
+// edited_torus: a small torus after 60 such edits.
 #pragma once
 
 #include <cstdint>
 #include <random>
 
+#include "core/mesh_build.h"
 #include "core/mesh_ops.h"
+#include "core/primitives.h"
 
 namespace meshedit::testing {
 
@@ -51,6 +54,13 @@ inline void random_edit_or_write(HalfedgeMesh& m, std::mt19937& random) {
       break;
     }
   }
+}
+
+// A torus after random local edits: dead slots among the ids, irregular valences.
+inline HalfedgeMesh edited_torus(uint32_t seed) {
+  HalfedgeMesh m = build_halfedge_mesh(make_torus(6, 8));
+  random_local_edits(m, seed, 60);
+  return m;
 }
 
 }  // namespace meshedit::testing

@@ -14,27 +14,12 @@
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "support/diff_expect.h"
 #include "support/random_edits.h"
 #include "ui/mesh_document.h"
 
 namespace meshedit {
 namespace {
-
-HalfedgeMesh edited_torus(uint32_t seed) {
-  HalfedgeMesh m = build_halfedge_mesh(make_torus(6, 8));
-  testing::random_local_edits(m, seed, 60);
-  return m;
-}
-
-void expect_same_diff(const std::vector<FieldChange>& got, const std::vector<FieldChange>& want) {
-  ASSERT_EQ(got.size(), want.size());
-  for (size_t i = 0; i < got.size(); ++i) {
-    EXPECT_EQ(got[i].element, want[i].element) << i;
-    EXPECT_EQ(got[i].field, want[i].field) << i;
-    EXPECT_EQ(got[i].before, want[i].before) << i;
-    EXPECT_EQ(got[i].after, want[i].after) << i;
-  }
-}
 
 // `last` describes the change from `before` to the document's mesh, with last.before that exact state.
 void expect_last_change(const MeshDocument& doc, const HalfedgeMesh& before) {
@@ -45,7 +30,7 @@ void expect_last_change(const MeshDocument& doc, const HalfedgeMesh& before) {
   EXPECT_EQ(*doc.last.version_before, before.version());
   EXPECT_EQ(doc.last.version_after, doc.mesh.version());
   const std::vector<FieldChange> expected = diff(before, doc.mesh);
-  expect_same_diff(doc.last.changes, expected);
+  testing::expect_same_diff(doc.last.changes, expected);
   EXPECT_EQ(doc.last.change_count, expected.size());
   EXPECT_EQ(doc.message.text, doc.last.label + ": " + std::to_string(expected.size()) +
                                   (expected.size() == 1 ? " field" : " fields") + " changed");
@@ -54,7 +39,7 @@ void expect_last_change(const MeshDocument& doc, const HalfedgeMesh& before) {
 TEST(DocumentJournal, RandomEditsUndoRedoMatchTheSnapshotPath) {
   for (uint32_t seed = 1; seed <= 25; ++seed) {
     SCOPED_TRACE(seed);
-    MeshDocument doc = make_document(edited_torus(seed));
+    MeshDocument doc = make_document(testing::edited_torus(seed));
     HalfedgeMesh reference = doc.mesh;  // edited alongside, undone with whole snapshots
     History reference_history(doc.history.undo_depth() + 256);
     std::mt19937 random(seed);
@@ -115,7 +100,7 @@ Check write_then_fail(HalfedgeMesh& m, Failure failure) {
 
 TEST(DocumentJournal, RefusedAndThrowingOperationsLeaveEverythingAsItWas) {
   for (const Failure failure : {Failure::Refuse, Failure::ThrowMeshError, Failure::ThrowStd}) {
-    MeshDocument doc = make_document(edited_torus(7));
+    MeshDocument doc = make_document(testing::edited_torus(7));
     std::mt19937 random(7);
     for (int i = 0; i < 3; ++i) {
       apply_operation(doc, "edit", [&](HalfedgeMesh& m) {
