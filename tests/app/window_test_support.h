@@ -28,18 +28,31 @@ class XServer {
       return;
     }
     if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) return;
+    // Two tests started together may pick the same number: the Xvfb that loses the lock exits, and its test tries
+    // the next number instead of borrowing the winner's server (which goes away when the winner's test ends).
     for (int number = 90 + int(::getpid() % 50); number < 200; ++number) {
-      if (fs::exists("/tmp/.X11-unix/X" + std::to_string(number)) || fs::exists("/tmp/.X" + std::to_string(number) + "-lock")) continue;
+      const std::string socket = "/tmp/.X11-unix/X" + std::to_string(number);
+      if (fs::exists(socket) || fs::exists("/tmp/.X" + std::to_string(number) + "-lock")) continue;
       pid_ = ::fork();
       if (pid_ == 0) {
         const std::string name = ":" + std::to_string(number);
         ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp", (char*)nullptr);
         ::_exit(127);
       }
-      for (int tries = 0; tries < 100 && !fs::exists("/tmp/.X11-unix/X" + std::to_string(number)); ++tries) {
+      bool exited = false;
+      for (int tries = 0; tries < 100 && !fs::exists(socket); ++tries) {
+        if (::waitpid(pid_, nullptr, WNOHANG) == pid_) {
+          exited = true;
+          break;
+        }
         ::usleep(50000);
       }
-      if (fs::exists("/tmp/.X11-unix/X" + std::to_string(number))) display_ = ":" + std::to_string(number);
+      if (!exited && ::waitpid(pid_, nullptr, WNOHANG) == pid_) exited = true;
+      if (exited) {
+        pid_ = -1;
+        continue;
+      }
+      if (fs::exists(socket)) display_ = ":" + std::to_string(number);
       return;
     }
   }
