@@ -20,6 +20,9 @@ struct HostileCase {
   const char* file;
   RunEnd end;            // how the split test ends
   const char* reported;  // a part of the split test's output
+  // For an attack two limits can stop (which comes first depends on the machine's load): the other way it may end.
+  RunEnd other_end = RunEnd::Completed;
+  const char* other_reported = nullptr;
 };
 
 void PrintTo(const HostileCase& c, std::ostream* os) { *os << c.file; }
@@ -43,8 +46,9 @@ TEST_P(Hostile, OtherTestsKeepTheirGradeAndTheAttackIsReported) {
   EXPECT_EQ(boundary.score, 1.0);
   EXPECT_FALSE(split.passed);
   EXPECT_EQ(split.score, 0.0);
-  EXPECT_EQ(split.end, c.end) << run_end_name(split.end) << "\n" << split.output;
-  EXPECT_NE(split.output.find(c.reported), std::string::npos) << split.output;
+  const bool other = c.other_reported != nullptr && split.end == c.other_end;
+  EXPECT_EQ(split.end, other ? c.other_end : c.end) << run_end_name(split.end) << "\n" << split.output;
+  EXPECT_NE(split.output.find(other ? c.other_reported : c.reported), std::string::npos) << split.output;
   EXPECT_EQ(report.score, 3.0);
   EXPECT_EQ(report.max_score, 6.0);
   EXPECT_EQ(summary_line(report), "2 passed, 1 failed");
@@ -73,7 +77,10 @@ INSTANTIATE_TEST_SUITE_P(
         HostileCase{"pattern_bomb.lua", RunEnd::Timeout, "stopped after 0.5 s (time limit)"},
         // The Lua stack grows until the 32 MB cap (before Lua's own "stack overflow").
         HostileCase{"deep_recursion.lua", RunEnd::Memory, "memory limit exceeded (32 MB)"},
-        HostileCase{"coroutine_bomb.lua", RunEnd::Memory, "memory limit exceeded (32 MB)"},
+        // Live coroutines fill the 32 MB in about 0.4 s here, close to the 0.5 s limit: on a busy machine the clock
+        // can stop it first, which contains it just as well.
+        HostileCase{"coroutine_bomb.lua", RunEnd::Memory, "memory limit exceeded (32 MB)", RunEnd::Timeout,
+                    "time limit exceeded (0.5 s)"},
         HostileCase{"error_object.lua", RunEnd::Error, "Error: (error object is a table value)"},
         HostileCase{"print_flood.lua", RunEnd::Completed, "[output truncated: more than 4096 bytes printed]"},
         HostileCase{"gc_finalizer.lua", RunEnd::Error, "split.lua:3: __gc metamethods are not allowed in scripts"},
