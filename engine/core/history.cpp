@@ -10,71 +10,28 @@
 //   entry would give: max(the restored state's recorded version, the version before the step) + 1.
 #include "core/history.h"
 
-#include <type_traits>
+#include <algorithm>
 #include <utility>
 
 #include "core/field_diff.h"
 #include "core/mesh_storage.h"
 
 namespace meshedit {
-namespace {
-
-// Appends the change of one field of one slot. `a`/`b` are null when the slot does not exist in that mesh.
-template <class Get>
-void compare(std::vector<FieldChange>& out, ElementRef element, const char* field, const HalfedgeMesh* a,
-             const HalfedgeMesh* b, Get get) {
-  using T = std::decay_t<decltype(get(*a))>;
-  if (a && b) {
-    const T before = get(*a);
-    const T after = get(*b);
-    field_diff::compare(out, element, field, &before, &after);
-  } else if (b) {
-    const T after = get(*b);
-    field_diff::compare<T>(out, element, field, nullptr, &after);
-  } else if (a) {
-    const T before = get(*a);
-    field_diff::compare<T>(out, element, field, &before, nullptr);
-  }
-}
-
-// Calls fn(slot, in_before, in_after) for every slot of one kind that exists in either mesh.
-template <class Fn>
-void for_each_slot(const HalfedgeMesh& before, const HalfedgeMesh& after, ElementKind kind, Fn&& fn) {
-  const uint32_t a = before.capacity(kind), b = after.capacity(kind);
-  for (uint32_t i = 0; i < std::max(a, b); ++i) fn(i, i < a ? &before : nullptr, i < b ? &after : nullptr);
-}
-
-}  // namespace
 
 std::vector<FieldChange> diff(const HalfedgeMesh& before, const HalfedgeMesh& after) {
   std::vector<FieldChange> out;
-  for_each_slot(before, after, ElementKind::Vertex, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
-    const VertexId v(i);
-    compare(out, v, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(v); });
-    compare(out, v, "position", a, b, [&](const HalfedgeMesh& m) { return m.position(v); });
-    compare(out, v, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(v); });
-  });
-  for_each_slot(before, after, ElementKind::Halfedge, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
-    const HalfedgeId h(i);
-    compare(out, h, "next", a, b, [&](const HalfedgeMesh& m) { return m.next(h); });
-    compare(out, h, "twin", a, b, [&](const HalfedgeMesh& m) { return m.twin(h); });
-    compare(out, h, "vertex", a, b, [&](const HalfedgeMesh& m) { return m.vertex(h); });
-    compare(out, h, "edge", a, b, [&](const HalfedgeMesh& m) { return m.edge(h); });
-    compare(out, h, "face", a, b, [&](const HalfedgeMesh& m) { return m.face(h); });
-    compare(out, h, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(h); });
-  });
-  for_each_slot(before, after, ElementKind::Edge, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
-    const EdgeId e(i);
-    compare(out, e, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(e); });
-    compare(out, e, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(e); });
-  });
-  for (const bool boundary : {false, true}) {
-    const ElementKind kind = boundary ? ElementKind::Boundary : ElementKind::Face;
-    for_each_slot(before, after, kind, [&](uint32_t i, const HalfedgeMesh* a, const HalfedgeMesh* b) {
-      const FaceId f = boundary ? FaceId::boundary(i) : FaceId::face(i);
-      compare(out, f, "halfedge", a, b, [&](const HalfedgeMesh& m) { return m.halfedge(f); });
-      compare(out, f, "alive", a, b, [&](const HalfedgeMesh& m) { return m.alive(f); });
-    });
+  for (int k = 0; k < kElementKindCount; ++k) {
+    const auto kind = static_cast<ElementKind>(k);
+    const uint32_t in_before = before.capacity(kind), in_after = after.capacity(kind);
+    for (uint32_t slot = 0; slot < std::max(in_before, in_after); ++slot) {
+      SlotValues a, b;
+      if (slot < in_before) a = read_slot(before, kind, slot);
+      if (slot < in_after) b = read_slot(after, kind, slot);
+      field_diff::for_each_field(kind, slot, slot < in_before ? &a : nullptr, slot < in_after ? &b : nullptr,
+                                 [&](ElementRef element, const char* name, const auto* x, const auto* y) {
+                                   field_diff::compare(out, element, name, x, y);
+                                 });
+    }
   }
   return out;
 }

@@ -14,50 +14,11 @@ int index_of(ElementKind kind) { return static_cast<int>(kind); }
 
 bool exists(const MeshShape& shape, const SlotChange& s) { return s.slot < shape.capacity[index_of(s.kind)]; }
 
-// Calls add(element, field, before, after) for each field of one slot in diff()'s order; `before` / `after` point to
-// the field's value in that state, or are null when the slot does not exist there.
+// for_each_field over one changed slot, with the states where the slot exists.
 template <class Add>
-void for_each_field(const SlotChange& s, bool in_before, bool in_after, Add&& add) {
-  const SlotValues* a = in_before ? &s.before : nullptr;
-  const SlotValues* b = in_after ? &s.after : nullptr;
-  auto field = [&](ElementRef element, const char* name, auto member) {
-    add(element, name, a ? &(a->*member) : nullptr, b ? &(b->*member) : nullptr);
-  };
-  auto record_field = [&](ElementRef element, const char* name, auto member) {
-    add(element, name, a ? &(a->record.*member) : nullptr, b ? &(b->record.*member) : nullptr);
-  };
-  switch (s.kind) {
-    case ElementKind::Vertex: {
-      const ElementRef v(VertexId(s.slot));
-      field(v, "halfedge", &SlotValues::halfedge);
-      field(v, "position", &SlotValues::position);
-      field(v, "alive", &SlotValues::alive);
-      break;
-    }
-    case ElementKind::Halfedge: {
-      const ElementRef h(HalfedgeId(s.slot));
-      record_field(h, "next", &HalfedgeRecord::next);
-      record_field(h, "twin", &HalfedgeRecord::twin);
-      record_field(h, "vertex", &HalfedgeRecord::vertex);
-      record_field(h, "edge", &HalfedgeRecord::edge);
-      record_field(h, "face", &HalfedgeRecord::face);
-      field(h, "alive", &SlotValues::alive);
-      break;
-    }
-    case ElementKind::Edge: {
-      const ElementRef e(EdgeId(s.slot));
-      field(e, "halfedge", &SlotValues::halfedge);
-      field(e, "alive", &SlotValues::alive);
-      break;
-    }
-    case ElementKind::Face:
-    case ElementKind::Boundary: {
-      const ElementRef f(s.kind == ElementKind::Boundary ? FaceId::boundary(s.slot) : FaceId::face(s.slot));
-      field(f, "halfedge", &SlotValues::halfedge);
-      field(f, "alive", &SlotValues::alive);
-      break;
-    }
-  }
+void for_each_field(const MeshPatch& patch, const SlotChange& s, Add&& add) {
+  field_diff::for_each_field(s.kind, s.slot, exists(patch.shape_before, s) ? &s.before : nullptr,
+                             exists(patch.shape_after, s) ? &s.after : nullptr, add);
 }
 
 }  // namespace
@@ -110,10 +71,9 @@ MeshPatch make_patch(const ChangeJournal& journal, const HalfedgeMesh& mesh) {
 std::vector<FieldChange> patch_diff(const MeshPatch& patch) {
   std::vector<FieldChange> out;
   for (const SlotChange& s : patch.slots) {
-    for_each_field(s, exists(patch.shape_before, s), exists(patch.shape_after, s),
-                   [&](ElementRef element, const char* name, const auto* before, const auto* after) {
-                     field_diff::compare(out, element, name, before, after);
-                   });
+    for_each_field(patch, s, [&](ElementRef element, const char* name, const auto* before, const auto* after) {
+      field_diff::compare(out, element, name, before, after);
+    });
   }
   return out;
 }
@@ -121,11 +81,10 @@ std::vector<FieldChange> patch_diff(const MeshPatch& patch) {
 size_t patch_change_count(const MeshPatch& patch, size_t limit) {
   size_t count = 0;
   for (const SlotChange& s : patch.slots) {
-    for_each_field(s, exists(patch.shape_before, s), exists(patch.shape_after, s),
-                   [&](ElementRef, const char*, const auto* before, const auto* after) {
-                     if (before && after) count += !field_diff::same(*before, *after);
-                     else count += before || after;
-                   });
+    for_each_field(patch, s, [&](ElementRef, const char*, const auto* before, const auto* after) {
+      if (before && after) count += !field_diff::same(*before, *after);
+      else count += before || after;
+    });
     if (count > limit) return count;
   }
   return count;
