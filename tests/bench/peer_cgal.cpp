@@ -6,7 +6,6 @@
 #include <CGAL/subdivision_method_3.h>
 #include <CGAL/version_macros.h>
 
-#include <cmath>
 #include <stdexcept>
 
 #include "bench/peer_contender.h"
@@ -61,10 +60,7 @@ class CgalContender final : public Contender {
       normals_[b.idx()] += term;
       normals_[c.idx()] += term;
     }
-    for (glm::dvec3& n : normals_) {
-      const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-      if (length > 0.0) n /= length;
-    }
+    normalise_sums(normals_);
   }
   void drop_normals() override { normals_ = {}; }
   void clear() override {

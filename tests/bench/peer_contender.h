@@ -4,6 +4,7 @@
 // the library, which then defines MESHEDIT_HAVE_OPENMESH / MESHEDIT_HAVE_CGAL.
 #pragma once
 
+#include <cmath>
 #include <cstddef>
 #include <memory>
 #include <string>
@@ -22,6 +23,15 @@ struct MeshCounts {
 
 // Live vertices in the contender's own order: position, the last computed normal (zero if none), and
 // 1 for a vertex on a boundary.
+// The last step of the peers' area-weighted normals (the same code in each): every summed vector to unit length,
+// zero sums left as they are.
+inline void normalise_sums(std::vector<glm::dvec3>& sums) {
+  for (glm::dvec3& n : sums) {
+    const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
+    if (length > 0.0) n /= length;
+  }
+}
+
 struct VertexData {
   std::vector<glm::dvec3> position;
   std::vector<glm::dvec3> normal;

@@ -65,10 +65,7 @@ class OpenMeshContender final : public Contender {
       normals_[b.idx()] += term;
       normals_[c.idx()] += term;
     }
-    for (glm::dvec3& n : normals_) {
-      const double length = std::sqrt(n.x * n.x + n.y * n.y + n.z * n.z);
-      if (length > 0.0) n /= length;
-    }
+    normalise_sums(normals_);
   }
   void drop_normals() override { normals_ = {}; }
   void clear() override {
