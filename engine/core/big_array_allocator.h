@@ -42,9 +42,14 @@ struct SkipDefaultInit {
   SkipDefaultInit& operator=(const SkipDefaultInit&) = delete;
 };
 
-inline size_t mapped_size(size_t bytes) { return (bytes + kHugePage - 1) & ~(kHugePage - 1); }
+inline constexpr size_t kSmallPage = size_t(4) << 10;
 
-// Maps `bytes` (rounded up to whole huge pages) at a huge-page boundary: maps one huge page more than needed and
+// The mapping ends at the last small page the array needs, not at a huge-page boundary: the kernel backs only
+// whole aligned huge pages inside a mapping with huge pages, so the array's tail gets small pages and no memory is
+// resident past what the array holds (up to 2 MiB per array otherwise, ~2 B per face of a subdivided mesh).
+inline size_t mapped_size(size_t bytes) { return (bytes + kSmallPage - 1) & ~(kSmallPage - 1); }
+
+// Maps `bytes` (rounded up to whole small pages) at a huge-page boundary: maps one huge page more than needed and
 // unmaps the unaligned head and tail.
 inline void* map_aligned(size_t bytes) {
   const size_t size = mapped_size(bytes);

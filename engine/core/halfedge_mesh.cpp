@@ -42,7 +42,7 @@ void HalfedgeMesh::set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin,
 VertexId HalfedgeMesh::new_vertex(const glm::dvec3& position) {
   v_halfedge_.emplace_back();
   v_position_.push_back(position);
-  v_alive_.push_back(1);
+  v_alive_.push_back(true);
   ++live_vertices_;
   touch();
   return VertexId(vertex_capacity() - 1);
@@ -50,7 +50,7 @@ VertexId HalfedgeMesh::new_vertex(const glm::dvec3& position) {
 
 HalfedgeId HalfedgeMesh::new_halfedge() {
   h_.emplace_back();
-  h_alive_.push_back(1);
+  h_alive_.push_back(true);
   ++live_halfedges_;
   touch();
   return HalfedgeId(halfedge_capacity() - 1);
@@ -58,7 +58,7 @@ HalfedgeId HalfedgeMesh::new_halfedge() {
 
 EdgeId HalfedgeMesh::new_edge() {
   e_halfedge_.emplace_back();
-  e_alive_.push_back(1);
+  e_alive_.push_back(true);
   ++live_edges_;
   touch();
   return EdgeId(edge_capacity() - 1);
@@ -66,7 +66,7 @@ EdgeId HalfedgeMesh::new_edge() {
 
 FaceId HalfedgeMesh::new_face() {
   f_halfedge_.emplace_back();
-  f_alive_.push_back(1);
+  f_alive_.push_back(true);
   ++live_faces_;
   touch();
   return FaceId::face(face_capacity() - 1);
@@ -74,7 +74,7 @@ FaceId HalfedgeMesh::new_face() {
 
 FaceId HalfedgeMesh::new_boundary() {
   b_halfedge_.emplace_back();
-  b_alive_.push_back(1);
+  b_alive_.push_back(true);
   ++live_boundaries_;
   touch();
   return FaceId::boundary(boundary_capacity() - 1);
@@ -83,7 +83,7 @@ FaceId HalfedgeMesh::new_boundary() {
 void HalfedgeMesh::delete_element(VertexId v) {
   if (!alive(v)) return;
   log_write(v);
-  v_alive_[v.index] = 0;
+  v_alive_.set(v.index, false);
   --live_vertices_;
   touch();
 }
@@ -91,7 +91,7 @@ void HalfedgeMesh::delete_element(VertexId v) {
 void HalfedgeMesh::delete_element(HalfedgeId h) {
   if (!alive(h)) return;
   log_write(h);
-  h_alive_[h.index] = 0;
+  h_alive_.set(h.index, false);
   --live_halfedges_;
   touch();
 }
@@ -99,7 +99,7 @@ void HalfedgeMesh::delete_element(HalfedgeId h) {
 void HalfedgeMesh::delete_element(EdgeId e) {
   if (!alive(e)) return;
   log_write(e);
-  e_alive_[e.index] = 0;
+  e_alive_.set(e.index, false);
   --live_edges_;
   touch();
 }
@@ -108,10 +108,10 @@ void HalfedgeMesh::delete_element(FaceId f) {
   if (!alive(f)) return;
   log_write(f);
   if (f.is_boundary()) {
-    b_alive_[f.slot()] = 0;
+    b_alive_.set(f.slot(), false);
     --live_boundaries_;
   } else {
-    f_alive_[f.slot()] = 0;
+    f_alive_.set(f.slot(), false);
     --live_faces_;
   }
   touch();
@@ -166,11 +166,11 @@ bool HalfedgeMesh::is_boundary(EdgeId e) const {
 }
 
 size_t HalfedgeMesh::memory_bytes() const {
-  return h_.capacity() * sizeof(HalfedgeRecord) + h_alive_.capacity() +
+  return h_.capacity() * sizeof(HalfedgeRecord) + h_alive_.memory_bytes() +
          v_halfedge_.capacity() * sizeof(HalfedgeId) + v_position_.capacity() * sizeof(glm::dvec3) +
-         v_alive_.capacity() + e_halfedge_.capacity() * sizeof(HalfedgeId) + e_alive_.capacity() +
-         f_halfedge_.capacity() * sizeof(HalfedgeId) + f_alive_.capacity() +
-         b_halfedge_.capacity() * sizeof(HalfedgeId) + b_alive_.capacity();
+         v_alive_.memory_bytes() + e_halfedge_.capacity() * sizeof(HalfedgeId) + e_alive_.memory_bytes() +
+         f_halfedge_.capacity() * sizeof(HalfedgeId) + f_alive_.memory_bytes() +
+         b_halfedge_.capacity() * sizeof(HalfedgeId) + b_alive_.memory_bytes();
 }
 
 namespace {

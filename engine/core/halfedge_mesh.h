@@ -5,7 +5,7 @@
 //
 // Invariants of the storage (kept by this class, whatever the connectivity says):
 // - Ids are indices into the arrays below and are never reused: new elements are appended, deletion
-//   only clears the element's `alive` flag (a tombstone). `alive(id)` is false for ids past the end,
+//   only clears the element's `alive` flag (a tombstone; alive_flags.h: no bytes while nothing of a kind has died). `alive(id)` is false for ids past the end,
 //   so ids from "the future" (after an undo) read as dead rather than crashing.
 // - Faces and boundary loops live in separate arrays; a FaceId's boundary bit says which (ids.h).
 // - `h.vertex` is the vertex the halfedge LEAVES (its tail), as in the course code.
@@ -29,6 +29,7 @@
 
 #include <glm/vec3.hpp>
 
+#include "core/alive_flags.h"
 #include "core/big_array_allocator.h"
 #include "core/ids.h"
 
@@ -45,7 +46,7 @@ class AliveRange {
  public:
   class Iterator {
    public:
-    Iterator(const MeshArray<uint8_t>* alive, uint32_t i, uint32_t end, uint32_t tag)
+    Iterator(const AliveFlags* alive, uint32_t i, uint32_t end, uint32_t tag)
         : alive_(alive), i_(i), end_(end), tag_(tag) { skip(); }
     IdT operator*() const { return IdT(i_ | tag_); }
     Iterator& operator++() { ++i_; skip(); return *this; }
@@ -53,15 +54,15 @@ class AliveRange {
     bool operator==(const Iterator& o) const { return i_ == o.i_; }
    private:
     void skip() { while (i_ < end_ && !(*alive_)[i_]) ++i_; }
-    const MeshArray<uint8_t>* alive_;
+    const AliveFlags* alive_;
     uint32_t i_, end_, tag_;
   };
-  AliveRange(const MeshArray<uint8_t>* alive, uint32_t tag = 0)
+  AliveRange(const AliveFlags* alive, uint32_t tag = 0)
       : alive_(alive), end_(static_cast<uint32_t>(alive->size())), tag_(tag) {}
   Iterator begin() const { return Iterator(alive_, 0, end_, tag_); }
   Iterator end() const { return Iterator(alive_, end_, end_, tag_); }
  private:
-  const MeshArray<uint8_t>* alive_;
+  const AliveFlags* alive_;
   uint32_t end_, tag_;
 };
 
@@ -249,20 +250,20 @@ class HalfedgeMesh {
 
   // Halfedge arrays, indexed by HalfedgeId.
   MeshArray<HalfedgeRecord> h_;  // next, twin, vertex, edge, face
-  MeshArray<uint8_t> h_alive_;
+  AliveFlags h_alive_;
   // Vertex arrays, indexed by VertexId.
   MeshArray<HalfedgeId> v_halfedge_;  // v.halfedge (outgoing)
   MeshArray<glm::dvec3> v_position_;  // v.position
-  MeshArray<uint8_t> v_alive_;
+  AliveFlags v_alive_;
   // Edge arrays, indexed by EdgeId.
   MeshArray<HalfedgeId> e_halfedge_;  // e.halfedge
-  MeshArray<uint8_t> e_alive_;
+  AliveFlags e_alive_;
   // Face arrays, indexed by FaceId::slot() of real faces.
   MeshArray<HalfedgeId> f_halfedge_;  // f.halfedge
-  MeshArray<uint8_t> f_alive_;
+  AliveFlags f_alive_;
   // Boundary-loop arrays, indexed by FaceId::slot() of boundary loops.
   MeshArray<HalfedgeId> b_halfedge_;  // b.halfedge
-  MeshArray<uint8_t> b_alive_;
+  AliveFlags b_alive_;
 
   size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
   uint64_t version_ = 0;

@@ -62,7 +62,7 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
     uint32_t n = 0, b = 0;
     for (size_t e = begin; e < end; ++e) {
       L.plan[e] = EdgePlan{};
-      if (!L.m.edge_alive[e]) continue;
+      if (!(*L.m.edge_alive)[e]) continue;
       ++n;
       const uint32_t h = L.m.edge_halfedge[e].index, t = L.m.h[h].twin.index;
       const bool h_on_loop = L.m.h[h].face.is_boundary();
@@ -82,7 +82,7 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
     uint32_t n = live[chunk], b = bound[chunk];
     for (size_t e = begin; e < end; ++e) {
-      if (!L.m.edge_alive[e]) continue;
+      if (!(*L.m.edge_alive)[e]) continue;
       EdgePlan& p = L.plan[e];
       p.rank = n++;
       const bool on_boundary = p.boundary();
@@ -100,7 +100,7 @@ void pass_vertices(Level& L, LoopWeights weights, int threads, MeshArray<glm::dv
     loop_rules::ValenceWeights weight(weights);
     const MeshStorage::View& m = L.m;
     for (size_t v = begin; v < end; ++v) {
-      if (!m.vertex_alive[v]) continue;
+      if (!(*m.vertex_alive)[v]) continue;
       const glm::dvec3& p = m.position[v];
       const uint32_t start = m.vertex_halfedge[v].index;
       glm::dvec3 neighbour_sum(0.0), rim[2];
@@ -139,7 +139,7 @@ void pass_edges(Level& L, int threads) {
       // h0 -> twin, next -> their nexts -> the opposite corners' positions: a chain of cache misses, started
       // for later edges one link per stage (dead edges skipped). The last two stages follow h1.next, which on a
       // boundary edge is a loop halfedge whose next another edge rewrites meanwhile: they skip boundary edges.
-      const auto live = [&](size_t g) { return g < end && m.edge_alive[g]; };
+      const auto live = [&](size_t g) { return g < end && (*m.edge_alive)[g]; };
       const auto interior = [&](size_t g) { return live(g) && !L.plan[g].boundary(); };
       if (live(e + 32)) __builtin_prefetch(&m.h[L.face_side(uint32_t(e + 32))]);
       if (live(e + 24)) {
@@ -165,7 +165,7 @@ void pass_edges(Level& L, int threads) {
         const HalfedgeRecord& h1 = m.h[m.h[L.face_side(uint32_t(e + 4))].twin.index];
         __builtin_prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
       }
-      if (!m.edge_alive[e]) continue;
+      if (!(*m.edge_alive)[e]) continue;
       const auto edge = uint32_t(e);
       const bool boundary = L.plan[e].boundary();
       const uint32_t h0 = L.face_side(edge), h1 = m.h[h0].twin.index;
@@ -293,7 +293,7 @@ void pass_triangles(Level& L, int threads) {
     for (size_t f = begin; f < end; ++f) {
       // The chain face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for later
       // faces now, one link per stage. (Dead faces are skipped: their halfedge may be any id.)
-      const auto live = [&](size_t g) { return g < end && m.face_alive[g]; };
+      const auto live = [&](size_t g) { return g < end && (*m.face_alive)[g]; };
       if (live(f + 24)) __builtin_prefetch(&m.h[m.face_halfedge[f + 24].index]);
       if (live(f + 16)) {
         const HalfedgeRecord& x0 = m.h[m.face_halfedge[f + 16].index];
@@ -309,7 +309,7 @@ void pass_triangles(Level& L, int threads) {
         const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[f + 4].index].next.index].next.index];
         __builtin_prefetch(&L.plan[x2.edge.index]);
       }
-      if (!m.face_alive[f]) continue;
+      if (!(*m.face_alive)[f]) continue;
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
       unsigned sides = 0;
       id[0] = m.face_halfedge[f].index;
@@ -375,7 +375,7 @@ void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   pass_triangles(L, threads);
   parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
-      if (L.m.vertex_alive[v]) L.m.position[v] = points[v];
+      if ((*L.m.vertex_alive)[v]) L.m.position[v] = points[v];
     }
   });
   MeshStorage::touch(mesh);

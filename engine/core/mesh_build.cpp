@@ -164,7 +164,7 @@ size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
     if (twin[start] != kNone || boundary_twin_of[start] != kNone) continue;
     const FaceId loop = FaceId::boundary(static_cast<uint32_t>(m.b_halfedge.size()));
     m.b_halfedge.push_back(HalfedgeId(next_boundary));
-    m.b_alive.push_back(1);
+    m.b_alive.push_back(true);
     uint32_t h = start;
     uint32_t previous = kNone;
     do {
@@ -190,7 +190,7 @@ size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
     h_[h].edge = e;
     h_[h_[h].twin.index].edge = e;
   }
-  m.e_alive.assign(m.e_halfedge.size(), 1);
+  m.e_alive.assign(m.e_halfedge.size(), true);
 
   // Vertices: lowest outgoing halfedge, or the outgoing boundary halfedge.
   m.v_position.assign(in.positions.begin(), in.positions.end());
@@ -200,11 +200,12 @@ size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
     if (!slot.valid()) slot = HalfedgeId(h);
   }
   for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[h_[b].vertex.index] = HalfedgeId(b);
-  m.v_alive.resize(in.num_vertices());
+  m.v_alive.assign(in.num_vertices(), true);
   size_t unused = 0;
   for (size_t v = 0; v < in.num_vertices(); ++v) {
-    m.v_alive[v] = m.v_halfedge[v].valid() ? 1 : 0;
-    unused += m.v_alive[v] ? 0 : 1;
+    if (m.v_halfedge[v].valid()) continue;
+    m.v_alive.set(v, false);
+    ++unused;
   }
   MeshStorage::count_live(mesh, unused);
   return unused;
@@ -261,7 +262,7 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   HalfedgeMesh mesh;
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize(num_halfedges);
-  m.h_alive.assign(num_halfedges, 1);
+  m.h_alive.assign(num_halfedges, true);
   for (uint32_t h = 0; h < num_interior; ++h) {
     m.h[h].next = HalfedgeId(c.next[h]);
     m.h[h].twin = HalfedgeId(twin[h]);
@@ -269,7 +270,7 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
     m.h[h].face = FaceId::face(c.face_of[h]);
   }
   m.f_halfedge.resize(in.num_faces());
-  m.f_alive.assign(in.num_faces(), 1);
+  m.f_alive.assign(in.num_faces(), true);
   for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge[f] = HalfedgeId(in.face_offsets[f]);
 
   const size_t unused = finish_build(in, twin, open_incoming, mesh);

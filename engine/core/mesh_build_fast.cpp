@@ -149,10 +149,10 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
 
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize(num_halfedges);
-  m.h_alive.assign(num_halfedges, 1);
+  m.h_alive.assign(num_halfedges, true);
   HalfedgeRecord* h_ = m.h.data();
   m.f_halfedge.resize(in.num_faces());
-  m.f_alive.assign(in.num_faces(), 1);
+  m.f_alive.assign(in.num_faces(), true);
   for (uint32_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
     m.f_halfedge[f] = HalfedgeId(begin);

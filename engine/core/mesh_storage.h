@@ -23,15 +23,15 @@ struct MeshStorage {
     glm::dvec3* position;
     HalfedgeId* edge_halfedge;
     HalfedgeId* face_halfedge;
-    const uint8_t* vertex_alive;
-    const uint8_t* edge_alive;
-    const uint8_t* face_alive;
+    const AliveFlags* vertex_alive;  // the mesh's own flags: they follow grow()
+    const AliveFlags* edge_alive;
+    const AliveFlags* face_alive;
   };
 
   static View view(HalfedgeMesh& m) {
     m.journal_.before_bulk_write();
     return {m.h_.data(),          m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
-            m.f_halfedge_.data(), m.v_alive_.data(),    m.e_alive_.data(),    m.f_alive_.data()};
+            m.f_halfedge_.data(), &m.v_alive_,          &m.e_alive_,          &m.f_alive_};
   }
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
@@ -42,10 +42,10 @@ struct MeshStorage {
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
     m.live_faces_ += faces - m.face_capacity();
-    m.v_alive_.resize(vertices, 1);
-    m.h_alive_.resize(halfedges, 1);
-    m.e_alive_.resize(edges, 1);
-    m.f_alive_.resize(faces, 1);
+    m.v_alive_.resize(vertices, true);
+    m.h_alive_.resize(halfedges, true);
+    m.e_alive_.resize(edges, true);
+    m.f_alive_.resize(faces, true);
     {
       const big_array_detail::SkipDefaultInit skip;
       m.v_halfedge_.resize(vertices);
@@ -81,16 +81,16 @@ struct MeshStorage {
   // The arrays themselves, for a builder that sizes and fills them from nothing (mesh_build_fast.cpp).
   struct Arrays {
     MeshArray<HalfedgeRecord>& h;
-    MeshArray<uint8_t>& h_alive;
+    AliveFlags& h_alive;
     MeshArray<HalfedgeId>& v_halfedge;
     MeshArray<glm::dvec3>& v_position;
-    MeshArray<uint8_t>& v_alive;
+    AliveFlags& v_alive;
     MeshArray<HalfedgeId>& e_halfedge;
-    MeshArray<uint8_t>& e_alive;
+    AliveFlags& e_alive;
     MeshArray<HalfedgeId>& f_halfedge;
-    MeshArray<uint8_t>& f_alive;
+    AliveFlags& f_alive;
     MeshArray<HalfedgeId>& b_halfedge;
-    MeshArray<uint8_t>& b_alive;
+    AliveFlags& b_alive;
   };
   static Arrays arrays(HalfedgeMesh& m) {
     m.journal_.before_bulk_write();
@@ -117,15 +117,15 @@ struct MeshStorage {
     m.journal_.before_bulk_write();
     m.v_halfedge_.resize(capacity[0]);
     m.v_position_.resize(capacity[0]);
-    m.v_alive_.resize(capacity[0]);
+    m.v_alive_.resize(capacity[0], false);
     m.h_.resize(capacity[1]);
-    m.h_alive_.resize(capacity[1]);
+    m.h_alive_.resize(capacity[1], false);
     m.e_halfedge_.resize(capacity[2]);
-    m.e_alive_.resize(capacity[2]);
+    m.e_alive_.resize(capacity[2], false);
     m.f_halfedge_.resize(capacity[3]);
-    m.f_alive_.resize(capacity[3]);
+    m.f_alive_.resize(capacity[3], false);
     m.b_halfedge_.resize(capacity[4]);
-    m.b_alive_.resize(capacity[4]);
+    m.b_alive_.resize(capacity[4], false);
     m.live_vertices_ = live[0];
     m.live_halfedges_ = live[1];
     m.live_edges_ = live[2];

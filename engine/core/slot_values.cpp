@@ -41,28 +41,28 @@ SlotValues read_slot(const HalfedgeMesh& mesh, ElementKind kind, uint32_t slot) 
 
 void write_slot(HalfedgeMesh& mesh, ElementKind kind, uint32_t slot, const SlotValues& state) {
   const MeshStorage::Arrays a = MeshStorage::arrays(mesh);
-  const uint8_t alive = state.alive ? 1 : 0;
+  const bool alive = state.alive;
   switch (kind) {
     case ElementKind::Vertex:
       a.v_halfedge[slot] = state.halfedge;
       a.v_position[slot] = state.position;
-      a.v_alive[slot] = alive;
+      a.v_alive.set(slot, alive);
       break;
     case ElementKind::Halfedge:
       a.h[slot] = state.record;
-      a.h_alive[slot] = alive;
+      a.h_alive.set(slot, alive);
       break;
     case ElementKind::Edge:
       a.e_halfedge[slot] = state.halfedge;
-      a.e_alive[slot] = alive;
+      a.e_alive.set(slot, alive);
       break;
     case ElementKind::Face:
       a.f_halfedge[slot] = state.halfedge;
-      a.f_alive[slot] = alive;
+      a.f_alive.set(slot, alive);
       break;
     case ElementKind::Boundary:
       a.b_halfedge[slot] = state.halfedge;
-      a.b_alive[slot] = alive;
+      a.b_alive.set(slot, alive);
       break;
   }
 }

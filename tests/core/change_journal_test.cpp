@@ -137,7 +137,7 @@ void expect_fall_back(Write&& write, std::optional<size_t> cap = std::nullopt) {
 
 TEST(ChangeJournal, DirectArrayAccessFallsBackToASnapshot) {
   expect_fall_back([](HalfedgeMesh& m) { MeshStorage::view(m).position[0] = glm::dvec3(9); });
-  expect_fall_back([](HalfedgeMesh& m) { MeshStorage::arrays(m).h_alive[2] = 0; });
+  expect_fall_back([](HalfedgeMesh& m) { MeshStorage::arrays(m).h_alive.set(2, false); });
 }
 
 TEST(ChangeJournal, AssignmentAndMovingFromFallBack) {
