@@ -38,7 +38,10 @@ void write_buffer(GLenum target, GLuint buffer, size_t offset, const void* data,
 
 void allocate_buffer(GLenum target, GLuint buffer, size_t capacity, const void* data, size_t bytes) {
   glBindBuffer(target, buffer);
-  glBufferData(target, GLsizeiptr(std::max<size_t>(capacity, 16)), nullptr, GL_DYNAMIC_DRAW);
+  const GLsizeiptr size = GLsizeiptr(std::max<size_t>(capacity, 16));
+  GLint64 current = 0;
+  glGetBufferParameteri64v(target, GL_BUFFER_SIZE, &current);
+  if (current != size) glBufferData(target, size, nullptr, GL_DYNAMIC_DRAW);
   if (bytes > 0) glBufferSubData(target, 0, GLsizeiptr(bytes), data);
   count_upload(bytes);
 }
