@@ -22,6 +22,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "core/finite.h"
 #include "core/loop_rules.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_storage.h"
@@ -359,7 +360,9 @@ struct Scratch {
   MeshArray<glm::dvec3> points;
 };
 
-void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch) {
+// Subdivides once. With `check_finite`, also returns whether every live position of the result is finite (with huge
+// coordinates a weighted sum can overflow); otherwise true.
+bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch, bool check_finite) {
   Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(), mesh.face_capacity(),
           MeshStorage::view(mesh), scratch.plan};
   uint32_t live_edges = 0, boundary_edges = 0;
@@ -373,12 +376,19 @@ void subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
   pass_triangles(L, threads);
-  parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
+  const size_t vertices = check_finite ? mesh.vertex_capacity() : L.v0;
+  std::vector<uint8_t> chunk_finite(chunk_count(threads, vertices), 1);
+  parallel_chunks(threads, vertices, [&](size_t chunk, size_t begin, size_t end) {
+    bool all_finite = true;
     for (size_t v = begin; v < end; ++v) {
-      if ((*L.m.vertex_alive)[v]) L.m.position[v] = points[v];
+      if (!(*L.m.vertex_alive)[v]) continue;
+      if (v < L.v0) L.m.position[v] = points[v];
+      if (check_finite) all_finite = all_finite && finite(L.m.position[v]);
     }
+    chunk_finite[chunk] = all_finite;
   });
   MeshStorage::touch(mesh);
+  return std::all_of(chunk_finite.begin(), chunk_finite.end(), [](uint8_t f) { return f != 0; });
 }
 
 }  // namespace
@@ -408,8 +418,10 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
     live_edges = next_edges;
   }
   MeshStorage::reserve_total(mesh, vertices, halfedges, edges, faces);
-  for (int i = 0; i < levels; ++i) subdivide_level(mesh, weights, threads, scratch);
-  MeshStorage::vouch_valid_triangles(mesh);  // accepted input, so the result is valid, and all triangles
+  bool positions_finite = true;
+  for (int i = 0; i < levels; ++i) positions_finite = subdivide_level(mesh, weights, threads, scratch, i + 1 == levels);
+  // Accepted input, so the result is valid and all triangles, unless a position overflowed.
+  if (positions_finite) MeshStorage::vouch_valid_triangles(mesh);
   return Check::yes();
 }
 

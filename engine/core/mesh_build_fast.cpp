@@ -14,6 +14,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/finite.h"
 #include "core/mesh_storage.h"
 
 namespace meshedit::build_detail {
@@ -193,7 +194,12 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
     if (walked != outgoing[v]) return false;
   }
   unused_vertices = unused;
-  if (in.indices.size() == 3 * in.num_faces() && unused == 0) MeshStorage::vouch_valid_triangles(mesh);
+  // Vouched only as valid as validate() would find it: triangles, every vertex used, every position finite.
+  const bool finite_positions =
+      std::all_of(in.positions.begin(), in.positions.end(), [](const glm::dvec3& p) { return finite(p); });
+  if (in.indices.size() == 3 * in.num_faces() && unused == 0 && finite_positions) {
+    MeshStorage::vouch_valid_triangles(mesh);
+  }
   return true;
 }
 

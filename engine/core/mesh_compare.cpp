@@ -19,6 +19,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/finite.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -65,8 +66,6 @@ void compare_counts(const HalfedgeMesh& yours, const HalfedgeMesh& reference, Co
     });
   }
 }
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 bool same_position(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
   if (std::memcmp(&a, &b, sizeof(a)) == 0) return true;

@@ -19,14 +19,13 @@
 #include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
+#include "core/finite.h"
 #include "core/mesh_error.h"
 
 namespace meshedit {
 namespace {
 
 constexpr double kRelativeWeldTolerance = 1e-9;
-
-bool is_finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 struct CellKey {
   int64_t x, y, z;
@@ -52,7 +51,7 @@ class Welder {
 
   // The lowest id within tolerance, or a new vertex.
   uint32_t add(const glm::dvec3& p, std::vector<glm::dvec3>& positions) {
-    if (!is_finite(p)) return push(p, positions);
+    if (!finite(p)) return push(p, positions);
     const CellKey key = cell_of(p);
     uint32_t best = kInvalidIndex;
     for (int64_t dx = -1; dx <= 1; ++dx) {
@@ -219,7 +218,7 @@ PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolut
       for (uint32_t i = 0; i <= n; ++i) {
         const glm::dvec3 p = evaluate_patch(patch, double(i) / n, double(j) / n);
         samples.push_back(p);
-        if (is_finite(p)) {
+        if (finite(p)) {
           lo = glm::min(lo, p);
           hi = glm::max(hi, p);
         }

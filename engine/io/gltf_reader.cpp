@@ -15,6 +15,7 @@
 #include <glm/matrix.hpp>
 #include <tiny_gltf.h>
 
+#include "core/finite.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
 #include "io/gltf_io.h"
@@ -123,8 +124,6 @@ uint32_t read_unsigned(const unsigned char* at, size_t size) {
   std::memcpy(&v, at, 4);
   return v;
 }
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 std::string object(const char* kind, size_t index) { return std::string(kind) + " " + std::to_string(index); }
 

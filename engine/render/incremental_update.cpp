@@ -8,6 +8,8 @@
 #include <cmath>
 #include <unordered_map>
 
+#include "core/finite.h"
+
 namespace meshedit {
 namespace {
 
@@ -15,8 +17,6 @@ void sort_unique(std::vector<uint32_t>& ids) {
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
 }
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // The halfedges leaving u, found by walking its fan (twin, then next) from u.halfedge, into `out`; true when the walk
 // closed after exactly `outgoing` distinct halfedges that all leave u (then there is no other: `outgoing` counts

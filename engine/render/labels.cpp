@@ -5,13 +5,12 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/finite.h"
 #include "core/normals.h"
 #include "render/mesh_geometry.h"
 
 namespace meshedit {
 namespace {
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 bool faces_eye(const glm::dvec3& normal, const glm::dvec3& anchor, const glm::dvec3& eye) {
   return glm::dot(normal, eye - anchor) > 0.0;

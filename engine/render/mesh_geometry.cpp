@@ -10,6 +10,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/finite.h"
 #include "core/normals.h"
 
 namespace meshedit {
@@ -20,8 +21,6 @@ namespace {
 constexpr double kArrowInset = 0.2;
 constexpr double kArrowTrim = 0.12;
 constexpr double kArrowHead = 0.25;
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // Collects f's cycle (see the header's rule for a drawable face); see walk_face_cycle.
 FaceWalk walk(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited,

@@ -24,6 +24,7 @@
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "core/finite.h"
 #include "render/gl_objects.h"
 #include "render/gpu_batches.h"
 #include "render/gpu_mesh.h"
@@ -59,8 +60,6 @@ void add_arrow_segments(const HalfedgeArrow& arrow, std::vector<EdgeSegment>& ou
   out.push_back({arrow.tip, arrow.barb_inner, arrow.halfedge, 0});
   out.push_back({arrow.tip, arrow.barb_outer, arrow.halfedge, 0});
 }
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // The small batches of highlighted elements: segments for edges, segments for arrows, points.
 struct ItemLists {

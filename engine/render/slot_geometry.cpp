@@ -9,13 +9,13 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/finite.h"
+
 namespace meshedit {
 namespace {
 
 // Area below this fraction of the squared size of the face counts as zero (core/normals.cpp's rule).
 constexpr double kZeroAreaRelative = 1e-14;
-
-bool finite(const glm::dvec3& p) { return std::isfinite(p.x) && std::isfinite(p.y) && std::isfinite(p.z); }
 
 // Twice the vector area of a closed cycle, as core's face_term computes it.
 glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& corners) {

@@ -2,6 +2,7 @@
 // flips one edge at a time): the same mesh id for id, pointer for pointer and position bit for bit, on closed
 // meshes, meshes with boundaries, meshes whose ids have holes after random flips, splits and collapses, several
 // levels, both weight sets, and one or two threads. The course files are compared in tests/io.
+#include <cmath>
 #include <random>
 #include <string>
 #include <vector>
@@ -89,6 +90,34 @@ TEST(LoopFast, RefusesLikeThePhasesAndChangesNothing) {
   EXPECT_FALSE(broken_refused.ok);
   EXPECT_EQ(broken_refused.reason, can_loop_subdivide(broken_before).reason);
   EXPECT_TRUE(broken.same_as(broken_before));
+}
+
+// A mesh is vouched valid (proven_valid_triangles) only as validate() would find it, finite positions included: not
+// when built from a non-finite position, and not when subdividing overflowed one. Loop then refuses the first like
+// the teaching path, and a mesh that overflowed shows up as invalid.
+TEST(LoopFast, VouchesOnlyForFinitePositions) {
+  PolygonMesh with_nan = make_tetrahedron();
+  with_nan.positions[2].y = std::nan("");
+  HalfedgeMesh m = build_halfedge_mesh(with_nan);
+  EXPECT_FALSE(m.proven_valid_triangles());
+  EXPECT_FALSE(validate(m).ok());
+  const HalfedgeMesh before = m;
+  const Check refused = loop_subdivide(m);
+  EXPECT_FALSE(refused.ok);
+  EXPECT_EQ(refused.reason, can_loop_subdivide(before).reason);
+  EXPECT_TRUE(m.same_as(before));
+
+  PolygonMesh huge = make_icosahedron();
+  for (glm::dvec3& p : huge.positions) p *= 1e308;  // finite, but a sum of five neighbours is not
+  HalfedgeMesh big = build_halfedge_mesh(huge);
+  ASSERT_TRUE(big.proven_valid_triangles());
+  ASSERT_TRUE(loop_subdivide(big, LoopWeights::Course, 1, 1));
+  EXPECT_FALSE(big.proven_valid_triangles());
+  EXPECT_FALSE(validate(big).ok());
+
+  HalfedgeMesh fine = build_halfedge_mesh(make_icosahedron());
+  ASSERT_TRUE(loop_subdivide(fine, LoopWeights::Course, 2, 2));
+  EXPECT_TRUE(fine.proven_valid_triangles());
 }
 
 TEST(LoopFast, ZeroLevelsChangesNothing) {
