@@ -160,8 +160,8 @@ void GpuMesh::draw_triangles(GLint extra_location, GLuint unit) const {
 }
 
 namespace {
-template <class T>
-void read_buffer(GLenum target, GLuint buffer, size_t count, std::vector<T>& out) {
+template <class T, class A>
+void read_buffer(GLenum target, GLuint buffer, size_t count, std::vector<T, A>& out) {
   out.resize(count);
   if (count == 0) return;
   glBindBuffer(target, buffer);

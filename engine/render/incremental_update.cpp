@@ -45,8 +45,6 @@ void consider(uint32_t candidate, std::vector<uint32_t>& found, Test&& test) {
   if (std::find(found.begin(), found.end(), candidate) == found.end()) found.push_back(candidate);
 }
 
-glm::vec4 flat_normal(const FaceDraw& d) { return glm::vec4(glm::vec3(unit_or_zero(d.term)), 0.0f); }
-
 struct Planner {
   const HalfedgeMesh& before;
   const HalfedgeMesh& after;
@@ -199,7 +197,7 @@ std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeM
       patch.extra_triangles.push_back({state.extra_first[f] + uint32_t(i), {c[0], c[i + 2], c[i + 3]}});
     }
     if (f >= after.face_capacity()) continue;
-    FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw)};
+    FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw.term)};
     if (new_draw.drawn()) fp.triangle = {new_draw.corners[0], new_draw.corners[1], new_draw.corners[2]};
     patch.faces.push_back(fp);
   }

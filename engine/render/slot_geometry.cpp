@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
+#include "render/slot_geometry_proven.h"
 
 namespace meshedit {
 namespace {
@@ -17,12 +18,13 @@ namespace {
 // Area below this fraction of the squared size of the face counts as zero (core/normals.cpp's rule).
 constexpr double kZeroAreaRelative = 1e-14;
 
-// Twice the vector area of a closed cycle, as core's face_term computes it.
-glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& corners) {
+}  // namespace
+
+glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const uint32_t* corners, size_t count) {
   glm::dvec3 out(0.0), previous(0.0);
   const glm::dvec3 origin = mesh.position(VertexId(corners[0]));
   double size_sq = 0.0;
-  for (size_t i = 1; i < corners.size(); ++i) {
+  for (size_t i = 1; i < count; ++i) {
     const glm::dvec3 p = mesh.position(VertexId(corners[i])) - origin;
     out += glm::cross(previous, p);
     size_sq = std::max(size_sq, glm::dot(p, p));
@@ -32,9 +34,7 @@ glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& cor
   return out;
 }
 
-glm::vec4 flat_normal(const FaceDraw& d) { return glm::vec4(glm::vec3(unit_or_zero(d.term)), 0.0f); }
-
-}  // namespace
+glm::vec4 flat_normal(const glm::dvec3& term) { return glm::vec4(glm::vec3(unit_or_zero(term)), 0.0f); }
 
 glm::dvec3 unit_or_zero(const glm::dvec3& v) {
   const double length = glm::length(v);
@@ -49,7 +49,7 @@ void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<Ha
   out.walk = walk_face_cycle(mesh, f, cycle, visited, max_steps);
   if (!out.drawn()) return;
   for (HalfedgeId h : cycle) out.corners.push_back(mesh.vertex(h).index);
-  out.term = cycle_term(mesh, out.corners);
+  out.term = cycle_term(mesh, out.corners.data(), out.corners.size());
 }
 
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v) {
@@ -83,6 +83,10 @@ glm::vec3 smooth_normal(uint32_t vertex, std::vector<CornerFace>& faces) {
 }
 
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
+  return mesh.proven_valid_triangles() ? build_slot_geometry_of_proven_triangles(mesh) : build_slot_geometry_by_walks(mesh);
+}
+
+SlotGeometry build_slot_geometry_by_walks(const HalfedgeMesh& mesh) {
   SlotGeometry g;
   const uint32_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity(), edges = mesh.edge_capacity();
   g.positions.assign(vertices, glm::vec3(0.0f));
@@ -95,7 +99,7 @@ SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
     ++g.counts.vertices;
   }
 
-  std::vector<glm::dvec3> sums(vertices, glm::dvec3(0.0));
+  MeshArray<glm::dvec3> sums(vertices, glm::dvec3(0.0));
   g.triangles.assign(size_t(faces) * 3, 0u);
   g.face_normals.assign(faces, glm::vec4(0.0f));
   std::vector<uint8_t> visited(mesh.halfedge_capacity(), 0);
@@ -116,7 +120,7 @@ SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
       g.extra_faces.push_back(uint32_t(slot));
     }
     g.counts.triangles += d.triangle_count();
-    g.face_normals[slot] = flat_normal(d);
+    g.face_normals[slot] = flat_normal(d.term);
     for (uint32_t c : d.corners) sums[c] += d.term;
   }
   g.smooth_normals.resize(vertices);

@@ -47,6 +47,9 @@ void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<Ha
 
 // The unit vector along a term, or zero (core/normals.h's rule).
 glm::dvec3 unit_or_zero(const glm::dvec3& v);
+// A closed cycle's term from its corners' vertex ids (count >= 3), and a face's flat normal from its term.
+glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const uint32_t* corners, size_t count);
+glm::vec4 flat_normal(const glm::dvec3& term);
 
 struct SlotCounts {
   size_t triangles = 0;       // drawn triangles (first and extra)
@@ -57,21 +60,27 @@ struct SlotCounts {
   bool operator==(const SlotCounts&) const = default;
 };
 
+// The per-slot arrays are MeshArrays (core/halfedge_mesh.h): at a million faces they are over 100 MB written once
+// per full build, and huge pages fault them in 512 times fewer steps.
 struct SlotGeometry {
-  std::vector<glm::vec3> positions;       // per vertex slot; zero where hidden
-  std::vector<glm::vec3> smooth_normals;  // per vertex slot
-  std::vector<VertexPoint> points;        // per vertex slot; hidden: position 0, id kInvalidIndex
-  std::vector<uint32_t> triangles;        // 3 per face slot
-  std::vector<glm::vec4> face_normals;    // per face slot (w = 0)
+  MeshArray<glm::vec3> positions;         // per vertex slot; zero where hidden
+  MeshArray<glm::vec3> smooth_normals;    // per vertex slot
+  MeshArray<VertexPoint> points;          // per vertex slot; hidden: position 0, id kInvalidIndex
+  MeshArray<uint32_t> triangles;          // 3 per face slot
+  MeshArray<glm::vec4> face_normals;      // per face slot (w = 0)
   std::vector<uint32_t> extra_triangles;  // 3 per later fan triangle of a polygon, in face order
   std::vector<uint32_t> extra_faces;      // the face slot of each of those
-  std::vector<EdgeSegment> edges;         // per edge slot
+  MeshArray<EdgeSegment> edges;           // per edge slot
   std::vector<uint32_t> boundary_edges;   // drawn edges flagged boundary, ascending ids
   SlotCounts counts;
   BoundingBox bounds;                     // of the drawn points
 };
 
+// The buffers' contents for every slot. A mesh vouched valid with triangle faces (proven_valid_triangles) takes a
+// shorter path (slot_geometry_proven.h) with exactly the same result; any other mesh is walked face by face with
+// every check (build_slot_geometry_by_walks).
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh);
+SlotGeometry build_slot_geometry_by_walks(const HalfedgeMesh& mesh);
 
 // One slot's value, as build_slot_geometry computes it.
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v);
