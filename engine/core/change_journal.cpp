@@ -2,6 +2,7 @@
 #include "core/change_journal.h"
 
 #include <algorithm>
+#include <new>
 #include <utility>
 
 #include "core/mesh_storage.h"
@@ -17,7 +18,11 @@ size_t default_cap(const MeshShape& shape) {
   for (const uint32_t c : shape.capacity) slots += c;
   return std::max<size_t>(4096, slots / 2);
 }
+
+HalfedgeMesh copy_of(const HalfedgeMesh& mesh) { return mesh; }
 }  // namespace
+
+ChangeJournal::SnapshotCopier ChangeJournal::snapshot_copier = copy_of;
 
 ChangeJournal::ChangeJournal(HalfedgeMesh& mesh, std::optional<size_t> max_entries)
     : mesh_(&mesh),
@@ -47,10 +52,15 @@ void ChangeJournal::note_write(ElementKind kind, uint32_t slot) {
 void ChangeJournal::fall_back() noexcept {
   if (!attached()) return;
   detach();  // first: the copy and the undo below must not report to this journal
-  snapshot_.emplace(*mesh_);
-  undo_log(*snapshot_);
-  log_.clear();
-  log_.shrink_to_fit();
+  try {
+    snapshot_.emplace(snapshot_copier(*mesh_));
+    undo_log(*snapshot_);
+  } catch (const std::bad_alloc&) {
+    // Out of memory for the copy (or for the undo on it). Only the copy was written: drop it, whole or half made.
+    snapshot_.reset();
+    state_before_lost_ = true;
+  }
+  std::vector<Entry>().swap(log_);  // frees the log without allocating (shrink_to_fit may allocate)
 }
 
 HalfedgeMesh ChangeJournal::take_snapshot() {
@@ -67,14 +77,16 @@ void ChangeJournal::undo_log(HalfedgeMesh& target) const {
   MeshStorage::set_versions(target, version_before_, proven_before_);
 }
 
-void ChangeJournal::revert() {
+bool ChangeJournal::revert() {
   detach();
+  if (state_before_lost_) return false;
   if (snapshot_) {
     *mesh_ = take_snapshot();
-    return;
+    return true;
   }
   undo_log(*mesh_);
   log_.clear();
+  return true;
 }
 
 }  // namespace meshedit

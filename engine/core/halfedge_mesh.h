@@ -16,7 +16,8 @@
 // - Every mutation bumps `version()`, so caches (GPU buffers, tables) know when to refresh.
 // - While a ChangeJournal is attached (change_journal.h; off by default), every mutating member first reports the
 //   slot it is about to write, and every wholesale replacement (assignment, being moved from, MeshStorage's direct
-//   array access) makes the journal take a full snapshot first. Without a journal that costs one branch per write.
+//   array access) makes the journal take a full snapshot first (out of memory, the journal gives up the state before
+//   instead of throwing: moves stay noexcept). Without a journal that costs one branch per write.
 //   The journal is not part of the value: a copy of a mesh has none.
 //
 // Connectivity invariants (twin of twin, closed face cycles, ...) are NOT enforced here: check them with
@@ -72,7 +73,8 @@ class ChangeJournal;
 // The journal a mesh reports its writes to, or none (change_journal.h). Not part of the mesh's value: a copy starts
 // without one. Declared as the mesh's first member, so in the mesh's assignment it runs before any array is
 // replaced: a journaled mesh whose contents are about to be replaced (assigned to) or emptied (moved from) tells its
-// journal first, which takes a full snapshot of the state before the change and detaches.
+// journal first, which takes a full snapshot of the state before the change and detaches (or, when the snapshot
+// cannot be allocated, detaches and reports the state before lost: nothing throws here).
 class JournalLink {
  public:
   JournalLink() = default;

@@ -42,7 +42,8 @@ struct MeshPatch {
 };
 
 // The patch from the state the journal saw when it was attached to `mesh` as it is now. The journal must not have
-// fallen back to a snapshot. O(log length * log(log length)) plus the appended slots.
+// fallen back (to a snapshot, or to nothing: state_before_lost). O(log length * log(log length)) plus the appended
+// slots.
 MeshPatch make_patch(const ChangeJournal& journal, const HalfedgeMesh& mesh);
 
 // diff(before, after) of the patch's two states (history.h), computed from the patch alone.

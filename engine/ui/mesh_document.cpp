@@ -4,6 +4,9 @@
 // - An operation runs under a change journal: a refusal reverts it (contents and version exactly), success keeps a
 //   patch (or, when the journal fell back, its snapshot) for the history and `last`. The mesh is copied only for
 //   snapshot-sized changes and when last.before cannot be rolled forward (see state_before).
+// - A journal that ran out of memory for its snapshot (state_before_lost) leaves nothing to revert or record: the
+//   mesh stays as the operation left it, refused or not, the history is cleared, `last` is marked not recorded and
+//   the message says so (keep_unrecorded_change). No snapshot or patch is read from such a journal.
 // - The diff is counted before it is formatted; above the cap it is not formatted at all.
 #include "ui/mesh_document.h"
 
@@ -70,6 +73,33 @@ std::string change_summary(const MeshDocument& doc) {
 }
 
 bool same_position(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0; }
+
+// After an operation whose journal lost the state before it (memory ran out for its snapshot): nothing can put the
+// mesh back, so it stays as the operation left it, whether `check` accepted or refused. The history is cleared (its
+// entries start from a state the mesh may no longer be in), `last` says a change happened that was not recorded, and
+// the message gives the outcome and why undo history is gone. `version_before`: the mesh's version() before.
+void keep_unrecorded_change(MeshDocument& doc, const std::string& label, const Check& check, ElementRef culprit,
+                            uint64_t version_before) {
+  // The document's versions only grow: an operation that assigned an older mesh must not pass for a state that a
+  // cache (validation, renderer) already saw.
+  if (doc.mesh.version() <= version_before) doc.mesh.bump_version_above(version_before);
+  doc.history.clear();
+  LastChange last;
+  last.label = label;
+  last.recorded = false;
+  last.version_after = doc.mesh.version();
+  last.serial = doc.last.serial + 1;
+  doc.last = std::move(last);
+  const std::string cause = "memory ran out saving the mesh before it, so ";
+  if (check.ok) {
+    set_message(doc, Severity::Warning, label + ": done, but " + cause + "it cannot be undone: undo history cleared");
+  } else {
+    set_message(doc, Severity::Error,
+                label + ": " + check.reason + "; " + cause +
+                    "it could not be undone: the mesh is as the operation left it, undo history cleared",
+                culprit);
+  }
+}
 
 }  // namespace
 
@@ -150,9 +180,13 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label,
     severity = Severity::Error;
   }
   journal.detach();
+  if (!check.ok && check.reason.empty()) check.reason = "refused";
+  if (journal.state_before_lost()) {
+    keep_unrecorded_change(doc, label, check, culprit, journal.version_before());
+    return check;
+  }
   if (!check.ok) {
     journal.revert();
-    if (check.reason.empty()) check.reason = "refused";
     set_message(doc, severity, label + ": " + check.reason, culprit);
     return check;
   }

@@ -11,10 +11,17 @@
 //   script), undo/redo of their snapshot entries, and the first change after one of them, after opening a mesh or
 //   after show_state (which has no patch to roll last.before forward with) copy the mesh.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
-//   same version()); only `message` changes.
+//   same version()); only `message` changes. The one exception is running out of memory, next.
+// - When memory runs out while the journal saves the state before an operation (its snapshot; a mesh of millions
+//   of faces), nothing crashes and nothing the operation did is thrown away: the mesh stays as the operation left
+//   it, refused or not (there is no state to put back), version() moves above the one before, the history is
+//   cleared (its entries start from a state the mesh may no longer be in), `last` is marked not recorded, and the
+//   message says undo history was cleared because memory ran out (Warning on success, Error with the refusal's
+//   reason otherwise). Later edits, undo and redo work as on a freshly opened mesh.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
-//   from `last.before` to the current mesh. `last.serial` grows by one each time `last` is replaced, so views
-//   that index the diff rebuild their index once per change, not once per frame.
+//   from `last.before` to the current mesh, unless the change was not recorded (above; then it only names it).
+//   `last.serial` grows by one each time `last` is replaced, so views that index the diff rebuild their index once
+//   per change, not once per frame.
 // - The validation and stats caches are keyed by (generation, mesh.version()): validate() and compute_stats()
 //   run at most once per mesh state, however many frames ask (validate() on a million triangles takes ~0.3 s).
 // - Nothing here draws or touches ImGui: the document is plain data, tested without a window.
@@ -90,6 +97,9 @@ struct LastChange {
   // it instead of copying the mesh. Absent for snapshot-sized changes.
   std::optional<MeshPatch> patch;
   uint64_t serial = 0;                     // +1 every time this struct is replaced
+  // False when the change happened but could not be recorded (memory ran out saving the state before it): no
+  // `before`, `patch` or `changes`, and views say so rather than show an empty diff.
+  bool recorded = true;
   // mesh.version() just before and after the change, when `before` is exactly the state the document showed
   // until then (not after show_state with a `from`): a renderer that showed that version can apply `changes`
   // in place instead of rebuilding. Absent otherwise.
@@ -157,6 +167,8 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, const s
 // Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
 //   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
 //   an exception becomes a refused Check whose reason is its message.
+// Memory ran out saving the state before (see the invariants): the mesh stays as `op` left it, history is cleared,
+//   `last` is not recorded and the message says so; the Check is `op`'s, as above.
 // A local edit (setters only, fewer writes than the journal's cap) costs time proportional to the edit: no copy of
 // the mesh, the diff made from the patch. A snapshot-sized one (MeshStorage's direct writes, assigning the mesh)
 // costs two copies of the mesh and a pass over every slot. The first edit after opening a mesh, show_state or a

@@ -294,6 +294,11 @@ void draw_changes(TableContext& c) {
     ImGui::TextDisabled("no operation yet: flip, split, collapse or subdivide, and every changed field shows here");
     return;
   }
+  if (!last.recorded) {
+    ImGui::Text("%s: changed, but not recorded (memory ran out saving the mesh before it)", last.label.c_str());
+    if (c.state.probe) c.state.probe->record_last_item("changes-not-recorded");
+    return;
+  }
   if (!last.listed) {
     ImGui::Text("%s: more than %zu fields changed, too many to list", last.label.c_str(),
                 c.doc.limits.max_listed_changes);
@@ -331,7 +336,9 @@ std::string tab_label(const MeshDocument& doc, TableTab tab) {
   std::string label;
   if (tab == TableTab::Changes) {
     label = "changes";
-    if (doc.last.listed && !doc.last.label.empty()) label += " " + std::to_string(doc.last.changes.size());
+    if (doc.last.listed && doc.last.recorded && !doc.last.label.empty()) {
+      label += " " + std::to_string(doc.last.changes.size());
+    }
   } else {
     const ElementKind kind = table_kind(tab);
     label = std::string(1, kind_prefix(kind)) + " " + std::to_string(doc.mesh.capacity(kind));

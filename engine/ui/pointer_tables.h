@@ -1,5 +1,6 @@
 // The pointer tables: one tab per element kind with every stored field (`h37: next h12, twin h38, vertex v5,
-// edge e18, face f6`), and a Changes tab listing what the last operation changed (element, field, before, after).
+// edge e18, face f6`), and a Changes tab listing what the last operation changed (element, field, before, after), or
+// saying that it was not recorded (LastChange::recorded: memory ran out saving the state before it).
 //
 // Invariants:
 // - Only the rows on screen read the mesh (ImGuiListClipper): a frame costs O(visible rows), whatever the size.

@@ -1,10 +1,12 @@
 // The pointer tables: the filter parser, clicking rows and cells, revealing a selection made elsewhere, the
-// Changes view, and a million-triangle torus drawn by visible rows only (rows counted, not timed).
+// Changes view (and what it says of a change memory ran out to record), and a million-triangle torus drawn by visible
+// rows only (rows counted, not timed).
 #include <algorithm>
 
 #include <gtest/gtest.h>
 
 #include "core/mesh_ops.h"
+#include "support/failing_snapshots.h"
 #include "ui/document_actions.h"
 #include "ui/pointer_tables.h"
 #include "ui_test_support.h"
@@ -164,6 +166,28 @@ TEST(PointerTables, ChangesViewListsTheDiffWithLinks) {
   t.click(*after);
   EXPECT_REF(t.sel.selected, V(2));
   EXPECT_EQ(t.state.active, TableTab::Changes);  // clicks inside do not switch tabs
+}
+
+TEST(PointerTables, ChangesViewSaysWhenAChangeWasNotRecorded) {
+  TablesFixture t(grid_1x1());
+  {
+    const testing::FailingSnapshots failing;
+    ASSERT_TRUE(apply_operation(t.doc, "replace", [](HalfedgeMesh& m) {
+                  m = build_halfedge_mesh(make_grid(2, 1));
+                  return Check::yes();
+                }).ok);
+  }
+  ASSERT_FALSE(t.doc.last.recorded);
+  t.frame();
+  t.frame();
+  t.state.open_tab_requested = false;
+  const UiProbe::Item* tab = t.probe.find("tab:changes");
+  ASSERT_NE(tab, nullptr);
+  t.click(*tab);
+  t.frame();
+  EXPECT_EQ(t.state.active, TableTab::Changes);
+  EXPECT_NE(t.probe.find("changes-not-recorded"), nullptr);
+  EXPECT_EQ(t.probe.find("change-element"), nullptr);
 }
 
 TEST(PointerTables, ChangedCellsComeFromTheDocumentIndex) {
