@@ -5,8 +5,9 @@
 //
 // Invariants of the storage (kept by this class, whatever the connectivity says):
 // - Ids are indices into the arrays below and are never reused: new elements are appended, deletion
-//   only clears the element's `alive` flag (a tombstone; alive_flags.h: no bytes while nothing of a kind has died). `alive(id)` is false for ids past the end,
-//   so ids from "the future" (after an undo) read as dead rather than crashing.
+//   only clears the element's `alive` flag (a tombstone; alive_flags.h: no bytes while nothing of a kind has
+//   died). `alive(id)` is false for ids past the end, so ids from "the future" (after an undo) read as dead
+//   rather than crashing.
 // - Faces and boundary loops live in separate arrays; a FaceId's boundary bit says which (ids.h).
 // - `h.vertex` is the vertex the halfedge LEAVES (its tail), as in the course code.
 // - A boundary vertex's `halfedge` is its outgoing halfedge on the boundary loop, when the mesh was built

@@ -83,7 +83,8 @@ glm::vec3 smooth_normal(uint32_t vertex, std::vector<CornerFace>& faces) {
 }
 
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
-  return mesh.proven_valid_triangles() ? build_slot_geometry_of_proven_triangles(mesh) : build_slot_geometry_by_walks(mesh);
+  if (mesh.proven_valid_triangles()) return build_slot_geometry_of_proven_triangles(mesh);
+  return build_slot_geometry_by_walks(mesh);
 }
 
 SlotGeometry build_slot_geometry_by_walks(const HalfedgeMesh& mesh) {
