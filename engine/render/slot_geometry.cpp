@@ -10,7 +10,6 @@
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
-#include "render/slot_geometry_proven.h"
 
 namespace meshedit {
 namespace {
@@ -18,13 +17,12 @@ namespace {
 // Area below this fraction of the squared size of the face counts as zero (core/normals.cpp's rule).
 constexpr double kZeroAreaRelative = 1e-14;
 
-}  // namespace
-
-glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const uint32_t* corners, size_t count) {
+// Twice the vector area of a closed cycle, as core's face_term computes it.
+glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& corners) {
   glm::dvec3 out(0.0), previous(0.0);
   const glm::dvec3 origin = mesh.position(VertexId(corners[0]));
   double size_sq = 0.0;
-  for (size_t i = 1; i < count; ++i) {
+  for (size_t i = 1; i < corners.size(); ++i) {
     const glm::dvec3 p = mesh.position(VertexId(corners[i])) - origin;
     out += glm::cross(previous, p);
     size_sq = std::max(size_sq, glm::dot(p, p));
@@ -33,6 +31,8 @@ glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const uint32_t* corners, size_t 
   if (!(glm::length(out) > kZeroAreaRelative * size_sq)) out = glm::dvec3(0.0);
   return out;
 }
+
+}  // namespace
 
 glm::vec4 flat_normal(const glm::dvec3& term) { return glm::vec4(glm::vec3(unit_or_zero(term)), 0.0f); }
 
@@ -49,7 +49,7 @@ void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<Ha
   out.walk = walk_face_cycle(mesh, f, cycle, visited, max_steps);
   if (!out.drawn()) return;
   for (HalfedgeId h : cycle) out.corners.push_back(mesh.vertex(h).index);
-  out.term = cycle_term(mesh, out.corners.data(), out.corners.size());
+  out.term = cycle_term(mesh, out.corners);
 }
 
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v) {
@@ -83,11 +83,6 @@ glm::vec3 smooth_normal(uint32_t vertex, std::vector<CornerFace>& faces) {
 }
 
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
-  if (mesh.proven_valid_triangles()) return build_slot_geometry_of_proven_triangles(mesh);
-  return build_slot_geometry_by_walks(mesh);
-}
-
-SlotGeometry build_slot_geometry_by_walks(const HalfedgeMesh& mesh) {
   SlotGeometry g;
   const uint32_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity(), edges = mesh.edge_capacity();
   g.positions.assign(vertices, glm::vec3(0.0f));

@@ -47,8 +47,7 @@ void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<Ha
 
 // The unit vector along a term, or zero (core/normals.h's rule).
 glm::dvec3 unit_or_zero(const glm::dvec3& v);
-// A closed cycle's term from its corners' vertex ids (count >= 3), and a face's flat normal from its term.
-glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const uint32_t* corners, size_t count);
+// A face's flat normal from its term: the unit term as a vec4 with w = 0 (zero where the term is).
 glm::vec4 flat_normal(const glm::dvec3& term);
 
 struct SlotCounts {
@@ -76,11 +75,7 @@ struct SlotGeometry {
   BoundingBox bounds;                     // of the drawn points
 };
 
-// The buffers' contents for every slot. A mesh vouched valid with triangle faces (proven_valid_triangles) takes a
-// shorter path (slot_geometry_proven.h) with exactly the same result; any other mesh is walked face by face with
-// every check (build_slot_geometry_by_walks).
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh);
-SlotGeometry build_slot_geometry_by_walks(const HalfedgeMesh& mesh);
 
 // One slot's value, as build_slot_geometry computes it.
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v);

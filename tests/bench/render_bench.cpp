@@ -169,8 +169,7 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
     }
     line(label, "%10.2f ms", best, "min of 3");
   };
-  time_build("  CPU build of the slots (vouched mesh: short path)", build_slot_geometry);
-  time_build("  CPU build of the slots by walks (any mesh)", build_slot_geometry_by_walks);
+  time_build("  CPU build of the slots (build_slot_geometry)", build_slot_geometry);
   OrbitCamera camera;
   camera.fit(renderer.bounds());
 
