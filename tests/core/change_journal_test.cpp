@@ -18,6 +18,7 @@
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
 #include "support/diff_expect.h"
+#include "support/fall_back_writes.h"
 #include "support/random_edits.h"
 
 namespace meshedit {
@@ -135,22 +136,11 @@ void expect_fall_back(Write&& write, std::optional<size_t> cap = std::nullopt) {
   EXPECT_EQ(mesh.num_vertices(), before.num_vertices());
 }
 
-TEST(ChangeJournal, DirectArrayAccessFallsBackToASnapshot) {
-  expect_fall_back([](HalfedgeMesh& m) { MeshStorage::view(m).position[0] = glm::dvec3(9); });
-  expect_fall_back([](HalfedgeMesh& m) { MeshStorage::arrays(m).h_alive.set(2, false); });
-}
-
-TEST(ChangeJournal, AssignmentAndMovingFromFallBack) {
-  expect_fall_back([](HalfedgeMesh& m) { m = build_halfedge_mesh(make_cube()); });
-  expect_fall_back([](HalfedgeMesh& m) {
-    HalfedgeMesh cube = build_halfedge_mesh(make_cube());
-    m = cube;
-  });
-  expect_fall_back([](HalfedgeMesh& m) { HalfedgeMesh taken = std::move(m); });
-  expect_fall_back([](HalfedgeMesh& m) {
-    HalfedgeMesh other = build_halfedge_mesh(make_cube());
-    std::swap(m, other);
-  });
+TEST(ChangeJournal, BulkWritesFallBackToASnapshot) {
+  for (const testing::FallBackWrite& w : testing::fall_back_writes()) {
+    SCOPED_TRACE(w.name);
+    expect_fall_back(w.write);
+  }
 }
 
 TEST(ChangeJournal, ANestedJournalMakesTheOuterOneFallBack) {

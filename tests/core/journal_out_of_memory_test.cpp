@@ -15,6 +15,7 @@
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
 #include "support/failing_snapshots.h"
+#include "support/fall_back_writes.h"
 #include "support/random_edits.h"
 
 namespace meshedit {
@@ -53,28 +54,12 @@ void expect_lost_fall_back(Write&& write, std::optional<size_t> cap = std::nullo
   EXPECT_EQ(mesh.version(), version);
 }
 
-TEST(JournalOutOfMemory, DirectArrayAccessGivesUpTheStateBefore) {
-  expect_lost_fall_back([](HalfedgeMesh& m) { MeshStorage::view(m).position[0] = glm::dvec3(9); });
-  expect_lost_fall_back([](HalfedgeMesh& m) { MeshStorage::arrays(m).h_alive.set(2, false); });
-}
-
-TEST(JournalOutOfMemory, AssignmentMovesAndSwapsGiveUpTheStateBefore) {
-  expect_lost_fall_back([](HalfedgeMesh& m) { m = build_halfedge_mesh(make_cube()); });
-  expect_lost_fall_back([](HalfedgeMesh& m) {
-    const HalfedgeMesh cube = build_halfedge_mesh(make_cube());
-    m = cube;
-  });
-  // The mesh's move constructor is noexcept: a fall-back that threw from it would end the program.
-  expect_lost_fall_back([](HalfedgeMesh& m) { HalfedgeMesh taken = std::move(m); });
-  expect_lost_fall_back([](HalfedgeMesh& m) {
-    HalfedgeMesh taken = std::move(m);
-    taken.set_position(VertexId(2), {1, 2, 3});
-    m = std::move(taken);
-  });
-  expect_lost_fall_back([](HalfedgeMesh& m) {
-    HalfedgeMesh other = build_halfedge_mesh(make_cube());
-    std::swap(m, other);
-  });
+TEST(JournalOutOfMemory, BulkWritesGiveUpTheStateBefore) {
+  // Among them the mesh's noexcept move: a fall-back that threw from it would end the program.
+  for (const testing::FallBackWrite& w : testing::fall_back_writes()) {
+    SCOPED_TRACE(w.name);
+    expect_lost_fall_back(w.write);
+  }
 }
 
 TEST(JournalOutOfMemory, ANestedJournalGivesUpTheOuterOnesStateBefore) {

@@ -56,16 +56,7 @@ struct Mirror {
 void expect_equal(const Mirror& m, const HalfedgeMesh& mesh, const std::string& step) {
   SCOPED_TRACE(step);
   const SlotGeometry full = build_slot_geometry(mesh);
-  EXPECT_TRUE(same_bytes(m.g.positions, full.positions));
-  EXPECT_TRUE(same_bytes(m.g.smooth_normals, full.smooth_normals));
-  EXPECT_TRUE(same_bytes(m.g.points, full.points));
-  EXPECT_TRUE(same_bytes(m.g.triangles, full.triangles));
-  EXPECT_TRUE(same_bytes(m.g.face_normals, full.face_normals));
-  EXPECT_TRUE(same_bytes(m.g.extra_triangles, full.extra_triangles));
-  EXPECT_TRUE(same_bytes(m.g.extra_faces, full.extra_faces));
-  EXPECT_TRUE(same_bytes(m.g.edges, full.edges));
-  EXPECT_EQ(m.g.boundary_edges, full.boundary_edges);
-  EXPECT_TRUE(m.g.counts == full.counts);
+  testing::expect_same_slots(m.g, full);
   EXPECT_TRUE(same_bytes(m.arrows, build_slot_arrows(mesh)));
   EXPECT_TRUE(m.state.references == MeshReferences::count(mesh));
   EXPECT_EQ(m.state.boundary_edges, full.boundary_edges);

@@ -37,16 +37,7 @@ void expect_buffers_equal_full_build(const MeshRenderer& renderer, const Halfedg
   std::vector<EdgeSegment> gpu_arrows;
   renderer.read_gpu_buffers(gpu, gpu_arrows);
   const SlotGeometry full = build_slot_geometry(mesh);
-  EXPECT_TRUE(same_bytes(gpu.positions, full.positions));
-  EXPECT_TRUE(same_bytes(gpu.smooth_normals, full.smooth_normals));
-  EXPECT_TRUE(same_bytes(gpu.points, full.points));
-  EXPECT_TRUE(same_bytes(gpu.triangles, full.triangles));
-  EXPECT_TRUE(same_bytes(gpu.face_normals, full.face_normals));
-  EXPECT_TRUE(same_bytes(gpu.extra_triangles, full.extra_triangles));
-  EXPECT_TRUE(same_bytes(gpu.extra_faces, full.extra_faces));
-  EXPECT_TRUE(same_bytes(gpu.edges, full.edges));
-  EXPECT_EQ(gpu.boundary_edges, full.boundary_edges);
-  EXPECT_TRUE(gpu.counts == full.counts);
+  testing::expect_same_slots(gpu, full);
   if (arrows) {
     EXPECT_TRUE(same_bytes(gpu_arrows, build_slot_arrows(mesh)));
   }

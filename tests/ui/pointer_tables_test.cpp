@@ -73,6 +73,17 @@ struct TablesFixture {
   }
   int frame() { return imgui.frame([&] { draw(); }); }
   void click(const UiProbe::Item& item) { imgui.click(item.center(), [&] { draw(); }); }
+  // Draws the document's last change (two frames, the tab request dropped), then clicks the Changes tab open.
+  void open_changes_tab() {
+    frame();
+    frame();
+    state.open_tab_requested = false;
+    const UiProbe::Item* tab = probe.find("tab:changes");
+    ASSERT_NE(tab, nullptr);
+    click(*tab);
+    frame();
+    EXPECT_EQ(state.active, TableTab::Changes);
+  }
   std::vector<const UiProbe::Item*> rows() const {
     std::vector<const UiProbe::Item*> out;
     for (const UiProbe::Item& item : probe.items)
@@ -149,15 +160,7 @@ TEST(PointerTables, ChangesViewListsTheDiffWithLinks) {
   TablesFixture t(grid_1x1());
   t.sel.selected = E(2);
   ASSERT_TRUE(flip_selected(t.doc, t.sel).ok);
-  t.frame();
-  t.frame();
-  t.state.open_tab_requested = false;
-  // Open the Changes tab by clicking it.
-  const UiProbe::Item* tab = t.probe.find("tab:changes");
-  ASSERT_NE(tab, nullptr);
-  t.click(*tab);
-  t.frame();
-  EXPECT_EQ(t.state.active, TableTab::Changes);
+  ASSERT_NO_FATAL_FAILURE(t.open_changes_tab());
   size_t elements = 0;
   for (const UiProbe::Item& item : t.probe.items) elements += item.name == "change-element";
   EXPECT_EQ(elements, 11u);
@@ -178,14 +181,7 @@ TEST(PointerTables, ChangesViewSaysWhenAChangeWasNotRecorded) {
                 }).ok);
   }
   ASSERT_FALSE(t.doc.last.recorded);
-  t.frame();
-  t.frame();
-  t.state.open_tab_requested = false;
-  const UiProbe::Item* tab = t.probe.find("tab:changes");
-  ASSERT_NE(tab, nullptr);
-  t.click(*tab);
-  t.frame();
-  EXPECT_EQ(t.state.active, TableTab::Changes);
+  ASSERT_NO_FATAL_FAILURE(t.open_changes_tab());
   EXPECT_NE(t.probe.find("changes-not-recorded"), nullptr);
   EXPECT_EQ(t.probe.find("change-element"), nullptr);
 }
