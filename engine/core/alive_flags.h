@@ -34,10 +34,6 @@ class AliveFlags {
   }
 
   size_t size() const { return size_; }
-  bool empty() const { return size_ == 0; }
-  // True when no slot has ever died since the bits were last dropped: every slot is alive, and a whole-mesh pass
-  // can skip the per-slot test.
-  bool none_dead() const { return dead_.empty(); }
 
   // Precondition: i < size().
   bool operator[](size_t i) const { return dead_.empty() || ((dead_[i >> 6] >> (i & 63)) & 1) == 0; }
