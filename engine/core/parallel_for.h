@@ -1,13 +1,20 @@
-// parallel_for: runs a function over [0, n) split into contiguous chunks, one std::thread per chunk beyond the
-// first (which runs on the caller). With threads <= 1 or a small n it is a plain call.
+// parallel_chunks / parallel_for: run a function over [0, n) on up to `threads` threads, one std::thread per chunk
+// beyond the first (which runs on the caller). With threads <= 1 or a small n it is a plain call.
 //
-// Invariant: every index in [0, n) is in exactly one chunk; chunk c covers [chunk_begin(c), chunk_begin(c + 1)),
-// chunks are in index order, and the call returns only after every chunk has finished, so a pass that writes
-// disjoint elements per index needs no other synchronisation. chunk_count() tells how many chunks a call with the
-// same (threads, n) makes, for passes that keep one partial result per chunk (prefix sums).
+// Invariants: every index in [0, n) is handed out exactly once, and the call returns only after all of them are
+// done, so a pass that writes disjoint elements per index needs no other synchronisation.
+// - parallel_chunks: chunk c covers [chunk_begin(c), chunk_begin(c + 1)) and is run by one thread; chunk_count()
+//   tells how many chunks a call with the same (threads, n) makes, for passes that keep one partial result per
+//   chunk (prefix sums, per-thread sums). The split depends on (threads, n) only, so such results are
+//   deterministic.
+// - parallel_for: the range is cut into kBlocksPerThread blocks per thread, in index order, and each thread takes
+//   the next block not yet taken. On a mesh the cost per index is uneven (old elements' neighbours lie further
+//   apart than new ones'), and fixed halves left one thread waiting for the other for up to a third of a pass. Which
+//   thread runs a block varies from run to run, so the function must compute each index independently.
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstddef>
 #include <thread>
 #include <vector>
@@ -40,10 +47,24 @@ void parallel_chunks(int threads, size_t n, Fn&& fn) {
   for (std::thread& w : workers) w.join();
 }
 
-// fn(begin, end) for each chunk.
+inline constexpr size_t kBlocksPerThread = 8;
+
+// fn(begin, end) for blocks covering [0, n), taken by the threads in turn.
 template <class Fn>
 void parallel_for(int threads, size_t n, Fn&& fn) {
-  parallel_chunks(threads, n, [&fn](size_t, size_t begin, size_t end) { fn(begin, end); });
+  const size_t chunks = chunk_count(threads, n);
+  if (chunks <= 1) {
+    fn(size_t(0), n);
+    return;
+  }
+  const size_t blocks = std::min(chunks * kBlocksPerThread, std::max<size_t>(chunks, n / kMinItemsPerThread));
+  std::atomic<size_t> next_block{0};
+  parallel_chunks(threads, n, [&](size_t, size_t, size_t) {
+    for (size_t b = next_block.fetch_add(1, std::memory_order_relaxed); b < blocks;
+         b = next_block.fetch_add(1, std::memory_order_relaxed)) {
+      fn(chunk_begin(b, blocks, n), chunk_begin(b + 1, blocks, n));
+    }
+  });
 }
 
 }  // namespace meshedit
