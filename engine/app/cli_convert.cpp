@@ -6,6 +6,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
+#include "core/parallel_for.h"
 
 namespace meshedit {
 namespace {
@@ -58,7 +59,7 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   out << args[0] << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
   for (int level = 1; level <= levels; ++level) {
     const auto start = std::chrono::steady_clock::now();
-    const Check done = loop_subdivide(mesh, weights);
+    const Check done = loop_subdivide(mesh, weights, 1, hardware_threads());
     if (!done) throw MeshError(args[0] + ": cannot subdivide: " + done.reason);
     out << "level " << level << ": " << mesh.num_vertices() << " vertices, " << mesh.num_edges() << " edges, "
         << mesh.num_faces() << " faces (" << milliseconds_since(start) << " ms, " << weights_name << " weights)\n";

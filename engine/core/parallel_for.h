@@ -24,6 +24,13 @@ namespace meshedit {
 // Below this many items per chunk a pass is not split: starting a thread costs more than the work.
 inline constexpr size_t kMinItemsPerThread = 16384;
 
+// The threads a whole-mesh pass started by the user (L in the window, `meshedit subdivide`) runs on: the machine's
+// cores, at least 1.
+inline int hardware_threads() {
+  const unsigned cores = std::thread::hardware_concurrency();
+  return cores == 0 ? 1 : int(std::min(cores, 64u));
+}
+
 inline size_t chunk_count(int threads, size_t n) {
   return std::clamp<size_t>(threads < 1 ? 1 : size_t(threads), 1, std::max<size_t>(1, n / kMinItemsPerThread));
 }

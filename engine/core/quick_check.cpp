@@ -100,7 +100,11 @@ bool clean(const HalfedgeMesh& m, bool loop_input) {
 
 }  // namespace
 
-bool mesh_is_clean(const HalfedgeMesh& mesh) { return clean(mesh, false); }
+bool mesh_is_clean(const HalfedgeMesh& mesh) {
+  // Vouched valid (just built or subdivided): validate() would find nothing, so nothing to walk (0.75 s at 2.5M faces
+  // after L in the window, where the status bar validates every new state).
+  return mesh.proven_valid_triangles() || clean(mesh, false);
+}
 bool loop_input_is_clean(const HalfedgeMesh& mesh) {
   // A mesh vouched valid with triangle faces (just built or subdivided) needs only the split condition.
   if (mesh.proven_valid_triangles()) return splits_cleanly(mesh);

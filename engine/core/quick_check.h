@@ -2,7 +2,8 @@
 // no report to build. False says nothing: the caller then runs the full check (validate(), can_loop_subdivide's
 // own), which finds and words the problem. validate() and can_loop_subdivide() start with these, so a valid mesh
 // (the common case: every frame's status bar, every subdivision) costs a fraction of a full validation. A mesh
-// vouched for (HalfedgeMesh::proven_valid_triangles) skips the validity part of loop_input_is_clean.
+// vouched for (HalfedgeMesh::proven_valid_triangles) is clean without a pass, and skips the validity part of
+// loop_input_is_clean.
 //
 // Invariant (held by tests/core/quick_check_test.cpp on fixtures and randomly broken meshes):
 //   mesh_is_clean(m)  implies  validate(m).ok();

@@ -2,6 +2,7 @@
 #include "ui/document_actions.h"
 
 #include "core/mesh_ops.h"
+#include "core/parallel_for.h"
 
 namespace meshedit {
 namespace {
@@ -108,7 +109,7 @@ Check collapse_selected(MeshDocument& doc, Selection& selection) {
 
 Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights weights) {
   const Check check =
-      apply_operation(doc, "Loop subdivision", [&](HalfedgeMesh& mesh) { return loop_subdivide(mesh, weights); });
+      apply_operation(doc, "Loop subdivision", [&](HalfedgeMesh& mesh) { return loop_subdivide(mesh, weights, 1, hardware_threads()); });
   keep_if_alive(selection, doc.mesh);
   if (check) doc.loop = LoopStepper{};
   return check;
