@@ -7,10 +7,11 @@
 // refused, the mapping is ordinary memory and nothing else changes. MESHEDIT_NO_HUGEPAGES=1 in the environment
 // skips the madvise, to measure what huge pages buy (peer_bench, 100k x 3 Loop: about 1.7x cold here).
 //
-// Invariants: construct() value-initialises like std::allocator unless a MeshStorage::grow caller asked otherwise
-// for its own thread; allocate(n) and deallocate(p, n) take the same branch for the same n (the size alone decides), so a
-// block is always returned to the allocator that made it; the allocator is stateless, so any two compare equal
-// and containers may swap or move storage freely. An mmap failure throws std::bad_alloc like operator new.
+// Invariants: construct() value-initialises like std::allocator unless MeshStorage::grow or resize_for_overwrite
+// (halfedge_mesh.h) asked otherwise for its own thread; allocate(n) and deallocate(p, n) take the same branch for
+// the same n (the size alone decides), so a block is always returned to the allocator that made it; the allocator
+// is stateless, so any two compare equal and containers may swap or move storage freely. An mmap failure throws
+// std::bad_alloc like operator new.
 #pragma once
 
 #include <cstddef>
@@ -29,9 +30,9 @@ namespace big_array_detail {
 inline constexpr size_t kHugePage = size_t(2) << 20;
 inline constexpr size_t kThreshold = size_t(4) << 20;
 
-// Set (on one thread, for the duration of a resize) by MeshStorage::grow, whose caller writes every field of the
-// new elements itself: default construction of trivially copyable elements is then skipped, saving a pass over
-// hundreds of megabytes.
+// Set (on one thread, for the duration of a resize) by MeshStorage::grow and resize_for_overwrite, whose callers
+// write every field of the new elements themselves: default construction of trivially copyable elements is then
+// skipped, saving a pass over hundreds of megabytes.
 inline thread_local bool skip_default_init = false;
 
 // Sets skip_default_init for its lifetime, on this thread (also when a resize throws).

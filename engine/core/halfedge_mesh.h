@@ -41,6 +41,15 @@ namespace meshedit {
 template <class T>
 using MeshArray = std::vector<T, BigArrayAllocator<T>>;
 
+// Resizes `a` to `n` leaving the new elements' bytes unset (trivially copyable T; whatever the memory held): for a
+// caller that writes every one of them before reading any, so fresh pages are first touched by that pass (on its
+// threads) and not by a value-initialising loop before it.
+template <class T>
+void resize_for_overwrite(MeshArray<T>& a, size_t n) {
+  const big_array_detail::SkipDefaultInit skip;
+  a.resize(n);
+}
+
 // Iterates the live ids of one kind; the end is fixed when the range is made, so elements appended
 // during the loop are not visited (the "only split the original edges" rule of Loop subdivision).
 template <class IdT>

@@ -56,7 +56,7 @@ struct Level {
 
 // Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded).
 void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_edges) {
-  MeshStorage::resize_for_overwrite(L.plan, L.e0);  // every entry is written below, dead edges' too
+  resize_for_overwrite(L.plan, L.e0);  // every entry is written below, dead edges' too
   const size_t chunks = chunk_count(threads, L.e0);
   std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
@@ -372,7 +372,7 @@ bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   L.m = MeshStorage::view(mesh);
 
   MeshArray<glm::dvec3>& points = scratch.points;
-  MeshStorage::resize_for_overwrite(points, L.v0);  // written for live vertices, read only for them
+  resize_for_overwrite(points, L.v0);  // written for live vertices, read only for them
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
   pass_triangles(L, threads);

@@ -57,14 +57,6 @@ struct MeshStorage {
     m.touch();
   }
 
-  // Resizes `a` to `n` leaving the new elements' bytes unset (whatever the memory held): for a caller that
-  // writes every one of them before reading any.
-  template <class T>
-  static void resize_for_overwrite(MeshArray<T>& a, size_t n) {
-    const big_array_detail::SkipDefaultInit skip;
-    a.resize(n);
-  }
-
   // Makes room for this many elements of each kind in all, so later grow() calls up to it do not copy.
   static void reserve_total(HalfedgeMesh& m, size_t vertices, size_t halfedges, size_t edges, size_t faces) {
     m.reserve(vertices - std::min<size_t>(vertices, m.vertex_capacity()),

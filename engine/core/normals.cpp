@@ -212,7 +212,7 @@ void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& norma
   parallel_chunks(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
     glm::dvec3* sums = normals.data();
     if (chunk > 0) {
-      MeshStorage::resize_for_overwrite(extra[chunk - 1], vertices);
+      resize_for_overwrite(extra[chunk - 1], vertices);
       sums = extra[chunk - 1].data();
     }
     std::fill(sums, sums + vertices, glm::dvec3(0.0));

@@ -25,6 +25,7 @@
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/finite.h"
+#include "core/parallel_for.h"
 #include "render/gl_objects.h"
 #include "render/gpu_batches.h"
 #include "render/gpu_mesh.h"
@@ -232,7 +233,7 @@ struct MeshRenderer::Impl {
 
 void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) {
   const size_t sent = gl::uploaded_bytes();
-  SlotGeometry g = build_slot_geometry(source);
+  SlotGeometry g = build_slot_geometry(source, hardware_threads());
   // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot.
   const size_t largest = gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
                                                      size_t(source.halfedge_capacity()), 2 * g.edges.size(),

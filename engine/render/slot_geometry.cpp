@@ -10,6 +10,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
+#include "core/parallel_for.h"
 
 namespace meshedit {
 namespace {
@@ -82,56 +83,160 @@ glm::vec3 smooth_normal(uint32_t vertex, std::vector<CornerFace>& faces) {
   return glm::vec3(unit_or_zero(sum));
 }
 
-SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh) {
-  SlotGeometry g;
-  const uint32_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity(), edges = mesh.edge_capacity();
-  g.positions.assign(vertices, glm::vec3(0.0f));
-  g.points.assign(vertices, kHiddenPoint);
-  for (VertexId v : mesh.vertices()) {
-    g.points[v.index] = slot_point(mesh, v);
-    if (g.points[v.index].vertex == kInvalidIndex) continue;
-    g.positions[v.index] = g.points[v.index].position;
-    g.bounds.add(mesh.position(v));
-    ++g.counts.vertices;
-  }
+namespace {
 
-  MeshArray<glm::dvec3> sums(vertices, glm::dvec3(0.0));
-  g.triangles.assign(size_t(faces) * 3, 0u);
-  g.face_normals.assign(faces, glm::vec4(0.0f));
+// One chunk's share of the counts, the bounds and the lists kept in id order, merged in chunk order.
+struct ChunkResult {
+  SlotCounts counts;
+  BoundingBox bounds;
+  std::vector<uint32_t> extra_triangles, extra_faces, boundary_edges;
+};
+
+// Vertex slots: point, position, bounds.
+void build_vertex_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, std::vector<ChunkResult>& chunks) {
+  const uint32_t vertices = mesh.vertex_capacity();
+  resize_for_overwrite(g.points, vertices);
+  resize_for_overwrite(g.positions, vertices);
+  chunks.assign(chunk_count(threads, vertices), ChunkResult{});
+  parallel_chunks(threads, vertices, [&](size_t chunk, size_t begin, size_t end) {
+    ChunkResult& out = chunks[chunk];
+    for (size_t i = begin; i < end; ++i) {
+      const VertexId v(static_cast<uint32_t>(i));
+      const VertexPoint point = slot_point(mesh, v);
+      g.points[i] = point;
+      g.positions[i] = point.vertex == kInvalidIndex ? glm::vec3(0.0f) : point.position;
+      if (point.vertex == kInvalidIndex) continue;
+      out.bounds.add(mesh.position(v));
+      ++out.counts.vertices;
+    }
+  });
+}
+
+// Face slots: the first fan triangle and the flat normal (zero where not drawn), each drawn face's term and the
+// later fan triangles of polygons. A walk marks only halfedges whose face is the walked face (walk_face_cycle
+// stops at any other), so walks of different faces share no byte of `visited` and run on any thread.
+void build_face_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, MeshArray<glm::dvec3>& terms,
+                      MeshArray<uint8_t>& drawn, std::vector<ChunkResult>& chunks) {
+  const uint32_t faces = mesh.face_capacity();
+  resize_for_overwrite(g.triangles, size_t(faces) * 3);
+  resize_for_overwrite(g.face_normals, faces);
+  resize_for_overwrite(terms, faces);
+  resize_for_overwrite(drawn, faces);
   std::vector<uint8_t> visited(mesh.halfedge_capacity(), 0);
-  std::vector<HalfedgeId> cycle;
-  FaceDraw d;
-  for (FaceId f : mesh.faces()) {
-    draw_face(mesh, f, d, cycle, &visited);
-    if (!d.drawn()) {
-      ++g.counts.skipped_faces;
-      continue;
+  chunks.assign(chunk_count(threads, faces), ChunkResult{});
+  parallel_chunks(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
+    ChunkResult& out = chunks[chunk];
+    std::vector<HalfedgeId> cycle;
+    FaceDraw d;
+    for (size_t slot = begin; slot < end; ++slot) {
+      const FaceId f = FaceId::face(static_cast<uint32_t>(slot));
+      if (mesh.alive(f)) draw_face(mesh, f, d, cycle, &visited);
+      drawn[slot] = mesh.alive(f) && d.drawn();
+      if (!drawn[slot]) {
+        out.counts.skipped_faces += mesh.alive(f) ? 1 : 0;
+        g.triangles[3 * slot] = g.triangles[3 * slot + 1] = g.triangles[3 * slot + 2] = 0;
+        g.face_normals[slot] = glm::vec4(0.0f);
+        continue;
+      }
+      g.triangles[3 * slot] = d.corners[0];
+      g.triangles[3 * slot + 1] = d.corners[1];
+      g.triangles[3 * slot + 2] = d.corners[2];
+      for (size_t i = 2; i + 1 < d.corners.size(); ++i) {
+        out.extra_triangles.insert(out.extra_triangles.end(), {d.corners[0], d.corners[i], d.corners[i + 1]});
+        out.extra_faces.push_back(uint32_t(slot));
+      }
+      out.counts.triangles += d.triangle_count();
+      g.face_normals[slot] = flat_normal(d.term);
+      terms[slot] = d.term;
     }
-    const size_t slot = f.slot();
-    g.triangles[3 * slot] = d.corners[0];
-    g.triangles[3 * slot + 1] = d.corners[1];
-    g.triangles[3 * slot + 2] = d.corners[2];
-    for (size_t i = 2; i + 1 < d.corners.size(); ++i) {
-      g.extra_triangles.insert(g.extra_triangles.end(), {d.corners[0], d.corners[i], d.corners[i + 1]});
-      g.extra_faces.push_back(uint32_t(slot));
-    }
-    g.counts.triangles += d.triangle_count();
-    g.face_normals[slot] = flat_normal(d.term);
-    for (uint32_t c : d.corners) sums[c] += d.term;
-  }
-  g.smooth_normals.resize(vertices);
-  for (uint32_t v = 0; v < vertices; ++v) g.smooth_normals[v] = glm::vec3(unit_or_zero(sums[v]));
+  });
+}
 
-  g.edges.assign(edges, kHiddenSegment);
-  for (EdgeId e : mesh.edges()) {
-    g.edges[e.index] = slot_edge(mesh, e);
-    if (hidden(g.edges[e.index])) {
-      ++g.counts.skipped_edges;
-      continue;
+// Smooth normals: each vertex's sum takes the terms of the drawn faces it is a corner of in face id order, once
+// per corner (a drawn face's corners are its first triangle, then the last corner of each later fan triangle).
+// Each chunk owns a range of vertices and reads every face in order, adding only to its own vertices, so every sum
+// is made in the same order on any number of threads.
+void build_smooth_normals(const HalfedgeMesh& mesh, int threads, const MeshArray<glm::dvec3>& terms,
+                          const MeshArray<uint8_t>& drawn, SlotGeometry& g) {
+  const uint32_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity();
+  resize_for_overwrite(g.smooth_normals, vertices);
+  MeshArray<glm::dvec3> sums;
+  resize_for_overwrite(sums, vertices);
+  parallel_chunks(threads, vertices, [&](size_t, size_t begin, size_t end) {
+    std::fill(sums.begin() + begin, sums.begin() + end, glm::dvec3(0.0));
+    const auto add = [&](uint32_t corner, const glm::dvec3& term) {
+      if (corner >= begin && corner < end) sums[corner] += term;
+    };
+    size_t extra = 0;
+    for (uint32_t f = 0; f < faces; ++f) {
+      if (!drawn[f]) continue;
+      const glm::dvec3& term = terms[f];
+      add(g.triangles[3 * f], term);
+      add(g.triangles[3 * f + 1], term);
+      add(g.triangles[3 * f + 2], term);
+      for (; extra < g.extra_faces.size() && g.extra_faces[extra] == f; ++extra) {
+        add(g.extra_triangles[3 * extra + 2], term);
+      }
     }
-    ++g.counts.edges;
-    if (g.edges[e.index].flags & kEdgeBoundaryFlag) g.boundary_edges.push_back(e.index);
+    for (size_t v = begin; v < end; ++v) g.smooth_normals[v] = glm::vec3(unit_or_zero(sums[v]));
+  });
+}
+
+// Edge slots: the segment, or a hidden one.
+void build_edge_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, std::vector<ChunkResult>& chunks) {
+  const uint32_t edges = mesh.edge_capacity();
+  resize_for_overwrite(g.edges, edges);
+  chunks.assign(chunk_count(threads, edges), ChunkResult{});
+  parallel_chunks(threads, edges, [&](size_t chunk, size_t begin, size_t end) {
+    ChunkResult& out = chunks[chunk];
+    for (size_t i = begin; i < end; ++i) {
+      const EdgeId e(static_cast<uint32_t>(i));
+      g.edges[i] = slot_edge(mesh, e);
+      if (hidden(g.edges[i])) {
+        out.counts.skipped_edges += mesh.alive(e) ? 1 : 0;
+        continue;
+      }
+      ++out.counts.edges;
+      if (g.edges[i].flags & kEdgeBoundaryFlag) out.boundary_edges.push_back(uint32_t(i));
+    }
+  });
+}
+
+void append(std::vector<uint32_t>& to, const std::vector<uint32_t>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+void merge(SlotGeometry& g, const std::vector<ChunkResult>& chunks) {
+  for (const ChunkResult& c : chunks) {
+    g.counts.triangles += c.counts.triangles;
+    g.counts.skipped_faces += c.counts.skipped_faces;
+    g.counts.edges += c.counts.edges;
+    g.counts.skipped_edges += c.counts.skipped_edges;
+    g.counts.vertices += c.counts.vertices;
+    if (!c.bounds.empty()) {
+      g.bounds.add(c.bounds.min);
+      g.bounds.add(c.bounds.max);
+    }
+    append(g.extra_triangles, c.extra_triangles);
+    append(g.extra_faces, c.extra_faces);
+    append(g.boundary_edges, c.boundary_edges);
   }
+}
+
+}  // namespace
+
+SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh, int threads) {
+  SlotGeometry g;
+  std::vector<ChunkResult> chunks;
+  build_vertex_slots(mesh, threads, g, chunks);
+  merge(g, chunks);
+  MeshArray<glm::dvec3> terms;
+  MeshArray<uint8_t> drawn;
+  build_face_slots(mesh, threads, g, terms, drawn, chunks);
+  merge(g, chunks);
+  build_smooth_normals(mesh, threads, terms, drawn, g);
+  build_edge_slots(mesh, threads, g, chunks);
+  merge(g, chunks);
   return g;
 }
 

@@ -75,7 +75,9 @@ struct SlotGeometry {
   BoundingBox bounds;                     // of the drawn points
 };
 
-SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh);
+// The whole build, on up to `threads` threads (parallel_for.h); the result does not depend on the thread count,
+// byte for byte.
+SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh, int threads = 1);
 
 // One slot's value, as build_slot_geometry computes it.
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v);
