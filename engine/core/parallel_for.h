@@ -11,11 +11,15 @@
 //   the next block not yet taken. On a mesh the cost per index is uneven (old elements' neighbours lie further
 //   apart than new ones'), and fixed halves left one thread waiting for the other for up to a third of a pass. Which
 //   thread runs a block varies from run to run, so the function must compute each index independently.
+// - Nothing here ends the program: a chunk whose thread cannot start (out of memory, out of threads) runs on the
+//   caller, and an exception thrown by any chunk reaches the caller after every chunk has finished (the first one,
+//   by chunk order, when several throw).
 #pragma once
 
 #include <algorithm>
 #include <atomic>
 #include <cstddef>
+#include <exception>
 #include <thread>
 #include <vector>
 
@@ -45,13 +49,31 @@ void parallel_chunks(int threads, size_t n, Fn&& fn) {
     fn(size_t(0), size_t(0), n);
     return;
   }
+  // Both allocated before any thread starts: if either fails, nothing has run yet.
+  std::vector<std::exception_ptr> errors(chunks);
   std::vector<std::thread> workers;
   workers.reserve(chunks - 1);
-  for (size_t c = 1; c < chunks; ++c) {
-    workers.emplace_back([&fn, c, n, chunks] { fn(c, chunk_begin(c, chunks, n), chunk_begin(c + 1, chunks, n)); });
+  auto run = [&fn, &errors, chunks, n](size_t c) noexcept {
+    try {
+      fn(c, chunk_begin(c, chunks, n), chunk_begin(c + 1, chunks, n));
+    } catch (...) {
+      errors[c] = std::current_exception();
+    }
+  };
+  size_t started = 1;
+  for (; started < chunks; ++started) {
+    try {
+      workers.emplace_back(run, started);
+    } catch (...) {
+      break;  // this chunk and the ones after it run here, below
+    }
   }
-  fn(size_t(0), size_t(0), chunk_begin(1, chunks, n));
+  run(0);
+  for (size_t c = started; c < chunks; ++c) run(c);
   for (std::thread& w : workers) w.join();
+  for (const std::exception_ptr& error : errors) {
+    if (error) std::rethrow_exception(error);
+  }
 }
 
 inline constexpr size_t kBlocksPerThread = 8;
