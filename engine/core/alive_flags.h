@@ -7,9 +7,11 @@
 //
 // Invariants: size() is the slot count of the kind, whether or not bits exist; when bits exist they cover size()
 // slots and every bit at or past size() is zero; "no bits" means "every slot alive". Equality is by value (a mesh
-// whose dead slots came back to life equals one that never had bits). Not safe to write from two threads at once.
+// whose dead slots came back to life equals one that never had bits). Out of memory, resize() and set() throw
+// std::bad_alloc with the flags as they were. Not safe to write from two threads at once.
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <cstdint>
 #include <utility>
@@ -65,8 +67,8 @@ class AliveFlags {
       return;
     }
     materialise();
+    dead_.resize(words(n), 0);  // before size_: out of memory here leaves the flags as they were
     size_ = n;
-    dead_.resize(words(n), 0);
     if (!alive)
       for (size_t i = old; i < n; ++i) dead_[i >> 6] |= bit(i);
   }
@@ -80,6 +82,12 @@ class AliveFlags {
   // Makes room for this many slots of dead bits, when bits exist (none are needed otherwise).
   void reserve(size_t n) {
     if (!dead_.empty()) dead_.reserve(words(n));
+  }
+  // Makes room for dead bits of up to n slots, creating the bits if there are none yet (the value stays: all alive):
+  // afterwards resize() and set() up to n slots allocate nothing. Out of memory, throws with the value unchanged.
+  void reserve_bits(size_t n) {
+    materialise();
+    dead_.reserve(words(std::max(n, size_)));
   }
 
   // Bytes held (capacity of the bits).

@@ -8,6 +8,8 @@
 //   fewer than kMinDepth; after undo/redo the mesh's version is above
 //   every version it had before, so caches keyed by version refresh. A patch entry ends with the version a snapshot
 //   entry would give: max(the restored state's recorded version, the version before the step) + 1.
+// - undo() and redo() make room in the list the entry moves to before they step, and a step fails (out of memory)
+//   only in MeshPatch::apply, before it writes; so a failed undo or redo leaves mesh and lists as they were.
 #include "core/history.h"
 
 #include <algorithm>
@@ -74,7 +76,16 @@ const MeshPatch* History::redo_patch() const {
   return redo_.empty() || !redo_.back().patch ? nullptr : &*redo_.back().patch;
 }
 
+const HalfedgeMesh* History::undo_snapshot() const {
+  return undo_.empty() || !undo_.back().mesh ? nullptr : &*undo_.back().mesh;
+}
+
+const HalfedgeMesh* History::redo_snapshot() const {
+  return redo_.empty() || !redo_.back().mesh ? nullptr : &*redo_.back().mesh;
+}
+
 void History::step(Entry& entry, HalfedgeMesh& mesh, bool forward) {
+  // Only apply() may fail (out of memory), and it fails before it changes anything: the entry is updated after it.
   const uint64_t seen = mesh.version();
   if (entry.mesh) {
     std::swap(*entry.mesh, mesh);  // the entry now holds the state left, with its version
@@ -88,19 +99,25 @@ void History::step(Entry& entry, HalfedgeMesh& mesh, bool forward) {
 
 bool History::undo(HalfedgeMesh& mesh) {
   if (undo_.empty()) return false;
-  Entry entry = std::move(undo_.back());
+  // Room in the redo list first: after the step, nothing may fail.
+  if (redo_.size() == redo_.capacity()) redo_.reserve(std::max<size_t>(8, 2 * redo_.capacity()));
+  step(undo_.back(), mesh, false);
+  redo_.push_back(std::move(undo_.back()));
   undo_.pop_back();
-  step(entry, mesh, false);
-  redo_.push_back(std::move(entry));
   return true;
 }
 
 bool History::redo(HalfedgeMesh& mesh) {
   if (redo_.empty()) return false;
-  Entry entry = std::move(redo_.back());
+  undo_.emplace_back();  // room first (a deque cannot reserve): after the step, nothing may fail
+  try {
+    step(redo_.back(), mesh, true);
+  } catch (...) {
+    undo_.pop_back();
+    throw;
+  }
+  undo_.back() = std::move(redo_.back());
   redo_.pop_back();
-  step(entry, mesh, true);
-  undo_.push_back(std::move(entry));
   trim();
   return true;
 }
@@ -123,6 +140,12 @@ void History::trim() {
 void History::clear() {
   undo_.clear();
   redo_.clear();
+}
+
+void History::reset(size_t max_depth, size_t max_bytes) {
+  clear();
+  max_depth_ = max_depth;
+  max_bytes_ = max_bytes;
 }
 
 }  // namespace meshedit

@@ -54,16 +54,23 @@ class History {
 
   // Replaces `mesh` by the state before the last recorded operation; the replaced state goes to redo.
   // Returns false (and changes nothing) when there is nothing to undo. Afterwards mesh.version() is larger
-  // than it was before the call and than the restored snapshot's own version.
+  // than it was before the call and than the restored snapshot's own version. All or nothing: out of memory, it
+  // throws std::bad_alloc with the mesh and both lists as they were.
   bool undo(HalfedgeMesh& mesh);
   // The reverse of undo (same rules); record() empties the redo list.
   bool redo(HalfedgeMesh& mesh);
+  // Empties both lists (allocates nothing); reset() also sets the limits, as the constructor does.
   void clear();
+  void reset(size_t max_depth, size_t max_bytes);
 
   // The patch of the entry undo() (redo()) would apply next, or null when that entry is a snapshot or there is
   // none. Its direction is the original edit's: undo applies it backward, redo forward.
   const MeshPatch* undo_patch() const;
   const MeshPatch* redo_patch() const;
+  // The snapshot of the entry undo() (redo()) would apply next, which is the state it restores, or null when that
+  // entry is a patch or there is none.
+  const HalfedgeMesh* undo_snapshot() const;
+  const HalfedgeMesh* redo_snapshot() const;
 
  private:
   struct Entry {

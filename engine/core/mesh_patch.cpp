@@ -34,6 +34,7 @@ MeshPatch MeshPatch::reversed() const {
 
 void MeshPatch::apply(HalfedgeMesh& mesh, bool forward) const {
   const MeshShape& target = forward ? shape_after : shape_before;
+  reserve_shape(mesh, target);  // the only step that allocates, and it changes no value
   set_shape(mesh, target);
   for (const SlotChange& s : slots) {
     if (exists(target, s)) write_slot(mesh, s.kind, s.slot, forward ? s.after : s.before);

@@ -10,6 +10,8 @@
 // - apply() sets the shape first, then writes only slots below the target state's capacities, so it never writes
 //   outside the arrays, whatever mesh it is given; on the state it was made from it gives the other state exactly
 //   (contents and live counts). It does not touch version(): History and the document set it.
+// - apply() allocates only before its first write: out of memory, it throws std::bad_alloc with the mesh unchanged
+//   (the same values); once it writes, it finishes. So an undo or redo never stops half-way.
 #pragma once
 
 #include <cstddef>
@@ -37,7 +39,7 @@ struct MeshPatch {
 
   // The same change the other way round (before and after swapped).
   MeshPatch reversed() const;
-  // Turns a mesh in the `before` state into the `after` state (forward) or the reverse.
+  // Turns a mesh in the `before` state into the `after` state (forward) or the reverse; all or nothing (above).
   void apply(HalfedgeMesh& mesh, bool forward) const;
 };
 

@@ -124,6 +124,22 @@ struct MeshStorage {
     m.live_faces_ = live[3];
     m.live_boundaries_ = live[4];
   }
+  // Makes room for set_slots(m, capacity, live) and for then writing any values into those slots (dead flags
+  // included), so that neither allocates. Changes no value, so a journal is not told; out of memory, throws
+  // std::bad_alloc with the mesh as it was.
+  static void reserve_slots(HalfedgeMesh& m, const uint32_t (&capacity)[5], const size_t (&live)[5]) {
+    m.v_halfedge_.reserve(capacity[0]);
+    m.v_position_.reserve(capacity[0]);
+    m.h_.reserve(capacity[1]);
+    m.e_halfedge_.reserve(capacity[2]);
+    m.f_halfedge_.reserve(capacity[3]);
+    m.b_halfedge_.reserve(capacity[4]);
+    AliveFlags* alive[5] = {&m.v_alive_, &m.h_alive_, &m.e_alive_, &m.f_alive_, &m.b_alive_};
+    for (int k = 0; k < 5; ++k) {
+      // Dead bits are needed when the kind grows (new slots start dead) or when the new state has dead slots.
+      if (capacity[k] > alive[k]->size() || live[k] < capacity[k]) alive[k]->reserve_bits(capacity[k]);
+    }
+  }
   // The version at the last vouch_valid_triangles, and a way to put back both counters exactly (a refused
   // operation leaves the mesh with the version it had).
   static uint64_t proven_version(const HalfedgeMesh& m) { return m.proven_version_; }

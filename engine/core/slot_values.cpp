@@ -80,4 +80,8 @@ MeshShape shape_of(const HalfedgeMesh& mesh) {
 
 void set_shape(HalfedgeMesh& mesh, const MeshShape& shape) { MeshStorage::set_slots(mesh, shape.capacity, shape.live); }
 
+void reserve_shape(HalfedgeMesh& mesh, const MeshShape& shape) {
+  MeshStorage::reserve_slots(mesh, shape.capacity, shape.live);
+}
+
 }  // namespace meshedit
