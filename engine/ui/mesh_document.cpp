@@ -7,12 +7,17 @@
 // - A journal that ran out of memory for its snapshot (state_before_lost) leaves nothing to revert or record: the
 //   mesh stays as the operation left it, refused or not, the history is cleared, `last` is marked not recorded and
 //   the message says so (keep_unrecorded_change). No snapshot or patch is read from such a journal.
+// - Whatever allocates is done before the document is changed, or after a change that is kept whatever happens:
+//   `last` is built aside and moved in (record_last_change), the operation's edit and the history's step are done
+//   before their bookkeeping. So running out of memory part-way leaves one of two states, the one before or the one
+//   after, and keep_unrecorded_change is the only way to the second one without a record.
 // - The diff is counted before it is formatted; above the cap it is not formatted at all.
 #include "ui/mesh_document.h"
 
 #include <algorithm>
 #include <cstring>
 #include <exception>
+#include <new>
 
 #include "core/change_journal.h"
 #include "core/mesh_error.h"
@@ -25,10 +30,18 @@ std::string plural(size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
+// The status line for `last` ("flip e5: 12 fields changed").
+std::string change_summary(const LastChange& last, const DocumentLimits& limits) {
+  if (last.listed) return last.label + ": " + plural(last.change_count, "field", "fields") + " changed";
+  return last.label + ": more than " + plural(limits.max_listed_changes, "field", "fields") +
+         " changed (too many to list)";
+}
+
 // Replaces doc.last by the change from `before` to the current mesh, given by `patch` when it was local (then the
-// diff is made from the patch alone); `previous`: `before` is the state the document showed until now.
-void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before, std::optional<MeshPatch> patch,
-                        bool previous = true) {
+// diff is made from the patch alone); `previous`: `before` is the state the document showed until now. Returns the
+// status line for it. Out of memory, throws std::bad_alloc with doc.last as it was: the new one is built aside.
+std::string record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before,
+                               std::optional<MeshPatch> patch, bool previous = true) {
   LastChange last;
   if (previous) last.version_before = before.version();
   last.version_after = doc.mesh.version();
@@ -41,10 +54,12 @@ void record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh befor
     last.change_count = last.changes.size();
     last.index = ChangeIndex(last.changes);
   }
+  std::string summary = change_summary(last, doc.limits);
   last.before = std::move(before);
   last.patch = std::move(patch);
   last.serial = doc.last.serial + 1;
   doc.last = std::move(last);
+  return summary;
 }
 
 // The mesh as it was just before the change `patch` made to doc.mesh (whose version() and proven version were then
@@ -65,39 +80,108 @@ HalfedgeMesh state_before(MeshDocument& doc, const MeshPatch& patch, uint64_t ve
   return before;
 }
 
-std::string change_summary(const MeshDocument& doc) {
-  const LastChange& last = doc.last;
-  if (last.listed) return last.label + ": " + plural(last.change_count, "field", "fields") + " changed";
-  return last.label + ": more than " + plural(doc.limits.max_listed_changes, "field", "fields") +
-         " changed (too many to list)";
-}
-
 bool same_position(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0; }
 
-// After an operation whose journal lost the state before it (memory ran out for its snapshot): nothing can put the
-// mesh back, so it stays as the operation left it, whether `check` accepted or refused. The history is cleared (its
-// entries start from a state the mesh may no longer be in), `last` says a change happened that was not recorded, and
-// the message gives the outcome and why undo history is gone. `version_before`: the mesh's version() before.
-void keep_unrecorded_change(MeshDocument& doc, const std::string& label, const Check& check, ElementRef culprit,
-                            uint64_t version_before) {
-  // The document's versions only grow: an operation that assigned an older mesh must not pass for a state that a
-  // cache (validation, renderer) already saw.
+// After a change to doc.mesh that cannot be recorded (memory ran out): the change stays, `last` only names it (not
+// recorded), version() moves above `version_before` if the change left it there (the document's versions only
+// grow: an operation that assigned an older mesh must not pass for a state a cache already saw), and the history is
+// cleared unless `keep_history` (it still ends with this change, or it is not the change's to touch: show_state).
+// Allocates nothing but the copy of the label, and does without it when even that fails. The caller sets the
+// message.
+void keep_unrecorded_change(MeshDocument& doc, const std::string& label, uint64_t version_before, bool keep_history) {
   if (doc.mesh.version() <= version_before) doc.mesh.bump_version_above(version_before);
-  doc.history.clear();
+  if (!keep_history) doc.history.clear();
   LastChange last;
-  last.label = label;
   last.recorded = false;
   last.version_after = doc.mesh.version();
   last.serial = doc.last.serial + 1;
+  try {
+    last.label = label;
+  } catch (const std::bad_alloc&) {
+    // `last` without its name rather than no `last`: the message still names the change when it can.
+  }
   doc.last = std::move(last);
-  const std::string cause = "memory ran out saving the mesh before it, so ";
+}
+
+// The message after an operation whose journal lost the state before it (see keep_unrecorded_change).
+void report_state_before_lost(MeshDocument& doc, const std::string& label, const Check& check, ElementRef culprit) {
+  const std::string_view cause = "memory ran out saving the mesh before it, so ";
   if (check.ok) {
-    set_message(doc, Severity::Warning, label + ": done, but " + cause + "it cannot be undone: undo history cleared");
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return label + ": done, but " + std::string(cause) + "it cannot be undone: undo history cleared";
+    });
   } else {
-    set_message(doc, Severity::Error,
-                label + ": " + check.reason + "; " + cause +
-                    "it could not be undone: the mesh is as the operation left it, undo history cleared",
-                culprit);
+    set_message_noexcept(
+        doc, Severity::Error,
+        [&] {
+          return label + ": " + check.reason + "; " + std::string(cause) +
+                 "it could not be undone: the mesh is as the operation left it, undo history cleared";
+        },
+        culprit);
+  }
+}
+
+// What running an operation gave: its Check, or the refusal an exception became.
+struct OperationOutcome {
+  Check check;
+  Severity severity = Severity::Warning;  // of the message, when refused
+  ElementRef culprit;                     // a MeshError's element
+  bool out_of_memory = false;             // std::bad_alloc: the reason is kMemoryRanOut
+};
+
+// Runs `op`; an exception becomes a refusal whose reason is its message (Error), std::bad_alloc one whose reason is
+// kMemoryRanOut, also when memory runs out copying another exception's message. Never throws a std::exception.
+OperationOutcome run_operation(detail::OperationRef op, HalfedgeMesh& mesh) {
+  OperationOutcome outcome;
+  try {
+    try {
+      outcome.check = op(mesh);
+    } catch (const std::bad_alloc&) {
+      throw;  // to the handler below
+    } catch (const MeshError& error) {
+      outcome.severity = Severity::Error;
+      outcome.culprit = error.element();
+      outcome.check = Check::no(error.what());
+    } catch (const std::exception& error) {
+      outcome.severity = Severity::Error;
+      outcome.check = Check::no(error.what());
+    }
+  } catch (const std::bad_alloc&) {
+    outcome.severity = Severity::Error;
+    outcome.culprit = {};
+    outcome.out_of_memory = true;
+    outcome.check = Check::no(kMemoryRanOut);  // fits std::string's inline buffer: allocates nothing
+  }
+  return outcome;
+}
+
+// Keeps the change the journal watched (`op` succeeded and changed the mesh): the state before goes to the history,
+// `last` becomes the diff and the message summarises it. Out of memory, the change is kept without its record (see
+// keep_unrecorded_change) and a Warning says what was lost.
+void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal& journal) {
+  const uint64_t version_before = journal.version_before();
+  bool in_history = false;
+  try {
+    std::string summary;
+    if (journal.has_snapshot()) {
+      HalfedgeMesh before = journal.take_snapshot();
+      doc.history.record(label, before);
+      in_history = true;
+      summary = record_last_change(doc, label, std::move(before), std::nullopt);
+    } else {
+      MeshPatch patch = make_patch(journal, doc.mesh);
+      HalfedgeMesh before = state_before(doc, patch, version_before, journal.proven_version_before());
+      doc.history.record(label, patch, version_before);
+      in_history = true;
+      summary = record_last_change(doc, label, std::move(before), std::move(patch));
+    }
+    set_message(doc, Severity::Info, std::move(summary));
+  } catch (const std::bad_alloc&) {
+    keep_unrecorded_change(doc, label, version_before, in_history);
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return label + (in_history ? ": done, but memory ran out listing its changes"
+                                 : ": done, but memory ran out recording it: undo history cleared");
+    });
   }
 }
 
@@ -141,101 +225,114 @@ MeshDocument make_document(HalfedgeMesh mesh, std::string path, DocumentLimits l
 }
 
 void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path) {
-  doc.history = History(256, doc.limits.history_budget_bytes);
+  // Nothing here allocates but the message: the mesh and the path are moved in, the history emptied.
   const uint64_t old_version = doc.mesh.version();
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // no cache may take the new mesh for the old one
+  doc.history.reset(256, doc.limits.history_budget_bytes);
   doc.path = std::move(path);
   LastChange last;
   last.serial = doc.last.serial + 1;
   doc.last = std::move(last);
   doc.loop = LoopStepper{};
   ++doc.generation;
-  const std::string name = doc.path.empty() ? std::string("new mesh") : doc.path;
-  set_message(doc, Severity::Info,
-              "opened " + name + ": " + plural(doc.mesh.num_vertices(), "vertex", "vertices") + ", " +
-                  plural(doc.mesh.num_faces(), "face", "faces"));
+  set_message_noexcept(doc, Severity::Info, [&] {
+    const std::string name = doc.path.empty() ? std::string("new mesh") : doc.path;
+    return "opened " + name + ": " + plural(doc.mesh.num_vertices(), "vertex", "vertices") + ", " +
+           plural(doc.mesh.num_faces(), "face", "faces");
+  });
 }
 
 void set_message(MeshDocument& doc, Severity severity, std::string text, ElementRef element) {
   doc.message = DocumentMessage{severity, std::move(text), element};
 }
 
+void set_memory_ran_out_message(MeshDocument& doc, Severity severity, ElementRef element) noexcept {
+  doc.message.severity = std::max(severity, Severity::Warning);
+  doc.message.element = element;
+  doc.message.text.assign(kMemoryRanOut);  // shorter than any string's capacity: written in place
+}
+
 namespace detail {
 
-Check apply_check_operation(MeshDocument& doc, const std::string& label,
-                            const std::function<Check(HalfedgeMesh&)>& op) {
-  ChangeJournal journal(doc.mesh);
-  Check check;
-  Severity severity = Severity::Warning;
-  ElementRef culprit;
-  try {
-    check = op(doc.mesh);
-  } catch (const MeshError& error) {
-    check = Check::no(error.what());
-    severity = Severity::Error;
-    culprit = error.element();
-  } catch (const std::exception& error) {
-    check = Check::no(error.what());
-    severity = Severity::Error;
-  }
+Check apply_check_operation(MeshDocument& doc, const std::string& label, OperationRef op) {
+  ChangeJournal journal(doc.mesh);  // allocates nothing until the operation writes
+  OperationOutcome outcome = run_operation(op, doc.mesh);
+  Check& check = outcome.check;
   journal.detach();
   if (!check.ok && check.reason.empty()) check.reason = "refused";
   if (journal.state_before_lost()) {
-    keep_unrecorded_change(doc, label, check, culprit, journal.version_before());
-    return check;
+    keep_unrecorded_change(doc, label, journal.version_before(), false);
+    report_state_before_lost(doc, label, check, outcome.culprit);
+    return std::move(check);
   }
   if (!check.ok) {
     journal.revert();
-    set_message(doc, severity, label + ": " + check.reason, culprit);
-    return check;
+    set_message_noexcept(
+        doc, outcome.severity,
+        [&] { return label + ": " + (outcome.out_of_memory ? "memory ran out; the mesh is as it was" : check.reason); },
+        outcome.culprit);
+    return std::move(check);
   }
-  const uint64_t version_before = journal.version_before();
-  if (doc.mesh.version() == version_before) {
-    set_message(doc, Severity::Info, label + ": nothing changed");
-    return check;
+  if (doc.mesh.version() == journal.version_before()) {
+    set_message_noexcept(doc, Severity::Info, [&] { return label + ": nothing changed"; });
+    return std::move(check);
   }
-  if (journal.has_snapshot()) {
-    HalfedgeMesh before = journal.take_snapshot();
-    doc.history.record(label, before);
-    record_last_change(doc, label, std::move(before), std::nullopt);
-  } else {
-    MeshPatch patch = make_patch(journal, doc.mesh);
-    HalfedgeMesh before = state_before(doc, patch, version_before, journal.proven_version_before());
-    doc.history.record(label, patch, version_before);
-    record_last_change(doc, label, std::move(before), std::move(patch));
-  }
-  set_message(doc, Severity::Info, change_summary(doc));
-  return check;
+  record_operation(doc, label, journal);
+  return std::move(check);
 }
 
 }  // namespace detail
 
 namespace {
 
-// Undo or redo one step; `last` becomes the diff of the step itself ("undo flip e5").
+// `last` for the undo (redo) step just taken, whose entry now heads the redo (undo) list, from the state before it
+// (version() and proven version `version`, `proven`); returns the status line. Out of memory, throws std::bad_alloc
+// with `last` possibly short of its `before` (the caller replaces it).
+std::string record_step(MeshDocument& doc, const std::string& label, bool forward, uint64_t version,
+                        uint64_t proven) {
+  const MeshPatch* entry_patch = forward ? doc.history.undo_patch() : doc.history.redo_patch();
+  if (!entry_patch) {
+    // A snapshot entry: it now holds the whole state the step left, with its version.
+    const HalfedgeMesh& left = forward ? *doc.history.undo_snapshot() : *doc.history.redo_snapshot();
+    return record_last_change(doc, label, left, std::nullopt);
+  }
+  // The step applied the entry's patch forward (redo) or backward (undo).
+  MeshPatch step = forward ? *entry_patch : entry_patch->reversed();
+  HalfedgeMesh before = state_before(doc, step, version, proven);
+  return record_last_change(doc, label, std::move(before), std::move(step));
+}
+
+// Undo or redo one step; `last` becomes the diff of the step itself ("undo flip e5"). The step is all or nothing;
+// only what comes after it (`last`) may be lost to a lack of memory.
 bool step_history(MeshDocument& doc, bool forward) {
   const char* word = forward ? "redo" : "undo";
   if (!(forward ? doc.history.can_redo() : doc.history.can_undo())) {
-    set_message(doc, Severity::Warning, std::string("nothing to ") + word);
+    set_message_noexcept(doc, Severity::Warning, [&] { return std::string("nothing to ") + word; });
     return false;
   }
-  const std::string label = std::string(word) + " " + (forward ? doc.history.redo_label() : doc.history.undo_label());
-  const MeshPatch* entry_patch = forward ? doc.history.redo_patch() : doc.history.undo_patch();
-  if (!entry_patch) {
-    // A snapshot entry: the whole mesh is swapped, so the diff needs the whole state before.
-    HalfedgeMesh before = doc.mesh;
-    forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
-    record_last_change(doc, label, std::move(before), std::nullopt);
-  } else {
-    // This step applies the entry's patch forward (redo) or backward (undo).
-    MeshPatch step = forward ? *entry_patch : entry_patch->reversed();
-    const uint64_t version = doc.mesh.version(), proven = MeshStorage::proven_version(doc.mesh);
-    forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
-    HalfedgeMesh before = state_before(doc, step, version, proven);
-    record_last_change(doc, label, std::move(before), std::move(step));
+  std::string label;
+  try {
+    label = std::string(word) + " " + (forward ? doc.history.redo_label() : doc.history.undo_label());
+  } catch (const std::bad_alloc&) {
+    set_memory_ran_out_message(doc, Severity::Error);
+    return false;
   }
-  set_message(doc, Severity::Info, change_summary(doc));
+  const uint64_t version = doc.mesh.version(), proven = MeshStorage::proven_version(doc.mesh);
+  try {
+    forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
+  } catch (const std::bad_alloc&) {
+    set_message_noexcept(doc, Severity::Error, [&] {
+      return label + ": memory ran out; nothing was " + (forward ? "redone" : "undone") + ", the mesh is as it was";
+    });
+    return false;
+  }
+  try {
+    set_message(doc, Severity::Info, record_step(doc, label, forward, version, proven));
+  } catch (const std::bad_alloc&) {
+    keep_unrecorded_change(doc, label, version, true);  // the history took the step: it still matches
+    set_message_noexcept(doc, Severity::Warning, [&] { return label + ": done, but memory ran out listing its changes"; });
+  }
   return true;
 }
 
@@ -246,12 +343,16 @@ bool redo(MeshDocument& doc) { return step_history(doc, true); }
 
 void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from) {
   const bool previous = !from;
-  HalfedgeMesh before = from ? std::move(*from) : doc.mesh;
   const uint64_t old_version = doc.mesh.version();
+  HalfedgeMesh before = from ? std::move(*from) : std::move(doc.mesh);  // replaced anyway: moved, not copied
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // caches keyed by version must not take it for the old state
-  record_last_change(doc, std::move(label), std::move(before), std::nullopt, previous);
-  set_message(doc, Severity::Info, change_summary(doc));
+  try {
+    set_message(doc, Severity::Info, record_last_change(doc, label, std::move(before), std::nullopt, previous));
+  } catch (const std::bad_alloc&) {
+    keep_unrecorded_change(doc, label, old_version, true);  // show_state leaves the history alone
+    set_message_noexcept(doc, Severity::Warning, [&] { return label + ": shown, but memory ran out listing its changes"; });
+  }
 }
 
 size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit) {

@@ -11,13 +11,30 @@
 //   script), undo/redo of their snapshot entries, and the first change after one of them, after opening a mesh or
 //   after show_state (which has no patch to roll last.before forward with) copy the mesh.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
-//   same version()); only `message` changes. The one exception is running out of memory, next.
+//   same version()); only `message` changes. Putting the mesh back allocates nothing (the journal's snapshot is
+//   moved back, or its log written back), so this holds when memory has run out too: an operation that runs out
+//   (std::bad_alloc from itself or from its journal's log) is refused so ("flip e5: memory ran out; the mesh is as
+//   it was", Error). The one exception is losing the state before, next.
 // - When memory runs out while the journal saves the state before an operation (its snapshot; a mesh of millions
 //   of faces), nothing crashes and nothing the operation did is thrown away: the mesh stays as the operation left
 //   it, refused or not (there is no state to put back), version() moves above the one before, the history is
 //   cleared (its entries start from a state the mesh may no longer be in), `last` is marked not recorded, and the
 //   message says undo history was cleared because memory ran out (Warning on success, Error with the refusal's
 //   reason otherwise). Later edits, undo and redo work as on a freshly opened mesh.
+// - When memory runs out recording an operation that succeeded (its patch, the state before, the history entry,
+//   `last`), the edit is kept all the same: version() moves above the one before, `last` is marked not recorded and
+//   a Warning says what was lost. Without its history entry the history is cleared (undo would start from a state
+//   the mesh is no longer in): "flip e5: done, but memory ran out recording it: undo history cleared". With it (only
+//   `last` failed) the history still ends with the edit and is kept: "flip e5: done, but memory ran out listing its
+//   changes".
+// - Undo and redo are all or nothing (History::undo): when memory runs out before or during the step, mesh, history
+//   and `last` stay as they were ("undo flip e5: memory ran out; nothing was undone, the mesh is as it was", Error);
+//   when it runs out after the step (making `last`), the step is kept, the history too (it matches), `last` is
+//   marked not recorded and a Warning says so ("undo flip e5: done, but memory ran out listing its changes").
+// - show_state() always shows its mesh and replace_mesh() always replaces it; out of memory for show_state's `last`,
+//   `last` is marked not recorded and a Warning says so.
+// - No function here throws std::bad_alloc. A message that cannot be built for lack of memory is kMemoryRanOut,
+//   which needs no allocation, as a Warning or worse.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
 //   from `last.before` to the current mesh, unless the change was not recorded (above; then it only names it).
 //   `last.serial` grows by one each time `last` is replaced, so views that index the diff rebuild their index once
@@ -29,7 +46,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <functional>
+#include <exception>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -97,8 +114,8 @@ struct LastChange {
   // it instead of copying the mesh. Absent for snapshot-sized changes.
   std::optional<MeshPatch> patch;
   uint64_t serial = 0;                     // +1 every time this struct is replaced
-  // False when the change happened but could not be recorded (memory ran out saving the state before it): no
-  // `before`, `patch` or `changes`, and views say so rather than show an empty diff.
+  // False when the change happened but could not be recorded (memory ran out saving the state before it, or
+  // recording the change): no `before`, `patch` or `changes`, and views say so rather than show an empty diff.
   bool recorded = true;
   // mesh.version() just before and after the change, when `before` is exactly the state the document showed
   // until then (not after show_state with a `from`): a renderer that showed that version can apply `changes`
@@ -156,8 +173,38 @@ void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path);
 
 void set_message(MeshDocument& doc, Severity severity, std::string text, ElementRef element = {});
 
+// The message when memory ran out even for the message: 14 characters, which every std::string holds without
+// allocating (its inline buffer has room for 15).
+inline constexpr char kMemoryRanOut[] = "memory ran out";
+// Sets kMemoryRanOut as the message (at least a Warning), allocating nothing.
+void set_memory_ran_out_message(MeshDocument& doc, Severity severity, ElementRef element = {}) noexcept;
+// set_message with the text `make_text()` returns; when that throws (memory ran out building the text), the message
+// is kMemoryRanOut instead. Never throws: what reports a failure must not fail.
+template <class MakeText>
+void set_message_noexcept(MeshDocument& doc, Severity severity, MakeText&& make_text, ElementRef element = {}) noexcept {
+  try {
+    set_message(doc, severity, make_text(), element);
+  } catch (const std::exception&) {
+    set_memory_ran_out_message(doc, severity, element);
+  }
+}
+
 namespace detail {
-Check apply_check_operation(MeshDocument& doc, const std::string& label, const std::function<Check(HalfedgeMesh&)>& op);
+// A borrowed operation, called without being copied: std::function may allocate to hold a copy, and nothing may
+// allocate before the operation's journal is attached.
+class OperationRef {
+ public:
+  template <class Op>
+  explicit OperationRef(Op& op)
+      : op_(&op), call_([](void* any, HalfedgeMesh& mesh) -> Check { return (*static_cast<Op*>(any))(mesh); }) {}
+  Check operator()(HalfedgeMesh& mesh) const { return call_(op_, mesh); }
+
+ private:
+  void* op_;
+  Check (*call_)(void*, HalfedgeMesh&);
+};
+
+Check apply_check_operation(MeshDocument& doc, const std::string& label, OperationRef op);
 }  // namespace detail
 
 // Runs `op` on doc.mesh. `op` returns a Check or an OpResult<T> (the core's operations do).
@@ -166,9 +213,10 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, const s
 // Success and nothing changed (version() unchanged): nothing is recorded; the message says so.
 // Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
 //   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
-//   an exception becomes a refused Check whose reason is its message.
+//   an exception becomes a refused Check whose reason is its message (kMemoryRanOut for std::bad_alloc).
 // Memory ran out saving the state before (see the invariants): the mesh stays as `op` left it, history is cleared,
 //   `last` is not recorded and the message says so; the Check is `op`'s, as above.
+// Memory ran out recording a success (see the invariants): the edit is kept unrecorded; the Check is `op`'s.
 // A local edit (setters only, fewer writes than the journal's cap) costs time proportional to the edit: no copy of
 // the mesh, the diff made from the patch. A snapshot-sized one (MeshStorage's direct writes, assigning the mesh)
 // costs two copies of the mesh and a pass over every slot. The first edit after opening a mesh, show_state or a
@@ -177,26 +225,29 @@ template <class Op>
 auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
   using Result = std::invoke_result_t<Op&, HalfedgeMesh&>;
   if constexpr (std::is_same_v<Result, Check>) {
-    return detail::apply_check_operation(doc, label, std::function<Check(HalfedgeMesh&)>(std::forward<Op>(op)));
+    auto run = [&op](HalfedgeMesh& mesh) { return op(mesh); };
+    return detail::apply_check_operation(doc, label, detail::OperationRef(run));
   } else {
     Result result{};
-    const Check check = detail::apply_check_operation(doc, label, [&](HalfedgeMesh& mesh) {
+    auto run = [&](HalfedgeMesh& mesh) {
       result = op(mesh);
-      return result.check;
-    });
-    result.check = check;
+      return std::move(result.check);  // moved, not copied: a copy of the reason could run out of memory
+    };
+    result.check = detail::apply_check_operation(doc, label, detail::OperationRef(run));
     return result;
   }
 }
 
 // Undo/redo the last operation; `last` becomes the diff of the undo (or redo) itself, labelled
-// "undo flip e5" / "redo flip e5". Return false and set a message when there is nothing to undo/redo.
+// "undo flip e5" / "redo flip e5". Return false and set a message when there is nothing to undo/redo, or when
+// memory ran out before the step was taken (see the invariants).
 bool undo(MeshDocument& doc);
 bool redo(MeshDocument& doc);
 
 // Shows `mesh` in the document without touching history (the exercise replay steps through a recorded
 // operation this way): the mesh is replaced, its version moves above the old one, and `last` becomes the diff
-// from `from` (default: the mesh shown until now) to `mesh`, labelled `label`. generation and history stay.
+// from `from` (default: the mesh shown until now, moved there rather than copied) to `mesh`, labelled `label`.
+// generation and history stay.
 void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
                 std::optional<HalfedgeMesh> from = std::nullopt);
 
