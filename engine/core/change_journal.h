@@ -55,7 +55,8 @@ class ChangeJournal {
 
   // True once the journal has fallen back to a full snapshot.
   bool has_snapshot() const { return snapshot_.has_value(); }
-  // The state before the edit; only when has_snapshot(). Leaves the journal without it.
+  // The state before the edit; only when has_snapshot(). take_snapshot() leaves the journal without it.
+  const HalfedgeMesh& snapshot() const { return *snapshot_; }
   HalfedgeMesh take_snapshot();
   // True once a fall-back failed to make its snapshot (out of memory): no log, no snapshot, the edit cannot be undone.
   bool state_before_lost() const { return state_before_lost_; }

@@ -11,6 +11,9 @@
 //   `last` is built aside and moved in (record_last_change), the operation's edit and the history's step are done
 //   before their bookkeeping. So running out of memory part-way leaves one of two states, the one before or the one
 //   after, and keep_unrecorded_change is the only way to the second one without a record.
+// - Whether an operation changed anything is decided by contents when the journal holds a snapshot (an assigned
+//   mesh may carry any version), by version() otherwise (every setter bumps it); a kept change always ends with a
+//   version() above the one before.
 // - The diff is counted before it is formatted; above the cap it is not formatted at all.
 #include "ui/mesh_document.h"
 
@@ -155,11 +158,21 @@ OperationOutcome run_operation(detail::OperationRef op, HalfedgeMesh& mesh) {
   return outcome;
 }
 
+// True when the operation the journal watched left the mesh as it found it. A snapshot means the mesh was written
+// wholesale (an assignment may bring any version, even the old one): then only the contents tell.
+bool nothing_changed(const ChangeJournal& journal, const HalfedgeMesh& mesh) {
+  if (journal.has_snapshot()) return journal.snapshot().same_as(mesh);
+  return mesh.version() == journal.version_before();
+}
+
 // Keeps the change the journal watched (`op` succeeded and changed the mesh): the state before goes to the history,
 // `last` becomes the diff and the message summarises it. Out of memory, the change is kept without its record (see
 // keep_unrecorded_change) and a Warning says what was lost.
 void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal& journal) {
   const uint64_t version_before = journal.version_before();
+  // An assigned mesh may bring a version the document already had: versions only grow, or caches keyed by version
+  // (renderer, validation) would keep describing the old contents.
+  if (doc.mesh.version() <= version_before) doc.mesh.bump_version_above(version_before);
   bool in_history = false;
   try {
     std::string summary;
@@ -274,7 +287,8 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
         outcome.culprit);
     return std::move(check);
   }
-  if (doc.mesh.version() == journal.version_before()) {
+  if (nothing_changed(journal, doc.mesh)) {
+    journal.revert();  // also puts back the version an assignment of the same contents brought
     set_message_noexcept(doc, Severity::Info, [&] { return label + ": nothing changed"; });
     return std::move(check);
   }

@@ -210,7 +210,9 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
 // Runs `op` on doc.mesh. `op` returns a Check or an OpResult<T> (the core's operations do).
 // Success and the mesh changed: the state before goes to history under `label`, `last` becomes the diff, and the
 //   message says how many fields changed.
-// Success and nothing changed (version() unchanged): nothing is recorded; the message says so.
+// Success and nothing changed: nothing is recorded, the mesh keeps its version and the message says so. When the
+//   journal fell back to a snapshot (an assignment, direct array writes) that is decided by contents, since an
+//   assigned mesh may bring any version; a change always ends with version() above the one before.
 // Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
 //   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
 //   an exception becomes a refused Check whose reason is its message (kMemoryRanOut for std::bad_alloc).

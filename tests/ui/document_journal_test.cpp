@@ -13,6 +13,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
+#include "core/mesh_storage.h"
 #include "core/primitives.h"
 #include "support/diff_expect.h"
 #include "support/random_edits.h"
@@ -188,6 +189,56 @@ TEST(DocumentJournal, AssigningTheWholeMeshIsKeptAsASnapshot) {
     m.bump_version_above(1000);
     return Check::yes();
   });
+}
+
+// An operation that assigns a mesh whose version() happens to equal the document's: the contents changed, so it is
+// a change (recorded, undoable) and the version moves on, or caches keyed by version would describe the old mesh.
+TEST(DocumentJournal, AssigningAMeshWithTheSameVersionIsAChange) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(5, 7)));
+  ASSERT_TRUE(cached_validation(doc).ok());
+  const HalfedgeMesh before = doc.mesh;
+  HalfedgeMesh broken = build_halfedge_mesh(make_cube());
+  broken.set_twin(HalfedgeId(0), HalfedgeId(0));
+  MeshStorage::set_versions(broken, doc.mesh.version(), MeshStorage::proven_version(broken));
+  const size_t fields = diff(before, broken).size();
+
+  ASSERT_TRUE(apply_operation(doc, "assign", [&](HalfedgeMesh& m) {
+                m = broken;
+                return Check::yes();
+              }).ok);
+  EXPECT_TRUE(doc.mesh.same_as(broken));
+  EXPECT_GT(doc.mesh.version(), before.version());
+  EXPECT_EQ(doc.message.text, "assign: " + std::to_string(fields) + " fields changed");
+  EXPECT_EQ(doc.history.undo_label(), "assign");
+  expect_last_change(doc, before);
+  EXPECT_FALSE(validation_is_current(doc));
+  EXPECT_FALSE(cached_validation(doc).ok());  // the broken cube's report, not the torus's
+  EXPECT_EQ(doc.validation.computations, 2u);
+
+  ASSERT_TRUE(undo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(before));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_EQ(doc.validation.computations, 3u);
+}
+
+// Assigning a mesh with the same contents changes nothing, whatever version it brings: not recorded, and the mesh
+// keeps its own version.
+TEST(DocumentJournal, AssigningTheSameContentsChangesNothing) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(5, 7)));
+  ASSERT_TRUE(apply_operation(doc, "flip", [](HalfedgeMesh& m) { return flip(m, EdgeId(4)); }).ok());
+  const HalfedgeMesh mesh = doc.mesh;
+  const uint64_t serial = doc.last.serial;
+  HalfedgeMesh same = doc.mesh;
+  same.bump_version_above(doc.mesh.version() + 10);
+  ASSERT_TRUE(apply_operation(doc, "assign", [&](HalfedgeMesh& m) {
+                m = same;
+                return Check::yes();
+              }).ok);
+  EXPECT_EQ(doc.message.text, "assign: nothing changed");
+  EXPECT_EQ(doc.mesh.version(), mesh.version());
+  EXPECT_EQ(doc.history.undo_label(), "flip");
+  EXPECT_EQ(doc.history.undo_depth(), 1u);
+  EXPECT_EQ(doc.last.serial, serial);
 }
 
 TEST(DocumentJournal, LocalEditsAreKeptAsPatches) {
