@@ -13,6 +13,7 @@
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
 #include "render/render_target.h"
+#include "ui/frame_guard.h"
 
 namespace meshedit {
 
@@ -113,6 +114,11 @@ void EditorApp::reset_view() {
 }
 
 void EditorApp::frame(int width, int height, float frame_ms) {
+  // The safety net: whatever a key, a click, a menu or a panel throws is shown, not fatal (ui/frame_guard.h).
+  run_guarded_frame(doc_, [&] { run_frame(width, height, frame_ms); });
+}
+
+void EditorApp::run_frame(int width, int height, float frame_ms) {
   viewport_width_ = std::max(1, width);
   viewport_height_ = std::max(1, height);
   read_mouse_and_keys(width, height);

@@ -74,7 +74,8 @@ class EditorApp {
   bool animating() const;
 
   // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
-  // size, and builds the panels. Call between ImGui::NewFrame() and ImGui::Render().
+  // size, and builds the panels. Call between ImGui::NewFrame() and ImGui::Render(). An exception that escapes
+  // the frame's handlers is shown as an Error in the status line (ui/frame_guard.h), never thrown from here.
   void frame(int framebuffer_width, int framebuffer_height, float frame_ms);
 
   // The key handlers (GLFW key codes); return whether the key did something.
@@ -108,6 +109,7 @@ class EditorApp {
   const std::string& title() const { return title_; }
 
  private:
+  void run_frame(int width, int height, float frame_ms);  // frame() without its guard
   void read_mouse_and_keys(int width, int height);
   void draw_mesh_view(int width, int height);
   void apply_size_defaults();
