@@ -1,7 +1,7 @@
-// parallel_chunks when threads cannot be started (FailingAllocations fails each allocation of the call in turn, among
-// them every std::thread's) and when a chunk throws: every chunk still runs exactly once, or none does when the
-// failure comes before the first; the exception reaches the caller after every chunk has finished; nothing
-// terminates.
+// parallel_chunks and parallel_for when threads cannot be started (FailingAllocations fails each allocation of the
+// call in turn, among them every std::thread's) and when a chunk throws: every chunk (block) still runs exactly
+// once, or none does when the failure comes before the first; the exception reaches the caller after every chunk
+// has finished; nothing terminates.
 #include <atomic>
 #include <new>
 #include <stdexcept>
@@ -52,6 +52,29 @@ TEST(ParallelForOutOfMemory, EveryChunkRunsOnceWhenThreadsCannotStart) {
         break;
       }
     }
+  }
+}
+
+TEST(ParallelForOutOfMemory, EveryBlockRunsOnceWhenThreadsCannotStart) {
+  for (size_t n = 1;; ++n) {
+    SCOPED_TRACE(n);
+    std::vector<std::atomic<int>> runs(kItems);
+    bool threw = false, failed = false;
+    {
+      const FailingAllocations failing(n, FailingAllocations::Later::Fail);
+      try {
+        parallel_for(kThreads, kItems, [&](size_t begin, size_t end) {
+          for (size_t i = begin; i < end; ++i) runs[i].fetch_add(1);
+        });
+      } catch (const std::bad_alloc&) {
+        threw = true;
+      }
+      failed = failing.failed();
+    }
+    size_t once = 0;
+    for (const std::atomic<int>& r : runs) once += r.load() == 1;
+    EXPECT_EQ(once, threw ? 0u : kItems);
+    if (!failed) break;
   }
 }
 
