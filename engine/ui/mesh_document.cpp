@@ -345,7 +345,8 @@ bool step_history(MeshDocument& doc, bool forward) {
     set_message(doc, Severity::Info, record_step(doc, label, forward, version, proven));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, version, true);  // the history took the step: it still matches
-    set_message_noexcept(doc, Severity::Warning, [&] { return label + ": done, but memory ran out listing its changes"; });
+    set_message_noexcept(doc, Severity::Warning,
+                         [&] { return label + ": done, but memory ran out listing its changes"; });
   }
   return true;
 }
@@ -365,7 +366,8 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::op
     set_message(doc, Severity::Info, record_last_change(doc, label, std::move(before), std::nullopt, previous));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, old_version, true);  // show_state leaves the history alone
-    set_message_noexcept(doc, Severity::Warning, [&] { return label + ": shown, but memory ran out listing its changes"; });
+    set_message_noexcept(doc, Severity::Warning,
+                         [&] { return label + ": shown, but memory ran out listing its changes"; });
   }
 }
 

@@ -181,7 +181,8 @@ void set_memory_ran_out_message(MeshDocument& doc, Severity severity, ElementRef
 // set_message with the text `make_text()` returns; when that throws (memory ran out building the text), the message
 // is kMemoryRanOut instead. Never throws: what reports a failure must not fail.
 template <class MakeText>
-void set_message_noexcept(MeshDocument& doc, Severity severity, MakeText&& make_text, ElementRef element = {}) noexcept {
+void set_message_noexcept(MeshDocument& doc, Severity severity, MakeText&& make_text,
+                          ElementRef element = {}) noexcept {
   try {
     set_message(doc, severity, make_text(), element);
   } catch (const std::exception&) {
