@@ -92,14 +92,42 @@ struct ChunkResult {
   std::vector<uint32_t> extra_triangles, extra_faces, boundary_edges;
 };
 
+void append(std::vector<uint32_t>& to, const std::vector<uint32_t>& from) {
+  to.insert(to.end(), from.begin(), from.end());
+}
+
+void merge(SlotGeometry& g, const std::vector<ChunkResult>& chunks) {
+  for (const ChunkResult& c : chunks) {
+    g.counts.triangles += c.counts.triangles;
+    g.counts.skipped_faces += c.counts.skipped_faces;
+    g.counts.edges += c.counts.edges;
+    g.counts.skipped_edges += c.counts.skipped_edges;
+    g.counts.vertices += c.counts.vertices;
+    if (!c.bounds.empty()) {
+      g.bounds.add(c.bounds.min);
+      g.bounds.add(c.bounds.max);
+    }
+    append(g.extra_triangles, c.extra_triangles);
+    append(g.extra_faces, c.extra_faces);
+    append(g.boundary_edges, c.boundary_edges);
+  }
+}
+
+// fn(out, begin, end) over [0, n) in parallel_chunks' fixed chunks, each with its own result, merged into g in
+// chunk order (so lists stay in id order).
+template <class Fn>
+void run_chunks(SlotGeometry& g, int threads, size_t n, Fn&& fn) {
+  std::vector<ChunkResult> chunks(chunk_count(threads, n));
+  parallel_chunks(threads, n, [&](size_t chunk, size_t begin, size_t end) { fn(chunks[chunk], begin, end); });
+  merge(g, chunks);
+}
+
 // Vertex slots: point, position, bounds.
-void build_vertex_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, std::vector<ChunkResult>& chunks) {
+void build_vertex_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g) {
   const uint32_t vertices = mesh.vertex_capacity();
   resize_for_overwrite(g.points, vertices);
   resize_for_overwrite(g.positions, vertices);
-  chunks.assign(chunk_count(threads, vertices), ChunkResult{});
-  parallel_chunks(threads, vertices, [&](size_t chunk, size_t begin, size_t end) {
-    ChunkResult& out = chunks[chunk];
+  run_chunks(g, threads, vertices, [&](ChunkResult& out, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const VertexId v(static_cast<uint32_t>(i));
       const VertexPoint point = slot_point(mesh, v);
@@ -116,24 +144,23 @@ void build_vertex_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, 
 // later fan triangles of polygons. A walk marks only halfedges whose face is the walked face (walk_face_cycle
 // stops at any other), so walks of different faces share no byte of `visited` and run on any thread.
 void build_face_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, MeshArray<glm::dvec3>& terms,
-                      MeshArray<uint8_t>& drawn, std::vector<ChunkResult>& chunks) {
+                      MeshArray<uint8_t>& drawn) {
   const uint32_t faces = mesh.face_capacity();
   resize_for_overwrite(g.triangles, size_t(faces) * 3);
   resize_for_overwrite(g.face_normals, faces);
   resize_for_overwrite(terms, faces);
   resize_for_overwrite(drawn, faces);
   std::vector<uint8_t> visited(mesh.halfedge_capacity(), 0);
-  chunks.assign(chunk_count(threads, faces), ChunkResult{});
-  parallel_chunks(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
-    ChunkResult& out = chunks[chunk];
+  run_chunks(g, threads, faces, [&](ChunkResult& out, size_t begin, size_t end) {
     std::vector<HalfedgeId> cycle;
     FaceDraw d;
     for (size_t slot = begin; slot < end; ++slot) {
       const FaceId f = FaceId::face(static_cast<uint32_t>(slot));
-      if (mesh.alive(f)) draw_face(mesh, f, d, cycle, &visited);
-      drawn[slot] = mesh.alive(f) && d.drawn();
+      const bool alive = mesh.alive(f);
+      if (alive) draw_face(mesh, f, d, cycle, &visited);
+      drawn[slot] = alive && d.drawn();
       if (!drawn[slot]) {
-        out.counts.skipped_faces += mesh.alive(f) ? 1 : 0;
+        out.counts.skipped_faces += alive ? 1 : 0;
         g.triangles[3 * slot] = g.triangles[3 * slot + 1] = g.triangles[3 * slot + 2] = 0;
         g.face_normals[slot] = glm::vec4(0.0f);
         continue;
@@ -183,12 +210,10 @@ void build_smooth_normals(const HalfedgeMesh& mesh, int threads, const MeshArray
 }
 
 // Edge slots: the segment, or a hidden one.
-void build_edge_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, std::vector<ChunkResult>& chunks) {
+void build_edge_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g) {
   const uint32_t edges = mesh.edge_capacity();
   resize_for_overwrite(g.edges, edges);
-  chunks.assign(chunk_count(threads, edges), ChunkResult{});
-  parallel_chunks(threads, edges, [&](size_t chunk, size_t begin, size_t end) {
-    ChunkResult& out = chunks[chunk];
+  run_chunks(g, threads, edges, [&](ChunkResult& out, size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       const EdgeId e(static_cast<uint32_t>(i));
       g.edges[i] = slot_edge(mesh, e);
@@ -202,41 +227,16 @@ void build_edge_slots(const HalfedgeMesh& mesh, int threads, SlotGeometry& g, st
   });
 }
 
-void append(std::vector<uint32_t>& to, const std::vector<uint32_t>& from) {
-  to.insert(to.end(), from.begin(), from.end());
-}
-
-void merge(SlotGeometry& g, const std::vector<ChunkResult>& chunks) {
-  for (const ChunkResult& c : chunks) {
-    g.counts.triangles += c.counts.triangles;
-    g.counts.skipped_faces += c.counts.skipped_faces;
-    g.counts.edges += c.counts.edges;
-    g.counts.skipped_edges += c.counts.skipped_edges;
-    g.counts.vertices += c.counts.vertices;
-    if (!c.bounds.empty()) {
-      g.bounds.add(c.bounds.min);
-      g.bounds.add(c.bounds.max);
-    }
-    append(g.extra_triangles, c.extra_triangles);
-    append(g.extra_faces, c.extra_faces);
-    append(g.boundary_edges, c.boundary_edges);
-  }
-}
-
 }  // namespace
 
 SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh, int threads) {
   SlotGeometry g;
-  std::vector<ChunkResult> chunks;
-  build_vertex_slots(mesh, threads, g, chunks);
-  merge(g, chunks);
+  build_vertex_slots(mesh, threads, g);
   MeshArray<glm::dvec3> terms;
   MeshArray<uint8_t> drawn;
-  build_face_slots(mesh, threads, g, terms, drawn, chunks);
-  merge(g, chunks);
+  build_face_slots(mesh, threads, g, terms, drawn);
   build_smooth_normals(mesh, threads, terms, drawn, g);
-  build_edge_slots(mesh, threads, g, chunks);
-  merge(g, chunks);
+  build_edge_slots(mesh, threads, g);
   return g;
 }
 
