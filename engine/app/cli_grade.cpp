@@ -16,9 +16,9 @@
 #include "app/cli_grade.h"
 
 #include <iostream>
-#include <thread>
 
 #include "app/cli_commands.h"
+#include "core/parallel_for.h"
 #include "core/value_format.h"
 #include "grade/class_grading.h"
 #include "grade/grader.h"
@@ -62,8 +62,7 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
 int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vector<std::string>& args,
                std::ostream& out) {
   const std::string folder = take_option(args, "--out").value_or("grading-results");
-  const unsigned cores = std::thread::hardware_concurrency();
-  int jobs = static_cast<int>(cores == 0 ? 1 : cores);
+  int jobs = hardware_threads();
   if (const auto text = take_option(args, "--jobs")) jobs = parse_count(*text, "--jobs", 256);
   if (jobs < 1) throw UsageError("--jobs must be at least 1");
   for (const char* single : {"--results", "--junit", "--tap"}) {

@@ -28,11 +28,11 @@ namespace meshedit {
 // Below this many items per chunk a pass is not split: starting a thread costs more than the work.
 inline constexpr size_t kMinItemsPerThread = 16384;
 
-// The threads a whole-mesh pass started by the user (L in the window, `meshedit subdivide`) runs on: the machine's
-// cores, at least 1.
+// The machine's cores, at least 1: the threads a whole-mesh pass started by the user (L in the window, `meshedit
+// subdivide`, the renderer's build) runs on, and the default number of `meshedit grade` jobs.
 inline int hardware_threads() {
   const unsigned cores = std::thread::hardware_concurrency();
-  return cores == 0 ? 1 : int(std::min(cores, 64u));
+  return cores == 0 ? 1 : static_cast<int>(cores);
 }
 
 inline size_t chunk_count(int threads, size_t n) {
