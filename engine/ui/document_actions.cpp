@@ -108,8 +108,9 @@ Check collapse_selected(MeshDocument& doc, Selection& selection) {
 }
 
 Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights weights) {
-  const Check check =
-      apply_operation(doc, "Loop subdivision", [&](HalfedgeMesh& mesh) { return loop_subdivide(mesh, weights, 1, hardware_threads()); });
+  const Check check = apply_operation(doc, "Loop subdivision", [&](HalfedgeMesh& mesh) {
+    return loop_subdivide(mesh, weights, 1, hardware_threads());  // the same mesh on any thread count
+  });
   keep_if_alive(selection, doc.mesh);
   if (check) doc.loop = LoopStepper{};
   return check;
