@@ -7,6 +7,9 @@
 //   tells how many chunks a call with the same (threads, n) makes, for passes that keep one partial result per
 //   chunk (prefix sums, per-thread sums). The split depends on (threads, n) only, so such results are
 //   deterministic.
+// - parallel_stripes: the same fixed chunks, one per thread, each made of every chunks-th block of [0, n) (block c,
+//   c + chunks, c + 2 * chunks, ...), so each thread gets its share of the slow and the fast parts of a mesh while
+//   its partial result still depends on (threads, n) only.
 // - parallel_for: the range is cut into kBlocksPerThread blocks per thread, in index order, and each thread takes
 //   the next block not yet taken. On a mesh the cost per index is uneven (old elements' neighbours lie further
 //   apart than new ones'), and fixed halves left one thread waiting for the other for up to a third of a pass. Which
@@ -74,6 +77,25 @@ void parallel_chunks(int threads, size_t n, Fn&& fn) {
   for (const std::exception_ptr& error : errors) {
     if (error) std::rethrow_exception(error);
   }
+}
+
+// Blocks per chunk in parallel_stripes: enough that each chunk samples the whole range evenly.
+inline constexpr size_t kStripesPerChunk = 32;
+
+// How many blocks parallel_stripes cuts [0, n) into for `chunks` chunks: kStripesPerChunk per chunk, but no block
+// under kMinItemsPerThread / 4 items, and at least one per chunk.
+inline size_t stripe_blocks(size_t chunks, size_t n) {
+  return std::max(chunks, std::min(chunks * kStripesPerChunk, n / (kMinItemsPerThread / 4)));
+}
+
+// fn(chunk, begin, end) for every block of chunk `chunk`, in index order, on that chunk's thread; chunks as
+// chunk_count(threads, n) gives them.
+template <class Fn>
+void parallel_stripes(int threads, size_t n, Fn&& fn) {
+  const size_t chunks = chunk_count(threads, n), blocks = stripe_blocks(chunks, n);
+  parallel_chunks(threads, n, [&](size_t chunk, size_t, size_t) {
+    for (size_t b = chunk; b < blocks; b += chunks) fn(chunk, chunk_begin(b, blocks, n), chunk_begin(b + 1, blocks, n));
+  });
 }
 
 inline constexpr size_t kBlocksPerThread = 8;

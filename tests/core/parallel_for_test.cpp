@@ -1,10 +1,12 @@
-// parallel_for and parallel_chunks (parallel_for.h): every index is handed out exactly once, in ranges that lie
-// inside [0, n), for thread counts and sizes around the points where the split changes; parallel_chunks' chunks are
-// the documented fixed ranges; both return only when every range is done.
+// parallel_for, parallel_chunks and parallel_stripes (parallel_for.h): every index is handed out exactly once, in
+// ranges that lie inside [0, n), for thread counts and sizes around the points where the split changes;
+// parallel_chunks' chunks are the documented fixed ranges, parallel_stripes' the documented interleaved blocks; all
+// return only when every range is done.
 #include "core/parallel_for.h"
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <memory>
@@ -12,6 +14,7 @@
 #include <set>
 #include <thread>
 #include <utility>
+#include <vector>
 
 namespace meshedit {
 namespace {
@@ -78,6 +81,44 @@ TEST(ParallelChunks, ChunksAreTheDocumentedFixedRanges) {
         covered = end;
       }
       EXPECT_EQ(covered, n);
+    }
+  }
+}
+
+TEST(ParallelStripes, ChunkCTakesEveryChunksThBlockInOrder) {
+  for (const int threads : {0, 1, 2, 3, 8}) {
+    for (const size_t n : kSizes) {
+      const size_t chunks = chunk_count(threads, n), blocks = stripe_blocks(chunks, n);
+      ASSERT_GE(blocks, chunks);
+      std::mutex mutex;
+      std::vector<std::vector<std::pair<size_t, size_t>>> taken(chunks);
+      parallel_stripes(threads, n, [&](size_t chunk, size_t begin, size_t end) {
+        const std::lock_guard<std::mutex> lock(mutex);
+        ASSERT_LT(chunk, chunks);
+        taken[chunk].push_back({begin, end});
+      });
+      // Chunk c ran blocks c, c + chunks, ... in that order; together the blocks tile [0, n) with no gap.
+      std::vector<std::pair<size_t, size_t>> all;
+      for (size_t c = 0; c < chunks; ++c) {
+        size_t b = c;
+        for (const auto& range : taken[c]) {
+          EXPECT_EQ(range, std::make_pair(chunk_begin(b, blocks, n), chunk_begin(b + 1, blocks, n))) << n;
+          b += chunks;
+        }
+        EXPECT_GE(b, blocks) << "chunk " << c << " missed a block of " << n;
+        all.insert(all.end(), taken[c].begin(), taken[c].end());
+      }
+      std::sort(all.begin(), all.end());
+      size_t covered = 0;
+      for (const auto& [begin, end] : all) {
+        EXPECT_EQ(begin, covered);
+        covered = end;
+      }
+      EXPECT_EQ(covered, n) << threads;
+      // A big range gives every chunk blocks from its start, its middle and its end.
+      if (n >= kMinItemsPerThread * 80 && chunks > 1) {
+        EXPECT_EQ(blocks, chunks * kStripesPerChunk);
+      }
     }
   }
 }
