@@ -36,8 +36,12 @@ struct MeshStorage {
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
   // every pointer of every new element (and every new position) before the mesh is used. Capacities never shrink.
+  // Out of memory, throws std::bad_alloc with the mesh as it was: every array gets its room before any size or count
+  // changes, so the resizes below allocate nothing. That room is exact: a caller that grows in steps calls
+  // reserve_total for the last step first, as Loop does, so the steps do not copy the arrays again each time.
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.journal_.before_bulk_write();
+    reserve_total(m, vertices, halfedges, edges, faces);
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
     m.live_edges_ += edges - m.edge_capacity();
