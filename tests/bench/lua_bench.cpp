@@ -1,7 +1,8 @@
 // lua_bench: what scripts pay for the mesh API (not a test: nothing is asserted). Prints the cost of one
 // handle field read and write, of iteration and of v.position beside the interpreter's own costs (an empty
 // loop, a plain-table field read, a call to a C function that does nothing, a userdata field read through a C
-// __index that does nothing), then a student-style Lua `upsample` against the core's Loop subdivision.
+// __index that does nothing, one through a C __index that only makes a new userdata: what any element value costs
+// the interpreter, and a vec3 table made in Lua), then a student-style Lua `upsample` against the core's Loop subdivision.
 //
 //   lua_bench [--mesh FILE] [--upsample FILE.lua] [--reads N] [--reps R]
 // Defaults: the course teapot (../shared/data/cs184/dae/teapot.dae, 2464 faces) when present, else a torus of
@@ -81,11 +82,27 @@ int main(int argc, char** argv) {
   lua_setfield(lua.state(), -2, "__index");
   lua_setmetatable(lua.state(), -2);
   lua_setglobal(lua.state(), "u");
+  // The floor for a read that yields an element: an __index that makes a fresh userdata the size of a handle, with
+  // one user value (copied from its argument, as a handle's mesh is) and a metatable, and does nothing else.
+  lua_newuserdatauv(lua.state(), 16, 1);
+  lua_createtable(lua.state(), 0, 1);
+  lua_pushvalue(lua.state(), -1);
+  lua_pushcclosure(lua.state(), [](lua_State* L) {
+    lua_newuserdatauv(L, 16, 1);
+    lua_getiuservalue(L, 1, 1);
+    lua_setiuservalue(L, -2, 1);
+    lua_pushvalue(L, lua_upvalueindex(1));
+    lua_setmetatable(L, -2);
+    return 1;
+  }, 1);
+  lua_setfield(lua.state(), -2, "__index");
+  lua_setmetatable(lua.state(), -2);
+  lua_setglobal(lua.state(), "w");
 
   // Each loop body does one operation N times; the empty loop is subtracted to leave the operation's cost.
   auto per_op_ns = [&](const char* body) {
     const std::string code = "local h = mesh:halfedge(0) local v = mesh:vertex(0) local t = {next = 1} "
-                             "local f, u = c_identity, u local n = h.next local x for i = 1, N do " +
+                             "local f, u, w, mt = c_identity, u, w, {} local n = h.next local x for i = 1, N do " +
                              std::string(body) + " end";
     return min_ms(reps, [] {}, [&] { lua.run_string(code, "bench.lua"); }) * 1e6 / double(reads);
   };
@@ -96,11 +113,18 @@ int main(int argc, char** argv) {
   std::printf("%-36s %8.1f ns\n", "plain table field read (t.next)", table_read);
   std::printf("%-36s %8.1f ns\n", "C function call (f(h))", c_call);
   std::printf("%-36s %8.1f ns\n", "empty C __index (u.next)", per_op_ns("x = u.next") - empty);
+  const double new_userdata = per_op_ns("x = w.next") - empty;
+  std::printf("%-36s %8.1f ns\n", "C __index making a userdata (w.next)", new_userdata);
   const double handle_read = per_op_ns("x = h.next") - empty;
-  std::printf("%-36s %8.1f ns  (%.1fx a table read plus a C call)\n", "handle field read (h.next)", handle_read,
-              handle_read / (table_read + c_call));
+  std::printf("%-36s %8.1f ns  (%.1fx a table read plus a C call; the binding's own share %.1f ns)\n",
+              "handle field read (h.next)", handle_read, handle_read / (table_read + c_call),
+              handle_read - new_userdata);
   std::printf("%-36s %8.1f ns\n", "handle field write (h.next = n)", per_op_ns("h.next = n") - empty);
-  std::printf("%-36s %8.1f ns\n", "position read (v.position)", per_op_ns("x = v.position") - empty);
+  const double position_read = per_op_ns("x = v.position") - empty;
+  const double lua_vec3 = per_op_ns("x = setmetatable({x = 1.5, y = 2.5, z = i}, mt)") - empty;
+  std::printf("%-36s %8.1f ns\n", "{x, y, z} with a metatable, in Lua", lua_vec3);
+  std::printf("%-36s %8.1f ns  (%.2fx making the same vec3 in Lua)\n", "position read (v.position)", position_read,
+              position_read / lua_vec3);
   std::printf("%-36s %8.1f ns\n", "method call (v:degree())", per_op_ns("x = v:degree()") - empty);
   const double iterate = min_ms(reps, [] {}, [&] {
     lua.run_string("for i = 1, 10 do for h in mesh:halfedges() do end end", "bench.lua");
