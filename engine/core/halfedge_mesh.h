@@ -32,22 +32,16 @@
 #include <glm/vec3.hpp>
 
 #include "core/alive_flags.h"
-#include "core/big_array_allocator.h"
 #include "core/ids.h"
+#include "core/mesh_array.h"
 
 namespace meshedit {
 
-// The storage of every per-element array (see big_array_allocator.h for why big arrays are mapped apart).
-template <class T>
-using MeshArray = std::vector<T, BigArrayAllocator<T>>;
-
-// Resizes `a` to `n` leaving the new elements' bytes unset (trivially copyable T; whatever the memory held): for a
-// caller that writes every one of them before reading any, so fresh pages are first touched by that pass (on its
-// threads) and not by a value-initialising loop before it.
+// Resizes `a` to `n` leaving the new elements' bytes unset (MeshArray::resize_for_overwrite): for a caller that
+// writes every one of them before reading any.
 template <class T>
 void resize_for_overwrite(MeshArray<T>& a, size_t n) {
-  const big_array_detail::SkipDefaultInit skip;
-  a.resize(n);
+  a.resize_for_overwrite(n);
 }
 
 // Iterates the live ids of one kind; the end is fixed when the range is made, so elements appended

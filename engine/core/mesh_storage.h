@@ -50,14 +50,11 @@ struct MeshStorage {
     m.h_alive_.resize(halfedges, true);
     m.e_alive_.resize(edges, true);
     m.f_alive_.resize(faces, true);
-    {
-      const big_array_detail::SkipDefaultInit skip;
-      m.v_halfedge_.resize(vertices);
-      m.v_position_.resize(vertices);
-      m.h_.resize(halfedges);
-      m.e_halfedge_.resize(edges);
-      m.f_halfedge_.resize(faces);
-    }
+    m.v_halfedge_.resize_for_overwrite(vertices);
+    m.v_position_.resize_for_overwrite(vertices);
+    m.h_.resize_for_overwrite(halfedges);
+    m.e_halfedge_.resize_for_overwrite(edges);
+    m.f_halfedge_.resize_for_overwrite(faces);
     m.touch();
   }
 

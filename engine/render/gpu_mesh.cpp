@@ -160,8 +160,10 @@ void GpuMesh::draw_triangles(GLint extra_location, GLuint unit) const {
 }
 
 namespace {
-template <class T, class A>
-void read_buffer(GLenum target, GLuint buffer, size_t count, std::vector<T, A>& out) {
+// `Array` is a std::vector or a MeshArray of T.
+template <class Array>
+void read_buffer(GLenum target, GLuint buffer, size_t count, Array& out) {
+  using T = typename Array::value_type;
   out.resize(count);
   if (count == 0) return;
   glBindBuffer(target, buffer);

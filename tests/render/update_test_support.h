@@ -6,6 +6,7 @@
 #include <gtest/gtest.h>
 
 #include <cstring>
+#include <type_traits>
 #include <vector>
 
 #include "core/history.h"
@@ -13,8 +14,11 @@
 
 namespace meshedit::testing {
 
-template <class T, class A, class B>
-bool same_bytes(const std::vector<T, A>& a, const std::vector<T, B>& b) {
+// Two arrays (std::vector or MeshArray) of the same element type, byte for byte.
+template <class A, class B>
+bool same_bytes(const A& a, const B& b) {
+  using T = typename A::value_type;
+  static_assert(std::is_same_v<T, typename B::value_type>);
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(T)) == 0);
 }
 
