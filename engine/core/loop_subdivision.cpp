@@ -32,8 +32,8 @@ bool flagged(const std::vector<uint8_t>& flags, uint32_t index) { return index <
 
 }  // namespace
 
-Check can_loop_subdivide(const HalfedgeMesh& mesh) {
-  if (loop_input_is_clean(mesh)) return Check::yes();  // quick_check.h: sufficient; the full checks explain
+Check can_loop_subdivide(const HalfedgeMesh& mesh, int threads) {
+  if (loop_input_is_clean(mesh, threads)) return Check::yes();  // quick_check.h: sufficient; the full checks explain
   return can_loop_subdivide_without_shortcut(mesh);
 }
 

@@ -46,7 +46,8 @@ struct LoopState {
   std::vector<glm::dvec3> new_position;     // phase 2: final position of every vertex, by id
 };
 
-Check can_loop_subdivide(const HalfedgeMesh& mesh);
+// `threads`: for the quick check of a big mesh (quick_check.h); the answer does not depend on it.
+Check can_loop_subdivide(const HalfedgeMesh& mesh, int threads = 1);
 // Every check, always, without quick_check.h's shortcut (for tests of that shortcut).
 Check can_loop_subdivide_without_shortcut(const HalfedgeMesh& mesh);
 // Each phase assumes the previous ones ran on the same mesh; phase 1 refuses what can_loop_subdivide refuses.

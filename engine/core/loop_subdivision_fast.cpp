@@ -397,7 +397,7 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
   if (levels <= 0) return Check::yes();
   // Checked once: a mesh this accepts subdivides into one it accepts again (valid, triangles, no two faces with
   // the same corners), so later levels need no check.
-  if (Check ok = can_loop_subdivide(mesh); !ok) return ok;
+  if (Check ok = can_loop_subdivide(mesh, threads); !ok) return ok;
   // Room for the last level up front, so no level copies the arrays again. Per level, capacities grow by at most
   // E vertices, 6E halfedges, 3E edges and 2E faces (fewer on a boundary), and the live counts become
   // E' = 2E + 3F, F' = 4F.

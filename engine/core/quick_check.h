@@ -14,7 +14,9 @@
 
 namespace meshedit {
 
-bool mesh_is_clean(const HalfedgeMesh& mesh);
-bool loop_input_is_clean(const HalfedgeMesh& mesh);
+// Each pass runs on up to `threads` threads (a big mesh's whole-mesh passes: the window's validation, L); the answer
+// does not depend on the count.
+bool mesh_is_clean(const HalfedgeMesh& mesh, int threads = 1);
+bool loop_input_is_clean(const HalfedgeMesh& mesh, int threads = 1);
 
 }  // namespace meshedit

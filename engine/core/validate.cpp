@@ -520,8 +520,8 @@ std::string ValidationReport::summary() const {
   return s;
 }
 
-ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations) {
-  if (mesh_is_clean(mesh)) return {};  // quick_check.h: a sufficient test, so a valid mesh skips the full walk
+ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations, int threads) {
+  if (mesh_is_clean(mesh, threads)) return {};  // quick_check.h: a sufficient test, so a valid mesh skips the full walk
   return Validator(mesh, max_violations).run();
 }
 

@@ -67,9 +67,13 @@ struct ValidationReport {
   std::string summary() const;
 };
 
-// Starts with quick_check.h's mesh_is_clean, so a valid mesh costs a few array passes.
-ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations = 100);
+// How many violations a report lists by default (it counts them all).
+inline constexpr size_t kListedViolations = 100;
+
+// Starts with quick_check.h's mesh_is_clean, so a valid mesh costs a few array passes (on up to `threads` threads;
+// the report does not depend on the count).
+ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations = kListedViolations, int threads = 1);
 // Every check, always (for tests of the quick path).
-ValidationReport validate_without_shortcut(const HalfedgeMesh& mesh, size_t max_violations = 100);
+ValidationReport validate_without_shortcut(const HalfedgeMesh& mesh, size_t max_violations = kListedViolations);
 
 }  // namespace meshedit

@@ -25,6 +25,7 @@
 #include "core/change_journal.h"
 #include "core/mesh_error.h"
 #include "core/mesh_storage.h"
+#include "core/parallel_for.h"
 
 namespace meshedit {
 namespace {
@@ -429,7 +430,7 @@ const T& cached(VersionCache<T>& cache, const MeshDocument& doc, Compute&& compu
 }  // namespace
 
 const ValidationReport& cached_validation(MeshDocument& doc) {
-  return cached(doc.validation, doc, [&] { return validate(doc.mesh); });
+  return cached(doc.validation, doc, [&] { return validate(doc.mesh, kListedViolations, hardware_threads()); });
 }
 
 const MeshStats& cached_stats(MeshDocument& doc) {
