@@ -78,6 +78,10 @@ bool EditorApp::open(const std::filesystem::path& path) {
   }
 }
 
+void EditorApp::open_dropped(const std::vector<std::string>& paths) {
+  for (const std::string& path : paths) open(path);
+}
+
 bool EditorApp::save(const std::filesystem::path& path) {
   try {
     save_mesh(path, to_polygon_mesh(doc_.mesh));

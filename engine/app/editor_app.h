@@ -16,6 +16,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
@@ -58,6 +59,8 @@ class EditorApp {
   // Opens any supported file; on failure keeps the current document and reports the error. Returns
   // whether it opened.
   bool open(const std::filesystem::path& path);
+  // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
+  void open_dropped(const std::vector<std::string>& paths);
   // Shows `mesh` as a new document (the default cube when started without a file).
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
   // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
