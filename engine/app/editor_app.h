@@ -5,7 +5,10 @@
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
 //   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do.
-// - Opening a file that fails leaves everything as it was and shows the error in the status line.
+// - Opening a file that fails leaves everything as it was and shows the error in the status line. open(), save() and
+//   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
+//   memory (ui/exception_report.h). Out of memory part-way through opening, the document is the old one or the new
+//   one, whole (replace_mesh).
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
