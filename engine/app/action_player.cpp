@@ -8,6 +8,7 @@
 
 #include "app/editor_app.h"
 #include "ui/document_actions.h"
+#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {
@@ -49,19 +50,25 @@ bool ActionPlayer::step(EditorApp& app) {
   // Checks need no frame of their own: run them together with the action before the next one that does.
   while (next_ < actions_.size()) {
     const ScriptedAction& a = actions_[next_++];
-    try {
-      if (!run(app, a)) return false;
-    } catch (const std::exception& e) {
-      fail(a, e.what());
-    }
+    bool quit = false;
+    // Between frames, outside the frame guard: the action's failure is counted, and whatever still escapes goes to
+    // the status line instead of ending the window.
+    run_guarded(app.document(), [&] {
+      try {
+        quit = !run(app, a);
+      } catch (const std::exception& e) {
+        fail(a, e.what());
+      }
+    });
+    if (quit) return false;
     const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0;
     if (!checks_follow) return true;
   }
   return false;
 }
 
-void ActionPlayer::fail(const ScriptedAction& a, const std::string& why) {
-  ++failures_;
+void ActionPlayer::fail(const ScriptedAction& a, std::string_view why) {
+  ++failures_;  // first: a log that cannot be written (a stream out of memory goes bad) still fails the script
   log_ << a.source << ": " << a.verb << " failed: " << why << "\n";
 }
 

@@ -1,14 +1,17 @@
 // ActionPlayer: plays scripted actions (scripted_actions.h) against the window's EditorApp, one step per frame, through
 // the same handlers a key press or a click reaches, and counts the expectations that did not hold.
 //
-// Invariants: an action that throws counts as a failed expectation (logged with its source line) and the script goes
-// on with the next action; `frames N` makes the next N steps wait; checks (`expect-*`) run in the step of the action
-// before them, so they need no frame of their own.
+// Invariants: an action that throws, out of memory included, counts as a failed expectation (counted before it is
+// logged with its source line, and logged without a copy of its message) and the script goes on with the next
+// action; step() runs between frames, outside the frame guard, so it never throws: whatever escapes an action and its
+// report is an Error in the status line (ui/exception_report.h). `frames N` makes the next N steps wait; checks
+// (`expect-*`) run in the step of the action before them, so they need no frame of their own.
 #pragma once
 
 #include <cstddef>
 #include <ostream>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "app/scripted_actions.h"
@@ -29,7 +32,7 @@ class ActionPlayer {
   bool step(EditorApp& app);
 
  private:
-  void fail(const ScriptedAction& a, const std::string& why);
+  void fail(const ScriptedAction& a, std::string_view why);
   bool run(EditorApp& app, const ScriptedAction& a);
   void expect_field(EditorApp& app, const ScriptedAction& a);
 

@@ -82,7 +82,9 @@ bool EditorApp::open(const std::filesystem::path& path) {
 }
 
 void EditorApp::open_dropped(const std::vector<std::string>& paths) {
-  for (const std::string& path : paths) open(path);
+  // Called between frames, outside the frame guard: each file under its own guard, so what escapes opening one (a
+  // path that cannot be made for lack of memory) is an Error in the status line and the next file still opens.
+  for (const std::string& path : paths) run_guarded(doc_, [&] { open(path); });
 }
 
 bool EditorApp::save(const std::filesystem::path& path) {

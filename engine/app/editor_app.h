@@ -63,6 +63,7 @@ class EditorApp {
   // whether it opened.
   bool open(const std::filesystem::path& path);
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
+  // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);
   // Shows `mesh` as a new document (the default cube when started without a file).
   void show_mesh(HalfedgeMesh mesh, const std::string& name);

@@ -1,8 +1,10 @@
-// EditorApp when memory runs out in what it reports itself: opening a file (a missing one, one that opens) and
-// saving where nothing can be written. FailingAllocations fails the Nth allocation, or the Nth and every later one,
-// for N = 1, 2, ... until the call gets through without a failure. Each time nothing escapes; the document is the one
-// before or the opened one, whole and valid; a message other than the one memory to spare gives is an Error that
-// says memory ran out; and the call then works with memory to spare.
+// EditorApp when memory runs out in what it reports itself and in what the window runs outside the frame guard:
+// opening a file (a missing one, one that opens), saving where nothing can be written, the files dropped on the
+// window, and a script of actions (--actions). FailingAllocations fails the Nth allocation, or the Nth and every
+// later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing escapes; the document
+// is the one before or the opened one, whole and valid; a message other than the one memory to spare gives is an
+// Error that says memory ran out; the call then works with memory to spare; and the script counts a failed
+// expectation whenever an action was not done.
 // EditorApp needs an OpenGL context: a surfaceless EGL one, as the render tests use; skipped where none can be made.
 // Nothing draws while allocations fail: the driver's shader compiler may allocate through the replaced operator new.
 #include <unistd.h>
@@ -10,11 +12,15 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <sstream>
 #include <string>
+#include <vector>
 
 #include <gtest/gtest.h>
 
+#include "app/action_player.h"
 #include "app/editor_app.h"
+#include "app/scripted_actions.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "core/validate.h"
@@ -181,6 +187,79 @@ TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
       EXPECT_FALSE(saved);
       EXPECT_TRUE(left_alone(doc, before));
       EXPECT_TRUE(doc.message.text == spare.text || is_memory_error(doc.message)) << doc.message.text;
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {
+  MeshDocument& doc = fresh_document();
+  const std::vector<std::string> dropped = {missing_.string(), tetrahedron_.string()};
+  app_->open_dropped(dropped);
+  const HalfedgeMesh opened = doc.mesh;
+  const DocumentMessage spare = doc.message;
+  ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      const Before before = before_of(doc);
+      const bool failed = run_failing(n, later, [&] { app_->open_dropped(dropped); });
+      if (doc.message.severity == Severity::Info) {
+        EXPECT_TRUE(replaced_by(doc, before, opened));
+        EXPECT_EQ(doc.message.text, spare.text);
+      } else {
+        // The tetrahedron ran out of memory, or the missing file did and memory stayed short.
+        EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
+        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
+      }
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+// Flip, a select that fails (the one expectation that does not hold with memory to spare), split and undo, each
+// checked by its message: an action that memory kept from being done fails an expectation too ("flip e4: memory
+// ran out; ..." says no "fields changed").
+constexpr char kScript[] =
+    "select e4\n"
+    "key F\n"
+    "expect-message fields changed\n"
+    "select e999\n"
+    "key S\n"
+    "expect-message new vertex\n"
+    "expect-selected e4\n"
+    "key ctrl+Z\n"
+    "expect-message fields changed\n"
+    "expect-valid\n";
+
+TEST_F(EditorAppOutOfMemory, AScriptedActionThatRunsOutIsAFailedExpectationNotTheEnd) {
+  const std::vector<ScriptedAction> actions = parse_actions(kScript, "script.txt");
+  MeshDocument& doc = fresh_document();
+  std::ostringstream spare_log;
+  ActionPlayer spare(actions, spare_log);
+  while (spare.step(*app_)) {
+  }
+  ASSERT_EQ(spare.failures(), 1);
+  EXPECT_EQ(spare_log.str(), "script.txt:4: select failed: e999 is not live\n");
+  const HalfedgeMesh played = doc.mesh;
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      std::ostringstream log;
+      ActionPlayer player(actions, log);
+      const bool failed = run_failing(n, later, [&] {
+        while (player.step(*app_)) {
+        }
+      });
+      EXPECT_GE(player.failures(), 1);
+      if (player.failures() == 1) {
+        EXPECT_TRUE(doc.mesh.same_as(played));  // every expectation but the select's held: every action was done
+      }
+      EXPECT_TRUE(validate(doc.mesh).ok());
+      const ElementRef selected = app_->selection().selected;
+      EXPECT_TRUE(!selected.valid() || doc.mesh.alive(selected)) << format_id(selected);
       if (!failed || HasFailure()) break;
     }
   }
