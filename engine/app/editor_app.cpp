@@ -13,6 +13,7 @@
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
 #include "render/render_target.h"
+#include "ui/exception_report.h"
 #include "ui/frame_guard.h"
 
 namespace meshedit {
@@ -54,9 +55,9 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
 }
 
 bool EditorApp::open(const std::filesystem::path& path) {
-  if (path.extension() == ".lua") return open_lesson(path);
-  exercises_.finish_replay(doc_);
   try {
+    if (path.extension() == ".lua") return open_lesson(path);
+    exercises_.finish_replay(doc_);
     const LoadedFile file = load_file(path);
     switch (file.kind) {
       case FileKind::Curve:
@@ -73,9 +74,17 @@ bool EditorApp::open(const std::filesystem::path& path) {
     message(Severity::Info, "opened " + path.string());
     return true;
   } catch (const std::exception& e) {
-    message(Severity::Error, e.what());  // the current document stays as it was
+    // The current document stays (out of memory part-way: the old one or the new one, whole); the report needs no
+    // memory, so nothing escapes from here.
+    report_exception(doc_, e);
     return false;
   }
+}
+
+void EditorApp::open_dropped(const std::vector<std::string>& paths) {
+  // Called between frames, outside the frame guard: each file under its own guard, so what escapes opening one (a
+  // path that cannot be made for lack of memory) is an Error in the status line and the next file still opens.
+  for (const std::string& path : paths) run_guarded(doc_, [&] { open(path); });
 }
 
 bool EditorApp::save(const std::filesystem::path& path) {
@@ -85,21 +94,21 @@ bool EditorApp::save(const std::filesystem::path& path) {
     message(Severity::Info, "saved " + path.string());
     return true;
   } catch (const std::exception& e) {
-    message(Severity::Error, e.what());
+    report_exception(doc_, e);
     return false;
   }
 }
 
 void EditorApp::write_pending_screenshot(int width, int height) {
   if (!screenshot_path_) return;
-  const std::filesystem::path path = *screenshot_path_;
+  const std::filesystem::path path = std::move(*screenshot_path_);  // moved: no copy to run out of memory
   screenshot_path_.reset();
   try {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     write_png(path, width, height, read_pixels({width, height}));
     message(Severity::Info, "screenshot saved to " + path.string());
   } catch (const std::exception& e) {
-    message(Severity::Error, e.what());
+    report_exception(doc_, e);  // called outside the frame guard (between rendering and the swap): never throws
   }
 }
 

@@ -5,7 +5,10 @@
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
 //   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do.
-// - Opening a file that fails leaves everything as it was and shows the error in the status line.
+// - Opening a file that fails leaves everything as it was and shows the error in the status line. open(), save() and
+//   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
+//   memory (ui/exception_report.h). Out of memory part-way through opening, the document is the old one or the new
+//   one, whole (replace_mesh).
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
@@ -16,6 +19,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
@@ -58,6 +62,9 @@ class EditorApp {
   // Opens any supported file; on failure keeps the current document and reports the error. Returns
   // whether it opened.
   bool open(const std::filesystem::path& path);
+  // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
+  // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
+  void open_dropped(const std::vector<std::string>& paths);
   // Shows `mesh` as a new document (the default cube when started without a file).
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
   // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.

@@ -1,5 +1,13 @@
 // Key and button actions on a MeshDocument (see document_actions.h for the contracts).
+//
+// Out of memory: what an action allocates itself before the edit (the edge's refusal sentence, the edit's label, Loop
+// phase 1's state) is made before the document changes, and a std::bad_alloc there ends the action with nothing done
+// (Error, kMemoryRanOut); the edit runs through apply_operation, undo or redo, which never throw it; every message
+// is set with set_message_noexcept or append_to_message, which fall back to kMemoryRanOut; the bookkeeping that
+// follows a kept change (the selection, the Loop stepper) allocates nothing.
 #include "ui/document_actions.h"
+
+#include <new>
 
 #include "core/mesh_ops.h"
 #include "core/parallel_for.h"
@@ -7,7 +15,10 @@
 namespace meshedit {
 namespace {
 
-const char* const kLoopPhaseLabels[] = {
+// The edits' labels as strings made when the program starts: apply_operation takes them without a copy that could run
+// out of memory (each is longer than std::string's inline buffer).
+const std::string kLoopSubdivisionLabel = "Loop subdivision";
+const std::string kLoopPhaseLabels[] = {
     "",
     "Loop 1/4: compute new positions",
     "Loop 2/4: split every original edge",
@@ -19,18 +30,45 @@ bool loop_state_current(const MeshDocument& doc) {
   return doc.loop.generation == doc.generation && doc.loop.version == doc.mesh.version();
 }
 
+// What an action that ran out of memory before doing anything says and returns (no allocation: the reason fits
+// std::string's inline buffer).
+Check memory_ran_out_before_acting(MeshDocument& doc) {
+  set_memory_ran_out_message(doc, Severity::Error);
+  return Check::no(kMemoryRanOut);
+}
+
+// Appends `make_text()` to the message; when that runs out of memory the message becomes kMemoryRanOut (its
+// severity kept, at least a Warning). Never throws.
+template <class MakeText>
+void append_to_message(MeshDocument& doc, MakeText&& make_text) noexcept {
+  try {
+    doc.message.text += make_text();
+  } catch (const std::bad_alloc&) {
+    set_memory_ran_out_message(doc, doc.message.severity, doc.message.element);
+  }
+}
+
 // Runs a local operation on the selected edge and reports the outcome on doc.message.
 template <class Op>
 auto edit_selected_edge(MeshDocument& doc, Selection& selection, const char* verb, Op op) {
   using Result = decltype(op(doc.mesh, EdgeId()));
-  const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
+  Result result{};
+  OpResult<EdgeId> edge;
+  std::string label;
+  try {
+    edge = edge_for_operation(doc.mesh, selection.selected);
+    if (edge) label = std::string(verb) + " " + format_id(edge.value);
+  } catch (const std::bad_alloc&) {
+    result.check = memory_ran_out_before_acting(doc);
+    return result;
+  }
   if (!edge) {
-    set_message(doc, Severity::Warning, std::string(verb) + ": " + edge.check.reason);
-    return Result{edge.check, {}};
+    set_message_noexcept(doc, Severity::Warning, [&] { return std::string(verb) + ": " + edge.check.reason; });
+    result.check = std::move(edge.check);
+    return result;
   }
   const EdgeId e = edge.value;
-  Result result =
-      apply_operation(doc, std::string(verb) + " " + format_id(e), [&](HalfedgeMesh& mesh) { return op(mesh, e); });
+  result = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return op(mesh, e); });
   keep_if_alive(selection, doc.mesh);
   return result;
 }
@@ -66,20 +104,29 @@ OpResult<EdgeId> edge_for_operation(const HalfedgeMesh& mesh, ElementRef selecte
 }
 
 bool navigate_selection(MeshDocument& doc, Selection& selection, NavStep step) {
-  const OpResult<ElementRef> target = navigate(doc.mesh, selection.selected, step);
+  OpResult<ElementRef> target;
+  try {
+    target = navigate(doc.mesh, selection.selected, step);
+  } catch (const std::bad_alloc&) {
+    memory_ran_out_before_acting(doc);
+    return false;
+  }
   if (!target) {
-    set_message(doc, Severity::Warning, std::string(1, nav_key(step)) + " (" + nav_field(step) + "): " +
-                                            target.check.reason);
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return std::string(1, nav_key(step)) + " (" + nav_field(step) + "): " + target.check.reason;
+    });
     return false;
   }
   selection.selected = target.value;
-  set_message(doc, Severity::Info, std::string(1, nav_key(step)) + ": selected " + format_id(target.value));
+  set_message_noexcept(doc, Severity::Info,
+                       [&] { return std::string(1, nav_key(step)) + ": selected " + format_id(target.value); });
   return true;
 }
 
 bool select_element(MeshDocument& doc, Selection& selection, ElementRef element) {
   if (!in_range(doc.mesh, element)) {
-    set_message(doc, Severity::Warning, "cannot select: " + reference_problem(doc.mesh, element));
+    set_message_noexcept(doc, Severity::Warning,
+                         [&] { return "cannot select: " + reference_problem(doc.mesh, element); });
     return false;
   }
   selection.selected = element;
@@ -91,24 +138,24 @@ Check flip_selected(MeshDocument& doc, Selection& selection) {
 }
 
 Check split_selected(MeshDocument& doc, Selection& selection) {
-  const OpResult<VertexId> result =
+  OpResult<VertexId> result =
       edit_selected_edge(doc, selection, "split", [](HalfedgeMesh& m, EdgeId e) { return split(m, e); });
-  if (result) doc.message.text += "; new vertex " + format_id(result.value);
-  return result.check;
+  if (result) append_to_message(doc, [&] { return "; new vertex " + format_id(result.value); });
+  return std::move(result.check);
 }
 
 Check collapse_selected(MeshDocument& doc, Selection& selection) {
-  const OpResult<VertexId> result =
+  OpResult<VertexId> result =
       edit_selected_edge(doc, selection, "collapse", [](HalfedgeMesh& m, EdgeId e) { return collapse(m, e); });
   if (result) {
     selection.selected = result.value;
-    doc.message.text += "; " + format_id(result.value) + " remains";
+    append_to_message(doc, [&] { return "; " + format_id(result.value) + " remains"; });
   }
-  return result.check;
+  return std::move(result.check);
 }
 
 Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights weights) {
-  const Check check = apply_operation(doc, "Loop subdivision", [&](HalfedgeMesh& mesh) {
+  Check check = apply_operation(doc, kLoopSubdivisionLabel, [&](HalfedgeMesh& mesh) {
     return loop_subdivide(mesh, weights, 1, hardware_threads());  // the same mesh on any thread count
   });
   keep_if_alive(selection, doc.mesh);
@@ -122,24 +169,34 @@ std::string next_loop_phase_label(const MeshDocument& doc) {
 }
 
 Check loop_subdivide_step(MeshDocument& doc, Selection& selection, LoopWeights weights) {
-  std::string restarted;
-  if (doc.loop.next_phase > 1 && !loop_state_current(doc)) {
-    restarted = "the mesh changed after Loop phase " + std::to_string(doc.loop.next_phase - 1) + "; starting again. ";
-    doc.loop = LoopStepper{};
-  }
-  const int phase = doc.loop.next_phase;
-  const std::string label = kLoopPhaseLabels[phase];
+  // The mesh changed since the last phase: this press starts again at phase 1 (doc.loop is reset once phase 1 has
+  // run, so a press that runs out of memory leaves the stepper as it was).
+  const bool restarting = doc.loop.next_phase > 1 && !loop_state_current(doc);
+  const int stale_phase = doc.loop.next_phase - 1;
+  const int phase = restarting ? 1 : doc.loop.next_phase;
+  const std::string& label = kLoopPhaseLabels[phase];
+  auto restarted = [&] {
+    return restarting ? "the mesh changed after Loop phase " + std::to_string(stale_phase) + "; starting again. "
+                      : std::string();
+  };
   Check check;
   if (phase == 1) {
-    OpResult<LoopState> state = loop_compute_positions(doc.mesh, weights);
+    OpResult<LoopState> state;
+    try {
+      state = loop_compute_positions(doc.mesh, weights);
+    } catch (const std::bad_alloc&) {
+      return memory_ran_out_before_acting(doc);
+    }
+    if (restarting) doc.loop = LoopStepper{};
     if (!state) {
-      set_message(doc, Severity::Warning, restarted + label + ": " + state.check.reason);
-      return state.check;
+      set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + state.check.reason; });
+      return std::move(state.check);
     }
     doc.loop.state = std::move(state.value);
-    set_message(doc, Severity::Info,
-                restarted + label + ": positions for " + std::to_string(doc.mesh.num_vertices()) + " vertices and " +
-                    std::to_string(doc.loop.state.original_edges.size()) + " edge points; nothing moved yet");
+    set_message_noexcept(doc, Severity::Info, [&] {
+      return restarted() + label + ": positions for " + std::to_string(doc.mesh.num_vertices()) + " vertices and " +
+             std::to_string(doc.loop.state.original_edges.size()) + " edge points; nothing moved yet";
+    });
   } else {
     LoopState& state = doc.loop.state;
     check = apply_operation(doc, label, [&](HalfedgeMesh& mesh) {
@@ -150,7 +207,6 @@ Check loop_subdivide_step(MeshDocument& doc, Selection& selection, LoopWeights w
     });
     keep_if_alive(selection, doc.mesh);
     if (!check) return check;
-    if (!restarted.empty()) doc.message.text.insert(0, restarted);
   }
   doc.loop.next_phase = phase == 4 ? 1 : phase + 1;
   doc.loop.generation = doc.generation;

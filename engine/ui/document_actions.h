@@ -7,6 +7,11 @@
 //   it survives the edit (flip and split keep the edge's id), collapse selects the surviving vertex, and an
 //   element an undo removed is deselected.
 // - Edits go through apply_operation(), so a refusal changes nothing but the message.
+// - No action throws std::bad_alloc. When memory runs out, an action is either not done (mesh, history, selection
+//   and Loop stepper as they were; an Error that says memory ran out when it would have been done) or done as the
+//   document keeps it (mesh_document.h: recorded, or kept without its record); a message that cannot be built for
+//   lack of memory is kMemoryRanOut, as a Warning or worse. edge_for_operation and next_loop_phase_label return
+//   text, and may throw it.
 #pragma once
 
 #include <optional>

@@ -1,0 +1,206 @@
+// Playing scripted actions against the window (see action_player.h).
+#include "app/action_player.h"
+
+#include <GLFW/glfw3.h>
+
+#include <cctype>
+#include <stdexcept>
+
+#include "app/editor_app.h"
+#include "ui/document_actions.h"
+#include "ui/exception_report.h"
+
+namespace meshedit {
+namespace {
+
+std::string rest_of_line(const ScriptedAction& a) {
+  std::string line;
+  for (const auto& w : a.args) line += (line.empty() ? "" : " ") + w;
+  return line;
+}
+
+KeyMods parse_key(std::string text, int& key) {
+  KeyMods mods;
+  for (;;) {
+    if (text.rfind("ctrl+", 0) == 0) { mods.ctrl = true; text = text.substr(5); continue; }
+    if (text.rfind("shift+", 0) == 0) { mods.shift = true; text = text.substr(6); continue; }
+    break;
+  }
+  if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
+    key = GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(text[0])) - 'A');
+  } else if (text == "space") {
+    key = GLFW_KEY_SPACE;
+  } else if (text == "escape") {
+    key = GLFW_KEY_ESCAPE;
+  } else if (text == "grave") {
+    key = GLFW_KEY_GRAVE_ACCENT;
+  } else {
+    throw std::runtime_error("unknown key '" + text + "'");
+  }
+  return mods;
+}
+
+}  // namespace
+
+bool ActionPlayer::step(EditorApp& app) {
+  if (wait_frames_ > 0) {
+    --wait_frames_;
+    return true;
+  }
+  // Checks need no frame of their own: run them together with the action before the next one that does.
+  while (next_ < actions_.size()) {
+    const ScriptedAction& a = actions_[next_++];
+    bool quit = false;
+    // Between frames, outside the frame guard: the action's failure is counted, and whatever still escapes goes to
+    // the status line instead of ending the window.
+    run_guarded(app.document(), [&] {
+      try {
+        quit = !run(app, a);
+      } catch (const std::exception& e) {
+        fail(a, e.what());
+      }
+    });
+    if (quit) return false;
+    const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0;
+    if (!checks_follow) return true;
+  }
+  return false;
+}
+
+void ActionPlayer::fail(const ScriptedAction& a, std::string_view why) {
+  ++failures_;  // first: a log that cannot be written (a stream out of memory goes bad) still fails the script
+  log_ << a.source << ": " << a.verb << " failed: " << why << "\n";
+}
+
+bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
+  const auto& args = a.args;
+  if (a.verb == "quit") return false;
+  if (a.verb == "frames") {
+    wait_frames_ = std::stoi(args[0]);
+  } else if (a.verb == "key") {
+    int key = 0;
+    const KeyMods mods = parse_key(args[0], key);
+    app.handle_key(key, mods);
+  } else if (a.verb == "select") {
+    const auto element = parse_element(args[0]);
+    if (!element) throw std::runtime_error("not an element id: '" + args[0] + "'");
+    if (!select_element(app.document(), app.selection(), *element)) throw std::runtime_error(args[0] + " is not live");
+  } else if (a.verb == "click" || a.verb == "hover") {
+    const int x = std::stoi(args[0]), y = std::stoi(args[1]);
+    a.verb == "click" ? app.click(x, y) : app.hover(x, y);
+  } else if (a.verb == "open") {
+    if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
+  } else if (a.verb == "save") {
+    if (!app.save(args[0])) throw std::runtime_error(app.document().message.text);
+  } else if (a.verb == "orbit") {
+    app.camera().orbit(std::stod(args[0]), std::stod(args[1]));
+  } else if (a.verb == "expect-gpu-update") {
+    const RenderStats& stats = app.mesh_render_stats();
+    const std::string got = stats.last_update_patch ? "patch" : "rebuild";
+    if (args[0] != "patch" && args[0] != "rebuild") {
+      throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+    }
+    const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
+    if (got != args[0]) fail(a, "the last update was a " + got + why);
+  } else if (a.verb == "screenshot") {
+    app.request_screenshot(args[0]);
+  } else if (a.verb == "expect-selected") {
+    const std::string got = format_id(app.selection().selected);
+    if (got != args[0]) fail(a, "selected " + got + ", expected " + args[0]);
+  } else if (a.verb == "expect-field") {
+    expect_field(app, a);
+  } else if (a.verb == "expect-changed") {
+    const auto element = parse_element(args[0]);
+    const auto field = parse_field(args[1]);
+    if (!element || !field) throw std::runtime_error("expect-changed takes an element and a field name");
+    if (!app.document().last.index.contains(*element, *field)) {
+      fail(a, args[0] + "." + args[1] + " is not among the cells the last operation changed");
+    }
+  } else if (a.verb == "expect-message") {
+    const std::string& got = app.document().message.text;
+    if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "status line is '" + got + "'");
+  } else if (a.verb == "lesson-next") {
+    app.lesson().next();
+  } else if (a.verb == "lesson-back") {
+    app.lesson().back();
+  } else if (a.verb == "lesson-button") {
+    if (!app.lesson().deliver(LessonEvent::button(rest_of_line(a)))) fail(a, "the lesson is not waiting for it");
+  } else if (a.verb == "expect-lesson-step") {
+    const LessonRunner& lesson = app.lesson();
+    static const char* const states[] = {"empty", "waiting", "finished", "failed"};
+    const std::string got = std::to_string(lesson.current_step() + 1) + " " +
+                            states[int(lesson.step_state())];
+    if (got != args[0] + " " + args[1]) fail(a, "lesson is at step " + got + " (" + lesson.error() + ")");
+  } else if (a.verb == "expect-lesson-said") {
+    bool found = false;
+    for (const std::string& block : app.lesson().said()) {
+      found = found || block.find(rest_of_line(a)) != std::string::npos;
+    }
+    if (!found) fail(a, "the current step did not say it");
+  } else if (a.verb == "exercise") {
+    const auto exercise = find_exercise(args[0]);
+    if (exercise == Exercise::CurveStep || exercise == Exercise::PatchEvaluate) {
+      app.bezier_mine().set_folder(args[1]);
+    } else if (!exercise || !app.exercises().set_exercise(*exercise)) {
+      throw std::runtime_error("no exercise " + args[0]);
+    } else {
+      app.exercises().set_folder(args[1]);
+    }
+  } else if (a.verb == "expect-mine") {
+    const BezierMine& mine = app.bezier_mine();
+    const bool curve = app.mode() == ViewMode::Curve;
+    if (!(curve ? mine.curve_on() : app.mode() == ViewMode::Patches && mine.patch_on())) {
+      fail(a, "no \"mine\" switch is on in the view on screen");
+    } else if (const std::string& got = curve ? mine.curve().message : mine.patch().message;
+               got.find(rest_of_line(a)) == std::string::npos) {
+      fail(a, "the mine line is '" + got + "'");
+    }
+  } else if (a.verb == "run-mine" || a.verb == "run-reference") {
+    ExerciseSession& session = app.exercises();
+    const Check check = a.verb == "run-mine" ? session.run_mine(app.document(), app.selection())
+                                             : session.run_reference(app.document(), app.selection());
+    if (!check) fail(a, check.reason);
+  } else if (a.verb == "replay-start") {
+    if (const Check check = app.exercises().start_replay(app.document()); !check) fail(a, check.reason);
+  } else if (a.verb == "replay-step") {
+    const Check check = app.exercises().replay_step(app.document(), std::stoul(args[0]));
+    if (!check) fail(a, check.reason);
+  } else if (a.verb == "replay-finish") {
+    app.exercises().finish_replay(app.document());
+  } else if (a.verb == "console") {
+    app.run_console(rest_of_line(a));
+  } else if (a.verb == "expect-console") {
+    const auto& entries = app.console().entries();
+    const std::string got = entries.empty() ? "" : entries.back().text;
+    if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "the console's last line is '" + got + "'");
+  } else if (a.verb == "expect-valid") {
+    const ValidationReport& report = cached_validation(app.document());
+    if (!report.ok()) fail(a, report.summary());
+  }
+  return true;
+}
+
+void ActionPlayer::expect_field(EditorApp& app, const ScriptedAction& a) {
+  const HalfedgeMesh& m = app.document().mesh;
+  const auto element = parse_element(a.args[0]);
+  if (!element || !m.alive(*element)) throw std::runtime_error(a.args[0] + " is not a live element");
+  const std::string& field = a.args[1];
+  std::string got = "?";
+  if (element->kind == ElementKind::Halfedge) {
+    const HalfedgeId h(element->index);
+    if (field == "next") got = format_id(m.next(h));
+    if (field == "twin") got = format_id(m.twin(h));
+    if (field == "vertex") got = format_id(m.vertex(h));
+    if (field == "edge") got = format_id(m.edge(h));
+    if (field == "face") got = format_id(m.face(h));
+  } else if (field == "halfedge") {
+    switch (element->kind) {
+      case ElementKind::Vertex: got = format_id(m.halfedge(VertexId(element->index))); break;
+      case ElementKind::Edge: got = format_id(m.halfedge(EdgeId(element->index))); break;
+      default: got = format_id(m.halfedge(element->face_id())); break;
+    }
+  }
+  if (got != a.args[2]) fail(a, a.args[0] + "." + field + " is " + got + ", expected " + a.args[2]);
+}
+
+}  // namespace meshedit

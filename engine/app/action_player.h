@@ -1,0 +1,46 @@
+// ActionPlayer: plays scripted actions (scripted_actions.h) against the window's EditorApp, one step per frame, through
+// the same handlers a key press or a click reaches, and counts the expectations that did not hold.
+//
+// Invariants: an action that throws, out of memory included, counts as a failed expectation (counted before it is
+// logged with its source line, and logged without a copy of its message) and the script goes on with the next
+// action; step() runs between frames, outside the frame guard, so it never throws: whatever escapes an action and its
+// report is an Error in the status line (ui/exception_report.h). `frames N` makes the next N steps wait; checks
+// (`expect-*`) run in the step of the action before them, so they need no frame of their own.
+#pragma once
+
+#include <cstddef>
+#include <ostream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "app/scripted_actions.h"
+
+namespace meshedit {
+
+class EditorApp;
+
+class ActionPlayer {
+ public:
+  ActionPlayer(std::vector<ScriptedAction> actions, std::ostream& log) : actions_(std::move(actions)), log_(log) {}
+
+  bool active() const { return !actions_.empty(); }
+  bool finished() const { return next_ >= actions_.size() && wait_frames_ == 0; }
+  int failures() const { return failures_; }
+
+  // Runs the next action unless a `frames N` wait is in progress. Returns false once the script asks to quit.
+  bool step(EditorApp& app);
+
+ private:
+  void fail(const ScriptedAction& a, std::string_view why);
+  bool run(EditorApp& app, const ScriptedAction& a);
+  void expect_field(EditorApp& app, const ScriptedAction& a);
+
+  std::vector<ScriptedAction> actions_;
+  std::ostream& log_;
+  size_t next_ = 0;
+  int wait_frames_ = 0;
+  int failures_ = 0;
+};
+
+}  // namespace meshedit

@@ -1,0 +1,269 @@
+// EditorApp when memory runs out in what it reports itself and in what the window runs outside the frame guard:
+// opening a file (a missing one, one that opens), saving where nothing can be written, the files dropped on the
+// window, and a script of actions (--actions). FailingAllocations fails the Nth allocation, or the Nth and every
+// later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing escapes; the document
+// is the one before or the opened one, whole and valid; a message other than the one memory to spare gives is an
+// Error that says memory ran out; the call then works with memory to spare; and the script counts a failed
+// expectation whenever an action was not done.
+// EditorApp needs an OpenGL context: a surfaceless EGL one, as the render tests use; skipped where none can be made.
+// Nothing draws while allocations fail: the driver's shader compiler may allocate through the replaced operator new.
+#include <unistd.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include <gtest/gtest.h>
+
+#include "app/action_player.h"
+#include "app/editor_app.h"
+#include "app/scripted_actions.h"
+#include "core/mesh_build.h"
+#include "core/primitives.h"
+#include "core/validate.h"
+#include "render/offscreen_context.h"
+#include "render/render_error.h"
+#include "support/failing_allocations.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::FailingAllocations;
+using Later = FailingAllocations::Later;
+
+class EditorAppOutOfMemory : public ::testing::Test {
+ protected:
+  static void SetUpTestSuite() {
+    try {
+      context_ = std::make_unique<OffscreenContext>();
+    } catch (const RenderError& e) {
+      skip_reason_ = e.what();
+    }
+  }
+  static void TearDownTestSuite() { context_.reset(); }
+
+  void SetUp() override {
+    if (!context_) GTEST_SKIP() << "no EGL context on this machine: " << skip_reason_;
+    context_->make_current();
+    app_ = std::make_unique<EditorApp>();
+    dir_ = fs::temp_directory_path() / ("meshedit_app_oom_" + std::to_string(::getpid()) + "_" +
+                                        ::testing::UnitTest::GetInstance()->current_test_info()->name());
+    fs::create_directories(dir_);
+    tetrahedron_ = dir_ / "tetrahedron.obj";
+    std::ofstream(tetrahedron_) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
+    missing_ = dir_ / "missing.obj";
+  }
+  void TearDown() override {
+    app_.reset();  // its GL objects go while the context is current
+    if (!dir_.empty()) fs::remove_all(dir_);
+  }
+
+  // The window as it starts: a torus with one flip behind it, e4 selected.
+  MeshDocument& fresh_document() {
+    app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "");
+    app_->selection().selected = EdgeId(9);
+    EXPECT_TRUE(flip_selected(app_->document(), app_->selection()).ok);
+    app_->selection().selected = EdgeId(4);
+    return app_->document();
+  }
+
+  // Runs `call` with the Nth allocation failing; returns whether an allocation failed. Fails the test when
+  // something escapes.
+  template <class Call>
+  bool run_failing(size_t n, Later later, Call&& call) {
+    bool escaped = false, failed = false;
+    {
+      const FailingAllocations failing(n, later);
+      try {
+        call();
+      } catch (...) {
+        escaped = true;
+      }
+      failed = failing.failed();
+    }
+    EXPECT_FALSE(escaped) << "allocation " << n;
+    return failed;
+  }
+
+  static inline std::unique_ptr<OffscreenContext> context_;
+  static inline std::string skip_reason_;
+  std::unique_ptr<EditorApp> app_;
+  fs::path dir_, tetrahedron_, missing_;
+};
+
+// What a document looked like, to tell whether a call left it alone.
+struct Before {
+  HalfedgeMesh mesh;
+  uint64_t version, generation;
+  size_t undo_depth;
+};
+
+Before before_of(const MeshDocument& doc) {
+  return {doc.mesh, doc.mesh.version(), doc.generation, doc.history.undo_depth()};
+}
+
+bool left_alone(const MeshDocument& doc, const Before& before) {
+  return doc.mesh.same_as(before.mesh) && doc.mesh.version() == before.version &&
+         doc.generation == before.generation && doc.history.undo_depth() == before.undo_depth;
+}
+
+// Replaced whole by `opened`: a new generation with no history.
+bool replaced_by(const MeshDocument& doc, const Before& before, const HalfedgeMesh& opened) {
+  return doc.mesh.same_as(opened) && doc.generation == before.generation + 1 && !doc.history.can_undo() &&
+         !doc.history.can_redo() && validate(doc.mesh).ok();
+}
+
+bool is_memory_error(const DocumentMessage& message) {
+  return message.severity == Severity::Error && message.text.find(kMemoryRanOut) != std::string::npos;
+}
+
+TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) {
+  MeshDocument& doc = fresh_document();
+  ASSERT_FALSE(app_->open(missing_));
+  const DocumentMessage spare = doc.message;
+  ASSERT_EQ(spare.severity, Severity::Error);
+  ASSERT_NE(spare.text.find("missing.obj"), std::string::npos) << spare.text;
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      const Before before = before_of(doc);
+      bool opened = true;
+      const bool failed = run_failing(n, later, [&] { opened = app_->open(missing_); });
+      EXPECT_FALSE(opened);
+      EXPECT_TRUE(left_alone(doc, before));
+      EXPECT_TRUE(doc.message.text == spare.text || is_memory_error(doc.message)) << doc.message.text;
+      EXPECT_EQ(doc.message.severity, Severity::Error);
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
+  MeshDocument& doc = fresh_document();
+  ASSERT_TRUE(app_->open(tetrahedron_));
+  const HalfedgeMesh opened = doc.mesh;
+  const DocumentMessage spare = doc.message;
+  ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      const Before before = before_of(doc);
+      bool result = false;
+      const bool failed = run_failing(n, later, [&] { result = app_->open(tetrahedron_); });
+      if (result) {
+        EXPECT_TRUE(replaced_by(doc, before, opened));
+        EXPECT_EQ(doc.message.text, spare.text);
+      } else {
+        EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
+        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
+      }
+      EXPECT_TRUE(app_->open(tetrahedron_));  // with memory to spare again
+      EXPECT_TRUE(doc.mesh.same_as(opened));
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
+  MeshDocument& doc = fresh_document();
+  const fs::path nowhere = dir_ / "no such folder" / "torus.obj";
+  ASSERT_FALSE(app_->save(nowhere));
+  const DocumentMessage spare = doc.message;
+  ASSERT_EQ(spare.severity, Severity::Error);
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      const Before before = before_of(doc);
+      bool saved = true;
+      const bool failed = run_failing(n, later, [&] { saved = app_->save(nowhere); });
+      EXPECT_FALSE(saved);
+      EXPECT_TRUE(left_alone(doc, before));
+      EXPECT_TRUE(doc.message.text == spare.text || is_memory_error(doc.message)) << doc.message.text;
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {
+  MeshDocument& doc = fresh_document();
+  const std::vector<std::string> dropped = {missing_.string(), tetrahedron_.string()};
+  app_->open_dropped(dropped);
+  const HalfedgeMesh opened = doc.mesh;
+  const DocumentMessage spare = doc.message;
+  ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      const Before before = before_of(doc);
+      const bool failed = run_failing(n, later, [&] { app_->open_dropped(dropped); });
+      if (doc.message.severity == Severity::Info) {
+        EXPECT_TRUE(replaced_by(doc, before, opened));
+        EXPECT_EQ(doc.message.text, spare.text);
+      } else {
+        // The tetrahedron ran out of memory, or the missing file did and memory stayed short.
+        EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
+        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
+      }
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+// Flip, a select that fails (the one expectation that does not hold with memory to spare), split and undo, each
+// checked by its message: an action that memory kept from being done fails an expectation too ("flip e4: memory
+// ran out; ..." says no "fields changed").
+constexpr char kScript[] =
+    "select e4\n"
+    "key F\n"
+    "expect-message fields changed\n"
+    "select e999\n"
+    "key S\n"
+    "expect-message new vertex\n"
+    "expect-selected e4\n"
+    "key ctrl+Z\n"
+    "expect-message fields changed\n"
+    "expect-valid\n";
+
+TEST_F(EditorAppOutOfMemory, AScriptedActionThatRunsOutIsAFailedExpectationNotTheEnd) {
+  const std::vector<ScriptedAction> actions = parse_actions(kScript, "script.txt");
+  MeshDocument& doc = fresh_document();
+  std::ostringstream spare_log;
+  ActionPlayer spare(actions, spare_log);
+  while (spare.step(*app_)) {
+  }
+  ASSERT_EQ(spare.failures(), 1);
+  EXPECT_EQ(spare_log.str(), "script.txt:4: select failed: e999 is not live\n");
+  const HalfedgeMesh played = doc.mesh;
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      std::ostringstream log;
+      ActionPlayer player(actions, log);
+      const bool failed = run_failing(n, later, [&] {
+        while (player.step(*app_)) {
+        }
+      });
+      EXPECT_GE(player.failures(), 1);
+      if (player.failures() == 1) {
+        EXPECT_TRUE(doc.mesh.same_as(played));  // every expectation but the select's held: every action was done
+      }
+      EXPECT_TRUE(validate(doc.mesh).ok());
+      const ElementRef selected = app_->selection().selected;
+      EXPECT_TRUE(!selected.valid() || doc.mesh.alive(selected)) << format_id(selected);
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace meshedit
