@@ -17,6 +17,7 @@
 #include "core/primitives.h"
 #include "core/validate.h"
 #include "support/failing_allocations.h"
+#include "support/next_edit_check.h"
 #include "ui/mesh_document.h"
 
 namespace meshedit {
@@ -154,16 +155,7 @@ void expect_survives_every_allocation(const Case& c, Later later) {
         EXPECT_TRUE(doc.mesh.same_as(after));
       }
     }
-    // The next edit is recorded and undone as usual.
-    const HalfedgeMesh kept = doc.mesh;
-    ASSERT_TRUE(apply_operation(doc, "move", [](HalfedgeMesh& m) {
-                  m.set_position(VertexId(0), {0.125, 2, 3});
-                  return Check::yes();
-                }).ok);
-    EXPECT_TRUE(doc.last.recorded);
-    EXPECT_EQ(doc.message.text, "move: 1 field changed");
-    ASSERT_TRUE(undo(doc));
-    EXPECT_TRUE(doc.mesh.same_as(kept));
+    testing::expect_next_edit_recorded(doc, [&] { return undo(doc); });
   }
 }
 

@@ -24,8 +24,7 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "core/validate.h"
-#include "render/offscreen_context.h"
-#include "render/render_error.h"
+#include "render/gl_test_support.h"
 #include "support/failing_allocations.h"
 #include "ui/document_actions.h"
 
@@ -36,20 +35,11 @@ namespace fs = std::filesystem;
 using testing::FailingAllocations;
 using Later = FailingAllocations::Later;
 
-class EditorAppOutOfMemory : public ::testing::Test {
+class EditorAppOutOfMemory : public testing::GlTest {
  protected:
-  static void SetUpTestSuite() {
-    try {
-      context_ = std::make_unique<OffscreenContext>();
-    } catch (const RenderError& e) {
-      skip_reason_ = e.what();
-    }
-  }
-  static void TearDownTestSuite() { context_.reset(); }
-
   void SetUp() override {
-    if (!context_) GTEST_SKIP() << "no EGL context on this machine: " << skip_reason_;
-    context_->make_current();
+    GlTest::SetUp();
+    if (IsSkipped()) return;
     app_ = std::make_unique<EditorApp>();
     dir_ = fs::temp_directory_path() / ("meshedit_app_oom_" + std::to_string(::getpid()) + "_" +
                                         ::testing::UnitTest::GetInstance()->current_test_info()->name());
@@ -90,8 +80,11 @@ class EditorAppOutOfMemory : public ::testing::Test {
     return failed;
   }
 
-  static inline std::unique_ptr<OffscreenContext> context_;
-  static inline std::string skip_reason_;
+  // `call` fails even with memory to spare, with an Error. Failing each of its allocations in turn, it still fails,
+  // leaves the document as it was, and says what it says with memory to spare or that memory ran out, as an Error.
+  template <class Call>
+  void expect_failure_reported_alone(Call&& call);
+
   std::unique_ptr<EditorApp> app_;
   fs::path dir_, tetrahedron_, missing_;
 };
@@ -122,26 +115,34 @@ bool is_memory_error(const DocumentMessage& message) {
   return message.severity == Severity::Error && message.text.find(kMemoryRanOut) != std::string::npos;
 }
 
-TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) {
+template <class Call>
+void EditorAppOutOfMemory::expect_failure_reported_alone(Call&& call) {
   MeshDocument& doc = fresh_document();
-  ASSERT_FALSE(app_->open(missing_));
+  ASSERT_FALSE(call());
   const DocumentMessage spare = doc.message;
   ASSERT_EQ(spare.severity, Severity::Error);
-  ASSERT_NE(spare.text.find("missing.obj"), std::string::npos) << spare.text;
   for (const Later later : {Later::Succeed, Later::Fail}) {
     for (size_t n = 1;; ++n) {
       SCOPED_TRACE(n);
       fresh_document();
       const Before before = before_of(doc);
-      bool opened = true;
-      const bool failed = run_failing(n, later, [&] { opened = app_->open(missing_); });
-      EXPECT_FALSE(opened);
+      bool succeeded = true;
+      const bool failed = run_failing(n, later, [&] { succeeded = call(); });
+      EXPECT_FALSE(succeeded);
       EXPECT_TRUE(left_alone(doc, before));
       EXPECT_TRUE(doc.message.text == spare.text || is_memory_error(doc.message)) << doc.message.text;
       EXPECT_EQ(doc.message.severity, Severity::Error);
       if (!failed || HasFailure()) break;
     }
   }
+  fresh_document();
+  ASSERT_FALSE(call());  // with memory to spare again: the usual message
+  EXPECT_EQ(doc.message.text, spare.text);
+}
+
+TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) {
+  expect_failure_reported_alone([&] { return app_->open(missing_); });
+  EXPECT_NE(app_->document().message.text.find("missing.obj"), std::string::npos);
 }
 
 TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
@@ -172,24 +173,8 @@ TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
 }
 
 TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
-  MeshDocument& doc = fresh_document();
   const fs::path nowhere = dir_ / "no such folder" / "torus.obj";
-  ASSERT_FALSE(app_->save(nowhere));
-  const DocumentMessage spare = doc.message;
-  ASSERT_EQ(spare.severity, Severity::Error);
-  for (const Later later : {Later::Succeed, Later::Fail}) {
-    for (size_t n = 1;; ++n) {
-      SCOPED_TRACE(n);
-      fresh_document();
-      const Before before = before_of(doc);
-      bool saved = true;
-      const bool failed = run_failing(n, later, [&] { saved = app_->save(nowhere); });
-      EXPECT_FALSE(saved);
-      EXPECT_TRUE(left_alone(doc, before));
-      EXPECT_TRUE(doc.message.text == spare.text || is_memory_error(doc.message)) << doc.message.text;
-      if (!failed || HasFailure()) break;
-    }
-  }
+  expect_failure_reported_alone([&] { return app_->save(nowhere); });
 }
 
 TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {

@@ -1,0 +1,27 @@
+// expect_next_edit_recorded: after memory ran out somewhere, the document's next edit is recorded, listed and undone
+// as on a document that never ran out (the shared last step of the out-of-memory tests).
+#pragma once
+
+#include <gtest/gtest.h>
+
+#include "ui/mesh_document.h"
+
+namespace meshedit::testing {
+
+// Moves v0 through apply_operation and undoes it with `undo()` (the document's undo, or a key action's).
+template <class Undo>
+void expect_next_edit_recorded(MeshDocument& doc, Undo&& undo) {
+  const HalfedgeMesh kept = doc.mesh;
+  ASSERT_TRUE(apply_operation(doc, "move", [](HalfedgeMesh& m) {
+                m.set_position(VertexId(0), {0.125, 2, 3});
+                return Check::yes();
+              }).ok);
+  EXPECT_TRUE(doc.last.recorded);
+  ASSERT_TRUE(doc.last.before.has_value());
+  EXPECT_TRUE(doc.last.before->same_as(kept));
+  EXPECT_EQ(doc.message.text, "move: 1 field changed");
+  ASSERT_TRUE(undo());
+  EXPECT_TRUE(doc.mesh.same_as(kept));
+}
+
+}  // namespace meshedit::testing
