@@ -20,6 +20,19 @@
 namespace meshedit {
 namespace {
 
+// Sets the runner's busy flag for its lifetime: a script's calls back into the runner are refused meanwhile, and an
+// exception (even one thrown while its message is copied, out of memory) cannot leave the runner busy for good.
+class BusyScope {
+ public:
+  explicit BusyScope(bool& busy) : busy_(busy) { busy_ = true; }
+  ~BusyScope() { busy_ = false; }
+  BusyScope(const BusyScope&) = delete;
+  BusyScope& operator=(const BusyScope&) = delete;
+
+ private:
+  bool& busy_;
+};
+
 const std::string kEmptyText;
 const std::vector<std::string> kNoBlocks;
 const LessonWait kNoWait;
@@ -82,9 +95,9 @@ bool LessonRunner::load_file(size_t index) {
   script->host = &host_;
   script->directory = path_.parent_path();  // lesson_file() finds assets next to the lesson
   std::unique_ptr<LuaRuntime> runtime;
-  busy_ = true;
   std::string failure;
   try {
+    const BusyScope busy(busy_);
     runtime = std::make_unique<LuaRuntime>(limits_);
     runtime->set_print([this](const std::string& line) {
       if (print_) print_(line);
@@ -96,7 +109,6 @@ bool LessonRunner::load_file(size_t index) {
   } catch (const std::exception& e) {  // ScriptError, or bad_alloc while building the state
     failure = e.what();
   }
-  busy_ = false;
   if (failure.empty() && script->steps.empty()) {
     failure = chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
   }
@@ -148,13 +160,12 @@ void LessonRunner::start_step(size_t index) {
   script_->step_thread = nullptr;
   state_ = StepState::Waiting;
   std::string failure;
-  busy_ = true;
   try {
+    const BusyScope busy(busy_);
     host_.clear_annotations();
   } catch (const std::exception& e) {
     failure = e.what();
   }
-  busy_ = false;
   if (!failure.empty()) return fail(failure);
 
   const int function_ref = script_->steps[index].function_ref;
@@ -234,17 +245,17 @@ int LessonRunner::trampoline(lua_State* L) {
 std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& body) {
   lua_State* L = runtime_->state();
   body_ = &body;
-  busy_ = true;
   std::string failure;
   try {
+    const BusyScope busy(busy_);
     lua_pushcfunction(L, &LessonRunner::trampoline);  // a light C function and a light userdata: no allocation
     lua_pushlightuserdata(L, this);
     runtime_->start_budget();
     runtime_->call(1, 0);
   } catch (const std::exception& e) {
+    body_ = nullptr;
     failure = e.what();
   }
-  busy_ = false;
   body_ = nullptr;
   return failure;
 }
@@ -263,14 +274,13 @@ void LessonRunner::update(double dt) {
     }
     case LessonWait::Kind::Selection: {
       ElementRef selected;
-      busy_ = true;
       std::string failure;
       try {
+        const BusyScope busy(busy_);
         selected = host_.current_selection();
       } catch (const std::exception& e) {
         failure = e.what();
       }
-      busy_ = false;
       if (!failure.empty()) return fail(failure);
       if (!wait.selection_matches(selected)) return;
       return resume([this, selected](lua_State* L) {
