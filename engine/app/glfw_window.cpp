@@ -9,6 +9,7 @@
 
 #include <cstdlib>
 #include <stdexcept>
+#include <utility>
 
 namespace meshedit {
 namespace {
@@ -44,7 +45,11 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwSetWindowUserPointer(window_, this);
   glfwSetDropCallback(window_, [](GLFWwindow* w, int count, const char** paths) {
     auto* self = static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w));
-    for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    try {
+      for (int i = 0; i < count; ++i) self->dropped_.emplace_back(paths[i]);
+    } catch (...) {  // nothing may unwind through GLFW's C code: the paths not queued are reported as lost
+      self->drop_lost_ = true;
+    }
     self->input_seen_ = true;
   });
   // Installed before ImGui's backend, which chains to them: they only note that input arrived.
@@ -124,6 +129,8 @@ std::vector<std::string> GlfwWindow::take_dropped_files() {
   files.swap(dropped_);
   return files;
 }
+
+bool GlfwWindow::take_drop_lost() { return std::exchange(drop_lost_, false); }
 
 void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 

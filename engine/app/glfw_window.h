@@ -37,6 +37,8 @@ class GlfwWindow {
   int framebuffer_width() const;
   int framebuffer_height() const;
   std::vector<std::string> take_dropped_files();
+  // True once after a drop whose paths could not all be queued (memory ran out in GLFW's callback).
+  bool take_drop_lost();
   void set_title(const std::string& title);
 
  private:
@@ -44,6 +46,7 @@ class GlfwWindow {
 
   GLFWwindow* window_ = nullptr;
   std::vector<std::string> dropped_;
+  bool drop_lost_ = false;
   bool lazy_ = true;
   bool input_seen_ = true;  // set by the input callbacks, cleared each frame
   int quiet_frames_ = 0;    // frames since the last input

@@ -39,6 +39,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     window.set_lazy(!player.active() && !app.animating());
     window.begin_frame();
     app.open_dropped(window.take_dropped_files());
+    if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
     app.frame(window.framebuffer_width(), window.framebuffer_height(), frame_ms);
     window.set_title(app.title());
     window.end_frame([&] { app.write_pending_screenshot(window.framebuffer_width(), window.framebuffer_height()); });
