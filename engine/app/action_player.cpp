@@ -40,6 +40,10 @@ KeyMods parse_key(std::string text, int& key) {
   return mods;
 }
 
+// Checks of what a drawn frame computed (the mesh view's last geometry update, the curve view's "mine" line): they
+// run in the step after the frame that follows the action before them, not in that action's step.
+bool reads_a_drawn_frame(const ScriptedAction& a) { return a.verb == "expect-gpu-update" || a.verb == "expect-mine"; }
+
 }  // namespace
 
 bool ActionPlayer::step(EditorApp& app) {
@@ -47,7 +51,8 @@ bool ActionPlayer::step(EditorApp& app) {
     --wait_frames_;
     return true;
   }
-  // Checks need no frame of their own: run them together with the action before the next one that does.
+  // Checks need no frame of their own: run them together with the action before the next one that does (but a check
+  // of a drawn frame waits for one).
   while (next_ < actions_.size()) {
     const ScriptedAction& a = actions_[next_++];
     bool quit = false;
@@ -61,7 +66,8 @@ bool ActionPlayer::step(EditorApp& app) {
       }
     });
     if (quit) return false;
-    const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0;
+    const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0 &&
+                               !reads_a_drawn_frame(actions_[next_]);
     if (!checks_follow) return true;
   }
   return false;

@@ -13,10 +13,11 @@
 //   exercise flip FOLDER   run-mine   run-reference   replay-start   replay-step K   replay-finish
 //   exercise curve|patch FOLDER   (where the curve and patch views' "mine", key M, reads curve.lua, patch.lua)
 //   expect-mine TEXT...   (the "mine" line of the curve or patch view on screen contains TEXT; computed when a
-//                          frame draws the view, so put `frames 1` after the key that changes it)
+//                          frame draws the view, so the check waits for the frame after the action before it)
 //   orbit DX DY           (the camera turns as a drag of DX, DY pixels would turn it)
 //   expect-gpu-update patch|rebuild   (how the mesh view's last geometry update went: the slots an edit touched
-//                          rewritten in place, or everything rebuilt; drawn in the next frame, so `frames 1` first)
+//                          rewritten in place, or everything rebuilt; made by the next frame, which the check
+//                          waits for)
 #pragma once
 
 #include <string>

@@ -1,5 +1,6 @@
 // The window on a large mesh (200k triangles): flip, split, undo and collapse reach the GPU as patches of the slots
-// they touched (not rebuilds), with a camera orbit in between; the picture is not blank.
+// they touched (not rebuilds), with a camera orbit in between; the picture is not blank. expect-gpu-update checks the
+// frame after the action before it, with or without a `frames 1` between them.
 #include <gtest/gtest.h>
 
 #include <set>
@@ -30,7 +31,8 @@ TEST(WindowLargeMesh, EditsArePatchedIntoTheGpuBuffers) {
           << "select e1000\n"
           << "key F\n"
           << "expect-message flip e1000\n"
-          << "frames 1\n"
+          // Waits for the frame after the key by itself: read before it, the last update is still the first
+          // frame's rebuild.
           << "expect-gpu-update patch\n"
           << "select e2000\n"
           << "key S\n"
