@@ -11,6 +11,7 @@
 #include "app/scripted_actions.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "ui/exception_report.h"
 
 namespace meshedit {
 
@@ -41,7 +42,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     app.open_dropped(window.take_dropped_files());
     if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
     app.frame(window.framebuffer_width(), window.framebuffer_height(), frame_ms);
-    window.set_title(app.title());
+    run_guarded(app.document(), [&] { window.set_title(app.title()); });  // outside the frame guard; allocates
     window.end_frame([&] { app.write_pending_screenshot(window.framebuffer_width(), window.framebuffer_height()); });
     const auto now = std::chrono::steady_clock::now();
     frame_ms = std::chrono::duration<float, std::milli>(now - last).count();
