@@ -2,7 +2,8 @@
 // handle field read and write, of iteration and of v.position beside the interpreter's own costs (an empty
 // loop, a plain-table field read, a call to a C function that does nothing, a userdata field read through a C
 // __index that does nothing, one through a C __index that only makes a new userdata: what any element value costs
-// the interpreter, and a vec3 table made in Lua), then a student-style Lua `upsample` against the core's Loop subdivision.
+// the interpreter, and a vec3 table made in Lua), then a student-style Lua `upsample` against the core's Loop
+// subdivision.
 //
 //   lua_bench [--mesh FILE] [--upsample FILE.lua] [--reads N] [--reps R]
 // Defaults: the course teapot (../shared/data/cs184/dae/teapot.dae, 2464 faces) when present, else a torus of

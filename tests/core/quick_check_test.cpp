@@ -111,7 +111,8 @@ void break_randomly(HalfedgeMesh& m, std::mt19937& random) {
 TEST(QuickCheck, NeverAcceptsWhatTheFullChecksRefuse) {
   size_t refused = 0;
   for (uint32_t seed = 1; seed <= 600; ++seed) {
-    HalfedgeMesh m = build_halfedge_mesh(seed % 3 == 0 ? make_grid(4, 3) : seed % 3 == 1 ? make_torus(6, 5) : make_cube());
+    HalfedgeMesh m =
+        build_halfedge_mesh(seed % 3 == 0 ? make_grid(4, 3) : seed % 3 == 1 ? make_torus(6, 5) : make_cube());
     std::mt19937 random(seed);
     break_randomly(m, random);
     const ValidationReport full = validate_without_shortcut(m);

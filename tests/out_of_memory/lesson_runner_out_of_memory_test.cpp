@@ -1,7 +1,7 @@
 // LessonRunner when memory runs out while a lesson loads (a broken one, a working one) or a step starts
-// (FailingAllocations fails the Nth allocation and every later one, for N = 1, 2, ...): whatever the call does then, afterwards, with memory to spare,
-// the same lesson loads and runs its steps. The runner is never left busy (refusing every later load) by an
-// exception thrown while it reported another.
+// (FailingAllocations fails the Nth allocation and every later one, for N = 1, 2, ...): whatever the call does then,
+// afterwards, with memory to spare, the same lesson loads and runs its steps. The runner is never left busy
+// (refusing every later load) by an exception thrown while it reported another.
 #include <filesystem>
 #include <fstream>
 #include <string>
