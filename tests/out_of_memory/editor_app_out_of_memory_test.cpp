@@ -84,6 +84,11 @@ class EditorAppOutOfMemory : public testing::GlTest {
   // leaves the document as it was, and says what it says with memory to spare or that memory ran out, as an Error.
   template <class Call>
   void expect_failure_reported_alone(Call&& call);
+  // `call` opens the tetrahedron with memory to spare and returns whether it says so. Failing each of its
+  // allocations in turn, the document is the old one or the tetrahedron, whole; a call that does not say it opened
+  // says that memory ran out; and with memory to spare again the call opens the tetrahedron.
+  template <class Call>
+  void expect_opened_whole_or_not(Call&& call);
 
   std::unique_ptr<EditorApp> app_;
   fs::path dir_, tetrahedron_, missing_;
@@ -140,14 +145,10 @@ void EditorAppOutOfMemory::expect_failure_reported_alone(Call&& call) {
   EXPECT_EQ(doc.message.text, spare.text);
 }
 
-TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) {
-  expect_failure_reported_alone([&] { return app_->open(missing_); });
-  EXPECT_NE(app_->document().message.text.find("missing.obj"), std::string::npos);
-}
-
-TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
+template <class Call>
+void EditorAppOutOfMemory::expect_opened_whole_or_not(Call&& call) {
   MeshDocument& doc = fresh_document();
-  ASSERT_TRUE(app_->open(tetrahedron_));
+  ASSERT_TRUE(call());
   const HalfedgeMesh opened = doc.mesh;
   const DocumentMessage spare = doc.message;
   ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
@@ -157,7 +158,7 @@ TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
       fresh_document();
       const Before before = before_of(doc);
       bool result = false;
-      const bool failed = run_failing(n, later, [&] { result = app_->open(tetrahedron_); });
+      const bool failed = run_failing(n, later, [&] { result = call(); });
       if (result) {
         EXPECT_TRUE(replaced_by(doc, before, opened));
         EXPECT_EQ(doc.message.text, spare.text);
@@ -165,11 +166,20 @@ TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
         EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
         EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
       }
-      EXPECT_TRUE(app_->open(tetrahedron_));  // with memory to spare again
+      EXPECT_TRUE(call());  // with memory to spare again
       EXPECT_TRUE(doc.mesh.same_as(opened));
       if (!failed || HasFailure()) break;
     }
   }
+}
+
+TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) {
+  expect_failure_reported_alone([&] { return app_->open(missing_); });
+  EXPECT_NE(app_->document().message.text.find("missing.obj"), std::string::npos);
+}
+
+TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
+  expect_opened_whole_or_not([&] { return app_->open(tetrahedron_); });
 }
 
 TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
@@ -178,29 +188,12 @@ TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
 }
 
 TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {
-  MeshDocument& doc = fresh_document();
+  // Not opened: the tetrahedron ran out of memory, or the missing file did and memory stayed short.
   const std::vector<std::string> dropped = {missing_.string(), tetrahedron_.string()};
-  app_->open_dropped(dropped);
-  const HalfedgeMesh opened = doc.mesh;
-  const DocumentMessage spare = doc.message;
-  ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
-  for (const Later later : {Later::Succeed, Later::Fail}) {
-    for (size_t n = 1;; ++n) {
-      SCOPED_TRACE(n);
-      fresh_document();
-      const Before before = before_of(doc);
-      const bool failed = run_failing(n, later, [&] { app_->open_dropped(dropped); });
-      if (doc.message.severity == Severity::Info) {
-        EXPECT_TRUE(replaced_by(doc, before, opened));
-        EXPECT_EQ(doc.message.text, spare.text);
-      } else {
-        // The tetrahedron ran out of memory, or the missing file did and memory stayed short.
-        EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
-        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
-      }
-      if (!failed || HasFailure()) break;
-    }
-  }
+  expect_opened_whole_or_not([&] {
+    app_->open_dropped(dropped);
+    return app_->document().message.severity == Severity::Info;
+  });
 }
 
 // Flip, a select that fails (the one expectation that does not hold with memory to spare), split and undo, each
