@@ -12,8 +12,8 @@
 #include "core/quick_check.h"
 
 #include <atomic>
-#include <cmath>
 
+#include "core/clean_rules.h"
 #include "core/parallel_for.h"
 
 namespace meshedit {
@@ -57,49 +57,24 @@ bool clean(const HalfedgeMesh& m, bool loop_input, int threads) {
   const size_t live = m.num_halfedges();
   size_t unused = 0;
 
-  // Halfedges: live targets, twins paired on one edge whose halfedge is one of the pair, next within one face.
+  // Halfedges first: the walks below rely on every live halfedge passing its rule.
   const bool halfedges_ok = all_of(threads, m.halfedge_capacity(), unused, [&](size_t i, size_t&) {
     const HalfedgeId h(static_cast<uint32_t>(i));
-    if (!m.alive(h)) return true;
-    const HalfedgeId next = m.next(h), twin = m.twin(h);
-    const EdgeId edge = m.edge(h);
-    const FaceId face = m.face(h);
-    if (!m.alive(next) || !m.alive(twin) || !m.alive(m.vertex(h)) || !m.alive(edge) || !m.alive(face)) return false;
-    if (twin == h || m.twin(twin) != h || m.edge(twin) != edge || m.face(twin) == face) return false;
-    if (face.is_boundary() && m.face(twin).is_boundary()) return false;
-    if (m.face(next) != face || m.vertex(twin) != m.vertex(next) || m.vertex(h) == m.vertex(twin)) return false;
-    const HalfedgeId on_edge = m.halfedge(edge);
-    return on_edge == h || on_edge == twin;
+    return !m.alive(h) || clean_rules::halfedge_ok(m, h);
   });
   if (!halfedges_ok) return false;
   const bool edges_ok = all_of(threads, m.edge_capacity(), unused, [&](size_t i, size_t&) {
     const EdgeId e(static_cast<uint32_t>(i));
-    if (!m.alive(e)) return true;
-    const HalfedgeId h = m.halfedge(e);
-    return m.alive(h) && m.edge(h) == e;
+    return !m.alive(e) || clean_rules::edge_ok(m, e);
   });
   if (!edges_ok) return false;
 
-  // Faces and loops: each cycle from the element's halfedge has >= 3 halfedges (exactly 3 with distinct corners
-  // for Loop input), and the cycles hold every live halfedge.
+  // Faces and loops: each cycle passes its rule (triangles for Loop input), and the cycles hold every live halfedge.
   const auto cycle = [&](FaceId f, size_t& in_cycles) {
     if (!m.alive(f)) return true;
-    const HalfedgeId first = m.halfedge(f);
-    if (!m.alive(first) || m.face(first) != f) return false;
-    size_t length = 0;
-    HalfedgeId h = first;
-    do {
-      if (++length > live) return false;
-      h = m.next(h);
-    } while (h != first);
-    if (length < 3) return false;
-    if (loop_input && !f.is_boundary()) {
-      if (length != 3) return false;
-      const VertexId v0 = m.vertex(first), v1 = m.vertex(m.next(first)), v2 = m.vertex(m.next(m.next(first)));
-      if (v0 == v1 || v1 == v2 || v0 == v2) return false;
-    }
+    const size_t length = clean_rules::cycle_length(m, f, live, loop_input);
     in_cycles += length;
-    return true;
+    return length != 0;
   };
   size_t in_faces = 0, in_loops = 0;
   if (!all_of(threads, m.face_capacity(), in_faces,
@@ -110,26 +85,14 @@ bool clean(const HalfedgeMesh& m, bool loop_input, int threads) {
     return false;
   }
 
-  // Vertices: a finite position; a fan from v.halfedge that leaves v at every step, closes, holds a face and at
-  // most one boundary halfedge; and the fans hold every live halfedge.
+  // Vertices: each fan passes its rule, and the fans hold every live halfedge.
   size_t in_fans = 0;
   const bool fans_ok = all_of(threads, m.vertex_capacity(), in_fans, [&](size_t i, size_t& sum) {
     const VertexId v(static_cast<uint32_t>(i));
     if (!m.alive(v)) return true;
-    const glm::dvec3& p = m.position(v);
-    if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) return false;
-    const HalfedgeId first = m.halfedge(v);
-    if (!m.alive(first)) return false;
-    size_t length = 0, boundary = 0;
-    HalfedgeId h = first;
-    do {
-      if (m.vertex(h) != v || ++length > live) return false;
-      boundary += m.face(h).is_boundary() ? 1 : 0;
-      h = m.next(m.twin(h));
-    } while (h != first);
-    if (boundary > 1 || boundary == length) return false;
+    const size_t length = clean_rules::fan_length(m, v, live);
     sum += length;
-    return true;
+    return length != 0;
   });
   if (!fans_ok || in_fans != live) return false;
 

@@ -86,35 +86,13 @@ TEST(QuickCheck, RefusesAFaceWithTwoCycles) {
   EXPECT_FALSE(validate(m).ok());
 }
 
-// One to three random pointer writes, deletions or non-finite positions.
-void break_randomly(HalfedgeMesh& m, std::mt19937& random) {
-  const int writes = 1 + int(random() % 3);
-  for (int i = 0; i < writes; ++i) {
-    const uint32_t hc = m.halfedge_capacity();
-    const HalfedgeId h(random() % hc);
-    switch (random() % 10) {
-      case 0: m.set_next(h, HalfedgeId(random() % (hc + 2))); break;
-      case 1: m.set_twin(h, HalfedgeId(random() % hc)); break;
-      case 2: m.set_vertex(h, VertexId(random() % (m.vertex_capacity() + 1))); break;
-      case 3: m.set_edge(h, EdgeId(random() % m.edge_capacity())); break;
-      case 4: m.set_face(h, random() % 4 ? FaceId::face(random() % m.face_capacity()) : FaceId::boundary(0)); break;
-      case 5: m.set_halfedge(VertexId(random() % m.vertex_capacity()), HalfedgeId(random() % hc)); break;
-      case 6: m.set_halfedge(EdgeId(random() % m.edge_capacity()), HalfedgeId(random() % hc)); break;
-      case 7: m.set_halfedge(FaceId::face(random() % m.face_capacity()), HalfedgeId(random() % hc)); break;
-      case 8: m.set_position(VertexId(random() % m.vertex_capacity()),
-                             glm::dvec3(std::numeric_limits<double>::quiet_NaN())); break;
-      default: m.delete_element(EdgeId(random() % m.edge_capacity())); break;
-    }
-  }
-}
-
 TEST(QuickCheck, NeverAcceptsWhatTheFullChecksRefuse) {
   size_t refused = 0;
   for (uint32_t seed = 1; seed <= 600; ++seed) {
     HalfedgeMesh m =
         build_halfedge_mesh(seed % 3 == 0 ? make_grid(4, 3) : seed % 3 == 1 ? make_torus(6, 5) : make_cube());
     std::mt19937 random(seed);
-    break_randomly(m, random);
+    testing::break_randomly(m, random);
     const ValidationReport full = validate_without_shortcut(m);
     refused += full.ok() ? 0 : 1;
     SCOPED_TRACE("seed " + std::to_string(seed));
@@ -156,7 +134,7 @@ TEST(QuickCheck, GivesTheSameAnswerOnAnyThreadCount) {
   for (uint32_t seed = 1; seed <= 40; ++seed) {
     HalfedgeMesh m = torus;
     std::mt19937 random(seed);
-    if (seed % 4 != 0) break_randomly(m, random);
+    if (seed % 4 != 0) testing::break_randomly(m, random);
     SCOPED_TRACE("seed " + std::to_string(seed));
     const bool clean = mesh_is_clean(m, 1), loop_clean = loop_input_is_clean(m, 1);
     for (const int threads : {2, 3}) {

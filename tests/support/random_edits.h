@@ -2,10 +2,12 @@
 // mesh stays valid), leaving dead slots among the ids and irregular valences. Seeded mt19937, raw output only,
 // so a seed gives the same mesh on every platform. random_edit_or_write: one such operation or a few raw writes
 // through the setters (broken pointers, new and deleted elements, a slot written twice), as a script would.
+// break_randomly: one to three random pointer writes, deletions or non-finite positions (no new elements).
 // edited_torus: a small torus after 60 such edits.
 #pragma once
 
 #include <cstdint>
+#include <limits>
 #include <random>
 
 #include "core/mesh_build.h"
@@ -52,6 +54,28 @@ inline void random_edit_or_write(HalfedgeMesh& m, std::mt19937& random) {
       m.set_halfedge(FaceId::face(0), h);
       m.set_position(v, {4, 5, 6});  // a slot written twice
       break;
+    }
+  }
+}
+
+// One to three random pointer writes, deletions or non-finite positions.
+inline void break_randomly(HalfedgeMesh& m, std::mt19937& random) {
+  const int writes = 1 + int(random() % 3);
+  for (int i = 0; i < writes; ++i) {
+    const uint32_t hc = m.halfedge_capacity();
+    const HalfedgeId h(random() % hc);
+    switch (random() % 10) {
+      case 0: m.set_next(h, HalfedgeId(random() % (hc + 2))); break;
+      case 1: m.set_twin(h, HalfedgeId(random() % hc)); break;
+      case 2: m.set_vertex(h, VertexId(random() % (m.vertex_capacity() + 1))); break;
+      case 3: m.set_edge(h, EdgeId(random() % m.edge_capacity())); break;
+      case 4: m.set_face(h, random() % 4 ? FaceId::face(random() % m.face_capacity()) : FaceId::boundary(0)); break;
+      case 5: m.set_halfedge(VertexId(random() % m.vertex_capacity()), HalfedgeId(random() % hc)); break;
+      case 6: m.set_halfedge(EdgeId(random() % m.edge_capacity()), HalfedgeId(random() % hc)); break;
+      case 7: m.set_halfedge(FaceId::face(random() % m.face_capacity()), HalfedgeId(random() % hc)); break;
+      case 8: m.set_position(VertexId(random() % m.vertex_capacity()),
+                             glm::dvec3(std::numeric_limits<double>::quiet_NaN())); break;
+      default: m.delete_element(EdgeId(random() % m.edge_capacity())); break;
     }
   }
 }
