@@ -26,6 +26,8 @@
 #include "core/mesh_error.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
+#include "core/patch_check.h"
+#include "core/quick_check.h"
 
 namespace meshedit {
 namespace {
@@ -427,10 +429,26 @@ const T& cached(VersionCache<T>& cache, const MeshDocument& doc, Compute&& compu
   }
   return cache.value;
 }
+
+// The last change was local and came from the state the validation cache found clean: its patch alone can tell.
+bool last_patch_follows_clean(const MeshDocument& doc) {
+  const VersionCache<CheckedValidation>& cache = doc.validation;
+  return cache.filled && cache.value.clean && cache.generation == doc.generation && doc.last.patch &&
+         doc.last.version_before == cache.version && doc.last.version_after == doc.mesh.version();
+}
 }  // namespace
 
 const ValidationReport& cached_validation(MeshDocument& doc) {
-  return cached(doc.validation, doc, [&] { return validate(doc.mesh, kListedViolations, hardware_threads()); });
+  return cached(doc.validation, doc, [&] {
+           CheckedValidation checked;
+           if (last_patch_follows_clean(doc) && edit_keeps_clean(doc.mesh, *doc.last.patch)) {
+             checked.clean = checked.from_patch = true;
+           } else {
+             checked.clean = mesh_is_clean(doc.mesh, hardware_threads());
+             if (!checked.clean) checked.report = validate_without_shortcut(doc.mesh, kListedViolations);
+           }
+           return checked;
+         }).report;
 }
 
 const MeshStats& cached_stats(MeshDocument& doc) {
@@ -440,6 +458,10 @@ const MeshStats& cached_stats(MeshDocument& doc) {
 bool validation_is_current(const MeshDocument& doc) {
   return doc.validation.filled && doc.validation.generation == doc.generation &&
          doc.validation.version == doc.mesh.version();
+}
+
+bool validation_is_cheap(const MeshDocument& doc) {
+  return validation_is_current(doc) || doc.mesh.proven_valid_triangles() || last_patch_follows_clean(doc);
 }
 
 }  // namespace meshedit

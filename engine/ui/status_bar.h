@@ -4,7 +4,9 @@
 //
 // Invariants:
 // - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
-//   StatusBarState::auto_validate_max_halfedges are validated only when the user presses "validate".
+//   StatusBarState::auto_validate_max_halfedges are validated only when the user presses "validate", unless the
+//   cache can answer without a whole-mesh pass (validation_is_cheap: a vouched mesh, or a local edit of a state it
+//   found valid), so edits on a big mesh stay validated once it has been.
 // - Counts and the Euler characteristic come from the mesh's live counters: O(1) per frame.
 #pragma once
 

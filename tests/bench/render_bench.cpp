@@ -297,6 +297,21 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   document_step("document: undo (patch), again", [&] { undo(doc); });
   document_step("document: redo (patch)", [&] { redo(doc); });
   document_step("document: redo (patch), again", [&] { redo(doc); });
+
+  // The status bar's validation of each new state: the whole mesh once, then each local edit from its patch alone.
+  auto validation_step = [&](const char* label) {
+    start = Clock::now();
+    const bool ok = cached_validation(doc).ok();
+    line(label, "%10.3f ms", ms_since(start),
+         std::string(ok ? "valid" : "broken") + (doc.validation.value.from_patch ? ", from the patch" : ", whole mesh"));
+  };
+  validation_step("document: validation (whole mesh, machine's threads)");
+  edit("document: apply_operation(flip)", "flip", edges / 7);
+  validation_step("document: validation after the flip");
+  edit("document: apply_operation(split)", "split", edges / 8);
+  validation_step("document: validation after the split");
+  document_step("document: undo (patch)", [&] { undo(doc); });
+  validation_step("document: validation after the undo");
 }
 
 // The halfedge tab of the pointer tables at 6M+ halfedges: frames at the top, the middle and the end, and the worst

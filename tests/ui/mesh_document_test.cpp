@@ -8,8 +8,10 @@
 #include <gtest/gtest.h>
 
 #include "core/loop_subdivision.h"
+#include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
+#include "core/primitives.h"
 #include "ui/mesh_document.h"
 #include "ui_test_support.h"
 
@@ -320,6 +322,67 @@ TEST(MeshDocument, ValidationRunsOncePerMeshState) {
   EXPECT_FALSE(validation_is_current(doc));
   EXPECT_TRUE(cached_validation(doc).ok());
   EXPECT_EQ(doc.validation.computations, 5u);
+}
+
+// After a state the cache found clean, a local change (an operation, an undo, a redo) is validated from its patch
+// alone; the answers are the whole-mesh check's, and a broken change is still reported with its element.
+TEST(MeshDocument, ValidatesALocalChangeFromItsPatch) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(6, 4)));
+  ASSERT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.clean);
+  EXPECT_FALSE(doc.validation.value.from_patch);
+
+  ASSERT_TRUE(apply_operation(doc, "flip e2", [](HalfedgeMesh& m) { return flip(m, E(2)); }).ok());
+  EXPECT_TRUE(validation_is_cheap(doc));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.from_patch);
+  ASSERT_TRUE(apply_operation(doc, "split e7", [](HalfedgeMesh& m) { return split(m, E(7)); }).ok());
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.from_patch);
+  ASSERT_TRUE(undo(doc));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.from_patch);
+  ASSERT_TRUE(redo(doc));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.from_patch);
+
+  const HalfedgeId twin = doc.mesh.twin(H(0));
+  ASSERT_TRUE(apply_operation(doc, "break", [](HalfedgeMesh& m) {
+    m.set_twin(H(0), H(1));
+    return Check::yes();
+  }).ok);
+  const ValidationReport expected = validate_without_shortcut(doc.mesh);
+  const ValidationReport& report = cached_validation(doc);
+  ASSERT_FALSE(report.ok());
+  EXPECT_FALSE(doc.validation.value.clean);
+  EXPECT_FALSE(doc.validation.value.from_patch);
+  EXPECT_EQ(report.total, expected.total);
+  EXPECT_EQ(report.violations.front().element, expected.violations.front().element);
+  EXPECT_EQ(report.violations.front().message, expected.violations.front().message);
+
+  // From a broken state, the next change needs the whole mesh again; after it, patches serve again.
+  ASSERT_TRUE(apply_operation(doc, "mend", [&](HalfedgeMesh& m) {
+    m.set_twin(H(0), twin);
+    return Check::yes();
+  }).ok);
+  EXPECT_FALSE(validation_is_cheap(doc));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_FALSE(doc.validation.value.from_patch);
+  ASSERT_TRUE(apply_operation(doc, "flip e9", [](HalfedgeMesh& m) { return flip(m, E(9)); }).ok());
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_TRUE(doc.validation.value.from_patch);
+}
+
+// A patch only tells from the state it started at: a change nobody validated breaks the chain.
+TEST(MeshDocument, ValidatesTheWholeMeshAfterAnUnvalidatedState) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(6, 4)));
+  ASSERT_TRUE(cached_validation(doc).ok());
+  ASSERT_TRUE(apply_operation(doc, "flip e2", [](HalfedgeMesh& m) { return flip(m, E(2)); }).ok());
+  ASSERT_TRUE(apply_operation(doc, "flip e9", [](HalfedgeMesh& m) { return flip(m, E(9)); }).ok());
+  EXPECT_FALSE(validation_is_cheap(doc));
+  EXPECT_TRUE(cached_validation(doc).ok());
+  EXPECT_FALSE(doc.validation.value.from_patch);
+  EXPECT_EQ(doc.validation.computations, 2u);
 }
 
 TEST(MeshDocument, StatsAreCachedToo) {

@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/loop_subdivision.h"
+#include "core/mesh_ops.h"
 #include "core/validate.h"
 #include "ui/document_actions.h"
 #include "ui/inspector.h"
@@ -69,6 +70,21 @@ TEST(StatusBar, BigMeshesAreValidatedOnRequest) {
   t.frame();
   EXPECT_EQ(t.probe.find("validate"), nullptr);  // the result is shown until the mesh changes
   EXPECT_EQ(t.doc.validation.computations, 1u);
+}
+
+// Once a big mesh has been validated, a local edit is validated by itself (from its patch, no whole-mesh pass).
+TEST(StatusBar, BigMeshesStayValidatedThroughLocalEdits) {
+  StatusFixture t(grid_1x1());
+  t.state.auto_validate_max_halfedges = 5;
+  t.frame();
+  t.imgui.click(t.probe.find("validate")->center(), [&] { t.draw(); });
+  ASSERT_TRUE(validation_is_current(t.doc));
+  ASSERT_TRUE(apply_operation(t.doc, "flip e2", [](HalfedgeMesh& m) { return flip(m, E(2)); }).ok());
+  t.frame();
+  EXPECT_EQ(t.probe.find("validate"), nullptr);
+  EXPECT_TRUE(validation_is_current(t.doc));
+  EXPECT_TRUE(t.doc.validation.value.from_patch);
+  EXPECT_EQ(t.doc.validation.computations, 2u);
 }
 
 TEST(StatusBar, ErrorMessagesOfferTheirElement) {
