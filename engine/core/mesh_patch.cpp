@@ -14,6 +14,8 @@ int index_of(ElementKind kind) { return static_cast<int>(kind); }
 
 bool exists(const MeshShape& shape, const SlotChange& s) { return s.slot < shape.capacity[index_of(s.kind)]; }
 
+uint64_t key_of(const SlotChange& s) { return (uint64_t(s.kind) << 32) | s.slot; }
+
 // for_each_field over one changed slot, with the states where the slot exists.
 template <class Add>
 void for_each_field(const MeshPatch& patch, const SlotChange& s, Add&& add) {
@@ -39,6 +41,65 @@ void MeshPatch::apply(HalfedgeMesh& mesh, bool forward) const {
   for (const SlotChange& s : slots) {
     if (exists(target, s)) write_slot(mesh, s.kind, s.slot, forward ? s.after : s.before);
   }
+}
+
+bool MeshPatch::apply_as_edit(HalfedgeMesh& mesh) const {
+  const MeshShape shape = shape_of(mesh);
+  size_t appended[kElementKindCount] = {};
+  for (int k = 0; k < kElementKindCount; ++k) {
+    if (shape.capacity[k] != shape_before.capacity[k] || shape.live[k] != shape_before.live[k] ||
+        shape_after.capacity[k] < shape_before.capacity[k]) {
+      return false;
+    }
+  }
+  for (size_t i = 0; i < slots.size(); ++i) {
+    const SlotChange& s = slots[i];
+    if (i > 0 && !(key_of(slots[i - 1]) < key_of(s))) return false;  // sorted, each slot once: appends come in order
+    if (!exists(shape_after, s)) return false;
+    if (!exists(shape_before, s)) {
+      ++appended[index_of(s.kind)];
+    } else if (!same_state(read_slot(mesh, s.kind, s.slot), s.before) || (!s.before.alive && s.after.alive)) {
+      return false;
+    }
+  }
+  for (int k = 0; k < kElementKindCount; ++k) {
+    if (appended[k] != shape_after.capacity[k] - shape_before.capacity[k]) return false;
+  }
+
+  for (const SlotChange& s : slots) {
+    const SlotValues& v = s.after;
+    switch (s.kind) {
+      case ElementKind::Vertex: {
+        const VertexId id = exists(shape_before, s) ? VertexId(s.slot) : mesh.new_vertex(v.position);
+        mesh.set_position(id, v.position);
+        mesh.set_halfedge(id, v.halfedge);
+        if (!v.alive) mesh.delete_element(id);
+        break;
+      }
+      case ElementKind::Halfedge: {
+        const HalfedgeId id = exists(shape_before, s) ? HalfedgeId(s.slot) : mesh.new_halfedge();
+        mesh.set_neighbors(id, v.record.next, v.record.twin, v.record.vertex, v.record.edge, v.record.face);
+        if (!v.alive) mesh.delete_element(id);
+        break;
+      }
+      case ElementKind::Edge: {
+        const EdgeId id = exists(shape_before, s) ? EdgeId(s.slot) : mesh.new_edge();
+        mesh.set_halfedge(id, v.halfedge);
+        if (!v.alive) mesh.delete_element(id);
+        break;
+      }
+      case ElementKind::Face:
+      case ElementKind::Boundary: {
+        const bool boundary = s.kind == ElementKind::Boundary;
+        const FaceId id = exists(shape_before, s) ? (boundary ? FaceId::boundary(s.slot) : FaceId::face(s.slot))
+                                                  : (boundary ? mesh.new_boundary() : mesh.new_face());
+        mesh.set_halfedge(id, v.halfedge);
+        if (!v.alive) mesh.delete_element(id);
+        break;
+      }
+    }
+  }
+  return true;
 }
 
 MeshPatch make_patch(const ChangeJournal& journal, const HalfedgeMesh& mesh) {

@@ -41,6 +41,14 @@ struct MeshPatch {
   MeshPatch reversed() const;
   // Turns a mesh in the `before` state into the `after` state (forward) or the reverse; all or nothing (above).
   void apply(HalfedgeMesh& mesh, bool forward) const;
+  // Makes the forward change on `mesh` as an edit would, through its setters, new_* and delete_element, so a journal
+  // attached to it logs the change slot by slot (apply() writes the arrays directly, which makes a journal fall back
+  // to a copy of the mesh). Afterwards the mesh is in the `after` state (contents and live counts; its version moves
+  // on as with any edit). Returns false, having changed nothing, when the patch cannot be made that way: `mesh` is
+  // not in the `before` state where the patch says anything (shape, listed slots), a capacity shrinks, or a dead slot
+  // comes back to life (no setter revives one). Patches that make_patch takes from setter edits always pass. Out of
+  // memory, throws std::bad_alloc part-way, like any edit (an attached journal can revert it).
+  bool apply_as_edit(HalfedgeMesh& mesh) const;
 };
 
 // The patch from the state the journal saw when it was attached to `mesh` as it is now. The journal must not have
