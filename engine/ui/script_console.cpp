@@ -2,11 +2,15 @@
 #include "ui/script_console.h"
 
 #include <algorithm>
+#include <new>
+#include <optional>
 #include <utility>
 
 #include <imgui.h>
 #include <lua.hpp>
 
+#include "core/change_journal.h"
+#include "core/mesh_patch.h"
 #include "script/mesh_bindings.h"
 
 namespace meshedit {
@@ -56,10 +60,22 @@ void ScriptConsole::add(ConsoleEntryKind kind, std::string text) {
 }
 
 void ScriptConsole::sync_from(const MeshDocument& doc) {
-  if (doc.generation == synced_generation_ && doc.mesh.version() == synced_version_) return;
-  *mesh_ = doc.mesh;  // in place: handles in globals keep pointing at the console's mesh
+  // A console mesh changed since it was synced (a line that threw past submit's bookkeeping) is copied afresh.
+  const bool untouched = mesh_->version() == mesh_version_when_synced_;
+  if (untouched && doc.generation == synced_generation_ && doc.mesh.version() == synced_version_) return;
+  const bool one_local_change_behind = untouched && doc.generation == synced_generation_ &&
+                                       synced_version_ != UINT64_MAX && doc.last.patch &&
+                                       doc.last.version_before == synced_version_ &&
+                                       doc.last.version_after == doc.mesh.version();
+  if (one_local_change_behind) {
+    doc.last.patch->apply(*mesh_, true);
+    mesh_->bump_version_above(mesh_->version());  // apply() keeps the version: the script's undo must see a change
+  } else {
+    *mesh_ = doc.mesh;  // in place: handles in globals keep pointing at the console's mesh
+  }
   synced_generation_ = doc.generation;
   synced_version_ = doc.mesh.version();
+  mesh_version_when_synced_ = mesh_->version();
 }
 
 void ScriptConsole::bind_selection(const Selection& selection) {
@@ -103,22 +119,36 @@ void ScriptConsole::submit(MeshDocument& doc, const Selection& selection, const 
   bind_selection(selection);
   const uint64_t version_before = mesh_->version();
   bool failed = false;
-  try {
-    const std::vector<std::string> results = run(code);
-    if (!results.empty()) add(ConsoleEntryKind::Output, join(results));
-  } catch (const ScriptError& e) {
-    add(ConsoleEntryKind::Error, e.what());
-    failed = true;
+  std::optional<MeshPatch> patch;
+  {
+    ChangeJournal journal(*mesh_);  // what the line writes, slot by slot, unless it rewrites the mesh wholesale
+    try {
+      const std::vector<std::string> results = run(code);
+      if (!results.empty()) add(ConsoleEntryKind::Output, join(results));
+    } catch (const ScriptError& e) {
+      add(ConsoleEntryKind::Error, e.what());
+      failed = true;
+    }
+    if (mesh_->version() == version_before) return;
+    if (!journal.has_snapshot() && !journal.state_before_lost()) {
+      try {
+        patch = make_patch(journal, *mesh_);
+      } catch (const std::bad_alloc&) {
+        // The document gets the whole mesh instead.
+      }
+    }
   }
-  if (mesh_->version() == version_before) return;
   const std::string label = std::string(failed ? "console (error): " : "console: ") + label_of(code);
-  apply_operation(doc, label, [this](HalfedgeMesh& mesh) {
-    mesh = *mesh_;
+  // A local change reaches the document as the same writes (its journal keeps a patch: no copy of the mesh, the diff
+  // and the validation from the patch); anything else as an assignment of the console's mesh.
+  const Check done = apply_operation(doc, label, [&](HalfedgeMesh& mesh) {
+    if (!patch || !patch->apply_as_edit(mesh)) mesh = *mesh_;
     return Check::yes();
   });
+  // Kept, the document's mesh now holds what the console's does (its version may differ): no copy next line.
   synced_generation_ = doc.generation;
-  synced_version_ = doc.mesh.version();
-  if (doc.mesh.version() != mesh_->version()) synced_version_ = UINT64_MAX;  // copy again next time
+  synced_version_ = done.ok ? doc.mesh.version() : UINT64_MAX;
+  mesh_version_when_synced_ = mesh_->version();
 }
 
 std::string ScriptConsole::history_up() {

@@ -6,10 +6,15 @@
 //
 // Invariants:
 // - The global `mesh` is one shared mesh for the console's whole life; before each line it is made equal to
-//   the document's mesh (assigned in place, so handles kept in globals stay usable), and if the line changed
-//   it, the change reaches the document through apply_operation under the label "console: <line>": undo,
-//   the diff highlights and the tables work as for F or S. A line that fails after changing the mesh still
-//   hands the change over (a student sees what their code did), labelled "console (error): ...".
+//   the document's mesh (in place, so handles kept in globals stay usable), and if the line changed it, the
+//   change reaches the document through apply_operation under the label "console: <line>": undo, the diff
+//   highlights and the tables work as for F or S. A line that fails after changing the mesh still hands the
+//   change over (a student sees what their code did), labelled "console (error): ...".
+// - Time proportional to the edit on a big mesh: a local change reaches the document as the same writes (a patch
+//   made again through the setters, so the document keeps a patch too), and the console's mesh catches up with one
+//   local change made elsewhere (F, S, undo) by applying the document's `last.patch`. Only other changes copy the
+//   mesh: the first line, a whole-mesh change, two changes made elsewhere between lines. Catching up moves the
+//   console mesh's version on, so the script's own undo history (mesh:undo()) is dropped, never replayed onto it.
 // - `selected` is the handle of the window's selection (nil when nothing is selected), set before each line.
 // - Limits are smaller than `meshedit run`'s: the window must stay responsive, so a runaway line stops after
 //   ~2e8 instructions or 5 s; the runtime's limits cannot be escaped with pcall (lua_runtime.h).
@@ -66,8 +71,11 @@ class ScriptConsole {
 
   LuaRuntime lua_;
   std::shared_ptr<HalfedgeMesh> mesh_;
+  // The document state the console's mesh holds (UINT64_MAX: none), and the console mesh's version then (a Lua
+  // change since would show as another version).
   uint64_t synced_generation_ = UINT64_MAX;
   uint64_t synced_version_ = UINT64_MAX;
+  uint64_t mesh_version_when_synced_ = UINT64_MAX;
   std::deque<ConsoleEntry> entries_;
   std::vector<std::string> history_;
   size_t history_cursor_ = 0;  // == history_.size() when not browsing

@@ -41,6 +41,8 @@
 #include "support/imgui_harness.h"
 #include "ui/mesh_document.h"
 #include "ui/pointer_tables.h"
+#include "ui/script_console.h"
+#include "ui/selection.h"
 
 namespace {
 
@@ -312,6 +314,25 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   validation_step("document: validation after the split");
   document_step("document: undo (patch)", [&] { undo(doc); });
   validation_step("document: validation after the undo");
+
+  // A console line that edits the mesh: the console's own mesh syncs from the document, the script edits it, and the
+  // change reaches the document as the same writes (a patch). The first line copies the document's mesh into the
+  // console, and the script's undo history copies it again at its first operation; later lines, and a line after
+  // one edit made elsewhere (F), cost time proportional to the edit.
+  ScriptConsole console;
+  const Selection nothing;
+  auto console_step = [&](const char* label, const std::string& line) {
+    document_step(label, [&] { console.submit(doc, nothing, line); });
+  };
+  console_step("console: a flip, first line (copies the mesh twice)",
+               "mesh:flip(mesh:edge(" + std::to_string(edges / 9) + "))");
+  validation_step("document: validation after the console's flip");
+  console_step("console: a flip, next line", "mesh:flip(mesh:edge(" + std::to_string(edges / 10) + "))");
+  console_step("console: one position written", "mesh:vertex(7).position = mesh:vertex(8).position");
+  edit("document: apply_operation(flip) (as F would)", "flip", edges / 11);
+  console_step("console: a flip after that (catches up by patch)",
+               "mesh:flip(mesh:edge(" + std::to_string(edges / 12) + "))");
+  validation_step("document: validation after those two lines");
 }
 
 // The halfedge tab of the pointer tables at 6M+ halfedges: frames at the top, the middle and the end, and the worst

@@ -3,6 +3,7 @@
 // reported without losing the console, and the transcript and history stay bounded.
 #include <gtest/gtest.h>
 
+#include <initializer_list>
 #include <string>
 
 #include "core/mesh_build.h"
@@ -65,6 +66,69 @@ TEST(ScriptConsole, HandlesKeptInGlobalsSeeLaterDocumentChanges) {
   ASSERT_TRUE(apply_operation(doc, "flip e7", [](HalfedgeMesh& m) { return flip(m, EdgeId(7)); }).ok());
   console.submit(doc, {}, "tostring(h.vertex), tostring(h.next)");
   EXPECT_EQ(last_entry(console).text, format_id(doc.mesh.vertex(h)) + "\t" + format_id(doc.mesh.next(h)));
+}
+
+HalfedgeMesh flipped(HalfedgeMesh mesh, std::initializer_list<uint32_t> edges) {
+  for (const uint32_t e : edges) EXPECT_TRUE(flip(mesh, EdgeId(e)).ok());
+  return mesh;
+}
+
+// A local line reaches the document as writes its journal logs: the document keeps a patch (no copy of the mesh,
+// the diff and the validation from the patch), and undo and redo step through it.
+TEST(ScriptConsole, ALocalLineReachesTheDocumentAsAPatch) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(6, 5)));
+  const HalfedgeMesh original = doc.mesh;
+  ScriptConsole console;
+  console.submit(doc, {}, "mesh:flip(mesh:edge(4))");
+  EXPECT_TRUE(doc.mesh.same_as(flipped(original, {4})));
+  EXPECT_TRUE(doc.last.patch.has_value());
+  console.submit(doc, {}, "mesh:split(mesh:edge(9))");
+  HalfedgeMesh expected = flipped(original, {4});
+  ASSERT_TRUE(split(expected, EdgeId(9)).ok());
+  EXPECT_TRUE(doc.mesh.same_as(expected));
+  EXPECT_TRUE(doc.last.patch.has_value());
+  ASSERT_TRUE(undo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(flipped(original, {4})));
+  ASSERT_TRUE(redo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(expected));
+}
+
+// The console's mesh catches up with changes made elsewhere, one (from the document's patch) or two (copied).
+TEST(ScriptConsole, CatchesUpWithChangesMadeElsewhere) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(6, 5)));
+  const HalfedgeMesh original = doc.mesh;
+  ScriptConsole console;
+  console.submit(doc, {}, "mesh:flip(mesh:edge(4))");
+  ASSERT_TRUE(apply_operation(doc, "flip e9", [](HalfedgeMesh& m) { return flip(m, EdgeId(9)); }).ok());
+  console.submit(doc, {}, "mesh:flip(mesh:edge(11))");
+  EXPECT_TRUE(doc.mesh.same_as(flipped(original, {4, 9, 11})));
+
+  ASSERT_TRUE(apply_operation(doc, "flip e14", [](HalfedgeMesh& m) { return flip(m, EdgeId(14)); }).ok());
+  ASSERT_TRUE(apply_operation(doc, "flip e20", [](HalfedgeMesh& m) { return flip(m, EdgeId(20)); }).ok());
+  console.submit(doc, {}, "mesh:flip(mesh:edge(25))");
+  EXPECT_TRUE(doc.mesh.same_as(flipped(original, {4, 9, 11, 14, 20, 25})));
+  // The script sees both changes made elsewhere, not only the last.
+  console.submit(doc, {}, "tostring(mesh:edge(14).halfedge.next), tostring(mesh:edge(20).halfedge.next)");
+  const auto next_on = [&](uint32_t e) { return format_id(doc.mesh.next(doc.mesh.halfedge(EdgeId(e)))); };
+  EXPECT_EQ(last_entry(console).text, next_on(14) + "\t" + next_on(20));
+}
+
+// mesh:undo() in the console undoes the console's own operations only while nothing else changed the mesh: after a
+// change made elsewhere it has nothing to undo, rather than replaying its history over that change.
+TEST(ScriptConsole, TheScriptsUndoNeverReplaysOverAChangeMadeElsewhere) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_torus(6, 5)));
+  const HalfedgeMesh original = doc.mesh;
+  ScriptConsole console;
+  console.submit(doc, {}, "mesh:flip(mesh:edge(4))");
+  console.submit(doc, {}, "tostring(mesh:undo())");
+  EXPECT_EQ(last_entry(console).text, "flip e4");
+  EXPECT_TRUE(doc.mesh.same_as(original));
+
+  console.submit(doc, {}, "mesh:flip(mesh:edge(4))");
+  ASSERT_TRUE(apply_operation(doc, "flip e9", [](HalfedgeMesh& m) { return flip(m, EdgeId(9)); }).ok());
+  console.submit(doc, {}, "tostring(mesh:undo())");
+  EXPECT_EQ(last_entry(console).text, "nil");
+  EXPECT_TRUE(doc.mesh.same_as(flipped(original, {4, 9})));
 }
 
 TEST(ScriptConsole, SelectedIsTheWindowsSelection) {
