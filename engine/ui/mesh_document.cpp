@@ -436,12 +436,19 @@ bool last_patch_follows_clean(const MeshDocument& doc) {
   return cache.filled && cache.value.clean && cache.generation == doc.generation && doc.last.patch &&
          doc.last.version_before == cache.version && doc.last.version_after == doc.mesh.version();
 }
+
+
+// True when the last change, from a clean state, kept the mesh clean: its patch alone tells (core/patch_check.h).
+bool last_patch_kept_clean(MeshDocument& doc) {
+  return last_patch_follows_clean(doc) &&
+         cached(doc.patch_check, doc, [&] { return edit_keeps_clean(doc.mesh, *doc.last.patch); });
+}
 }  // namespace
 
 const ValidationReport& cached_validation(MeshDocument& doc) {
   return cached(doc.validation, doc, [&] {
            CheckedValidation checked;
-           if (last_patch_follows_clean(doc) && edit_keeps_clean(doc.mesh, *doc.last.patch)) {
+           if (last_patch_kept_clean(doc)) {
              checked.clean = checked.from_patch = true;
            } else {
              checked.clean = mesh_is_clean(doc.mesh, hardware_threads());
@@ -451,6 +458,11 @@ const ValidationReport& cached_validation(MeshDocument& doc) {
          }).report;
 }
 
+const ValidationReport* cached_validation_if_cheap(MeshDocument& doc) {
+  const bool cheap = validation_is_current(doc) || doc.mesh.proven_valid_triangles() || last_patch_kept_clean(doc);
+  return cheap ? &cached_validation(doc) : nullptr;
+}
+
 const MeshStats& cached_stats(MeshDocument& doc) {
   return cached(doc.stats, doc, [&] { return compute_stats(doc.mesh); });
 }
@@ -458,10 +470,6 @@ const MeshStats& cached_stats(MeshDocument& doc) {
 bool validation_is_current(const MeshDocument& doc) {
   return doc.validation.filled && doc.validation.generation == doc.generation &&
          doc.validation.version == doc.mesh.version();
-}
-
-bool validation_is_cheap(const MeshDocument& doc) {
-  return validation_is_current(doc) || doc.mesh.proven_valid_triangles() || last_patch_follows_clean(doc);
 }
 
 }  // namespace meshedit

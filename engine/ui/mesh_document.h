@@ -174,6 +174,7 @@ struct MeshDocument {
   // different meshes whose version counters happen to agree.
   uint64_t generation = 0;
   VersionCache<CheckedValidation> validation;
+  VersionCache<bool> patch_check;  // edit_keeps_clean for the last change, when it followed a clean state
   VersionCache<MeshStats> stats;
 };
 
@@ -274,8 +275,9 @@ const ValidationReport& cached_validation(MeshDocument& doc);
 const MeshStats& cached_stats(MeshDocument& doc);
 // True when cached_validation() would return without running validate().
 bool validation_is_current(const MeshDocument& doc);
-// True when cached_validation() costs no whole-mesh pass: it is current, the mesh is vouched valid, or the last change
-// was local and the state before it was clean (then only the change's patch is checked).
-bool validation_is_cheap(const MeshDocument& doc);
+// cached_validation() when it costs no whole-mesh pass: it is current, the mesh is vouched valid, or the last change
+// was local, from a state the cache found clean, and its patch shows it kept the mesh clean (checked at most once
+// per state). nullptr when only a whole-mesh pass can tell (a big mesh then waits for the user to ask).
+const ValidationReport* cached_validation_if_cheap(MeshDocument& doc);
 
 }  // namespace meshedit

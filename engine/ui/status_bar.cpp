@@ -20,8 +20,8 @@ ImVec4 severity_color(Severity severity) {
 }
 
 void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& state) {
-  const bool automatic = doc.mesh.num_halfedges() <= state.auto_validate_max_halfedges || validation_is_cheap(doc);
-  if (!automatic && !validation_is_current(doc)) {
+  const bool automatic = doc.mesh.num_halfedges() <= state.auto_validate_max_halfedges;
+  if (!automatic && !cached_validation_if_cheap(doc)) {
     ImGui::TextDisabled("not validated (large mesh)");
     ImGui::SameLine();
     const bool pressed = ImGui::SmallButton("validate");

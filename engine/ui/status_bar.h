@@ -5,8 +5,9 @@
 // Invariants:
 // - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
 //   StatusBarState::auto_validate_max_halfedges are validated only when the user presses "validate", unless the
-//   cache can answer without a whole-mesh pass (validation_is_cheap: a vouched mesh, or a local edit of a state it
-//   found valid), so edits on a big mesh stay validated once it has been.
+//   cache can answer without a whole-mesh pass (cached_validation_if_cheap: a vouched mesh, or a local edit of a
+//   state it found valid that its patch shows kept it valid), so edits on a big mesh stay validated once it has
+//   been; an edit that breaks it waits for the button (the report needs the whole mesh: ~0.5 s at 2.5M faces).
 // - Counts and the Euler characteristic come from the mesh's live counters: O(1) per frame.
 #pragma once
 

@@ -87,6 +87,28 @@ TEST(StatusBar, BigMeshesStayValidatedThroughLocalEdits) {
   EXPECT_EQ(t.doc.validation.computations, 2u);
 }
 
+// A local edit that breaks a big mesh is not validated by itself: the report needs a whole-mesh pass, which waits
+// for the button, as for any unvalidated big mesh.
+TEST(StatusBar, ABigMeshBrokenByAnEditWaitsForTheButton) {
+  StatusFixture t(grid_1x1());
+  t.state.auto_validate_max_halfedges = 5;
+  t.frame();
+  t.imgui.click(t.probe.find("validate")->center(), [&] { t.draw(); });
+  ASSERT_TRUE(apply_operation(t.doc, "break", [](HalfedgeMesh& m) {
+    m.set_twin(H(0), H(1));
+    return Check::yes();
+  }).ok);
+  t.frame();
+  t.frame();
+  EXPECT_EQ(t.doc.validation.computations, 1u);
+  EXPECT_EQ(t.doc.patch_check.computations, 1u);  // once, not once per frame
+  const UiProbe::Item* button = t.probe.find("validate");
+  ASSERT_NE(button, nullptr);
+  t.imgui.click(button->center(), [&] { t.draw(); });
+  EXPECT_FALSE(cached_validation(t.doc).ok());
+  EXPECT_NE(t.probe.find("select-culprit"), nullptr);
+}
+
 TEST(StatusBar, ErrorMessagesOfferTheirElement) {
   StatusFixture t(grid_1x1());
   set_message(t.doc, Severity::Error, "f1 is upside down", F(1));
