@@ -48,10 +48,7 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   }
 }
 
-void EditorApp::fit_camera() {
-  camera_.fit(mesh_renderer_->bounds());
-  camera_.zoom(-kFitZoomOutSteps);
-}
+void EditorApp::fit_camera() { fit_camera(mesh_renderer_->bounds()); }
 
 void EditorApp::reset_view() {
   camera_.reset();

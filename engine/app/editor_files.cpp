@@ -1,56 +1,141 @@
-// EditorApp: opening and saving files, showing a mesh as a new document, and the recent-files list (see
-// editor_app.h).
-#include "app/editor_app.h"
+// EditorApp: opening and saving files, showing a mesh, a curve or patches as what the window edits, and the
+// recent-files list (see editor_app.h).
+//
+// Whole or nothing: everything that can fail (reading the file, building the mesh, tessellating patches, the window
+// title, the new recent list, the message) is made first, while the window still shows what it showed; then the
+// take_* steps switch to it, allocating nothing (replace_mesh moves the mesh in, the strings and lists are swapped
+// or moved in, the camera is fitted to bounds read from the mesh). The renderer comes last: it is a view that every
+// frame updates from the document, so when it cannot take the new mesh at once (memory ran out, a mesh too large to
+// draw) it drops what it showed and the next frame tries again, under the frame guard, which reports what stops it.
+#include <deque>
+#include <optional>
+#include <type_traits>
 
+#include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "core/mesh_build.h"
 #include "io/mesh_file.h"
+#include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
 
 namespace meshedit {
 
 namespace {
+
 constexpr size_t kRecentFiles = 8;
+
+// Moved in whole, without allocating (take_curve, take_patches).
+static_assert(std::is_nothrow_move_assignable_v<CurveEditorState>);
+static_assert(std::is_nothrow_move_assignable_v<PatchViewState>);
+
+// `recent` with `path` first (moved up when it is there already), at most kRecentFiles long. A new list, so the one
+// in use stays as it was when memory runs out making it.
+std::deque<std::string> with_recent(const std::deque<std::string>& recent, std::string path) {
+  std::deque<std::string> list;
+  list.push_back(std::move(path));
+  for (const std::string& old : recent) {
+    if (list.size() == kRecentFiles) break;
+    if (old != list.front()) list.push_back(old);
+  }
+  return list;
+}
+
+std::string window_title(const std::string& name) { return "MeshEdit - " + name; }
+
+// `patches` in a patch view, tessellated: ready to be moved in.
+PatchViewState tessellated_view(const std::vector<BezierPatch>& patches) {
+  PatchViewState view = make_patch_view(patches);
+  update_tessellation(view);
+  return view;
+}
+
+// Has `renderer` show `mesh` now, so that a pick before the next frame draws finds the new mesh. When it cannot, it
+// shows nothing (and picks nothing) until the next frame's update, which tries again under the frame guard.
+void refresh_view(MeshRenderer& renderer, const HalfedgeMesh& mesh) noexcept {
+  try {
+    renderer.update(mesh);
+  } catch (const std::exception&) {
+    renderer.invalidate();
+  }
+}
+
 }  // namespace
 
 void EditorApp::remember_recent(const std::filesystem::path& path) {
-  const std::string text = path.string();
-  std::erase(recent_, text);
-  recent_.push_front(text);
-  if (recent_.size() > kRecentFiles) recent_.pop_back();
+  std::deque<std::string> recent = with_recent(recent_, path.string());
+  recent_.swap(recent);
+}
+
+void EditorApp::fit_camera(const BoundingBox& bounds) {
+  camera_.fit(bounds);
+  camera_.zoom(-kFitZoomOutSteps);
+}
+
+void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path) {
+  const BoundingBox bounds = mesh_bounds(mesh);  // what the renderer's bounds will be, read before the move
+  replace_mesh(doc_, std::move(mesh), std::move(path));
+  selection_ = {};
+  mode_ = ViewMode::Mesh;
+  fit_camera(bounds);
+  refresh_view(*mesh_renderer_, doc_.mesh);
+}
+
+void EditorApp::take_curve(CurveEditorState&& curve) {
+  curve_ = std::move(curve);
+  mode_ = ViewMode::Curve;
+}
+
+void EditorApp::take_patches(PatchViewState&& patches) {
+  patches_ = std::move(patches);
+  mode_ = ViewMode::Patches;
+  if (!patches_.tessellation.mesh) return;
+  fit_camera(mesh_bounds(*patches_.tessellation.mesh));
+  refresh_view(*patch_renderer_, *patches_.tessellation.mesh);
 }
 
 void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
-  replace_mesh(doc_, std::move(mesh), name);
-  selection_ = {};
-  mode_ = ViewMode::Mesh;
-  title_ = "MeshEdit - " + (name.empty() ? std::string("untitled") : name);
-  mesh_renderer_->update(doc_.mesh);
-  fit_camera();
+  std::string title = window_title(name.empty() ? std::string("untitled") : name);
+  std::string path = name;
+  take_mesh(std::move(mesh), std::move(path));
+  title_.swap(title);
 }
+
+void EditorApp::show_curve(const BezierCurve& curve) { take_curve(make_curve_editor(curve)); }
+
+void EditorApp::show_patches(const std::vector<BezierPatch>& patches) { take_patches(tessellated_view(patches)); }
 
 bool EditorApp::open(const std::filesystem::path& path) {
   try {
     if (path.extension() == ".lua") return open_lesson(path);
     exercises_.finish_replay(doc_);
-    const LoadedFile file = load_file(path);
+    LoadedFile file = load_file(path);
+    std::optional<HalfedgeMesh> mesh;
+    std::optional<CurveEditorState> curve;
+    std::optional<PatchViewState> patches;
     switch (file.kind) {
       case FileKind::Curve:
-        show_curve(file.curve);
+        curve = make_curve_editor(std::move(file.curve));
         break;
       case FileKind::Patches:
-        show_patches(file.patches);
+        patches = tessellated_view(file.patches);
         break;
       case FileKind::Mesh:
-        show_mesh(build_from_file(file.mesh, path).mesh, path.string());
+        mesh = build_from_file(file.mesh, path).mesh;
     }
-    title_ = "MeshEdit - " + path.filename().string();
-    remember_recent(path);
-    message(Severity::Info, "opened " + path.string());
+    std::string title = window_title(path.filename().string());
+    std::string name = path.string();
+    std::deque<std::string> recent = with_recent(recent_, path.string());
+    std::string text = "opened " + path.string();
+    // Nothing from here on can fail: the window switches to the file whole.
+    if (mesh) take_mesh(std::move(*mesh), std::move(name));
+    if (curve) take_curve(std::move(*curve));
+    if (patches) take_patches(std::move(*patches));
+    title_.swap(title);
+    recent_.swap(recent);
+    set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
-    // The current document stays (out of memory part-way: the old one or the new one, whole); the report needs no
-    // memory, so nothing escapes from here.
+    // Nothing was switched yet: the window shows what it showed. The report needs no memory, so nothing escapes.
     report_exception(doc_, e);
     return false;
   }
