@@ -67,9 +67,10 @@ class EditorApp {
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
   // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);
-  // Shows `mesh` as a new document named `name` ("untitled" in the title when empty), or throws with nothing changed
-  // (the default cube when started without a file).
+  // Shows `mesh` as a new document named `name` ("untitled" in the title when empty), or throws with nothing changed.
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
+  // What the window shows as it starts, before the file it was given (if any) is opened: the default cube.
+  void show_start_mesh();
   // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
   void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
   void show_curve(const BezierCurve& curve);

@@ -14,6 +14,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "core/mesh_build.h"
+#include "core/primitives.h"
 #include "io/mesh_file.h"
 #include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
@@ -99,6 +100,8 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
   take_mesh(std::move(mesh), std::move(path));
   title_.swap(title);
 }
+
+void EditorApp::show_start_mesh() { show_mesh(build_halfedge_mesh(make_cube()), ""); }
 
 void EditorApp::show_curve(const BezierCurve& curve) { take_curve(make_curve_editor(curve)); }
 
