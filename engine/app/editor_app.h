@@ -11,6 +11,11 @@
 //   show_patches are whole or nothing too, and throw what stopped them. open(), save() and
 //   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
 //   memory (ui/exception_report.h).
+// - The window starts with the default cube (show_start_mesh). When memory runs out making or showing it, the window
+//   opens all the same, empty (no mesh, the title "MeshEdit"), with an Error in the status line that says memory ran
+//   out; it works as usual from there, and a file named on the command line is still opened. Only running out while
+//   the app itself is made (its renderers, shaders and panels: the constructor) ends the program, before the window
+//   shows anything, with the error on stderr (cli.cpp).
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
@@ -69,7 +74,8 @@ class EditorApp {
   void open_dropped(const std::vector<std::string>& paths);
   // Shows `mesh` as a new document named `name` ("untitled" in the title when empty), or throws with nothing changed.
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
-  // What the window shows as it starts, before the file it was given (if any) is opened: the default cube.
+  // What the window shows as it starts, before the file it was given (if any) is opened: the default cube. Never
+  // throws: out of memory, the window starts empty, with an Error that says so (see the invariants).
   void show_start_mesh();
   // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
   void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);

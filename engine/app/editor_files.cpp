@@ -8,6 +8,7 @@
 // frame updates from the document, so when it cannot take the new mesh at once (memory ran out, a mesh too large to
 // draw) it drops what it showed and the next frame tries again, under the frame guard, which reports what stops it.
 #include <deque>
+#include <new>
 #include <optional>
 #include <type_traits>
 
@@ -101,7 +102,17 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
   title_.swap(title);
 }
 
-void EditorApp::show_start_mesh() { show_mesh(build_halfedge_mesh(make_cube()), ""); }
+void EditorApp::show_start_mesh() {
+  try {
+    show_mesh(build_halfedge_mesh(make_cube()), "");
+  } catch (const std::bad_alloc&) {
+    // show_mesh is whole or nothing: the document is as it was (as the window starts, the empty one).
+    set_message_noexcept(doc_, Severity::Error,
+                         [] { return std::string("memory ran out making the start-up cube; open a file to start"); });
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);  // never expected: the cube is a valid mesh
+  }
+}
 
 void EditorApp::show_curve(const BezierCurve& curve) { take_curve(make_curve_editor(curve)); }
 

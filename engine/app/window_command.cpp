@@ -29,8 +29,8 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   GlfwWindow window("MeshEdit", width, height);
   window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
-  app.show_start_mesh();
-  if (!args.empty()) app.open(args[0]);  // on failure the cube stays and the status line says why
+  app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
+  if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
 
   auto last = std::chrono::steady_clock::now();
   float frame_ms = 0.0f;
