@@ -2,11 +2,12 @@
 // recent-files list (see editor_app.h).
 //
 // Whole or nothing: everything that can fail (reading the file, building the mesh, tessellating patches, the window
-// title, the new recent list, the message) is made first, while the window still shows what it showed; then the
-// take_* steps switch to it, allocating nothing (replace_mesh moves the mesh in, the strings and lists are swapped
-// or moved in, the camera is fitted to bounds read from the mesh). The renderer comes last: it is a view that every
-// frame updates from the document, so when it cannot take the new mesh at once (memory ran out, a mesh too large to
-// draw) it drops what it showed and the next frame tries again, under the frame guard, which reports what stops it.
+// title, the new recent list, the message) is made first, while the window still shows what it showed; then the take_*
+// steps switch to it with steps that cannot fail (replace_mesh moves the mesh in, its own message falling back to
+// kMemoryRanOut; the strings and lists are swapped or moved in; the camera is fitted to bounds read from the mesh). The
+// renderer comes last: it is a view that every frame updates from the document, so when it cannot take the new mesh at
+// once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
+// frame guard, which reports what stops it.
 #include <deque>
 #include <new>
 #include <optional>
