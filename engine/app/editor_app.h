@@ -8,7 +8,8 @@
 // - Opening a file is whole or nothing: the document (or the curve or patch view), the view mode, the window title
 //   and the recent list all change to the file's, or none does and the status line says why, memory running out
 //   included (everything that can fail is made before anything changes: editor_files.cpp). show_mesh, show_curve and
-//   show_patches are whole or nothing too, and throw what stopped them. open(), save() and
+//   show_patches are whole or nothing too, and throw what stopped them. A file saved is reported saved and put first
+//   in the recent list; one not saved changes neither (saving makes both before writing). open(), save() and
 //   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
 //   memory (ui/exception_report.h).
 // - The window starts with the default cube (show_start_mesh). When memory runs out making or showing it, the window
@@ -140,7 +141,6 @@ class EditorApp {
   void draw_view_panels(float frame_ms);
   void draw_console();
   void message(Severity severity, const std::string& text);
-  void remember_recent(const std::filesystem::path& path);  // all or nothing: the list stays when memory runs out
   void fit_camera();  // to the mesh the renderer shows
   void fit_camera(const BoundingBox& bounds);
   // Switch the window to a new document, view mode and view with steps that cannot fail (editor_files.cpp): the end

@@ -8,6 +8,7 @@
 // renderer comes last: it is a view that every frame updates from the document, so when it cannot take the new mesh at
 // once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
 // frame guard, which reports what stops it.
+// Saving makes the new recent list and the message before it writes the file, and only swaps them in after.
 #include <deque>
 #include <new>
 #include <optional>
@@ -63,11 +64,6 @@ void refresh_view(MeshRenderer& renderer, const HalfedgeMesh& mesh) noexcept {
 }
 
 }  // namespace
-
-void EditorApp::remember_recent(const std::filesystem::path& path) {
-  std::deque<std::string> recent = with_recent(recent_, path.string());
-  recent_.swap(recent);
-}
 
 void EditorApp::fit_camera(const BoundingBox& bounds) {
   camera_.fit(bounds);
@@ -164,9 +160,12 @@ void EditorApp::open_dropped(const std::vector<std::string>& paths) {
 
 bool EditorApp::save(const std::filesystem::path& path) {
   try {
+    std::deque<std::string> recent = with_recent(recent_, path.string());
+    std::string text = "saved " + path.string();
     save_mesh(path, to_polygon_mesh(doc_.mesh));
-    remember_recent(path);
-    message(Severity::Info, "saved " + path.string());
+    // Nothing from here on can fail: a file written is a file reported saved.
+    recent_.swap(recent);
+    set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
     report_exception(doc_, e);

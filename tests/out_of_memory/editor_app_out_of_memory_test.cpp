@@ -1,11 +1,11 @@
 // EditorApp when memory runs out in what it reports itself and in what the window runs outside the frame guard:
-// opening a file (a missing one, a mesh, a curve, patches), saving where nothing can be written, the files dropped
-// on the window, and a script of actions (--actions). FailingAllocations fails the Nth allocation, or the Nth and
-// every later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing escapes; a
-// file is opened whole or not at all: the document, view, title and recent list are all the opened file's (the
-// document whole and valid), or all as before with an Error that says memory ran out; another message than the one
-// memory to spare gives is such an Error; the call then works with memory to spare; and the script counts a failed
-// expectation whenever an action was not done.
+// opening a file (a missing one, a mesh, a curve, patches), saving (where nothing can be written, and where it can),
+// the files dropped on the window, and a script of actions (--actions). FailingAllocations fails the Nth allocation,
+// or the Nth and every later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing
+// escapes; a file is opened or saved whole or not at all: the document, view, title and recent list are all the
+// opened file's (the document whole and valid) and a saved file is first in the recent list, or all is as before with
+// an Error that says memory ran out; another message than the one memory to spare gives is such an Error; the call
+// then works with memory to spare; and the script counts a failed expectation whenever an action was not done.
 // EditorApp needs an OpenGL context: a surfaceless EGL one, as the render tests use; skipped where none can be made.
 // Nothing draws while allocations fail: the driver's shader compiler may allocate through the replaced operator new.
 #include <unistd.h>
@@ -231,6 +231,39 @@ TEST_F(EditorAppOutOfMemory, ACurveOrPatchesOpenWholeOrNotAtAll) {
 TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
   const fs::path nowhere = dir_ / "no such folder" / "torus.obj";
   expect_failure_reported_alone([&] { return app_->save(nowhere); });
+}
+
+// Saved and reported so, first in the recent list, or not saved, reported so, the recent list as it was.
+TEST_F(EditorAppOutOfMemory, ASaveThatWorksIsReportedWholeOrNotAtAll) {
+  const fs::path saved = dir_ / "saved.obj";
+  MeshDocument& doc = fresh_document();
+  ASSERT_TRUE(app_->save(saved));
+  const DocumentMessage spare = doc.message;
+  const Names saved_names = names_of(*app_);
+  ASSERT_EQ(spare.text, "saved " + saved.string());
+  ASSERT_EQ(saved_names.recent.front(), saved.string());
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      fs::remove(saved);
+      const Before before = before_of(doc);
+      const Names names = names_of(*app_);
+      bool result = false;
+      const bool failed = run_failing(n, later, [&] { result = app_->save(saved); });
+      EXPECT_TRUE(left_alone(doc, before));
+      if (result) {
+        EXPECT_TRUE(fs::exists(saved));
+        EXPECT_EQ(doc.message.text, spare.text);
+        EXPECT_TRUE(names_of(*app_) == saved_names);
+      } else {
+        EXPECT_TRUE(names_of(*app_) == names);
+        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
+      }
+      EXPECT_TRUE(app_->save(saved));  // with memory to spare again
+      if (!failed || HasFailure()) break;
+    }
+  }
 }
 
 TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {
