@@ -1,5 +1,6 @@
 // EditorApp: documents, the 3D view and the panels (see editor_app.h). Keys and mouse are in
-// editor_input.cpp, menus and the open panel in editor_menus.cpp, id labels in id_labels.cpp.
+// editor_input.cpp, menus and the open panel in editor_menus.cpp, id labels in id_labels.cpp, opening and saving
+// files in editor_files.cpp.
 #include "app/editor_app.h"
 
 #include <epoxy/gl.h>
@@ -18,10 +19,6 @@
 
 namespace meshedit {
 
-namespace {
-constexpr size_t kRecentFiles = 8;
-}  // namespace
-
 EditorApp::EditorApp()
     : mesh_renderer_(std::make_unique<MeshRenderer>(shaders_)),
       patch_renderer_(std::make_unique<MeshRenderer>(shaders_)),
@@ -38,67 +35,6 @@ EditorApp::~EditorApp() = default;
 
 void EditorApp::message(Severity severity, const std::string& text) { set_message(doc_, severity, text); }
 
-void EditorApp::remember_recent(const std::filesystem::path& path) {
-  const std::string text = path.string();
-  std::erase(recent_, text);
-  recent_.push_front(text);
-  if (recent_.size() > kRecentFiles) recent_.pop_back();
-}
-
-void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
-  replace_mesh(doc_, std::move(mesh), name);
-  selection_ = {};
-  mode_ = ViewMode::Mesh;
-  title_ = "MeshEdit - " + (name.empty() ? std::string("untitled") : name);
-  mesh_renderer_->update(doc_.mesh);
-  fit_camera();
-}
-
-bool EditorApp::open(const std::filesystem::path& path) {
-  try {
-    if (path.extension() == ".lua") return open_lesson(path);
-    exercises_.finish_replay(doc_);
-    const LoadedFile file = load_file(path);
-    switch (file.kind) {
-      case FileKind::Curve:
-        show_curve(file.curve);
-        break;
-      case FileKind::Patches:
-        show_patches(file.patches);
-        break;
-      case FileKind::Mesh:
-        show_mesh(build_from_file(file.mesh, path).mesh, path.string());
-    }
-    title_ = "MeshEdit - " + path.filename().string();
-    remember_recent(path);
-    message(Severity::Info, "opened " + path.string());
-    return true;
-  } catch (const std::exception& e) {
-    // The current document stays (out of memory part-way: the old one or the new one, whole); the report needs no
-    // memory, so nothing escapes from here.
-    report_exception(doc_, e);
-    return false;
-  }
-}
-
-void EditorApp::open_dropped(const std::vector<std::string>& paths) {
-  // Called between frames, outside the frame guard: each file under its own guard, so what escapes opening one (a
-  // path that cannot be made for lack of memory) is an Error in the status line and the next file still opens.
-  for (const std::string& path : paths) run_guarded(doc_, [&] { open(path); });
-}
-
-bool EditorApp::save(const std::filesystem::path& path) {
-  try {
-    save_mesh(path, to_polygon_mesh(doc_.mesh));
-    remember_recent(path);
-    message(Severity::Info, "saved " + path.string());
-    return true;
-  } catch (const std::exception& e) {
-    report_exception(doc_, e);
-    return false;
-  }
-}
-
 void EditorApp::write_pending_screenshot(int width, int height) {
   if (!screenshot_path_) return;
   const std::filesystem::path path = std::move(*screenshot_path_);  // moved: no copy to run out of memory
@@ -112,10 +48,7 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   }
 }
 
-void EditorApp::fit_camera() {
-  camera_.fit(mesh_renderer_->bounds());
-  camera_.zoom(-kFitZoomOutSteps);
-}
+void EditorApp::fit_camera() { fit_camera(mesh_renderer_->bounds()); }
 
 void EditorApp::reset_view() {
   camera_.reset();

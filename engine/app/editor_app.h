@@ -5,10 +5,18 @@
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
 //   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do.
-// - Opening a file that fails leaves everything as it was and shows the error in the status line. open(), save() and
+// - Opening a file is whole or nothing: the document (or the curve or patch view), the view mode, the window title
+//   and the recent list all change to the file's, or none does and the status line says why, memory running out
+//   included (everything that can fail is made before anything changes: editor_files.cpp). show_mesh, show_curve and
+//   show_patches are whole or nothing too, and throw what stopped them. A file saved is reported saved and put first
+//   in the recent list; one not saved changes neither (saving makes both before writing). open(), save() and
 //   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
-//   memory (ui/exception_report.h). Out of memory part-way through opening, the document is the old one or the new
-//   one, whole (replace_mesh).
+//   memory (ui/exception_report.h).
+// - The window starts with the default cube (show_start_mesh). When memory runs out making or showing it, the window
+//   opens all the same, empty (no mesh, the title "MeshEdit"), with an Error in the status line that says memory ran
+//   out; it works as usual from there, and a file named on the command line is still opened. Only running out while
+//   the app itself is made (its renderers, shaders and panels: the constructor) ends the program, before the window
+//   shows anything, with the error on stderr (cli.cpp).
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
@@ -59,14 +67,17 @@ class EditorApp {
   EditorApp();  // needs a current OpenGL 3.3 core context (throws RenderError if the shaders are missing)
   ~EditorApp();
 
-  // Opens any supported file; on failure keeps the current document and reports the error. Returns
-  // whether it opened.
+  // Opens any supported file: shows it, names it in the title and puts it first in the recent list. On failure
+  // keeps all of them as they were and reports the error. Returns whether it opened.
   bool open(const std::filesystem::path& path);
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
   // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);
-  // Shows `mesh` as a new document (the default cube when started without a file).
+  // Shows `mesh` as a new document named `name` ("untitled" in the title when empty), or throws with nothing changed.
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
+  // What the window shows as it starts, before the file it was given (if any) is opened: the default cube. Never
+  // throws: out of memory, the window starts empty, with an Error that says so (see the invariants).
+  void show_start_mesh();
   // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
   void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
   void show_curve(const BezierCurve& curve);
@@ -114,6 +125,8 @@ class EditorApp {
   MeshDocument& document() { return doc_; }
   Selection& selection() { return selection_; }
   const std::string& title() const { return title_; }
+  // The files opened or saved lately, the latest first (File > Open recent).
+  const std::deque<std::string>& recent_files() const { return recent_; }
 
  private:
   void run_frame(int width, int height, float frame_ms);  // frame() without its guard
@@ -128,8 +141,13 @@ class EditorApp {
   void draw_view_panels(float frame_ms);
   void draw_console();
   void message(Severity severity, const std::string& text);
-  void remember_recent(const std::filesystem::path& path);
-  void fit_camera();
+  void fit_camera();  // to the mesh the renderer shows
+  void fit_camera(const BoundingBox& bounds);
+  // Switch the window to a new document, view mode and view with steps that cannot fail (editor_files.cpp): the end
+  // of showing a mesh, a curve or patches, once everything that can fail was made.
+  void take_mesh(HalfedgeMesh&& mesh, std::string&& path);
+  void take_curve(CurveEditorState&& curve);
+  void take_patches(PatchViewState&& patches);  // tessellated already
   bool apply_key(int key, KeyMods mods);
   void draw_lesson_marks(int width, int height);
   void update_lesson(float frame_ms);

@@ -38,22 +38,6 @@ void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
   if (fit || !was_mesh_view) fit_camera();
 }
 
-void EditorApp::show_curve(const BezierCurve& curve) {
-  curve_ = make_curve_editor(curve);
-  mode_ = ViewMode::Curve;
-}
-
-void EditorApp::show_patches(const std::vector<BezierPatch>& patches) {
-  patches_ = make_patch_view(patches);
-  mode_ = ViewMode::Patches;
-  update_tessellation(patches_);
-  if (patches_.tessellation.mesh) {
-    patch_renderer_->update(*patches_.tessellation.mesh);
-    camera_.fit(patch_renderer_->bounds());
-    camera_.zoom(-kFitZoomOutSteps);
-  }
-}
-
 bool EditorApp::open_lesson(const std::filesystem::path& path) {
   const bool loaded = load_lesson(*lesson_, lesson_panel_, path);
   lesson_selection_ = selection_.selected;

@@ -3,6 +3,7 @@
 #include <imgui.h>
 
 #include <algorithm>
+#include <cstdio>
 #include <filesystem>
 
 #include "app/editor_app.h"
@@ -63,8 +64,9 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
     if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
     if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
-    const std::string phase = "Loop: " + next_loop_phase_label(doc_);
-    if (ImGui::MenuItem(phase.c_str(), "Shift+L")) handle_key(GLFW_KEY_L, {false, true});
+    char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
+    std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
+    if (ImGui::MenuItem(phase, "Shift+L")) handle_key(GLFW_KEY_L, {false, true});
     bool loop_beta = loop_weights_ == LoopWeights::Loop;
     if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
       loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;

@@ -9,8 +9,6 @@
 #include "app/editor_app.h"
 #include "app/glfw_window.h"
 #include "app/scripted_actions.h"
-#include "core/mesh_build.h"
-#include "core/primitives.h"
 #include "ui/exception_report.h"
 
 namespace meshedit {
@@ -31,8 +29,8 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   GlfwWindow window("MeshEdit", width, height);
   window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
-  app.show_mesh(build_halfedge_mesh(make_cube()), "");
-  if (!args.empty()) app.open(args[0]);  // on failure the cube stays and the status line says why
+  app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
+  if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
 
   auto last = std::chrono::steady_clock::now();
   float frame_ms = 0.0f;

@@ -4,7 +4,8 @@
 // phase 1's state) is made before the document changes, and a std::bad_alloc there ends the action with nothing done
 // (Error, kMemoryRanOut); the edit runs through apply_operation, undo or redo, which never throw it; every message
 // is set with set_message_noexcept or append_to_message, which fall back to kMemoryRanOut; the bookkeeping that
-// follows a kept change (the selection, the Loop stepper) allocates nothing.
+// follows a kept change (the selection, the Loop stepper) allocates nothing. edge_for_operation, asked outside the
+// actions too (the exercise session), turns its search's std::bad_alloc into a refusal with kMemoryRanOut.
 #include "ui/document_actions.h"
 
 #include <new>
@@ -48,34 +49,8 @@ void append_to_message(MeshDocument& doc, MakeText&& make_text) noexcept {
   }
 }
 
-// Runs a local operation on the selected edge and reports the outcome on doc.message.
-template <class Op>
-auto edit_selected_edge(MeshDocument& doc, Selection& selection, const char* verb, Op op) {
-  using Result = decltype(op(doc.mesh, EdgeId()));
-  Result result{};
-  OpResult<EdgeId> edge;
-  std::string label;
-  try {
-    edge = edge_for_operation(doc.mesh, selection.selected);
-    if (edge) label = std::string(verb) + " " + format_id(edge.value);
-  } catch (const std::bad_alloc&) {
-    result.check = memory_ran_out_before_acting(doc);
-    return result;
-  }
-  if (!edge) {
-    set_message_noexcept(doc, Severity::Warning, [&] { return std::string(verb) + ": " + edge.check.reason; });
-    result.check = std::move(edge.check);
-    return result;
-  }
-  const EdgeId e = edge.value;
-  result = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return op(mesh, e); });
-  keep_if_alive(selection, doc.mesh);
-  return result;
-}
-
-}  // namespace
-
-OpResult<EdgeId> edge_for_operation(const HalfedgeMesh& mesh, ElementRef selected) {
+// edge_for_operation without its guard: std::bad_alloc (building a refusal's sentence) escapes.
+OpResult<EdgeId> find_edge(const HalfedgeMesh& mesh, ElementRef selected) {
   OpResult<EdgeId> result;
   if (!selected.valid()) {
     result.check = Check::no("select an edge first");
@@ -101,6 +76,41 @@ OpResult<EdgeId> edge_for_operation(const HalfedgeMesh& mesh, ElementRef selecte
   result.check = Check::no(format_id(selected) + " is a " + kind_name(selected.kind) +
                            "; select an edge (or one of its halfedges) first");
   return result;
+}
+
+// Runs a local operation on the selected edge and reports the outcome on doc.message.
+template <class Op>
+auto edit_selected_edge(MeshDocument& doc, Selection& selection, const char* verb, Op op) {
+  using Result = decltype(op(doc.mesh, EdgeId()));
+  Result result{};
+  OpResult<EdgeId> edge;
+  std::string label;
+  try {
+    edge = find_edge(doc.mesh, selection.selected);
+    if (edge) label = std::string(verb) + " " + format_id(edge.value);
+  } catch (const std::bad_alloc&) {
+    result.check = memory_ran_out_before_acting(doc);
+    return result;
+  }
+  if (!edge) {
+    set_message_noexcept(doc, Severity::Warning, [&] { return std::string(verb) + ": " + edge.check.reason; });
+    result.check = std::move(edge.check);
+    return result;
+  }
+  const EdgeId e = edge.value;
+  result = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return op(mesh, e); });
+  keep_if_alive(selection, doc.mesh);
+  return result;
+}
+
+}  // namespace
+
+OpResult<EdgeId> edge_for_operation(const HalfedgeMesh& mesh, ElementRef selected) {
+  try {
+    return find_edge(mesh, selected);
+  } catch (const std::bad_alloc&) {
+    return {Check::no(kMemoryRanOut), EdgeId()};  // the reason fits std::string's inline buffer: no allocation
+  }
 }
 
 bool navigate_selection(MeshDocument& doc, Selection& selection, NavStep step) {
@@ -163,7 +173,7 @@ Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights we
   return check;
 }
 
-std::string next_loop_phase_label(const MeshDocument& doc) {
+const std::string& next_loop_phase_label(const MeshDocument& doc) {
   const int phase = doc.loop.next_phase > 1 && loop_state_current(doc) ? doc.loop.next_phase : 1;
   return kLoopPhaseLabels[phase];
 }

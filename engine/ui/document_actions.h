@@ -10,8 +10,9 @@
 // - No action throws std::bad_alloc. When memory runs out, an action is either not done (mesh, history, selection
 //   and Loop stepper as they were; an Error that says memory ran out when it would have been done) or done as the
 //   document keeps it (mesh_document.h: recorded, or kept without its record); a message that cannot be built for
-//   lack of memory is kMemoryRanOut, as a Warning or worse. edge_for_operation and next_loop_phase_label return
-//   text, and may throw it.
+//   lack of memory is kMemoryRanOut, as a Warning or worse. Nor do the questions asked before acting:
+//   edge_for_operation refuses with kMemoryRanOut as its reason when memory runs out building its answer, and
+//   next_loop_phase_label allocates nothing.
 #pragma once
 
 #include <optional>
@@ -25,7 +26,8 @@
 namespace meshedit {
 
 // The edge the local operations act on: the selected edge, or the edge of the selected halfedge.
-// Refused with a sentence when nothing, or something else, is selected or when the pointer is broken.
+// Refused with a sentence when nothing, or something else, is selected or when the pointer is broken; with
+// kMemoryRanOut when memory runs out building that sentence.
 OpResult<EdgeId> edge_for_operation(const HalfedgeMesh& mesh, ElementRef selected);
 
 // N/T/V/E/F/H: moves selection.selected along the pointer; on refusal keeps it and says why. Returns success.
@@ -43,8 +45,9 @@ Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights we
 // diff; phase 1 changes nothing and records nothing. If the mesh changed since the last phase (an undo,
 // another edit), the next call starts again at phase 1 and says so. doc.loop.next_phase tells which is next.
 Check loop_subdivide_step(MeshDocument& doc, Selection& selection, LoopWeights weights = LoopWeights::Course);
-// A sentence for the phase the next loop_subdivide_step() runs ("Loop 2/4: split every original edge").
-std::string next_loop_phase_label(const MeshDocument& doc);
+// A sentence for the phase the next loop_subdivide_step() runs ("Loop 2/4: split every original edge"): one of the
+// labels made when the program starts, so asking allocates nothing.
+const std::string& next_loop_phase_label(const MeshDocument& doc);
 
 bool undo_edit(MeshDocument& doc, Selection& selection);  // Ctrl+Z
 bool redo_edit(MeshDocument& doc, Selection& selection);  // Ctrl+Y

@@ -1,14 +1,16 @@
 // EditorApp when memory runs out in what it reports itself and in what the window runs outside the frame guard:
-// opening a file (a missing one, one that opens), saving where nothing can be written, the files dropped on the
-// window, and a script of actions (--actions). FailingAllocations fails the Nth allocation, or the Nth and every
-// later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing escapes; the document
-// is the one before or the opened one, whole and valid; a message other than the one memory to spare gives is an
-// Error that says memory ran out; the call then works with memory to spare; and the script counts a failed
-// expectation whenever an action was not done.
+// opening a file (a missing one, a mesh, a curve, patches), saving (where nothing can be written, and where it can),
+// the files dropped on the window, and a script of actions (--actions). FailingAllocations fails the Nth allocation,
+// or the Nth and every later one, for N = 1, 2, ... until the call gets through without a failure. Each time nothing
+// escapes; a file is opened or saved whole or not at all: the document, view, title and recent list are all the
+// opened file's (the document whole and valid) and a saved file is first in the recent list, or all is as before with
+// an Error that says memory ran out; another message than the one memory to spare gives is such an Error; the call
+// then works with memory to spare; and the script counts a failed expectation whenever an action was not done.
 // EditorApp needs an OpenGL context: a surfaceless EGL one, as the render tests use; skipped where none can be made.
 // Nothing draws while allocations fail: the driver's shader compiler may allocate through the replaced operator new.
 #include <unistd.h>
 
+#include <deque>
 #include <filesystem>
 #include <fstream>
 #include <memory>
@@ -47,15 +49,25 @@ class EditorAppOutOfMemory : public testing::GlTest {
     tetrahedron_ = dir_ / "tetrahedron.obj";
     std::ofstream(tetrahedron_) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n";
     missing_ = dir_ / "missing.obj";
+    curve_ = dir_ / "curve.bzc";
+    std::ofstream(curve_) << "4\n0 0\n0.3 1\n0.7 1\n1 0\n";
+    patch_ = dir_ / "patch.bez";  // one flat patch
+    std::ofstream patch(patch_);
+    patch << "1\n";
+    for (int row = 0; row < 4; ++row) {
+      for (int col = 0; col < 4; ++col) patch << col << " " << row << " 0" << (col < 3 ? "  " : "\n");
+    }
   }
   void TearDown() override {
     app_.reset();  // its GL objects go while the context is current
     if (!dir_.empty()) fs::remove_all(dir_);
   }
 
-  // The window as it starts: a torus with one flip behind it, e4 selected.
+  // The window as it starts: a torus, saved as torus.obj (first in the recent list), with one flip behind it, e4
+  // selected.
   MeshDocument& fresh_document() {
     app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "");
+    EXPECT_TRUE(app_->save(dir_ / "torus.obj"));
     app_->selection().selected = EdgeId(9);
     EXPECT_TRUE(flip_selected(app_->document(), app_->selection()).ok);
     app_->selection().selected = EdgeId(4);
@@ -84,14 +96,15 @@ class EditorAppOutOfMemory : public testing::GlTest {
   // leaves the document as it was, and says what it says with memory to spare or that memory ran out, as an Error.
   template <class Call>
   void expect_failure_reported_alone(Call&& call);
-  // `call` opens the tetrahedron with memory to spare and returns whether it says so. Failing each of its
-  // allocations in turn, the document is the old one or the tetrahedron, whole; a call that does not say it opened
-  // says that memory ran out; and with memory to spare again the call opens the tetrahedron.
+  // `call` opens `file` with memory to spare and returns whether it says so. Failing each of its allocations in
+  // turn, the window shows the old document, view, title and recent list, and says that memory ran out, or it says
+  // it opened `file` and shows it (a mesh file: as the document, whole), under its title, first in the recent list;
+  // and with memory to spare again the call opens `file`.
   template <class Call>
-  void expect_opened_whole_or_not(Call&& call);
+  void expect_opened_whole_or_not(const fs::path& file, Call&& call);
 
   std::unique_ptr<EditorApp> app_;
-  fs::path dir_, tetrahedron_, missing_;
+  fs::path dir_, tetrahedron_, missing_, curve_, patch_;
 };
 
 // What a document looked like, to tell whether a call left it alone.
@@ -115,6 +128,15 @@ bool replaced_by(const MeshDocument& doc, const Before& before, const HalfedgeMe
   return doc.mesh.same_as(opened) && doc.generation == before.generation + 1 && !doc.history.can_undo() &&
          !doc.history.can_redo() && validate(doc.mesh).ok();
 }
+
+// What the window says about the file it shows besides the document: its title and the recent list.
+struct Names {
+  std::string title;
+  std::deque<std::string> recent;
+  bool operator==(const Names&) const = default;
+};
+
+Names names_of(const EditorApp& app) { return {app.title(), app.recent_files()}; }
 
 bool is_memory_error(const DocumentMessage& message) {
   return message.severity == Severity::Error && message.text.find(kMemoryRanOut) != std::string::npos;
@@ -146,28 +168,45 @@ void EditorAppOutOfMemory::expect_failure_reported_alone(Call&& call) {
 }
 
 template <class Call>
-void EditorAppOutOfMemory::expect_opened_whole_or_not(Call&& call) {
+void EditorAppOutOfMemory::expect_opened_whole_or_not(const fs::path& file, Call&& call) {
   MeshDocument& doc = fresh_document();
+  const Names start = names_of(*app_);
   ASSERT_TRUE(call());
+  const ViewMode opened_mode = app_->mode();
+  const bool mesh_file = opened_mode == ViewMode::Mesh;
   const HalfedgeMesh opened = doc.mesh;
   const DocumentMessage spare = doc.message;
-  ASSERT_EQ(spare.text, "opened " + tetrahedron_.string());
+  const Names opened_names = names_of(*app_);
+  ASSERT_EQ(spare.text, "opened " + file.string());
+  ASSERT_EQ(opened_names.title, "MeshEdit - " + file.filename().string());
+  std::deque<std::string> recent = start.recent;  // `file` moved up to the front
+  std::erase(recent, file.string());
+  recent.push_front(file.string());
+  ASSERT_EQ(opened_names.recent, recent);
   for (const Later later : {Later::Succeed, Later::Fail}) {
     for (size_t n = 1;; ++n) {
       SCOPED_TRACE(n);
       fresh_document();
       const Before before = before_of(doc);
+      const Names names = names_of(*app_);
       bool result = false;
       const bool failed = run_failing(n, later, [&] { result = call(); });
       if (result) {
-        EXPECT_TRUE(replaced_by(doc, before, opened));
+        EXPECT_EQ(app_->mode(), opened_mode);
+        EXPECT_TRUE(mesh_file ? replaced_by(doc, before, opened) : left_alone(doc, before));
         EXPECT_EQ(doc.message.text, spare.text);
+        EXPECT_TRUE(names_of(*app_) == opened_names) << app_->title();
       } else {
-        EXPECT_TRUE(left_alone(doc, before) || replaced_by(doc, before, opened));
+        EXPECT_EQ(app_->mode(), ViewMode::Mesh);
+        EXPECT_TRUE(left_alone(doc, before));
+        EXPECT_TRUE(names_of(*app_) == names) << app_->title();
         EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
       }
       EXPECT_TRUE(call());  // with memory to spare again
-      EXPECT_TRUE(doc.mesh.same_as(opened));
+      EXPECT_EQ(app_->mode(), opened_mode);
+      if (mesh_file) {
+        EXPECT_TRUE(doc.mesh.same_as(opened));
+      }
       if (!failed || HasFailure()) break;
     }
   }
@@ -179,7 +218,14 @@ TEST_F(EditorAppOutOfMemory, AFileThatWillNotOpenIsReportedAndTheDocumentStays) 
 }
 
 TEST_F(EditorAppOutOfMemory, AFileThatOpensIsOpenedWholeOrNotAtAll) {
-  expect_opened_whole_or_not([&] { return app_->open(tetrahedron_); });
+  expect_opened_whole_or_not(tetrahedron_, [&] { return app_->open(tetrahedron_); });
+}
+
+TEST_F(EditorAppOutOfMemory, ACurveOrPatchesOpenWholeOrNotAtAll) {
+  expect_opened_whole_or_not(curve_, [&] { return app_->open(curve_); });
+  EXPECT_EQ(app_->mode(), ViewMode::Curve);
+  expect_opened_whole_or_not(patch_, [&] { return app_->open(patch_); });
+  EXPECT_EQ(app_->mode(), ViewMode::Patches);
 }
 
 TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
@@ -187,10 +233,43 @@ TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
   expect_failure_reported_alone([&] { return app_->save(nowhere); });
 }
 
+// Saved and reported so, first in the recent list, or not saved, reported so, the recent list as it was.
+TEST_F(EditorAppOutOfMemory, ASaveThatWorksIsReportedWholeOrNotAtAll) {
+  const fs::path saved = dir_ / "saved.obj";
+  MeshDocument& doc = fresh_document();
+  ASSERT_TRUE(app_->save(saved));
+  const DocumentMessage spare = doc.message;
+  const Names saved_names = names_of(*app_);
+  ASSERT_EQ(spare.text, "saved " + saved.string());
+  ASSERT_EQ(saved_names.recent.front(), saved.string());
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_document();
+      fs::remove(saved);
+      const Before before = before_of(doc);
+      const Names names = names_of(*app_);
+      bool result = false;
+      const bool failed = run_failing(n, later, [&] { result = app_->save(saved); });
+      EXPECT_TRUE(left_alone(doc, before));
+      if (result) {
+        EXPECT_TRUE(fs::exists(saved));
+        EXPECT_EQ(doc.message.text, spare.text);
+        EXPECT_TRUE(names_of(*app_) == saved_names);
+      } else {
+        EXPECT_TRUE(names_of(*app_) == names);
+        EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
+      }
+      EXPECT_TRUE(app_->save(saved));  // with memory to spare again
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
 TEST_F(EditorAppOutOfMemory, DroppedFilesOpenInTurnAndAFailureEndsNothing) {
   // Not opened: the tetrahedron ran out of memory, or the missing file did and memory stayed short.
   const std::vector<std::string> dropped = {missing_.string(), tetrahedron_.string()};
-  expect_opened_whole_or_not([&] {
+  expect_opened_whole_or_not(tetrahedron_, [&] {
     app_->open_dropped(dropped);
     return app_->document().message.severity == Severity::Info;
   });

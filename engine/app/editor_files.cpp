@@ -1,0 +1,176 @@
+// EditorApp: opening and saving files, showing a mesh, a curve or patches as what the window edits, and the
+// recent-files list (see editor_app.h).
+//
+// Whole or nothing: everything that can fail (reading the file, building the mesh, tessellating patches, the window
+// title, the new recent list, the message) is made first, while the window still shows what it showed; then the take_*
+// steps switch to it with steps that cannot fail (replace_mesh moves the mesh in, its own message falling back to
+// kMemoryRanOut; the strings and lists are swapped or moved in; the camera is fitted to bounds read from the mesh). The
+// renderer comes last: it is a view that every frame updates from the document, so when it cannot take the new mesh at
+// once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
+// frame guard, which reports what stops it.
+// Saving makes the new recent list and the message before it writes the file, and only swaps them in after.
+#include <deque>
+#include <new>
+#include <optional>
+#include <type_traits>
+
+#include "app/editor_app.h"
+#include "app/mesh_loading.h"
+#include "core/mesh_build.h"
+#include "core/primitives.h"
+#include "io/mesh_file.h"
+#include "render/mesh_geometry.h"
+#include "ui/exception_report.h"
+
+namespace meshedit {
+
+namespace {
+
+constexpr size_t kRecentFiles = 8;
+
+// Moved in whole, without allocating (take_curve, take_patches).
+static_assert(std::is_nothrow_move_assignable_v<CurveEditorState>);
+static_assert(std::is_nothrow_move_assignable_v<PatchViewState>);
+
+// `recent` with `path` first (moved up when it is there already), at most kRecentFiles long. A new list, so the one
+// in use stays as it was when memory runs out making it.
+std::deque<std::string> with_recent(const std::deque<std::string>& recent, std::string path) {
+  std::deque<std::string> list;
+  list.push_back(std::move(path));
+  for (const std::string& old : recent) {
+    if (list.size() == kRecentFiles) break;
+    if (old != list.front()) list.push_back(old);
+  }
+  return list;
+}
+
+std::string window_title(const std::string& name) { return "MeshEdit - " + name; }
+
+// `patches` in a patch view, tessellated: ready to be moved in.
+PatchViewState tessellated_view(const std::vector<BezierPatch>& patches) {
+  PatchViewState view = make_patch_view(patches);
+  update_tessellation(view);
+  return view;
+}
+
+// Has `renderer` show `mesh` now, so that a pick before the next frame draws finds the new mesh. When it cannot, it
+// shows nothing (and picks nothing) until the next frame's update, which tries again under the frame guard.
+void refresh_view(MeshRenderer& renderer, const HalfedgeMesh& mesh) noexcept {
+  try {
+    renderer.update(mesh);
+  } catch (const std::exception&) {
+    renderer.invalidate();
+  }
+}
+
+}  // namespace
+
+void EditorApp::fit_camera(const BoundingBox& bounds) {
+  camera_.fit(bounds);
+  camera_.zoom(-kFitZoomOutSteps);
+}
+
+void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path) {
+  const BoundingBox bounds = mesh_bounds(mesh);  // what the renderer's bounds will be, read before the move
+  replace_mesh(doc_, std::move(mesh), std::move(path));
+  selection_ = {};
+  mode_ = ViewMode::Mesh;
+  fit_camera(bounds);
+  refresh_view(*mesh_renderer_, doc_.mesh);
+}
+
+void EditorApp::take_curve(CurveEditorState&& curve) {
+  curve_ = std::move(curve);
+  mode_ = ViewMode::Curve;
+}
+
+void EditorApp::take_patches(PatchViewState&& patches) {
+  patches_ = std::move(patches);
+  mode_ = ViewMode::Patches;
+  if (!patches_.tessellation.mesh) return;
+  fit_camera(mesh_bounds(*patches_.tessellation.mesh));
+  refresh_view(*patch_renderer_, *patches_.tessellation.mesh);
+}
+
+void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
+  std::string title = window_title(name.empty() ? std::string("untitled") : name);
+  std::string path = name;
+  take_mesh(std::move(mesh), std::move(path));
+  title_.swap(title);
+}
+
+void EditorApp::show_start_mesh() {
+  try {
+    show_mesh(build_halfedge_mesh(make_cube()), "");
+  } catch (const std::bad_alloc&) {
+    // show_mesh is whole or nothing: the document is as it was (as the window starts, the empty one).
+    set_message_noexcept(doc_, Severity::Error,
+                         [] { return std::string("memory ran out making the start-up cube; open a file to start"); });
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);  // never expected: the cube is a valid mesh
+  }
+}
+
+void EditorApp::show_curve(const BezierCurve& curve) { take_curve(make_curve_editor(curve)); }
+
+void EditorApp::show_patches(const std::vector<BezierPatch>& patches) { take_patches(tessellated_view(patches)); }
+
+bool EditorApp::open(const std::filesystem::path& path) {
+  try {
+    if (path.extension() == ".lua") return open_lesson(path);
+    exercises_.finish_replay(doc_);
+    LoadedFile file = load_file(path);
+    std::optional<HalfedgeMesh> mesh;
+    std::optional<CurveEditorState> curve;
+    std::optional<PatchViewState> patches;
+    switch (file.kind) {
+      case FileKind::Curve:
+        curve = make_curve_editor(std::move(file.curve));
+        break;
+      case FileKind::Patches:
+        patches = tessellated_view(file.patches);
+        break;
+      case FileKind::Mesh:
+        mesh = build_from_file(file.mesh, path).mesh;
+    }
+    std::string title = window_title(path.filename().string());
+    std::string name = path.string();
+    std::deque<std::string> recent = with_recent(recent_, path.string());
+    std::string text = "opened " + path.string();
+    // Nothing from here on can fail: the window switches to the file whole.
+    if (mesh) take_mesh(std::move(*mesh), std::move(name));
+    if (curve) take_curve(std::move(*curve));
+    if (patches) take_patches(std::move(*patches));
+    title_.swap(title);
+    recent_.swap(recent);
+    set_message(doc_, Severity::Info, std::move(text));
+    return true;
+  } catch (const std::exception& e) {
+    // Nothing was switched yet: the window shows what it showed. The report needs no memory, so nothing escapes.
+    report_exception(doc_, e);
+    return false;
+  }
+}
+
+void EditorApp::open_dropped(const std::vector<std::string>& paths) {
+  // Called between frames, outside the frame guard: each file under its own guard, so what escapes opening one (a
+  // path that cannot be made for lack of memory) is an Error in the status line and the next file still opens.
+  for (const std::string& path : paths) run_guarded(doc_, [&] { open(path); });
+}
+
+bool EditorApp::save(const std::filesystem::path& path) {
+  try {
+    std::deque<std::string> recent = with_recent(recent_, path.string());
+    std::string text = "saved " + path.string();
+    save_mesh(path, to_polygon_mesh(doc_.mesh));
+    // Nothing from here on can fail: a file written is a file reported saved.
+    recent_.swap(recent);
+    set_message(doc_, Severity::Info, std::move(text));
+    return true;
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);
+    return false;
+  }
+}
+
+}  // namespace meshedit
