@@ -304,8 +304,8 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   auto validation_step = [&](const char* label) {
     start = Clock::now();
     const bool ok = cached_validation(doc).ok();
-    line(label, "%10.3f ms", ms_since(start),
-         std::string(ok ? "valid" : "broken") + (doc.validation.value.from_patch ? ", from the patch" : ", whole mesh"));
+    const char* how = doc.validation.value.from_patch ? ", from the patch" : ", whole mesh";
+    line(label, "%10.3f ms", ms_since(start), std::string(ok ? "valid" : "broken") + how);
   };
   validation_step("document: validation (whole mesh, machine's threads)");
   edit("document: apply_operation(flip)", "flip", edges / 7);
