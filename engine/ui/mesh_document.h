@@ -33,8 +33,10 @@
 //   marked not recorded and a Warning says so ("undo flip e5: done, but memory ran out listing its changes").
 // - show_state() always shows its mesh and replace_mesh() always replaces it; out of memory for show_state's `last`,
 //   `last` is marked not recorded and a Warning says so.
-// - No function here throws std::bad_alloc. A message that cannot be built for lack of memory is kMemoryRanOut,
-//   which needs no allocation, as a Warning or worse.
+// - No function here throws std::bad_alloc, except the caches' computations (cached_validation, cached_stats), which
+//   leave the cache as it was (their callers, the status bar and scripted checks, run under the frame or action
+//   guard). A message that cannot be built for lack of memory is kMemoryRanOut, which needs no allocation, as a
+//   Warning or worse.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
 //   from `last.before` to the current mesh, unless the change was not recorded (above; then it only names it).
 //   `last.serial` grows by one each time `last` is replaced, so views that index the diff rebuild their index once
