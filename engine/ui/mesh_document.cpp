@@ -437,7 +437,6 @@ bool last_patch_follows_clean(const MeshDocument& doc) {
          doc.last.version_before == cache.version && doc.last.version_after == doc.mesh.version();
 }
 
-
 // True when the last change, from a clean state, kept the mesh clean: its patch alone tells (core/patch_check.h).
 bool last_patch_kept_clean(MeshDocument& doc) {
   return last_patch_follows_clean(doc) &&
