@@ -13,6 +13,7 @@
 #include "io/mesh_file.h"
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
+#include "render/render_error.h"
 #include "render/render_target.h"
 #include "ui/exception_report.h"
 #include "ui/frame_guard.h"
@@ -102,8 +103,23 @@ void EditorApp::draw_mesh_view(int width, int height) {
     change.version_before = *doc_.last.version_before;
     change.version_after = doc_.last.version_after;
   }
-  mesh_renderer_->update(doc_.mesh, change.before != nullptr ? &change : nullptr);
+  // A mesh too large to draw is refused once per state: an Error says so, the status bar keeps saying it, the rest of
+  // the window works on (undo brings back a mesh it can draw), and frames do not try again until the mesh changes.
+  const bool refused = !undrawable_.empty() && undrawable_generation_ == doc_.generation &&
+                       undrawable_version_ == doc_.mesh.version();
+  if (!refused) {
+    undrawable_.clear();
+    try {
+      mesh_renderer_->update(doc_.mesh, change.before != nullptr ? &change : nullptr);
+    } catch (const RenderError& e) {
+      undrawable_ = e.what();
+      undrawable_generation_ = doc_.generation;
+      undrawable_version_ = doc_.mesh.version();
+      message(Severity::Error, undrawable_);
+    }
+  }
   apply_size_defaults();
+  if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
   Highlights highlights;
   highlights.hovered = selection_.hovered;
   highlights.selected = selection_.selected;

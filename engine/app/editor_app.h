@@ -17,6 +17,9 @@
 //   out; it works as usual from there, and a file named on the command line is still opened. Only running out while
 //   the app itself is made (its renderers, shaders and panels: the constructor) ends the program, before the window
 //   shows anything, with the error on stderr (cli.cpp).
+// - A mesh too large to draw (past the GPU's buffer limits) is refused by the renderer once per mesh state: an Error
+//   and the status bar say so, the view stays empty, and every panel, key and menu works on (undo brings back a mesh
+//   that can be drawn); frames do not retry until the mesh changes.
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
@@ -119,6 +122,8 @@ class EditorApp {
   bool quit_requested() const { return quit_requested_; }
   OrbitCamera& camera() { return camera_; }
   const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
+  RenderStyle& mesh_render_style() { return mesh_renderer_->style(); }  // tests lower its buffer cap
+  const std::string& status_note() const { return status_bar_.note; }
   void fit_view() { fit_camera(); }
   void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
@@ -163,6 +168,9 @@ class EditorApp {
   ViewOptions view_options_;
   bool show_labels_ = true;
   bool large_mesh_ = false;  // the shown mesh is past RenderStyle::large_mesh_triangles (apply_size_defaults)
+  // Why the renderer refused the document's mesh (too large to draw) at this generation and version; "" when drawn.
+  std::string undrawable_;
+  uint64_t undrawable_generation_ = 0, undrawable_version_ = 0;
   ViewMode mode_ = ViewMode::Mesh;
 
   MeshDocument doc_;

@@ -175,6 +175,11 @@ struct MeshRenderer::Impl {
   }
 
   void upload(const HalfedgeMesh& mesh, std::string reason);
+  size_t buffer_texel_cap() const {
+    return style.max_buffer_texels != 0 ? std::min(style.max_buffer_texels, max_buffer_texels) : max_buffer_texels;
+  }
+  // Throws RenderError, with nothing drawn until a mesh is uploaded, when a buffer texture would need more texels.
+  void refuse_if_too_large(size_t texels);
   bool patch(const HalfedgeMesh& mesh, const MeshChange& change);
   void uploaded_state(const HalfedgeMesh& mesh);
   void refresh_changed(std::span<const ElementRef> list, uint64_t key);
@@ -231,17 +236,23 @@ struct MeshRenderer::Impl {
   RenderStyle style;
 };
 
+void MeshRenderer::Impl::refuse_if_too_large(size_t texels) {
+  if (texels <= buffer_texel_cap()) return;
+  uploaded = false;  // what the buffers hold is not the mesh given: draw nothing, pick nothing
+  ++stats.refusals;
+  throw RenderError("the mesh is too large to draw: it needs " + std::to_string(texels) +
+                    " texels in one buffer texture, and this OpenGL allows " + std::to_string(buffer_texel_cap()));
+}
+
 void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) {
   const size_t sent = gl::uploaded_bytes();
+  // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot. Checked before the
+  // slot build (a whole-mesh pass) as far as the capacities tell, so a refused mesh costs nothing per frame.
+  refuse_if_too_large(gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
+                                                  size_t(source.halfedge_capacity()),
+                                                  2 * size_t(source.edge_capacity())})));
   SlotGeometry g = build_slot_geometry(source, hardware_threads());
-  // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot.
-  const size_t largest = gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
-                                                     size_t(source.halfedge_capacity()), 2 * g.edges.size(),
-                                                     g.extra_faces.size()}));
-  if (largest > max_buffer_texels) {
-    throw RenderError("the mesh is too large to draw: it needs " + std::to_string(largest) +
-                      " texels in one buffer texture, and this OpenGL allows " + std::to_string(max_buffer_texels));
-  }
+  refuse_if_too_large(gl::with_headroom(g.extra_faces.size()));  // the triangles of polygons past their first
   gpu.upload(g);
   slots = slot_state(source, g);
   stats.arrows = 0;
@@ -372,7 +383,7 @@ void MeshRenderer::Impl::ensure_arrows() {
   arrows_geometry = geometry;
   // Three segments of two texels per halfedge slot; past the driver's limit (22 million halfedges on
   // llvmpipe) there are no arrows, which would be unreadable at that size anyway.
-  if (6 * gl::with_headroom(mesh->halfedge_capacity()) > max_buffer_texels) {
+  if (6 * gl::with_headroom(mesh->halfedge_capacity()) > buffer_texel_cap()) {
     gpu.arrows.set_count(0);
     stats.arrows = 0;
     arrows_geometry = ~uint64_t(0);

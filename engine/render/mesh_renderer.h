@@ -61,6 +61,7 @@ struct RenderStats {
   uint64_t arrow_uploads = 0;      // full halfedge-arrow rebuilds (only while arrows are shown)
   uint64_t highlight_uploads = 0;  // rebuilds of the changed flags or the highlighted items
   uint64_t id_passes = 0;          // id-buffer redraws by pick()
+  uint64_t refusals = 0;           // updates refused: the mesh too large to draw (then nothing is drawn)
   bool last_update_patch = false;  // the last update() that changed anything was a patch (not a full rebuild)
   size_t last_update_bytes = 0;    // bytes the last update() that changed anything sent to the GPU
   size_t last_update_slots = 0;    // slots it rewrote (every slot for a full rebuild)
@@ -90,6 +91,9 @@ class MeshRenderer {
     std::span<const ElementRef> elements;
     uint64_t version_before = 0, version_after = 0;
   };
+  // Throws RenderError when the mesh is too large to draw (a buffer texture would need more texels than OpenGL, or
+  // RenderStyle::max_buffer_texels, allows), found from the capacities before any whole-mesh work; then nothing is
+  // drawn or picked until an update() succeeds.
   void update(const HalfedgeMesh& mesh, const MeshChange* change = nullptr);
   // Forces the next update() to rebuild, whatever the version says.
   void invalidate();

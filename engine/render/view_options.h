@@ -59,6 +59,9 @@ struct RenderStyle {
   // outside); the app turns the wireframe off by default (at a million triangles it costs more than the faces and
   // paints the view black). At or below it nothing changes.
   size_t large_mesh_triangles = 100000;
+  // A cap on the texels of one buffer texture below OpenGL's own (GL_MAX_TEXTURE_BUFFER_SIZE, 128M on llvmpipe);
+  // 0 for OpenGL's. Past it a mesh is too large to draw (MeshRenderer::update). Tests set it to try that cheaply.
+  size_t max_buffer_texels = 0;
 };
 
 // Whether a mesh of this many triangles is drawn the cheap way (see RenderStyle::large_mesh_triangles).

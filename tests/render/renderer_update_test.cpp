@@ -5,6 +5,8 @@
 #include <algorithm>
 #include <cstring>
 #include <random>
+#include <string>
+#include <vector>
 
 #include "core/history.h"
 #include "core/mesh_build.h"
@@ -152,6 +154,41 @@ TEST_F(RendererUpdate, WithoutAChangeOrFromAnotherStateItRebuilds) {
   EXPECT_EQ(renderer.stats().uploads, 3u);
   EXPECT_EQ(renderer.stats().patches, 0u);
   expect_buffers_equal_full_build(renderer, mesh, false);
+}
+
+// A mesh past the buffer cap is refused before the slot build (no upload is counted), with a message that gives the
+// texels needed and allowed; the old picture is not drawn for it and nothing is picked; a mesh that fits is drawn
+// again.
+TEST_F(RendererUpdate, AMeshTooLargeToDrawIsRefusedAndNothingIsDrawn) {
+  MeshRenderer renderer{ShaderLibrary()};
+  const HalfedgeMesh small = build_halfedge_mesh(make_torus(8, 6));  // 288 halfedge slots
+  renderer.update(small);
+  OrbitCamera camera;
+  camera.fit(renderer.bounds());
+  const HalfedgeMesh big = build_halfedge_mesh(make_torus(30, 20));  // 3600 halfedge slots
+  renderer.style().max_buffer_texels = 2000;
+  try {
+    renderer.update(big);
+    ADD_FAILURE() << "no refusal";
+  } catch (const RenderError& e) {
+    EXPECT_NE(std::string(e.what()).find("too large to draw"), std::string::npos) << e.what();
+    EXPECT_NE(std::string(e.what()).find("allows 2000"), std::string::npos) << e.what();
+  }
+  EXPECT_EQ(renderer.stats().refusals, 1u);
+  EXPECT_EQ(renderer.stats().uploads, 1u);
+  RenderTarget target(kViewport.width, kViewport.height, 0);
+  target.clear(renderer.style().background);
+  renderer.draw(camera, kViewport, {}, {});
+  const std::vector<uint8_t> pixels = target.read_rgba();
+  const auto background = [&](size_t i) {
+    return pixels[i] == uint8_t(renderer.style().background.r * 255.0f + 0.5f);
+  };
+  for (size_t i = 0; i < pixels.size(); i += 4 * 37) EXPECT_TRUE(background(i)) << "pixel " << i / 4;
+  EXPECT_FALSE(renderer.pick(camera, kViewport, 80, 60).valid());
+
+  renderer.update(small);
+  EXPECT_EQ(renderer.stats().uploads, 2u);
+  expect_buffers_equal_full_build(renderer, small, false);
 }
 
 TEST_F(RendererUpdate, IdleFramesAndOrbitsDoNoPerElementWork) {
