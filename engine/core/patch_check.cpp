@@ -195,6 +195,26 @@ Suspects find_suspects(const HalfedgeMesh& after, const MeshPatch& patch, const 
   return s;
 }
 
+// Takes the lengths of the walks from `ids` in the state before off `total` and adds those after (elements live in
+// that state only); false when a walk fails its rule.
+template <class Id, class OldLength, class NewLength>
+bool swap_lengths(int64_t& total, const std::vector<Id>& ids, const StateBefore& before, const HalfedgeMesh& after,
+                  OldLength&& old_length, NewLength&& new_length) {
+  for (const Id id : ids) {
+    if (before.alive(id)) {
+      const size_t length = old_length(id);
+      if (length == 0) return false;
+      total -= int64_t(length);
+    }
+    if (after.alive(id)) {
+      const size_t length = new_length(id);
+      if (length == 0) return false;
+      total += int64_t(length);
+    }
+  }
+  return true;
+}
+
 }  // namespace
 
 bool edit_keeps_clean(const HalfedgeMesh& after, const MeshPatch& patch) {
@@ -214,35 +234,13 @@ bool edit_keeps_clean(const HalfedgeMesh& after, const MeshPatch& patch) {
 
   // The sums: B's cycles and fans held live_before halfedges each way; swap the re-walked ones' lengths.
   const auto unused = [](HalfedgeId) {};
-  int64_t in_cycles = live_before;
-  for (const FaceId f : s.faces) {
-    if (before.alive(f)) {
-      const size_t old_length = before.cycle(f, unused);
-      if (old_length == 0) return false;
-      in_cycles -= int64_t(old_length);
-    }
-    if (after.alive(f)) {
-      const size_t length = clean_rules::cycle_length(after, f, live, false);
-      if (length == 0) return false;
-      in_cycles += int64_t(length);
-    }
-  }
-  if (in_cycles != int64_t(live)) return false;
-
-  int64_t in_fans = live_before;
-  for (const VertexId v : s.vertices) {
-    if (before.alive(v)) {
-      const size_t old_length = before.fan(v, unused);
-      if (old_length == 0) return false;
-      in_fans -= int64_t(old_length);
-    }
-    if (after.alive(v)) {
-      const size_t length = clean_rules::fan_length(after, v, live);
-      if (length == 0) return false;
-      in_fans += int64_t(length);
-    }
-  }
-  return in_fans == int64_t(live);
+  int64_t in_cycles = live_before, in_fans = live_before;
+  return swap_lengths(in_cycles, s.faces, before, after, [&](FaceId f) { return before.cycle(f, unused); },
+                      [&](FaceId f) { return clean_rules::cycle_length(after, f, live, false); }) &&
+         in_cycles == int64_t(live) &&
+         swap_lengths(in_fans, s.vertices, before, after, [&](VertexId v) { return before.fan(v, unused); },
+                      [&](VertexId v) { return clean_rules::fan_length(after, v, live); }) &&
+         in_fans == int64_t(live);
 }
 
 }  // namespace meshedit

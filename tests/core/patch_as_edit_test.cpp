@@ -3,8 +3,8 @@
 // the same patch; a patch it cannot make that way is refused with the mesh untouched.
 #include <algorithm>
 #include <random>
-#include <utility>
 #include <string>
+#include <utility>
 
 #include <gtest/gtest.h>
 
@@ -14,24 +14,19 @@
 #include "core/mesh_patch.h"
 #include "core/primitives.h"
 #include "support/diff_expect.h"
+#include "support/journaled_edit.h"
 #include "support/random_edits.h"
 
 namespace meshedit {
 namespace {
+
+using testing::patch_of;
 
 void expect_same_shape(const MeshShape& a, const MeshShape& b) {
   for (int k = 0; k < kElementKindCount; ++k) {
     EXPECT_EQ(a.capacity[k], b.capacity[k]) << "kind " << k;
     EXPECT_EQ(a.live[k], b.live[k]) << "kind " << k;
   }
-}
-
-template <class Edit>
-MeshPatch patch_of(HalfedgeMesh& mesh, Edit&& edit) {
-  ChangeJournal journal(mesh);
-  edit(mesh);
-  EXPECT_FALSE(journal.has_snapshot());
-  return make_patch(journal, mesh);
 }
 
 TEST(PatchAsEdit, MakesTheSameMeshThroughTheSetters) {

@@ -7,7 +7,6 @@
 
 #include <gtest/gtest.h>
 
-#include "core/change_journal.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/mesh_patch.h"
@@ -15,19 +14,13 @@
 #include "core/primitives.h"
 #include "core/quick_check.h"
 #include "core/validate.h"
+#include "support/journaled_edit.h"
 #include "support/random_edits.h"
 
 namespace meshedit {
 namespace {
 
-// Runs `edit` on `mesh` under a journal and returns its patch (the edits here never make the journal fall back).
-template <class Edit>
-MeshPatch patch_of(HalfedgeMesh& mesh, Edit&& edit) {
-  ChangeJournal journal(mesh);
-  edit(mesh);
-  EXPECT_FALSE(journal.has_snapshot());
-  return make_patch(journal, mesh);
-}
+using testing::patch_of;
 
 HalfedgeMesh fixture(uint32_t seed) {
   switch (seed % 4) {
