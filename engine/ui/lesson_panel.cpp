@@ -13,7 +13,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::file_time_type modified(const fs::path& path) {
+fs::file_time_type modified(const fs::path& path) noexcept {
   std::error_code ec;
   const auto time = fs::last_write_time(path, ec);
   return ec ? fs::file_time_type{} : time;
@@ -78,10 +78,14 @@ void refresh_lessons(LessonPanelState& state) {
 }
 
 bool load_lesson(LessonRunner& runner, LessonPanelState& state, const fs::path& path) {
+  watch_lesson(state, path);
+  return runner.load(path);
+}
+
+void watch_lesson(LessonPanelState& state, const fs::path& path) noexcept {
   state.loaded_time = modified(path);
   state.since_check = 0.0;
   state.open = true;
-  return runner.load(path);
 }
 
 bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt) {

@@ -33,6 +33,9 @@ void refresh_lessons(LessonPanelState& state);
 
 // Loads `path` into the runner and remembers its modification time for hot reload.
 bool load_lesson(LessonRunner& runner, LessonPanelState& state, const std::filesystem::path& path);
+// Remembers `path`'s modification time for hot reload and opens the panel: what load_lesson does besides loading,
+// for a caller that loads in two steps (LessonRunner::prepare and take). Never throws.
+void watch_lesson(LessonPanelState& state, const std::filesystem::path& path) noexcept;
 
 // Reloads the lesson when its file changed on disk (checked at most every kReloadCheckSeconds of `dt`).
 // Returns whether it reloaded.
