@@ -7,7 +7,7 @@
 // spare gives, recorded, or kept without its record and said so), and then the session's last run names the state
 // the document shows. A message other than the one memory to spare gives says memory ran out, as a Warning or worse.
 // Then, with memory to spare, the same run gives what it gives from the start. Finishing a replay, the first thing a
-// run does, is whole or nothing too.
+// run does, is whole or nothing too, and a student file whose load ran out of memory is loaded again at the next run.
 #include <filesystem>
 #include <new>
 #include <ostream>
@@ -22,6 +22,7 @@
 #include "support/failing_allocations.h"
 #include "support/test_support.h"
 #include "ui/exercise_session.h"
+#include "ui/student_file.h"
 
 namespace meshedit {
 namespace {
@@ -34,6 +35,7 @@ struct Case {
   Exercise exercise;
   bool mine;
   ElementRef selected;
+  bool loaded_before = true;  // false: the run loads the student file first
 };
 
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
@@ -53,7 +55,9 @@ class ExerciseSessionOutOfMemory : public ::testing::TestWithParam<Case> {
     ASSERT_TRUE(apply_operation(doc_, "flip e3", [](HalfedgeMesh& m) { return flip(m, EdgeId(3)); }).ok());
     session_ = ExerciseSession(solutions());
     ASSERT_TRUE(session_.set_exercise(GetParam().exercise));
-    ASSERT_TRUE(session_.ensure_loaded()) << session_.load_error();
+    if (GetParam().loaded_before) {
+      ASSERT_TRUE(session_.ensure_loaded()) << session_.load_error();
+    }
     selection_ = {};
     selection_.selected = GetParam().selected;
   }
@@ -114,7 +118,10 @@ TEST_P(ExerciseSessionOutOfMemory, ARunIsDoneAsTheDocumentKeepsItOrNotAtAll) {
         EXPECT_EQ(session_.last_run()->generation, doc_.generation);
         EXPECT_EQ(session_.last_run()->version, doc_.mesh.version());
       }
-      fresh();  // with memory to spare again
+      if (GetParam().mine) {  // with memory to spare again: a student file that ran out loading loads now
+        EXPECT_TRUE(session_.ensure_loaded()) << session_.load_error();
+      }
+      fresh();
       EXPECT_EQ(run().ok, spare_check.ok);
       EXPECT_EQ(doc_.message.text, spare.text);
       if (!failed || HasFailure()) break;
@@ -162,12 +169,41 @@ TEST(ExerciseSessionReplayOutOfMemory, AReplayIsFinishedWholeOrGoesOn) {
   }
 }
 
+// A student file that did not load for lack of memory is not the file's fault: it says memory ran out, and the next
+// call loads it again (not only once the file changes).
+TEST(StudentFileOutOfMemory, ALoadThatRanOutIsTriedAgain) {
+  const std::filesystem::path file = solutions() / "flip.lua";
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      StudentFile student(file);
+      bool loaded = false, escaped = false, failed = false;
+      {
+        const FailingAllocations failing(n, later);
+        try {
+          loaded = student.ensure_loaded();
+        } catch (...) {
+          escaped = true;
+        }
+        failed = failing.failed();
+      }
+      EXPECT_FALSE(escaped);
+      if (!loaded && !escaped) {
+        EXPECT_NE(student.error().find("memory"), std::string::npos) << student.error();
+      }
+      EXPECT_TRUE(student.ensure_loaded()) << student.error();  // with memory to spare again
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Runs, ExerciseSessionOutOfMemory,
                          ::testing::Values(Case{"MineFlip", Exercise::FlipEdge, true, EdgeId(7)},
                                            Case{"ReferenceFlip", Exercise::FlipEdge, false, EdgeId(7)},
                                            Case{"ReferenceSplit", Exercise::SplitEdge, false, HalfedgeId(4)},
                                            Case{"ReferenceNormal", Exercise::VertexNormal, false, VertexId(2)},
-                                           Case{"MineWithAFaceSelected", Exercise::FlipEdge, true, FaceId::face(1)}),
+                                           Case{"MineWithAFaceSelected", Exercise::FlipEdge, true, FaceId::face(1)},
+                                           Case{"MineLoadingTheFile", Exercise::FlipEdge, true, EdgeId(7), false}),
                          [](const ::testing::TestParamInfo<Case>& param) { return std::string(param.param.name); });
 
 }  // namespace
