@@ -23,4 +23,8 @@ inline std::string exception_text(const std::exception& error) noexcept {
   }
 }
 
+// Whether a lesson's error is memory running out: exception_text's, or a Lua error made of it ("hot.lua:2: memory ran
+// out"). A retry can make it go away, unlike the file's own errors.
+inline bool ran_out_of_memory(const std::string& error) noexcept { return error.ends_with(kScriptMemoryRanOut); }
+
 }  // namespace meshedit

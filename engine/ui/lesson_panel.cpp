@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "script/exception_text.h"
 #include "script/lesson_text.h"
 
 namespace meshedit {
@@ -96,7 +97,8 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
   const auto time = modified(runner.path());
   if (time == state.loaded_time) return false;
   state.loaded_time = time;
-  runner.reload();
+  // Memory that ran out is not the file's doing: the next check tries again (a broken file waits for the next save).
+  if (!runner.reload() && ran_out_of_memory(runner.error())) state.loaded_time = {};
   return true;
 }
 

@@ -5,7 +5,8 @@
 // - The panel only reads the runner and calls its public actions (next, back, go_to, reload, deliver of a
 //   button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
-//   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame.
+//   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
+//   that runs out of memory is tried again at the next check; one that fails otherwise waits for the next save.
 #pragma once
 
 #include <filesystem>
