@@ -81,13 +81,16 @@ class EditorApp {
   // What the window shows as it starts, before the file it was given (if any) is opened: the default cube. Never
   // throws: out of memory, the window starts empty, with an Error that says so (see the invariants).
   void show_start_mesh();
-  // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches.
+  // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches. Each is
+  // whole or nothing, as show_mesh: what stops it (memory running out) is thrown with the window unchanged.
   void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
   void show_curve(const BezierCurve& curve);
   void show_patches(const std::vector<BezierPatch>& patches);
 
-  // Loads a lesson file into the lesson panel (also what open() does with a .lua file). Returns whether it
-  // loaded; on failure the panel shows the error with file:line.
+  // Loads a lesson file into the lesson panel (also what open() does with a .lua file), whole or nothing: the lesson
+  // runs, the title names it and the status line says so; or the lesson that ran goes on under its title, and the
+  // status line and the panel say why not (file:line, or that memory ran out). Never throws. Returns whether it
+  // loaded.
   bool open_lesson(const std::filesystem::path& path);
   LessonRunner& lesson() { return *lesson_; }
   // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
@@ -150,7 +153,7 @@ class EditorApp {
   void fit_camera(const BoundingBox& bounds);
   // Switch the window to a new document, view mode and view with steps that cannot fail (editor_files.cpp): the end
   // of showing a mesh, a curve or patches, once everything that can fail was made.
-  void take_mesh(HalfedgeMesh&& mesh, std::string&& path);
+  void take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit = true);  // fit: the camera to the mesh
   void take_curve(CurveEditorState&& curve);
   void take_patches(PatchViewState&& patches);  // tessellated already
   bool apply_key(int key, KeyMods mods);

@@ -70,12 +70,12 @@ void EditorApp::fit_camera(const BoundingBox& bounds) {
   camera_.zoom(-kFitZoomOutSteps);
 }
 
-void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path) {
+void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit) {
   const BoundingBox bounds = mesh_bounds(mesh);  // what the renderer's bounds will be, read before the move
   replace_mesh(doc_, std::move(mesh), std::move(path));
   selection_ = {};
   mode_ = ViewMode::Mesh;
-  fit_camera(bounds);
+  if (fit) fit_camera(bounds);
   refresh_view(*mesh_renderer_, doc_.mesh);
 }
 

@@ -1,5 +1,9 @@
 // EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
 // selection, the lesson panel with hot reload, and the lesson's highlights and labels over the mesh.
+//
+// Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
+// (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
+// message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -7,6 +11,7 @@
 #include "app/mesh_loading.h"
 #include "render/labels.h"
 #include "render/mesh_geometry.h"
+#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {
@@ -30,21 +35,32 @@ std::string key_name(int key, KeyMods mods) {
 }  // namespace
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
-  const bool was_mesh_view = mode_ == ViewMode::Mesh;
-  replace_mesh(doc_, mesh, "");
-  selection_ = {};
-  mode_ = ViewMode::Mesh;
-  mesh_renderer_->update(doc_.mesh);
-  if (fit || !was_mesh_view) fit_camera();
+  HalfedgeMesh copy = mesh;  // the one step that can fail: the window is as it was when it does
+  take_mesh(std::move(copy), std::string(), fit || mode_ != ViewMode::Mesh);
 }
 
 bool EditorApp::open_lesson(const std::filesystem::path& path) {
-  const bool loaded = load_lesson(*lesson_, lesson_panel_, path);
-  lesson_selection_ = selection_.selected;
-  message(loaded ? Severity::Info : Severity::Error,
-          loaded ? "lesson " + path.filename().string() : lesson_->error());
-  if (loaded) title_ = "MeshEdit - " + lesson_->title();
-  return loaded;
+  LessonRunner::Prepared lesson;
+  if (!lesson_->prepare(path, lesson)) {
+    watch_lesson(lesson_panel_, lesson_->path());  // the file asked for: saving a fix loads it
+    set_message_noexcept(doc_, Severity::Error, [&] { return lesson_->error(); });
+    return false;
+  }
+  try {
+    std::string title = "MeshEdit - " + lesson.title();
+    std::string text = "lesson " + path.filename().string();
+    // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
+    // step's error, in the panel).
+    lesson_->take(std::move(lesson));
+    watch_lesson(lesson_panel_, lesson_->path());
+    lesson_selection_ = selection_.selected;
+    title_.swap(title);
+    set_message(doc_, Severity::Info, std::move(text));
+    return true;
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);  // nothing was switched: the lesson that ran goes on, under its title
+    return false;
+  }
 }
 
 bool EditorApp::animating() const {

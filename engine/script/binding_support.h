@@ -22,6 +22,7 @@
 #include <lua.hpp>
 
 #include "core/halfedge_mesh.h"
+#include "script/exception_text.h"
 
 namespace meshedit {
 
@@ -53,7 +54,7 @@ int guarded(lua_State* L) {
   try {
     return F(L);
   } catch (const std::exception& e) {
-    message = e.what();
+    message = exception_text(e);  // std::bad_alloc: "memory ran out"
   }
   return luaL_error(L, "%s", message.c_str());
 }

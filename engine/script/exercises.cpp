@@ -12,7 +12,7 @@
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
+#include <iterator>
 #include <stdexcept>
 
 #include <lua.hpp>
@@ -328,9 +328,8 @@ void StudentCode::run_protected(int closure_ref) {
 void StudentCode::load(const std::filesystem::path& file) {
   std::ifstream in(file, std::ios::binary);
   if (!in) throw ScriptError("cannot open " + file.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  std::string code = text.str();
+  // Read into the string directly: a stream's << would swallow std::bad_alloc and leave the text cut short.
+  std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!code.empty() && code[0] == '#') code = "--" + code;  // a shebang line, as lua.c skips it
   const std::string name = file.filename().string();
 

@@ -17,6 +17,7 @@
 #include <lua.hpp>
 
 #include "script/binding_support.h"
+#include "script/exception_text.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
 
@@ -62,21 +63,25 @@ LessonScript& script_of(lua_State* L) { return *static_cast<LessonScript*>(lua_t
 std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
 
 [[noreturn]] void raise(lua_State* L, const std::string& message) {
-  const std::string where = caller_where(L);
-  lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
+  try {
+    const std::string where = caller_where(L);
+    lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
+  } catch (const std::exception&) {  // memory ran out placing the message: say so instead
+    lua_pushstring(L, kScriptMemoryRanOut);
+  }
   lua_error(L);
   __builtin_unreachable();  // lua_error never returns (it throws in this C++ build of Lua)
 }
 
-// Runs an API function with C++ exceptions (from the host, or bad_alloc) turned into Lua errors; the
-// message is copied out first so the Lua error starts after the C++ exception is finished.
+// Runs an API function with C++ exceptions (from the host, or bad_alloc: "memory ran out") turned into Lua errors;
+// the message is copied out first so the Lua error starts after the C++ exception is finished.
 template <lua_CFunction F>
 int lesson_guarded(lua_State* L) {
   std::string message;
   try {
     return F(L);
   } catch (const std::exception& e) {
-    message = e.what();
+    message = exception_text(e);
   }
   raise(L, message);
 }

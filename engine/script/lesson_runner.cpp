@@ -5,6 +5,10 @@
 // trampoline called through LuaRuntime::call, so it is protected (an allocation failure is a Lua error, not
 // a panic) and inside a fresh budget window. The step's thread gets the main thread's count hook before each
 // resume, so the runtime's limits reach code running in the coroutine.
+//
+// Out of memory: a load builds everything into a Prepared (the file's text, the runtime, the script with its steps
+// and title) before take() moves it in; the step functions catch what they cannot prevent (a std::function or a
+// message that could not be made) and turn it into the step's error with exception_text, which cannot fail.
 #include "script/lesson_runner.h"
 
 #include <algorithm>
@@ -15,6 +19,7 @@
 
 #include <lua.hpp>
 
+#include "script/exception_text.h"
 #include "script/lesson_api.h"
 
 namespace meshedit {
@@ -66,64 +71,96 @@ LessonRunner::~LessonRunner() = default;
 
 void LessonRunner::set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
 
+LessonRunner::Prepared::Prepared() = default;
+LessonRunner::Prepared::~Prepared() = default;
+LessonRunner::Prepared::Prepared(Prepared&&) noexcept = default;
+LessonRunner::Prepared& LessonRunner::Prepared::operator=(Prepared&&) noexcept = default;
+
+const std::string& LessonRunner::Prepared::title() const { return script ? script->title : kEmptyText; }
+
 bool LessonRunner::load(const std::filesystem::path& path) {
-  if (busy_) return false;
-  path_ = path;
-  return load_file(0);
+  Prepared lesson;
+  if (!prepare(path, lesson)) return false;
+  take(std::move(lesson), 0);
+  return true;
 }
 
 bool LessonRunner::reload() {
   if (busy_) return false;
   if (path_.empty()) {
-    load_error_ = "no lesson to reload";
+    try {
+      load_error_ = "no lesson to reload";
+    } catch (const std::exception&) {
+      load_error_ = kScriptMemoryRanOut;  // fits std::string's inline buffer: allocates nothing
+    }
     return false;
   }
-  return load_file(index_);
+  Prepared lesson;
+  if (!prepare(path_, lesson)) return false;
+  take(std::move(lesson), index_);
+  return true;
 }
 
-bool LessonRunner::load_file(size_t index) {
-  std::ifstream in(path_, std::ios::binary);
-  if (!in) {
-    load_error_ = "cannot open " + path_.string();
-    return false;
+bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) {
+  if (busy_) return false;
+  bool named = false;
+  std::string failure;
+  try {
+    lesson.path = path;
+    named = true;
+    failure = read_and_run(lesson);
+  } catch (const std::exception& e) {  // bad_alloc: what was made so far goes with `lesson`
+    failure = exception_text(e);
   }
+  if (failure.empty()) return true;
+  // The lesson that was running goes on; the file asked for is the one hot reload watches.
+  if (named) path_.swap(lesson.path);
+  load_error_ = std::move(failure);
+  return false;
+}
+
+std::string LessonRunner::read_and_run(Prepared& lesson) {
+  const std::filesystem::path& path = lesson.path;
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot open " + path.string();
   std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   if (!text.empty() && text[0] == '#') text = "--" + text;  // a shebang line, as lua.c skips it
-  const std::string chunk = path_.filename().string();
+  const std::string chunk = path.filename().string();
 
-  auto script = std::make_unique<LessonScript>();
-  script->host = &host_;
-  script->directory = path_.parent_path();  // lesson_file() finds assets next to the lesson
-  std::unique_ptr<LuaRuntime> runtime;
+  lesson.script = std::make_unique<LessonScript>();
+  LessonScript& script = *lesson.script;
+  script.host = &host_;
+  script.directory = path.parent_path();  // lesson_file() finds assets next to the lesson
   std::string failure;
   try {
     const BusyScope busy(busy_);
-    runtime = std::make_unique<LuaRuntime>(limits_);
-    runtime->set_print([this](const std::string& line) {
+    lesson.runtime = std::make_unique<LuaRuntime>(limits_);
+    lesson.runtime->set_print([this](const std::string& line) {
       if (print_) print_(line);
     });
-    open_lesson_api(*runtime, *script);
-    runtime->load(text, chunk);
-    runtime->start_budget();
-    runtime->call(0, 0);
+    open_lesson_api(*lesson.runtime, script);
+    lesson.runtime->load(text, chunk);
+    lesson.runtime->start_budget();
+    lesson.runtime->call(0, 0);
   } catch (const std::exception& e) {  // ScriptError, or bad_alloc while building the state
-    failure = e.what();
+    failure = exception_text(e);
   }
-  if (failure.empty() && script->steps.empty()) {
-    failure = chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
+  if (!failure.empty()) return failure;
+  if (script.steps.empty()) {
+    return chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
   }
-  if (!failure.empty()) {
-    load_error_ = failure;
-    return false;
-  }
-  script->phase = LessonScript::Phase::Idle;
-  if (script->title.empty()) script->title = path_.stem().string();
+  script.phase = LessonScript::Phase::Idle;
+  if (script.title.empty()) script.title = path.stem().string();
+  return {};
+}
+
+void LessonRunner::take(Prepared&& lesson, size_t index) noexcept {
   load_error_.clear();
   thread_ref_ = LUA_NOREF;  // it belonged to the old runtime
-  runtime_ = std::move(runtime);
-  script_ = std::move(script);
+  runtime_ = std::move(lesson.runtime);
+  script_ = std::move(lesson.script);
+  path_.swap(lesson.path);
   start_step(std::min(index, script_->steps.size() - 1));
-  return true;
 }
 
 void LessonRunner::next() {
@@ -146,13 +183,17 @@ void LessonRunner::go_to(size_t index) {
   start_step(std::min(index, script_->steps.size() - 1));
 }
 
-void LessonRunner::fail(const std::string& message) {
+void LessonRunner::fail(const std::string& message) noexcept {
   state_ = StepState::Failed;
-  step_error_ = message;
+  try {
+    step_error_ = message;
+  } catch (const std::exception&) {
+    step_error_ = kScriptMemoryRanOut;  // fits the inline buffer: allocates nothing
+  }
   if (script_) script_->wait = {};
 }
 
-void LessonRunner::start_step(size_t index) {
+void LessonRunner::start_step(size_t index) noexcept try {
   index_ = index;
   step_error_.clear();
   script_->said.clear();
@@ -164,7 +205,7 @@ void LessonRunner::start_step(size_t index) {
     const BusyScope busy(busy_);
     host_.clear_annotations();
   } catch (const std::exception& e) {
-    failure = e.what();
+    failure = exception_text(e);
   }
   if (!failure.empty()) return fail(failure);
 
@@ -180,9 +221,11 @@ void LessonRunner::start_step(size_t index) {
   });
   if (!failure.empty()) return fail(failure);
   resume(nullptr);
+} catch (const std::exception& e) {  // memory ran out making a std::function or a message
+  fail(exception_text(e));
 }
 
-void LessonRunner::resume(const std::function<int(lua_State*)>& push) {
+void LessonRunner::resume(const std::function<int(lua_State*)>& push) noexcept try {
   enum class Outcome { None, Yielded, Finished, Failed };
   Outcome outcome = Outcome::None;
   std::string message;
@@ -227,6 +270,9 @@ void LessonRunner::resume(const std::function<int(lua_State*)>& push) {
       return;
     case Outcome::Yielded: state_ = StepState::Waiting; return;
   }
+} catch (const std::exception& e) {  // memory ran out making the call's std::function
+  script_->phase = LessonScript::Phase::Idle;
+  fail(exception_text(e));
 }
 
 int LessonRunner::trampoline(lua_State* L) {
@@ -237,7 +283,7 @@ int LessonRunner::trampoline(lua_State* L) {
     (*self->body_)(L);
     return 0;
   } catch (const std::exception& e) {  // from the host (current_mesh...): must not cross the Lua frames
-    message = e.what();
+    message = exception_text(e);
   }
   return luaL_error(L, "%s", message.c_str());
 }
@@ -254,15 +300,15 @@ std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& 
     runtime_->call(1, 0);
   } catch (const std::exception& e) {
     body_ = nullptr;
-    failure = e.what();
+    failure = exception_text(e);
   }
   body_ = nullptr;
   return failure;
 }
 
-void LessonRunner::update(double dt) {
+void LessonRunner::update(double dt) noexcept try {
   if (!script_ || busy_ || state_ != StepState::Waiting) return;
-  const LessonWait wait = script_->wait;
+  const LessonWait& wait = script_->wait;  // read before resume() clears it; not copied (a copy may run out)
   switch (wait.kind) {
     case LessonWait::Kind::Condition: return resume(nullptr);
     case LessonWait::Kind::Animation: {
@@ -279,7 +325,7 @@ void LessonRunner::update(double dt) {
         const BusyScope busy(busy_);
         selected = host_.current_selection();
       } catch (const std::exception& e) {
-        failure = e.what();
+        failure = exception_text(e);
       }
       if (!failure.empty()) return fail(failure);
       if (!wait.selection_matches(selected)) return;
@@ -290,18 +336,24 @@ void LessonRunner::update(double dt) {
     }
     default: return;
   }
+} catch (const std::exception& e) {  // memory ran out making what resumes the step
+  fail(exception_text(e));
 }
 
 bool LessonRunner::deliver(const LessonEvent& event) {
   if (!script_ || busy_ || state_ != StepState::Waiting || !script_->wait.matches(event)) return false;
-  resume([this, &event](lua_State* L) {
-    if (event.kind == LessonEvent::Kind::Key || event.kind == LessonEvent::Kind::Button) {
-      lua_pushstring(L, event.name.c_str());
-    } else {
-      push_element_value(L, host_, event.element);
-    }
-    return 1;
-  });
+  try {
+    resume([this, &event](lua_State* L) {
+      if (event.kind == LessonEvent::Kind::Key || event.kind == LessonEvent::Kind::Button) {
+        lua_pushstring(L, event.name.c_str());
+      } else {
+        push_element_value(L, host_, event.element);
+      }
+      return 1;
+    });
+  } catch (const std::exception& e) {  // memory ran out making what resumes the step
+    fail(exception_text(e));
+  }
   return true;
 }
 

@@ -6,9 +6,13 @@
 // - Nothing here throws: a file that does not load, a Lua error in a step, a limit being hit, or an exception
 //   from the host becomes error() ("welcome.lua:12: message") and the runner keeps working: next, back,
 //   go_to, restart_step and reload stay possible.
-// - Each load uses a fresh LuaRuntime. A load that fails keeps the lesson that was running before (if any),
-//   so a typo saved during hot reload never takes the panel away; its error stays in error() until a load
-//   succeeds.
+// - Each load uses a fresh LuaRuntime. A load is whole or nothing: the file is read and run to its list of steps
+//   (prepare) before anything the runner shows changes, then take() switches to it with steps that cannot fail and
+//   starts its step. A load that fails, memory running out included ("memory ran out"), keeps the lesson that was
+//   running before (if any), whole, so a typo saved during hot reload never takes the panel away; its error stays
+//   in error() until a load succeeds, and path() names the file asked for (unless memory ran out copying its name),
+//   so hot reload loads it once it is fixed.
+//   A step that cannot start or run for lack of memory is a failed step whose error says memory ran out.
 // - Entering a step (next, back, go_to, restart_step, a reload) clears the host's highlights and labels,
 //   forgets what the step said and runs its body from the start: a step rebuilds its own scene. Back is
 //   "run the previous step again from its start".
@@ -56,11 +60,33 @@ class LessonRunner {
   // Where the lesson's print() goes (each line without its newline); applies to later loads too.
   void set_print(std::function<void(const std::string&)> print);
 
-  // Loads the file and starts its first step. False when the file cannot be read or run, or defines no step
-  // (error() says why).
+  // A lesson file read and run to its list of steps, not yet the one running (prepare, then take).
+  struct Prepared {
+    Prepared();
+    ~Prepared();
+    Prepared(Prepared&&) noexcept;
+    Prepared& operator=(Prepared&&) noexcept;
+    const std::string& title() const;  // lesson{title=} or the file's stem
+
+   private:
+    friend class LessonRunner;
+    std::filesystem::path path;
+    // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.
+    std::unique_ptr<LessonScript> script;
+    std::unique_ptr<LuaRuntime> runtime;
+  };
+
+  // Loads the file and starts its first step: prepare, then take. False when the file cannot be read or run, or
+  // defines no step (error() says why).
   bool load(const std::filesystem::path& path);
   // Loads the same file again and starts the same step index (clamped). False as load().
   bool reload();
+  // Reads and runs the file into `lesson`, changing nothing the runner shows: what a caller that has more to make
+  // before the switch (the window's title) calls first. False as load(), with error() and path() set as there.
+  bool prepare(const std::filesystem::path& path, Prepared& lesson);
+  // Switches to `lesson`, prepared by this runner, and starts its step `index` (clamped). Cannot fail: what stops
+  // the step is the step's error.
+  void take(Prepared&& lesson, size_t index = 0) noexcept;
 
   void next();          // the following step (nothing at the last one)
   void back();          // the previous step, from its start (step 1 starts again)
@@ -69,7 +95,7 @@ class LessonRunner {
 
   // Advances the current wait: an animation by `dt` seconds, a condition checked again, a selection wait
   // met by the host's current selection.
-  void update(double dt);
+  void update(double dt) noexcept;
   // Gives an app event to the waiting step. True when it was what the step waited for (the step resumed).
   bool deliver(const LessonEvent& event);
 
@@ -91,14 +117,15 @@ class LessonRunner {
   const std::string& error() const { return load_error_.empty() ? step_error_ : load_error_; }
 
  private:
-  bool load_file(size_t index);
-  void start_step(size_t index);
+  // Reads `lesson.path` and runs it into `lesson`; "" or why it did not load. Throws std::bad_alloc.
+  std::string read_and_run(Prepared& lesson);
+  void start_step(size_t index) noexcept;
   // Resumes the step's coroutine with what `push` leaves on the stack (nullptr: nothing).
-  void resume(const std::function<int(lua_State*)>& push);
+  void resume(const std::function<int(lua_State*)>& push) noexcept;
   // Runs `body` on the main thread inside a fresh budget window; returns "" or the error message.
   std::string protected_call(const std::function<void(lua_State*)>& body);
   static int trampoline(lua_State* L);
-  void fail(const std::string& message);
+  void fail(const std::string& message) noexcept;
 
   LessonHost& host_;
   LuaLimits limits_;

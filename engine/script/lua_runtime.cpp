@@ -4,6 +4,7 @@
 
 #include <cstring>
 #include <fstream>
+#include <new>
 #include <sstream>
 
 #include <lua.hpp>
@@ -61,7 +62,7 @@ void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
 
 LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   L_ = lua_newstate(&LuaRuntime::allocate, this);
-  if (!L_) throw ScriptError("cannot create the Lua state (out of memory)");
+  if (!L_) throw std::bad_alloc();  // memory ran out, as for any other allocation the caller makes
   *static_cast<LuaRuntime**>(lua_getextraspace(L_)) = this;
   open_whitelist();
   open_mesh_bindings(L_);

@@ -66,7 +66,7 @@ class LuaRuntime {
  public:
   static constexpr int kHookInterval = 1000;
 
-  explicit LuaRuntime(LuaLimits limits = {});
+  explicit LuaRuntime(LuaLimits limits = {});  // throws std::bad_alloc when the state cannot be made
   ~LuaRuntime();
   LuaRuntime(const LuaRuntime&) = delete;
   LuaRuntime& operator=(const LuaRuntime&) = delete;

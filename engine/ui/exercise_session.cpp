@@ -3,18 +3,29 @@
 // Kept here: the document is only written through apply_operation (the run, one undo entry) and show_state
 // (replay frames, no history), and every replay frame is rebuilt from the run's before-mesh with core replay(),
 // so stepping backwards is as exact as stepping forwards.
+//
+// A run is prepared (prepare_run: everything that can fail, the run's mesh copied out of its report) and then taken
+// (take_run: apply_operation, which never throws, and messages that fall back to kMemoryRanOut), as the document's
+// actions do; run() turns a std::bad_alloc from the preparation into an Error with nothing done.
 #include "ui/exercise_session.h"
 
 #include <algorithm>
 #include <exception>
+#include <new>
+#include <type_traits>
 #include <utility>
 
 #include "core/mesh_error.h"
 #include "script/lua_runtime.h"
 #include "ui/document_actions.h"
+#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {
+
+// Moved into run_ and the document after the document changed: moves that cannot fail.
+static_assert(std::is_nothrow_move_constructible_v<ExerciseRun> && std::is_nothrow_move_assignable_v<ExerciseRun>);
+static_assert(std::is_nothrow_move_assignable_v<HalfedgeMesh>);
 
 const char* operation_word(Exercise exercise) {
   switch (exercise) {
@@ -86,25 +97,43 @@ Check ExerciseSession::run_mine(MeshDocument& doc, Selection& selection) { retur
 Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { return run(doc, selection, false); }
 
 Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
+  std::optional<PreparedRun> prepared;
+  try {
+    Check refused = prepare_run(doc, selection, mine, prepared);
+    if (!prepared) return refused;
+  } catch (const std::exception& e) {
+    // Nothing was done: the document is as it was (or as finish_replay left it, whole). The report needs no memory.
+    report_exception(doc, e);
+    return Check::no(kMemoryRanOut);  // fits std::string's inline buffer: no allocation
+  }
+  return take_run(doc, selection, std::move(*prepared));
+}
+
+Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool mine,
+                                   std::optional<PreparedRun>& prepared) {
   finish_replay(doc);
-  const std::string who = mine ? "mine" : "reference";
+  const char* who = mine ? "mine" : "reference";
   OpResult<ExerciseInput> input = input_for(exercise_, doc, selection);
   if (!input.ok()) {
-    set_message(doc, Severity::Warning, who + ": " + input.check.reason);
-    return input.check;
+    // A refusal for lack of memory is an Error: memory to spare might have run it.
+    const Severity severity = input.check.reason == kMemoryRanOut ? Severity::Error : Severity::Warning;
+    set_message_noexcept(doc, severity, [&] { return who + std::string(": ") + input.check.reason; });
+    return std::move(input.check);
   }
   if (mine && !ensure_loaded()) {
+    Check refused = Check::no(load_error());
     run_.reset();
-    set_message(doc, Severity::Error, load_error());
-    return Check::no(load_error());
+    set_message_noexcept(doc, Severity::Error, [&] { return load_error(); });
+    return refused;
   }
 
-  ExerciseRun result;
+  PreparedRun run;
+  ExerciseRun& result = run.result;
   result.exercise = exercise_;
   result.mine = mine;
-  result.serial = ++runs_;
-  std::string target = input.value.element.valid() ? " " + format_id(input.value.element) : std::string();
-  result.label = who + ": " + operation_word(exercise_) + target;
+  result.serial = runs_ + 1;
+  const std::string target = input.value.element.valid() ? " " + format_id(input.value.element) : std::string();
+  result.label = who + std::string(": ") + operation_word(exercise_) + target;
   result.input = input.value;
   try {
     if (mine) {
@@ -115,45 +144,66 @@ Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
       result.report.exercise = exercise_;
       result.report.reference = meshedit::run_reference(exercise_, result.input);
     }
+  } catch (const std::bad_alloc&) {
+    throw;  // run() reports it: nothing was done
   } catch (const std::exception& e) {  // check_exercise promises not to throw; a bug must not close the window
-    set_message(doc, Severity::Error, result.label + ": " + e.what());
     run_.reset();
+    set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
     return Check::no(e.what());
   }
 
   const ExerciseOutcome& outcome = mine ? result.report.mine : result.report.reference;
+  // Memory that ran out under the student's code (a binding's std::bad_alloc, turned into a Lua error that says so) is
+  // not the student's error: nothing is done, as for the reference's std::bad_alloc.
+  if (outcome.error.find(kMemoryRanOut) != std::string::npos) throw std::bad_alloc();
   const bool failed = !outcome.error.empty();
   if (failed && mine) result.label = "mine (error): " + std::string(operation_word(exercise_)) + target;
-  Check check = Check::yes();
-  if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) {
+  // The status line says what happened beyond "N fields changed": made now, before the document changes.
+  if (failed) {
+    run.verdict = outcome.error;
+  } else if (!mine) {
+    run.verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
+    if (exercise_ == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
+  } else {
+    run.verdict = result.report.summary();
+    if (outcome.validation && !outcome.validation->ok()) {
+      run.verdict += "; yours is invalid: " + outcome.validation->summary();
+    }
+  }
+  run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
+  run.unchanged_text = result.label + ": nothing changed (" + run.verdict + ")";
+  run.returned = failed ? Check::no(outcome.error) : Check::yes();
+  if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) run.mesh = *outcome.mesh;  // the report keeps its own
+  prepared = std::move(run);
+  return Check::yes();
+}
+
+Check ExerciseSession::take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept {
+  ExerciseRun& result = run.result;
+  ++runs_;
+  if (run.mesh) {
     const uint64_t seen = doc.mesh.version();
-    check = apply_operation(doc, result.label, [&](HalfedgeMesh& mesh) {
-      mesh = *outcome.mesh;
+    Check check = apply_operation(doc, result.label, [&](HalfedgeMesh& mesh) {
+      mesh = std::move(*run.mesh);  // a move: the mesh is never left half copied
       mesh.bump_version_above(seen);
       return Check::yes();
     });
-    result.applied = check.ok;
+    if (!check.ok) {  // not done (memory ran out): apply_operation's message says so
+      run_.reset();
+      return check;  // moved: no copy to run out of memory
+    }
+    result.applied = true;
     keep_if_alive(selection, doc.mesh);
-  }
-  // The status line says what happened beyond "N fields changed".
-  std::string verdict;
-  if (failed) {
-    verdict = outcome.error;
-  } else if (!mine) {
-    verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
-    if (exercise_ == Exercise::VertexNormal) verdict = "normal " + point_text(outcome.points);
+    // Kept without its record, the document's Warning stays a Warning.
+    const Severity severity = std::max(run.severity, doc.message.severity);
+    set_message_noexcept(doc, severity, [&] { return doc.message.text + " (" + run.verdict + ")"; });
   } else {
-    verdict = result.report.summary();
-    if (outcome.validation && !outcome.validation->ok()) verdict += "; yours is invalid: " + outcome.validation->summary();
+    set_message(doc, run.severity, std::move(run.unchanged_text));
   }
-  const std::string changed = result.applied ? doc.message.text : result.label + ": nothing changed";
-  set_message(doc, failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info,
-              changed + " (" + verdict + ")");
   result.generation = doc.generation;
   result.version = doc.mesh.version();
   run_ = std::move(result);
-  if (failed) return Check::no(outcome.error);
-  return check;
+  return std::move(run.returned);
 }
 
 const std::vector<RecordedEdit>& ExerciseSession::edits() const {
@@ -220,9 +270,12 @@ void ExerciseSession::finish_replay(MeshDocument& doc) {
   if (!replaying_) return;
   sync(doc);
   if (!replaying_) return;  // the document moved on: leave it alone
+  // Copied first: when memory runs out here the replay goes on as it was.
+  HalfedgeMesh final_state = *run_->report.mine.mesh;
+  std::string label = run_->label;
+  std::optional<HalfedgeMesh> before(*run_->input.mesh);
   replaying_ = false;
-  const HalfedgeMesh& before = *run_->input.mesh;
-  show(doc, *run_->report.mine.mesh, run_->label, before);
+  show(doc, std::move(final_state), std::move(label), std::move(before));
   run_->generation = doc.generation;
   run_->version = doc.mesh.version();
 }

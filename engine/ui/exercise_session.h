@@ -10,6 +10,12 @@
 //   "mine: flip e7" / "reference: flip e7" ("mine (error): ..." when the student's function failed half way);
 //   the student's result goes in even when it differs from the reference (validation says what broke). An
 //   unchanged mesh (a refusal, the templates) records nothing.
+// - They keep document_actions.h's out-of-memory contract: everything that can fail (the input's copy of the mesh,
+//   the run, the label, the status line's text) is made before the document changes, and the run goes in through
+//   apply_operation. When memory runs out before that, or under the student's code (a Lua error that says memory ran
+//   out, not the student's doing), nothing is done: an Error that says memory ran out (kMemoryRanOut), the document
+//   as it was (a replay in progress finished first, whole). Once the run went in, it is the session's last run, and
+//   a message that cannot be made for lack of memory is kMemoryRanOut as a Warning or worse.
 // - A replay shows states with show_state(), never history: while it runs, the document shows
 //   replay(before, edits, k) and `last` is the diff of edit k alone (state k-1 -> k), so the tables highlight
 //   the cell edit k wrote. finish_replay() (or stepping to the end) leaves the document at the operation's
@@ -98,7 +104,22 @@ class ExerciseSession {
   void sync(const MeshDocument& doc);
 
  private:
+  // A run made before the document changes: its result, the status line's parts and what run() returns.
+  struct PreparedRun {
+    ExerciseRun result;
+    std::string verdict;         // "(...)" after the document's own message
+    std::string unchanged_text;  // the whole message when the mesh does not change
+    Severity severity = Severity::Info;
+    Check returned;
+    std::optional<HalfedgeMesh> mesh;  // the run's mesh, when it differs from the document's
+  };
+
   Check run(MeshDocument& doc, Selection& selection, bool mine);
+  // Everything that can fail: the input, the student's code or the reference, the label and the texts. A refusal is
+  // returned with `prepared` left empty (its message set); std::bad_alloc escapes with the document as it was.
+  Check prepare_run(MeshDocument& doc, Selection& selection, bool mine, std::optional<PreparedRun>& prepared);
+  // Puts the prepared run in the document (apply_operation, which never throws) and says so; cannot fail.
+  Check take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept;
   void show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from);
 
   std::filesystem::path folder_;

@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "script/exception_text.h"
 #include "script/lesson_text.h"
 
 namespace meshedit {
@@ -13,7 +14,7 @@ namespace {
 
 namespace fs = std::filesystem;
 
-fs::file_time_type modified(const fs::path& path) {
+fs::file_time_type modified(const fs::path& path) noexcept {
   std::error_code ec;
   const auto time = fs::last_write_time(path, ec);
   return ec ? fs::file_time_type{} : time;
@@ -78,10 +79,14 @@ void refresh_lessons(LessonPanelState& state) {
 }
 
 bool load_lesson(LessonRunner& runner, LessonPanelState& state, const fs::path& path) {
+  watch_lesson(state, path);
+  return runner.load(path);
+}
+
+void watch_lesson(LessonPanelState& state, const fs::path& path) noexcept {
   state.loaded_time = modified(path);
   state.since_check = 0.0;
   state.open = true;
-  return runner.load(path);
 }
 
 bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt) {
@@ -92,7 +97,8 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
   const auto time = modified(runner.path());
   if (time == state.loaded_time) return false;
   state.loaded_time = time;
-  runner.reload();
+  // Memory that ran out is not the file's doing: the next check tries again (a broken file waits for the next save).
+  if (!runner.reload() && ran_out_of_memory(runner.error())) state.loaded_time = {};
   return true;
 }
 

@@ -5,7 +5,8 @@
 // - The panel only reads the runner and calls its public actions (next, back, go_to, reload, deliver of a
 //   button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
-//   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame.
+//   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
+//   that runs out of memory is tried again at the next check; one that fails otherwise waits for the next save.
 #pragma once
 
 #include <filesystem>
@@ -33,6 +34,9 @@ void refresh_lessons(LessonPanelState& state);
 
 // Loads `path` into the runner and remembers its modification time for hot reload.
 bool load_lesson(LessonRunner& runner, LessonPanelState& state, const std::filesystem::path& path);
+// Remembers `path`'s modification time for hot reload and opens the panel: what load_lesson does besides loading,
+// for a caller that loads in two steps (LessonRunner::prepare and take). Never throws.
+void watch_lesson(LessonPanelState& state, const std::filesystem::path& path) noexcept;
 
 // Reloads the lesson when its file changed on disk (checked at most every kReloadCheckSeconds of `dt`).
 // Returns whether it reloaded.

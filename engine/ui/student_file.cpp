@@ -2,8 +2,11 @@
 #include "ui/student_file.h"
 
 #include <exception>
+#include <new>
 #include <system_error>
 #include <utility>
+
+#include "script/exception_text.h"
 
 namespace meshedit {
 
@@ -30,17 +33,21 @@ bool StudentFile::changed() const {
 bool StudentFile::ensure_loaded() {
   if (!changed()) return code_ != nullptr;
   code_.reset();
-  std::error_code error;
-  // Taken before loading: a save during the load makes the next call load again rather than miss it.
-  attempted_time_ = std::filesystem::last_write_time(path_, error);
-  attempted_size_ = error ? uintmax_t(0) : std::filesystem::file_size(path_, error);
-  attempted_path_ = path_;
-  attempted_ = true;
   ++loads_;
   try {
+    std::error_code error;
+    // Taken before loading: a save during the load makes the next call load again rather than miss it.
+    attempted_time_ = std::filesystem::last_write_time(path_, error);
+    attempted_size_ = error ? uintmax_t(0) : std::filesystem::file_size(path_, error);
+    attempted_path_ = path_;
+    attempted_ = true;
     code_ = load_student_file(path_);
+  } catch (const std::bad_alloc&) {
+    attempted_ = false;  // not the file's doing: the next call tries again
+    error_ = kScriptMemoryRanOut;  // fits std::string's inline buffer: allocates nothing
+    return false;
   } catch (const std::exception& e) {
-    error_ = e.what();
+    error_ = exception_text(e);
     return false;
   }
   error_.clear();

@@ -9,7 +9,8 @@
 //   error, starting with "name.lua:LINE:" or "cannot open"; it is not tried again until the file changes, so
 //   calling ensure_loaded() every frame never re-runs a broken file every frame.
 // - serial() grows by one at every load attempt: what was computed from the code may be kept while it is the same.
-// - Nothing here throws.
+// - Nothing here throws. Memory running out while the file loads is error() "memory ran out", and the file is tried
+//   again at the next call, as if it had changed.
 #pragma once
 
 #include <cstddef>
