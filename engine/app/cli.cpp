@@ -12,6 +12,7 @@
 #include "app/cli_commands.h"
 #include "app/cli_grade.h"
 #include "app/cli_lesson.h"
+#include "script/exception_text.h"
 
 namespace meshedit {
 namespace {
@@ -79,7 +80,7 @@ int run_cli(int argc, char** argv) {
     std::cerr << "meshedit: " << e.what() << " (see meshedit --help)\n";
     return 2;
   } catch (const std::exception& e) {
-    std::cerr << "meshedit: " << e.what() << "\n";
+    std::cerr << "meshedit: " << exception_text(e) << "\n";  // "memory ran out", not "std::bad_alloc"
     return 1;
   }
 }

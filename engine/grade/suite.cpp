@@ -16,6 +16,7 @@
 #include "grade/reference_functions.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
+#include "script/exception_text.h"
 
 namespace meshedit {
 namespace {
@@ -237,7 +238,7 @@ struct SuiteApi {
       limit = e.limit();
       failed = true;
     } catch (const std::exception& e) {
-      error = e.what();
+      error = exception_text(e);
       failed = true;
     }
     if (failed) {
@@ -268,7 +269,7 @@ struct SuiteApi {
     try {
       result = c.student->has(name);
     } catch (const std::exception& e) {
-      error = e.what();
+      error = exception_text(e);
     }
     if (!error.empty()) return luaL_error(L, "%s", error.c_str());
     lua_pushboolean(L, result);
@@ -479,7 +480,7 @@ TestRun Suite::run_test_here(size_t index, const Submission& submission) {
     lua_settop(L, 0);
   } catch (const std::exception& e) {  // the student state could not be made: the grader's problem
     run.end = RunEnd::Error;
-    run.error = std::string("the grader could not run this test: ") + e.what();
+    run.error = std::string("the grader could not run this test: ") + exception_text(e);
   }
   recorder_slot_ = nullptr;
   if (student) {
