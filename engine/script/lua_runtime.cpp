@@ -64,8 +64,14 @@ LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   L_ = lua_newstate(&LuaRuntime::allocate, this);
   if (!L_) throw std::bad_alloc();  // memory ran out, as for any other allocation the caller makes
   *static_cast<LuaRuntime**>(lua_getextraspace(L_)) = this;
-  open_whitelist();
-  open_mesh_bindings(L_);
+  try {
+    open_whitelist();
+    open_mesh_bindings(L_);
+  } catch (...) {
+    lua_close(L_);  // the destructor does not run for an object whose constructor threw
+    L_ = nullptr;
+    throw;
+  }
 }
 
 LuaRuntime::~LuaRuntime() {
