@@ -299,7 +299,6 @@ std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& 
     runtime_->start_budget();
     runtime_->call(1, 0);
   } catch (const std::exception& e) {
-    body_ = nullptr;
     failure = exception_text(e);
   }
   body_ = nullptr;
@@ -308,7 +307,7 @@ std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& 
 
 void LessonRunner::update(double dt) noexcept try {
   if (!script_ || busy_ || state_ != StepState::Waiting) return;
-  const LessonWait& wait = script_->wait;  // read before resume() clears it; not copied (a copy may run out)
+  const LessonWait& wait = script_->wait;  // read only before resume(), which clears it; a copy could run out
   switch (wait.kind) {
     case LessonWait::Kind::Condition: return resume(nullptr);
     case LessonWait::Kind::Animation: {
