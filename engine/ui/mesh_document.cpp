@@ -8,7 +8,7 @@
 //   mesh stays as the operation left it, refused or not, the history is cleared, `last` is marked not recorded and
 //   the message says so (keep_unrecorded_change). No snapshot or patch is read from such a journal.
 // - Whatever allocates is done before the document is changed, or after a change that is kept whatever happens:
-//   `last` is built aside and moved in (record_last_change), the operation's edit and the history's step are done
+//   `last` is built aside and moved in (set_last_change), the operation's edit and the history's step are done
 //   before their bookkeeping. So running out of memory part-way leaves one of two states, the one before or the one
 //   after, and keep_unrecorded_change is the only way to the second one without a record.
 // - Whether an operation changed anything is decided by contents when the journal holds a snapshot (an assigned
@@ -43,11 +43,11 @@ std::string change_summary(const LastChange& last, const DocumentLimits& limits)
          " changed (too many to list)";
 }
 
-// Replaces doc.last by the change from `before` to the current mesh, given by `patch` when it was local (then the
-// diff is made from the patch alone); `previous`: `before` is the state the document showed until now. Returns the
-// status line for it. Out of memory, throws std::bad_alloc with doc.last as it was: the new one is built aside.
-std::string record_last_change(MeshDocument& doc, std::string label, HalfedgeMesh before,
-                               std::optional<MeshPatch> patch, bool previous = true) {
+// The new `last` for the change from `before` to the current mesh, given by `patch` when it was local (then the
+// diff is made from the patch alone); `previous`: `before` is the state the document showed until now. Its `before`,
+// `patch` and `serial` are left for the caller. Out of memory, throws std::bad_alloc; the document is not touched.
+LastChange describe_change(const MeshDocument& doc, std::string label, const HalfedgeMesh& before,
+                           const MeshPatch* patch, bool previous) {
   LastChange last;
   if (previous) last.version_before = before.version();
   last.version_after = doc.mesh.version();
@@ -60,12 +60,32 @@ std::string record_last_change(MeshDocument& doc, std::string label, HalfedgeMes
     last.change_count = last.changes.size();
     last.index = ChangeIndex(last.changes);
   }
+  return last;
+}
+
+// Whether `last` keeps the state before: the renderer rewrites a listed change in place from it, and the next local
+// change rolls it forward with the patch. A whole-mesh change too long to list (L on a big mesh, its undo and redo)
+// has neither use, and a copy of a mesh of millions of faces costs a second or so in fresh memory.
+bool keeps_before(const LastChange& last) { return last.listed || last.patch.has_value(); }
+
+// Makes `last` (built aside) the document's and returns the status line for it. Out of memory, throws std::bad_alloc
+// with doc.last as it was.
+std::string set_last_change(MeshDocument& doc, LastChange last) {
   std::string summary = change_summary(last, doc.limits);
-  last.before = std::move(before);
-  last.patch = std::move(patch);
   last.serial = doc.last.serial + 1;
   doc.last = std::move(last);
   return summary;
+}
+
+// describe_change and set_last_change in one, `before` kept where keeps_before says (moved when given as an rvalue,
+// copied otherwise).
+template <class Before>
+std::string record_last_change(MeshDocument& doc, std::string label, Before&& before, std::optional<MeshPatch> patch,
+                               bool previous = true) {
+  LastChange last = describe_change(doc, std::move(label), before, patch ? &*patch : nullptr, previous);
+  last.patch = std::move(patch);
+  if (keeps_before(last)) last.before.emplace(std::forward<Before>(before));
+  return set_last_change(doc, std::move(last));
 }
 
 // The mesh as it was just before the change `patch` made to doc.mesh (whose version() and proven version were then
@@ -180,10 +200,14 @@ void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal
   try {
     std::string summary;
     if (journal.has_snapshot()) {
+      // `last` is described before the snapshot moves to the history (so out of memory there, the history is cleared
+      // rather than kept), and copies the snapshot only when it keeps it: a long whole-mesh change copies nothing.
       HalfedgeMesh before = journal.take_snapshot();
-      doc.history.record(label, before);
+      LastChange last = describe_change(doc, label, before, nullptr, true);
+      if (keeps_before(last)) last.before = before;
+      doc.history.record(label, std::move(before));
       in_history = true;
-      summary = record_last_change(doc, label, std::move(before), std::nullopt);
+      summary = set_last_change(doc, std::move(last));
     } else {
       MeshPatch patch = make_patch(journal, doc.mesh);
       HalfedgeMesh before = state_before(doc, patch, version_before, journal.proven_version_before());

@@ -9,7 +9,9 @@
 //   `last.before` is one trailing copy of the mesh, rolled forward with the previous change's patch. Only
 //   snapshot-sized changes (a whole-mesh pass such as Loop subdivision, an assignment of the whole mesh, a huge
 //   script), undo/redo of their snapshot entries, and the first change after one of them, after opening a mesh or
-//   after show_state (which has no patch to roll last.before forward with) copy the mesh.
+//   after show_state (which has no patch to roll last.before forward with) copy the mesh. A snapshot-sized change
+//   keeps no `last.before` when its diff is too long to list (nothing would read it), so L on a big mesh, its undo
+//   and its redo copy nothing beyond the history's own snapshot.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
 //   same version()); only `message` changes. Putting the mesh back allocates nothing (the journal's snapshot is
 //   moved back, or its log written back), so this holds when memory has run out too: an operation that runs out
@@ -114,7 +116,9 @@ struct LastChange {
   size_t change_count = 0;                 // fields that changed; when not listed, only "more than the cap"
   bool listed = true;                      // false when the diff was larger than DocumentLimits::max_listed_changes
   ChangeIndex index;                       // built from `changes`
-  std::optional<HalfedgeMesh> before;      // the mesh before the change (absent before the first change)
+  // The mesh before the change: absent before the first change, and after a change with no patch whose diff is not
+  // listed (no reader: the renderer rewrites in place only from a listed diff, and only a patch rolls it forward).
+  std::optional<HalfedgeMesh> before;
   // The change from `before` to the mesh as a patch, when it was local: the next change rolls `before` forward with
   // it instead of copying the mesh. Absent for snapshot-sized changes.
   std::optional<MeshPatch> patch;

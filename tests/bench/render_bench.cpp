@@ -39,6 +39,7 @@
 #include "render/shader_library.h"
 #include "render/slot_geometry.h"
 #include "support/imgui_harness.h"
+#include "ui/document_actions.h"
 #include "ui/mesh_document.h"
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
@@ -333,6 +334,14 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   console_step("console: a flip after that (catches up by patch)",
                "mesh:flip(mesh:edge(" + std::to_string(edges / 12) + "))");
   validation_step("document: validation after those two lines");
+
+  // A whole-mesh change (L, as the key does it) and its undo and redo: the history keeps a snapshot of the state
+  // before, and `last` a copy of it only when its diff is listed (a small mesh); here the diff is too long to list.
+  Selection selection;
+  document_step("document: Loop subdivision (L)", [&] { loop_subdivide_all(doc, selection); });
+  document_step("document: undo L (snapshot)", [&] { undo(doc); });
+  document_step("document: redo L (snapshot)", [&] { redo(doc); });
+  edit("document: apply_operation(flip), first after L", "flip", doc.mesh.edge_capacity() / 3);
 }
 
 // The halfedge tab of the pointer tables at 6M+ halfedges: frames at the top, the middle and the end, and the worst

@@ -230,6 +230,44 @@ TEST(MeshDocument, HugeDiffsAreCountedNotListed) {
   EXPECT_EQ(doc.last.change_count, 12u);
 }
 
+// last.before is kept for its readers only: the renderer (a listed diff) and the next local edit (a patch). A whole-mesh
+// change too long to list, its undo and its redo keep none (on a big mesh, undo of L copied the subdivided mesh for
+// nothing: ~1 s at 4M faces); the first local edit after it then starts from a copy, and its diff is still exact.
+TEST(MeshDocument, AnUnlistedWholeMeshChangeKeepsNoCopyOfTheStateBefore) {
+  DocumentLimits limits;
+  limits.max_listed_changes = 50;
+  const HalfedgeMesh grid = build_halfedge_mesh(make_grid(4, 4));
+  MeshDocument doc = make_document(grid, "", limits);
+  ASSERT_TRUE(apply_operation(doc, "Loop subdivision", [](HalfedgeMesh& m) { return loop_subdivide(m); }).ok);
+  ASSERT_FALSE(doc.last.listed);
+  EXPECT_FALSE(doc.last.before.has_value());
+  const HalfedgeMesh subdivided = doc.mesh;
+  ASSERT_TRUE(undo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(grid));
+  EXPECT_FALSE(doc.last.listed);
+  EXPECT_FALSE(doc.last.before.has_value());
+  EXPECT_EQ(doc.message.text, "undo Loop subdivision: more than 50 fields changed (too many to list)");
+  ASSERT_TRUE(redo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(subdivided));
+  EXPECT_FALSE(doc.last.before.has_value());
+  // The flip after it: listed, with the exact state before and the same cells a plain diff gives.
+  ASSERT_TRUE(apply_operation(doc, "flip e30", [](HalfedgeMesh& m) { return flip(m, E(30)); }).ok());
+  ASSERT_TRUE(doc.last.before.has_value());
+  EXPECT_TRUE(doc.last.before->same_as(subdivided));
+  EXPECT_EQ(cells(doc.last.changes), cells(diff(subdivided, doc.mesh)));
+  ASSERT_TRUE(undo(doc));
+  EXPECT_TRUE(doc.mesh.same_as(subdivided));
+  // A whole-mesh change that is listed keeps its state before, as the renderer's in-place update needs.
+  MeshDocument small = make_document(grid);
+  ASSERT_TRUE(apply_operation(small, "Loop subdivision", [](HalfedgeMesh& m) { return loop_subdivide(m); }).ok);
+  ASSERT_TRUE(small.last.listed);
+  ASSERT_TRUE(small.last.before.has_value());
+  EXPECT_TRUE(small.last.before->same_as(grid));
+  ASSERT_TRUE(undo(small));
+  ASSERT_TRUE(small.last.before.has_value());
+  EXPECT_TRUE(small.last.before->same_as(subdivided));
+}
+
 TEST(MeshDocument, HistoryDepthFollowsTheMemoryBudget) {
   DocumentLimits limits;
   limits.history_budget_bytes = 1;  // at least 4 steps are always kept
