@@ -95,10 +95,13 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
 }
 
 void EditorApp::draw_mesh_view(int width, int height) {
-  // The document's last change lets the renderer rewrite only what an edit touched (it checks the versions).
+  // The document's last change lets the renderer rewrite only what an edit touched (it checks the versions): a local
+  // edit by its patch, a listed whole-mesh change by the copy of the state before.
   MeshRenderer::MeshChange change;
-  if (doc_.last.before && doc_.last.listed && doc_.last.version_before) {
-    change.before = &*doc_.last.before;
+  const bool described = doc_.last.patch || doc_.last.before;
+  if (described && doc_.last.listed && doc_.last.version_before) {
+    change.before = doc_.last.before ? &*doc_.last.before : nullptr;
+    change.patch = doc_.last.patch ? &*doc_.last.patch : nullptr;
     change.elements = doc_.last.index.elements();
     change.version_before = *doc_.last.version_before;
     change.version_after = doc_.last.version_after;
@@ -110,7 +113,7 @@ void EditorApp::draw_mesh_view(int width, int height) {
   if (!refused) {
     undrawable_.clear();
     try {
-      mesh_renderer_->update(doc_.mesh, change.before != nullptr ? &change : nullptr);
+      mesh_renderer_->update(doc_.mesh, described ? &change : nullptr);
     } catch (const RenderError& e) {
       undrawable_ = e.what();
       undrawable_generation_ = doc_.generation;

@@ -23,6 +23,7 @@
 #include <vector>
 
 #include "core/clean_rules.h"
+#include "core/state_before.h"
 
 namespace meshedit {
 namespace {
@@ -52,33 +53,12 @@ bool patch_ends_in(const HalfedgeMesh& after, const MeshPatch& patch) {
   return true;
 }
 
-// The mesh before the edit: a listed slot's `before` values, any other slot's values in `after`. Walks give 0 (and
-// the check then says false) if they do not close within the live halfedge count before, which a clean B never does.
-class StateBefore {
+// The mesh before the edit (core/state_before.h), with the walks the suspects need. Walks give 0 (and the check then
+// says false) if they do not close within the live halfedge count before, which a clean B never does.
+class CheckedBefore : public StateBefore {
  public:
-  StateBefore(const HalfedgeMesh& after, const MeshPatch& patch)
-      : after_(after), patch_(patch), live_(patch.shape_before.live[int(ElementKind::Halfedge)]) {}
-
-  bool alive(ElementRef element) const {
-    if (!element.valid()) return false;
-    if (const SlotChange* change = find(element.kind, element.index)) {
-      return element.index < patch_.shape_before.capacity[int(element.kind)] && change->before.alive;
-    }
-    return after_.alive(element);  // unlisted slots past after's capacity do not exist before either (patch_ends_in)
-  }
-  // Only for live elements.
-  HalfedgeRecord record(HalfedgeId h) const {
-    const SlotChange* change = find(ElementKind::Halfedge, h.index);
-    return change ? change->before.record : after_.record(h);
-  }
-  HalfedgeId halfedge(ElementRef element) const {
-    if (const SlotChange* change = find(element.kind, element.index)) return change->before.halfedge;
-    switch (element.kind) {
-      case ElementKind::Vertex: return after_.halfedge(VertexId(element.index));
-      case ElementKind::Edge: return after_.halfedge(EdgeId(element.index));
-      default: return after_.halfedge(element.face_id());
-    }
-  }
+  CheckedBefore(const HalfedgeMesh& after, const MeshPatch& patch)
+      : StateBefore(after, patch), live_(num_halfedges()) {}
 
   // Calls visit(h) for each halfedge leaving live vertex v (its fan from v's halfedge); returns how many, 0 if the
   // walk meets a dead halfedge or does not close.
@@ -107,11 +87,6 @@ class StateBefore {
   }
 
  private:
-  const SlotChange* find(ElementKind kind, uint32_t slot) const {
-    const auto it = std::lower_bound(patch_.slots.begin(), patch_.slots.end(), slot,
-                                     [&](const SlotChange& c, uint32_t s) { return slot_less(c, kind, s); });
-    return it != patch_.slots.end() && it->kind == kind && it->slot == slot ? &*it : nullptr;
-  }
   template <class Step, class Visit>
   size_t walk(HalfedgeId first, Step&& step, Visit&& visit) const {
     size_t length = 0;
@@ -124,8 +99,6 @@ class StateBefore {
     return length;
   }
 
-  const HalfedgeMesh& after_;
-  const MeshPatch& patch_;
   size_t live_;
 };
 
@@ -138,7 +111,7 @@ struct Suspects {
   bool walks_closed = true;   // false when a walk in the state before failed (it was not clean after all)
 };
 
-Suspects find_suspects(const HalfedgeMesh& after, const MeshPatch& patch, const StateBefore& before) {
+Suspects find_suspects(const HalfedgeMesh& after, const MeshPatch& patch, const CheckedBefore& before) {
   Suspects s;
   const auto note_walk = [&](size_t length) { s.walks_closed = s.walks_closed && length != 0; };
   const auto add_halfedge = [&](HalfedgeId h) { s.halfedges.push_back(h); };
@@ -198,7 +171,7 @@ Suspects find_suspects(const HalfedgeMesh& after, const MeshPatch& patch, const 
 // Takes the lengths of the walks from `ids` in the state before off `total` and adds those after (elements live in
 // that state only); false when a walk fails its rule.
 template <class Id, class OldLength, class NewLength>
-bool swap_lengths(int64_t& total, const std::vector<Id>& ids, const StateBefore& before, const HalfedgeMesh& after,
+bool swap_lengths(int64_t& total, const std::vector<Id>& ids, const CheckedBefore& before, const HalfedgeMesh& after,
                   OldLength&& old_length, NewLength&& new_length) {
   for (const Id id : ids) {
     if (before.alive(id)) {
@@ -219,7 +192,7 @@ bool swap_lengths(int64_t& total, const std::vector<Id>& ids, const StateBefore&
 
 bool edit_keeps_clean(const HalfedgeMesh& after, const MeshPatch& patch) {
   if (!patch_ends_in(after, patch)) return false;
-  const StateBefore before(after, patch);
+  const CheckedBefore before(after, patch);
   const Suspects s = find_suspects(after, patch, before);
   if (!s.walks_closed) return false;
 

@@ -20,8 +20,10 @@ void sort_unique(std::vector<uint32_t>& ids) {
 
 // The halfedges leaving u, found by walking its fan (twin, then next) from u.halfedge, into `out`; true when the walk
 // closed after exactly `outgoing` distinct halfedges that all leave u (then there is no other: `outgoing` counts
-// them). A walk first back at its start after k steps has visited k distinct halfedges.
-bool fan(const HalfedgeMesh& mesh, VertexId u, uint32_t outgoing, std::vector<HalfedgeId>& out) {
+// them). A walk first back at its start after k steps has visited k distinct halfedges. `Mesh`: a HalfedgeMesh, or the
+// StateBefore of an edit.
+template <class Mesh>
+bool fan(const Mesh& mesh, VertexId u, uint32_t outgoing, std::vector<HalfedgeId>& out) {
   out.clear();
   if (outgoing == 0) return true;
   if (outgoing > kMaxWalk || u.index >= mesh.vertex_capacity()) return false;
@@ -45,8 +47,9 @@ void consider(uint32_t candidate, std::vector<uint32_t>& found, Test&& test) {
   if (std::find(found.begin(), found.end(), candidate) == found.end()) found.push_back(candidate);
 }
 
+template <class Before>
 struct Planner {
-  const HalfedgeMesh& before;
+  const Before& before;
   const HalfedgeMesh& after;
   SlotState& state;
   std::string& why;
@@ -71,19 +74,22 @@ struct Planner {
   bool edges_of(uint32_t h, std::vector<uint32_t>& out) {
     std::vector<uint32_t> found;
     const auto test = [&](uint32_t e) { return before.alive(EdgeId(e)) && before.halfedge(EdgeId(e)).index == h; };
-    for (const HalfedgeMesh* m : {&before, &after}) {
-      if (h >= m->halfedge_capacity()) continue;
-      consider(m->edge(HalfedgeId(h)).index, found, test);
-      const HalfedgeId t = m->twin(HalfedgeId(h));
-      if (t.index < m->halfedge_capacity()) consider(m->edge(t).index, found, test);
-    }
+    const auto candidates_in = [&](const auto& m) {
+      if (h >= m.halfedge_capacity()) return;
+      consider(m.edge(HalfedgeId(h)).index, found, test);
+      const HalfedgeId t = m.twin(HalfedgeId(h));
+      if (t.index < m.halfedge_capacity()) consider(m.edge(t).index, found, test);
+    };
+    candidates_in(before);
+    candidates_in(after);
     const uint32_t expected = h < state.references.edge_refs.size() ? state.references.edge_refs[h] : 0;
     if (found.size() != expected) return fail("h" + std::to_string(h) + " is the halfedge of edges not found");
     out.insert(out.end(), found.begin(), found.end());
     return true;
   }
 
-  bool draw(const HalfedgeMesh& mesh, uint32_t f, FaceDraw& d) {
+  template <class Mesh>
+  bool draw(const Mesh& mesh, uint32_t f, FaceDraw& d) {
     d = FaceDraw();
     walk.clear();
     if (f >= mesh.face_capacity()) return true;
@@ -92,6 +98,11 @@ struct Planner {
     return true;
   }
 };
+
+// plan_update for either kind of `before` (a copy of the mesh, or the state read through the edit's patch).
+template <class Before>
+std::optional<SlotPatch> plan(const Before& before, const HalfedgeMesh& after, std::span<const ElementRef> changed,
+                              SlotState& state, bool arrows, std::string& why);
 
 }  // namespace
 
@@ -111,7 +122,21 @@ SlotState slot_state(const HalfedgeMesh& mesh, const SlotGeometry& g) {
 std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeMesh& after,
                                      std::span<const ElementRef> changed, SlotState& state, bool arrows,
                                      std::string& why) {
-  Planner p{before, after, state, why, {}};
+  return plan(before, after, changed, state, arrows, why);
+}
+
+std::optional<SlotPatch> plan_update(const StateBefore& before, const HalfedgeMesh& after,
+                                     std::span<const ElementRef> changed, SlotState& state, bool arrows,
+                                     std::string& why) {
+  return plan(before, after, changed, state, arrows, why);
+}
+
+namespace {
+
+template <class Before>
+std::optional<SlotPatch> plan(const Before& before, const HalfedgeMesh& after, std::span<const ElementRef> changed,
+                              SlotState& state, bool arrows, std::string& why) {
+  Planner<Before> p{before, after, state, why, {}};
   std::vector<uint32_t> cv, ch, ce, cf;
   for (const ElementRef& ref : changed) {
     if (!ref.valid()) continue;
@@ -269,6 +294,8 @@ std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeM
   patch.bounds = state.bounds;
   return patch;
 }
+
+}  // namespace
 
 void apply_patch(SlotGeometry& g, std::vector<EdgeSegment>* arrows, const SlotPatch& patch) {
   g.positions.resize(patch.vertex_capacity, glm::vec3(0.0f));

@@ -3,8 +3,10 @@
 //
 // Given the state the buffers show (`before`), the new state (`after`) and every element whose fields differ
 // between them (the document's diff), the patch rewrites every slot whose value differs (and a few around them that
-// come out the same), so applying it to build_slot_geometry(before) gives build_slot_geometry(after), byte for byte (tests check it on long random runs of
-// flips, splits, collapses, undos, redos and raw pointer writes). The dirty slots follow from what each value reads:
+// come out the same), so applying it to build_slot_geometry(before) gives build_slot_geometry(after), byte for byte
+// (tests check it on long random runs of flips, splits, collapses, undos, redos and raw pointer writes). `before` may
+// be a copy of the mesh or the state read through the edit's patch (StateBefore), with the same result. The dirty
+// slots follow from what each value reads:
 // - a face slot reads the face's walk (its halfedges' alive, face, next, vertex; its corners' alive and position):
 //   it is dirty when the face changed, when a changed halfedge lies in it in either state, or when it has a
 //   changed vertex as a corner in either state;
@@ -30,6 +32,7 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "core/state_before.h"
 #include "render/mesh_references.h"
 #include "render/slot_geometry.h"
 
@@ -77,6 +80,11 @@ inline constexpr uint32_t kMaxWalk = 1024;  // longest face cycle or vertex fan 
 // drawn reads them). `state` describes `before` and is advanced to `after` when a patch is returned; when not,
 // it is left in no particular state (the caller rebuilds it). With `arrows`, the patch also rewrites the arrows.
 std::optional<SlotPatch> plan_update(const HalfedgeMesh& before, const HalfedgeMesh& after,
+                                     std::span<const ElementRef> changed, SlotState& state, bool arrows,
+                                     std::string& why);
+// The same with the state before read through the edit's patch (core/state_before.h): no copy of the mesh is needed,
+// and the result is the same.
+std::optional<SlotPatch> plan_update(const StateBefore& before, const HalfedgeMesh& after,
                                      std::span<const ElementRef> changed, SlotState& state, bool arrows,
                                      std::string& why);
 

@@ -22,8 +22,10 @@ constexpr double kArrowInset = 0.2;
 constexpr double kArrowTrim = 0.12;
 constexpr double kArrowHead = 0.25;
 
-// Collects f's cycle (see the header's rule for a drawable face); see walk_face_cycle.
-FaceWalk walk(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited,
+// Collects f's cycle (see the header's rule for a drawable face); see walk_face_cycle. `Mesh`: a HalfedgeMesh, or
+// the StateBefore of an edit.
+template <class Mesh>
+FaceWalk walk(const Mesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle, std::vector<uint8_t>* visited,
               uint32_t max_steps) {
   cycle.clear();
   if (f.is_boundary() || !mesh.alive(f)) return FaceWalk::Broken;
@@ -110,7 +112,15 @@ void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& c
   add_arrows(mesh, cycle, out);
 }
 
-std::optional<EdgeSegment> edge_segment(const HalfedgeMesh& mesh, EdgeId e) {
+FaceWalk walk_face_cycle(const StateBefore& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
+                         std::vector<uint8_t>* visited, uint32_t max_steps) {
+  return walk(mesh, f, cycle, visited, max_steps);
+}
+
+namespace {
+
+template <class Mesh>
+std::optional<EdgeSegment> segment_of(const Mesh& mesh, EdgeId e) {
   if (!mesh.alive(e)) return std::nullopt;
   const HalfedgeId h = mesh.halfedge(e);
   if (!mesh.alive(h)) return std::nullopt;
@@ -127,6 +137,11 @@ std::optional<EdgeSegment> edge_segment(const HalfedgeMesh& mesh, EdgeId e) {
   if (mesh.face(h).is_boundary() || mesh.face(t).is_boundary()) segment.flags |= kEdgeBoundaryFlag;
   return segment;
 }
+
+}  // namespace
+
+std::optional<EdgeSegment> edge_segment(const HalfedgeMesh& mesh, EdgeId e) { return segment_of(mesh, e); }
+std::optional<EdgeSegment> edge_segment(const StateBefore& mesh, EdgeId e) { return segment_of(mesh, e); }
 
 std::optional<HalfedgeArrow> halfedge_arrow(const HalfedgeMesh& mesh, HalfedgeId h) {
   if (!mesh.alive(h)) return std::nullopt;

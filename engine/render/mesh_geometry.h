@@ -27,6 +27,7 @@
 #include <glm/vec3.hpp>
 
 #include "core/halfedge_mesh.h"
+#include "core/state_before.h"
 #include "render/camera.h"
 
 namespace meshedit {
@@ -82,6 +83,9 @@ MeshGeometry build_mesh_geometry(const HalfedgeMesh& mesh);
 enum class FaceWalk { Closed, Broken, TooLong };
 FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
                          std::vector<uint8_t>* visited, uint32_t max_steps);
+// The same in the state before an edit, read through its patch (the renderer's in-place update).
+FaceWalk walk_face_cycle(const StateBefore& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
+                         std::vector<uint8_t>* visited, uint32_t max_steps);
 // The mean of a closed cycle's corners (where its arrows lean to), and the arrows of a closed cycle, appended
 // in cycle order: what build_halfedge_arrows makes for that face.
 glm::dvec3 face_cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle);
@@ -94,6 +98,7 @@ std::vector<HalfedgeArrow> build_halfedge_arrows(const HalfedgeMesh& mesh);
 // One element at a time (for highlights and labels); nullopt where the whole-mesh build draws nothing.
 std::optional<HalfedgeArrow> halfedge_arrow(const HalfedgeMesh& mesh, HalfedgeId h);
 std::optional<EdgeSegment> edge_segment(const HalfedgeMesh& mesh, EdgeId e);
+std::optional<EdgeSegment> edge_segment(const StateBefore& mesh, EdgeId e);
 // The face's corners in cycle order, if the face is drawable.
 std::optional<std::vector<glm::dvec3>> face_corners(const HalfedgeMesh& mesh, FaceId f);
 

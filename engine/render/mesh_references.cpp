@@ -7,7 +7,9 @@ namespace meshedit {
 namespace {
 
 // Adds `delta` (+1 or -1) for what live halfedge h (live edge e) of `mesh` points at.
-void count_halfedge(const HalfedgeMesh& mesh, HalfedgeId h, MeshReferences& r, int delta) {
+// `Mesh`: a HalfedgeMesh, or the StateBefore of an edit.
+template <class Mesh>
+void count_halfedge(const Mesh& mesh, HalfedgeId h, MeshReferences& r, int delta) {
   if (!mesh.alive(h)) return;
   const VertexId v = mesh.vertex(h);
   if (v.index < r.outgoing.size()) r.outgoing[v.index] += uint32_t(delta);
@@ -15,10 +17,28 @@ void count_halfedge(const HalfedgeMesh& mesh, HalfedgeId h, MeshReferences& r, i
   if (t.index < r.twin_refs.size()) r.twin_refs[t.index] += uint32_t(delta);
 }
 
-void count_edge(const HalfedgeMesh& mesh, EdgeId e, MeshReferences& r, int delta) {
+template <class Mesh>
+void count_edge(const Mesh& mesh, EdgeId e, MeshReferences& r, int delta) {
   if (!mesh.alive(e)) return;
   const HalfedgeId h = mesh.halfedge(e);
   if (h.index < r.edge_refs.size()) r.edge_refs[h.index] += uint32_t(delta);
+}
+
+template <class Before>
+void apply_counts(MeshReferences& r, const Before& before, const HalfedgeMesh& after,
+                  std::span<const uint32_t> halfedges, std::span<const uint32_t> edges) {
+  // Take the listed slots' old pointers out, make room for either state's slots, put the new ones in, then drop
+  // the slots `after` does not have (nothing live in `after` points there: such pointers are not counted).
+  for (uint32_t h : halfedges) count_halfedge(before, HalfedgeId(h), r, -1);
+  for (uint32_t e : edges) count_edge(before, EdgeId(e), r, -1);
+  r.outgoing.resize(std::max<size_t>(r.outgoing.size(), after.vertex_capacity()), 0);
+  r.twin_refs.resize(std::max<size_t>(r.twin_refs.size(), after.halfedge_capacity()), 0);
+  r.edge_refs.resize(std::max<size_t>(r.edge_refs.size(), after.halfedge_capacity()), 0);
+  for (uint32_t h : halfedges) count_halfedge(after, HalfedgeId(h), r, +1);
+  for (uint32_t e : edges) count_edge(after, EdgeId(e), r, +1);
+  r.outgoing.resize(after.vertex_capacity());
+  r.twin_refs.resize(after.halfedge_capacity());
+  r.edge_refs.resize(after.halfedge_capacity());
 }
 
 }  // namespace
@@ -39,18 +59,12 @@ MeshReferences MeshReferences::count(const HalfedgeMesh& mesh) {
 
 void MeshReferences::apply(const HalfedgeMesh& before, const HalfedgeMesh& after, std::span<const uint32_t> halfedges,
                            std::span<const uint32_t> edges) {
-  // Take the listed slots' old pointers out, make room for either state's slots, put the new ones in, then drop
-  // the slots `after` does not have (nothing live in `after` points there: such pointers are not counted).
-  for (uint32_t h : halfedges) count_halfedge(before, HalfedgeId(h), *this, -1);
-  for (uint32_t e : edges) count_edge(before, EdgeId(e), *this, -1);
-  outgoing.resize(std::max<size_t>(outgoing.size(), after.vertex_capacity()), 0);
-  twin_refs.resize(std::max<size_t>(twin_refs.size(), after.halfedge_capacity()), 0);
-  edge_refs.resize(std::max<size_t>(edge_refs.size(), after.halfedge_capacity()), 0);
-  for (uint32_t h : halfedges) count_halfedge(after, HalfedgeId(h), *this, +1);
-  for (uint32_t e : edges) count_edge(after, EdgeId(e), *this, +1);
-  outgoing.resize(after.vertex_capacity());
-  twin_refs.resize(after.halfedge_capacity());
-  edge_refs.resize(after.halfedge_capacity());
+  apply_counts(*this, before, after, halfedges, edges);
+}
+
+void MeshReferences::apply(const StateBefore& before, const HalfedgeMesh& after, std::span<const uint32_t> halfedges,
+                           std::span<const uint32_t> edges) {
+  apply_counts(*this, before, after, halfedges, edges);
 }
 
 }  // namespace meshedit

@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "core/state_before.h"
 
 namespace meshedit {
 
@@ -25,6 +26,9 @@ struct MeshReferences {
   // From the counts of `before` to those of `after`: `halfedges` and `edges` list every slot (of either state) whose
   // fields differ, each once. O(listed slots), plus a resize when the capacities change.
   void apply(const HalfedgeMesh& before, const HalfedgeMesh& after, std::span<const uint32_t> halfedges,
+             std::span<const uint32_t> edges);
+  // The same with the state before read through the edit's patch.
+  void apply(const StateBefore& before, const HalfedgeMesh& after, std::span<const uint32_t> halfedges,
              std::span<const uint32_t> edges);
   bool operator==(const MeshReferences&) const = default;
 };

@@ -95,10 +95,12 @@ struct MeshKey {
   uint64_t version = 0;
   std::array<size_t, 9> sizes{};
 
-  static MeshKey of(const HalfedgeMesh& m) {
-    return {&m, m.version(),
-            {m.vertex_capacity(), m.halfedge_capacity(), m.edge_capacity(), m.face_capacity(), m.boundary_capacity(),
-             m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces()}};
+  static MeshKey of(const HalfedgeMesh& m) { return {&m, m.version(), sizes_of(m)}; }
+  // Capacities and live counts of a mesh, or of the state before an edit (StateBefore).
+  template <class Mesh>
+  static std::array<size_t, 9> sizes_of(const Mesh& m) {
+    return {m.vertex_capacity(), m.halfedge_capacity(), m.edge_capacity(), m.face_capacity(), m.boundary_capacity(),
+            m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces()};
   }
   bool operator==(const MeshKey& o) const { return mesh == o.mesh && version == o.version && sizes == o.sizes; }
 };
@@ -181,6 +183,9 @@ struct MeshRenderer::Impl {
   // Throws RenderError, with nothing drawn until a mesh is uploaded, when a buffer texture would need more texels.
   void refuse_if_too_large(size_t texels);
   bool patch(const HalfedgeMesh& mesh, const MeshChange& change);
+  template <class Before>
+  bool patch_from(const Before& before, uint64_t before_version, const HalfedgeMesh& source,
+                  const MeshChange& change);
   void uploaded_state(const HalfedgeMesh& mesh);
   void refresh_changed(std::span<const ElementRef> list, uint64_t key);
   void refresh_focus(ElementRef hovered, ElementRef selected);
@@ -284,10 +289,20 @@ void MeshRenderer::Impl::uploaded_state(const HalfedgeMesh& source) {
 }
 
 bool MeshRenderer::Impl::patch(const HalfedgeMesh& source, const MeshChange& change) {
-  const HalfedgeMesh& before = *change.before;
+  if (change.before != nullptr) return patch_from(*change.before, change.before->version(), source, change);
+  // The patch ends in `source` when its version is the change's version after (the document's patches do).
+  if (change.patch != nullptr) {
+    return patch_from(StateBefore(source, *change.patch), change.version_before, source, change);
+  }
+  return false;
+}
+
+template <class Before>
+bool MeshRenderer::Impl::patch_from(const Before& before, uint64_t before_version, const HalfedgeMesh& source,
+                                    const MeshChange& change) {
   // The change must start from exactly the state the buffers show and end at the mesh given.
-  if (!uploaded || mesh != &source || version != change.version_before || before.version() != change.version_before ||
-      source.version() != change.version_after || !(MeshKey::of(before).sizes == uploaded_key.sizes)) {
+  if (!uploaded || mesh != &source || version != change.version_before || before_version != change.version_before ||
+      source.version() != change.version_after || !(MeshKey::sizes_of(before) == uploaded_key.sizes)) {
     return false;
   }
   const size_t sent = gl::uploaded_bytes();
@@ -578,7 +593,7 @@ MeshRenderer::~MeshRenderer() = default;
 void MeshRenderer::update(const HalfedgeMesh& mesh, const MeshChange* change) {
   Impl& r = *impl_;
   if (r.uploaded && r.uploaded_key == MeshKey::of(mesh)) return;
-  if (change != nullptr && change->before != nullptr && r.patch(mesh, *change)) return;
+  if (change != nullptr && r.patch(mesh, *change)) return;
   r.upload(mesh, !r.uploaded ? "first upload" : change == nullptr ? "no change description" : "another mesh state");
 }
 

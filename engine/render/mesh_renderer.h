@@ -48,6 +48,7 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "core/mesh_patch.h"
 #include "render/camera.h"
 #include "render/shader_library.h"
 #include "render/slot_geometry.h"
@@ -83,13 +84,16 @@ class MeshRenderer {
   MeshRenderer(const MeshRenderer&) = delete;
   MeshRenderer& operator=(const MeshRenderer&) = delete;
 
-  // What changed since the state the renderer last saw: `before` is that state (a copy; the document keeps it),
-  // `elements` every element with a field that differs (each once), and the versions of the updated mesh object
-  // before and after. update() trusts it only when the versions and element counts match what it holds.
+  // What changed since the state the renderer last saw: that state, as a copy (`before`) or as the edit's patch
+  // (`patch`, which ends in the mesh given to update(); then the state before is read through it, and nothing needs
+  // a copy of the mesh), `elements` every element with a field that differs (each once), and the versions of the
+  // updated mesh object before and after. update() trusts it only when the versions and element counts match what
+  // it holds.
   struct MeshChange {
     const HalfedgeMesh* before = nullptr;
     std::span<const ElementRef> elements;
     uint64_t version_before = 0, version_after = 0;
+    const MeshPatch* patch = nullptr;  // used when `before` is null
   };
   // Throws RenderError when the mesh is too large to draw (a buffer texture would need more texels than OpenGL, or
   // RenderStyle::max_buffer_texels, allows), found from the capacities before any whole-mesh work; then nothing is

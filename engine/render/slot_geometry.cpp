@@ -18,8 +18,10 @@ namespace {
 // Area below this fraction of the squared size of the face counts as zero (core/normals.cpp's rule).
 constexpr double kZeroAreaRelative = 1e-14;
 
-// Twice the vector area of a closed cycle, as core's face_term computes it.
-glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& corners) {
+// Twice the vector area of a closed cycle, as core's face_term computes it. `Mesh`: a HalfedgeMesh, or the
+// StateBefore of an edit (the same arithmetic, so the same bits).
+template <class Mesh>
+glm::dvec3 cycle_term(const Mesh& mesh, const std::vector<uint32_t>& corners) {
   glm::dvec3 out(0.0), previous(0.0);
   const glm::dvec3 origin = mesh.position(VertexId(corners[0]));
   double size_sq = 0.0;
@@ -31,6 +33,23 @@ glm::dvec3 cycle_term(const HalfedgeMesh& mesh, const std::vector<uint32_t>& cor
   }
   if (!(glm::length(out) > kZeroAreaRelative * size_sq)) out = glm::dvec3(0.0);
   return out;
+}
+
+template <class Mesh>
+void draw_face_of(const Mesh& mesh, FaceId f, FaceDraw& out, std::vector<HalfedgeId>& cycle,
+                  std::vector<uint8_t>* visited, uint32_t max_steps) {
+  out.corners.clear();
+  out.term = glm::dvec3(0.0);
+  out.walk = walk_face_cycle(mesh, f, cycle, visited, max_steps);
+  if (!out.drawn()) return;
+  for (HalfedgeId h : cycle) out.corners.push_back(mesh.vertex(h).index);
+  out.term = cycle_term(mesh, out.corners);
+}
+
+template <class Mesh>
+VertexPoint point_of(const Mesh& mesh, VertexId v) {
+  if (!mesh.alive(v) || !finite(mesh.position(v))) return kHiddenPoint;
+  return {glm::vec3(mesh.position(v)), v.index};
 }
 
 }  // namespace
@@ -45,20 +64,23 @@ glm::dvec3 unit_or_zero(const glm::dvec3& v) {
 
 void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<HalfedgeId>& cycle,
                std::vector<uint8_t>* visited, uint32_t max_steps) {
-  out.corners.clear();
-  out.term = glm::dvec3(0.0);
-  out.walk = walk_face_cycle(mesh, f, cycle, visited, max_steps);
-  if (!out.drawn()) return;
-  for (HalfedgeId h : cycle) out.corners.push_back(mesh.vertex(h).index);
-  out.term = cycle_term(mesh, out.corners);
+  draw_face_of(mesh, f, out, cycle, visited, max_steps);
 }
 
-VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v) {
-  if (!mesh.alive(v) || !finite(mesh.position(v))) return kHiddenPoint;
-  return {glm::vec3(mesh.position(v)), v.index};
+void draw_face(const StateBefore& mesh, FaceId f, FaceDraw& out, std::vector<HalfedgeId>& cycle,
+               std::vector<uint8_t>* visited, uint32_t max_steps) {
+  draw_face_of(mesh, f, out, cycle, visited, max_steps);
 }
+
+VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v) { return point_of(mesh, v); }
+VertexPoint slot_point(const StateBefore& mesh, VertexId v) { return point_of(mesh, v); }
 
 EdgeSegment slot_edge(const HalfedgeMesh& mesh, EdgeId e) {
+  const std::optional<EdgeSegment> s = edge_segment(mesh, e);
+  return s ? *s : kHiddenSegment;
+}
+
+EdgeSegment slot_edge(const StateBefore& mesh, EdgeId e) {
   const std::optional<EdgeSegment> s = edge_segment(mesh, e);
   return s ? *s : kHiddenSegment;
 }

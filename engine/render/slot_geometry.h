@@ -44,6 +44,9 @@ struct FaceDraw {
 // f's drawing (see walk_face_cycle for `visited` and `max_steps`); `cycle` is scratch space and holds the walk.
 void draw_face(const HalfedgeMesh& mesh, FaceId f, FaceDraw& out, std::vector<HalfedgeId>& cycle,
                std::vector<uint8_t>* visited = nullptr, uint32_t max_steps = kInvalidIndex);
+// The same in the state before an edit, read through its patch (the renderer's in-place update).
+void draw_face(const StateBefore& mesh, FaceId f, FaceDraw& out, std::vector<HalfedgeId>& cycle,
+               std::vector<uint8_t>* visited = nullptr, uint32_t max_steps = kInvalidIndex);
 
 // The unit vector along a term, or zero (core/normals.h's rule).
 glm::dvec3 unit_or_zero(const glm::dvec3& v);
@@ -82,6 +85,8 @@ SlotGeometry build_slot_geometry(const HalfedgeMesh& mesh, int threads = 1);
 // One slot's value, as build_slot_geometry computes it.
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v);
 EdgeSegment slot_edge(const HalfedgeMesh& mesh, EdgeId e);
+VertexPoint slot_point(const StateBefore& mesh, VertexId v);  // in the state before an edit
+EdgeSegment slot_edge(const StateBefore& mesh, EdgeId e);
 std::array<EdgeSegment, 3> slot_arrow(const HalfedgeMesh& mesh, HalfedgeId h);  // hidden when h has no arrow
 inline constexpr EdgeSegment kHiddenSegment{glm::vec3(0.0f), glm::vec3(0.0f), kInvalidIndex, kEdgeHiddenFlag};
 inline constexpr VertexPoint kHiddenPoint{glm::vec3(0.0f), kInvalidIndex};

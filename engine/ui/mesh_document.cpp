@@ -3,7 +3,7 @@
 // Invariants kept here:
 // - An operation runs under a change journal: a refusal reverts it (contents and version exactly), success keeps a
 //   patch (or, when the journal fell back, its snapshot) for the history and `last`. The mesh is copied only for
-//   snapshot-sized changes and when last.before cannot be rolled forward (see state_before).
+//   snapshot-sized changes whose diff is listed (last.before, for the renderer); a local change keeps only its patch.
 // - A journal that ran out of memory for its snapshot (state_before_lost) leaves nothing to revert or record: the
 //   mesh stays as the operation left it, refused or not, the history is cleared, `last` is marked not recorded and
 //   the message says so (keep_unrecorded_change). No snapshot or patch is read from such a journal.
@@ -24,7 +24,6 @@
 
 #include "core/change_journal.h"
 #include "core/mesh_error.h"
-#include "core/mesh_storage.h"
 #include "core/parallel_for.h"
 #include "core/patch_check.h"
 #include "core/quick_check.h"
@@ -43,30 +42,26 @@ std::string change_summary(const LastChange& last, const DocumentLimits& limits)
          " changed (too many to list)";
 }
 
-// The new `last` for the change from `before` to the current mesh, given by `patch` when it was local (then the
-// diff is made from the patch alone); `previous`: `before` is the state the document showed until now. Its `before`,
-// `patch` and `serial` are left for the caller. Out of memory, throws std::bad_alloc; the document is not touched.
-LastChange describe_change(const MeshDocument& doc, std::string label, const HalfedgeMesh& before,
-                           const MeshPatch* patch, bool previous) {
+// The new `last` for a change to the current mesh from the state before it, whose version() was `version_before`:
+// given by `patch` when it was local (the diff is then made from the patch alone), by `before` otherwise. `previous`:
+// that state is the one the document showed until now. Its `before`, `patch` and `serial` are left for the caller.
+// Out of memory, throws std::bad_alloc; the document is not touched.
+LastChange describe_change(const MeshDocument& doc, std::string label, uint64_t version_before,
+                           const HalfedgeMesh* before, const MeshPatch* patch, bool previous) {
   LastChange last;
-  if (previous) last.version_before = before.version();
+  if (previous) last.version_before = version_before;
   last.version_after = doc.mesh.version();
   last.label = std::move(label);
   const size_t limit = doc.limits.max_listed_changes;
-  last.change_count = patch ? patch_change_count(*patch, limit) : count_changes(before, doc.mesh, limit);
+  last.change_count = patch ? patch_change_count(*patch, limit) : count_changes(*before, doc.mesh, limit);
   last.listed = last.change_count <= limit;
   if (last.listed) {
-    last.changes = patch ? patch_diff(*patch) : diff(before, doc.mesh);
+    last.changes = patch ? patch_diff(*patch) : diff(*before, doc.mesh);
     last.change_count = last.changes.size();
     last.index = ChangeIndex(last.changes);
   }
   return last;
 }
-
-// Whether `last` keeps the state before: the renderer rewrites a listed change in place from it, and the next local
-// change rolls it forward with the patch. A whole-mesh change too long to list (L on a big mesh, its undo and redo)
-// has neither use, and a copy of a mesh of millions of faces costs a second or so in fresh memory.
-bool keeps_before(const LastChange& last) { return last.listed || last.patch.has_value(); }
 
 // Makes `last` (built aside) the document's and returns the status line for it. Out of memory, throws std::bad_alloc
 // with doc.last as it was.
@@ -77,33 +72,22 @@ std::string set_last_change(MeshDocument& doc, LastChange last) {
   return summary;
 }
 
-// describe_change and set_last_change in one, `before` kept where keeps_before says (moved when given as an rvalue,
-// copied otherwise).
-template <class Before>
-std::string record_last_change(MeshDocument& doc, std::string label, Before&& before, std::optional<MeshPatch> patch,
-                               bool previous = true) {
-  LastChange last = describe_change(doc, std::move(label), before, patch ? &*patch : nullptr, previous);
+// `last` for a local change given by its patch: no copy of the mesh (the renderer and the validation read the state
+// before through the patch).
+std::string record_local_change(MeshDocument& doc, std::string label, uint64_t version_before, MeshPatch patch) {
+  LastChange last = describe_change(doc, std::move(label), version_before, nullptr, &patch, true);
   last.patch = std::move(patch);
-  if (keeps_before(last)) last.before.emplace(std::forward<Before>(before));
   return set_last_change(doc, std::move(last));
 }
 
-// The mesh as it was just before the change `patch` made to doc.mesh (whose version() and proven version were then
-// `version` and `proven`). Rolls last.before forward with last.patch when those describe exactly that state (time
-// proportional to both edits; last.before is used up, the caller replaces `last`); otherwise copies the mesh and
-// applies `patch` backward.
-HalfedgeMesh state_before(MeshDocument& doc, const MeshPatch& patch, uint64_t version, uint64_t proven) {
-  HalfedgeMesh before;
-  if (doc.last.before && doc.last.patch && doc.last.version_after == version) {
-    before = std::move(*doc.last.before);
-    doc.last.before.reset();
-    doc.last.patch->apply(before, true);
-  } else {
-    before = doc.mesh;
-    patch.apply(before, false);
-  }
-  MeshStorage::set_versions(before, version, proven);
-  return before;
+// `last` for a whole-mesh change from `before`. A copy of the state before is kept only when the diff is listed: the
+// renderer rewrites such a change in place from it. Beyond the list nothing reads it, and a copy of a mesh of millions
+// of faces costs a second or so in fresh memory. `before` is moved in when given as an rvalue, copied otherwise.
+template <class Before>
+std::string record_whole_change(MeshDocument& doc, std::string label, Before&& before, bool previous = true) {
+  LastChange last = describe_change(doc, std::move(label), before.version(), &before, nullptr, previous);
+  if (last.listed) last.before.emplace(std::forward<Before>(before));
+  return set_last_change(doc, std::move(last));
 }
 
 bool same_position(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(glm::dvec3)) == 0; }
@@ -203,17 +187,16 @@ void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal
       // `last` is described before the snapshot moves to the history (so out of memory there, the history is cleared
       // rather than kept), and copies the snapshot only when it keeps it: a long whole-mesh change copies nothing.
       HalfedgeMesh before = journal.take_snapshot();
-      LastChange last = describe_change(doc, label, before, nullptr, true);
-      if (keeps_before(last)) last.before = before;
+      LastChange last = describe_change(doc, label, before.version(), &before, nullptr, true);
+      if (last.listed) last.before = before;
       doc.history.record(label, std::move(before));
       in_history = true;
       summary = set_last_change(doc, std::move(last));
     } else {
       MeshPatch patch = make_patch(journal, doc.mesh);
-      HalfedgeMesh before = state_before(doc, patch, version_before, journal.proven_version_before());
       doc.history.record(label, patch, version_before);
       in_history = true;
-      summary = record_last_change(doc, label, std::move(before), std::move(patch));
+      summary = record_local_change(doc, label, version_before, std::move(patch));
     }
     set_message(doc, Severity::Info, std::move(summary));
   } catch (const std::bad_alloc&) {
@@ -328,20 +311,18 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
 namespace {
 
 // `last` for the undo (redo) step just taken, whose entry now heads the redo (undo) list, from the state before it
-// (version() and proven version `version`, `proven`); returns the status line. Out of memory, throws std::bad_alloc
-// with `last` possibly short of its `before` (the caller replaces it).
-std::string record_step(MeshDocument& doc, const std::string& label, bool forward, uint64_t version,
-                        uint64_t proven) {
+// (whose version() was `version`); returns the status line. Out of memory, throws std::bad_alloc with `last` as it
+// was.
+std::string record_step(MeshDocument& doc, const std::string& label, bool forward, uint64_t version) {
   const MeshPatch* entry_patch = forward ? doc.history.undo_patch() : doc.history.redo_patch();
   if (!entry_patch) {
     // A snapshot entry: it now holds the whole state the step left, with its version.
     const HalfedgeMesh& left = forward ? *doc.history.undo_snapshot() : *doc.history.redo_snapshot();
-    return record_last_change(doc, label, left, std::nullopt);
+    return record_whole_change(doc, label, left);
   }
   // The step applied the entry's patch forward (redo) or backward (undo).
   MeshPatch step = forward ? *entry_patch : entry_patch->reversed();
-  HalfedgeMesh before = state_before(doc, step, version, proven);
-  return record_last_change(doc, label, std::move(before), std::move(step));
+  return record_local_change(doc, label, version, std::move(step));
 }
 
 // Undo or redo one step; `last` becomes the diff of the step itself ("undo flip e5"). The step is all or nothing;
@@ -359,7 +340,7 @@ bool step_history(MeshDocument& doc, bool forward) {
     set_memory_ran_out_message(doc, Severity::Error);
     return false;
   }
-  const uint64_t version = doc.mesh.version(), proven = MeshStorage::proven_version(doc.mesh);
+  const uint64_t version = doc.mesh.version();
   try {
     forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
   } catch (const std::bad_alloc&) {
@@ -369,7 +350,7 @@ bool step_history(MeshDocument& doc, bool forward) {
     return false;
   }
   try {
-    set_message(doc, Severity::Info, record_step(doc, label, forward, version, proven));
+    set_message(doc, Severity::Info, record_step(doc, label, forward, version));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, version, true);  // the history took the step: it still matches
     set_message_noexcept(doc, Severity::Warning,
@@ -390,7 +371,7 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::op
   doc.mesh = std::move(mesh);
   doc.mesh.bump_version_above(old_version);  // caches keyed by version must not take it for the old state
   try {
-    set_message(doc, Severity::Info, record_last_change(doc, label, std::move(before), std::nullopt, previous));
+    set_message(doc, Severity::Info, record_whole_change(doc, label, std::move(before), previous));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, old_version, true);  // show_state leaves the history alone
     set_message_noexcept(doc, Severity::Warning,

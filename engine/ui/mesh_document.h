@@ -5,12 +5,11 @@
 // - Every change to `mesh` goes through apply_operation(), undo(), redo(), replace_mesh() or show_state(); code that
 //   assigns `mesh` directly must call replace_mesh() instead, or the caches below may describe another mesh.
 // - A local edit costs time proportional to the edit, not the mesh: apply_operation watches the edit with a change
-//   journal (core/change_journal.h) and keeps it as a patch (core/mesh_patch.h) in the history and in `last`;
-//   `last.before` is one trailing copy of the mesh, rolled forward with the previous change's patch. Only
-//   snapshot-sized changes (a whole-mesh pass such as Loop subdivision, an assignment of the whole mesh, a huge
-//   script), undo/redo of their snapshot entries, and the first change after one of them, after opening a mesh or
-//   after show_state (which has no patch to roll last.before forward with) copy the mesh. A snapshot-sized change
-//   keeps no `last.before` when its diff is too long to list (nothing would read it), so L on a big mesh, its undo
+//   journal (core/change_journal.h) and keeps it as a patch (core/mesh_patch.h) in the history and in `last`. No
+//   copy of the mesh is kept for it: whoever needs the state before reads it through the patch (core/state_before.h:
+//   the renderer's in-place update, the validation). Only snapshot-sized changes (a whole-mesh pass such as Loop
+//   subdivision, an assignment of the whole mesh, a huge script) and undo/redo of their snapshot entries copy the
+//   mesh, and `last.before` keeps a copy only when their diff is listed (a small mesh), so L on a big mesh, its undo
 //   and its redo copy nothing beyond the history's own snapshot.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
 //   same version()); only `message` changes. Putting the mesh back allocates nothing (the journal's snapshot is
@@ -40,7 +39,8 @@
 //   guard). A message that cannot be built for lack of memory is kMemoryRanOut, which needs no allocation, as a
 //   Warning or worse.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
-//   from `last.before` to the current mesh, unless the change was not recorded (above; then it only names it).
+//   from the state before (`last.patch`'s, or `last.before`) to the current mesh, unless the change was not recorded
+//   (above; then it only names it).
 //   `last.serial` grows by one each time `last` is replaced, so views that index the diff rebuild their index once
 //   per change, not once per frame.
 // - The validation and stats caches are keyed by (generation, mesh.version()): validate() and compute_stats()
@@ -116,17 +116,17 @@ struct LastChange {
   size_t change_count = 0;                 // fields that changed; when not listed, only "more than the cap"
   bool listed = true;                      // false when the diff was larger than DocumentLimits::max_listed_changes
   ChangeIndex index;                       // built from `changes`
-  // The mesh before the change: absent before the first change, and after a change with no patch whose diff is not
-  // listed (no reader: the renderer rewrites in place only from a listed diff, and only a patch rolls it forward).
-  std::optional<HalfedgeMesh> before;
-  // The change from `before` to the mesh as a patch, when it was local: the next change rolls `before` forward with
-  // it instead of copying the mesh. Absent for snapshot-sized changes.
+  // The change as a patch from the state before to the mesh, when it was local (the state before is read through it:
+  // core/state_before.h). Absent for snapshot-sized changes.
   std::optional<MeshPatch> patch;
+  // A copy of the mesh before a snapshot-sized change whose diff is listed, for the renderer's in-place update;
+  // absent otherwise (before the first change, with a patch, or a diff too long to list: nothing would read it).
+  std::optional<HalfedgeMesh> before;
   uint64_t serial = 0;                     // +1 every time this struct is replaced
   // False when the change happened but could not be recorded (memory ran out saving the state before it, or
   // recording the change): no `before`, `patch` or `changes`, and views say so rather than show an empty diff.
   bool recorded = true;
-  // mesh.version() just before and after the change, when `before` is exactly the state the document showed
+  // mesh.version() just before and after the change, when the state before is exactly the one the document showed
   // until then (not after show_state with a `from`): a renderer that showed that version can apply `changes`
   // in place instead of rebuilding. Absent otherwise.
   std::optional<uint64_t> version_before;
@@ -240,8 +240,7 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
 // Memory ran out recording a success (see the invariants): the edit is kept unrecorded; the Check is `op`'s.
 // A local edit (setters only, fewer writes than the journal's cap) costs time proportional to the edit: no copy of
 // the mesh, the diff made from the patch. A snapshot-sized one (MeshStorage's direct writes, assigning the mesh)
-// costs two copies of the mesh and a pass over every slot. The first edit after opening a mesh, show_state or a
-// snapshot-sized change copies the mesh once more (last.before has no patch to be rolled forward with).
+// costs a copy of the mesh (two when its diff is listed) and a pass over every slot.
 template <class Op>
 auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
   using Result = std::invoke_result_t<Op&, HalfedgeMesh&>;

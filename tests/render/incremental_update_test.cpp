@@ -2,7 +2,8 @@
 // undos, redos, now and then a Loop subdivision, and raw pointer writes (which break the mesh), the patched slot
 // arrays equal build_slot_geometry of the new state byte for byte (a step with no patch rebuilds, as the renderer
 // does). A flip on a big mesh rewrites a few dozen slots. The drawn set of the slot layout equals
-// build_mesh_geometry's.
+// build_mesh_geometry's. Every step an edit's change journal can follow is also planned with the state before read
+// through its patch (StateBefore, as the window does), which must give the same slots and the same state.
 #include <algorithm>
 #include <cstdio>
 #include <cstring>
@@ -10,10 +11,12 @@
 
 #include <gtest/gtest.h>
 
+#include "core/change_journal.h"
 #include "core/history.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
+#include "core/mesh_patch.h"
 #include "core/primitives.h"
 #include "render/incremental_update.h"
 #include "quad_torus.h"
@@ -30,7 +33,7 @@ struct Mirror {
   SlotGeometry g;
   std::vector<EdgeSegment> arrows;
   SlotState state;
-  size_t patches = 0, rebuilds = 0, last_slots = 0;
+  size_t patches = 0, rebuilds = 0, last_slots = 0, through_patches = 0;
 
   explicit Mirror(const HalfedgeMesh& mesh) { rebuild(mesh); }
   void rebuild(const HalfedgeMesh& mesh) {
@@ -39,10 +42,35 @@ struct Mirror {
     state = slot_state(mesh, g);
     ++rebuilds;
   }
-  void update(const HalfedgeMesh& before, const HalfedgeMesh& after) {
+  // With `edit`, the patch of the change, the plan is also made through it, and must agree with the copy's.
+  void update(const HalfedgeMesh& before, const HalfedgeMesh& after, const MeshPatch* edit = nullptr) {
     const std::vector<ElementRef> changed = changed_elements(before, after);
+    std::optional<SlotPatch> through_edit;
+    SlotState state_through_edit = state;
+    if (edit != nullptr) {
+      std::string why;
+      through_edit = plan_update(StateBefore(after, *edit), after, changed, state_through_edit, true, why);
+    }
     std::string why;
     const std::optional<SlotPatch> patch = plan_update(before, after, changed, state, true, why);
+    if (edit != nullptr) {
+      ++through_patches;
+      EXPECT_EQ(through_edit.has_value(), patch.has_value()) << why;
+      if (through_edit && patch) {
+        SlotGeometry g_through = g;
+        std::vector<EdgeSegment> arrows_through = arrows;
+        apply_patch(g_through, &arrows_through, *through_edit);
+        SlotGeometry g_copy = g;
+        std::vector<EdgeSegment> arrows_copy = arrows;
+        apply_patch(g_copy, &arrows_copy, *patch);
+        testing::expect_same_slots(g_through, g_copy);
+        EXPECT_TRUE(same_bytes(arrows_through, arrows_copy));
+        EXPECT_EQ(through_edit->slots(), patch->slots());
+        EXPECT_TRUE(state_through_edit.references == state.references);
+        EXPECT_EQ(state_through_edit.boundary_edges, state.boundary_edges);
+        EXPECT_EQ(state_through_edit.extra_first, state.extra_first);
+      }
+    }
     if (!patch) {
       rebuild(after);
       return;
@@ -69,7 +97,7 @@ void expect_equal(const Mirror& m, const HalfedgeMesh& mesh, const std::string& 
 
 // A random run: mostly core operations and history steps, now and then a raw write that breaks the mesh.
 struct RunCounts {
-  size_t patches = 0, rebuilds = 0;
+  size_t patches = 0, rebuilds = 0, through_patches = 0;
 };
 
 RunCounts random_run(HalfedgeMesh mesh, uint32_t seed, int steps, bool raw_writes) {
@@ -82,6 +110,7 @@ RunCounts random_run(HalfedgeMesh mesh, uint32_t seed, int steps, bool raw_write
     const int what = rng() % 80 == 0 && mesh.num_faces() < 600 ? kLoop : int(rng() % (raw_writes ? 9 : 7));
     std::string label;
     const EdgeId e(uint32_t(rng() % std::max<uint32_t>(mesh.edge_capacity(), 1)));
+    ChangeJournal journal(mesh);  // falls back to a snapshot for Loop and for the history's assignments
     switch (what) {
       case kLoop:
         label = "Loop subdivision";
@@ -131,18 +160,22 @@ RunCounts random_run(HalfedgeMesh mesh, uint32_t seed, int steps, bool raw_write
         break;
       }
     }
+    journal.detach();
     if (mesh.version() == before.version()) continue;
-    mirror.update(before, mesh);
+    std::optional<MeshPatch> edit;
+    if (!journal.has_snapshot() && !journal.state_before_lost()) edit = make_patch(journal, mesh);
+    mirror.update(before, mesh, edit ? &*edit : nullptr);
     expect_equal(mirror, mesh, "step " + std::to_string(step) + ": " + label);
     if (::testing::Test::HasFailure()) break;
   }
-  return {mirror.patches, mirror.rebuilds - 1};
+  return {mirror.patches, mirror.rebuilds - 1, mirror.through_patches};
 }
 
 TEST(IncrementalUpdate, LocalEditsUndoAndRedoGiveTheFullBuild) {
   const RunCounts counts = random_run(build_halfedge_mesh(make_torus(12, 10)), 1, 400, false);
   EXPECT_GT(counts.patches, 250u);  // valid meshes: every step is a patch
   EXPECT_EQ(counts.rebuilds, 0u);
+  EXPECT_GT(counts.through_patches, 150u);  // the operations (undo and redo assign snapshots here)
 }
 
 TEST(IncrementalUpdate, MeshesWithBoundaryGiveTheFullBuild) {
@@ -156,13 +189,16 @@ TEST(IncrementalUpdate, BrokenMeshesGiveTheFullBuild) {
   for (uint32_t seed = 3; seed < 9; ++seed) {
     const RunCounts counts = random_run(build_halfedge_mesh(make_grid(6, 5)), seed, 300, true);
     all.patches += counts.patches;
+    all.through_patches += counts.through_patches;
     all.rebuilds += counts.rebuilds;
   }
   const RunCounts torus = random_run(build_halfedge_mesh(make_torus(8, 6)), 11, 400, true);
   // Both kinds happen: certificates pass where the breakage is far, and fail near it.
   EXPECT_GT(all.patches + torus.patches, 100u);
   EXPECT_GT(all.rebuilds + torus.rebuilds, 10u);
-  std::printf("broken meshes: %zu patches, %zu rebuilds\n", all.patches + torus.patches, all.rebuilds + torus.rebuilds);
+  EXPECT_GT(all.through_patches + torus.through_patches, 600u);
+  std::printf("broken meshes: %zu patches, %zu rebuilds, %zu planned through the edit too\n", all.patches + torus.patches,
+              all.rebuilds + torus.rebuilds, all.through_patches + torus.through_patches);
 }
 
 TEST(IncrementalUpdate, PolygonsArePatchedWhileTheirTriangleCountsStay) {

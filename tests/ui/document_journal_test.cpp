@@ -1,7 +1,8 @@
 // MeshDocument on its journaled path: random edits, undos and redos give the same meshes, version() numbers and
 // `last` diffs as the plain snapshot path (a reference History of whole snapshots run alongside); refused and
 // throwing operations leave mesh, history and `last` untouched; whole-mesh passes and huge scripts fall back to
-// snapshots and still undo and redo exactly; last.before is always the state before the last change.
+// snapshots and still undo and redo exactly; the state before the last change (its patch, or last.before) is always
+// exact.
 #include <random>
 #include <stdexcept>
 #include <string>
@@ -16,17 +17,18 @@
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
 #include "support/diff_expect.h"
+#include "support/state_before_last.h"
 #include "support/random_edits.h"
 #include "ui/mesh_document.h"
 
 namespace meshedit {
 namespace {
 
-// `last` describes the change from `before` to the document's mesh, with last.before that exact state.
+// `last` describes the change from `before` to the document's mesh: its patch (or last.before) gives that exact state.
 void expect_last_change(const MeshDocument& doc, const HalfedgeMesh& before) {
-  ASSERT_TRUE(doc.last.before.has_value());
-  EXPECT_TRUE(doc.last.before->same_as(before));
-  EXPECT_EQ(doc.last.before->version(), before.version());
+  const std::optional<HalfedgeMesh> state = testing::state_before_last(doc);
+  ASSERT_TRUE(state.has_value());
+  EXPECT_TRUE(state->same_as(before));
   ASSERT_TRUE(doc.last.version_before.has_value());
   EXPECT_EQ(*doc.last.version_before, before.version());
   EXPECT_EQ(doc.last.version_after, doc.mesh.version());
@@ -111,7 +113,7 @@ TEST(DocumentJournal, RefusedAndThrowingOperationsLeaveEverythingAsItWas) {
     }
     const HalfedgeMesh mesh = doc.mesh;
     const uint64_t serial = doc.last.serial;
-    const HalfedgeMesh last_before = *doc.last.before;
+    const HalfedgeMesh last_before = testing::state_before_last(doc).value();
     const size_t changes = doc.last.changes.size(), depth = doc.history.undo_depth();
     const Check check = apply_operation(doc, "bad", [&](HalfedgeMesh& m) { return write_then_fail(m, failure); });
     EXPECT_FALSE(check.ok);
@@ -122,8 +124,9 @@ TEST(DocumentJournal, RefusedAndThrowingOperationsLeaveEverythingAsItWas) {
     EXPECT_EQ(doc.history.undo_depth(), depth);
     EXPECT_EQ(doc.last.serial, serial);
     EXPECT_EQ(doc.last.changes.size(), changes);
-    ASSERT_TRUE(doc.last.before.has_value());
-    EXPECT_TRUE(doc.last.before->same_as(last_before));
+    const std::optional<HalfedgeMesh> state = testing::state_before_last(doc);
+    ASSERT_TRUE(state.has_value());
+    EXPECT_TRUE(state->same_as(last_before));
     // The next edit still sees the right state before it.
     ASSERT_TRUE(apply_operation(doc, "edit", [](HalfedgeMesh& m) {
                   m.set_position(VertexId(0), {1, 2, 3});

@@ -12,6 +12,7 @@
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "support/state_before_last.h"
 #include "ui/mesh_document.h"
 #include "ui_test_support.h"
 
@@ -54,8 +55,9 @@ TEST(MeshDocument, FlipRecordsExactDiffAndHistory) {
   EXPECT_EQ(doc.last.change_count, 11u);
   EXPECT_EQ(cells(doc.last.changes), kFlipE2);
   EXPECT_EQ(doc.last.serial, serial + 1);
-  ASSERT_TRUE(doc.last.before.has_value());
-  EXPECT_TRUE(doc.last.before->same_as(original));
+  EXPECT_FALSE(doc.last.before.has_value());  // a local edit keeps its patch, not a copy of the mesh
+  ASSERT_TRUE(doc.last.patch.has_value());
+  EXPECT_TRUE(testing::state_before_last(doc)->same_as(original));
   EXPECT_TRUE(doc.history.can_undo());
   EXPECT_EQ(doc.history.undo_label(), "flip e2");
   EXPECT_EQ(doc.message.severity, Severity::Info);
@@ -153,7 +155,7 @@ TEST(MeshDocument, UndoAndRedoShowTheirOwnDiffs) {
   EXPECT_GT(doc.mesh.version(), flipped.version());
   EXPECT_EQ(doc.last.label, "undo flip e2");
   EXPECT_EQ(cells(doc.last.changes), reversed(kFlipE2));
-  EXPECT_TRUE(doc.last.before->same_as(flipped));
+  EXPECT_TRUE(testing::state_before_last(doc)->same_as(flipped));
   EXPECT_EQ(doc.message.text, "undo flip e2: 11 fields changed");
   EXPECT_TRUE(doc.last.index.contains(H(2), MeshField::Vertex));
   EXPECT_FALSE(doc.history.can_undo());
@@ -230,10 +232,11 @@ TEST(MeshDocument, HugeDiffsAreCountedNotListed) {
   EXPECT_EQ(doc.last.change_count, 12u);
 }
 
-// last.before is kept for its readers only: the renderer (a listed diff) and the next local edit (a patch). A whole-mesh
-// change too long to list, its undo and its redo keep none (on a big mesh, undo of L copied the subdivided mesh for
-// nothing: ~1 s at 4M faces); the first local edit after it then starts from a copy, and its diff is still exact.
-TEST(MeshDocument, AnUnlistedWholeMeshChangeKeepsNoCopyOfTheStateBefore) {
+// The document copies the mesh into last.before only for the renderer's in-place update of a listed whole-mesh change.
+// A whole-mesh change too long to list, its undo and its redo keep no copy (on a big mesh, undo of L copied the
+// subdivided mesh for nothing: ~1 s at 4M faces), and neither does a local edit (its patch is enough: the first edit
+// after opening or after L copied the whole mesh, 44 ms at 1M faces, and kept a second mesh in memory).
+TEST(MeshDocument, OnlyAListedWholeMeshChangeKeepsACopyOfTheStateBefore) {
   DocumentLimits limits;
   limits.max_listed_changes = 50;
   const HalfedgeMesh grid = build_halfedge_mesh(make_grid(4, 4));
@@ -250,10 +253,11 @@ TEST(MeshDocument, AnUnlistedWholeMeshChangeKeepsNoCopyOfTheStateBefore) {
   ASSERT_TRUE(redo(doc));
   EXPECT_TRUE(doc.mesh.same_as(subdivided));
   EXPECT_FALSE(doc.last.before.has_value());
-  // The flip after it: listed, with the exact state before and the same cells a plain diff gives.
+  // The flip after it: listed, its patch gives the exact state before, and the same cells a plain diff gives.
   ASSERT_TRUE(apply_operation(doc, "flip e30", [](HalfedgeMesh& m) { return flip(m, E(30)); }).ok());
-  ASSERT_TRUE(doc.last.before.has_value());
-  EXPECT_TRUE(doc.last.before->same_as(subdivided));
+  EXPECT_FALSE(doc.last.before.has_value());
+  ASSERT_TRUE(doc.last.patch.has_value());
+  EXPECT_TRUE(testing::state_before_last(doc)->same_as(subdivided));
   EXPECT_EQ(cells(doc.last.changes), cells(diff(subdivided, doc.mesh)));
   ASSERT_TRUE(undo(doc));
   EXPECT_TRUE(doc.mesh.same_as(subdivided));
