@@ -19,7 +19,9 @@
 //   functions itself (load + call) opens one with start_budget(), and every call in it shares the budget,
 //   so a grader can give a whole test one budget however many times it calls into the script.
 // - print output is capped per window (set_print_limit): past the cap the callback gets one
-//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++.
+//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++. A print that
+//   fails (the callback throws, or memory runs out building the line) is the Lua error "print failed: <what>", with
+//   "memory ran out" for a std::bad_alloc or a message that cannot be copied: reporting it cannot fail in turn.
 // - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
 //   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
@@ -112,6 +114,9 @@ class LuaRuntime {
   static void* allocate(void* ud, void* ptr, size_t old_size, size_t new_size);
   static void count_hook(lua_State* L, lua_Debug* ar);
   static int print_function(lua_State* L);
+  // print's work: the arguments joined, cut at the cap, given to the callback. Throws what building the line or the
+  // callback throws (print_function turns it into a Lua error).
+  void print_arguments(lua_State* L);
   static int load_function(lua_State* L);
   static int collectgarbage_function(lua_State* L);
   void open_whitelist();
