@@ -95,8 +95,11 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
   }
   void* result = self->pool_.resize(ptr, old, new_size);
   if (result) self->memory_used_ = self->memory_used_ - old + new_size;
+  else self->out_of_memory_ = true;  // below the cap: the system's memory ran out, not the script's budget
   return result;
 }
+
+void LuaRuntime::note_out_of_memory(lua_State* L) noexcept { runtime_of(L)->out_of_memory_ = true; }
 
 void LuaRuntime::note_memory_hit() {
   if (memory_hit_ || !L_) {
@@ -159,7 +162,9 @@ int LuaRuntime::print_function(lua_State* L) {
   try {
     self->print_arguments(L);
   } catch (const std::exception& e) {
-    failure = exception_text(e);  // std::bad_alloc, or a message that cannot be copied: "memory ran out"
+    bool out_of_memory = false;
+    failure = exception_text(e, out_of_memory);  // std::bad_alloc, or a message that cannot be copied: "memory ran out"
+    if (out_of_memory) self->out_of_memory_ = true;
     failed = true;
   }
   if (failed) return luaL_error(L, "print failed: %s", failure.c_str());
@@ -332,6 +337,7 @@ void LuaRuntime::start_budget() {
   kill_limit_ = ScriptError::Limit::None;
   kill_message_.clear();
   memory_hit_ = false;
+  out_of_memory_ = false;
   memory_hit_where_.clear();
   printed_ = 0;
   print_truncated_ = false;
@@ -367,7 +373,7 @@ void LuaRuntime::throw_error(int base, bool end_window) {
   const ScriptError::Limit limit = limit_hit();
   lua_sethook(L_, nullptr, 0, 0);
   if (end_window) window_open_ = false;
-  throw ScriptError(message, limit);
+  throw ScriptError(message, limit, out_of_memory_);
 }
 
 void LuaRuntime::load(std::string_view code, const std::string& chunk_name) {

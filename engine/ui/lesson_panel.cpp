@@ -6,7 +6,6 @@
 
 #include <imgui.h>
 
-#include "script/exception_text.h"
 #include "script/lesson_text.h"
 
 namespace meshedit {
@@ -98,7 +97,7 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
   if (time == state.loaded_time) return false;
   state.loaded_time = time;
   // Memory that ran out is not the file's doing: the next check tries again (a broken file waits for the next save).
-  if (!runner.reload() && ran_out_of_memory(runner.error())) state.loaded_time = {};
+  if (!runner.reload() && runner.out_of_memory()) state.loaded_time = {};
   return true;
 }
 

@@ -6,7 +6,8 @@
 //   button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
 //   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
-//   that runs out of memory is tried again at the next check; one that fails otherwise waits for the next save.
+//   that runs out of memory (LessonRunner::out_of_memory, not an error that merely says so) is tried again at the next
+//   check; one that fails otherwise waits for the next save.
 #pragma once
 
 #include <filesystem>

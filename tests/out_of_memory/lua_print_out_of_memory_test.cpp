@@ -45,6 +45,7 @@ TEST(LuaPrintOutOfMemory, APrintThatRunsOutIsALuaErrorThatSaysSo) {
       }
       if (error) {
         EXPECT_EQ(std::string(error->what()), "p.lua:1: print failed: memory ran out");
+        EXPECT_TRUE(error->out_of_memory());
         EXPECT_TRUE(printed.empty());
       } else if (!failed) {
         EXPECT_EQ(printed, std::vector<std::string>{kLine});
@@ -76,6 +77,7 @@ TEST(LuaPrintOutOfMemory, ACallbacksErrorWhoseMessageCannotBeCopiedSaysMemoryRan
   EXPECT_TRUE(ran_out);
   ASSERT_TRUE(error.has_value());
   EXPECT_EQ(std::string(error->what()), "p.lua:1: print failed: memory ran out");
+  EXPECT_TRUE(error->out_of_memory());
 
   // With memory to spare the callback's own message is the error.
   lua.set_print([](const std::string&) { throw std::runtime_error("the console went away"); });
@@ -84,6 +86,7 @@ TEST(LuaPrintOutOfMemory, ACallbacksErrorWhoseMessageCannotBeCopiedSaysMemoryRan
     ADD_FAILURE() << "print did not fail";
   } catch (const ScriptError& e) {
     EXPECT_EQ(std::string(e.what()), "p.lua:1: print failed: the console went away");
+    EXPECT_FALSE(e.out_of_memory());
   }
 }
 
