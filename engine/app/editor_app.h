@@ -92,7 +92,12 @@ class EditorApp {
   // status line and the panel say why not (file:line, or that memory ran out). Never throws. Returns whether it
   // loaded.
   bool open_lesson(const std::filesystem::path& path);
+  // The lesson panel's "Lessons": leaves the lesson for the list of lessons, with a fresh runner, whole or nothing:
+  // the lesson, its highlights and labels all go, or (memory ran out making the runner) all stay and the exception is
+  // thrown (the frame guard reports it).
+  void show_lesson_list();
   LessonRunner& lesson() { return *lesson_; }
+  const LessonMarks& lesson_marks() const { return lesson_host_->marks(); }  // the lesson's highlights and labels
   // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
   // the window must not sleep.
   bool animating() const;

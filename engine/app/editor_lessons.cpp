@@ -4,6 +4,7 @@
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
 // message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
+// Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -99,12 +100,18 @@ void EditorApp::draw_lesson() {
   const std::filesystem::path requested = *lesson_panel_.requested;
   lesson_panel_.requested.reset();
   if (requested.empty()) {  // "Lessons": back to the list with a fresh runner
-    lesson_host_->clear_annotations();
-    lesson_ = std::make_unique<LessonRunner>(*lesson_host_);
-    lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
+    show_lesson_list();
     return;
   }
   open_lesson(requested);
+}
+
+void EditorApp::show_lesson_list() {
+  auto runner = std::make_unique<LessonRunner>(*lesson_host_);  // the one step that can fail: nothing changed yet
+  runner->set_print([this](const std::string& line) { console_.append_output(line); });
+  // Nothing from here on can fail: the lesson's highlights and labels go with it.
+  lesson_host_->clear_annotations();
+  lesson_ = std::move(runner);
 }
 
 void EditorApp::draw_lesson_marks(int width, int height) {
