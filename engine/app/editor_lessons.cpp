@@ -5,6 +5,8 @@
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
 // message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
 // Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels.
+// A reload (reload_lesson: the panel's Reload, hot reload) is whole or nothing the same way: prepare_reload, the new
+// title (while the window is titled after the lesson), then take and the title's swap.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -33,6 +35,9 @@ std::string key_name(int key, KeyMods mods) {
   return name;
 }
 
+// The window's title while a lesson runs: "MeshEdit - Walking the half-edge mesh".
+std::string lesson_window_title(const std::string& lesson_title) { return "MeshEdit - " + lesson_title; }
+
 }  // namespace
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
@@ -48,7 +53,7 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     return false;
   }
   try {
-    std::string title = "MeshEdit - " + lesson.title();
+    std::string title = lesson_window_title(lesson.title());
     std::string text = "lesson " + path.filename().string();
     // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
     // step's error, in the panel).
@@ -56,11 +61,29 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     watch_lesson(lesson_panel_, lesson_->path());
     lesson_selection_ = selection_.selected;
     title_.swap(title);
+    title_names_lesson_ = true;
     set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
     report_exception(doc_, e);  // nothing was switched: the lesson that ran goes on, under its title
     return false;
+  }
+}
+
+ReloadOutcome EditorApp::reload_lesson() {
+  LessonRunner::Prepared lesson;
+  if (!lesson_->prepare_reload(lesson)) {  // the version that ran goes on; the panel shows why
+    return lesson_->out_of_memory() ? ReloadOutcome::OutOfMemory : ReloadOutcome::Failed;
+  }
+  try {
+    std::string title = title_names_lesson_ ? lesson_window_title(lesson.title()) : std::string();
+    // Nothing from here on can fail: the new version runs, under its title.
+    lesson_->take(std::move(lesson), lesson_->current_step());
+    if (title_names_lesson_) title_.swap(title);
+    return ReloadOutcome::Reloaded;
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);  // nothing was switched: the version that ran goes on, under its title
+    return ReloadOutcome::OutOfMemory;  // std::bad_alloc, the only exception making the title throws
   }
 }
 

@@ -88,6 +88,13 @@ bool LessonRunner::load(const std::filesystem::path& path) {
 }
 
 bool LessonRunner::reload() {
+  Prepared lesson;
+  if (!prepare_reload(lesson)) return false;
+  take(std::move(lesson), index_);
+  return true;
+}
+
+bool LessonRunner::prepare_reload(Prepared& lesson) {
   if (busy_) return false;
   if (path_.empty()) {
     load_out_of_memory_ = false;
@@ -99,10 +106,7 @@ bool LessonRunner::reload() {
     }
     return false;
   }
-  Prepared lesson;
-  if (!prepare(path_, lesson)) return false;
-  take(std::move(lesson), index_);
-  return true;
+  return prepare(path_, lesson);
 }
 
 bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) {

@@ -82,8 +82,12 @@ class LessonRunner {
   // Loads the file and starts its first step: prepare, then take. False when the file cannot be read or run, or
   // defines no step (error() says why).
   bool load(const std::filesystem::path& path);
-  // Loads the same file again and starts the same step index (clamped). False as load().
+  // Loads the same file again and starts the same step index (clamped). False as load(): prepare_reload, then take
+  // with current_step().
   bool reload();
+  // prepare() of the file the runner runs (or last asked for): what a caller that has more to make before the switch
+  // (the window's title) calls first. False as reload(), "no lesson to reload" when there is no file.
+  bool prepare_reload(Prepared& lesson);
   // Reads and runs the file into `lesson`, changing nothing the runner shows: what a caller that has more to make
   // before the switch (the window's title) calls first. False as load(), with error() and path() set as there.
   bool prepare(const std::filesystem::path& path, Prepared& lesson);
