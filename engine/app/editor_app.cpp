@@ -30,6 +30,7 @@ EditorApp::EditorApp()
   lesson_panel_.lessons_dir = lessons_dir();
   refresh_lessons(lesson_panel_);
   lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
+  lesson_panel_.reload = [this](LessonRunner&) { return reload_lesson(); };
 }
 
 EditorApp::~EditorApp() = default;

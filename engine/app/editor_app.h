@@ -92,7 +92,17 @@ class EditorApp {
   // status line and the panel say why not (file:line, or that memory ran out). Never throws. Returns whether it
   // loaded.
   bool open_lesson(const std::filesystem::path& path);
+  // Loads the running lesson's file again at its step (the panel's Reload and hot reload), whole or nothing: the new
+  // version runs and, while the window is titled after the lesson, the title follows its new lesson{title=}; or the
+  // version that ran goes on under its title, and the panel says why (file:line, or that memory ran out; the status
+  // line says so when memory ran out making the title). Never throws.
+  ReloadOutcome reload_lesson();
+  // The lesson panel's "Lessons": leaves the lesson for the list of lessons, with a fresh runner, whole or nothing:
+  // the lesson, its highlights and labels all go, or (memory ran out making the runner) all stay and the exception is
+  // thrown (the frame guard reports it).
+  void show_lesson_list();
   LessonRunner& lesson() { return *lesson_; }
+  const LessonMarks& lesson_marks() const { return lesson_host_->marks(); }  // the lesson's highlights and labels
   // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
   // the window must not sleep.
   bool animating() const;
@@ -200,6 +210,7 @@ class EditorApp {
   std::string save_path_input_;
   std::deque<std::string> recent_;
   std::string title_ = "MeshEdit";
+  bool title_names_lesson_ = false;  // title_ is the running lesson's (open_lesson), not a file's: reloads rename it
 
   int viewport_width_ = 1, viewport_height_ = 1;
   bool dragging_ = false;

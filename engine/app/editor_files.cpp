@@ -97,6 +97,7 @@ void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
   std::string path = name;
   take_mesh(std::move(mesh), std::move(path));
   title_.swap(title);
+  title_names_lesson_ = false;
 }
 
 void EditorApp::show_start_mesh() {
@@ -142,6 +143,7 @@ bool EditorApp::open(const std::filesystem::path& path) {
     if (curve) take_curve(std::move(*curve));
     if (patches) take_patches(std::move(*patches));
     title_.swap(title);
+    title_names_lesson_ = false;
     recent_.swap(recent);
     set_message(doc_, Severity::Info, std::move(text));
     return true;

@@ -4,6 +4,9 @@
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
 // message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
+// Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels.
+// A reload (reload_lesson: the panel's Reload, hot reload) is whole or nothing the same way: prepare_reload, the new
+// title (while the window is titled after the lesson), then take and the title's swap.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -32,6 +35,9 @@ std::string key_name(int key, KeyMods mods) {
   return name;
 }
 
+// The window's title while a lesson runs: "MeshEdit - Walking the half-edge mesh".
+std::string lesson_window_title(const std::string& lesson_title) { return "MeshEdit - " + lesson_title; }
+
 }  // namespace
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
@@ -47,7 +53,7 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     return false;
   }
   try {
-    std::string title = "MeshEdit - " + lesson.title();
+    std::string title = lesson_window_title(lesson.title());
     std::string text = "lesson " + path.filename().string();
     // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
     // step's error, in the panel).
@@ -55,11 +61,29 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     watch_lesson(lesson_panel_, lesson_->path());
     lesson_selection_ = selection_.selected;
     title_.swap(title);
+    title_names_lesson_ = true;
     set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
     report_exception(doc_, e);  // nothing was switched: the lesson that ran goes on, under its title
     return false;
+  }
+}
+
+ReloadOutcome EditorApp::reload_lesson() {
+  LessonRunner::Prepared lesson;
+  if (!lesson_->prepare_reload(lesson)) {  // the version that ran goes on; the panel shows why
+    return lesson_->out_of_memory() ? ReloadOutcome::OutOfMemory : ReloadOutcome::Failed;
+  }
+  try {
+    std::string title = title_names_lesson_ ? lesson_window_title(lesson.title()) : std::string();
+    // Nothing from here on can fail: the new version runs, under its title.
+    lesson_->take(std::move(lesson), lesson_->current_step());
+    if (title_names_lesson_) title_.swap(title);
+    return ReloadOutcome::Reloaded;
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);  // nothing was switched: the version that ran goes on, under its title
+    return ReloadOutcome::OutOfMemory;  // std::bad_alloc, the only exception making the title throws
   }
 }
 
@@ -99,12 +123,18 @@ void EditorApp::draw_lesson() {
   const std::filesystem::path requested = *lesson_panel_.requested;
   lesson_panel_.requested.reset();
   if (requested.empty()) {  // "Lessons": back to the list with a fresh runner
-    lesson_host_->clear_annotations();
-    lesson_ = std::make_unique<LessonRunner>(*lesson_host_);
-    lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
+    show_lesson_list();
     return;
   }
   open_lesson(requested);
+}
+
+void EditorApp::show_lesson_list() {
+  auto runner = std::make_unique<LessonRunner>(*lesson_host_);  // the one step that can fail: nothing changed yet
+  runner->set_print([this](const std::string& line) { console_.append_output(line); });
+  // Nothing from here on can fail: the lesson's highlights and labels go with it.
+  lesson_host_->clear_annotations();
+  lesson_ = std::move(runner);
 }
 
 void EditorApp::draw_lesson_marks(int width, int height) {

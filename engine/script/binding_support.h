@@ -47,14 +47,17 @@ inline constexpr ElementKind kAllKinds[] = {ElementKind::Vertex, ElementKind::Ha
                                             ElementKind::Face, ElementKind::Boundary};
 
 // Runs a binding with C++ exceptions turned into Lua errors. The message is copied out of the handler so the
-// Lua error (itself a C++ throw in this build of Lua, not a std::exception) starts after the C++ one is done.
+// Lua error (itself a C++ throw in this build of Lua, not a std::exception) starts after the C++ one is done. Memory
+// running out is noted in the runtime (LuaRuntime::note_out_of_memory), so its error is known for what it is.
 template <lua_CFunction F>
 int guarded(lua_State* L) {
   std::string message;
   try {
     return F(L);
   } catch (const std::exception& e) {
-    message = exception_text(e);  // std::bad_alloc: "memory ran out"
+    bool out_of_memory = false;
+    message = exception_text(e, out_of_memory);  // std::bad_alloc: "memory ran out"
+    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
   }
   return luaL_error(L, "%s", message.c_str());
 }

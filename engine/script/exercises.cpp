@@ -447,6 +447,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
     run_protected(closure);
   } catch (const ScriptError& e) {
     out.error = e.what();
+    out.out_of_memory = e.out_of_memory();
   }
   output_ = nullptr;
   if (recorder) {

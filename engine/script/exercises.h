@@ -81,6 +81,8 @@ struct ExerciseOutcome {
   bool ran = false;         // the function returned a value of the expected shape
   std::string error;        // why not: the Lua error ("flip.lua:12: attempt to index a nil value (field
                             // 'twin')"), a limit, or "evaluate_step returned nil; ..."
+  bool out_of_memory = false;  // `error` is memory running out under the call (ScriptError::out_of_memory), not the
+                               // student's doing; a student's own error("memory ran out") is not
   std::string returned;     // the first return value, described: "nil", "e5", "a list of 3 points", "(0, 0, 1)"
   std::vector<glm::dvec3> points;  // CurveStep: the step; PatchEvaluate, VertexNormal: the one point
   std::shared_ptr<HalfedgeMesh> mesh;  // the mesh after the call (mesh exercises; the copy it ran on)

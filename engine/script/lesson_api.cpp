@@ -67,6 +67,7 @@ std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
     const std::string where = caller_where(L);
     lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
   } catch (const std::exception&) {  // memory ran out placing the message: say so instead
+    LuaRuntime::note_out_of_memory(L);
     lua_pushstring(L, kScriptMemoryRanOut);
   }
   lua_error(L);
@@ -81,7 +82,9 @@ int lesson_guarded(lua_State* L) {
   try {
     return F(L);
   } catch (const std::exception& e) {
-    message = exception_text(e);
+    bool out_of_memory = false;
+    message = exception_text(e, out_of_memory);
+    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
   }
   raise(L, message);
 }

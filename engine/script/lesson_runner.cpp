@@ -8,7 +8,9 @@
 //
 // Out of memory: a load builds everything into a Prepared (the file's text, the runtime, the script with its steps
 // and title) before take() moves it in; the step functions catch what they cannot prevent (a std::function or a
-// message that could not be made) and turn it into the step's error with exception_text, which cannot fail.
+// message that could not be made) and turn it into the step's error with exception_text, which cannot fail. Whether an
+// error is memory running out travels with it as a flag (exception_text's, the runtime's ran_out_of_memory for a
+// step's own Lua error), never read back from the text.
 #include "script/lesson_runner.h"
 
 #include <algorithm>
@@ -86,36 +88,43 @@ bool LessonRunner::load(const std::filesystem::path& path) {
 }
 
 bool LessonRunner::reload() {
-  if (busy_) return false;
-  if (path_.empty()) {
-    try {
-      load_error_ = "no lesson to reload";
-    } catch (const std::exception&) {
-      load_error_ = kScriptMemoryRanOut;  // fits std::string's inline buffer: allocates nothing
-    }
-    return false;
-  }
   Prepared lesson;
-  if (!prepare(path_, lesson)) return false;
+  if (!prepare_reload(lesson)) return false;
   take(std::move(lesson), index_);
   return true;
 }
 
+bool LessonRunner::prepare_reload(Prepared& lesson) {
+  if (busy_) return false;
+  if (path_.empty()) {
+    load_out_of_memory_ = false;
+    try {
+      load_error_ = "no lesson to reload";
+    } catch (const std::exception&) {
+      load_error_ = kScriptMemoryRanOut;  // fits std::string's inline buffer: allocates nothing
+      load_out_of_memory_ = true;
+    }
+    return false;
+  }
+  return prepare(path_, lesson);
+}
+
 bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) {
   if (busy_) return false;
-  bool named = false;
+  bool named = false, out_of_memory = false;
   std::string failure;
   try {
     lesson.path = path;
     named = true;
     failure = read_and_run(lesson);
-  } catch (const std::exception& e) {  // bad_alloc: what was made so far goes with `lesson`
-    failure = exception_text(e);
+  } catch (const std::exception& e) {  // ScriptError, bad_alloc: what was made so far goes with `lesson`
+    failure = exception_text(e, out_of_memory);
   }
   if (failure.empty()) return true;
   // The lesson that was running goes on; the file asked for is the one hot reload watches.
   if (named) path_.swap(lesson.path);
   load_error_ = std::move(failure);
+  load_out_of_memory_ = out_of_memory;
   return false;
 }
 
@@ -131,8 +140,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
   LessonScript& script = *lesson.script;
   script.host = &host_;
   script.directory = path.parent_path();  // lesson_file() finds assets next to the lesson
-  std::string failure;
-  try {
+  {
     const BusyScope busy(busy_);
     lesson.runtime = std::make_unique<LuaRuntime>(limits_);
     lesson.runtime->set_print([this](const std::string& line) {
@@ -142,10 +150,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
     lesson.runtime->load(text, chunk);
     lesson.runtime->start_budget();
     lesson.runtime->call(0, 0);
-  } catch (const std::exception& e) {  // ScriptError, or bad_alloc while building the state
-    failure = exception_text(e);
   }
-  if (!failure.empty()) return failure;
   if (script.steps.empty()) {
     return chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
   }
@@ -156,6 +161,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
 
 void LessonRunner::take(Prepared&& lesson, size_t index) noexcept {
   load_error_.clear();
+  load_out_of_memory_ = false;
   thread_ref_ = LUA_NOREF;  // it belonged to the old runtime
   runtime_ = std::move(lesson.runtime);
   script_ = std::move(lesson.script);
@@ -183,34 +189,45 @@ void LessonRunner::go_to(size_t index) {
   start_step(std::min(index, script_->steps.size() - 1));
 }
 
-void LessonRunner::fail(const std::string& message) noexcept {
+void LessonRunner::fail(const std::string& message, bool out_of_memory) noexcept {
   state_ = StepState::Failed;
+  step_out_of_memory_ = out_of_memory;
   try {
     step_error_ = message;
   } catch (const std::exception&) {
     step_error_ = kScriptMemoryRanOut;  // fits the inline buffer: allocates nothing
+    step_out_of_memory_ = true;
   }
   if (script_) script_->wait = {};
+}
+
+void LessonRunner::fail_with(const std::exception& error) noexcept {
+  bool out_of_memory = false;
+  std::string message = exception_text(error, out_of_memory);
+  fail(message, out_of_memory);
 }
 
 void LessonRunner::start_step(size_t index) noexcept try {
   index_ = index;
   step_error_.clear();
+  step_out_of_memory_ = false;
   script_->said.clear();
   script_->wait = {};
   script_->step_thread = nullptr;
   state_ = StepState::Waiting;
   std::string failure;
+  bool out_of_memory = false, failed = false;
   try {
     const BusyScope busy(busy_);
     host_.clear_annotations();
   } catch (const std::exception& e) {
-    failure = exception_text(e);
+    failure = exception_text(e, out_of_memory);
+    failed = true;
   }
-  if (!failure.empty()) return fail(failure);
+  if (failed) return fail(failure, out_of_memory);
 
   const int function_ref = script_->steps[index].function_ref;
-  failure = protected_call([&](lua_State* L) {
+  failure = protected_call(out_of_memory, [&](lua_State* L) {
     if (thread_ref_ != LUA_NOREF) luaL_unref(L, LUA_REGISTRYINDEX, thread_ref_);
     thread_ref_ = LUA_NOREF;
     lua_State* co = lua_newthread(L);
@@ -219,17 +236,18 @@ void LessonRunner::start_step(size_t index) noexcept try {
     lua_xmove(L, co, 1);
     script_->step_thread = co;
   });
-  if (!failure.empty()) return fail(failure);
+  if (!failure.empty()) return fail(failure, out_of_memory);
   resume(nullptr);
 } catch (const std::exception& e) {  // memory ran out making a std::function or a message
-  fail(exception_text(e));
+  fail_with(e);
 }
 
 void LessonRunner::resume(const std::function<int(lua_State*)>& push) noexcept try {
   enum class Outcome { None, Yielded, Finished, Failed };
   Outcome outcome = Outcome::None;
   std::string message;
-  const std::string failure = protected_call([&](lua_State* L) {
+  bool out_of_memory = false;
+  const std::string failure = protected_call(out_of_memory, [&](lua_State* L) {
     lua_rawgeti(L, LUA_REGISTRYINDEX, thread_ref_);
     lua_State* co = lua_tothread(L, -1);
     lua_pop(L, 1);  // the registry keeps it
@@ -262,8 +280,8 @@ void LessonRunner::resume(const std::function<int(lua_State*)>& push) noexcept t
   });
   script_->phase = LessonScript::Phase::Idle;
   switch (outcome) {
-    case Outcome::None: return fail(failure);  // the step never ran: pushing its arguments failed
-    case Outcome::Failed: return fail(message);
+    case Outcome::None: return fail(failure, out_of_memory);  // the step never ran: pushing its arguments failed
+    case Outcome::Failed: return fail(message, runtime_->ran_out_of_memory());  // the step's window
     case Outcome::Finished:
       state_ = StepState::Finished;
       script_->wait = {};
@@ -272,7 +290,7 @@ void LessonRunner::resume(const std::function<int(lua_State*)>& push) noexcept t
   }
 } catch (const std::exception& e) {  // memory ran out making the call's std::function
   script_->phase = LessonScript::Phase::Idle;
-  fail(exception_text(e));
+  fail_with(e);
 }
 
 int LessonRunner::trampoline(lua_State* L) {
@@ -283,15 +301,18 @@ int LessonRunner::trampoline(lua_State* L) {
     (*self->body_)(L);
     return 0;
   } catch (const std::exception& e) {  // from the host (current_mesh...): must not cross the Lua frames
-    message = exception_text(e);
+    bool out_of_memory = false;
+    message = exception_text(e, out_of_memory);
+    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
   }
   return luaL_error(L, "%s", message.c_str());
 }
 
-std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& body) {
+std::string LessonRunner::protected_call(bool& out_of_memory, const std::function<void(lua_State*)>& body) {
   lua_State* L = runtime_->state();
   body_ = &body;
   std::string failure;
+  out_of_memory = false;
   try {
     const BusyScope busy(busy_);
     lua_pushcfunction(L, &LessonRunner::trampoline);  // a light C function and a light userdata: no allocation
@@ -299,7 +320,7 @@ std::string LessonRunner::protected_call(const std::function<void(lua_State*)>& 
     runtime_->start_budget();
     runtime_->call(1, 0);
   } catch (const std::exception& e) {
-    failure = exception_text(e);
+    failure = exception_text(e, out_of_memory);
   }
   body_ = nullptr;
   return failure;
@@ -320,13 +341,15 @@ void LessonRunner::update(double dt) noexcept try {
     case LessonWait::Kind::Selection: {
       ElementRef selected;
       std::string failure;
+      bool out_of_memory = false, failed = false;
       try {
         const BusyScope busy(busy_);
         selected = host_.current_selection();
       } catch (const std::exception& e) {
-        failure = exception_text(e);
+        failure = exception_text(e, out_of_memory);
+        failed = true;
       }
-      if (!failure.empty()) return fail(failure);
+      if (failed) return fail(failure, out_of_memory);
       if (!wait.selection_matches(selected)) return;
       return resume([this, selected](lua_State* L) {
         push_element_value(L, host_, selected);
@@ -336,7 +359,7 @@ void LessonRunner::update(double dt) noexcept try {
     default: return;
   }
 } catch (const std::exception& e) {  // memory ran out making what resumes the step
-  fail(exception_text(e));
+  fail_with(e);
 }
 
 bool LessonRunner::deliver(const LessonEvent& event) {
@@ -351,7 +374,7 @@ bool LessonRunner::deliver(const LessonEvent& event) {
       return 1;
     });
   } catch (const std::exception& e) {  // memory ran out making what resumes the step
-    fail(exception_text(e));
+    fail_with(e);
   }
   return true;
 }

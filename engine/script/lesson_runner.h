@@ -13,6 +13,8 @@
 //   in error() until a load succeeds, and path() names the file asked for (unless memory ran out copying its name),
 //   so hot reload loads it once it is fixed.
 //   A step that cannot start or run for lack of memory is a failed step whose error says memory ran out.
+//   out_of_memory() says whether error() is memory running out, from where it was caught (the exception's type, the
+//   runtime's flag), never from the text.
 // - Entering a step (next, back, go_to, restart_step, a reload) clears the host's highlights and labels,
 //   forgets what the step said and runs its body from the start: a step rebuilds its own scene. Back is
 //   "run the previous step again from its start".
@@ -26,6 +28,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <exception>
 #include <filesystem>
 #include <functional>
 #include <memory>
@@ -79,8 +82,12 @@ class LessonRunner {
   // Loads the file and starts its first step: prepare, then take. False when the file cannot be read or run, or
   // defines no step (error() says why).
   bool load(const std::filesystem::path& path);
-  // Loads the same file again and starts the same step index (clamped). False as load().
+  // Loads the same file again and starts the same step index (clamped). False as load(): prepare_reload, then take
+  // with current_step().
   bool reload();
+  // prepare() of the file the runner runs (or last asked for): what a caller that has more to make before the switch
+  // (the window's title) calls first. False as reload(), "no lesson to reload" when there is no file.
+  bool prepare_reload(Prepared& lesson);
   // Reads and runs the file into `lesson`, changing nothing the runner shows: what a caller that has more to make
   // before the switch (the window's title) calls first. False as load(), with error() and path() set as there.
   bool prepare(const std::filesystem::path& path, Prepared& lesson);
@@ -115,17 +122,24 @@ class LessonRunner {
   const LessonWait& waiting_for() const;
   // "" when all is well; else "file:line: message" of the failed load or the failed step.
   const std::string& error() const { return load_error_.empty() ? step_error_ : load_error_; }
+  // Whether error() is memory running out (a std::bad_alloc, or a Lua error raised for one: ScriptError::
+  // out_of_memory), which a retry can make go away; never guessed from the text, so a lesson's own
+  // error("memory ran out") is the lesson's error.
+  bool out_of_memory() const { return load_error_.empty() ? step_out_of_memory_ : load_out_of_memory_; }
 
  private:
-  // Reads `lesson.path` and runs it into `lesson`; "" or why it did not load. Throws std::bad_alloc.
+  // Reads `lesson.path` and runs it into `lesson`; "" or why it did not load (the file cannot be opened, or defines no
+  // step). Throws ScriptError (the file's error) and std::bad_alloc.
   std::string read_and_run(Prepared& lesson);
   void start_step(size_t index) noexcept;
   // Resumes the step's coroutine with what `push` leaves on the stack (nullptr: nothing).
   void resume(const std::function<int(lua_State*)>& push) noexcept;
-  // Runs `body` on the main thread inside a fresh budget window; returns "" or the error message.
-  std::string protected_call(const std::function<void(lua_State*)>& body);
+  // Runs `body` on the main thread inside a fresh budget window; returns "" or the error message, with
+  // `out_of_memory` telling whether that error is memory running out.
+  std::string protected_call(bool& out_of_memory, const std::function<void(lua_State*)>& body);
   static int trampoline(lua_State* L);
-  void fail(const std::string& message) noexcept;
+  void fail(const std::string& message, bool out_of_memory) noexcept;
+  void fail_with(const std::exception& error) noexcept;  // fail with exception_text's message and flag
 
   LessonHost& host_;
   LuaLimits limits_;
@@ -139,6 +153,7 @@ class LessonRunner {
   size_t index_ = 0;
   StepState state_ = StepState::Empty;
   std::string load_error_, step_error_;
+  bool load_out_of_memory_ = false, step_out_of_memory_ = false;  // out_of_memory() of each
   bool busy_ = false;
 };
 

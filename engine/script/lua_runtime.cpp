@@ -9,6 +9,7 @@
 
 #include <lua.hpp>
 
+#include "script/exception_text.h"
 #include "script/mesh_bindings.h"
 
 namespace meshedit {
@@ -94,8 +95,11 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
   }
   void* result = self->pool_.resize(ptr, old, new_size);
   if (result) self->memory_used_ = self->memory_used_ - old + new_size;
+  else self->out_of_memory_ = true;  // below the cap: the system's memory ran out, not the script's budget
   return result;
 }
+
+void LuaRuntime::note_out_of_memory(lua_State* L) noexcept { runtime_of(L)->out_of_memory_ = true; }
 
 void LuaRuntime::note_memory_hit() {
   if (memory_hit_ || !L_) {
@@ -149,11 +153,29 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
 
 int LuaRuntime::print_function(lua_State* L) {
   LuaRuntime* self = runtime_of(L);
+  if (self->print_limit_ > 0 && self->print_truncated_) return 0;
+  // Everything that allocates on the C++ side (the line, the note, the host's callback) runs inside the try; the
+  // message is copied out with exception_text, which cannot fail, and the Lua error is raised after the catch, so no
+  // C++ exception crosses the Lua frames (a __tostring's Lua error is no std::exception: it passes through).
+  std::string failure;
+  bool failed = false;
+  try {
+    self->print_arguments(L);
+  } catch (const std::exception& e) {
+    bool out_of_memory = false;
+    failure = exception_text(e, out_of_memory);  // std::bad_alloc, or a message that cannot be copied: "memory ran out"
+    if (out_of_memory) self->out_of_memory_ = true;
+    failed = true;
+  }
+  if (failed) return luaL_error(L, "print failed: %s", failure.c_str());
+  return 0;
+}
+
+void LuaRuntime::print_arguments(lua_State* L) {
   const int n = lua_gettop(L);
   // The room left under the cap, counting the newline the host adds; text past it is never built.
-  const bool capped = self->print_limit_ > 0;
-  size_t room = capped ? (self->printed_ < self->print_limit_ ? self->print_limit_ - self->printed_ : 0) : SIZE_MAX;
-  if (capped && self->print_truncated_) return 0;
+  const bool capped = print_limit_ > 0;
+  const size_t room = capped ? (printed_ < print_limit_ ? print_limit_ - printed_ : 0) : SIZE_MAX;
   std::string line;
   bool cut = false;
   for (int i = 1; i <= n && !cut; ++i) {
@@ -170,20 +192,12 @@ int LuaRuntime::print_function(lua_State* L) {
   }
   if (capped && !cut && line.size() + 1 > room) cut = true;
   std::string note;
-  if (cut) {
-    self->print_truncated_ = true;
-    note = "[output truncated: more than " + std::to_string(self->print_limit_) + " bytes printed]";
-  }
-  self->printed_ += line.size() + 1;
-  std::string failure;
-  try {
-    if (self->print_ && (!cut || !line.empty())) self->print_(line);
-    if (self->print_ && cut) self->print_(note);
-  } catch (const std::exception& e) {  // a host callback's exception must not cross Lua frames
-    failure = e.what();
-  }
-  if (!failure.empty()) return luaL_error(L, "print failed: %s", failure.c_str());
-  return 0;
+  if (cut) note = "[output truncated: more than " + std::to_string(print_limit_) + " bytes printed]";
+  // Counted once the texts are made: a print that ran out of memory making them printed nothing.
+  print_truncated_ = print_truncated_ || cut;
+  printed_ += line.size() + 1;
+  if (print_ && (!cut || !line.empty())) print_(line);
+  if (print_ && cut) print_(note);
 }
 
 // load(chunk [, chunkname [, mode [, env]]]) with mode forced to text: bytecode is never loaded.
@@ -323,6 +337,7 @@ void LuaRuntime::start_budget() {
   kill_limit_ = ScriptError::Limit::None;
   kill_message_.clear();
   memory_hit_ = false;
+  out_of_memory_ = false;
   memory_hit_where_.clear();
   printed_ = 0;
   print_truncated_ = false;
@@ -358,7 +373,7 @@ void LuaRuntime::throw_error(int base, bool end_window) {
   const ScriptError::Limit limit = limit_hit();
   lua_sethook(L_, nullptr, 0, 0);
   if (end_window) window_open_ = false;
-  throw ScriptError(message, limit);
+  throw ScriptError(message, limit, out_of_memory_);
 }
 
 void LuaRuntime::load(std::string_view code, const std::string& chunk_name) {

@@ -19,9 +19,13 @@
 //   functions itself (load + call) opens one with start_budget(), and every call in it shares the budget,
 //   so a grader can give a whole test one budget however many times it calls into the script.
 // - print output is capped per window (set_print_limit): past the cap the callback gets one
-//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++.
+//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++. A print that
+//   fails (the callback throws, or memory runs out building the line) is the Lua error "print failed: <what>", with
+//   "memory ran out" for a std::bad_alloc or a message that cannot be copied: reporting it cannot fail in turn.
 // - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
 //   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
+// - Memory running out (a binding's or the host's std::bad_alloc, Lua's allocator finding none) is flagged where it
+//   is caught (ran_out_of_memory, ScriptError::out_of_memory); callers never guess it from an error's text.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
 //   of a run nor closing the state can run script code outside the hook.
 #pragma once
@@ -49,11 +53,16 @@ class ScriptError : public std::runtime_error {
   // Which limit stopped the script, if one did (a grader reports a timeout differently from an error).
   enum class Limit { None, Instructions, Memory, Time };
   using std::runtime_error::runtime_error;
-  ScriptError(const std::string& message, Limit limit) : std::runtime_error(message), limit_(limit) {}
+  ScriptError(const std::string& message, Limit limit, bool out_of_memory = false)
+      : std::runtime_error(message), limit_(limit), out_of_memory_(out_of_memory) {}
   Limit limit() const { return limit_; }
+  // Whether memory ran out under the script (LuaRuntime::ran_out_of_memory): not the script's doing, and gone with
+  // memory to spare; told apart from a script's own error("memory ran out") by this flag, never by the text.
+  bool out_of_memory() const { return out_of_memory_; }
 
  private:
   Limit limit_ = Limit::None;
+  bool out_of_memory_ = false;
 };
 
 struct LuaLimits {
@@ -95,7 +104,7 @@ class LuaRuntime {
   // Compiles source text (never bytecode) and pushes the chunk as a function. Throws ScriptError with the
   // syntax error; the stack is then as before.
   void load(std::string_view code, const std::string& chunk_name);
-  // Opens a new budget window: the instruction count, the memory flag, the kill and the print count restart,
+  // Opens a new budget window: the instruction count, the memory flags, the kill and the print count restart,
   // and the wall-clock deadline is limits().wall_seconds from now.
   void start_budget();
   // Calls the function below the top `nargs` values within the current window (one is opened if none is),
@@ -108,10 +117,22 @@ class LuaRuntime {
   // Bytes Lua holds now.
   size_t memory_used() const { return memory_used_; }
 
+  // Whether memory ran out in the current (or last) budget window: a C function turned a std::bad_alloc into a Lua
+  // error (note_out_of_memory), or Lua's allocator found no memory below the cap. Not the memory cap (Limit::Memory,
+  // the script's own doing), nor a script raising the words "memory ran out". The errors of such a window are
+  // ScriptError::out_of_memory, even one the script raised after catching the first with pcall.
+  bool ran_out_of_memory() const { return out_of_memory_; }
+  // What a C function calls when it turns a std::bad_alloc (or a message that could not be copied for lack of memory)
+  // into a Lua error: marks the window of the runtime that owns `L` (any of its threads). Never throws.
+  static void note_out_of_memory(lua_State* L) noexcept;
+
  private:
   static void* allocate(void* ud, void* ptr, size_t old_size, size_t new_size);
   static void count_hook(lua_State* L, lua_Debug* ar);
   static int print_function(lua_State* L);
+  // print's work: the arguments joined, cut at the cap, given to the callback. Throws what building the line or the
+  // callback throws (print_function turns it into a Lua error).
+  void print_arguments(lua_State* L);
   static int load_function(lua_State* L);
   static int collectgarbage_function(lua_State* L);
   void open_whitelist();
@@ -134,6 +155,7 @@ class LuaRuntime {
   bool window_open_ = false;
   size_t memory_used_ = 0;
   bool memory_hit_ = false;
+  bool out_of_memory_ = false;  // ran_out_of_memory()
   std::string memory_hit_where_;  // "file:line: " of the allocation that hit the cap
   uint64_t instructions_ = 0;
   bool killed_ = false;

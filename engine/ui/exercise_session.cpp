@@ -153,9 +153,10 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
   }
 
   const ExerciseOutcome& outcome = mine ? result.report.mine : result.report.reference;
-  // Memory that ran out under the student's code (a binding's std::bad_alloc, turned into a Lua error that says so) is
-  // not the student's error: nothing is done, as for the reference's std::bad_alloc.
-  if (outcome.error.find(kMemoryRanOut) != std::string::npos) throw std::bad_alloc();
+  // Memory that ran out under the student's code (a binding's std::bad_alloc, turned into a Lua error flagged
+  // out_of_memory) is not the student's error: nothing is done, as for the reference's std::bad_alloc. The flag, not
+  // the text: a student's own error("memory ran out") is the student's error.
+  if (outcome.out_of_memory) throw std::bad_alloc();
   const bool failed = !outcome.error.empty();
   if (failed && mine) result.label = "mine (error): " + std::string(operation_word(exercise_)) + target;
   // The status line says what happened beyond "N fields changed": made now, before the document changes.

@@ -12,8 +12,9 @@
 //   unchanged mesh (a refusal, the templates) records nothing.
 // - They keep document_actions.h's out-of-memory contract: everything that can fail (the input's copy of the mesh,
 //   the run, the label, the status line's text) is made before the document changes, and the run goes in through
-//   apply_operation. When memory runs out before that, or under the student's code (a Lua error that says memory ran
-//   out, not the student's doing), nothing is done: an Error that says memory ran out (kMemoryRanOut), the document
+//   apply_operation. When memory runs out before that, or under the student's code (a Lua error flagged
+//   ExerciseOutcome::out_of_memory, not the student's doing; a student's own error("memory ran out") is an error of
+//   the run like any other), nothing is done: an Error that says memory ran out (kMemoryRanOut), the document
 //   as it was (a replay in progress finished first, whole). Once the run went in, it is the session's last run, and
 //   a message that cannot be made for lack of memory is kMemoryRanOut as a Warning or worse.
 // - A replay shows states with show_state(), never history: while it runs, the document shows

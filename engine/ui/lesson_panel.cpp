@@ -6,7 +6,6 @@
 
 #include <imgui.h>
 
-#include "script/exception_text.h"
 #include "script/lesson_text.h"
 
 namespace meshedit {
@@ -46,6 +45,10 @@ std::string reflow(const std::string& text) {
   return out;
 }
 
+ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
+  return state.reload ? state.reload(runner) : reload_runner(runner);
+}
+
 void draw_step_body(LessonRunner& runner) {
   for (const std::string& block : runner.said()) {
     ImGui::TextWrapped("%s", reflow(markdown_to_plain(block)).c_str());
@@ -65,6 +68,11 @@ void draw_step_body(LessonRunner& runner) {
 }
 
 }  // namespace
+
+ReloadOutcome reload_runner(LessonRunner& runner) {
+  if (runner.reload()) return ReloadOutcome::Reloaded;
+  return runner.out_of_memory() ? ReloadOutcome::OutOfMemory : ReloadOutcome::Failed;
+}
 
 void refresh_lessons(LessonPanelState& state) {
   state.lesson_files.clear();
@@ -98,7 +106,7 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
   if (time == state.loaded_time) return false;
   state.loaded_time = time;
   // Memory that ran out is not the file's doing: the next check tries again (a broken file waits for the next save).
-  if (!runner.reload() && ran_out_of_memory(runner.error())) state.loaded_time = {};
+  if (run_reload(runner, state) == ReloadOutcome::OutOfMemory) state.loaded_time = {};
   return true;
 }
 
@@ -143,7 +151,7 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
   if (ImGui::Button("Next >")) runner.next();
   ImGui::EndDisabled();
   ImGui::SameLine();
-  if (ImGui::Button("Reload")) runner.reload();
+  if (ImGui::Button("Reload")) run_reload(runner, state);
   ImGui::SameLine();
   if (ImGui::Button("Lessons")) {
     refresh_lessons(state);

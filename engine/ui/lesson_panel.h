@@ -2,14 +2,18 @@
 // with file:line, and Back / Next / Reload; with no lesson loaded, the list of lessons to start.
 //
 // Invariants:
-// - The panel only reads the runner and calls its public actions (next, back, go_to, reload, deliver of a
-//   button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
+// - The panel only reads the runner and calls its public actions (next, back, go_to, reload or state.reload, deliver
+//   of a button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
 //   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
-//   that runs out of memory is tried again at the next check; one that fails otherwise waits for the next save.
+//   that runs out of memory (LessonRunner::out_of_memory, not an error that merely says so) is tried again at the next
+//   check; one that fails otherwise waits for the next save.
+// - Reload and hot reload reload through state.reload when it is set (the app's, which renames the window after the
+//   lesson, whole or nothing), else with the runner's own reload().
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,6 +21,10 @@
 #include "script/lesson_runner.h"
 
 namespace meshedit {
+
+// What a reload did: the lesson switched, or the file's own error (wait for the next save), or memory ran out (try
+// again at the next check).
+enum class ReloadOutcome { Reloaded, Failed, OutOfMemory };
 
 struct LessonPanelState {
   static constexpr double kReloadCheckSeconds = 0.5;
@@ -27,7 +35,12 @@ struct LessonPanelState {
   std::optional<std::filesystem::path> requested;    // a lesson the user picked from the list this frame
   std::filesystem::file_time_type loaded_time{};
   double since_check = 0.0;
+  // How Reload and hot reload reload the lesson; empty: reload_runner.
+  std::function<ReloadOutcome(LessonRunner&)> reload;
 };
+
+// The runner's own reload(), told as a ReloadOutcome (LessonRunner::out_of_memory for OutOfMemory).
+ReloadOutcome reload_runner(LessonRunner& runner);
 
 // Lists lessons_dir's *.lua files (welcome.lua first, then by name). A missing folder gives an empty list.
 void refresh_lessons(LessonPanelState& state);
@@ -38,8 +51,8 @@ bool load_lesson(LessonRunner& runner, LessonPanelState& state, const std::files
 // for a caller that loads in two steps (LessonRunner::prepare and take). Never throws.
 void watch_lesson(LessonPanelState& state, const std::filesystem::path& path) noexcept;
 
-// Reloads the lesson when its file changed on disk (checked at most every kReloadCheckSeconds of `dt`).
-// Returns whether it reloaded.
+// Reloads the lesson (state.reload or reload_runner) when its file changed on disk (checked at most every
+// kReloadCheckSeconds of `dt`). Returns whether it reloaded or tried to.
 bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt);
 
 // Draws the panel. A lesson picked from the list is left in state.requested for the caller to load (the app

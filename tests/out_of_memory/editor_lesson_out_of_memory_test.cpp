@@ -7,7 +7,9 @@
 // ran (the document is the tetrahedron, whole) or stopped on an error that says memory
 // ran out, with the document the torus as it was or the tetrahedron whole. Then, with memory to spare, the lesson
 // opens and its first step runs. The window's part of a lesson's show(mesh) alone is whole or nothing too: the mesh is
-// shown, or what stopped it is thrown (for the step's error) with the document as it was.
+// shown, or what stopped it is thrown (for the step's error) with the document as it was. So are a reload of a lesson
+// saved with a new title (reload_lesson: the new version under its title, or the old one under its own), and going
+// back to the list of lessons (show_lesson_list: a fresh runner and no highlights, or the lesson with its highlights).
 // EditorApp needs an OpenGL context: a surfaceless EGL one, as the render tests use; skipped where none can be made.
 #include <unistd.h>
 
@@ -26,6 +28,7 @@
 #include "core/validate.h"
 #include "render/gl_test_support.h"
 #include "support/failing_allocations.h"
+#include "support/test_support.h"
 
 namespace meshedit {
 namespace {
@@ -159,6 +162,93 @@ TEST_F(EditorLessonOutOfMemory, ALessonsMeshIsShownWholeOrNotAtAll) {
         EXPECT_TRUE(doc.mesh.same_as(tetrahedron));
         EXPECT_EQ(doc.generation, generation + 1);
         EXPECT_TRUE(validate(doc.mesh).ok());
+      }
+      if (!failed || HasFailure()) break;
+    }
+  }
+}
+
+// The panel's Reload and hot reload (reload_lesson) of a lesson saved with a new title: the new version runs under its
+// title, or the version that ran goes on under its own and the outcome says memory ran out (hot reload tries again).
+TEST_F(EditorLessonOutOfMemory, AReloadIsWholeOrNotAtAll) {
+  const std::string saved = "lesson { title = \"A renamed lesson\" }\n"
+                            "step(\"Only\", function() say(\"the renamed lesson's only step\") end)\n";
+  const std::string earlier = testing::read_text(earlier_);
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      std::ofstream(earlier_, std::ios::binary) << earlier;
+      fresh_window();
+      std::ofstream(earlier_, std::ios::binary) << saved;
+      ReloadOutcome outcome = ReloadOutcome::Failed;
+      bool escaped = false, failed = false;
+      {
+        const FailingAllocations failing(n, later);
+        try {
+          outcome = app_->reload_lesson();
+        } catch (...) {
+          escaped = true;
+        }
+        failed = failing.failed();
+      }
+      EXPECT_FALSE(escaped);
+      if (outcome == ReloadOutcome::Reloaded) {
+        EXPECT_EQ(app_->lesson().title(), "A renamed lesson");
+        EXPECT_EQ(app_->title(), "MeshEdit - A renamed lesson");
+      } else {
+        EXPECT_EQ(outcome, ReloadOutcome::OutOfMemory);
+        EXPECT_EQ(app_->lesson().title(), "An earlier lesson");
+        EXPECT_EQ(app_->title(), "MeshEdit - An earlier lesson");
+        EXPECT_EQ(app_->reload_lesson(), ReloadOutcome::Reloaded) << app_->lesson().error();  // memory to spare
+        EXPECT_EQ(app_->title(), "MeshEdit - A renamed lesson");
+      }
+      if (!failed || HasFailure()) break;
+    }
+  }
+  std::ofstream(earlier_, std::ios::binary) << earlier;
+}
+
+// The lesson panel's "Lessons" (show_lesson_list): a fresh runner and no marks, or (memory ran out making the runner)
+// the lesson that ran, with its highlight and label, and the exception for the frame guard.
+TEST_F(EditorLessonOutOfMemory, GoingBackToTheListIsWholeOrNothing) {
+  const fs::path marked = dir_ / "marked.lua";
+  std::ofstream(marked) << "lesson { title = \"Marked\" }\n"
+                           "step(\"Marks\", function()\n"
+                           "  local cube = meshedit.cube()\n"
+                           "  show(cube)\n"
+                           "  highlight(cube:vertex(3), \"red\")\n"
+                           "  label(cube:vertex(3), \"a vertex worth a label\")\n"
+                           "end)\n";
+  for (const Later later : {Later::Succeed, Later::Fail}) {
+    for (size_t n = 1;; ++n) {
+      SCOPED_TRACE(n);
+      fresh_window();
+      ASSERT_TRUE(app_->open_lesson(marked)) << app_->lesson().error();
+      ASSERT_EQ(app_->lesson_marks().highlights.size(), 1u) << app_->lesson().error();
+      ASSERT_EQ(app_->lesson_marks().labels.size(), 1u);
+      const LessonRunner* before = &app_->lesson();
+      bool escaped = false, failed = false;
+      {
+        const FailingAllocations failing(n, later);
+        try {
+          app_->show_lesson_list();
+        } catch (const std::bad_alloc&) {
+          escaped = true;
+        }
+        failed = failing.failed();
+      }
+      const LessonMarks& marks = app_->lesson_marks();
+      if (escaped) {
+        EXPECT_EQ(&app_->lesson(), before);
+        EXPECT_EQ(app_->lesson().title(), "Marked");
+        ASSERT_EQ(marks.highlights.size(), 1u);
+        EXPECT_EQ(marks.highlights[0].first, ElementRef(VertexId(3)));
+        ASSERT_EQ(marks.labels.size(), 1u);
+        EXPECT_EQ(marks.labels[0].second, "a vertex worth a label");
+      } else {
+        EXPECT_FALSE(app_->lesson().loaded());
+        EXPECT_TRUE(marks.highlights.empty());
+        EXPECT_TRUE(marks.labels.empty());
       }
       if (!failed || HasFailure()) break;
     }

@@ -610,6 +610,24 @@ step("After", function() say("recovered") end)
   EXPECT_EQ(runner.said(), (Strings{"recovered"}));
 }
 
+// A lesson may say the words "memory ran out" itself: that is the lesson's error, not memory running out (the runner
+// tells them apart by where the error was caught, never by its text).
+TEST(LessonRunner, ALessonsOwnMemoryRanOutErrorIsNotOutOfMemory) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  const auto dir = testing::scratch_dir();
+  ASSERT_TRUE(runner.load(write_lesson(dir, R"lua(lesson { title = "Says it" }
+step("Says", function() error("memory ran out") end)
+)lua")));
+  EXPECT_EQ(runner.step_state(), State::Failed);
+  EXPECT_EQ(runner.error(), "lesson.lua:2: memory ran out");
+  EXPECT_FALSE(runner.out_of_memory());
+  EXPECT_FALSE(runner.load(write_lesson(dir, "error('memory ran out')\n", "loading.lua")));
+  EXPECT_EQ(runner.error(), "loading.lua:1: memory ran out");
+  EXPECT_FALSE(runner.out_of_memory());
+  EXPECT_EQ(runner.title(), "Says it");  // the lesson that ran goes on
+}
+
 TEST(LessonRunner, EachResumeHasItsOwnBudget) {
   HeadlessHost host;
   LessonRunner runner(host, small_budget(1'000'000));

@@ -120,6 +120,29 @@ TEST(LuaRuntime, PcallCannotSwallowTheMemoryCap) {
   EXPECT_EQ(message.rfind("grow.lua:", 0), 0u) << message;
 }
 
+// Memory running out is a flag set where a std::bad_alloc is caught (tests/out_of_memory), never read from the text: a
+// script that says the words itself, or one that hits the memory cap (its own doing), did not run out of memory.
+TEST(LuaRuntime, AScriptsOwnMemoryRanOutErrorIsNotOutOfMemory) {
+  LuaRuntime lua(LuaLimits{1'000'000'000, size_t(32) << 20, 60.0});
+  try {
+    lua.run_string("error('memory ran out')", "own.lua");
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(std::string(e.what()), "own.lua:1: memory ran out");
+    EXPECT_FALSE(e.out_of_memory());
+    EXPECT_EQ(e.limit(), ScriptError::Limit::None);
+  }
+  EXPECT_FALSE(lua.ran_out_of_memory());
+  try {
+    lua.run_string("local s = 'x'\nlocal t = s:rep(1 << 30)", "bomb.lua");
+    ADD_FAILURE() << "no error";
+  } catch (const ScriptError& e) {
+    EXPECT_EQ(e.limit(), ScriptError::Limit::Memory);
+    EXPECT_FALSE(e.out_of_memory());
+  }
+  EXPECT_FALSE(lua.ran_out_of_memory());
+}
+
 TEST(LuaRuntime, WallClockStopsALoopTheBudgetAllows) {
   LuaRuntime lua(LuaLimits{~uint64_t(0) >> 1, size_t(64) << 20, 0.05});
   const std::string message = error_of(lua, "while true do pcall(function() end) end", "slow.lua");

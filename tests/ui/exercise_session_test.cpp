@@ -244,6 +244,31 @@ TEST(ExerciseSession, ASyntaxErrorNamesFileAndLineAndChangesNothing) {
   EXPECT_EQ(doc.history.undo_depth(), 0u);
 }
 
+// A student's error that says "memory ran out" is the student's error: the run goes in as "mine (error)" with a
+// Warning, as any other error half way (memory really running out is told by a flag: tests/out_of_memory).
+TEST(ExerciseSession, AStudentsOwnMemoryRanOutErrorIsTheStudentsError) {
+  const auto folder = testing::scratch_dir();
+  write_file(folder / "flip.lua", "function flip_edge(mesh, e)\n  mesh:flip(e)\n  error('memory ran out')\nend\n");
+  MeshDocument doc = cube_document();
+  HalfedgeMesh flipped = doc.mesh;
+  ASSERT_TRUE(flip(flipped, EdgeId(7)).ok());
+  ExerciseSession session(folder);
+  Selection selection = select(EdgeId(7));
+  const Check check = session.run_mine(doc, selection);
+  EXPECT_FALSE(check.ok);
+  EXPECT_EQ(check.reason, "flip.lua:3: memory ran out");
+  ASSERT_TRUE(session.last_run().has_value()) << doc.message.text;
+  const ExerciseRun& run = *session.last_run();
+  EXPECT_EQ(run.label, "mine (error): flip e7");
+  EXPECT_EQ(run.report.mine.error, "flip.lua:3: memory ran out");
+  EXPECT_FALSE(run.report.mine.out_of_memory);
+  EXPECT_TRUE(run.applied);
+  EXPECT_TRUE(doc.mesh.same_as(flipped));  // what it did before the error goes in
+  EXPECT_EQ(doc.history.undo_label(), "mine (error): flip e7");
+  EXPECT_EQ(doc.message.severity, Severity::Warning);
+  EXPECT_NE(doc.message.text.find("flip.lua:3: memory ran out"), std::string::npos) << doc.message.text;
+}
+
 TEST(ExerciseSession, TheSelectionMustFitTheExercise) {
   MeshDocument doc = cube_document();
   ExerciseSession session(solutions());

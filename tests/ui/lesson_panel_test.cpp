@@ -51,6 +51,32 @@ TEST(LessonPanel, ReloadsWhenTheFileChangesAndKeepsTheStep) {
   EXPECT_FALSE(reload_if_changed(runner, state, 1.0));  // unchanged since
 }
 
+// A reload that ran out of memory is tried again at the next check; a lesson whose own error says "memory ran out" is
+// a broken file like any other, and waits for the next save instead of reloading at every check.
+TEST(LessonPanel, ALessonThatSaysMemoryRanOutItselfWaitsForTheNextSave) {
+  const fs::path dir = testing::scratch_dir();
+  const fs::path file = dir / "l.lua";
+  write(file, "lesson{title='Before'}\nstep('One', function() say('one') end)\n");
+  HeadlessHost host;
+  LessonRunner runner(host);
+  LessonPanelState state;
+  ASSERT_TRUE(load_lesson(runner, state, file));
+  write(file, "lesson{title='After'}\nerror('memory ran out')\n");
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(2));
+  EXPECT_TRUE(reload_if_changed(runner, state, 0.5));
+  EXPECT_EQ(runner.error(), "l.lua:2: memory ran out");
+  EXPECT_FALSE(runner.out_of_memory());
+  EXPECT_EQ(runner.title(), "Before");
+  EXPECT_FALSE(reload_if_changed(runner, state, 0.5));  // not tried again until the file is saved
+  EXPECT_FALSE(reload_if_changed(runner, state, 0.5));
+  write(file, "lesson{title='After'}\nstep('One', function() say('uno') end)\n");
+  fs::last_write_time(file, fs::last_write_time(file) + std::chrono::seconds(4));
+  EXPECT_TRUE(reload_if_changed(runner, state, 0.5));
+  EXPECT_EQ(runner.error(), "");
+  EXPECT_EQ(runner.title(), "After");
+  EXPECT_EQ(runner.said(), std::vector<std::string>{"uno"});
+}
+
 TEST(LessonPanel, DrawsAWaitingStepAndAnError) {
   const fs::path dir = testing::scratch_dir();
   const fs::path file = dir / "l.lua";
