@@ -2,7 +2,7 @@
 # Builds MeshEdit with AddressSanitizer + UndefinedBehaviorSanitizer into ./build-asan (Debug) and runs every test
 # there; extra arguments go to ctest (e.g. -R Window). Fails on a failed test or on any sanitizer report. Tests are
 # tried twice, because the sanitizers make the code 2-3x slower and a few grading tests race a 0.5 s limit.
-# From scratch on the 2-core machine: about 27 minutes to build and 13 to test (ccache makes rebuilds quicker).
+# From scratch on the 2-core machine: about 27 minutes to build (cold ccache), 5 to 13 to test (by machine load).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 ./scripts/setup.sh
