@@ -1,5 +1,6 @@
 // FailingAllocations (failing_allocations.h): the replaced global operator new and delete of the binary that links
-// this file, and the per-thread state they consult. Allocation is malloc, release is free.
+// this file, and the per-thread state they consult. Allocation is malloc, release is free. Every unaligned form is
+// replaced, the nothrow ones included, so no memory from another operator new reaches this free().
 #include "support/failing_allocations.h"
 
 #include <cstdlib>
@@ -32,6 +33,16 @@ void* operator new(std::size_t size) {
   throw std::bad_alloc();
 }
 void* operator new[](std::size_t size) { return ::operator new(size); }
+// The nothrow forms too (std::stable_sort's temporary buffer uses them): libstdc++'s own forms call the one above,
+// but a sanitizer runtime brings its own, whose memory the operator delete below would then free() as if it were ours.
+void* operator new(std::size_t size, const std::nothrow_t&) noexcept {
+  try {
+    return ::operator new(size);
+  } catch (const std::bad_alloc&) {
+    return nullptr;
+  }
+}
+void* operator new[](std::size_t size, const std::nothrow_t& tag) noexcept { return ::operator new(size, tag); }
 // GCC cannot see that the replaced operator new above uses malloc, so it warns about free() here.
 #pragma GCC diagnostic push
 #pragma GCC diagnostic ignored "-Wmismatched-new-delete"
@@ -39,6 +50,8 @@ void operator delete(void* p) noexcept { std::free(p); }
 void operator delete[](void* p) noexcept { std::free(p); }
 void operator delete(void* p, std::size_t) noexcept { std::free(p); }
 void operator delete[](void* p, std::size_t) noexcept { std::free(p); }
+void operator delete(void* p, const std::nothrow_t&) noexcept { std::free(p); }
+void operator delete[](void* p, const std::nothrow_t&) noexcept { std::free(p); }
 #pragma GCC diagnostic pop
 
 namespace meshedit::testing {
