@@ -4,7 +4,8 @@
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
 // message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
-// Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels.
+// Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels;
+// a window titled after the lesson gets its title at start back ("MeshEdit").
 // A reload (reload_lesson: the panel's Reload, hot reload) is whole or nothing the same way: prepare_reload, the new
 // title (while the window is titled after the lesson), then take and the title's swap.
 #include <GLFW/glfw3.h>
@@ -132,9 +133,12 @@ void EditorApp::draw_lesson() {
 void EditorApp::show_lesson_list() {
   auto runner = std::make_unique<LessonRunner>(*lesson_host_);  // the one step that can fail: nothing changed yet
   runner->set_print([this](const std::string& line) { console_.append_output(line); });
-  // Nothing from here on can fail: the lesson's highlights and labels go with it.
+  std::string title = title_names_lesson_ ? std::string("MeshEdit") : std::string();  // the title at start
+  // Nothing from here on can fail: the lesson's highlights and labels go with it, and a title naming it too.
   lesson_host_->clear_annotations();
   lesson_ = std::move(runner);
+  if (title_names_lesson_) title_.swap(title);
+  title_names_lesson_ = false;
 }
 
 void EditorApp::draw_lesson_marks(int width, int height) {

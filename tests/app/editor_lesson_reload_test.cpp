@@ -1,8 +1,8 @@
 // Hot reload in the window (EditorApp on a surfaceless EGL context, its frames run through a headless ImGui): a lesson
 // saved with a new lesson{title=} renames the window at the next check, keeping the step (the lesson panel draws the
 // runner's title every frame); a save that breaks the file keeps the version that ran under its title, with the error
-// in the panel; and while the window is titled after a file opened since, a reload keeps that file's title. Skipped
-// where no EGL context can be made.
+// in the panel; while the window is titled after a file opened since, a reload keeps that file's title; and going
+// back to the lesson list drops a lesson's title. Skipped where no EGL context can be made.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -95,6 +95,19 @@ TEST_F(EditorLessonReload, AWindowTitledAfterAFileOpenedSinceKeepsItsTitle) {
   frames(3);
   EXPECT_EQ(app_->lesson().title(), "After the save");  // what the panel shows
   EXPECT_EQ(app_->title(), "MeshEdit - torus.obj");  // the window is the file's
+}
+
+TEST_F(EditorLessonReload, GoingBackToTheListDropsTheLessonsTitle) {
+  save(lesson("A lesson"));
+  ASSERT_TRUE(app_->open(file_)) << app_->lesson().error();
+  EXPECT_EQ(app_->title(), "MeshEdit - A lesson");
+  app_->show_lesson_list();
+  EXPECT_EQ(app_->title(), "MeshEdit");
+  // A file's title stays: going back to the list does not rename a window that names a file.
+  ASSERT_TRUE(app_->open(file_)) << app_->lesson().error();
+  app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "torus.obj");
+  app_->show_lesson_list();
+  EXPECT_EQ(app_->title(), "MeshEdit - torus.obj");
 }
 
 }  // namespace
