@@ -3,7 +3,8 @@
 //
 //   mesh_bench [--faces N] [--levels L] [--reps R] [--threads T] [--fast-only 1] [--warm 1]
 //   defaults: 100000 faces, 1 level, 5 reps, 2 threads for the second fast-path row; --fast-only skips the
-//   (slow) phase-by-phase teaching path. The last rows time the normals again on the Loop result.
+//   (slow) phase-by-phase teaching path. The last rows time the normals again on the Loop result, then the floor a
+//   bare index buffer gives there (normals_floor.h).
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -13,6 +14,7 @@
 #include <string>
 
 #include "bench/bench_support.h"
+#include "bench/normals_floor.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/normals.h"
@@ -83,5 +85,7 @@ int main(int argc, char** argv) {
   std::printf("after Loop x%d: %zu faces\n", levels, subdivided.num_faces());
   normals_row(subdivided, " after Loop", 1);
   if (threads > 1) normals_row(subdivided, " after Loop", threads);
+  // The floor without the half-edge chase, with today's ids and with renumbered ones (normals_floor.h).
+  bench::print_normals_floor(subdivided, reps);
   return 0;
 }
