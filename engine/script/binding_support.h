@@ -55,9 +55,7 @@ int guarded(lua_State* L) {
   try {
     return F(L);
   } catch (const std::exception& e) {
-    bool out_of_memory = false;
-    message = exception_text(e, out_of_memory);  // std::bad_alloc: "memory ran out"
-    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
+    message = lua_error_text(L, e);  // std::bad_alloc: "memory ran out"
   }
   return luaL_error(L, "%s", message.c_str());
 }

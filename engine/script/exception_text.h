@@ -44,4 +44,13 @@ inline std::string exception_text(const std::exception& error) noexcept {
   return exception_text(error, out_of_memory);
 }
 
+// exception_text for the Lua error a C function running on `L` raises in the exception's place: memory running out
+// is noted in the runtime that owns `L` (LuaRuntime::note_out_of_memory), so the error is known for what it is.
+inline std::string lua_error_text(lua_State* L, const std::exception& error) noexcept {
+  bool out_of_memory = false;
+  std::string text = exception_text(error, out_of_memory);
+  if (out_of_memory) LuaRuntime::note_out_of_memory(L);
+  return text;
+}
+
 }  // namespace meshedit

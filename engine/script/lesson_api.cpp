@@ -82,9 +82,7 @@ int lesson_guarded(lua_State* L) {
   try {
     return F(L);
   } catch (const std::exception& e) {
-    bool out_of_memory = false;
-    message = exception_text(e, out_of_memory);
-    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
+    message = lua_error_text(L, e);
   }
   raise(L, message);
 }

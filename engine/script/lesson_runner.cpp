@@ -301,9 +301,7 @@ int LessonRunner::trampoline(lua_State* L) {
     (*self->body_)(L);
     return 0;
   } catch (const std::exception& e) {  // from the host (current_mesh...): must not cross the Lua frames
-    bool out_of_memory = false;
-    message = exception_text(e, out_of_memory);
-    if (out_of_memory) LuaRuntime::note_out_of_memory(L);
+    message = lua_error_text(L, e);
   }
   return luaL_error(L, "%s", message.c_str());
 }

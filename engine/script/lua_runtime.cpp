@@ -162,9 +162,7 @@ int LuaRuntime::print_function(lua_State* L) {
   try {
     self->print_arguments(L);
   } catch (const std::exception& e) {
-    bool out_of_memory = false;
-    failure = exception_text(e, out_of_memory);  // std::bad_alloc, or a message that cannot be copied: "memory ran out"
-    if (out_of_memory) self->out_of_memory_ = true;
+    failure = lua_error_text(L, e);  // std::bad_alloc, or a message that cannot be copied: "memory ran out"
     failed = true;
   }
   if (failed) return luaL_error(L, "print failed: %s", failure.c_str());
