@@ -14,8 +14,6 @@ int index_of(ElementKind kind) { return static_cast<int>(kind); }
 
 bool exists(const MeshShape& shape, const SlotChange& s) { return s.slot < shape.capacity[index_of(s.kind)]; }
 
-uint64_t key_of(const SlotChange& s) { return (uint64_t(s.kind) << 32) | s.slot; }
-
 // for_each_field over one changed slot, with the states where the slot exists.
 template <class Add>
 void for_each_field(const MeshPatch& patch, const SlotChange& s, Add&& add) {
@@ -54,7 +52,7 @@ bool MeshPatch::apply_as_edit(HalfedgeMesh& mesh) const {
   }
   for (size_t i = 0; i < slots.size(); ++i) {
     const SlotChange& s = slots[i];
-    if (i > 0 && !(key_of(slots[i - 1]) < key_of(s))) return false;  // sorted, each slot once: appends come in order
+    if (i > 0 && !(slot_key(slots[i - 1]) < slot_key(s))) return false;  // sorted, each slot once: appends come in order
     if (!exists(shape_after, s)) return false;
     if (!exists(shape_before, s)) {
       ++appended[index_of(s.kind)];
@@ -108,7 +106,7 @@ MeshPatch make_patch(const ChangeJournal& journal, const HalfedgeMesh& mesh) {
   patch.shape_after = shape_of(mesh);
   // The first log entry of each slot holds its value before the edit: a stable sort by slot puts it first.
   const std::vector<ChangeJournal::Entry>& log = journal.log();
-  auto key = [&](uint32_t i) { return (uint64_t(log[i].kind) << 32) | log[i].slot; };
+  auto key = [&](uint32_t i) { return slot_key(log[i].kind, log[i].slot); };
   std::vector<uint32_t> order(log.size());
   std::iota(order.begin(), order.end(), 0u);
   std::stable_sort(order.begin(), order.end(), [&](uint32_t a, uint32_t b) { return key(a) < key(b); });

@@ -32,6 +32,10 @@ struct SlotChange {
   SlotValues after;
 };
 
+// The order of MeshPatch::slots as one number: by kind (ElementKind order), then slot.
+inline uint64_t slot_key(ElementKind kind, uint32_t slot) { return (uint64_t(kind) << 32) | slot; }
+inline uint64_t slot_key(const SlotChange& change) { return slot_key(change.kind, change.slot); }
+
 struct MeshPatch {
   MeshShape shape_before;
   MeshShape shape_after;

@@ -28,10 +28,6 @@
 namespace meshedit {
 namespace {
 
-bool slot_less(const SlotChange& a, ElementKind kind, uint32_t slot) {
-  return a.kind != kind ? a.kind < kind : a.slot < slot;
-}
-
 // True when the patch ends in `after` exactly where it says anything (shape, listed slots' `after` values), is
 // sorted with each slot once, and lists every slot that exists in only one of the two states.
 bool patch_ends_in(const HalfedgeMesh& after, const MeshPatch& patch) {
@@ -39,7 +35,7 @@ bool patch_ends_in(const HalfedgeMesh& after, const MeshPatch& patch) {
   size_t listed_in_one_state[kElementKindCount] = {};
   for (size_t i = 0; i < patch.slots.size(); ++i) {
     const SlotChange& change = patch.slots[i];
-    if (i > 0 && !slot_less(patch.slots[i - 1], change.kind, change.slot)) return false;
+    if (i > 0 && !(slot_key(patch.slots[i - 1]) < slot_key(change))) return false;
     const int k = int(change.kind);
     const uint32_t a = shape.capacity[k], b = patch.shape_before.capacity[k];
     if (change.slot < a && !same_state(read_slot(after, change.kind, change.slot), change.after)) return false;

@@ -27,9 +27,6 @@ class StateBefore {
  public:
   StateBefore(const HalfedgeMesh& after, const MeshPatch& patch) : after_(after), patch_(patch) {}
 
-  const HalfedgeMesh& after() const { return after_; }
-  const MeshPatch& patch() const { return patch_; }
-
   uint32_t capacity(ElementKind kind) const { return patch_.shape_before.capacity[int(kind)]; }
   uint32_t vertex_capacity() const { return capacity(ElementKind::Vertex); }
   uint32_t halfedge_capacity() const { return capacity(ElementKind::Halfedge); }
@@ -81,10 +78,8 @@ class StateBefore {
 
  private:
   const SlotChange* find(ElementKind kind, uint32_t slot) const {
-    const auto less = [](const SlotChange& c, std::pair<ElementKind, uint32_t> key) {
-      return c.kind != key.first ? c.kind < key.first : c.slot < key.second;
-    };
-    const auto it = std::lower_bound(patch_.slots.begin(), patch_.slots.end(), std::pair(kind, slot), less);
+    const auto less = [](const SlotChange& c, uint64_t key) { return slot_key(c) < key; };
+    const auto it = std::lower_bound(patch_.slots.begin(), patch_.slots.end(), slot_key(kind, slot), less);
     return it != patch_.slots.end() && it->kind == kind && it->slot == slot ? &*it : nullptr;
   }
 
