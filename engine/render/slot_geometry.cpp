@@ -52,6 +52,12 @@ VertexPoint point_of(const Mesh& mesh, VertexId v) {
   return {glm::vec3(mesh.position(v)), v.index};
 }
 
+template <class Mesh>
+EdgeSegment edge_of(const Mesh& mesh, EdgeId e) {
+  const std::optional<EdgeSegment> s = edge_segment(mesh, e);
+  return s ? *s : kHiddenSegment;
+}
+
 }  // namespace
 
 glm::vec4 flat_normal(const glm::dvec3& term) { return glm::vec4(glm::vec3(unit_or_zero(term)), 0.0f); }
@@ -75,15 +81,8 @@ void draw_face(const StateBefore& mesh, FaceId f, FaceDraw& out, std::vector<Hal
 VertexPoint slot_point(const HalfedgeMesh& mesh, VertexId v) { return point_of(mesh, v); }
 VertexPoint slot_point(const StateBefore& mesh, VertexId v) { return point_of(mesh, v); }
 
-EdgeSegment slot_edge(const HalfedgeMesh& mesh, EdgeId e) {
-  const std::optional<EdgeSegment> s = edge_segment(mesh, e);
-  return s ? *s : kHiddenSegment;
-}
-
-EdgeSegment slot_edge(const StateBefore& mesh, EdgeId e) {
-  const std::optional<EdgeSegment> s = edge_segment(mesh, e);
-  return s ? *s : kHiddenSegment;
-}
+EdgeSegment slot_edge(const HalfedgeMesh& mesh, EdgeId e) { return edge_of(mesh, e); }
+EdgeSegment slot_edge(const StateBefore& mesh, EdgeId e) { return edge_of(mesh, e); }
 
 std::array<EdgeSegment, 3> slot_arrow(const HalfedgeMesh& mesh, HalfedgeId h) {
   const std::optional<HalfedgeArrow> a = halfedge_arrow(mesh, h);
