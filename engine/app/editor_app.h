@@ -143,6 +143,9 @@ class EditorApp {
   MeshDocument& document() { return doc_; }
   Selection& selection() { return selection_; }
   const std::string& title() const { return title_; }
+  static constexpr char kStartTitle[] = "MeshEdit";  // the title before a file or a lesson names the window
+  // "MeshEdit - <name>": the title naming a file or a lesson.
+  static std::string window_title(const std::string& name);
   // The files opened or saved lately, the latest first (File > Open recent).
   const std::deque<std::string>& recent_files() const { return recent_; }
 
@@ -209,7 +212,7 @@ class EditorApp {
   std::string open_path_input_;
   std::string save_path_input_;
   std::deque<std::string> recent_;
-  std::string title_ = "MeshEdit";
+  std::string title_ = kStartTitle;
   bool title_names_lesson_ = false;  // title_ is the running lesson's (open_lesson), not a file's: reloads rename it
 
   int viewport_width_ = 1, viewport_height_ = 1;

@@ -44,8 +44,6 @@ std::deque<std::string> with_recent(const std::deque<std::string>& recent, std::
   return list;
 }
 
-std::string window_title(const std::string& name) { return "MeshEdit - " + name; }
-
 // `patches` in a patch view, tessellated: ready to be moved in.
 PatchViewState tessellated_view(const std::vector<BezierPatch>& patches) {
   PatchViewState view = make_patch_view(patches);
@@ -64,6 +62,8 @@ void refresh_view(MeshRenderer& renderer, const HalfedgeMesh& mesh) noexcept {
 }
 
 }  // namespace
+
+std::string EditorApp::window_title(const std::string& name) { return std::string(kStartTitle) + " - " + name; }
 
 void EditorApp::fit_camera(const BoundingBox& bounds) {
   camera_.fit(bounds);

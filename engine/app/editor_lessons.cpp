@@ -5,7 +5,7 @@
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
 // message, the panel's watch) with steps that cannot fail. A lesson's mesh is copied before take_mesh switches to it.
 // Going back to the list (show_lesson_list) makes the fresh runner before it clears the lesson's highlights and labels;
-// a window titled after the lesson gets its title at start back ("MeshEdit").
+// a window titled after the lesson gets its title at start back (kStartTitle).
 // A reload (reload_lesson: the panel's Reload, hot reload) is whole or nothing the same way: prepare_reload, the new
 // title (while the window is titled after the lesson), then take and the title's swap.
 #include <GLFW/glfw3.h>
@@ -36,9 +36,6 @@ std::string key_name(int key, KeyMods mods) {
   return name;
 }
 
-// The window's title while a lesson runs: "MeshEdit - Walking the half-edge mesh".
-std::string lesson_window_title(const std::string& lesson_title) { return "MeshEdit - " + lesson_title; }
-
 }  // namespace
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
@@ -54,7 +51,7 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     return false;
   }
   try {
-    std::string title = lesson_window_title(lesson.title());
+    std::string title = window_title(lesson.title());  // "MeshEdit - Walking the half-edge mesh"
     std::string text = "lesson " + path.filename().string();
     // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
     // step's error, in the panel).
@@ -77,7 +74,7 @@ ReloadOutcome EditorApp::reload_lesson() {
     return lesson_->out_of_memory() ? ReloadOutcome::OutOfMemory : ReloadOutcome::Failed;
   }
   try {
-    std::string title = title_names_lesson_ ? lesson_window_title(lesson.title()) : std::string();
+    std::string title = title_names_lesson_ ? window_title(lesson.title()) : std::string();
     // Nothing from here on can fail: the new version runs, under its title.
     lesson_->take(std::move(lesson), lesson_->current_step());
     if (title_names_lesson_) title_.swap(title);
@@ -133,7 +130,7 @@ void EditorApp::draw_lesson() {
 void EditorApp::show_lesson_list() {
   auto runner = std::make_unique<LessonRunner>(*lesson_host_);  // the one step that can fail: nothing changed yet
   runner->set_print([this](const std::string& line) { console_.append_output(line); });
-  std::string title = title_names_lesson_ ? std::string("MeshEdit") : std::string();  // the title at start
+  std::string title = title_names_lesson_ ? std::string(kStartTitle) : std::string();
   // Nothing from here on can fail: the lesson's highlights and labels go with it, and a title naming it too.
   lesson_host_->clear_annotations();
   lesson_ = std::move(runner);

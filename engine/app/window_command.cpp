@@ -26,7 +26,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   }
   ActionPlayer player(script ? read_actions(*script) : std::vector<ScriptedAction>{}, std::cerr);
 
-  GlfwWindow window("MeshEdit", width, height);
+  GlfwWindow window(EditorApp::kStartTitle, width, height);
   window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
   app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
