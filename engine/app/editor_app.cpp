@@ -26,10 +26,9 @@ EditorApp::EditorApp()
       overlay_renderer_(std::make_unique<OverlayRenderer>(shaders_)),
       curve_(make_curve_editor(default_curve())) {
   lesson_host_ = std::make_unique<WindowLessonHost>(*this);
-  lesson_ = std::make_unique<LessonRunner>(*lesson_host_);
+  lesson_ = make_lesson_runner();
   lesson_panel_.lessons_dir = lessons_dir();
   refresh_lessons(lesson_panel_);
-  lesson_->set_print([this](const std::string& line) { console_.append_output(line); });
   lesson_panel_.reload = [this](LessonRunner&) { return reload_lesson(); };
 }
 

@@ -169,6 +169,8 @@ class EditorApp {
   void take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit = true);  // fit: the camera to the mesh
   void take_curve(CurveEditorState&& curve);
   void take_patches(PatchViewState&& patches);  // tessellated already
+  // A runner with no lesson, for the window's lesson host, printing to the console.
+  std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
   void draw_lesson_marks(int width, int height);
   void update_lesson(float frame_ms);

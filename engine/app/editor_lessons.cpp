@@ -85,6 +85,12 @@ ReloadOutcome EditorApp::reload_lesson() {
   }
 }
 
+std::unique_ptr<LessonRunner> EditorApp::make_lesson_runner() {
+  auto runner = std::make_unique<LessonRunner>(*lesson_host_);
+  runner->set_print([this](const std::string& line) { console_.append_output(line); });
+  return runner;
+}
+
 bool EditorApp::animating() const {
   if (hover_pending_) return true;
   return lesson_->step_state() == LessonRunner::StepState::Waiting &&
@@ -128,8 +134,7 @@ void EditorApp::draw_lesson() {
 }
 
 void EditorApp::show_lesson_list() {
-  auto runner = std::make_unique<LessonRunner>(*lesson_host_);  // the one step that can fail: nothing changed yet
-  runner->set_print([this](const std::string& line) { console_.append_output(line); });
+  std::unique_ptr<LessonRunner> runner = make_lesson_runner();  // the one step that can fail: nothing changed yet
   std::string title = title_names_lesson_ ? std::string(kStartTitle) : std::string();
   // Nothing from here on can fail: the lesson's highlights and labels go with it, and a title naming it too.
   lesson_host_->clear_annotations();
