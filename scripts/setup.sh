@@ -10,6 +10,7 @@ packages=(
   libglfw3-dev libimgui-dev libepoxy-dev libgl-dev libegl-dev libegl1-mesa-dev libgl1-mesa-dri mesa-utils
   googletest libgtest-dev
   xvfb xauth x11-utils
+  fonts-dejavu-core
 )
 
 "$(dirname "$0")/install_missing.sh" setup "${packages[@]}"

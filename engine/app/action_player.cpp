@@ -7,6 +7,8 @@
 #include <stdexcept>
 
 #include "app/editor_app.h"
+#include "app/layout_report.h"
+#include "io/file_access.h"
 #include "ui/document_actions.h"
 #include "ui/exception_report.h"
 
@@ -34,6 +36,16 @@ KeyMods parse_key(std::string text, int& key) {
     key = GLFW_KEY_ESCAPE;
   } else if (text == "grave") {
     key = GLFW_KEY_GRAVE_ACCENT;
+  } else if (text == "equal" || text == "=") {
+    key = GLFW_KEY_EQUAL;
+  } else if (text == "minus" || text == "-") {
+    key = GLFW_KEY_MINUS;
+  } else if (text == "0") {
+    key = GLFW_KEY_0;
+  } else if (text == "[") {
+    key = GLFW_KEY_LEFT_BRACKET;
+  } else if (text == "]") {
+    key = GLFW_KEY_RIGHT_BRACKET;
   } else {
     throw std::runtime_error("unknown key '" + text + "'");
   }
@@ -94,6 +106,14 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
   } else if (a.verb == "click" || a.verb == "hover") {
     const int x = std::stoi(args[0]), y = std::stoi(args[1]);
     a.verb == "click" ? app.click(x, y) : app.hover(x, y);
+  } else if (a.verb == "click-on") {
+    const auto element = parse_element(args[0]);
+    if (!element) throw std::runtime_error("not an element id: '" + args[0] + "'");
+    const std::optional<ScreenPoint> at = app.element_pixel(*element);
+    if (!at) throw std::runtime_error(args[0] + " is not on screen");
+    app.click(int(at->pixel.x), int(at->pixel.y));
+  } else if (a.verb == "layout-json") {
+    write_file(args[0], layout_json(app));
   } else if (a.verb == "open") {
     if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "save") {

@@ -17,6 +17,7 @@
 #include "render/render_target.h"
 #include "ui/exception_report.h"
 #include "ui/frame_guard.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 
@@ -49,11 +50,16 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   }
 }
 
-void EditorApp::fit_camera() { fit_camera(mesh_renderer_->bounds()); }
+void EditorApp::fit_camera() {
+  if (mode_ == ViewMode::Patches && patches_.tessellation.mesh) {
+    fit_camera(mesh_bounds(*patches_.tessellation.mesh));
+  } else {
+    fit_camera(mesh_renderer_->bounds());
+  }
+}
 
 void EditorApp::reset_view() {
   camera_.reset();
-  camera_.zoom(-kFitZoomOutSteps);
 }
 
 void EditorApp::frame(int width, int height, float frame_ms) {
@@ -62,39 +68,46 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 }
 
 void EditorApp::run_frame(int width, int height, float frame_ms) {
-  viewport_width_ = std::max(1, width);
-  viewport_height_ = std::max(1, height);
-  read_mouse_and_keys(width, height);
+  read_mouse_and_keys(width, height);  // in the view placed by the last frame
   update_lesson(frame_ms);
 
-  const glm::vec4 bg = mesh_renderer_->style().background;
-  glViewport(0, 0, viewport_width_, viewport_height_);
-  glClearColor(bg.r, bg.g, bg.b, bg.a);
+  const ImVec4 bg = view_background(settings_.theme);
+  mesh_renderer_->style().background = glm::vec4(bg.x, bg.y, bg.z, bg.w);
+  patch_renderer_->style().background = mesh_renderer_->style().background;
+  glViewport(0, 0, std::max(1, width), std::max(1, height));
+  glClearColor(bg.x, bg.y, bg.z, bg.w);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
+  probe_.clear();
   draw_menu_bar();
+  const float menu = ImGui::GetFrameHeight();
+  status_bar_.mesh_shown = mode_ == ViewMode::Mesh;
+  const float status = draw_status_bar(doc_, selection_, status_bar_, frame_ms);
+  const ImGuiIO& io = ImGui::GetIO();
+  font_pixels_ = ImGui::GetFontSize();
+  layout_ = compute_layout(io.DisplaySize.x, io.DisplaySize.y, menu, status, settings_.layout, font_pixels_,
+                           console_panel_.open);
+  place_view(width, height);
+
+  begin_view_drawing();
   switch (mode_) {
     case ViewMode::Mesh:
-      draw_mesh_view(viewport_width_, viewport_height_);
+      draw_mesh_view();
       break;
     case ViewMode::Patches:
       draw_patch_view();
       break;
-    case ViewMode::Curve: {
-      const ImGuiViewport* main = ImGui::GetMainViewport();
-      const float menu = ImGui::GetFrameHeight();
-      ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + menu));
-      ImGui::SetNextWindowSize(ImVec2(main->Size.x, main->Size.y - menu));
-      draw_curve_editor(curve_, "Curve editor", &bezier_mine_);
-      break;
-    }
+    case ViewMode::Curve:
+      break;  // an ImGui canvas, drawn with the panels
   }
-  draw_view_panels(frame_ms);
+  end_view_drawing();
+  if (mode_ == ViewMode::Curve) draw_curve_canvas_window();  // before the levels table: it computes the levels
+  draw_columns(frame_ms);
   draw_open_panel();
   draw_help_panel();
 }
 
-void EditorApp::draw_mesh_view(int width, int height) {
+void EditorApp::draw_mesh_view() {
   // The document's last change lets the renderer rewrite only what an edit touched (it checks the versions): a local
   // edit by its patch, a listed whole-mesh change by the copy of the state before.
   MeshRenderer::MeshChange change;
@@ -122,6 +135,7 @@ void EditorApp::draw_mesh_view(int width, int height) {
     }
   }
   apply_size_defaults();
+  take_pending_view();
   if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
   Highlights highlights;
   highlights.hovered = selection_.hovered;
@@ -129,17 +143,21 @@ void EditorApp::draw_mesh_view(int width, int height) {
   highlights.changed = doc_.last.index.elements();
   highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
-  if (show_labels_) draw_id_labels(width, height);
-  draw_lesson_marks(width, height);
+  if (show_labels_) draw_id_labels();
+  draw_lesson_marks();
 }
 
 void EditorApp::apply_size_defaults() {
   // The wireframe's default follows the mesh's size class when it changes (opening a file, a subdivision);
   // W still toggles it in between. The renderer drops multisampling for large meshes by itself.
   const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
-  if (large != large_mesh_) {
-    large_mesh_ = large;
+  const SizeClass size = large ? SizeClass::Large
+                         : doc_.mesh.num_faces() <= kArrowsMaxFaces ? SizeClass::Small
+                                                                     : SizeClass::Medium;
+  if (size != size_class_) {
+    size_class_ = size;
     view_options_.wireframe = !large;
+    view_options_.show_halfedges = size == SizeClass::Small;
   }
   status_bar_.note.clear();
   if (large) {
@@ -149,10 +167,7 @@ void EditorApp::apply_size_defaults() {
 }
 
 void EditorApp::draw_patch_view() {
-  ImGui::SetNextWindowPos(ImVec2(0, ImGui::GetFrameHeight()), ImGuiCond_Appearing);
-  ImGui::SetNextWindowSize(ImVec2(520, 380), ImGuiCond_Appearing);
-  draw_patch_view_panel(patches_, "Patch view", &bezier_mine_);
-  // The panel computed this frame's point (when open); asking again is a cached lookup.
+  update_tessellation(patches_);  // the controls (in the right column, drawn after the view) change it next frame
   const PatchMinePoint* mine = nullptr;
   if (bezier_mine_.patch_on() && !patches_.patches.empty()) {
     mine = &bezier_mine_.patch_point(patches_.patches[patches_.selected_patch], patches_.u, patches_.v);
@@ -174,47 +189,27 @@ void EditorApp::draw_patch_view() {
   overlay_renderer_->draw(camera_, viewport(), overlay);
 }
 
+void EditorApp::apply_view_request(const ViewRequest& request) {
+  // Applied when the mesh view next draws, after the shown mesh's size class has set its defaults.
+  pending_view_ = request;
+}
+
+void EditorApp::take_pending_view() {
+  if (!pending_view_) return;
+  const ViewRequest request = *pending_view_;
+  pending_view_.reset();
+  if (request.halfedges) view_options_.show_halfedges = *request.halfedges;
+  if (request.wireframe) view_options_.wireframe = *request.wireframe;
+  if (request.vertices) view_options_.show_vertices = *request.vertices;
+  if (request.labels) show_labels_ = *request.labels;
+}
+
 void EditorApp::run_console(const std::string& code) {
   console_panel_.open = true;
   console_panel_.scroll_to_bottom = true;
   exercises_.finish_replay(doc_);
   console_.submit(doc_, selection_, code);
   keep_if_alive(selection_, doc_.mesh);
-}
-
-void EditorApp::draw_console() {
-  if (!console_panel_.open) return;
-  const ImGuiViewport* main = ImGui::GetMainViewport();
-  // Bottom middle: the lesson panel takes the bottom left.
-  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x * 0.37f, main->Pos.y + main->Size.y - 300),
-                          ImGuiCond_FirstUseEver);
-  draw_console_panel(console_, console_panel_, doc_, selection_);
-  keep_if_alive(selection_, doc_.mesh);  // a line may have deleted what was selected
-}
-
-void EditorApp::draw_view_panels(float frame_ms) {
-  draw_console();
-  draw_lesson();
-  if (mode_ != ViewMode::Mesh) return;
-  const ImGuiViewport* main = ImGui::GetMainViewport();
-  // Drawn (a no-op) also when closed: the session notices edits made elsewhere.
-  ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x * 0.3f, main->Pos.y + 60), ImGuiCond_FirstUseEver);
-  draw_exercise_panel(exercises_, exercise_panel_, doc_, selection_);
-  keep_if_alive(selection_, doc_.mesh);
-  const float menu = ImGui::GetFrameHeight();
-  const float status = draw_status_bar(doc_, selection_, status_bar_, frame_ms);
-  const float panel_width = std::min(420.0f, main->Size.x * 0.34f);
-  const float height = main->Size.y - menu - status;
-  if (inspector_.open) {
-    ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + menu), ImGuiCond_Appearing);
-    ImGui::SetNextWindowSize(ImVec2(panel_width * 0.8f, height * 0.55f), ImGuiCond_Appearing);
-    draw_inspector(doc_, selection_, inspector_);
-  }
-  if (tables_.open) {
-    ImGui::SetNextWindowPos(ImVec2(main->Pos.x + main->Size.x - panel_width, main->Pos.y + menu), ImGuiCond_Appearing);
-    ImGui::SetNextWindowSize(ImVec2(panel_width, height), ImGuiCond_Appearing);
-    draw_pointer_tables(doc_, selection_, tables_);
-  }
 }
 
 }  // namespace meshedit

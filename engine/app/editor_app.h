@@ -23,6 +23,11 @@
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
+// - The layout is fixed (ui/window_layout.h): menu bar, status bar, the left and right columns, the console strip,
+//   and the view in the free centre. The mesh, patch and curve views draw only into the view rectangle (GL viewport
+//   and scissor set to it, the camera's aspect and picking in its pixels); no panel is drawn over the view or a
+//   column except the modal dialogs (open, keys) and menus. Picking pixels (click, hover) are framebuffer pixels
+//   relative to the view's top-left corner.
 #pragma once
 
 #include <deque>
@@ -30,7 +35,10 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
@@ -50,7 +58,10 @@
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
 #include "ui/selection.h"
+#include "ui/fonts.h"
+#include "ui/settings.h"
 #include "ui/status_bar.h"
+#include "ui/window_layout.h"
 
 namespace meshedit {
 
@@ -64,9 +75,6 @@ struct KeyMods {
 
 class EditorApp {
  public:
-  // After fitting a mesh, the camera backs off this many zoom steps so the mesh clears the side panels.
-  static constexpr double kFitZoomOutSteps = 1.5;
-
   EditorApp();  // needs a current OpenGL 3.3 core context (throws RenderError if the shaders are missing)
   ~EditorApp();
 
@@ -86,6 +94,8 @@ class EditorApp {
   void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
   void show_curve(const BezierCurve& curve);
   void show_patches(const std::vector<BezierPatch>& patches);
+  // A lesson's view{...}: turns the parts it names on or off.
+  void apply_view_request(const ViewRequest& request);
 
   // Loads a lesson file into the lesson panel (also what open() does with a .lua file), whole or nothing: the lesson
   // runs, the title names it and the status line says so; or the lesson that ran goes on under its title, and the
@@ -114,9 +124,25 @@ class EditorApp {
 
   // The key handlers (GLFW key codes); return whether the key did something.
   bool handle_key(int key, KeyMods mods);
-  // A left click at framebuffer pixel (x, y): selects what is under it (or clears the selection).
+  // A left click at pixel (x, y) of the view (framebuffer pixels, top-left origin): selects what is under it (or
+  // clears the selection).
   void click(int x, int y);
   void hover(int x, int y);
+  // Where the element's label anchor (a vertex's position, an edge's midpoint...) is in the view's pixels; nullopt
+  // when it is dead, behind the eye or outside the view.
+  std::optional<ScreenPoint> element_pixel(ElementRef element) const;
+
+  // The settings that last between runs (ui/settings.h): apply_settings takes them at start; the window saves
+  // settings() when it closes.
+  void apply_settings(const Settings& settings);
+  const Settings& settings() const { return settings_; }
+  // True once after the text size or the theme changed: the window applies the look before its next frame.
+  bool take_look_change() { return std::exchange(look_changed_, false); }
+  // What the window's apply_look made of the fonts: a missing font is a warning in the status line.
+  void fonts_applied(const FontsLoaded& fonts);
+  const WindowLayout& layout() const { return layout_; }
+  const UiProbe& probe() const { return probe_; }  // where the lesson's text and buttons were drawn last frame
+  float font_pixels() const { return font_pixels_; }
 
   // Opens the console and runs `code` in it, as if typed there and Enter pressed.
   void run_console(const std::string& code);
@@ -138,6 +164,7 @@ class EditorApp {
   RenderStyle& mesh_render_style() { return mesh_renderer_->style(); }  // tests lower its buffer cap
   const std::string& status_note() const { return status_bar_.note; }
   void fit_view() { fit_camera(); }
+  Viewport viewport() const { return {view_pixels_.width, view_pixels_.height}; }
   void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
   MeshDocument& document() { return doc_; }
@@ -152,17 +179,28 @@ class EditorApp {
  private:
   void run_frame(int width, int height, float frame_ms);  // frame() without its guard
   void read_mouse_and_keys(int width, int height);
-  void draw_mesh_view(int width, int height);
+  void draw_mesh_view();
+  // The view's rectangle in framebuffer pixels, from the layout's (window coordinates).
+  void place_view(int framebuffer_width, int framebuffer_height);
+  void begin_view_drawing();  // GL viewport and scissor on the view
+  void end_view_drawing();
+  void draw_columns(float frame_ms);
+  void draw_left_column();
+  void draw_right_column();
+  void draw_console_strip();
+  void draw_splitters();
+  void draw_curve_canvas_window();
+  // The mouse position in view pixels, or nullopt when it is outside the view.
+  std::optional<glm::ivec2> mouse_in_view() const;
+  void change_font_size(int steps);  // 0: back to the default
   void apply_size_defaults();
   void draw_patch_view();
-  void draw_id_labels(int width, int height);
+  void draw_id_labels();
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
-  void draw_view_panels(float frame_ms);
-  void draw_console();
   void message(Severity severity, const std::string& text);
-  void fit_camera();  // to the mesh the renderer shows
+  void fit_camera();  // to what the view shows: the mesh, or the patches' surface
   void fit_camera(const BoundingBox& bounds);
   // Switch the window to a new document, view mode and view with steps that cannot fail (editor_files.cpp): the end
   // of showing a mesh, a curve or patches, once everything that can fail was made.
@@ -172,11 +210,10 @@ class EditorApp {
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
-  void draw_lesson_marks(int width, int height);
+  void draw_lesson_marks();
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
-  void draw_lesson();
-  Viewport viewport() const { return {viewport_width_, viewport_height_}; }
+  void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
 
   ShaderLibrary shaders_;
   std::unique_ptr<MeshRenderer> mesh_renderer_;
@@ -185,7 +222,13 @@ class EditorApp {
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;
-  bool large_mesh_ = false;  // the shown mesh is past RenderStyle::large_mesh_triangles (apply_size_defaults)
+  // The shown mesh's size class (apply_size_defaults): past RenderStyle::large_mesh_triangles, or small enough for
+  // halfedge arrows by default (kArrowsMaxFaces). When it changes, the wireframe and the arrows take its defaults.
+  static constexpr size_t kArrowsMaxFaces = 300;
+  enum class SizeClass { Unknown, Small, Medium, Large };
+  SizeClass size_class_ = SizeClass::Unknown;
+  std::optional<ViewRequest> pending_view_;  // a lesson's view{...}, for the next mesh frame
+  void take_pending_view();
   // Why the renderer refused the document's mesh (too large to draw) at this generation and version; "" when drawn.
   std::string undrawable_;
   uint64_t undrawable_generation_ = 0, undrawable_version_ = 0;
@@ -217,7 +260,19 @@ class EditorApp {
   std::string title_ = kStartTitle;
   bool title_names_lesson_ = false;  // title_ is the running lesson's (open_lesson), not a file's: reloads rename it
 
-  int viewport_width_ = 1, viewport_height_ = 1;
+  Settings settings_;
+  bool look_changed_ = true;  // the window applies the look before the first frame
+  float font_pixels_ = Settings::kDefaultFontPx;
+  WindowLayout layout_;
+  UiProbe probe_;
+  enum class RightTab { None, Tables, Inspector, Exercises };
+  RightTab select_tab_ = RightTab::None;  // a tab to bring to the front at the next frame (I, X)
+  // The view in framebuffer pixels: x and y from the framebuffer's top-left corner.
+  struct PixelRect {
+    int x = 0, y = 0, width = 1, height = 1;
+  };
+  PixelRect view_pixels_;
+  int framebuffer_height_ = 1;
   bool dragging_ = false;
   // A hover waiting for the mouse to rest, because the id buffer is stale and slow to redraw (read_mouse_and_keys).
   static constexpr double kSlowIdPassMs = 30.0;

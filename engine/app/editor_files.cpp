@@ -67,7 +67,6 @@ std::string EditorApp::window_title(const std::string& name) { return std::strin
 
 void EditorApp::fit_camera(const BoundingBox& bounds) {
   camera_.fit(bounds);
-  camera_.zoom(-kFitZoomOutSteps);
 }
 
 void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit) {

@@ -4,13 +4,15 @@
 //               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
 //   curve view  E one more de Casteljau level, C the whole curve, M "mine" (levels from scripts/student/curve.lua)
 //   patch view  M "mine" (the probe point from scripts/student/patch.lua)
-//   everywhere  P screenshot, Ctrl+O open, F1 help, Esc clears the selection
+//   everywhere  P screenshot, Ctrl+O open, F1 help, Esc clears the selection, [ and ] fold the left and right
+//               columns, Ctrl+= Ctrl+- Ctrl+0 text size (bigger, smaller, default), ` console, X exercises
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <chrono>
 
 #include "app/editor_app.h"
+#include "render/labels.h"
 #include "ui/document_actions.h"
 
 namespace meshedit {
@@ -38,9 +40,33 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
   }
   if (key == GLFW_KEY_X && !mods.ctrl) {
     exercise_panel_.open = !exercise_panel_.open;
+    if (exercise_panel_.open) {
+      select_tab_ = RightTab::Exercises;
+      settings_.layout.right_open = true;
+    }
     return true;
   }
   // Keys that work in every view.
+  if (mods.ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) {
+    change_font_size(+1);
+    return true;
+  }
+  if (mods.ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) {
+    change_font_size(-1);
+    return true;
+  }
+  if (mods.ctrl && (key == GLFW_KEY_0 || key == GLFW_KEY_KP_0)) {
+    change_font_size(0);
+    return true;
+  }
+  if (key == GLFW_KEY_LEFT_BRACKET) {
+    settings_.layout.left_open = !settings_.layout.left_open;
+    return true;
+  }
+  if (key == GLFW_KEY_RIGHT_BRACKET) {
+    settings_.layout.right_open = !settings_.layout.right_open;
+    return true;
+  }
   if (mods.ctrl && key == GLFW_KEY_O) {
     show_open_panel_ = true;
     return true;
@@ -92,7 +118,11 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
   const ElementKind selected_kind = selection_.selected.kind;
   const bool on_halfedge = selection_.selected.valid() && selected_kind == ElementKind::Halfedge;
   switch (key) {
-    case GLFW_KEY_I: inspector_.open = !inspector_.open; return true;
+    case GLFW_KEY_I:
+      inspector_.open = !inspector_.open;
+      if (inspector_.open) select_tab_ = RightTab::Inspector;
+      if (inspector_.open) (lesson_->loaded() ? settings_.layout.right_open : settings_.layout.left_open) = true;
+      return true;
     case GLFW_KEY_ESCAPE: selection_.selected = {}; return true;
     case GLFW_KEY_S: split_selected(doc_, selection_); return true;  // outcome goes to the status line
     case GLFW_KEY_C: collapse_selected(doc_, selection_); return true;
@@ -112,6 +142,17 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
     case GLFW_KEY_H: return navigate_selection(doc_, selection_, NavStep::Halfedge);
     default: return false;
   }
+}
+
+std::optional<ScreenPoint> EditorApp::element_pixel(ElementRef element) const {
+  const std::optional<glm::dvec3> anchor = label_anchor(doc_.mesh, element);
+  if (!anchor) return std::nullopt;
+  const Viewport view = viewport();
+  const ScreenPoint p = camera_.project(*anchor, view);
+  if (!p.in_front || p.pixel.x < 0.0 || p.pixel.y < 0.0 || p.pixel.x >= view.width || p.pixel.y >= view.height) {
+    return std::nullopt;
+  }
+  return p;
 }
 
 void EditorApp::click(int x, int y) {
@@ -137,7 +178,9 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
     for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
                     GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
-                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X, GLFW_KEY_M}) {
+                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X, GLFW_KEY_M,
+                    GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_EQUAL, GLFW_KEY_MINUS, GLFW_KEY_0,
+                    GLFW_KEY_KP_ADD, GLFW_KEY_KP_SUBTRACT, GLFW_KEY_KP_0}) {
       if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
     }
   }
@@ -146,12 +189,14 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     selection_.hovered = {};  // the panels set it again while a link or row is under the mouse
     return;
   }
-  // ImGui gives window coordinates; the renderer wants framebuffer pixels.
+  // ImGui gives window coordinates; the renderer wants framebuffer pixels of the view. A drag that started in the
+  // view goes on over the columns; a click, a hover or the wheel count only in the view.
   const float sx = io.DisplaySize.x > 0 ? float(width) / io.DisplaySize.x : 1.0f;
   const float sy = io.DisplaySize.y > 0 ? float(height) / io.DisplaySize.y : 1.0f;
-  const int x = int(io.MousePos.x * sx), y = int(io.MousePos.y * sy);
+  const std::optional<glm::ivec2> in_view = mouse_in_view();
+  const int x = in_view ? in_view->x : -1, y = in_view ? in_view->y : -1;
   const ImVec2 delta(io.MouseDelta.x * sx, io.MouseDelta.y * sy);
-  if (io.MouseWheel != 0.0f) camera_.zoom(io.MouseWheel);
+  if (io.MouseWheel != 0.0f && in_view) camera_.zoom(io.MouseWheel);
 
   const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||
                        (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
@@ -162,8 +207,13 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
     dragging_ = true;
   }
   if (ImGui::IsMouseReleased(ImGuiMouseButton_Left)) {
-    if (!dragging_ && !io.KeyShift) click(x, y);
+    if (!dragging_ && !io.KeyShift && in_view) click(x, y);
     dragging_ = false;
+  }
+  if (!in_view && !dragging_ && !panning) {
+    selection_.hovered = {};
+    hover_pending_ = false;
+    return;
   }
   // Picking while the camera moves would redraw the whole id buffer every frame; wait for the drag to end. After
   // a camera move the id buffer is stale: when redrawing it is slow (a large mesh on llvmpipe), the hover waits

@@ -115,14 +115,7 @@ void EditorApp::tell_lesson_key(int key, KeyMods mods) {
   if (!name.empty()) lesson_->deliver(LessonEvent::key(name));
 }
 
-void EditorApp::draw_lesson() {
-  const ImGuiViewport* main = ImGui::GetMainViewport();
-  // Bottom left, under the inspector: the mesh stays in the middle of the view.
-  ImGui::SetNextWindowPos(ImVec2(main->Pos.x, main->Pos.y + main->Size.y * 0.56f), ImGuiCond_FirstUseEver);
-  ImGui::SetNextWindowSize(ImVec2(std::min(440.0f, main->Size.x * 0.36f), main->Size.y * 0.39f), ImGuiCond_FirstUseEver);
-  // A curve or a set of patches fills the window: the list starts folded there, until a lesson is loaded.
-  if (mode_ != ViewMode::Mesh && !lesson_->loaded()) ImGui::SetNextWindowCollapsed(true, ImGuiCond_FirstUseEver);
-  draw_lesson_panel(*lesson_, lesson_panel_);
+void EditorApp::take_lesson_request() {
   if (!lesson_panel_.requested) return;
   const std::filesystem::path requested = *lesson_panel_.requested;
   lesson_panel_.requested.reset();
@@ -143,7 +136,7 @@ void EditorApp::show_lesson_list() {
   title_names_lesson_ = false;
 }
 
-void EditorApp::draw_lesson_marks(int width, int height) {
+void EditorApp::draw_lesson_marks() {
   const LessonMarks& marks = lesson_host_->marks();
   if (marks.highlights.empty() && marks.labels.empty()) return;
   const HalfedgeMesh& mesh = doc_.mesh;
@@ -177,21 +170,23 @@ void EditorApp::draw_lesson_marks(int width, int height) {
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
 
-  const ImGuiIO& io = ImGui::GetIO();
-  const float to_window_x = width > 0 ? io.DisplaySize.x / float(width) : 1.0f;
-  const float to_window_y = height > 0 ? io.DisplaySize.y / float(height) : 1.0f;
+  const float to_window_x = layout_.view.width / float(std::max(1, view_pixels_.width));
+  const float to_window_y = layout_.view.height / float(std::max(1, view_pixels_.height));
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  draw->PushClipRect(ImVec2(layout_.view.x, layout_.view.y), ImVec2(layout_.view.right(), layout_.view.bottom()));
   for (const auto& [element, text] : marks.labels) {
     const auto anchor = label_anchor(mesh, element);
     if (!anchor) continue;
     const ScreenPoint s = camera_.project(*anchor, viewport());
     if (!s.in_front) continue;
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 corner(float(s.pixel.x) * to_window_x - size.x * 0.5f, float(s.pixel.y) * to_window_y - size.y - 6);
+    const ImVec2 corner(layout_.view.x + float(s.pixel.x) * to_window_x - size.x * 0.5f,
+                        layout_.view.y + float(s.pixel.y) * to_window_y - size.y - 6);
     draw->AddRectFilled(ImVec2(corner.x - 3, corner.y - 2), ImVec2(corner.x + size.x + 3, corner.y + size.y + 2),
                         IM_COL32(20, 20, 20, 210), 3.0f);
     draw->AddText(corner, to_imgui(glm::vec3(1.0f, 0.85f, 0.3f)), text.c_str());
   }
+  draw->PopClipRect();
 }
 
 }  // namespace meshedit

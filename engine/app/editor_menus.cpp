@@ -1,4 +1,5 @@
-// The menu bar, the open/save panel (a small file browser with a recent list) and the key help.
+// The menu bar, the open/save dialog (a small file browser with a recent list) and the key help. The two dialogs are
+// modal and centred on the window: nothing else takes input while one is open.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -9,6 +10,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "ui/document_actions.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
@@ -81,10 +83,26 @@ void EditorApp::draw_menu_bar() {
     ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
     ImGui::MenuItem("Id labels", nullptr, &show_labels_);
     ImGui::Separator();
-    ImGui::MenuItem("Inspector", "I", &inspector_.open);
+    ImGui::MenuItem("Left column (lesson)", "[", &settings_.layout.left_open);
+    ImGui::MenuItem("Right column (tables)", "]", &settings_.layout.right_open);
+    if (ImGui::MenuItem("Inspector", "I", inspector_.open)) handle_key(GLFW_KEY_I, {});
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-    ImGui::MenuItem("Exercises: mine vs reference", "X", &exercise_panel_.open);
+    if (ImGui::MenuItem("Exercises: mine vs reference", "X", exercise_panel_.open)) handle_key(GLFW_KEY_X, {});
     if (ImGui::MenuItem("Lua console", "`", &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
+    ImGui::Separator();
+    if (ImGui::MenuItem("Bigger text", "Ctrl+=")) change_font_size(+1);
+    if (ImGui::MenuItem("Smaller text", "Ctrl+-")) change_font_size(-1);
+    if (ImGui::MenuItem("Default text size", "Ctrl+0")) change_font_size(0);
+    if (ImGui::BeginMenu("Theme")) {
+      for (const auto& [name, theme] : {std::pair{"Dark", Theme::Dark}, std::pair{"Light (projectors)", Theme::Light}}) {
+        if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) {
+          settings_.theme = theme;
+          look_changed_ = true;
+        }
+      }
+      ImGui::EndMenu();
+    }
+    ImGui::Separator();
     if (ImGui::MenuItem("Reset view", "Space")) reset_view();
     ImGui::EndMenu();
   }
@@ -95,13 +113,32 @@ void EditorApp::draw_menu_bar() {
   ImGui::EndMainMenuBar();
 }
 
+namespace {
+
+// Opens the modal popup `name` while `shown` holds, centred and at most `size` (within the window). Returns whether
+// it is open this frame (then call ImGui::EndPopup).
+bool begin_dialog(const char* name, bool& shown, ImVec2 size) {
+  if (!shown) return false;
+  if (!ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
+  const ImGuiViewport* main = ImGui::GetMainViewport();
+  ImGui::SetNextWindowPos(main->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
+  ImGui::SetNextWindowSize(ImVec2(std::min(size.x, main->Size.x * 0.9f), std::min(size.y, main->Size.y * 0.9f)),
+                           ImGuiCond_Appearing);
+  if (ImGui::BeginPopupModal(name, &shown)) return true;
+  shown = false;  // closed from outside (the popup stack was cleared)
+  return false;
+}
+
+void end_dialog(bool shown) {
+  if (!shown) ImGui::CloseCurrentPopup();
+  ImGui::EndPopup();
+}
+
+}  // namespace
+
 void EditorApp::draw_open_panel() {
-  if (!show_open_panel_) return;
-  ImGui::SetNextWindowSize(ImVec2(560, 420), ImGuiCond_Appearing);
-  if (!ImGui::Begin("Open or save", &show_open_panel_)) {
-    ImGui::End();
-    return;
-  }
+  const float em = ImGui::GetFontSize();
+  if (!begin_dialog("Open or save", show_open_panel_, ImVec2(40 * em, 30 * em))) return;
   if (open_path_input_.empty()) open_path_input_ = std::filesystem::current_path().string();
   if (input_path("path", open_path_input_) || ImGui::Button("Open")) {
     if (std::filesystem::is_directory(open_path_input_)) {
@@ -144,13 +181,13 @@ void EditorApp::draw_open_panel() {
   for (const std::string& path : std::deque<std::string>(recent_)) {
     if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
   }
-  ImGui::End();
+  end_dialog(show_open_panel_);
 }
 
 void EditorApp::draw_help_panel() {
-  if (!show_help_) return;
-  ImGui::SetNextWindowSize(ImVec2(460, 420), ImGuiCond_Appearing);
-  if (ImGui::Begin("Keys", &show_help_)) {
+  const float em = ImGui::GetFontSize();
+  if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
+  {
     const char* rows[][2] = {
         {"click", "select the vertex, edge, halfedge or face under the cursor"},
         {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
@@ -170,6 +207,10 @@ void EditorApp::draw_help_panel() {
         {"` (backquote)", "Lua console: `mesh` is the mesh shown, `selected` the selection; Up/Down for history"},
         {"P", "screenshot (PNG in the current folder)"},
         {"Ctrl+O", "open a file (or drop one on the window)"},
+        {"[  ]", "fold or unfold the left column (lesson) and the right column (tables)"},
+        {"Ctrl+=  Ctrl+-  Ctrl+0", "bigger, smaller, default text"},
+        {"Esc", "clear the selection"},
+        {"Ctrl+Shift+Z", "redo (as Ctrl+Y)"},
     };
     if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
       for (const auto& row : rows) {
@@ -181,7 +222,7 @@ void EditorApp::draw_help_panel() {
       ImGui::EndTable();
     }
   }
-  ImGui::End();
+  end_dialog(show_help_);
 }
 
 }  // namespace meshedit

@@ -7,9 +7,13 @@
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstdlib>
 #include <stdexcept>
 #include <utility>
+
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
@@ -22,7 +26,7 @@ std::string last_glfw_error() {
 
 }  // namespace
 
-GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
+GlfwWindow::GlfwWindow(const std::string& title, int width, int height, bool fit_to_screen) {
   if (!glfwInit()) {
     const char* display = std::getenv("DISPLAY");
     throw std::runtime_error("cannot open a window (" + last_glfw_error() + ")" +
@@ -34,6 +38,16 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 4);
+  if (fit_to_screen) {
+    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
+      int x = 0, y = 0, w = 0, h = 0;
+      glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
+      if (w > 0 && h > 0) {
+        width = std::min(width, w);
+        height = std::min(height, h);
+      }
+    }
+  }
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
     const std::string why = last_glfw_error();
@@ -62,11 +76,15 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height) {
   glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { note_input(w); });
   glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { note_input(w); });
   glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { note_input(w); });
+  glfwSetWindowContentScaleCallback(window_, [](GLFWwindow* w, float, float) {
+    static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->content_scale_changed_ = true;
+    note_input(w);
+  });
 
   IMGUI_CHECKVERSION();
   ImGui::CreateContext();
   ImGui::GetIO().IniFilename = nullptr;  // layout comes from code, not from a file beside the binary
-  ImGui::StyleColorsDark();
+  apply_theme(ImGui::GetStyle(), Theme::Dark);
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
   ImGui_ImplOpenGL3_Init("#version 330 core");
 }
@@ -100,6 +118,7 @@ void GlfwWindow::begin_frame() {
   quiet_frames_ = input_seen_ ? 0 : quiet_frames_ + 1;
   input_seen_ = false;
   ImGui_ImplOpenGL3_NewFrame();
+  frame_begun_ = true;
   ImGui_ImplGlfw_NewFrame();
   ImGui::NewFrame();
 }
@@ -133,5 +152,44 @@ std::vector<std::string> GlfwWindow::take_dropped_files() {
 bool GlfwWindow::take_drop_lost() { return std::exchange(drop_lost_, false); }
 
 void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
+
+int GlfwWindow::width() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  return w;
+}
+
+int GlfwWindow::height() const {
+  int w = 0, h = 0;
+  glfwGetWindowSize(window_, &w, &h);
+  return h;
+}
+
+float GlfwWindow::ui_scale() const {
+  float sx = 1.0f, sy = 1.0f;
+  glfwGetWindowContentScale(window_, &sx, &sy);
+  const int w = width();
+  const float dense = w > 0 ? float(framebuffer_width()) / float(w) : 1.0f;  // framebuffer pixels per coordinate
+  const float scale = std::max(sx, 0.5f) / std::max(dense, 1.0f);
+  return std::isfinite(scale) ? std::clamp(scale, 0.5f, 4.0f) : 1.0f;
+}
+
+bool GlfwWindow::take_content_scale_changed() { return std::exchange(content_scale_changed_, false); }
+
+FontsLoaded GlfwWindow::apply_look(float font_px, Theme theme) {
+  const float scale = ui_scale();
+  const int w = width();
+  const float dense = w > 0 ? std::max(1.0f, float(framebuffer_width()) / float(w)) : 1.0f;
+  const FontsLoaded fonts = load_fonts(font_px, scale, dense);
+  ImGuiStyle style;
+  apply_theme(style, theme);
+  style.ScaleAllSizes(scale);
+  ImGui::GetStyle() = style;
+  if (frame_begun_) {  // before the first frame, the backend's first NewFrame uploads the atlas itself
+    ImGui_ImplOpenGL3_DestroyFontsTexture();
+    ImGui_ImplOpenGL3_CreateFontsTexture();
+  }
+  return fonts;
+}
 
 }  // namespace meshedit

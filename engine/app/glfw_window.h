@@ -4,11 +4,19 @@
 //
 // Input is read through ImGui's io each frame (keys, mouse, wheel), so the app has one input path;
 // files dropped on the window are queued and handed out by take_dropped_files().
+//
+// Size: asked for a size with fit_to_screen, the window opens no larger than the primary monitor's work area (a
+// 1280x800 window on a 1024x640 screen opens at the screen's size). Look: apply_look sets the fonts (ui/fonts.h) at
+// the text size times the monitor's content scale, the theme's colours and the style's sizes at that scale, and
+// uploads the font atlas again; call it outside a frame (before begin_frame), again when content_scale_changed().
 #pragma once
 
 #include <functional>
 #include <string>
 #include <vector>
+
+#include "ui/fonts.h"
+#include "ui/settings.h"
 
 struct GLFWwindow;
 
@@ -16,7 +24,7 @@ namespace meshedit {
 
 class GlfwWindow {
  public:
-  GlfwWindow(const std::string& title, int width, int height);
+  GlfwWindow(const std::string& title, int width, int height, bool fit_to_screen = false);
   ~GlfwWindow();
   GlfwWindow(const GlfwWindow&) = delete;
   GlfwWindow& operator=(const GlfwWindow&) = delete;
@@ -40,6 +48,16 @@ class GlfwWindow {
   // True once after a drop whose paths could not all be queued (memory ran out in GLFW's callback).
   bool take_drop_lost();
   void set_title(const std::string& title);
+  // The window's size in screen coordinates (what the settings remember).
+  int width() const;
+  int height() const;
+  // The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one) divided by how many framebuffer pixels
+  // a window coordinate holds (2 on macOS's Retina screens, where ImGui's coordinates are points).
+  float ui_scale() const;
+  // True once after the window moved to a monitor of another content scale.
+  bool take_content_scale_changed();
+  // Applies the text size (pixels at content scale 1) and the theme; returns what the fonts became.
+  FontsLoaded apply_look(float font_px, Theme theme);
 
  private:
   static void note_input(GLFWwindow* window);
@@ -47,6 +65,8 @@ class GlfwWindow {
   GLFWwindow* window_ = nullptr;
   std::vector<std::string> dropped_;
   bool drop_lost_ = false;
+  bool content_scale_changed_ = false;
+  bool frame_begun_ = false;  // the backend made its GL objects (the first begin_frame)
   bool lazy_ = true;
   bool input_seen_ = true;  // set by the input callbacks, cleared each frame
   int quiet_frames_ = 0;    // frames since the last input

@@ -14,12 +14,11 @@ constexpr size_t kMaxLabelledFaces = 120;
 
 }  // namespace
 
-void EditorApp::draw_id_labels(int width, int height) {
+void EditorApp::draw_id_labels() {
   const HalfedgeMesh& mesh = doc_.mesh;
   if (mesh.num_faces() > kMaxLabelledFaces) return;
-  const ImGuiIO& io = ImGui::GetIO();
-  const float to_window_x = width > 0 ? io.DisplaySize.x / float(width) : 1.0f;
-  const float to_window_y = height > 0 ? io.DisplaySize.y / float(height) : 1.0f;
+  const float to_window_x = layout_.view.width / float(std::max(1, view_pixels_.width));
+  const float to_window_y = layout_.view.height / float(std::max(1, view_pixels_.height));
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   const glm::dvec3 eye = camera_.eye();
 
@@ -36,7 +35,7 @@ void EditorApp::draw_id_labels(int width, int height) {
     const ScreenPoint s = camera_.project(where, viewport());
     if (!s.in_front) return;
     const std::string text = format_id(element);
-    const ImVec2 at(float(s.pixel.x) * to_window_x, float(s.pixel.y) * to_window_y);
+    const ImVec2 at(layout_.view.x + float(s.pixel.x) * to_window_x, layout_.view.y + float(s.pixel.y) * to_window_y);
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     const ImVec2 corner(at.x - size.x * 0.5f, at.y - size.y * 0.5f);
     draw->AddRectFilled(ImVec2(corner.x - 2, corner.y - 1), ImVec2(corner.x + size.x + 2, corner.y + size.y + 1),

@@ -3,7 +3,7 @@
 // between frames, then closes the window; the exit status is 0 when every `expect` held, 3 otherwise.
 //
 //   # comment                      frames N            key F | key ctrl+Z | key shift+S
-//   select h12                     click X Y           (framebuffer pixels, top-left origin)
+//   select h12                     click X Y           (view pixels, below)
 //   hover X Y                      open PATH           save PATH           screenshot PATH
 //   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
 //   expect-message TEXT...         expect-valid        quit
@@ -18,6 +18,11 @@
 //   expect-gpu-update patch|rebuild   (how the mesh view's last geometry update went: the slots an edit touched
 //                          rewritten in place, or everything rebuilt; made by the next frame, which the check
 //                          waits for)
+//   click X Y             (view pixels: framebuffer pixels from the view's top-left corner, as picking counts them)
+//   click-on h12          (a click where the element's label anchor is on screen: a vertex's position, an edge's
+//                          midpoint, a face's centre, a halfedge's arrow; fails when it is not in the view)
+//   layout-json PATH      (writes the window's layout as JSON: app/layout_report.h)
+//   key names: a letter, space, escape, grave, equal (=), minus (-), 0, [ and ], with ctrl+ and shift+
 #pragma once
 
 #include <string>

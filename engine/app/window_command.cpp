@@ -1,6 +1,12 @@
 // `meshedit [FILE] [--actions SCRIPT] [--size WxH]`: the window. Runs the frame loop, feeds dropped files
 // to the app, and plays scripted actions (action_player.h) one per frame for GUI tests.
+//
+// Settings (ui/settings.h) are read at start and written when the window closes: the window opens at the size it
+// had (never larger than the screen's work area), with the columns, text size and theme it had. --size opens it at
+// that size exactly and is not remembered. A settings file that cannot be read or written is a warning on stderr.
+#include <algorithm>
 #include <chrono>
+#include <filesystem>
 #include <cstdio>
 #include <iostream>
 
@@ -16,19 +22,24 @@ namespace meshedit {
 int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
   const auto script = take_option(args, "--actions");
-  const std::string size = take_option(args, "--size").value_or("1280x800");
+  const auto size = take_option(args, "--size");
   reject_unknown_options(args);
   if (args.size() > 1) throw UsageError("the window opens at most one file");
-  int width = 1280, height = 800;
-  if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 200 || height < 150 || width > 16384 ||
-      height > 16384) {
+  std::vector<std::string> warnings;
+  const std::filesystem::path settings_file = settings_path();
+  const Settings settings = read_settings(settings_file, warnings);
+  for (const std::string& warning : warnings) std::cerr << "meshedit: settings: " << warning << "\n";
+  int width = settings.window_width, height = settings.window_height;
+  if (size && (std::sscanf(size->c_str(), "%dx%d", &width, &height) != 2 || width < 200 || height < 150 ||
+               width > 16384 || height > 16384)) {
     throw UsageError("--size must look like 1280x800");
   }
   ActionPlayer player(script ? read_actions(*script) : std::vector<ScriptedAction>{}, std::cerr);
 
-  GlfwWindow window(EditorApp::kStartTitle, width, height);
+  GlfwWindow window(EditorApp::kStartTitle, width, height, /*fit_to_screen=*/!size);
   window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
+  app.apply_settings(settings);
   app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
   if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
 
@@ -36,6 +47,11 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   float frame_ms = 0.0f;
   while (!window.should_close() && !app.quit_requested()) {
     window.set_lazy(!player.active() && !app.animating());
+    if (app.take_look_change() | window.take_content_scale_changed()) {  // both read: each clears its flag
+      const FontsLoaded fonts = window.apply_look(app.settings().font_px, app.settings().theme);
+      if (!fonts.warning.empty()) std::cerr << "meshedit: " << fonts.warning << "\n";
+      app.fonts_applied(fonts);
+    }
     window.begin_frame();
     app.open_dropped(window.take_dropped_files());
     if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
@@ -46,6 +62,19 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     frame_ms = std::chrono::duration<float, std::milli>(now - last).count();
     last = now;
     if (player.active() && !player.step(app)) break;
+  }
+  Settings kept = app.settings();
+  if (!size && window.width() > 0 && window.height() > 0) {  // a minimised window keeps the size it had
+    kept.window_width = std::clamp(window.width(), Settings::kMinWindowWidth, Settings::kMaxWindowSide);
+    kept.window_height = std::clamp(window.height(), Settings::kMinWindowHeight, Settings::kMaxWindowSide);
+  } else {
+    kept.window_width = settings.window_width;
+    kept.window_height = settings.window_height;
+  }
+  if (!settings_file.empty()) {
+    if (const std::string why = write_settings(settings_file, kept); !why.empty()) {
+      std::cerr << "meshedit: settings not saved: " << why << "\n";
+    }
   }
   if (player.active()) {
     out << "actions: " << (player.failures() == 0 ? "all expectations held" : "some expectations failed") << "\n";

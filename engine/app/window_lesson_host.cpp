@@ -38,6 +38,8 @@ void WindowLessonHost::camera(const CameraRequest& request) {
   if (request.target) camera.set_target(*request.target);
 }
 
+void WindowLessonHost::view(const ViewRequest& request) { app_.apply_view_request(request); }
+
 std::shared_ptr<HalfedgeMesh> WindowLessonHost::current_mesh() const {
   if (app_.mode() != ViewMode::Mesh) return nullptr;
   return std::make_shared<HalfedgeMesh>(app_.document().mesh);

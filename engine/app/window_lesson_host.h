@@ -37,6 +37,7 @@ class WindowLessonHost : public LessonHost {
   void label(ElementRef element, const std::string& text) override;
   void clear_annotations() override;
   void camera(const CameraRequest& request) override;
+  void view(const ViewRequest& request) override;
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override;
 

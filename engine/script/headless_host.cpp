@@ -96,6 +96,18 @@ void HeadlessHost::camera(const CameraRequest& request) {
   cameras_.push_back(request);
 }
 
+void HeadlessHost::view(const ViewRequest& request) {
+  std::string line = "view";
+  const std::pair<const char*, const std::optional<bool>*> parts[] = {{"halfedges", &request.halfedges},
+                                                                      {"wireframe", &request.wireframe},
+                                                                      {"vertices", &request.vertices},
+                                                                      {"labels", &request.labels}};
+  for (const auto& [name, value] : parts) {
+    if (*value) line += std::string(" ") + name + (**value ? "=on" : "=off");
+  }
+  calls_.push_back(line);
+}
+
 std::shared_ptr<HalfedgeMesh> HeadlessHost::current_mesh() const {
   return screen_mesh_ ? std::make_shared<HalfedgeMesh>(*screen_mesh_) : nullptr;
 }

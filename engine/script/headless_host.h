@@ -5,7 +5,8 @@
 // Invariants:
 // - calls() holds one line per LessonHost call, in order: "show_mesh (8 vertices, 18 edges, 12 faces)",
 //   "show_curve 4 points", "show_patches 32", "highlight e7 #ff8000", "label v0 \"apex\"",
-//   "clear_annotations", "camera fit", "camera yaw=30 pitch=20 distance=4 target=(0, 0, 0)".
+//   "clear_annotations", "camera fit", "camera yaw=30 pitch=20 distance=4 target=(0, 0, 0)",
+//   "view halfedges=on labels=off".
 // - The screen mesh is a copy taken when show_mesh is called (as the window's document would be); the
 //   pointer the lesson passed is kept too (shown_mesh()). set_current_mesh replaces the screen mesh, the
 //   way a student's edit in the window would. Showing a mesh clears the selection; showing a curve or
@@ -33,6 +34,7 @@ class HeadlessHost : public LessonHost {
   void label(ElementRef element, const std::string& text) override;
   void clear_annotations() override;
   void camera(const CameraRequest& request) override;
+  void view(const ViewRequest& request) override;  // recorded as "view halfedges=on wireframe=off
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override { return selection_; }
 

@@ -540,6 +540,27 @@ int api_camera(lua_State* L) {
   return 0;
 }
 
+int api_view(lua_State* L) {
+  require_step(L, "view()");
+  if (!lua_istable(L, 1)) raise(L, "view: expected a table like {halfedges=true, labels=false}");
+  check_fields(L, 1, "view", {"halfedges", "wireframe", "vertices", "labels"});
+  ViewRequest request;
+  const std::pair<const char*, std::optional<bool>*> fields[] = {{"halfedges", &request.halfedges},
+                                                                 {"wireframe", &request.wireframe},
+                                                                 {"vertices", &request.vertices},
+                                                                 {"labels", &request.labels}};
+  for (const auto& [name, out] : fields) {
+    lua_getfield(L, 1, name);
+    if (!lua_isnil(L, -1)) {
+      if (!lua_isboolean(L, -1)) raise(L, std::string("view: ") + name + " must be true or false");
+      *out = bool(lua_toboolean(L, -1));
+    }
+    lua_pop(L, 1);
+  }
+  script_of(L).host->view(request);
+  return 0;
+}
+
 int api_current_mesh(lua_State* L) {
   require_step(L, "current_mesh()");
   std::shared_ptr<HalfedgeMesh> mesh = script_of(L).host->current_mesh();
@@ -648,6 +669,7 @@ void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
   set_function(L, script, "label", lesson_guarded<api_label>);
   set_function(L, script, "clear", lesson_guarded<api_clear>);
   set_function(L, script, "camera", lesson_guarded<api_camera>);
+  set_function(L, script, "view", lesson_guarded<api_view>);
   set_function(L, script, "current_mesh", lesson_guarded<api_current_mesh>);
   set_function(L, script, "selection", lesson_guarded<api_selection>);
   set_function(L, script, "lesson_file", lesson_guarded<api_lesson_file>);

@@ -41,6 +41,15 @@ struct CameraRequest {
   std::optional<glm::dvec3> target;    // the point the camera orbits
 };
 
+// What `view{...}` asks for: each field present turns that part of the mesh view on or off; absent fields keep
+// what the student chose. The mesh's own size class sets them again when it changes (a subdivision, another mesh).
+struct ViewRequest {
+  std::optional<bool> halfedges;  // the halfedge arrows inside their faces
+  std::optional<bool> wireframe;
+  std::optional<bool> vertices;
+  std::optional<bool> labels;     // the id labels (v3, e5, h12...)
+};
+
 class LessonHost {
  public:
   virtual ~LessonHost() = default;
@@ -57,6 +66,7 @@ class LessonHost {
   virtual void clear_annotations() = 0;
 
   virtual void camera(const CameraRequest& request) = 0;
+  virtual void view(const ViewRequest& request) = 0;
 
   // ---- what the student sees and has done ----
   // A copy of the mesh on screen (with the student's edits), or nullptr when none is shown.

@@ -14,6 +14,7 @@
 #include <imgui.h>
 
 #include "ui/bezier_mine.h"
+#include "ui/flow_layout.h"
 
 namespace meshedit {
 
@@ -418,8 +419,11 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
                 mine_message_colour(*yours, shown), line.c_str(), nullptr, std::max(size.x - 16.0f, 50.0f));
   }
-  dl->AddText(ImVec2(p0.x + 8.0f, p1.y - ImGui::GetTextLineHeight() - 6.0f), IM_COL32(150, 150, 160, 255),
-              "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine");
+  const char* hint = "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine";
+  const float wrap = std::max(size.x - 16.0f, 50.0f);
+  const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p1.y - hint_size.y - 6.0f),
+              IM_COL32(150, 150, 160, 255), hint, nullptr, wrap);
   dl->PopClipRect();
 }
 
@@ -500,25 +504,25 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
 
 }  // namespace
 
-void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
+void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
   const int n = point_count(state);
   if (ImGui::Button("Step (E)")) step_level(state);
-  ImGui::SameLine();
+  same_line_if_room("Curve (C)");
   bool show_curve = state.show_curve;
   if (ImGui::Checkbox("Curve (C)", &show_curve)) toggle_curve(state);
-  ImGui::SameLine();
+  same_line_if_room("Split at t");
   bool show_split = state.show_split;
   if (ImGui::Checkbox("Split at t", &show_split)) toggle_split(state);
-  ImGui::SameLine();
+  same_line_if_room("Add point");
   if (ImGui::Button("Add point")) add_point_default(state);
-  ImGui::SameLine();
+  same_line_if_room("Remove last");
   ImGui::BeginDisabled(n <= 2);
   if (ImGui::Button("Remove last")) remove_point(state, n - 1);
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  same_line_if_room("Fit view");
   if (ImGui::Button("Fit view")) fit_view(state);
   if (mine) {
-    ImGui::SameLine();
+    same_line_if_room("mine (M)");
     bool on = mine->curve_on();
     if (ImGui::Checkbox("mine (M)", &on)) mine->set_curve_on(on);
     if (ImGui::IsItemHovered()) {
@@ -532,7 +536,19 @@ void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
   const double t_max = 1.0;
   ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - 60.0f, 100.0f));
   if (ImGui::SliderScalar("t", ImGuiDataType_Double, &t, &t_min, &t_max, "%.4f")) set_t(state, t);
+}
 
+void draw_curve_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
+  draw_canvas(state, ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f)), mine);
+}
+
+void draw_curve_levels(CurveEditorState& state, BezierMine* mine) {
+  // The canvas computed this frame's levels: reading them back runs no Lua.
+  draw_level_table(state, mine && mine->curve_on() ? &mine->curve() : nullptr);
+}
+
+void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
+  draw_curve_controls(state, mine);
   const ImVec2 avail = ImGui::GetContentRegionAvail();
   const float line = ImGui::GetFrameHeightWithSpacing();
   const float table_height = std::clamp(avail.y * 0.3f, 3.0f * line, 12.0f * line);
@@ -540,8 +556,7 @@ void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
   draw_canvas(state, canvas_size, mine);
 
   ImGui::BeginChild("level_table", ImVec2(0.0f, 0.0f), false);
-  // The canvas computed this frame's levels: reading them back runs no Lua.
-  draw_level_table(state, mine && mine->curve_on() ? &mine->curve() : nullptr);
+  draw_curve_levels(state, mine);
   ImGui::EndChild();
 }
 

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include <glm/vec2.hpp>
+#include <imgui.h>
 
 #include "core/bezier.h"
 
@@ -160,5 +161,10 @@ void handle_canvas_input(CurveEditorState& state, const CanvasInput& input);
 void draw_curve_editor(CurveEditorState& state, const char* title = "Curve editor", BezierMine* mine = nullptr);
 // The same contents drawn into the current window or child (for embedding).
 void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine = nullptr);
+// Its three parts, for a window that places them apart (the app: the canvas in the view, the rest beside it).
+// The canvas computes the frame's levels (running the student's code when "mine" is on): draw it before the levels.
+void draw_curve_controls(CurveEditorState& state, BezierMine* mine = nullptr);  // the buttons and the t slider
+void draw_curve_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine = nullptr);
+void draw_curve_levels(CurveEditorState& state, BezierMine* mine = nullptr);  // the table of every level's points
 
 }  // namespace meshedit

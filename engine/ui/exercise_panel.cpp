@@ -206,10 +206,13 @@ void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, Me
   session.sync(doc);
   if (!state.open) return;
   ImGui::SetNextWindowSize(ImVec2(520, 640), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Exercises", &state.open)) {
-    ImGui::End();
-    return;
-  }
+  if (ImGui::Begin("Exercises", &state.open)) draw_exercise_panel_contents(session, state, doc, selection);
+  ImGui::End();
+}
+
+void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
+                                  Selection& selection) {
+  session.sync(doc);
   const ExerciseInfo& active = exercise_info(session.exercise());
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("exercise", active.title)) {
@@ -250,7 +253,6 @@ void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, Me
   } else if (session.load_error().empty()) {
     ImGui::TextDisabled("select an element and press Run mine");
   }
-  ImGui::End();
 }
 
 }  // namespace meshedit

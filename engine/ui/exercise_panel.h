@@ -47,6 +47,9 @@ struct ExercisePanelState {
 };
 
 // Draws the "Exercises" window (nothing when state.open is false).
+// The same contents drawn into the current window or tab (state.open is the caller's to honour).
+void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
+                                  Selection& selection);
 void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
                          Selection& selection);
 

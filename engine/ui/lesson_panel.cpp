@@ -113,10 +113,11 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
 void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
   if (!state.open) return;
   const std::string title = (runner.loaded() ? runner.title() : std::string("Lessons")) + "###lesson";
-  if (!ImGui::Begin(title.c_str(), &state.open)) {
-    ImGui::End();
-    return;
-  }
+  if (ImGui::Begin(title.c_str(), &state.open)) draw_lesson_panel_contents(runner, state);
+  ImGui::End();
+}
+
+void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   if (!runner.error().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
     ImGui::TextWrapped("%s", runner.error().c_str());
@@ -125,7 +126,6 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
   }
   if (!runner.loaded()) {
     draw_lesson_list(state);
-    ImGui::End();
     return;
   }
   const std::vector<std::string> steps = runner.step_titles();
@@ -143,12 +143,15 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
   ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing()), false);
   draw_step_body(runner);
   ImGui::EndChild();
+  if (state.probe) state.probe->record_last_item("lesson-text");
   ImGui::BeginDisabled(current == 0);
   if (ImGui::Button("< Back")) runner.back();
+  if (state.probe) state.probe->record_last_item("lesson-back");
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(current + 1 >= steps.size());
   if (ImGui::Button("Next >")) runner.next();
+  if (state.probe) state.probe->record_last_item("lesson-next");
   ImGui::EndDisabled();
   ImGui::SameLine();
   if (ImGui::Button("Reload")) run_reload(runner, state);
@@ -157,7 +160,6 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
     refresh_lessons(state);
     state.requested = fs::path();  // empty: back to the list
   }
-  ImGui::End();
 }
 
 }  // namespace meshedit

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "script/lesson_runner.h"
+#include "ui/element_link.h"
 
 namespace meshedit {
 
@@ -37,6 +38,7 @@ struct LessonPanelState {
   double since_check = 0.0;
   // How Reload and hot reload reload the lesson; empty: reload_runner.
   std::function<ReloadOutcome(LessonRunner&)> reload;
+  UiProbe* probe = nullptr;  // where the step's text ("lesson-text") and Back and Next were drawn (layout checks)
 };
 
 // The runner's own reload(), told as a ReloadOutcome (LessonRunner::out_of_memory for OutOfMemory).
@@ -58,5 +60,7 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
 // Draws the panel. A lesson picked from the list is left in state.requested for the caller to load (the app
 // also has to switch views).
 void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state);
+// The same contents drawn into the current window (the app's left column).
+void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state);
 
 }  // namespace meshedit

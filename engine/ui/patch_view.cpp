@@ -16,6 +16,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "ui/bezier_mine.h"
+#include "ui/flow_layout.h"
 
 namespace meshedit {
 
@@ -252,13 +253,13 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
   const bool v_changed = ImGui::SliderScalar("v", ImGuiDataType_Double, &v, &zero, &one, "%.4f");
   if (u_changed || v_changed) set_probe(state, u, v);
   ImGui::Checkbox("control net", &state.show_control_net);
-  ImGui::SameLine();
+  same_line_if_room("surface");
   ImGui::Checkbox("surface", &state.show_surface);
-  ImGui::SameLine();
+  same_line_if_room("probe");
   ImGui::Checkbox("probe", &state.show_probe);
   const PatchMinePoint* yours = nullptr;
   if (mine) {
-    ImGui::SameLine();
+    same_line_if_room("mine (M)");
     bool on = mine->patch_on();
     if (ImGui::Checkbox("mine (M)", &on)) mine->set_patch_on(on);
     if (ImGui::IsItemHovered()) {
@@ -273,13 +274,13 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
 
   update_tessellation(state);
   const PatchTessellation& cache = state.tessellation;
-  ImGui::Text("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
+  ImGui::TextWrapped("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
               cache.polygons.num_faces(), static_cast<unsigned long long>(cache.rebuilds));
   if (!cache.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", cache.error.c_str());
   if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 
   ImGui::Separator();
-  ImGui::TextUnformatted("Separable evaluation: each row at u, then the column through them at v");
+  ImGui::TextWrapped("Separable evaluation: each row at u, then the column through them at v");
   draw_evaluation_table(state, yours);
 }
 

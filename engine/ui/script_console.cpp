@@ -190,10 +190,12 @@ void draw_console_panel(ScriptConsole& console, ConsolePanelState& state, MeshDo
                         const Selection& selection) {
   if (!state.open) return;
   ImGui::SetNextWindowSize(ImVec2(560, 260), ImGuiCond_FirstUseEver);
-  if (!ImGui::Begin("Console", &state.open)) {
-    ImGui::End();
-    return;
-  }
+  if (ImGui::Begin("Console", &state.open)) draw_console_panel_contents(console, state, doc, selection);
+  ImGui::End();
+}
+
+void draw_console_panel_contents(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
+                                 const Selection& selection) {
   const float input_height = ImGui::GetFrameHeightWithSpacing();
   ImGui::BeginChild("transcript", ImVec2(0, -input_height), false, ImGuiWindowFlags_HorizontalScrollbar);
   for (const ConsoleEntry& entry : console.entries()) {
@@ -220,7 +222,6 @@ void draw_console_panel(ScriptConsole& console, ConsolePanelState& state, MeshDo
     state.focus_input = true;  // Enter keeps the keyboard in the console
     state.scroll_to_bottom = true;
   }
-  ImGui::End();
 }
 
 }  // namespace meshedit

@@ -90,6 +90,9 @@ struct ConsolePanelState {
 };
 
 // Draws the console window (a transcript and an input line with Up/Down history). Running a line happens here.
+// The same contents (transcript and input line) drawn into the current window.
+void draw_console_panel_contents(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
+                                 const Selection& selection);
 void draw_console_panel(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
                         const Selection& selection);
 

@@ -1,6 +1,7 @@
 // The status bar (see status_bar.h).
 #include "ui/status_bar.h"
 
+#include <cmath>
 #include <string>
 
 #include <imgui.h>
@@ -47,7 +48,8 @@ void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& st
 
 float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& state, float frame_ms) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  const float height = ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y * 2.0f;
+  // Whole pixels, as the window layout counts them (ui/window_layout.h).
+  const float height = std::ceil(ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y * 2.0f);
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x, viewport->WorkPos.y + viewport->WorkSize.y - height));
   ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x, height));
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
@@ -55,12 +57,14 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("##status bar", nullptr, flags)) {
     const HalfedgeMesh& mesh = doc.mesh;
-    const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
-    ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(),
-                mesh.num_faces(), mesh.num_halfedges(), mesh.num_boundaries(), chi);
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
-    ImGui::SameLine(0.0f, 24.0f);
-    draw_validation(doc, selection, state);
+    if (state.mesh_shown) {
+      const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
+      ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(),
+                  mesh.num_faces(), mesh.num_halfedges(), mesh.num_boundaries(), chi);
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
+      ImGui::SameLine(0.0f, 24.0f);
+      draw_validation(doc, selection, state);
+    }
     if (!doc.message.text.empty()) {
       ImGui::SameLine(0.0f, 24.0f);
       ImGui::TextColored(severity_color(doc.message.severity), "%s", doc.message.text.c_str());

@@ -23,6 +23,7 @@ namespace meshedit {
 struct StatusBarState {
   size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
   UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
+  bool mesh_shown = true;  // the mesh view is on screen: counts and validation (else the message line only)
   std::string note;  // a standing remark from the view ("large mesh: wireframe off (W)"); "" for none
 };
 

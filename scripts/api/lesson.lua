@@ -67,6 +67,16 @@ function clear() end
 ---@param spec "fit"|"reset"|CameraSpec
 function camera(spec) end
 
+---@class ViewSpec
+---@field halfedges? boolean the halfedge arrows inside their faces (on by default for small meshes)
+---@field wireframe? boolean
+---@field vertices? boolean
+---@field labels? boolean the id labels (v3, e5, h12...)
+
+---Turns parts of the mesh view on or off; fields left out keep what the student chose.
+---@param spec ViewSpec
+function view(spec) end
+
 ---A copy of the mesh on screen (with the student's edits), or nil.
 ---@return Mesh?
 function current_mesh() end

@@ -19,14 +19,16 @@ namespace meshedit::testing {
 namespace fs = std::filesystem;
 
 
-// An X server for the test: the existing DISPLAY, or an Xvfb started here and stopped at the end.
+// An X server for the test: the existing DISPLAY, or an Xvfb started here and stopped at the end. Given a screen
+// size ("1024x640"), always an Xvfb of its own with a screen of that size.
 class XServer {
  public:
-  XServer() {
-    if (const char* display = std::getenv("DISPLAY"); display && *display) {
+  explicit XServer(const std::string& screen = "") {
+    if (const char* display = std::getenv("DISPLAY"); screen.empty() && display && *display) {
       display_ = display;
       return;
     }
+    const std::string screen_depth = (screen.empty() ? std::string("1280x800") : screen) + "x24";
     if (std::system("command -v Xvfb >/dev/null 2>&1") != 0) return;
     // Two tests started together may pick the same number: the Xvfb that loses the lock exits, and its test tries
     // the next number instead of borrowing the winner's server (which goes away when the winner's test ends).
@@ -36,7 +38,7 @@ class XServer {
       pid_ = ::fork();
       if (pid_ == 0) {
         const std::string name = ":" + std::to_string(number);
-        ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", "1280x800x24", "-nolisten", "tcp", (char*)nullptr);
+        ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", screen_depth.c_str(), "-nolisten", "tcp", (char*)nullptr);
         ::_exit(127);
       }
       bool exited = false;
@@ -74,13 +76,18 @@ struct WindowRun {
   std::string output;
 };
 
-inline WindowRun run_window(const std::string& display, const fs::path& mesh, const std::string& actions, const fs::path& dir) {
+// Runs the window on `mesh` with the actions. `size` is the --size option ("" for none: the window opens at the size
+// its settings remember, within the screen); `environment` goes before the command ("NAME=value ...").
+inline WindowRun run_window(const std::string& display, const fs::path& mesh, const std::string& actions, const fs::path& dir,
+                            const std::string& size = "1280x800", const std::string& environment = "") {
   const fs::path script = dir / "actions.txt";
   std::ofstream(script) << actions;
   const fs::path log = dir / "log.txt";
-  const std::string command = "DISPLAY=" + display + " timeout 120 '" + std::string(MESHEDIT_BINARY) + "' '" +
-                              mesh.string() + "' --size 1280x800 --actions '" + script.string() + "' >'" +
-                              log.string() + "' 2>&1";
+  // Settings live in the test's folder: no test reads or changes another's (or the user's) settings.
+  const std::string command = "XDG_CONFIG_HOME='" + dir.string() + "' " + environment + " DISPLAY=" + display +
+                              " timeout 120 '" + std::string(MESHEDIT_BINARY) + "' '" + mesh.string() + "'" +
+                              (size.empty() ? std::string() : " --size " + size) + " --actions '" + script.string() +
+                              "' >'" + log.string() + "' 2>&1";
   WindowRun run;
   const int raw = std::system(command.c_str());
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

@@ -103,6 +103,31 @@ end)
   EXPECT_EQ(host.screen_mesh()->num_faces(), 12u);
 }
 
+TEST(LessonRunner, ViewTurnsPartsOfTheMeshViewOnAndOff) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(write_lesson(testing::scratch_dir(), R"lua(step("View", function()
+  view { halfedges = true, labels = false }
+  view { wireframe = false, vertices = true }
+end)
+step("Wrong type", function()
+  view { halfedges = 1 }
+end)
+step("Unknown part", function()
+  view { arrows = true }
+end)
+)lua"))) << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Finished) << runner.error();
+  EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "view halfedges=on labels=off", "view wireframe=off vertices=on"}));
+  runner.next();
+  EXPECT_EQ(runner.step_state(), State::Failed);
+  EXPECT_NE(runner.error().find("view: halfedges must be true or false"), std::string::npos) << runner.error();
+  EXPECT_EQ(runner.error().rfind("lesson.lua:6: ", 0), 0u) << runner.error();  // the lesson's line
+  runner.next();
+  EXPECT_EQ(runner.step_state(), State::Failed);
+  EXPECT_NE(runner.error().find("arrows"), std::string::npos) << runner.error();
+}
+
 TEST(LessonRunner, ShowTakesTheLessonsOwnMeshObject) {
   HeadlessHost host;
   LessonRunner runner(host);

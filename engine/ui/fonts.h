@@ -1,0 +1,33 @@
+// The window's type: Debian's DejaVu Sans for text and DejaVu Sans Mono for ids and tables, rasterised at the size
+// the student chose times the monitor's content scale, so text is sharp on HiDPI screens. Without the font files
+// ImGui's own font is used and the warning says which file was missing.
+//
+// Invariants:
+// - load_fonts replaces everything in ImGui's font atlas: the first font is the text font (ImGui's default), the
+//   second the monospace one. The caller uploads the atlas again (the window's backend) before the next frame.
+// - mono_font() is never null while an ImGui context exists: the text font stands in when there is no second one.
+// - The font files are looked up in MESHEDIT_FONT_DIR when it is set (tests point it at a folder without them), else
+//   in Debian's folder for fonts-dejavu-core.
+#pragma once
+
+#include <string>
+
+struct ImFont;
+
+namespace meshedit {
+
+struct FontsLoaded {
+  bool real = false;     // DejaVu was found and loaded
+  float pixels = 0.0f;   // the text font's height in framebuffer pixels
+  std::string warning;   // why ImGui's font stands in ("" when real)
+};
+
+// Builds the atlas for text of `font_px` at content scale `scale` (pixels = font_px * scale), rasterised at
+// `raster_scale` times that and drawn at 1 / raster_scale (for a framebuffer denser than the window's coordinates).
+// Needs a current ImGui context, outside a frame.
+FontsLoaded load_fonts(float font_px, float scale, float raster_scale = 1.0f);
+
+// The monospace font, for ids, pointer tables and code.
+ImFont* mono_font();
+
+}  // namespace meshedit
