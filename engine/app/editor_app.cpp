@@ -75,7 +75,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   draw_menu_bar();
   switch (mode_) {
     case ViewMode::Mesh:
-      draw_mesh_view(viewport_width_, viewport_height_);
+      draw_mesh_view();
       break;
     case ViewMode::Patches:
       draw_patch_view();
@@ -89,12 +89,14 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
       break;
     }
   }
+  const ImGuiIO& io = ImGui::GetIO();
+  draw_labels(0.0f, 0.0f, io.DisplaySize.x, io.DisplaySize.y, viewport());  // the view fills the window
   draw_view_panels(frame_ms);
   draw_open_panel();
   draw_help_panel();
 }
 
-void EditorApp::draw_mesh_view(int width, int height) {
+void EditorApp::draw_mesh_view() {
   // The document's last change lets the renderer rewrite only what an edit touched (it checks the versions): a local
   // edit by its patch, a listed whole-mesh change by the copy of the state before.
   MeshRenderer::MeshChange change;
@@ -129,8 +131,7 @@ void EditorApp::draw_mesh_view(int width, int height) {
   highlights.changed = doc_.last.index.elements();
   highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
-  if (show_labels_) draw_id_labels(width, height);
-  draw_lesson_marks(width, height);
+  draw_lesson_marks();
 }
 
 void EditorApp::apply_size_defaults() {

@@ -35,6 +35,7 @@
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
 #include "render/camera.h"
+#include "render/label_placement.h"
 #include "render/mesh_renderer.h"
 #include "render/overlay_renderer.h"
 #include "render/shader_library.h"
@@ -148,14 +149,18 @@ class EditorApp {
   static std::string window_title(const std::string& name);
   // The files opened or saved lately, the latest first (File > Open recent).
   const std::deque<std::string>& recent_files() const { return recent_; }
+  // The labels the last frame drew over the mesh view (id and lesson labels, window coordinates) and how many it dropped.
+  const LabelPlacement& last_labels() const { return last_labels_; }
 
  private:
   void run_frame(int width, int height, float frame_ms);  // frame() without its guard
   void read_mouse_and_keys(int width, int height);
-  void draw_mesh_view(int width, int height);
+  void draw_mesh_view();
   void apply_size_defaults();
   void draw_patch_view();
-  void draw_id_labels(int width, int height);
+  // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window
+  // coordinates; `framebuffer` is the view's size in framebuffer pixels, which the camera projects to.
+  void draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer);
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
@@ -172,7 +177,7 @@ class EditorApp {
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
-  void draw_lesson_marks(int width, int height);
+  void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
   void draw_lesson();
@@ -185,6 +190,7 @@ class EditorApp {
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;
+  LabelPlacement last_labels_;
   bool large_mesh_ = false;  // the shown mesh is past RenderStyle::large_mesh_triangles (apply_size_defaults)
   // Why the renderer refused the document's mesh (too large to draw) at this generation and version; "" when drawn.
   std::string undrawable_;
