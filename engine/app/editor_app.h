@@ -149,7 +149,8 @@ class EditorApp {
   static std::string window_title(const std::string& name);
   // The files opened or saved lately, the latest first (File > Open recent).
   const std::deque<std::string>& recent_files() const { return recent_; }
-  // The labels the last frame drew over the mesh view (id and lesson labels, window coordinates) and how many it dropped.
+  // The labels the last frame drew over the mesh view (id and lesson labels, window coordinates) and how many it
+  // dropped; empty outside the mesh view.
   const LabelPlacement& last_labels() const { return last_labels_; }
 
  private:
