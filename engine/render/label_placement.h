@@ -49,7 +49,9 @@ struct LabelRect {
     return min.x >= outer.min.x && min.y >= outer.min.y && max.x <= outer.max.x && max.y <= outer.max.y;
   }
   // True when the interiors intersect (rectangles that only touch do not overlap).
-  bool overlaps(const LabelRect& o) const { return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y; }
+  bool overlaps(const LabelRect& o) const {
+    return min.x < o.max.x && o.min.x < max.x && min.y < o.max.y && o.min.y < max.y;
+  }
 };
 
 // A segment on screen (window pixels): a label's own edge or halfedge arrow, which its box must not cross.

@@ -285,7 +285,8 @@ std::vector<LabelRequest> label_requests(const HalfedgeMesh& mesh, const OrbitCa
   };
   std::vector<ScreenLabel> labels = visible_labels(mesh, camera, viewport, scene.ids);
   for (ElementRef wanted : {scene.selected, scene.hovered}) {
-    const bool listed = std::any_of(labels.begin(), labels.end(), [&](const ScreenLabel& l) { return l.element == wanted; });
+    const bool listed =
+        std::any_of(labels.begin(), labels.end(), [&](const ScreenLabel& l) { return l.element == wanted; });
     if (wanted.valid() && !listed) {
       if (auto label = visible_label(mesh, camera, viewport, wanted)) labels.push_back(std::move(*label));
     }

@@ -7,10 +7,11 @@
 // sides; a halfedge on a boundary loop (no arrow: no face to sit in) at its edge's midpoint.
 //
 // Preferred directions (label_direction, on screen): a vertex away from its neighbours (minus the sum of the unit
-// directions to them: for a corner, the bisector of the angle outside it), so its label sits outside the corner; an edge perpendicular to it, away from its face when it has one face, towards the
-// top of the screen when it has two; a halfedge perpendicular to its arrow, towards its face's centre (inside the
-// face), or away from the mesh for one on a boundary loop; a face none (its label sits on its centre). When the
-// screen gives no direction (a vertex amid a flat fan, an edge seen end on) a vertex or an edge prefers the top right.
+// directions to them: for a corner, the bisector of the angle outside it), so its label sits outside the corner; an
+// edge perpendicular to it, away from its face when it has one face, towards the top of the screen when it has two;
+// a halfedge perpendicular to its arrow, towards its face's centre (inside the face), or away from the mesh for one
+// on a boundary loop; a face none (its label sits on its centre). When the screen gives no direction (a vertex amid
+// a flat fan, an edge seen end on) a vertex or an edge prefers the top right.
 // An edge's label keeps clear of its line, a halfedge's of its arrow (of its edge on a boundary loop): the requests'
 // `keep_clear`.
 //

@@ -1,7 +1,7 @@
 // EditorApp's labels over the mesh view: on the flip lesson's diamond the lesson's names and the id labels are placed
 // together, none overlapping and all inside the window, h0 h1 e0 f0 f1 among them; the frame's placement is kept
-// (last_labels) and emptied outside the mesh view; the selected halfedge is labelled though the arrows are off. Needs an OpenGL context: a surfaceless EGL one, skipped where none
-// exists.
+// (last_labels) and emptied outside the mesh view; the selected halfedge is labelled though the arrows are off.
+// Needs an OpenGL context: a surfaceless EGL one, skipped where none exists.
 #include <gtest/gtest.h>
 
 #include <algorithm>

@@ -179,7 +179,8 @@ TEST(LabelPlacement, NoBoxCrossesItsLabelsKeepClearSegment) {
 TEST(LabelPlacement, LabelsThatFitNowhereAreDroppedAndCounted) {
   // A view just big enough for one box around the anchor: the first label takes it, the other two are dropped.
   const LabelRect view{{0.0, 0.0}, {30.0, 20.0}};
-  const std::vector<LabelRequest> requests = {request(0, {15.0, 10.0}, {0.0, 0.0}), request(1, {15.0, 10.0}, {0.0, 0.0}),
+  const std::vector<LabelRequest> requests = {request(0, {15.0, 10.0}, {0.0, 0.0}),
+                                              request(1, {15.0, 10.0}, {0.0, 0.0}),
                                               request(2, {15.0, 10.0}, {1.0, 0.0})};
   const LabelPlacement placement = place_labels(requests, view);
   ASSERT_EQ(placement.placed.size(), 1u);
