@@ -102,6 +102,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   }
   end_view_drawing();
   if (mode_ == ViewMode::Curve) draw_curve_canvas_window();  // before the levels table: it computes the levels
+  draw_labels(layout_.view.x, layout_.view.y, layout_.view.width, layout_.view.height, viewport());
   draw_columns(frame_ms);
   draw_open_panel();
   draw_help_panel();
@@ -143,7 +144,6 @@ void EditorApp::draw_mesh_view() {
   highlights.changed = doc_.last.index.elements();
   highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
-  if (show_labels_) draw_id_labels();
   draw_lesson_marks();
 }
 

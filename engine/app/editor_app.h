@@ -43,6 +43,7 @@
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
 #include "render/camera.h"
+#include "render/label_placement.h"
 #include "render/mesh_renderer.h"
 #include "render/overlay_renderer.h"
 #include "render/shader_library.h"
@@ -175,6 +176,9 @@ class EditorApp {
   static std::string window_title(const std::string& name);
   // The files opened or saved lately, the latest first (File > Open recent).
   const std::deque<std::string>& recent_files() const { return recent_; }
+  // The labels the last frame drew over the mesh view (id and lesson labels, window coordinates) and how many it
+  // dropped; empty outside the mesh view.
+  const LabelPlacement& last_labels() const { return last_labels_; }
 
  private:
   void run_frame(int width, int height, float frame_ms);  // frame() without its guard
@@ -195,7 +199,9 @@ class EditorApp {
   void change_font_size(int steps);  // 0: back to the default
   void apply_size_defaults();
   void draw_patch_view();
-  void draw_id_labels();
+  // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window
+  // coordinates; `framebuffer` is the view's size in framebuffer pixels, which the camera projects to.
+  void draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer);
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
@@ -210,7 +216,7 @@ class EditorApp {
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
-  void draw_lesson_marks();
+  void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
   void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
@@ -222,6 +228,7 @@ class EditorApp {
   OrbitCamera camera_;
   ViewOptions view_options_;
   bool show_labels_ = true;
+  LabelPlacement last_labels_;
   // The shown mesh's size class (apply_size_defaults): past RenderStyle::large_mesh_triangles, or small enough for
   // halfedge arrows by default (kArrowsMaxFaces). When it changes, the wireframe and the arrows take its defaults.
   static constexpr size_t kArrowsMaxFaces = 300;

@@ -1,5 +1,6 @@
 // EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
-// selection, the lesson panel with hot reload, and the lesson's highlights and labels over the mesh.
+// selection, the lesson panel with hot reload, and the lesson's highlights over the mesh (its labels are placed with
+// the id labels: id_labels.cpp).
 //
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
@@ -13,16 +14,11 @@
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
-#include "render/labels.h"
 #include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {
-
-ImU32 to_imgui(glm::vec3 colour) {
-  return IM_COL32(int(colour.r * 255.0f), int(colour.g * 255.0f), int(colour.b * 255.0f), 255);
-}
 
 // "F", "shift+L", "ctrl+Z", "Space": the names lessons wait for (lesson_events.h compares them ignoring case).
 std::string key_name(int key, KeyMods mods) {
@@ -138,7 +134,7 @@ void EditorApp::show_lesson_list() {
 
 void EditorApp::draw_lesson_marks() {
   const LessonMarks& marks = lesson_host_->marks();
-  if (marks.highlights.empty() && marks.labels.empty()) return;
+  if (marks.highlights.empty()) return;
   const HalfedgeMesh& mesh = doc_.mesh;
   Overlay overlay;
   overlay.on_top = true;
@@ -169,24 +165,6 @@ void EditorApp::draw_lesson_marks() {
     }
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
-
-  const float to_window_x = layout_.view.width / float(std::max(1, view_pixels_.width));
-  const float to_window_y = layout_.view.height / float(std::max(1, view_pixels_.height));
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  draw->PushClipRect(ImVec2(layout_.view.x, layout_.view.y), ImVec2(layout_.view.right(), layout_.view.bottom()));
-  for (const auto& [element, text] : marks.labels) {
-    const auto anchor = label_anchor(mesh, element);
-    if (!anchor) continue;
-    const ScreenPoint s = camera_.project(*anchor, viewport());
-    if (!s.in_front) continue;
-    const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 corner(layout_.view.x + float(s.pixel.x) * to_window_x - size.x * 0.5f,
-                        layout_.view.y + float(s.pixel.y) * to_window_y - size.y - 6);
-    draw->AddRectFilled(ImVec2(corner.x - 3, corner.y - 2), ImVec2(corner.x + size.x + 3, corner.y + size.y + 2),
-                        IM_COL32(20, 20, 20, 210), 3.0f);
-    draw->AddText(corner, to_imgui(glm::vec3(1.0f, 0.85f, 0.3f)), text.c_str());
-  }
-  draw->PopClipRect();
 }
 
 }  // namespace meshedit

@@ -1,74 +1,69 @@
-// Id labels (`v3`, `e5`, `f2`, `h12`) drawn next to the elements of a small mesh, so students can match
-// the pointer tables to the picture. Only elements on faces turned towards the camera are labelled, and
-// only while the mesh is small enough for the labels to be read (kMaxLabelledFaces).
+// Labels over the mesh view: the id labels (`v3`, `e5`, `f2`, `h12`) that let students match the pointer tables to
+// the picture, and the lesson's labels (LessonMarks::labels), placed together so that none overlaps another
+// (render/labels.h makes the requests, render/label_placement.h places them) and drawn with ImGui behind every
+// panel, clipped to the view's rectangle.
+//
+// Invariants: id labels appear only while the mesh is small enough for them to be read (kMaxLabelledFaces) and the
+// View menu's "Id labels" is on; halfedge id labels only while the arrows are shown (the selected or hovered
+// halfedge's label always). The lesson's labels are placed first, then the selected element's id label, the
+// hovered one's, the rest. last_labels_ holds what the last frame drew (empty outside the mesh view).
 #include <imgui.h>
 
 #include "app/editor_app.h"
-#include "core/normals.h"
-#include "render/mesh_geometry.h"
+#include "render/labels.h"
 
 namespace meshedit {
 namespace {
 
 constexpr size_t kMaxLabelledFaces = 120;
 
+ImU32 text_colour(const PlacedLabel& label) {
+  if (label.source == LabelSource::Lesson) return IM_COL32(255, 217, 77, 255);
+  switch (label.element.kind) {
+    case ElementKind::Vertex: return IM_COL32(255, 230, 120, 255);
+    case ElementKind::Edge: return IM_COL32(230, 230, 230, 255);
+    case ElementKind::Halfedge: return IM_COL32(255, 170, 240, 255);
+    case ElementKind::Face:
+    case ElementKind::Boundary: break;
+  }
+  return IM_COL32(150, 200, 255, 255);
+}
+
+ImU32 box_colour(const PlacedLabel& label) {
+  return label.source == LabelSource::Lesson ? IM_COL32(20, 20, 20, 210) : IM_COL32(0, 0, 0, 150);
+}
+
+ImVec2 to_imgui(const glm::dvec2& p) { return ImVec2(float(p.x), float(p.y)); }
+
 }  // namespace
 
-void EditorApp::draw_id_labels() {
+void EditorApp::draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer) {
+  last_labels_ = {};
+  if (mode_ != ViewMode::Mesh || view_width <= 0.0f || view_height <= 0.0f) return;
   const HalfedgeMesh& mesh = doc_.mesh;
-  if (mesh.num_faces() > kMaxLabelledFaces) return;
-  const float to_window_x = layout_.view.width / float(std::max(1, view_pixels_.width));
-  const float to_window_y = layout_.view.height / float(std::max(1, view_pixels_.height));
-  ImDrawList* draw = ImGui::GetBackgroundDrawList();
-  const glm::dvec3 eye = camera_.eye();
+  LabelScene scene;
+  scene.id_labels = show_labels_ && mesh.num_faces() <= kMaxLabelledFaces;
+  scene.ids.halfedges = view_options_.show_halfedges;
+  scene.lesson = lesson_host_->marks().labels;
+  scene.selected = selection_.selected;
+  scene.hovered = selection_.hovered;
+  if (!scene.id_labels && scene.lesson.empty()) return;
 
-  auto facing = [&](FaceId f) {
-    if (!mesh.alive(f) || f.is_boundary()) return false;
-    const auto corners = face_corners(mesh, f);
-    if (!corners || corners->empty()) return false;
-    glm::dvec3 centre(0.0);
-    for (const auto& p : *corners) centre += p;
-    centre /= double(corners->size());
-    return glm::dot(face_normal(mesh, f), eye - centre) > 0.0;
-  };
-  auto label = [&](const glm::dvec3& where, ElementRef element, ImU32 colour) {
-    const ScreenPoint s = camera_.project(where, viewport());
-    if (!s.in_front) return;
-    const std::string text = format_id(element);
-    const ImVec2 at(layout_.view.x + float(s.pixel.x) * to_window_x, layout_.view.y + float(s.pixel.y) * to_window_y);
+  const LabelView view{{{view_x, view_y}, {double(view_x) + view_width, double(view_y) + view_height}}, framebuffer};
+  const TextMeasure measure = [](const std::string& text) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
-    const ImVec2 corner(at.x - size.x * 0.5f, at.y - size.y * 0.5f);
-    draw->AddRectFilled(ImVec2(corner.x - 2, corner.y - 1), ImVec2(corner.x + size.x + 2, corner.y + size.y + 1),
-                        IM_COL32(0, 0, 0, 150), 3.0f);
-    draw->AddText(corner, colour, text.c_str());
+    return glm::dvec2(size.x, size.y);
   };
+  const std::vector<LabelRequest> requests = label_requests(mesh, camera_, view, scene, measure);
+  last_labels_ = place_labels(requests, view.window);
 
-  for (FaceId f : mesh.faces()) {
-    if (!facing(f)) continue;
-    const auto corners = face_corners(mesh, f);
-    glm::dvec3 centre(0.0);
-    for (const auto& p : *corners) centre += p;
-    label(centre / double(corners->size()), f, IM_COL32(150, 200, 255, 255));
+  ImDrawList* draw = ImGui::GetBackgroundDrawList();
+  draw->PushClipRect(to_imgui(view.window.min), to_imgui(view.window.max), true);
+  for (const PlacedLabel& label : last_labels_.placed) {
+    draw->AddRectFilled(to_imgui(label.rect.min), to_imgui(label.rect.max), box_colour(label), 3.0f);
+    draw->AddText(to_imgui(label.text_min), text_colour(label), label.text.c_str());
   }
-  for (EdgeId e : mesh.edges()) {
-    const auto segment = edge_segment(mesh, e);
-    const HalfedgeId h = mesh.halfedge(e);
-    if (!segment || !mesh.alive(h) || !(facing(mesh.face(h)) || facing(mesh.face(mesh.twin(h))))) continue;
-    label((glm::dvec3(segment->start) + glm::dvec3(segment->end)) * 0.5, e, IM_COL32(230, 230, 230, 255));
-  }
-  for (VertexId v : mesh.vertices()) {
-    const glm::dvec3 n = vertex_normal(mesh, v);
-    if (glm::dot(n, eye - mesh.position(v)) <= 0.0) continue;
-    label(mesh.position(v), v, IM_COL32(255, 230, 120, 255));
-  }
-  if (view_options_.show_halfedges) {
-    for (HalfedgeId h : mesh.halfedges()) {
-      if (!facing(mesh.face(h))) continue;
-      const auto arrow = halfedge_arrow(mesh, h);
-      if (!arrow) continue;
-      label((glm::dvec3(arrow->tail) + glm::dvec3(arrow->tip)) * 0.5, h, IM_COL32(255, 170, 240, 255));
-    }
-  }
+  draw->PopClipRect();
 }
 
 }  // namespace meshedit

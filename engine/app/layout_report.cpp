@@ -57,7 +57,15 @@ std::string layout_json(const EditorApp& app) {
     }
   }
   out["lesson"] = std::move(lesson);
-  out["labels"] = {{"drawn", json::array()}, {"dropped", 0}};
+  json drawn = json::array();
+  for (const PlacedLabel& label : app.last_labels().placed) {
+    drawn.push_back({{"text", label.text},
+                     {"element", format_id(label.element)},
+                     {"source", label.source == LabelSource::Lesson ? "lesson" : "id"},
+                     {"rect", rect(float(label.rect.min.x), float(label.rect.min.y), float(label.rect.width()),
+                                   float(label.rect.height()))}});
+  }
+  out["labels"] = {{"drawn", std::move(drawn)}, {"dropped", app.last_labels().dropped}};
   return out.dump(2) + "\n";
 }
 

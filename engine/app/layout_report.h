@@ -8,7 +8,8 @@
 //    "panels": [{"name": "left column", "rect": [...]}, ...],      windows (the curve canvas is the view itself and
 //    "splitters": [{"name": "left splitter", "rect": [...]}, ...],  is not listed; splitters sit inside their panel)
 //    "lesson": {"text": [...], "back": [...], "next": [...]},       (only the parts drawn)
-//    "labels": {"drawn": [{"text": "h0", "rect": [...]}, ...], "dropped": 0}}
+//    "labels": {"drawn": [{"text": "h0", "element": "h3", "source": "lesson" | "id", "rect": [...]}, ...],
+//               "dropped": 0}}
 #pragma once
 
 #include <string>

@@ -151,6 +151,28 @@ INSTANTIATE_TEST_SUITE_P(Screens, WindowLayoutOnScreen, ::testing::Values(Screen
                            return std::to_string(info.param.width) + "x" + std::to_string(info.param.height);
                          });
 
+TEST(WindowLayout, TheFlipAndSplitLessonsLabelsNeverOverlapAndStayInTheView) {
+  XServer x("1280x800");
+  if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
+  for (const char* name : {"4_edge_flip.lua", "5_edge_split.lua"}) {
+    SCOPED_TRACE(name);
+    const json layout = layout_of(x, testing::source_dir() / "lessons" / name, testing::scratch_dir());
+    const Rect view = rect_of(layout["view"]);
+    const json& drawn = layout["labels"]["drawn"];
+    ASSERT_GE(drawn.size(), 10u) << layout["labels"].dump();
+    size_t lesson_labels = 0;
+    for (size_t i = 0; i < drawn.size(); ++i) {
+      const Rect r = rect_of(drawn[i]["rect"]);
+      EXPECT_TRUE(r.inside(view)) << drawn[i].dump();
+      lesson_labels += drawn[i]["source"] == "lesson";
+      for (size_t j = i + 1; j < drawn.size(); ++j) {
+        EXPECT_FALSE(r.overlaps(rect_of(drawn[j]["rect"]))) << drawn[i].dump() << " and " << drawn[j].dump();
+      }
+    }
+    EXPECT_GT(lesson_labels, 0u);
+  }
+}
+
 TEST(WindowLayout, ColumnsFoldAndTextSizeChangesAndBothLastToTheNextStart) {
   XServer x("1280x800");
   if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
