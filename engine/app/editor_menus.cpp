@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
@@ -85,6 +86,14 @@ void EditorApp::draw_menu_bar() {
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
     ImGui::MenuItem("Exercises: mine vs reference", "X", &exercise_panel_.open);
     if (ImGui::MenuItem("Lua console", "`", &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
+    if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
+      const std::pair<const char*, UpAxisChoice> choices[] = {
+          {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
+      for (const auto& [label, choice] : choices) {
+        if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
+      }
+      ImGui::EndMenu();
+    }
     if (ImGui::MenuItem("Reset view", "Space")) reset_view();
     ImGui::EndMenu();
   }

@@ -18,6 +18,8 @@
 //   expect-gpu-update patch|rebuild   (how the mesh view's last geometry update went: the slots an edit touched
 //                          rewritten in place, or everything rebuilt; made by the next frame, which the check
 //                          waits for)
+//   up-axis from-file|y|z  (View > Up axis: the file's, or Y or Z up; refits the view)
+//   expect-up-axis X|Y|Z [TEXT...]   (the camera's up axis, and the status bar's up-axis words contain TEXT)
 #pragma once
 
 #include <string>

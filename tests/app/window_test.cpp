@@ -39,9 +39,11 @@ TEST(Window, PickFlipUndoAndScreenshotOnTheCube) {
   const fs::path file = dir / "cube.obj";
   save_mesh(file, make_cube());
 
-  // Where v7 lands on screen: the window fits its camera (Z up, the default) the same way at 1280x800.
+  // Where v7 lands on screen: the window fits its camera (Y up, an .obj's: io/file_up_axis.h) the same way at
+  // 1280x800.
   const HalfedgeMesh before = build_halfedge_mesh(make_cube());
   OrbitCamera camera;
+  camera.set_up_axis(UpAxis::Y);
   camera.fit(mesh_bounds(before));
   camera.zoom(-EditorApp::kFitZoomOutSteps);
   const ScreenPoint v7 = camera.project(before.position(VertexId(7)), {1280, 800});
