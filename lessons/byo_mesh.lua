@@ -60,9 +60,9 @@ Then File > Export > glTF 2.0, and in the export options:
 - Data > Mesh: untick **UVs** and **Normals**. glTF stores one vertex per distinct set of attributes, so UV seams
   and sharp edges would split vertices apart, and MeshEdit (like glTF) does not weld them back: each seam would
   open into a boundary.
-- Transform: **+Y Up** is glTF's convention and the default. Blender's up axis is +Z: if your model lies on its
-  side in MeshEdit, export again with +Y Up unticked to keep +Z up. Only the view changes, never the mesh's
-  connectivity.]]
+- Transform: keep **+Y Up**, glTF's convention and the default: MeshEdit shows a glTF with +Y up (the status
+  bar says which axis is up). Exported with +Z up, Blender's own, it lies on its side: View > Up axis > **Z up**
+  stands it up. Only the view changes, never the mesh.]]
 end)
 
 step("Open it", function()

@@ -120,6 +120,13 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     if (!app.save(args[0])) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "orbit") {
     app.camera().orbit(std::stod(args[0]), std::stod(args[1]));
+  } else if (a.verb == "up-axis") {
+    if (args[0] == "from-file") app.choose_up_axis(UpAxisChoice::FromFile);
+    else if (args[0] == "y") app.choose_up_axis(UpAxisChoice::Y);
+    else if (args[0] == "z") app.choose_up_axis(UpAxisChoice::Z);
+    else throw std::runtime_error("up-axis takes from-file, y or z");
+  } else if (a.verb == "expect-up-axis") {
+    expect_up_axis(app, a);
   } else if (a.verb == "expect-gpu-update") {
     const RenderStats& stats = app.mesh_render_stats();
     const std::string got = stats.last_update_patch ? "patch" : "rebuild";
@@ -204,6 +211,17 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     if (!report.ok()) fail(a, report.summary());
   }
   return true;
+}
+
+void ActionPlayer::expect_up_axis(EditorApp& app, const ScriptedAction& a) {
+  const std::string& wanted = a.args[0];
+  if (wanted != "X" && wanted != "Y" && wanted != "Z") throw std::runtime_error("expect-up-axis takes X, Y or Z first");
+  const std::string got(up_axis_name(app.camera().up_axis()));
+  const std::string status(app.status_up_axis());
+  if (got != wanted + " up") fail(a, "the camera is " + got + " (status bar: '" + status + "')");
+  std::string text;
+  for (size_t i = 1; i < a.args.size(); ++i) text += (text.empty() ? "" : " ") + a.args[i];
+  if (status.find(text) == std::string::npos) fail(a, "the status bar says '" + status + "'");
 }
 
 void ActionPlayer::expect_field(EditorApp& app, const ScriptedAction& a) {

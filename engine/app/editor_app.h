@@ -40,6 +40,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/up_axis_choice.h"
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
 #include "render/camera.h"
@@ -166,6 +167,10 @@ class EditorApp {
   const std::string& status_note() const { return status_bar_.note; }
   void fit_view() { fit_camera(); }
   Viewport viewport() const { return {view_pixels_.width, view_pixels_.height}; }
+  // View > Up axis: shows the mesh or patches on screen with that up axis (app/up_axis_choice.h), refitted.
+  void choose_up_axis(UpAxisChoice choice);
+  UpAxisChoice up_axis_choice() const { return up_axis_choice_; }
+  std::string_view status_up_axis() const { return status_bar_.up_axis; }  // "Y up (from the file)"
   void reset_view();  // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
   MeshDocument& document() { return doc_; }
@@ -213,6 +218,9 @@ class EditorApp {
   void take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit = true);  // fit: the camera to the mesh
   void take_curve(CurveEditorState&& curve);
   void take_patches(PatchViewState&& patches);  // tessellated already
+  // Gives the camera and the status bar the up axis of file_up_axis_ and up_axis_choice_; returns whether the camera's
+  // axis changed (the view then needs a fit). Cannot fail: a step of take_mesh and take_patches.
+  bool apply_up_axis() noexcept;
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
@@ -258,6 +266,9 @@ class EditorApp {
   CurveEditorState curve_;
   PatchViewState patches_;
   LoopWeights loop_weights_ = LoopWeights::Course;
+  // The up axis of the file shown (nullopt: a mesh no file gave, Z-up) and View > Up axis's choice.
+  std::optional<FileUpAxis> file_up_axis_;
+  UpAxisChoice up_axis_choice_ = UpAxisChoice::FromFile;
 
   bool show_open_panel_ = false;
   bool show_help_ = false;

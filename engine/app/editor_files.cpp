@@ -4,7 +4,8 @@
 // Whole or nothing: everything that can fail (reading the file, building the mesh, tessellating patches, the window
 // title, the new recent list, the message) is made first, while the window still shows what it showed; then the take_*
 // steps switch to it with steps that cannot fail (replace_mesh moves the mesh in, its own message falling back to
-// kMemoryRanOut; the strings and lists are swapped or moved in; the camera is fitted to bounds read from the mesh). The
+// kMemoryRanOut; the strings and lists are swapped or moved in; the camera takes the file's up axis, View > Up axis's
+// choice going back to "From the file", and is fitted to bounds read from the mesh). The
 // renderer comes last: it is a view that every frame updates from the document, so when it cannot take the new mesh at
 // once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
 // frame guard, which reports what stops it.
@@ -74,6 +75,7 @@ void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit) {
   replace_mesh(doc_, std::move(mesh), std::move(path));
   selection_ = {};
   mode_ = ViewMode::Mesh;
+  if (apply_up_axis()) fit = true;  // a view turned to a new up axis is fitted again
   if (fit) fit_camera(bounds);
   refresh_view(*mesh_renderer_, doc_.mesh);
 }
@@ -86,6 +88,7 @@ void EditorApp::take_curve(CurveEditorState&& curve) {
 void EditorApp::take_patches(PatchViewState&& patches) {
   patches_ = std::move(patches);
   mode_ = ViewMode::Patches;
+  apply_up_axis();
   if (!patches_.tessellation.mesh) return;
   fit_camera(mesh_bounds(*patches_.tessellation.mesh));
   refresh_view(*patch_renderer_, *patches_.tessellation.mesh);
@@ -94,6 +97,7 @@ void EditorApp::take_patches(PatchViewState&& patches) {
 void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
   std::string title = window_title(name.empty() ? std::string("untitled") : name);
   std::string path = name;
+  file_up_axis_.reset();
   take_mesh(std::move(mesh), std::move(path));
   title_.swap(title);
   title_names_lesson_ = false;
@@ -113,7 +117,11 @@ void EditorApp::show_start_mesh() {
 
 void EditorApp::show_curve(const BezierCurve& curve) { take_curve(make_curve_editor(curve)); }
 
-void EditorApp::show_patches(const std::vector<BezierPatch>& patches) { take_patches(tessellated_view(patches)); }
+void EditorApp::show_patches(const std::vector<BezierPatch>& patches) {
+  PatchViewState view = tessellated_view(patches);
+  file_up_axis_.reset();
+  take_patches(std::move(view));
+}
 
 bool EditorApp::open(const std::filesystem::path& path) {
   try {
@@ -138,6 +146,10 @@ bool EditorApp::open(const std::filesystem::path& path) {
     std::deque<std::string> recent = with_recent(recent_, path.string());
     std::string text = "opened " + path.string();
     // Nothing from here on can fail: the window switches to the file whole.
+    if (file.kind != FileKind::Curve) {  // a curve is drawn in its plane: the mesh view keeps its axis
+      file_up_axis_ = file.up_axis;
+      up_axis_choice_ = UpAxisChoice::FromFile;
+    }
     if (mesh) take_mesh(std::move(*mesh), std::move(name));
     if (curve) take_curve(std::move(*curve));
     if (patches) take_patches(std::move(*patches));

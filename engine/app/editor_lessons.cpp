@@ -36,6 +36,7 @@ std::string key_name(int key, KeyMods mods) {
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
   HalfedgeMesh copy = mesh;  // the one step that can fail: the window is as it was when it does
+  file_up_axis_.reset();     // a lesson's mesh is made from core's Z-up primitives
   take_mesh(std::move(copy), std::string(), fit || mode_ != ViewMode::Mesh);
 }
 
@@ -51,6 +52,8 @@ bool EditorApp::open_lesson(const std::filesystem::path& path) {
     std::string text = "lesson " + path.filename().string();
     // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
     // step's error, in the panel).
+    up_axis_choice_ = UpAxisChoice::FromFile;  // the lesson's meshes are Z-up whatever the file before was turned to
+    if (apply_up_axis()) fit_camera();
     lesson_->take(std::move(lesson));
     watch_lesson(lesson_panel_, lesson_->path());
     lesson_selection_ = selection_.selected;

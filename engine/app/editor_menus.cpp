@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cstdio>
 #include <filesystem>
+#include <utility>
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
@@ -89,6 +90,14 @@ void EditorApp::draw_menu_bar() {
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
     if (ImGui::MenuItem("Exercises: mine vs reference", "X", exercise_panel_.open)) handle_key(GLFW_KEY_X, {});
     if (ImGui::MenuItem("Lua console", "`", &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
+    if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
+      const std::pair<const char*, UpAxisChoice> choices[] = {
+          {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
+      for (const auto& [label, choice] : choices) {
+        if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
+      }
+      ImGui::EndMenu();
+    }
     ImGui::Separator();
     if (ImGui::MenuItem("Bigger text", "Ctrl+=")) change_font_size(+1);
     if (ImGui::MenuItem("Smaller text", "Ctrl+-")) change_font_size(-1);

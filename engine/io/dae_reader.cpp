@@ -70,7 +70,7 @@ class DaeReader {
  public:
   DaeReader(std::string_view text, const std::string& name) : text_(text), file_(name) {}
 
-  PolygonMesh read() {
+  DaeFile read() {
     if (text_.find_first_not_of(" \t\r\n") == std::string_view::npos) throw FileError(file_, 1, "file is empty");
     tinyxml2::XMLDocument doc(true, tinyxml2::PRESERVE_WHITESPACE);
     if (doc.Parse(text_.data(), text_.size()) != tinyxml2::XML_SUCCESS) {
@@ -83,6 +83,8 @@ class DaeReader {
     const XMLElement* root = doc.RootElement();
     if (root == nullptr) throw FileError(file_, 1, "no XML element found");
     if (!named(root, "COLLADA")) fail(root, "root element is " + tag(root) + ", expected <COLLADA>");
+    DaeFile file;
+    file.asset = read_asset(child(root, "asset"));
 
     // Geometries in library order.
     std::vector<const XMLElement*> geometries;
@@ -96,7 +98,7 @@ class DaeReader {
     std::vector<std::vector<Instance>> instances(geometries.size());
     collect_instances(root, geometry_by_id, instances);
 
-    PolygonMesh out;
+    PolygonMesh& out = file.mesh;
     for (size_t g = 0; g < geometries.size(); ++g) {
       const PolygonMesh mesh = read_geometry(geometries[g]);
       if (instances[g].empty()) {
@@ -108,10 +110,39 @@ class DaeReader {
       }
     }
     if (out.num_faces() == 0) throw FileError(file_, "", "file holds no triangles or polygons");
-    return out;
+    return file;
   }
 
  private:
+  // <asset>'s <up_axis> and first <contributor>/<authoring_tool>; `asset` may be null (then COLLADA's defaults).
+  DaeAsset read_asset(const XMLElement* asset) const {
+    DaeAsset out;
+    if (const XMLElement* up = child(asset, "up_axis")) {
+      const std::string value = trimmed_text(up);
+      if (value == "X_UP") out.up_axis = UpAxis::X;
+      else if (value == "Y_UP") out.up_axis = UpAxis::Y;
+      else if (value == "Z_UP") out.up_axis = UpAxis::Z;
+      else fail(up, "<up_axis> is " + quote(value) + ", expected X_UP, Y_UP or Z_UP");
+      out.up_axis_tagged = true;
+    }
+    for (const XMLElement* contributor : children(asset, "contributor")) {
+      if (const XMLElement* tool = child(contributor, "authoring_tool")) {
+        out.authoring_tool = trimmed_text(tool);
+        break;
+      }
+    }
+    return out;
+  }
+
+  static std::string trimmed_text(const XMLElement* e) {
+    const char* text = e->GetText();
+    if (text == nullptr) return {};
+    const std::string_view view(text);
+    const size_t first = view.find_first_not_of(" \t\r\n\v\f");
+    if (first == std::string_view::npos) return {};
+    return std::string(view.substr(first, view.find_last_not_of(" \t\r\n\v\f") - first + 1));
+  }
+
   [[noreturn]] void fail(const XMLElement* e, const std::string& message) const {
     throw FileError(file_, static_cast<size_t>(std::max(e->GetLineNum(), 1)), message);
   }
@@ -544,8 +575,12 @@ class DaeReader {
 
 }  // namespace
 
-PolygonMesh parse_dae(std::string_view text, const std::string& name) { return DaeReader(text, name).read(); }
+DaeFile parse_dae_file(std::string_view text, const std::string& name) { return DaeReader(text, name).read(); }
 
-PolygonMesh read_dae(const std::filesystem::path& path) { return parse_dae(read_file(path), path.string()); }
+DaeFile read_dae_file(const std::filesystem::path& path) { return parse_dae_file(read_file(path), path.string()); }
+
+PolygonMesh parse_dae(std::string_view text, const std::string& name) { return parse_dae_file(text, name).mesh; }
+
+PolygonMesh read_dae(const std::filesystem::path& path) { return read_dae_file(path).mesh; }
 
 }  // namespace meshedit

@@ -15,6 +15,9 @@
 //   untransformed. A transform with a negative determinant reverses every face so normals stay outward.
 //   The course code (CS184) parsed transforms but ignored them; MeshEdit applies them, so cube.dae
 //   (a 2x scale matrix) loads as the cube [-2, 2]^3. <instance_node> is not followed.
+// - <asset>: <up_axis> (X_UP, Y_UP or Z_UP, spaces around it allowed; anything else is refused with its line)
+//   and the first <contributor>/<authoring_tool>, as the file says them; which up axis the window uses is
+//   decided from them in file_up_axis.h. No <asset> or no <up_axis> means COLLADA's default, Y_UP.
 // - Output order: geometries in library order, each once per instance in scene order; a geometry's
 //   vertices keep their order in its POSITION source, so vertex i of a one-geometry file is the file's
 //   index i. Polygons keep the file's corner order.
@@ -28,10 +31,26 @@
 #include <string_view>
 
 #include "core/polygon_mesh.h"
+#include "core/up_axis.h"
 
 namespace meshedit {
 
+// What the file's <asset> says that showing it needs.
+struct DaeAsset {
+  UpAxis up_axis = UpAxis::Y;   // <up_axis>, or COLLADA's default when the file has none
+  bool up_axis_tagged = false;  // the file has an <up_axis>
+  std::string authoring_tool;   // the first <contributor>/<authoring_tool>, trimmed; "" when absent
+};
+
+struct DaeFile {
+  PolygonMesh mesh;
+  DaeAsset asset;
+};
+
 // `name` is the file name used in error messages.
+DaeFile parse_dae_file(std::string_view text, const std::string& name);
+DaeFile read_dae_file(const std::filesystem::path& path);
+// The mesh alone.
 PolygonMesh parse_dae(std::string_view text, const std::string& name);
 PolygonMesh read_dae(const std::filesystem::path& path);
 

@@ -7,6 +7,7 @@
 #include "io/dae_reader.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
+#include "io/file_up_axis.h"
 #include "io/gltf_io.h"
 #include "io/obj_io.h"
 
@@ -35,11 +36,14 @@ FileKind file_kind(const std::filesystem::path& path) {
 LoadedFile load_file(const std::filesystem::path& path) {
   LoadedFile loaded;
   loaded.kind = file_kind(path);
+  loaded.up_axis = {format_up_axis(path).value_or(UpAxis::Z), UpAxisSource::Format};
   const std::string ext = lowercase_extension(path);
   if (ext == ".obj") {
     loaded.mesh = read_obj(path);
   } else if (ext == ".dae") {
-    loaded.mesh = read_dae(path);
+    DaeFile dae = read_dae_file(path);
+    loaded.mesh = std::move(dae.mesh);
+    loaded.up_axis = collada_up_axis(dae.asset);
   } else if (ext == ".gltf" || ext == ".glb") {
     loaded.mesh = read_gltf(path);
   } else if (ext == ".bez") {

@@ -3,7 +3,8 @@
 //   write: .obj .gltf .glb (meshes)
 // Every failure is a FileError naming the file and the place; nothing here exits or aborts, whatever
 // the bytes are. Readers for one format are in their own headers (obj_io.h, dae_reader.h, ...), each
-// with a parse_* function over text in memory that the fuzz tests call.
+// with a parse_* function over text in memory that the fuzz tests call. A loaded file carries the axis to
+// show up (file_up_axis.h): COLLADA's from the file, every other format's from kFormatUpAxes.
 #pragma once
 
 #include <filesystem>
@@ -12,6 +13,7 @@
 
 #include "core/bezier.h"
 #include "core/polygon_mesh.h"
+#include "io/file_up_axis.h"
 
 namespace meshedit {
 
@@ -22,6 +24,7 @@ struct LoadedFile {
   PolygonMesh mesh;                   // kind == Mesh
   std::vector<BezierPatch> patches;   // kind == Patches
   BezierCurve curve;                  // kind == Curve
+  FileUpAxis up_axis;                 // the axis to show up; Z for a curve, which is drawn in its plane
 };
 
 // The kind a path's extension promises, or a FileError for an extension we do not read.

@@ -23,6 +23,23 @@ constexpr double kClipRadii = 2.0;
 double radians(double degrees) { return degrees * kPi / 180.0; }
 double degrees(double radians) { return radians * 180.0 / kPi; }
 
+// The front view's frame for an up axis (core/up_axis.h): yaw = pitch = 0 puts the eye towards the viewer, yaw
+// = 90 degrees to the right, pitch = 90 degrees above.
+struct AxisFrame {
+  glm::dvec3 right;
+  glm::dvec3 up;
+  glm::dvec3 towards_viewer;
+};
+
+AxisFrame axis_frame(UpAxis axis) {
+  switch (axis) {
+    case UpAxis::X: return {{0, -1, 0}, {1, 0, 0}, {0, 0, 1}};
+    case UpAxis::Y: return {{1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    case UpAxis::Z: return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+  }
+  return {{1, 0, 0}, {0, 0, 1}, {0, -1, 0}};
+}
+
 }  // namespace
 
 void BoundingBox::add(const glm::dvec3& p) {
@@ -120,14 +137,12 @@ void OrbitCamera::set_up_axis(UpAxis axis) {
 double OrbitCamera::yaw_degrees() const { return degrees(yaw_); }
 double OrbitCamera::pitch_degrees() const { return degrees(pitch_); }
 
-glm::dvec3 OrbitCamera::up_vector() const {
-  return up_axis_ == UpAxis::Y ? glm::dvec3(0.0, 1.0, 0.0) : glm::dvec3(0.0, 0.0, 1.0);
-}
+glm::dvec3 OrbitCamera::up_vector() const { return axis_frame(up_axis_).up; }
 
 glm::dvec3 OrbitCamera::view_offset(double yaw, double pitch) const {
+  const AxisFrame frame = axis_frame(up_axis_);
   const double c = std::cos(pitch);
-  return up_axis_ == UpAxis::Y ? glm::dvec3(c * std::sin(yaw), std::sin(pitch), c * std::cos(yaw))
-                               : glm::dvec3(c * std::sin(yaw), -c * std::cos(yaw), std::sin(pitch));
+  return c * (std::sin(yaw) * frame.right + std::cos(yaw) * frame.towards_viewer) + std::sin(pitch) * frame.up;
 }
 
 glm::dvec3 OrbitCamera::eye() const { return target_ + view_offset(yaw_, pitch_) * distance_; }

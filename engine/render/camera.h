@@ -3,13 +3,13 @@
 // Conventions (what the app and the tests rely on):
 // - The camera orbits a target point at some distance, looking at it. Yaw turns around the up axis,
 //   pitch tilts towards it (clamped to +-89 degrees so the view never flips over the pole).
-// - Up is +Z by default, as in the course viewer (a Z-up orbit for every file): the course's .dae files
-//   are Z-up in practice whatever their <up_axis> says (teapot.dae, cow.dae, beetle.dae and peter.dae
-//   stand upright only with Z up, though they are tagged Y_UP), the Utah teapot's .bez is Z-up, and so
-//   are core's primitives (the torus lies around the z axis, the grid in the z = 0 plane). UpAxis::Y is
-//   there for Y-up data (glTF files made elsewhere, most .obj exports). With yaw = pitch = 0 the camera
-//   looks along +Y (Z up) or -Z (Y up), the "front" view; fit() and reset() use a three-quarter view
-//   (yaw 30, pitch 20 degrees) instead, so a cube shows three faces.
+// - Up is +Z by default: core's primitives (the torus lies around the z axis, the grid in the z = 0 plane), so
+//   lessons' meshes and the start cube, and the Utah teapot's .bez are Z-up. The window sets the up axis of the
+//   file it shows (io/file_up_axis.h: Y for glTF and most .obj exports, what a COLLADA file says, with the
+//   course's mistagged files Z). With yaw = pitch = 0 the camera shows the up axis's front view, COLLADA's frame
+//   for it (core/up_axis.h): it looks along +Y with +X to the right (Z up), along -Z with +X to the right
+//   (Y up), along -Z with -Y to the right (X up). fit() and reset() use a three-quarter view (yaw 30,
+//   pitch 20 degrees) instead, so a cube shows three faces.
 // - fit(box) targets the box centre and, in the default three-quarter view, backs off until all eight
 //   corners of the box are inside the field of view with a margin (the course viewer uses twice the
 //   box diagonal whatever the view, which leaves a teapot small in its frame). The field of view
@@ -24,6 +24,8 @@
 #include <glm/mat4x4.hpp>
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
+
+#include "core/up_axis.h"
 
 namespace meshedit {
 
@@ -55,8 +57,6 @@ struct Ray {
   glm::dvec3 direction{0.0, 0.0, -1.0};  // unit length
 };
 
-enum class UpAxis { Y, Z };
-
 class OrbitCamera {
  public:
   static constexpr double kDefaultYawDegrees = 30.0;
@@ -81,13 +81,15 @@ class OrbitCamera {
   // [fitted/100, fitted*20].
   void zoom(double steps);
 
-  // Changing the up axis or the field of view changes what reset() returns to, not the current view.
   // Sets the view directly (lessons ask for a view by angles): pitch is clamped to +-89 degrees, the
   // distance to a positive value; non-finite values are ignored.
   void set_angles(double yaw_degrees, double pitch_degrees);
   void set_distance(double distance);
   void set_target(const glm::dvec3& target);
 
+  // Changing the field of view changes what reset() returns to, not the current view. Changing the up axis keeps
+  // the target, distance and angles, now taken about the new axis, and changes what reset() returns to; fit() after
+  // it for the new axis's fitted view (the window does).
   void set_up_axis(UpAxis axis);
   UpAxis up_axis() const { return up_axis_; }
   void set_fov_degrees(double degrees);

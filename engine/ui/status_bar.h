@@ -1,6 +1,7 @@
 // The status bar along the bottom of the window: V/E/F/H counts, Euler characteristic, validation state (green
 // "valid", or red with the first broken invariant and a button that selects its element), the message line,
-// a standing note from the view (a large mesh drawn the cheap way), undo/redo hints and the frame time.
+// a standing note from the view (a large mesh drawn the cheap way), the view's up axis, undo/redo hints and the frame
+// time.
 //
 // Invariants:
 // - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
@@ -13,6 +14,7 @@
 
 #include <cstddef>
 #include <string>
+#include <string_view>
 
 #include "ui/element_link.h"
 #include "ui/mesh_document.h"
@@ -25,6 +27,10 @@ struct StatusBarState {
   UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
   bool mesh_shown = true;  // the mesh view is on screen: counts and validation (else the message line only)
   std::string note;  // a standing remark from the view ("large mesh: wireframe off (W)"); "" for none
+  // The view's up axis ("Y up (from the file)") and where it came from, for its tooltip; static text the app fills
+  // (app/up_axis_choice.h); "" shows nothing.
+  std::string_view up_axis;
+  std::string_view up_axis_why;
 };
 
 // Draws the bar as a borderless window across the bottom of the main viewport. Returns its height in pixels,

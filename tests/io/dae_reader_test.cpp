@@ -1,5 +1,6 @@
 // COLLADA: exact positions and faces of small hand-written files (primitives, sources, accessors,
-// transforms, instancing), and every refusal with its XML line and element.
+// transforms, instancing), what <asset> says (up axis, authoring tool), and every refusal with its XML line and
+// element.
 #include "io/dae_reader.h"
 
 #include <gtest/gtest.h>
@@ -277,6 +278,47 @@ TEST(Dae, RefusesBadScenes) {
   std::string bad_scene = document(tri, "<node/>\n");
   bad_scene.replace(bad_scene.find("url=\"#Scene\""), 12, "url=\"#Other\"");
   EXPECT_FILE_ERROR(parse_dae(bad_scene, "n.dae"), "n.dae:", "refers to \"#Other\", which is not a <visual_scene>");
+}
+
+// `document(...)` with an <asset> right after <COLLADA>, holding `asset_body`.
+std::string with_asset(const std::string& asset_body) {
+  std::string text = document(geometry("T", "0 0 0 1 0 0 0 1 0", triangles("T", "0 0 1 0 2 0", "1")));
+  return text.insert(text.find("<library_geometries>"), "<asset>\n" + asset_body + "</asset>\n");
+}
+
+TEST(Dae, ReadsTheUpAxisTagAndTheAuthoringTool) {
+  const std::pair<const char*, UpAxis> tags[] = {{"X_UP", UpAxis::X}, {"Y_UP", UpAxis::Y}, {"Z_UP", UpAxis::Z}};
+  for (const auto& [tag, axis] : tags) {
+    SCOPED_TRACE(tag);
+    const DaeFile file = parse_dae_file(with_asset(std::string("<up_axis>") + tag + "</up_axis>\n"), "u.dae");
+    EXPECT_TRUE(file.asset.up_axis_tagged);
+    EXPECT_EQ(file.asset.up_axis, axis);
+    EXPECT_EQ(file.mesh.num_faces(), 1u);
+  }
+  const DaeFile spaced = parse_dae_file(
+      with_asset("<contributor>\n<author>someone</author>\n<authoring_tool>\n  Blender 2.72.0  \n</authoring_tool>\n"
+                 "</contributor>\n<contributor><authoring_tool>second</authoring_tool></contributor>\n"
+                 "<up_axis>\n Z_UP\n</up_axis>\n"),
+      "u.dae");
+  EXPECT_EQ(spaced.asset.up_axis, UpAxis::Z);
+  EXPECT_EQ(spaced.asset.authoring_tool, "Blender 2.72.0");  // trimmed, from the first contributor that names one
+}
+
+TEST(Dae, WithoutAnUpAxisTagTheAssetIsColladasDefault) {
+  for (const std::string& text : {with_asset("<unit meter=\"1\"/>\n"), document(geometry("T", "0 0 0 1 0 0 0 1 0",
+                                                                             triangles("T", "0 0 1 0 2 0", "1")))}) {
+    const DaeFile file = parse_dae_file(text, "u.dae");
+    EXPECT_FALSE(file.asset.up_axis_tagged);
+    EXPECT_EQ(file.asset.up_axis, UpAxis::Y);
+    EXPECT_EQ(file.asset.authoring_tool, "");
+  }
+}
+
+TEST(Dae, RefusesAnUpAxisTagItDoesNotKnowWithItsLine) {
+  // The header takes lines 1-2, <asset> line 3, so <up_axis> is line 4.
+  EXPECT_FILE_ERROR(parse_dae(with_asset("<up_axis>W_UP</up_axis>\n"), "u.dae"),
+                    "u.dae:4: <up_axis> is \"W_UP\", expected X_UP, Y_UP or Z_UP");
+  EXPECT_FILE_ERROR(parse_dae(with_asset("<up_axis/>\n"), "u.dae"), "u.dae:4: <up_axis> is \"\",");
 }
 
 }  // namespace

@@ -92,7 +92,7 @@ TEST(OrbitCamera, FitPutsEveryBoxCornerInsideTheViewportAtAnyAspect) {
   const BoundingBox boxes[] = {box({-0.5, -0.5, -0.5}, {0.5, 0.5, 0.5}), box({-3, -2, 0}, {3.434, 2, 3.15}),
                                box({100, 100, 100}, {100.001, 100.5, 100.002}), box({0, 0, 0}, {10, 0.01, 0.01})};
   const Viewport viewports[] = {{256, 256}, {1280, 800}, {300, 900}, {1, 1000}};
-  for (UpAxis up : {UpAxis::Y, UpAxis::Z}) {
+  for (UpAxis up : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
     for (const BoundingBox& b : boxes) {
       for (Viewport v : viewports) {
         OrbitCamera camera;
@@ -144,6 +144,70 @@ TEST(OrbitCamera, YUpFrontViewLooksDownMinusZAndZUpDownPlusY) {
   EXPECT_TRUE(near(camera.forward_direction(), {0, 1, 0}, 1e-12));
   EXPECT_TRUE(near(camera.right_direction(), {1, 0, 0}, 1e-12));
   EXPECT_TRUE(near(camera.screen_up_direction(), {0, 0, 1}, 1e-12));
+}
+
+// COLLADA's frame for each up axis (core/up_axis.h): the front view's right, up and towards-the-viewer axes.
+struct AxisFrameCase {
+  UpAxis up;
+  glm::dvec3 right, up_vector, towards_viewer;
+};
+constexpr double kPiOver180 = M_PI / 180.0;
+
+TEST(OrbitCamera, EachUpAxisFrontViewIsColladasFrame) {
+  const AxisFrameCase cases[] = {{UpAxis::X, {0, -1, 0}, {1, 0, 0}, {0, 0, 1}},
+                                 {UpAxis::Y, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}},
+                                 {UpAxis::Z, {1, 0, 0}, {0, 0, 1}, {0, -1, 0}}};
+  for (const AxisFrameCase& c : cases) {
+    SCOPED_TRACE(std::string(up_axis_name(c.up)));
+    OrbitCamera camera;
+    camera.set_up_axis(c.up);
+    camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+    camera.set_angles(0, 0);
+    EXPECT_EQ(camera.up_axis(), c.up);
+    EXPECT_TRUE(near(camera.up_vector(), c.up_vector, 0.0));
+    EXPECT_TRUE(near(camera.forward_direction(), -c.towards_viewer, 1e-12));
+    EXPECT_TRUE(near(camera.right_direction(), c.right, 1e-12));
+    EXPECT_TRUE(near(camera.screen_up_direction(), c.up_vector, 1e-12));
+    EXPECT_TRUE(near(glm::cross(c.right, c.up_vector), c.towards_viewer, 0.0));  // right-handed
+    camera.set_angles(90, 0);  // yaw turns the eye from the front towards the right
+    EXPECT_TRUE(near((camera.eye() - camera.target()) / camera.distance(), c.right, 1e-12));
+    camera.set_angles(0, 89);
+    EXPECT_GT(glm::dot(camera.eye() - camera.target(), c.up_vector) / camera.distance(), 0.99);
+  }
+}
+
+TEST(OrbitCamera, EachUpAxisShowsItsUpAxisUpAndYawTurnsAboutIt) {
+  // A mesh standing along its up axis stands upright on screen in the fitted three-quarter view: its top is
+  // straight above its centre, and orbiting sideways keeps it there.
+  for (UpAxis up : {UpAxis::X, UpAxis::Y, UpAxis::Z}) {
+    SCOPED_TRACE(std::string(up_axis_name(up)));
+    OrbitCamera camera;
+    camera.set_up_axis(up);
+    camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+    const Viewport viewport{600, 400};
+    for (double drag : {0.0, 80.0, -200.0}) {
+      camera.orbit(drag, 0);
+      const ScreenPoint centre = camera.project({0, 0, 0}, viewport);
+      const ScreenPoint top = camera.project(camera.up_vector(), viewport);
+      EXPECT_NEAR(top.pixel.x, centre.pixel.x, 1e-9);
+      EXPECT_LT(top.pixel.y, centre.pixel.y - 50);
+    }
+    camera.reset();  // the eye is above the mesh (pitch 20 degrees towards the up axis) and in front of it
+    const glm::dvec3 offset = (camera.eye() - camera.target()) / camera.distance();
+    EXPECT_NEAR(glm::dot(offset, camera.up_vector()), std::sin(OrbitCamera::kDefaultPitchDegrees * kPiOver180), 1e-12);
+    EXPECT_EQ(camera.up_axis(), up);
+  }
+}
+
+TEST(OrbitCamera, ChangingTheUpAxisKeepsTheAnglesAboutTheNewAxis) {
+  OrbitCamera camera;
+  camera.fit(box({-1, -1, -1}, {1, 1, 1}));
+  camera.set_angles(10, 30);
+  camera.set_up_axis(UpAxis::X);
+  EXPECT_NEAR(camera.yaw_degrees(), 10, 1e-12);
+  EXPECT_NEAR(camera.pitch_degrees(), 30, 1e-12);
+  EXPECT_NEAR(glm::dot(camera.eye() - camera.target(), glm::dvec3(1, 0, 0)) / camera.distance(),
+              std::sin(30 * kPiOver180), 1e-12);
 }
 
 TEST(OrbitCamera, OrbitTurnsAroundTheTargetAndClampsPitch) {

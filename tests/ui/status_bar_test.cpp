@@ -120,6 +120,23 @@ TEST(StatusBar, ErrorMessagesOfferTheirElement) {
   EXPECT_EQ(format_id(t.sel.selected), "f1");
 }
 
+TEST(StatusBar, ShowsTheUpAxisTheAppFilledIn) {
+  StatusFixture t(grid_1x1());
+  t.frame();
+  EXPECT_EQ(t.probe.find("up-axis"), nullptr);  // nothing filled in, nothing shown
+  t.state.up_axis = "Z up";
+  t.frame();
+  const UiProbe::Item* brief = t.probe.find("up-axis");
+  ASSERT_NE(brief, nullptr);
+  const float brief_width = brief->max.x - brief->min.x;
+  EXPECT_GT(brief_width, 0.0f);
+  t.state.up_axis = "Y up (from the file)";
+  t.frame();
+  const UiProbe::Item* longer = t.probe.find("up-axis");
+  ASSERT_NE(longer, nullptr);
+  EXPECT_GT(longer->max.x - longer->min.x, brief_width * 3);  // the text drawn is the one given
+}
+
 // Every element of every kind (live, dead, one past the end) selected in turn, all panels drawn for two frames.
 void draw_everything_on(MeshDocument& doc) {
   ImGuiHarness imgui;

@@ -1,0 +1,43 @@
+// The window's up axis and its words (see up_axis_choice.h).
+#include "app/up_axis_choice.h"
+
+namespace meshedit {
+
+UpAxis chosen_up_axis(UpAxisChoice choice, const std::optional<FileUpAxis>& file) noexcept {
+  switch (choice) {
+    case UpAxisChoice::Y: return UpAxis::Y;
+    case UpAxisChoice::Z: return UpAxis::Z;
+    case UpAxisChoice::FromFile: break;
+  }
+  return file ? file->up_axis : UpAxis::Z;
+}
+
+std::string_view up_axis_status(UpAxisChoice choice, const std::optional<FileUpAxis>& file) noexcept {
+  switch (choice) {
+    case UpAxisChoice::Y: return "Y up (View menu)";
+    case UpAxisChoice::Z: return "Z up (View menu)";
+    case UpAxisChoice::FromFile: break;
+  }
+  if (!file) return "Z up";
+  if (file->source == UpAxisSource::CourseExporter) return "Z up (course file)";
+  switch (file->up_axis) {
+    case UpAxis::X: return "X up (from the file)";
+    case UpAxis::Y: return "Y up (from the file)";
+    case UpAxis::Z: return "Z up (from the file)";
+  }
+  return "Z up (from the file)";
+}
+
+std::string_view up_axis_status_tooltip(UpAxisChoice choice, const std::optional<FileUpAxis>& file) noexcept {
+  if (choice != UpAxisChoice::FromFile) return "Chosen in View > Up axis (\"From the file\" goes back to the file's)";
+  if (!file) return "Every mesh MeshEdit makes is Z-up (View > Up axis changes it)";
+  switch (file->source) {
+    case UpAxisSource::Format: return "The format's convention (View > Up axis changes it)";
+    case UpAxisSource::FileTag: return "What the file's <up_axis> says (View > Up axis changes it)";
+    case UpAxisSource::CourseExporter:
+      return "A CS184 course file: Z-up, although its exporter tagged it Y_UP (View > Up axis changes it)";
+  }
+  return "View > Up axis changes it";
+}
+
+}  // namespace meshedit
