@@ -62,7 +62,7 @@ local names = names_of(shape, shape:edge(0))
 
 step("The diamond", function()
   show(shape)
-  camera "fit"
+  camera { fit = true, pitch = 55 }  -- a flat mesh: seen from above, its faces and arrows have room
   label_all(names)
   highlight(names.e, "yellow")
   say [[

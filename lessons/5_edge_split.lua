@@ -44,7 +44,7 @@ end
 
 step("What a split does", function()
   show(shape)
-  camera "fit"
+  camera { fit = true, pitch = 55 }  -- a flat mesh: seen from above, its faces and arrows have room
   for element, text in pairs({ [a] = "a", [b] = "b", [c] = "c", [d] = "d" }) do label(element, text) end
   label(shape:face(0), "f0")
   label(shape:face(1), "f1")

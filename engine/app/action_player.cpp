@@ -112,6 +112,10 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     const std::optional<ScreenPoint> at = app.element_pixel(*element);
     if (!at) throw std::runtime_error(args[0] + " is not on screen");
     app.click(int(at->pixel.x), int(at->pixel.y));
+  } else if (a.verb == "window-size") {
+    const int width = std::stoi(args[0]), height = std::stoi(args[1]);
+    if (width < 1 || height < 1 || width > 16384 || height > 16384) throw std::runtime_error("no window of that size");
+    app.request_window_size(width, height);
   } else if (a.verb == "layout-json") {
     write_file(args[0], layout_json(app));
   } else if (a.verb == "open") {

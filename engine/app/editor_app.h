@@ -161,6 +161,9 @@ class EditorApp {
   void write_pending_screenshot(int width, int height);
 
   bool quit_requested() const { return quit_requested_; }
+  // A new size for the window (the `window-size` action): the window loop applies it before the next frame.
+  void request_window_size(int width, int height) { window_size_request_ = {width, height}; }
+  std::optional<std::pair<int, int>> take_window_size_request() { return std::exchange(window_size_request_, {}); }
   OrbitCamera& camera() { return camera_; }
   const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
   RenderStyle& mesh_render_style() { return mesh_renderer_->style(); }  // tests lower its buffer cap
@@ -298,6 +301,7 @@ class EditorApp {
   bool hover_pending_ = false;
   double mouse_moved_at_ = 0.0;
   std::optional<std::filesystem::path> screenshot_path_;
+  std::optional<std::pair<int, int>> window_size_request_;
   bool quit_requested_ = false;
 };
 

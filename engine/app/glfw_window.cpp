@@ -153,6 +153,8 @@ bool GlfwWindow::take_drop_lost() { return std::exchange(drop_lost_, false); }
 
 void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window_, title.c_str()); }
 
+void GlfwWindow::set_size(int width, int height) { glfwSetWindowSize(window_, width, height); }
+
 int GlfwWindow::width() const {
   int w = 0, h = 0;
   glfwGetWindowSize(window_, &w, &h);

@@ -48,7 +48,8 @@ class GlfwWindow {
   // True once after a drop whose paths could not all be queued (memory ran out in GLFW's callback).
   bool take_drop_lost();
   void set_title(const std::string& title);
-  // The window's size in screen coordinates (what the settings remember).
+  // The window's size in screen coordinates (what the settings remember); set_size asks the window system for one.
+  void set_size(int width, int height);
   int width() const;
   int height() const;
   // The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one) divided by how many framebuffer pixels

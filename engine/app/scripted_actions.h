@@ -22,6 +22,7 @@
 //   click-on h12          (a click where the element's label anchor is on screen: a vertex's position, an edge's
 //                          midpoint, a face's centre, a halfedge's arrow; fails when it is not in the view)
 //   layout-json PATH      (writes the window's layout as JSON: app/layout_report.h)
+//   window-size W H       (asks the window system to resize the window before the next frame)
 //   key names: a letter, space, escape, grave, equal (=), minus (-), 0, [ and ], with ctrl+ and shift+
 //   up-axis from-file|y|z  (View > Up axis: the file's, or Y or Z up; refits the view)
 //   expect-up-axis X|Y|Z [TEXT...]   (the camera's up axis, and the status bar's up-axis words contain TEXT)

@@ -47,6 +47,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   float frame_ms = 0.0f;
   while (!window.should_close() && !app.quit_requested()) {
     window.set_lazy(!player.active() && !app.animating());
+    if (const auto resize = app.take_window_size_request()) window.set_size(resize->first, resize->second);
     if (app.take_look_change() | window.take_content_scale_changed()) {  // both read: each clears its flag
       const FontsLoaded fonts = window.apply_look(app.settings().font_px, app.settings().theme);
       if (!fonts.warning.empty()) std::cerr << "meshedit: " << fonts.warning << "\n";

@@ -140,7 +140,14 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
     }
     ImGui::EndCombo();
   }
-  ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing()), false);
+  // The buttons take one row, or two when the column is too narrow for them (large text): the step's text keeps the
+  // rest, so the buttons never fall off the panel.
+  const char* const buttons[] = {"< Back", "Next >", "Reload", "Lessons"};
+  const ImGuiStyle& style = ImGui::GetStyle();
+  float row = -style.ItemSpacing.x;
+  for (const char* label : buttons) row += ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
+  const int rows = row <= ImGui::GetContentRegionAvail().x ? 1 : 2;
+  ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * float(rows)), false);
   draw_step_body(runner);
   ImGui::EndChild();
   if (state.probe) state.probe->record_last_item("lesson-text");
@@ -153,7 +160,7 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   if (ImGui::Button("Next >")) runner.next();
   if (state.probe) state.probe->record_last_item("lesson-next");
   ImGui::EndDisabled();
-  ImGui::SameLine();
+  if (rows == 1) ImGui::SameLine();
   if (ImGui::Button("Reload")) run_reload(runner, state);
   ImGui::SameLine();
   if (ImGui::Button("Lessons")) {

@@ -4,6 +4,7 @@
 // change the layout (columns, text size) work, and what they chose is there at the next start.
 #include <gtest/gtest.h>
 
+#include <cstdlib>
 #include <fstream>
 #include <sstream>
 #include <string>
@@ -202,6 +203,40 @@ TEST(WindowLayout, ColumnsFoldAndTextSizeChangesAndBothLastToTheNextStart) {
   const Rect no_right = rect_of(reset["view"]);
   EXPECT_GT(no_right.x, 0.0);
   EXPECT_DOUBLE_EQ(no_right.x + no_right.w, reset["display"][0].get<double>());
+}
+
+TEST(WindowLayout, AResizedWindowKeepsItsLayoutClear) {
+  XServer x("1280x800");
+  if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path lesson = testing::source_dir() / "lessons" / "4_edge_flip.lua";
+  const std::pair<int, int> sizes[] = {{1024, 640}, {640, 400}, {1280, 800}};
+  std::string actions = "frames 3\n";
+  for (const auto& [w, h] : sizes) {
+    actions += "window-size " + std::to_string(w) + " " + std::to_string(h) + "\nframes 4\nlayout-json " +
+               (dir / ("layout-" + std::to_string(w) + ".json")).string() + "\n";
+  }
+  const WindowRun run = run_window(x.display(), lesson, actions + "quit\n", dir, "");
+  EXPECT_EQ(run.status, 0) << run.output;
+  for (const auto& [w, h] : sizes) {
+    const json layout = read_json(dir / ("layout-" + std::to_string(w) + ".json"));
+    EXPECT_EQ(layout["display"][0].get<double>(), w);
+    EXPECT_EQ(layout["display"][1].get<double>(), h);
+    expect_clear_layout(layout, "resized to " + std::to_string(w), w, h);
+  }
+}
+
+TEST(WindowLayout, OnAHiDpiScreenTheTextAndColumnsScaleAndTheButtonsStayInside) {
+  XServer x("1280x800");
+  if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
+  if (std::system("command -v xprop >/dev/null 2>&1") != 0) GTEST_SKIP() << "no xprop (x11-utils)";
+  // GLFW reads the content scale from Xft.dpi: 192 dpi is a scale of 2.
+  const std::string set_dpi = "DISPLAY=" + x.display() + " xprop -root -f RESOURCE_MANAGER 8s -set RESOURCE_MANAGER 'Xft.dpi: 192'";
+  ASSERT_EQ(std::system(set_dpi.c_str()), 0);
+  const json layout = layout_of(x, testing::source_dir() / "lessons" / "4_edge_flip.lua", testing::scratch_dir());
+  EXPECT_EQ(layout["font_px"].get<double>(), 32.0);
+  expect_clear_layout(layout, "content scale 2", 1280, 800);
+  EXPECT_TRUE(layout["lesson"].contains("next"));
 }
 
 TEST(WindowLayout, WithoutTheFontFilesImGuisFontStandsInWithAWarning) {

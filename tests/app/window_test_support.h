@@ -38,7 +38,9 @@ class XServer {
       pid_ = ::fork();
       if (pid_ == 0) {
         const std::string name = ":" + std::to_string(number);
-        ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", screen_depth.c_str(), "-nolisten", "tcp", (char*)nullptr);
+        // -noreset: the root window's properties (a test's Xft.dpi) outlive the client that set them.
+        ::execlp("Xvfb", "Xvfb", name.c_str(), "-screen", "0", screen_depth.c_str(), "-nolisten", "tcp", "-noreset",
+                 (char*)nullptr);
         ::_exit(127);
       }
       bool exited = false;
