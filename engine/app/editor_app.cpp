@@ -151,18 +151,20 @@ void EditorApp::apply_size_defaults() {
   // The wireframe's default follows the mesh's size class when it changes (opening a file, a subdivision);
   // W still toggles it in between. The renderer drops multisampling for large meshes by itself.
   const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
-  const SizeClass size = large ? SizeClass::Large
-                         : doc_.mesh.num_faces() <= kArrowsMaxFaces ? SizeClass::Small
-                                                                     : SizeClass::Medium;
+  const size_t faces = doc_.mesh.num_faces();
+  const SizeClass size = large                        ? SizeClass::Large
+                         : faces <= kArrowsMaxFaces    ? SizeClass::Small
+                         : faces <= kWireframeMaxFaces ? SizeClass::Medium
+                                                       : SizeClass::Dense;
   if (size != size_class_) {
     size_class_ = size;
-    view_options_.wireframe = !large;
+    view_options_.wireframe = size == SizeClass::Small || size == SizeClass::Medium;
     view_options_.show_halfedges = size == SizeClass::Small;
   }
   status_bar_.note.clear();
-  if (large) {
-    status_bar_.note = "large mesh: no multisampling";
-    if (!view_options_.wireframe) status_bar_.note += ", wireframe off (W shows it)";
+  if (large) status_bar_.note = "large mesh: no multisampling";
+  if (!view_options_.wireframe && (size == SizeClass::Large || size == SizeClass::Dense)) {
+    status_bar_.note += std::string(status_bar_.note.empty() ? "" : ", ") + "wireframe off (W shows it)";
   }
 }
 

@@ -240,10 +240,12 @@ class EditorApp {
   ViewOptions view_options_;
   bool show_labels_ = true;
   LabelPlacement last_labels_;
-  // The shown mesh's size class (apply_size_defaults): past RenderStyle::large_mesh_triangles, or small enough for
-  // halfedge arrows by default (kArrowsMaxFaces). When it changes, the wireframe and the arrows take its defaults.
+  // The shown mesh's size class (apply_size_defaults): small enough for halfedge arrows by default (kArrowsMaxFaces),
+  // for the wireframe (kWireframeMaxFaces: past it the lines of a fitted mesh cover its faces), dense, or past
+  // RenderStyle::large_mesh_triangles. When it changes, the wireframe and the arrows take its defaults.
   static constexpr size_t kArrowsMaxFaces = 300;
-  enum class SizeClass { Unknown, Small, Medium, Large };
+  static constexpr size_t kWireframeMaxFaces = 20000;
+  enum class SizeClass { Unknown, Small, Medium, Dense, Large };
   SizeClass size_class_ = SizeClass::Unknown;
   std::optional<ViewRequest> pending_view_;  // a lesson's view{...}, for the next mesh frame
   void take_pending_view();
