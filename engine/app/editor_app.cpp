@@ -82,6 +82,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   draw_menu_bar();
   const float menu = ImGui::GetFrameHeight();
   status_bar_.mesh_shown = mode_ == ViewMode::Mesh;
+  status_bar_.view_is_3d = mode_ != ViewMode::Curve;
   const float status = draw_status_bar(doc_, selection_, status_bar_, frame_ms);
   const ImGuiIO& io = ImGui::GetIO();
   font_pixels_ = ImGui::GetFontSize();

@@ -79,15 +79,17 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
       ImGui::SameLine(0.0f, 24.0f);
       ImGui::TextDisabled("%s", state.note.c_str());
     }
-    if (!state.up_axis.empty()) {
+    if (!state.up_axis.empty() && state.view_is_3d) {
       ImGui::SameLine(0.0f, 24.0f);
       ImGui::TextDisabled("%.*s", int(state.up_axis.size()), state.up_axis.data());
       if (state.probe) state.probe->record_last_item("up-axis");
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(state.up_axis_why.size()), state.up_axis_why.data());
     }
     ImGui::SameLine(0.0f, 24.0f);
-    if (doc.history.can_undo()) ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
-    if (doc.history.can_redo()) {
+    if (state.mesh_shown && doc.history.can_undo()) {
+      ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
+    }
+    if (state.mesh_shown && doc.history.can_redo()) {
       ImGui::SameLine();
       ImGui::TextDisabled(" Ctrl+Y: redo %s", doc.history.redo_label().c_str());
     }

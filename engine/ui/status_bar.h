@@ -25,7 +25,8 @@ namespace meshedit {
 struct StatusBarState {
   size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
   UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
-  bool mesh_shown = true;  // the mesh view is on screen: counts and validation (else the message line only)
+  bool mesh_shown = true;  // the mesh view is on screen: counts, validation and undo (else the message line only)
+  bool view_is_3d = true;  // the up axis means something (not in the curve view)
   std::string note;  // a standing remark from the view ("large mesh: wireframe off (W)"); "" for none
   // The view's up axis ("Y up (from the file)") and where it came from, for its tooltip; static text the app fills
   // (app/up_axis_choice.h); "" shows nothing.
