@@ -4,7 +4,7 @@
 //               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
 //   curve view  E one more de Casteljau level, C the whole curve, M "mine" (levels from scripts/student/curve.lua)
 //   patch view  M "mine" (the probe point from scripts/student/patch.lua)
-//   everywhere  P screenshot, Ctrl+O open, F1 help, Esc clears the selection, [ and ] fold the left and right
+//   everywhere  P screenshot, Ctrl+O open, Ctrl+Q quit, F1 help, Esc clears the selection, [ and ] fold the left and right
 //               columns, Ctrl+= Ctrl+- Ctrl+0 text size (bigger, smaller, default), ` console, X exercises
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -47,6 +47,10 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
     return true;
   }
   // Keys that work in every view.
+  if (mods.ctrl && key == GLFW_KEY_Q) {
+    quit_requested_ = true;
+    return true;
+  }
   if (mods.ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) {
     change_font_size(+1);
     return true;

@@ -51,7 +51,7 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
     if (ImGui::MenuItem("Screenshot", "P")) request_screenshot("meshedit-screenshot.png");
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Esc twice")) quit_requested_ = true;
+    if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_requested_ = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
@@ -216,6 +216,7 @@ void EditorApp::draw_help_panel() {
         {"` (backquote)", "Lua console: `mesh` is the mesh shown, `selected` the selection; Up/Down for history"},
         {"P", "screenshot (PNG in the current folder)"},
         {"Ctrl+O", "open a file (or drop one on the window)"},
+        {"Ctrl+Q", "quit (the window's size and columns are remembered)"},
         {"[  ]", "fold or unfold the left column (lesson) and the right column (tables)"},
         {"Ctrl+=  Ctrl+-  Ctrl+0", "bigger, smaller, default text"},
         {"Esc", "clear the selection"},
