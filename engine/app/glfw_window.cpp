@@ -24,6 +24,13 @@ std::string last_glfw_error() {
   return description ? description : "unknown GLFW error";
 }
 
+// A width and height from one of GLFW's size getters (the window's, in screen coordinates, or its framebuffer's).
+std::pair<int, int> size_of(void (*get)(GLFWwindow*, int*, int*), GLFWwindow* window) {
+  int w = 0, h = 0;
+  get(window, &w, &h);
+  return {w, h};
+}
+
 }  // namespace
 
 GlfwWindow::GlfwWindow(const std::string& title, int width, int height, bool fit_to_screen) {
@@ -131,17 +138,8 @@ void GlfwWindow::end_frame(const std::function<void()>& before_swap) {
   glfwSwapBuffers(window_);
 }
 
-int GlfwWindow::framebuffer_width() const {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window_, &w, &h);
-  return w;
-}
-
-int GlfwWindow::framebuffer_height() const {
-  int w = 0, h = 0;
-  glfwGetFramebufferSize(window_, &w, &h);
-  return h;
-}
+int GlfwWindow::framebuffer_width() const { return size_of(glfwGetFramebufferSize, window_).first; }
+int GlfwWindow::framebuffer_height() const { return size_of(glfwGetFramebufferSize, window_).second; }
 
 std::vector<std::string> GlfwWindow::take_dropped_files() {
   std::vector<std::string> files;
@@ -155,17 +153,8 @@ void GlfwWindow::set_title(const std::string& title) { glfwSetWindowTitle(window
 
 void GlfwWindow::set_size(int width, int height) { glfwSetWindowSize(window_, width, height); }
 
-int GlfwWindow::width() const {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  return w;
-}
-
-int GlfwWindow::height() const {
-  int w = 0, h = 0;
-  glfwGetWindowSize(window_, &w, &h);
-  return h;
-}
+int GlfwWindow::width() const { return size_of(glfwGetWindowSize, window_).first; }
+int GlfwWindow::height() const { return size_of(glfwGetWindowSize, window_).second; }
 
 float GlfwWindow::ui_scale() const {
   float sx = 1.0f, sy = 1.0f;
