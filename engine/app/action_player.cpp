@@ -3,7 +3,9 @@
 
 #include <GLFW/glfw3.h>
 
+#include <algorithm>
 #include <cctype>
+#include <iterator>
 #include <stdexcept>
 
 #include "app/editor_app.h"
@@ -21,6 +23,18 @@ std::string rest_of_line(const ScriptedAction& a) {
   return line;
 }
 
+// Keys named by a word or their character, besides the letters.
+struct NamedKey {
+  const char* name;
+  int key;
+};
+constexpr NamedKey kNamedKeys[] = {
+    {"space", GLFW_KEY_SPACE},  {"escape", GLFW_KEY_ESCAPE}, {"grave", GLFW_KEY_GRAVE_ACCENT},
+    {"equal", GLFW_KEY_EQUAL},  {"=", GLFW_KEY_EQUAL},       {"minus", GLFW_KEY_MINUS},
+    {"-", GLFW_KEY_MINUS},      {"0", GLFW_KEY_0},           {"[", GLFW_KEY_LEFT_BRACKET},
+    {"]", GLFW_KEY_RIGHT_BRACKET},
+};
+
 KeyMods parse_key(std::string text, int& key) {
   KeyMods mods;
   for (;;) {
@@ -30,22 +44,10 @@ KeyMods parse_key(std::string text, int& key) {
   }
   if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
     key = GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(text[0])) - 'A');
-  } else if (text == "space") {
-    key = GLFW_KEY_SPACE;
-  } else if (text == "escape") {
-    key = GLFW_KEY_ESCAPE;
-  } else if (text == "grave") {
-    key = GLFW_KEY_GRAVE_ACCENT;
-  } else if (text == "equal" || text == "=") {
-    key = GLFW_KEY_EQUAL;
-  } else if (text == "minus" || text == "-") {
-    key = GLFW_KEY_MINUS;
-  } else if (text == "0") {
-    key = GLFW_KEY_0;
-  } else if (text == "[") {
-    key = GLFW_KEY_LEFT_BRACKET;
-  } else if (text == "]") {
-    key = GLFW_KEY_RIGHT_BRACKET;
+  } else if (const auto named = std::find_if(std::begin(kNamedKeys), std::end(kNamedKeys),
+                                             [&](const NamedKey& k) { return text == k.name; });
+             named != std::end(kNamedKeys)) {
+    key = named->key;
   } else {
     throw std::runtime_error("unknown key '" + text + "'");
   }
