@@ -17,7 +17,7 @@ const ImVec4 kGreen(0.5f, 0.9f, 0.5f, 1.0f);
 const ImVec4 kGrey(0.65f, 0.65f, 0.65f, 1.0f);
 const ImVec4 kCurrent(1.0f, 0.75f, 0.3f, 1.0f);
 
-void text(const std::string& line) { ImGui::TextUnformatted(line.c_str(), line.c_str() + line.size()); }
+void text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
 
 void coloured(const ImVec4& colour, const std::string& line) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
@@ -213,6 +213,7 @@ void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, Me
 void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
                                   Selection& selection) {
   session.sync(doc);
+  ImGui::PushTextWrapPos(0.0f);  // the panel is a column: its lines wrap at its edge
   const ExerciseInfo& active = exercise_info(session.exercise());
   ImGui::SetNextItemWidth(220);
   if (ImGui::BeginCombo("exercise", active.title)) {
@@ -253,6 +254,7 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   } else if (session.load_error().empty()) {
     ImGui::TextDisabled("select an element and press Run mine");
   }
+  ImGui::PopTextWrapPos();
 }
 
 }  // namespace meshedit
