@@ -20,7 +20,7 @@
 // - A mesh too large to draw (past the GPU's buffer limits) is refused by the renderer once per mesh state: an Error
 //   and the status bar say so, the view stays empty, and every panel, key and menu works on (undo brings back a mesh
 //   that can be drawn); frames do not retry until the mesh changes.
-// - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
+// - A broken mesh (a Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
 // - The layout is fixed (ui/window_layout.h): menu bar, status bar, the left and right columns, the console strip,
@@ -196,7 +196,7 @@ class EditorApp {
   void place_view(int framebuffer_width, int framebuffer_height);
   void begin_view_drawing();  // GL viewport and scissor on the view
   void end_view_drawing();
-  void draw_columns(float frame_ms);
+  void draw_columns();
   void draw_left_column();
   void draw_right_column();
   void draw_console_strip();

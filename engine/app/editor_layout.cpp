@@ -83,8 +83,7 @@ std::optional<glm::ivec2> EditorApp::mouse_in_view() const {
   return glm::ivec2(int((io.MousePos.x - layout_.view.x) * sx), int((io.MousePos.y - layout_.view.y) * sy));
 }
 
-void EditorApp::draw_columns(float frame_ms) {
-  (void)frame_ms;
+void EditorApp::draw_columns() {
   if (mode_ == ViewMode::Mesh) {
     exercises_.sync(doc_);  // also while its tab is closed: the session notices edits made elsewhere
   }
