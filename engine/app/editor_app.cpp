@@ -141,15 +141,18 @@ void EditorApp::draw_mesh_view() {
   if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
   edit_animator_.set_enabled(edits_animate());
   edit_animator_.follow(doc_);
+  // While an edit plays, its moving parts are the only highlight: the selection, the changed elements and the lesson's
+  // marks, already where the edit put them, would show its end before it is reached. They come back when it lands.
+  const bool playing = edit_animator_.playing();
   Highlights highlights;
   highlights.hovered = selection_.hovered;
-  highlights.selected = selection_.selected;
-  if (!edit_animator_.playing()) {  // while an edit plays, its moving parts are the highlight; the result's follows
+  if (!playing) {
+    highlights.selected = selection_.selected;
     highlights.changed = doc_.last.index.elements();
     highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   }
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
-  draw_lesson_marks();
+  if (!playing) draw_lesson_marks();
   draw_edit_animation();
 }
 

@@ -23,6 +23,9 @@
 // - A broken mesh (a future Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
+// - An edit playing (app/edit_animator.h, only under a policy that allows it: never in tests, pictures or scripted
+//   runs) is drawn over the mesh as it is after the edit; meanwhile the selection, changed and lesson highlights wait
+//   for it to land.
 // - The layout is fixed (ui/window_layout.h): menu bar, status bar, the left and right columns, the console strip,
 //   and the view in the free centre. The mesh, patch and curve views draw only into the view rectangle (GL viewport
 //   and scissor set to it, the camera's aspect and picking in its pixels); no panel is drawn over the view or a
