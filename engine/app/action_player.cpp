@@ -131,6 +131,10 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     else if (args[0] == "y") app.choose_up_axis(UpAxisChoice::Y);
     else if (args[0] == "z") app.choose_up_axis(UpAxisChoice::Z);
     else throw std::runtime_error("up-axis takes from-file, y or z");
+  } else if (a.verb == "animate-edits") {
+    if (args[0] != "on" && args[0] != "off") throw std::runtime_error("animate-edits takes on or off");
+    app.set_edit_animation_policy(args[0] == "on" ? EditorApp::EditAnimationPolicy::Always
+                                                  : EditorApp::EditAnimationPolicy::Never);
   } else if (a.verb == "expect-up-axis") {
     expect_up_axis(app, a);
   } else if (a.verb == "expect-gpu-update") {

@@ -68,6 +68,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 }
 
 void EditorApp::run_frame(int width, int height, float frame_ms) {
+  edit_animator_.advance(frame_ms / 1000.0);  // before this frame's actions: an edit they make starts at time 0
   read_mouse_and_keys(width, height);  // in the view placed by the last frame
   update_lesson(frame_ms);
 
@@ -139,13 +140,21 @@ void EditorApp::draw_mesh_view() {
   apply_size_defaults();
   take_pending_view();
   if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
+  edit_animator_.set_enabled(edits_animate());
+  edit_animator_.follow(doc_);
+  // While an edit plays, its moving parts are the only highlight: the selection, the changed elements and the lesson's
+  // marks, already where the edit put them, would show its end before it is reached. They come back when it lands.
+  const bool playing = edit_animator_.playing();
   Highlights highlights;
   highlights.hovered = selection_.hovered;
-  highlights.selected = selection_.selected;
-  highlights.changed = doc_.last.index.elements();
-  highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
+  if (!playing) {
+    highlights.selected = selection_.selected;
+    highlights.changed = doc_.last.index.elements();
+    highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
+  }
   mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
-  draw_lesson_marks();
+  if (!playing) draw_lesson_marks();
+  draw_edit_animation();
 }
 
 void EditorApp::apply_size_defaults() {

@@ -23,6 +23,9 @@
 // - A broken mesh (a Lua script's doing) can be drawn, inspected and validated: nothing here walks
 //   the mesh except through the core's and the renderer's bounded walks.
 // - GL objects are created after the window's context exists and destroyed before it goes.
+// - An edit playing (app/edit_animator.h, only under a policy that allows it: never in tests, pictures or scripted
+//   runs) is drawn over the mesh as it is after the edit; meanwhile the selection, changed and lesson highlights wait
+//   for it to land.
 // - The layout is fixed (ui/window_layout.h): menu bar, status bar, the left and right columns, the console strip,
 //   and the view in the free centre. The mesh, patch and curve views draw only into the view rectangle (GL viewport
 //   and scissor set to it, the camera's aspect and picking in its pixels); no panel is drawn over the view or a
@@ -40,6 +43,7 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/edit_animator.h"
 #include "app/up_axis_choice.h"
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
@@ -115,9 +119,16 @@ class EditorApp {
   void show_lesson_list();
   LessonRunner& lesson() { return *lesson_; }
   const LessonMarks& lesson_marks() const { return lesson_host_->marks(); }  // the lesson's highlights and labels
-  // True while something on screen moves by itself (a lesson animation) or a hover waits for the mouse to rest:
-  // the window must not sleep.
+  // True while something on screen moves by itself (a lesson animation, an edit playing) or a hover waits for the mouse
+  // to rest: the window must not sleep.
   bool animating() const;
+  // Whether flips, splits and collapses, and their undo and redo, play for a quarter second (app/edit_animator.h):
+  // never (the default: tests, pictures and scripted runs), as View > Animate edits says (the interactive window), or
+  // always (a scripted run's `animate-edits on`).
+  enum class EditAnimationPolicy { Never, AsSettingSays, Always };
+  void set_edit_animation_policy(EditAnimationPolicy policy) { edit_animation_policy_ = policy; }
+  bool edits_animate() const;
+  const EditAnimator& edit_animator() const { return edit_animator_; }
 
   // One frame: reads input from ImGui's io, draws the 3D view into the current framebuffer of the given
   // size, and builds the panels. Call between ImGui::NewFrame() and ImGui::Render(). An exception that escapes
@@ -228,6 +239,7 @@ class EditorApp {
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
   void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
+  void draw_edit_animation();  // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
   void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
@@ -305,6 +317,8 @@ class EditorApp {
   std::optional<std::filesystem::path> screenshot_path_;
   std::optional<std::pair<int, int>> window_size_request_;
   bool quit_requested_ = false;
+  EditAnimationPolicy edit_animation_policy_ = EditAnimationPolicy::Never;
+  EditAnimator edit_animator_;
 };
 
 }  // namespace meshedit

@@ -91,7 +91,7 @@ std::unique_ptr<LessonRunner> EditorApp::make_lesson_runner() {
 }
 
 bool EditorApp::animating() const {
-  if (hover_pending_) return true;
+  if (hover_pending_ || edit_animator_.playing()) return true;
   return lesson_->step_state() == LessonRunner::StepState::Waiting &&
          lesson_->waiting_for().kind == LessonWait::Kind::Animation;
 }

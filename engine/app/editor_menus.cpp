@@ -83,6 +83,7 @@ void EditorApp::draw_menu_bar() {
     ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
     ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
     ImGui::MenuItem("Id labels", nullptr, &show_labels_);
+    ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
     ImGui::Separator();
     ImGui::MenuItem("Left column (lesson)", "[", &settings_.layout.left_open);
     ImGui::MenuItem("Right column (tables)", "]", &settings_.layout.right_open);

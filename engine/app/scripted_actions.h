@@ -26,6 +26,8 @@
 //   key names: a letter, space, escape, grave, equal (=), minus (-), 0, [ and ], with ctrl+ and shift+
 //   up-axis from-file|y|z  (View > Up axis: the file's, or Y or Z up; refits the view)
 //   expect-up-axis X|Y|Z [TEXT...]   (the camera's up axis, and the status bar's up-axis words contain TEXT)
+//   animate-edits on|off  (flip, split, collapse and their undo and redo play for a quarter second, as in a window a
+//                          person uses, whatever the settings say; a scripted run starts with them off)
 #pragma once
 
 #include <string>

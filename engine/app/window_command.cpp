@@ -40,6 +40,8 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   window.set_lazy(!player.active());  // scripted runs step one action per frame
   EditorApp app;
   app.apply_settings(settings);
+  // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
+  if (!player.active()) app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
   app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
   if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
 

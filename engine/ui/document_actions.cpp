@@ -12,6 +12,7 @@
 
 #include "core/mesh_ops.h"
 #include "core/parallel_for.h"
+#include "ui/edge_edit_label.h"
 
 namespace meshedit {
 namespace {
@@ -80,14 +81,15 @@ OpResult<EdgeId> find_edge(const HalfedgeMesh& mesh, ElementRef selected) {
 
 // Runs a local operation on the selected edge and reports the outcome on doc.message.
 template <class Op>
-auto edit_selected_edge(MeshDocument& doc, Selection& selection, const char* verb, Op op) {
+auto edit_selected_edge(MeshDocument& doc, Selection& selection, EdgeOperation operation, Op op) {
   using Result = decltype(op(doc.mesh, EdgeId()));
+  const char* verb = edge_operation_verb(operation);
   Result result{};
   OpResult<EdgeId> edge;
   std::string label;
   try {
     edge = find_edge(doc.mesh, selection.selected);
-    if (edge) label = std::string(verb) + " " + format_id(edge.value);
+    if (edge) label = edge_edit_label(operation, edge.value);  // "flip e5": the window reads it back to animate
   } catch (const std::bad_alloc&) {
     result.check = memory_ran_out_before_acting(doc);
     return result;
@@ -144,19 +146,20 @@ bool select_element(MeshDocument& doc, Selection& selection, ElementRef element)
 }
 
 Check flip_selected(MeshDocument& doc, Selection& selection) {
-  return edit_selected_edge(doc, selection, "flip", [](HalfedgeMesh& m, EdgeId e) { return flip(m, e); }).check;
+  const auto flip_edge = [](HalfedgeMesh& m, EdgeId e) { return flip(m, e); };
+  return edit_selected_edge(doc, selection, EdgeOperation::Flip, flip_edge).check;
 }
 
 Check split_selected(MeshDocument& doc, Selection& selection) {
-  OpResult<VertexId> result =
-      edit_selected_edge(doc, selection, "split", [](HalfedgeMesh& m, EdgeId e) { return split(m, e); });
+  const auto split_edge = [](HalfedgeMesh& m, EdgeId e) { return split(m, e); };
+  OpResult<VertexId> result = edit_selected_edge(doc, selection, EdgeOperation::Split, split_edge);
   if (result) append_to_message(doc, [&] { return "; new vertex " + format_id(result.value); });
   return std::move(result.check);
 }
 
 Check collapse_selected(MeshDocument& doc, Selection& selection) {
-  OpResult<VertexId> result =
-      edit_selected_edge(doc, selection, "collapse", [](HalfedgeMesh& m, EdgeId e) { return collapse(m, e); });
+  const auto collapse_edge = [](HalfedgeMesh& m, EdgeId e) { return collapse(m, e); };
+  OpResult<VertexId> result = edit_selected_edge(doc, selection, EdgeOperation::Collapse, collapse_edge);
   if (result) {
     selection.selected = result.value;
     append_to_message(doc, [&] { return "; " + format_id(result.value) + " remains"; });

@@ -97,6 +97,13 @@ const std::vector<Key>& keys() {
       ems_key("console_ems", &LayoutPrefs::console_ems, WindowLayout::kMinConsoleEms),
       flag_key("left_column_open", &LayoutPrefs::left_open),
       flag_key("right_column_open", &LayoutPrefs::right_open),
+      {"animate_edits", "true or false",
+       [](Settings& s, const std::string& text) {
+         if (text != "true" && text != "false") return false;
+         s.animate_edits = text == "true";
+         return true;
+       },
+       [](const Settings& s) { return std::string(s.animate_edits ? "true" : "false"); }},
   };
   return table;
 }

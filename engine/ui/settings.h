@@ -1,6 +1,6 @@
 // The window's settings that last between runs: its size, the columns' widths and whether they are open, the
-// console's height, the text size and the theme. Kept as `key = value` lines in settings.ini under
-// $XDG_CONFIG_HOME/meshedit (or ~/.config/meshedit).
+// console's height, the text size, the theme and whether edits animate. Kept as `key = value` lines in settings.ini
+// under $XDG_CONFIG_HOME/meshedit (or ~/.config/meshedit).
 //
 // Invariants:
 // - Reading never fails: a missing file gives the defaults; a line that is not `key = value`, an unknown key or a
@@ -31,6 +31,7 @@ struct Settings {
   int window_height = kDefaultWindowHeight;
   float font_px = kDefaultFontPx;
   Theme theme = Theme::Dark;
+  bool animate_edits = true;  // View > Animate edits: flip, split and collapse play for a quarter second
   LayoutPrefs layout;
 };
 

@@ -69,6 +69,20 @@ TEST(Settings, BadLinesAreNamedAndKeepTheirDefaults) {
   EXPECT_EQ(r.layout.right_ems, 20);
 }
 
+TEST(Settings, AnimateEditsIsOnByDefaultAndReadsBackOff) {
+  EXPECT_TRUE(Settings{}.animate_edits);
+  Settings s;
+  s.animate_edits = false;
+  EXPECT_NE(format_settings(s).find("animate_edits = false\n"), std::string::npos);
+  std::vector<std::string> warnings;
+  EXPECT_FALSE(parse_settings(format_settings(s), "settings.ini", warnings).animate_edits);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_TRUE(parse_settings("animate_edits = true\n", "settings.ini", warnings).animate_edits);
+  EXPECT_TRUE(parse_settings("animate_edits = no\n", "settings.ini", warnings).animate_edits);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_EQ(warnings[0], "settings.ini:1: animate_edits must be true or false, not 'no'; kept the default");
+}
+
 TEST(Settings, AnUnwritableFolderIsReportedNotThrown) {
   const fs::path blocker = testing::scratch_dir() / "file";
   std::ofstream(blocker) << "x";
