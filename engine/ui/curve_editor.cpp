@@ -268,7 +268,7 @@ ImU32 split_right_band() { return colour_of(palette().split_right, 0.47f); }
 ImU32 split_left_ring() { return colour_of(palette().split_left); }
 ImU32 split_right_ring() { return colour_of(palette().split_right); }
 ImU32 wrong_colour() { return colour_of(palette().wrong); }
-ImU32 ghost_colour() { return colour_of(palette().reference, 0.6f); }
+ImU32 ghost_colour() { return colour_of(palette().reference, kGhostAlpha); }
 ImU32 error_colour() { return colour_of(palette().error); }
 ImU32 mine_ok_colour() { return colour_of(palette().mine); }
 ImU32 level_colour(int k) { return colour_of(meshedit::level_colour(palette(), k)); }
@@ -326,7 +326,9 @@ ImU32 mine_message_colour(const CurveMineLevels& mine, int shown) {
 void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels& mine) {
   const std::vector<glm::dvec2> reference = flat(mine.reference_level);
   draw_polyline(dl, view, reference, ghost_colour(), 1.0f);
-  for (const glm::dvec2& p : reference) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 5.0f, ghost_colour(), 0, 1.5f);
+  for (const glm::dvec2& p : reference) {
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 5.0f, ghost_colour(), 0, 1.5f);
+  }
   if (mine.wrong_point < 0) return;
   const ImVec2 yours = to_imvec(curve_to_screen(view, flat(mine.mine_point)));
   const ImVec2 theirs = to_imvec(curve_to_screen(view, flat(mine.reference_point)));
@@ -390,7 +392,9 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
     if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, curve_colour(), 0, 2.0f);
   }
 
-  for (const glm::dvec2& p : halves.left) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, split_left_ring(), 0, 2.0f);
+  for (const glm::dvec2& p : halves.left) {
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, split_left_ring(), 0, 2.0f);
+  }
   for (const glm::dvec2& p : halves.right) {
     dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, split_right_ring(), 0, 2.0f);
   }
@@ -480,7 +484,8 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
     const std::pair<const char*, const std::vector<glm::dvec2>*> rows[] = {{"left", &halves.left},
                                                                            {"right", &halves.right}};
     for (const auto& [name, points] : rows) {
-      const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(points == &halves.left ? split_left_ring() : split_right_ring());
+      const ImVec4 colour =
+          ImGui::ColorConvertU32ToFloat4(points == &halves.left ? split_left_ring() : split_right_ring());
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextColored(colour, "%s", name);

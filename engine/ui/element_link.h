@@ -2,8 +2,8 @@
 // record of where clickable things were drawn (so headless tests can click them by name).
 //
 // Invariants:
-// - A link is followed only when its element is alive: a dead, missing or null reference is drawn in the error colour, says
-//   why in a tooltip, and never changes the selection.
+// - A link is followed only when its element is alive: a dead, missing or null reference is drawn in the error colour,
+//   says why in a tooltip, and never changes the selection.
 // - Hovering a live link sets selection.hovered, so the mesh view can light the element up.
 // - Must be called between ImGui::NewFrame() and ImGui::Render(), inside a window.
 #pragma once

@@ -36,7 +36,8 @@ void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_val
   }
   if (show_validation && outcome.validation) {
     const ValidationReport& report = *outcome.validation;
-    coloured(report.ok() ? passed_colour() : failed_colour(), std::string(who) + " after the call: " + report.summary());
+    coloured(report.ok() ? passed_colour() : failed_colour(),
+             std::string(who) + " after the call: " + report.summary());
     if (!report.ok() && ImGui::TreeNode("problems", "%s: %zu problems", who, report.total)) {
       for (const Violation& violation : report.violations) text(violation.message);
       ImGui::TreePop();
@@ -154,9 +155,10 @@ void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocume
       const std::string line = std::to_string(i + 1) + ". " + describe(edit) + (edit.where.empty() ? "" : "   " + edit.where);
       const bool is_current = session.replaying() && size_t(i) + 1 == current;
       const bool done = session.replaying() && size_t(i) + 1 < current;
-      ImGui::PushStyleColor(ImGuiCol_Text, is_current  ? im_colour(ui_palette().emphasis)
-                                           : done ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
-                                                  : im_colour(ui_palette().dead));
+      const ImVec4 colour = is_current ? im_colour(ui_palette().emphasis)
+                            : done     ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
+                                       : im_colour(ui_palette().dead);
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
       if (ImGui::Selectable((line + "##w" + std::to_string(i)).c_str(), is_current) && session.replaying()) {
         session.replay_step(doc, size_t(i) + 1);
       }

@@ -29,7 +29,9 @@ namespace {
 // Colours from the theme's palette (core/palette.h).
 const Palette& palette() { return ui_palette(); }
 glm::vec4 opaque(glm::vec3 rgb) { return glm::vec4(rgb, 1.0f); }
-glm::vec4 column_level_colour(size_t k) { return opaque(palette().column_levels[(k - 1) % palette().column_levels.size()]); }
+glm::vec4 column_level_colour(size_t k) {
+  return opaque(palette().column_levels[(k - 1) % palette().column_levels.size()]);
+}
 // Your point: the mine colour when it is the reference's, the wrong colour when not, the error colour when your code
 // failed.
 glm::vec4 mine_colour(const PatchMinePoint& mine) {
@@ -77,7 +79,8 @@ std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, gl
 }
 
 std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v, int samples) {
-  std::vector<PatchOverlayItem> items = control_net_polylines(patch, opaque(palette().probed_net), 2.0f, "control net ");
+  std::vector<PatchOverlayItem> items =
+      control_net_polylines(patch, opaque(palette().probed_net), 2.0f, "control net ");
   for (int r = 0; r < 4; ++r) {
     const std::span<const glm::dvec3> row(patch.points.data() + r * 4, 4);
     items.push_back(item(sample_curve3(row, samples), opaque(palette().row_curve), 2.0f, false, OverlayKind::RowCurve,
@@ -92,10 +95,10 @@ std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, doub
     items.push_back(item(eval.column_levels[k], column_level_colour(k), 1.5f, false,
                          OverlayKind::ColumnLevel, "column level " + std::to_string(k) + " at v"));
   }
-  items.push_back(item(sample_curve3(row_points, samples), opaque(palette().curve), 2.5f, false, OverlayKind::ColumnCurve,
-                       "column curve"));
-  items.push_back(item({evaluate_patch(patch, u, v)}, surface_point_colour(nullptr), 12.0f, true, OverlayKind::SurfacePoint,
-                       "P(u, v)"));
+  items.push_back(item(sample_curve3(row_points, samples), opaque(palette().curve), 2.5f, false,
+                       OverlayKind::ColumnCurve, "column curve"));
+  items.push_back(item({evaluate_patch(patch, u, v)}, surface_point_colour(nullptr), 12.0f, true,
+                       OverlayKind::SurfacePoint, "P(u, v)"));
   return items;
 }
 

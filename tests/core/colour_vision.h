@@ -93,6 +93,8 @@ inline double contrast_ratio(glm::vec3 a, glm::vec3 b) {
 }
 
 // `over` with alpha `alpha` painted on `under` (sRGB blending, as ImGui and the GL blend do).
-inline glm::vec3 composite(glm::vec3 over, float alpha, glm::vec3 under) { return over * alpha + under * (1.0f - alpha); }
+inline glm::vec3 composite(glm::vec3 over, float alpha, glm::vec3 under) {
+  return over * alpha + under * (1.0f - alpha);
+}
 
 }  // namespace meshedit::testing

@@ -206,10 +206,11 @@ TEST(LightPalette, LinesAndMarksContrastWithTheLightBackgrounds) {
                                            {"ink", s.ink}}) {
     EXPECT_GE(contrast_ratio(c.rgb, pal.neutrals.view), kMinLineContrast) << c.name << " on the view";
   }
-  std::vector<Named> on_canvas{{"control", pal.control},     {"final point", pal.final_point}, {"curve", pal.curve},
-                               {"split left", pal.split_left}, {"split right", pal.split_right}, {"mine", pal.mine},
-                               {"wrong", pal.wrong},           {"reference (ghosted)", composite(pal.reference, 0.6f,
-                                                                                                  pal.neutrals.canvas)}};
+  const glm::vec3 ghosted_reference = composite(pal.reference, kGhostAlpha, pal.neutrals.canvas);
+  std::vector<Named> on_canvas{{"control", pal.control},       {"final point", pal.final_point},
+                               {"curve", pal.curve},           {"split left", pal.split_left},
+                               {"split right", pal.split_right}, {"mine", pal.mine},
+                               {"wrong", pal.wrong},           {"reference (ghosted)", ghosted_reference}};
   for (glm::vec3 level : pal.levels) on_canvas.push_back({"level", level});
   for (const Named& c : on_canvas) {
     EXPECT_GE(contrast_ratio(c.rgb, pal.neutrals.canvas), kMinLineContrast) << c.name << " on the curve view";
