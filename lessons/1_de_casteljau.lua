@@ -30,7 +30,7 @@ step("Four points, one curve", function()
 # Bézier curves
 
 A **Bézier curve** is drawn from a few **control points**. On screen is a *cubic*: four control points,
-joined by the white **control polygon**.]]
+joined by the **control polygon**.]]
   say("The control points are " .. list(curve.points) .. ".")
   say [[
 The curve starts at the first point and ends at the last one. It does not pass through the two middle

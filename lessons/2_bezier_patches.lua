@@ -108,9 +108,10 @@ points row by row (`patch.points[row * 4 + col + 1]`). Use your curve step from 
 then the column at **v**.
 
 Check it right here: tick **mine** in the patch view (or press **M**). The probe point at (u, v) is then also
-computed by your `evaluate`: a green dot inside the red P(u, v) when it is right, an orange dot joined to P(u, v)
-when it is not, with both points in the panel (and a hint when u and v are swapped); a Lua error shows its
-`patch.lua:LINE`. Move u and v, pick other patches; save the file and the view runs the new version.
+computed by your `evaluate`: a bluish-green dot inside the vermillion P(u, v) when it is right, a vermillion dot
+joined to P(u, v) when it is not (P(u, v) is then the reference's, in the plain ink colour), with both points in
+the panel (and a hint when u and v are swapped); a Lua error shows its `patch.lua:LINE`. Move u and v, pick other
+patches; save the file and the view runs the new version.
 
 Or check it from a terminal, with the grading suite:
 

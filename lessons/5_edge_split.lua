@@ -111,7 +111,7 @@ step("Split a boundary edge", function()
   label(q, "b")
   say [[
 On the **boundary** of a mesh an edge has a face on one side only; on the other side is the boundary loop
-(drawn green). A split there makes only half the new elements: one new vertex, two new edges (ea and ec),
+(drawn blue). A split there makes only half the new elements: one new vertex, two new edges (ea and ec),
 one new face (g0) and four halfedges. The boundary loop gets one halfedge longer, and **m** lies on it.]]
   say("This grid has " .. counts(grid) .. ". Click the yellow edge on its bottom row (`" .. tostring(rim)
     .. "`) to select it.")

@@ -88,7 +88,7 @@ No file at hand? Keep the icosahedron on screen: it stands in for yours. Press t
   end
   if mesh:num_boundaries() > 0 then
     say [[
-The boundary loops are drawn in green. If you did not expect any, a UV seam or a sharp edge split the vertices
+The boundary loops are drawn in blue. If you did not expect any, a UV seam or a sharp edge split the vertices
 in the export: untick UVs and Normals, or merge by distance, and export again.]]
   end
 end)

@@ -73,8 +73,8 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   update_lesson(frame_ms);
 
   const ImVec4 bg = view_background(settings_.theme);
-  mesh_renderer_->style().background = glm::vec4(bg.x, bg.y, bg.z, bg.w);
-  patch_renderer_->style().background = mesh_renderer_->style().background;
+  set_render_colours(mesh_renderer_->style(), palette_for(settings_.theme));
+  set_render_colours(patch_renderer_->style(), palette_for(settings_.theme));
   glViewport(0, 0, std::max(1, width), std::max(1, height));
   glClearColor(bg.x, bg.y, bg.z, bg.w);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

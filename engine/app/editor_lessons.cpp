@@ -14,6 +14,7 @@
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
+#include "core/palette.h"
 #include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
 
@@ -142,7 +143,7 @@ void EditorApp::draw_lesson_marks() {
   Overlay overlay;
   overlay.on_top = true;
   for (const auto& [element, colour] : marks.highlights) {
-    const glm::vec4 rgba(colour, 1.0f);
+    const glm::vec4 rgba(swatch_in_theme(colour, settings_.theme), 1.0f);  // a named swatch in this theme's shade
     if (!mesh.alive(element)) continue;
     switch (element.kind) {
       case ElementKind::Vertex:

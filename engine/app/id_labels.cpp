@@ -10,6 +10,7 @@
 #include <imgui.h>
 
 #include "app/editor_app.h"
+#include "core/palette.h"
 #include "render/labels.h"
 
 namespace meshedit {
@@ -17,20 +18,24 @@ namespace {
 
 constexpr size_t kMaxLabelledFaces = 120;
 
-ImU32 text_colour(const PlacedLabel& label) {
-  if (label.source == LabelSource::Lesson) return IM_COL32(255, 217, 77, 255);
+ImU32 to_imgui_colour(glm::vec4 rgba) { return ImGui::ColorConvertFloat4ToU32(ImVec4(rgba.r, rgba.g, rgba.b, rgba.a)); }
+
+// A label's text takes its element kind's colour from the palette, a lesson's label the lesson colour; each sits on a
+// box of the theme's label_box (dark boxes on the dark theme, light ones on the light), so it reads over any face.
+ImU32 text_colour(const PlacedLabel& label, const Palette& palette) {
+  if (label.source == LabelSource::Lesson) return to_imgui_colour(glm::vec4(palette.lesson_label, 1.0f));
   switch (label.element.kind) {
-    case ElementKind::Vertex: return IM_COL32(255, 230, 120, 255);
-    case ElementKind::Edge: return IM_COL32(230, 230, 230, 255);
-    case ElementKind::Halfedge: return IM_COL32(255, 170, 240, 255);
+    case ElementKind::Vertex: return to_imgui_colour(glm::vec4(palette.vertex_label, 1.0f));
+    case ElementKind::Edge: return to_imgui_colour(glm::vec4(palette.edge_label, 1.0f));
+    case ElementKind::Halfedge: return to_imgui_colour(glm::vec4(palette.halfedge_label, 1.0f));
     case ElementKind::Face:
     case ElementKind::Boundary: break;
   }
-  return IM_COL32(150, 200, 255, 255);
+  return to_imgui_colour(glm::vec4(palette.face_label, 1.0f));
 }
 
-ImU32 box_colour(const PlacedLabel& label) {
-  return label.source == LabelSource::Lesson ? IM_COL32(20, 20, 20, 210) : IM_COL32(0, 0, 0, 150);
+ImU32 box_colour(const PlacedLabel& label, const Palette& palette) {
+  return to_imgui_colour(label.source == LabelSource::Lesson ? palette.lesson_label_box : palette.neutrals.label_box);
 }
 
 ImVec2 to_imgui(const glm::dvec2& p) { return ImVec2(float(p.x), float(p.y)); }
@@ -57,11 +62,12 @@ void EditorApp::draw_labels(float view_x, float view_y, float view_width, float 
   const std::vector<LabelRequest> requests = label_requests(mesh, camera_, view, scene, measure);
   last_labels_ = place_labels(requests, view.window);
 
+  const Palette& palette = palette_for(settings_.theme);
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   draw->PushClipRect(to_imgui(view.window.min), to_imgui(view.window.max), true);
   for (const PlacedLabel& label : last_labels_.placed) {
-    draw->AddRectFilled(to_imgui(label.rect.min), to_imgui(label.rect.max), box_colour(label), 3.0f);
-    draw->AddText(to_imgui(label.text_min), text_colour(label), label.text.c_str());
+    draw->AddRectFilled(to_imgui(label.rect.min), to_imgui(label.rect.max), box_colour(label, palette), 3.0f);
+    draw->AddText(to_imgui(label.text_min), text_colour(label, palette), label.text.c_str());
   }
   draw->PopClipRect();
 }

@@ -1,9 +1,8 @@
 // What the mesh view shows (ViewOptions, toggled by the app's keys), what it highlights (Highlights, from
 // the selection and the last operation's diff) and how it looks (RenderStyle). Plain data, no GL.
 //
-// Colour meanings, kept the same in every pass so a student learns them once:
-//   selected  yellow-white      hovered  magenta      changed by the last operation  orange
-//   boundary edges  green       faces  blue-grey, their back sides  grey-red (an inside-out face shows)
+// Colours come from the palette (core/palette.h), the one place their meanings are named: set_render_colours()
+// copies a palette's into a RenderStyle, and a default RenderStyle has the dark theme's.
 #pragma once
 
 #include <cstddef>
@@ -13,6 +12,7 @@
 #include <glm/vec4.hpp>
 
 #include "core/ids.h"
+#include "core/palette.h"
 
 namespace meshedit {
 
@@ -37,16 +37,16 @@ struct Highlights {
 };
 
 struct RenderStyle {
-  glm::vec4 background{0.13f, 0.14f, 0.16f, 1.0f};
-  glm::vec4 face{0.55f, 0.6f, 0.9f, 1.0f};
-  glm::vec4 back_face{0.6f, 0.38f, 0.38f, 1.0f};
-  glm::vec4 wire{0.07f, 0.07f, 0.09f, 1.0f};
-  glm::vec4 boundary{0.15f, 0.85f, 0.35f, 1.0f};
-  glm::vec4 vertex{0.95f, 0.95f, 0.95f, 1.0f};
-  glm::vec4 arrow{0.95f, 0.95f, 0.85f, 1.0f};
-  glm::vec4 selected{1.0f, 0.92f, 0.25f, 1.0f};
-  glm::vec4 hovered{0.95f, 0.15f, 0.8f, 1.0f};
-  glm::vec4 changed{1.0f, 0.55f, 0.1f, 1.0f};
+  glm::vec4 background{palette_for(Theme::Dark).neutrals.view, 1.0f};
+  glm::vec4 face{palette_for(Theme::Dark).neutrals.face, 1.0f};
+  glm::vec4 back_face{palette_for(Theme::Dark).neutrals.back_face, 1.0f};
+  glm::vec4 wire{palette_for(Theme::Dark).neutrals.wire, 1.0f};
+  glm::vec4 boundary{palette_for(Theme::Dark).boundary, 1.0f};
+  glm::vec4 vertex{palette_for(Theme::Dark).vertex, 1.0f};
+  glm::vec4 arrow{palette_for(Theme::Dark).arrow, 1.0f};
+  glm::vec4 selected{palette_for(Theme::Dark).selected, 1.0f};
+  glm::vec4 hovered{palette_for(Theme::Dark).hovered, 1.0f};
+  glm::vec4 changed{palette_for(Theme::Dark).changed, 1.0f};
   // Sizes in framebuffer pixels.
   float wire_width = 1.0f;
   float boundary_width = 2.5f;
@@ -63,6 +63,27 @@ struct RenderStyle {
   // 0 for OpenGL's. Past it a mesh is too large to draw (MeshRenderer::update). Tests set it to try that cheaply.
   size_t max_buffer_texels = 0;
 };
+
+// Sets the style's colours to the palette's (its sizes and limits are left as they are).
+inline void set_render_colours(RenderStyle& style, const Palette& palette) {
+  style.background = glm::vec4(palette.neutrals.view, 1.0f);
+  style.face = glm::vec4(palette.neutrals.face, 1.0f);
+  style.back_face = glm::vec4(palette.neutrals.back_face, 1.0f);
+  style.wire = glm::vec4(palette.neutrals.wire, 1.0f);
+  style.boundary = glm::vec4(palette.boundary, 1.0f);
+  style.vertex = glm::vec4(palette.vertex, 1.0f);
+  style.arrow = glm::vec4(palette.arrow, 1.0f);
+  style.selected = glm::vec4(palette.selected, 1.0f);
+  style.hovered = glm::vec4(palette.hovered, 1.0f);
+  style.changed = glm::vec4(palette.changed, 1.0f);
+}
+
+// A RenderStyle with the theme's colours and the default sizes.
+inline RenderStyle render_style_for(Theme theme) {
+  RenderStyle style;
+  set_render_colours(style, palette_for(theme));
+  return style;
+}
 
 // Whether a mesh of this many triangles is drawn the cheap way (see RenderStyle::large_mesh_triangles).
 inline bool is_large_mesh(size_t triangles, const RenderStyle& style) { return triangles > style.large_mesh_triangles; }

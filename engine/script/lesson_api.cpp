@@ -16,6 +16,7 @@
 
 #include <lua.hpp>
 
+#include "core/palette.h"
 #include "script/binding_support.h"
 #include "script/exception_text.h"
 #include "script/lua_runtime.h"
@@ -316,17 +317,25 @@ BezierPatch read_patch(lua_State* L, int index, const std::string& what) {
 
 // ---- colours ----------------------------------------------------------------------------------------
 
+// A lesson's colour names give the palette's swatches (core/palette.h, the dark theme's values; the window shows each
+// in its theme's shade), so a lesson stays colour-blind safe: "red" is vermillion, "green" bluish green, "cyan" sky
+// blue, "magenta", "pink" and "purple" reddish purple, and "white" and "black" the ink (what reads on the theme's
+// background: white-ish on dark, black-ish on light).
 struct NamedColour {
   const char* name;
   glm::vec3 rgb;
 };
 const NamedColour kColours[] = {
-    {"red", {1.0f, 0.0f, 0.0f}},    {"green", {0.0f, 0.8f, 0.0f}}, {"blue", {0.2f, 0.4f, 1.0f}},
-    {"yellow", {1.0f, 0.9f, 0.0f}}, {"orange", {1.0f, 0.5f, 0.0f}}, {"magenta", {1.0f, 0.0f, 1.0f}},
-    {"pink", {1.0f, 0.5f, 0.7f}},   {"cyan", {0.0f, 0.9f, 0.9f}},  {"purple", {0.6f, 0.2f, 0.8f}},
-    {"white", {1.0f, 1.0f, 1.0f}},  {"grey", {0.5f, 0.5f, 0.5f}},  {"gray", {0.5f, 0.5f, 0.5f}},
-    {"black", {0.0f, 0.0f, 0.0f}}};
-constexpr glm::vec3 kDefaultHighlight{1.0f, 0.5f, 0.0f};  // orange, the app's "just changed" colour
+    {"red", kDarkSwatches.vermillion},  {"green", kDarkSwatches.bluish_green},
+    {"blue", kDarkSwatches.blue},       {"yellow", kDarkSwatches.yellow},
+    {"orange", kDarkSwatches.orange},   {"magenta", kDarkSwatches.reddish_purple},
+    {"pink", kDarkSwatches.reddish_purple}, {"cyan", kDarkSwatches.sky_blue},
+    {"purple", kDarkSwatches.reddish_purple}, {"white", kDarkSwatches.ink},
+    {"grey", kDarkSwatches.grey},       {"gray", kDarkSwatches.grey},
+    {"black", kDarkSwatches.ink}};
+
+// The colour of highlight(x) with no colour: the palette's lesson highlight (the last-edit colour).
+glm::vec3 default_highlight() { return palette_for(Theme::Dark).lesson_highlight; }
 
 int hex_digit(char c) {
   if (c >= '0' && c <= '9') return c - '0';
@@ -336,7 +345,7 @@ int hex_digit(char c) {
 }
 
 glm::vec3 read_colour(lua_State* L, int index) {
-  if (lua_isnoneornil(L, index)) return kDefaultHighlight;
+  if (lua_isnoneornil(L, index)) return default_highlight();
   if (lua_type(L, index) == LUA_TSTRING) {
     const std::string text = lua_tostring(L, index);
     for (const NamedColour& c : kColours) {

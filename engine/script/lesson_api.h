@@ -20,7 +20,8 @@
 //   animate(seconds, function(t) ... end)         calls the function with t from 0 to 1 as the frames pass
 //   show(mesh | curve | patch | {points...} | {{16 points}, ...})   a mesh, a 2D curve (z = 0), or patches
 //   highlight(element | "e7" | {elements...}, colour)   colour: "red" ... "#rrggbb" or {r, g, b} in [0, 1];
-//                                                 default orange
+//                                                 names give the palette's colour-blind-safe swatches
+//                                                 (core/palette.h); default: the last-edit colour
 //   label(element | "e7", text)    clear()  (removes highlights and labels)
 //   camera "fit" | "reset" | { fit =, reset =, yaw =, pitch = (degrees), distance =, target = point }
 //   current_mesh() -> a copy of the mesh on screen (with the student's edits), or nil

@@ -7,8 +7,8 @@
 // - Level k of "mine" is the student's evaluate_step run on mine's level k - 1 (level 0 is the control points)
 //   at the view's t, and is checked by check_exercise(CurveStep) on that same input. The levels stop at the first
 //   one that fails (a Lua error, a limit, a return value that is not a list of points) or differs from the
-//   reference: that level is kept, to be drawn in the warning colour, and nothing after it is computed. So every
-//   level before `failed_level` is the reference's, up to the checker's tolerance.
+//   reference: that level is kept, to be drawn in the palette's "wrong" colour, and nothing after it is computed. So
+//   every level before `failed_level` is the reference's, up to the checker's tolerance.
 // - Levels are computed only as far as the view shows them (E reveals one more, and that is when the student's
 //   code runs for it), and kept while the control points, t and the loaded code stay the same (compared
 //   exactly): an idle frame runs no Lua, a broken function is not run again every frame.

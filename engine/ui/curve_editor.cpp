@@ -15,6 +15,7 @@
 
 #include "ui/bezier_mine.h"
 #include "ui/flow_layout.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 
@@ -253,34 +254,24 @@ void handle_canvas_input(CurveEditorState& state, const CanvasInput& input) {
 
 namespace {
 
-constexpr ImU32 kControlColour = IM_COL32(255, 255, 255, 255);
-constexpr ImU32 kFinalColour = IM_COL32(255, 60, 60, 255);
-constexpr ImU32 kCurveColour = IM_COL32(60, 220, 90, 255);
-constexpr ImU32 kHoverColour = IM_COL32(60, 220, 90, 255);  // the course draws the grabbed point green
+// Colours from the theme's palette (core/palette.h). "Mine": a level of yours that is not the reference's is
+// drawn in the wrong colour, the reference's level it should have been in the reference colour (ghosted).
+const Palette& palette() { return ui_palette(); }
+ImU32 colour_of(glm::vec3 rgb, float alpha = 1.0f) { return im_colour_u32(rgb, alpha); }
+ImU32 control_colour() { return colour_of(palette().control); }
+ImU32 final_colour() { return colour_of(palette().final_point); }
+ImU32 curve_colour() { return colour_of(palette().curve); }  // the grabbed point too: the course draws it green
 // The halves' polygons run along the level lines (they are made of the pyramid's edge points), so they
 // are drawn as wide translucent bands underneath, with rings on their points above everything.
-constexpr ImU32 kSplitLeftColour = IM_COL32(255, 170, 60, 120);
-constexpr ImU32 kSplitRightColour = IM_COL32(170, 120, 255, 120);
-constexpr ImU32 kSplitLeftRing = IM_COL32(255, 170, 60, 255);
-constexpr ImU32 kSplitRightRing = IM_COL32(170, 120, 255, 255);
-// "Mine": a level of yours that is not the reference's, the reference's level it should have been (ghosted),
-// a Lua error, and levels that match.
-constexpr ImU32 kWarningColour = IM_COL32(255, 120, 0, 255);
-constexpr ImU32 kGhostColour = IM_COL32(235, 235, 235, 150);
-constexpr ImU32 kErrorColour = IM_COL32(255, 90, 90, 255);
-constexpr ImU32 kMineOkColour = IM_COL32(120, 230, 120, 255);
-constexpr ImU32 kBackground = IM_COL32(18, 18, 24, 255);
-constexpr ImU32 kFrameColour = IM_COL32(70, 70, 80, 255);
-
-// Level k >= 1; level 0 is the control polygon (white).
-ImU32 level_colour(int k) {
-  static constexpr ImU32 kPalette[] = {
-      IM_COL32(90, 150, 255, 255), IM_COL32(240, 210, 60, 255), IM_COL32(40, 210, 230, 255),
-      IM_COL32(230, 100, 230, 255), IM_COL32(250, 140, 110, 255), IM_COL32(180, 180, 255, 255),
-  };
-  if (k <= 0) return kControlColour;
-  return kPalette[(k - 1) % (sizeof(kPalette) / sizeof(kPalette[0]))];
-}
+ImU32 split_left_band() { return colour_of(palette().split_left, 0.47f); }
+ImU32 split_right_band() { return colour_of(palette().split_right, 0.47f); }
+ImU32 split_left_ring() { return colour_of(palette().split_left); }
+ImU32 split_right_ring() { return colour_of(palette().split_right); }
+ImU32 wrong_colour() { return colour_of(palette().wrong); }
+ImU32 ghost_colour() { return colour_of(palette().reference, kGhostAlpha); }
+ImU32 error_colour() { return colour_of(palette().error); }
+ImU32 mine_ok_colour() { return colour_of(palette().mine); }
+ImU32 level_colour(int k) { return colour_of(meshedit::level_colour(palette(), k)); }
 
 ImVec2 to_imvec(glm::dvec2 p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); }
 
@@ -325,24 +316,26 @@ std::vector<std::vector<glm::dvec2>> mine_shown_levels(const CurveMineLevels& mi
 }
 
 ImU32 mine_message_colour(const CurveMineLevels& mine, int shown) {
-  if (mine.load_failed || (!mine.error.empty() && mine.failed_level <= shown)) return kErrorColour;
-  if (mine.failed() && mine.failed_level <= shown) return kWarningColour;
-  return kMineOkColour;
+  if (mine.load_failed || (!mine.error.empty() && mine.failed_level <= shown)) return error_colour();
+  if (mine.failed() && mine.failed_level <= shown) return wrong_colour();
+  return mine_ok_colour();
 }
 
 // Under your level that differs: the reference's level, ghosted, and a line from your wrong point to the
 // reference's, each labelled.
 void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels& mine) {
   const std::vector<glm::dvec2> reference = flat(mine.reference_level);
-  draw_polyline(dl, view, reference, kGhostColour, 1.0f);
-  for (const glm::dvec2& p : reference) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 5.0f, kGhostColour, 0, 1.5f);
+  draw_polyline(dl, view, reference, ghost_colour(), 1.0f);
+  for (const glm::dvec2& p : reference) {
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 5.0f, ghost_colour(), 0, 1.5f);
+  }
   if (mine.wrong_point < 0) return;
   const ImVec2 yours = to_imvec(curve_to_screen(view, flat(mine.mine_point)));
   const ImVec2 theirs = to_imvec(curve_to_screen(view, flat(mine.reference_point)));
-  dl->AddLine(yours, theirs, kWarningColour, 1.0f);
-  dl->AddCircle(yours, 11.0f, kWarningColour, 0, 2.0f);
-  dl->AddText(ImVec2(yours.x + 13.0f, yours.y - 8.0f), kWarningColour, "yours");
-  dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), kGhostColour, "reference");
+  dl->AddLine(yours, theirs, wrong_colour(), 1.0f);
+  dl->AddCircle(yours, 11.0f, wrong_colour(), 0, 2.0f);
+  dl->AddText(ImVec2(yours.x + 13.0f, yours.y - 8.0f), wrong_colour(), "yours");
+  dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), ghost_colour(), "reference");
 }
 
 // The canvas; `mine` is the student's levels when the switch is on (else null).
@@ -371,23 +364,23 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   const ImVec2 p1(p0.x + size.x, p0.y + size.y);
   ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, p1, true);
-  dl->AddRectFilled(p0, p1, kBackground);
-  dl->AddRect(p0, p1, kFrameColour);
+  dl->AddRectFilled(p0, p1, colour_of(palette().neutrals.canvas));
+  dl->AddRect(p0, p1, colour_of(palette().swatches.grey));
 
   const auto& points = state.curve.control_points;
   const CurveView& view = state.view;
-  if (state.show_curve) draw_polyline(dl, view, sample_curve(points), kCurveColour, 2.5f);
+  if (state.show_curve) draw_polyline(dl, view, sample_curve(points), curve_colour(), 2.5f);
   const CurveSplit<glm::dvec2> halves = state.show_split ? split_halves(state) : CurveSplit<glm::dvec2>{};
-  draw_polyline(dl, view, halves.left, kSplitLeftColour, 8.0f);
-  draw_polyline(dl, view, halves.right, kSplitRightColour, 8.0f);
-  draw_polyline(dl, view, points, kControlColour, 2.0f);
+  draw_polyline(dl, view, halves.left, split_left_band(), 8.0f);
+  draw_polyline(dl, view, halves.right, split_right_band(), 8.0f);
+  draw_polyline(dl, view, points, control_colour(), 2.0f);
 
   const auto levels = yours ? mine_shown_levels(*yours, shown) : shown_levels(state);
   const int wrong_level = yours && yours->error.empty() ? yours->failed_level : -1;
   for (size_t k = 1; k < levels.size(); ++k) {
     const bool wrong = static_cast<int>(k) == wrong_level;
     if (wrong) draw_mismatch(dl, view, *yours);
-    const ImU32 colour = wrong ? kWarningColour : level_colour(static_cast<int>(k));
+    const ImU32 colour = wrong ? wrong_colour() : level_colour(static_cast<int>(k));
     draw_polyline(dl, view, levels[k], colour, wrong ? 3.0f : 1.5f);
     draw_points(dl, view, levels[k], colour, wrong ? 5.0f : 4.0f);
   }
@@ -395,25 +388,27 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   for (int i = 0; i < static_cast<int>(points.size()); ++i) {
     const ImVec2 c = to_imvec(curve_to_screen(view, points[i]));
     const bool grabbed = i == state.dragged;
-    dl->AddCircleFilled(c, grabbed ? 7.0f : 6.0f, grabbed ? kHoverColour : kControlColour);
-    if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, kHoverColour, 0, 2.0f);
+    dl->AddCircleFilled(c, grabbed ? 7.0f : 6.0f, grabbed ? curve_colour() : control_colour());
+    if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, curve_colour(), 0, 2.0f);
   }
 
-  for (const glm::dvec2& p : halves.left) dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, kSplitLeftRing, 0, 2.0f);
+  for (const glm::dvec2& p : halves.left) {
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, split_left_ring(), 0, 2.0f);
+  }
   for (const glm::dvec2& p : halves.right) {
-    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, kSplitRightRing, 0, 2.0f);
+    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, split_right_ring(), 0, 2.0f);
   }
 
   if (levels.size() > 1 && levels.back().size() == 1 && static_cast<int>(levels.size()) - 1 != wrong_level) {
     const ImVec2 c = to_imvec(curve_to_screen(view, levels.back()[0]));
-    dl->AddCircleFilled(c, 7.0f, kFinalColour);
-    dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), kFinalColour, "C(t)");
+    dl->AddCircleFilled(c, 7.0f, final_colour());
+    dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), final_colour(), "C(t)");
   }
 
   char status[128];
   std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d%s", state.t, shown,
                 std::max(0, static_cast<int>(points.size()) - 1), yours ? "   mine: your evaluate_step" : "");
-  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), IM_COL32(220, 220, 220, 255), status);
+  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status);
   if (yours) {
     const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
@@ -423,7 +418,7 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   const float wrap = std::max(size.x - 16.0f, 50.0f);
   const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
   dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p1.y - hint_size.y - 6.0f),
-              IM_COL32(150, 150, 160, 255), hint, nullptr, wrap);
+              colour_of(palette().swatches.grey), hint, nullptr, wrap);
   dl->PopClipRect();
 }
 
@@ -438,14 +433,14 @@ void table_text_row(const char* name, ImU32 colour, const std::string& text) {
   ImGui::PopStyleColor();
 }
 
-// With "mine": your levels, the one that differs in the warning colour followed by the reference's and the
-// checker's diagnosis; a Lua error in red.
+// With "mine": your levels, the one that differs in the wrong colour followed by the reference's and the
+// checker's diagnosis; a Lua error in the error colour.
 void draw_mine_rows(const CurveMineLevels& mine, int shown) {
   const ImU32 disabled = ImGui::GetColorU32(ImGuiCol_TextDisabled);
   for (int k = 0; k < static_cast<int>(mine.levels.size()); ++k) {
     const bool wrong = k == mine.failed_level;
     const bool final_point = k > 0 && mine.levels[k].size() == 1;
-    const ImU32 colour = k > shown ? disabled : wrong ? kWarningColour : final_point ? kFinalColour : level_colour(k);
+    const ImU32 colour = k > shown ? disabled : wrong ? wrong_colour() : final_point ? final_colour() : level_colour(k);
     table_text_row(std::to_string(k).c_str(), colour, format_points(flat(mine.levels[k])));
   }
   if (!mine.failed() || mine.failed_level > shown) {
@@ -453,12 +448,12 @@ void draw_mine_rows(const CurveMineLevels& mine, int shown) {
     return;
   }
   if (!mine.error.empty()) {
-    table_text_row(mine.load_failed ? "error" : ("error " + std::to_string(mine.failed_level)).c_str(), kErrorColour,
+    table_text_row(mine.load_failed ? "error" : ("error " + std::to_string(mine.failed_level)).c_str(), error_colour(),
                    mine.error);
     return;
   }
-  table_text_row("reference", kGhostColour, format_points(flat(mine.reference_level)));
-  for (const std::string& line : mine.details) table_text_row("", kWarningColour, "- " + line);
+  table_text_row("reference", ghost_colour(), format_points(flat(mine.reference_level)));
+  for (const std::string& line : mine.details) table_text_row("", wrong_colour(), "- " + line);
 }
 
 void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine) {
@@ -473,7 +468,7 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
   for (int k = 0; !mine && k < static_cast<int>(levels.size()); ++k) {
     const bool is_shown = k <= shown;
     const ImVec4 colour = is_shown ? ImGui::ColorConvertU32ToFloat4(
-                                         k + 1 == static_cast<int>(levels.size()) && k > 0 ? kFinalColour
+                                         k + 1 == static_cast<int>(levels.size()) && k > 0 ? final_colour()
                                                                                           : level_colour(k))
                                    : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
     ImGui::TableNextRow();
@@ -489,7 +484,8 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
     const std::pair<const char*, const std::vector<glm::dvec2>*> rows[] = {{"left", &halves.left},
                                                                            {"right", &halves.right}};
     for (const auto& [name, points] : rows) {
-      const ImVec4 colour = ImGui::ColorConvertU32ToFloat4(points == &halves.left ? kSplitLeftRing : kSplitRightRing);
+      const ImVec4 colour =
+          ImGui::ColorConvertU32ToFloat4(points == &halves.left ? split_left_ring() : split_right_ring());
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
       ImGui::TextColored(colour, "%s", name);

@@ -14,7 +14,7 @@
 // - control points stay finite: add_point and drag_point refuse NaN or infinite positions.
 // The app owns the keyboard: it maps E to step_level, C to toggle_curve and M to the "mine" switch. With "mine"
 // on (bezier_mine.h), the levels drawn are the student's evaluate_step's, the first one that is not the
-// reference's in the warning colour over the reference's.
+// reference's in the palette's "wrong" colour over the reference's.
 #pragma once
 
 #include <span>

@@ -23,13 +23,13 @@ void default_window_size(ImVec2 size) {
 bool element_link(const HalfedgeMesh& mesh, ElementRef ref, Selection& selection, const char* name, UiProbe* probe) {
   const std::string text = format_id(ref);
   if (reference_state(mesh, ref) != RefState::Live) {
-    ImGui::TextColored(ui_colors::kBroken, "%s", text.c_str());
+    ImGui::TextColored(ui_colors::broken(), "%s", text.c_str());
     if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s; not followed", reference_problem(mesh, ref).c_str());
     if (probe) probe->record_last_item(name, ref);
     return false;
   }
   ImGui::PushID(name);
-  ImGui::PushStyleColor(ImGuiCol_Text, ui_colors::kLink);
+  ImGui::PushStyleColor(ImGuiCol_Text, ui_colors::link());
   const bool clicked = ImGui::Selectable(text.c_str(), selection.selected == ref, 0, ImGui::CalcTextSize(text.c_str()));
   ImGui::PopStyleColor();
   ImGui::PopID();

@@ -2,8 +2,8 @@
 // record of where clickable things were drawn (so headless tests can click them by name).
 //
 // Invariants:
-// - A link is followed only when its element is alive: a dead, missing or null reference is drawn red, says
-//   why in a tooltip, and never changes the selection.
+// - A link is followed only when its element is alive: a dead, missing or null reference is drawn in the error colour,
+//   says why in a tooltip, and never changes the selection.
 // - Hovering a live link sets selection.hovered, so the mesh view can light the element up.
 // - Must be called between ImGui::NewFrame() and ImGui::Render(), inside a window.
 #pragma once
@@ -16,17 +16,18 @@
 
 #include "core/halfedge_mesh.h"
 #include "ui/selection.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 
-// Colours shared by the panels (RGBA 0..1).
+// Colours shared by the panels, from the palette of the current theme (ui/theme.h).
 namespace ui_colors {
-inline const ImVec4 kLink{0.45f, 0.75f, 1.0f, 1.0f};
-inline const ImVec4 kBroken{1.0f, 0.35f, 0.35f, 1.0f};      // dead / missing / null references, errors
-inline const ImVec4 kDead{0.5f, 0.5f, 0.5f, 1.0f};          // dead rows
-inline const ImVec4 kValid{0.35f, 0.9f, 0.35f, 1.0f};
-inline const ImVec4 kWarning{1.0f, 0.75f, 0.3f, 1.0f};
-inline const ImVec4 kChangedCell{0.85f, 0.55f, 0.1f, 0.45f};  // background of a cell the last operation changed
+inline ImVec4 link() { return im_colour(ui_palette().link); }
+inline ImVec4 broken() { return im_colour(ui_palette().error); }  // dead / missing / null references, errors
+inline ImVec4 dead() { return im_colour(ui_palette().dead); }     // dead rows
+inline ImVec4 valid() { return im_colour(ui_palette().ok); }
+inline ImVec4 warning() { return im_colour(ui_palette().warning); }
+inline ImVec4 changed_cell() { return im_colour(ui_palette().changed_cell); }  // a cell the last operation changed
 }  // namespace ui_colors
 
 // Where clickable items were drawn during a frame. Panels append to it when their state holds one; tests

@@ -8,14 +8,14 @@
 #include <imgui.h>
 
 #include "core/history.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
 
-const ImVec4 kRed(1.0f, 0.45f, 0.4f, 1.0f);
-const ImVec4 kGreen(0.5f, 0.9f, 0.5f, 1.0f);
-const ImVec4 kGrey(0.65f, 0.65f, 0.65f, 1.0f);
-const ImVec4 kCurrent(1.0f, 0.75f, 0.3f, 1.0f);
+// Colours from the theme's palette (core/palette.h).
+ImVec4 failed_colour() { return im_colour(ui_palette().error); }
+ImVec4 passed_colour() { return im_colour(ui_palette().ok); }
 
 void text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
 
@@ -28,7 +28,7 @@ void coloured(const ImVec4& colour, const std::string& line) {
 void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_validation) {
   ImGui::PushID(who);  // "yours" and "the reference" each have their own tree nodes
   if (!outcome.error.empty()) {
-    coloured(kRed, std::string(who) + " failed: " + outcome.error);
+    coloured(failed_colour(), std::string(who) + " failed: " + outcome.error);
   } else if (!outcome.refused.empty()) {
     text(std::string(who) + " refused: " + outcome.refused);
   } else if (outcome.ran) {
@@ -36,7 +36,8 @@ void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_val
   }
   if (show_validation && outcome.validation) {
     const ValidationReport& report = *outcome.validation;
-    coloured(report.ok() ? kGreen : kRed, std::string(who) + " after the call: " + report.summary());
+    coloured(report.ok() ? passed_colour() : failed_colour(),
+             std::string(who) + " after the call: " + report.summary());
     if (!report.ok() && ImGui::TreeNode("problems", "%s: %zu problems", who, report.total)) {
       for (const Violation& violation : report.violations) text(violation.message);
       ImGui::TreePop();
@@ -57,15 +58,15 @@ void draw_report(const ExerciseRun& run) {
     return;
   }
   if (report.identical) {
-    coloured(kGreen, "identical to the reference (pointer for pointer)");
+    coloured(passed_colour(), "identical to the reference (pointer for pointer)");
   } else if (report.equal) {
-    coloured(kGreen, "equal to the reference (up to renumbering and rounding)");
+    coloured(passed_colour(), "equal to the reference (up to renumbering and rounding)");
   } else {
-    coloured(kRed, report.summary());
+    coloured(failed_colour(), report.summary());
   }
   if (!report.differences.empty() && ImGui::TreeNodeEx("differences", ImGuiTreeNodeFlags_DefaultOpen, "differences (%zu)",
                                                        report.total_differences)) {
-    for (const std::string& line : report.differences) coloured(kRed, "- " + line);
+    for (const std::string& line : report.differences) coloured(failed_colour(), "- " + line);
     if (report.total_differences > report.differences.size())
       text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
     ImGui::TreePop();
@@ -104,7 +105,7 @@ void draw_pointer_table(const std::vector<PointerRow>& rows) {
       for (const std::string* value : {&row.mine, &row.reference}) {
         ImGui::TableNextColumn();
         if (row.differs()) {
-          ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ImVec4(0.55f, 0.1f, 0.1f, 0.65f)));
+          ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, im_colour_u32(ui_palette().differing_cell));
         }
         text(*value);
       }
@@ -154,7 +155,10 @@ void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocume
       const std::string line = std::to_string(i + 1) + ". " + describe(edit) + (edit.where.empty() ? "" : "   " + edit.where);
       const bool is_current = session.replaying() && size_t(i) + 1 == current;
       const bool done = session.replaying() && size_t(i) + 1 < current;
-      ImGui::PushStyleColor(ImGuiCol_Text, is_current ? kCurrent : done ? ImGui::GetStyleColorVec4(ImGuiCol_Text) : kGrey);
+      const ImVec4 colour = is_current ? im_colour(ui_palette().emphasis)
+                            : done     ? ImGui::GetStyleColorVec4(ImGuiCol_Text)
+                                       : im_colour(ui_palette().dead);
+      ImGui::PushStyleColor(ImGuiCol_Text, colour);
       if (ImGui::Selectable((line + "##w" + std::to_string(i)).c_str(), is_current) && session.replaying()) {
         session.replay_step(doc, size_t(i) + 1);
       }
@@ -237,7 +241,7 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
     ImGui::SameLine();
     ImGui::TextDisabled("(saved since the last run: reloads on the next)");
   }
-  if (!session.load_error().empty()) coloured(kRed, session.load_error());
+  if (!session.load_error().empty()) coloured(failed_colour(), session.load_error());
   ImGui::Separator();
 
   const std::optional<ExerciseRun>& run = session.last_run();

@@ -113,7 +113,7 @@ const char* yes_no(bool b) { return b ? "yes" : "no"; }
 void draw_walk(Drawer& d, const ElementFacts& facts, const char* title, const char* vertex_role) {
   const std::string heading = std::string(title) + " (" + std::to_string(facts.walked) +
                               (facts.closed ? ", closed)" : " steps, does not close)");
-  if (!facts.closed) ImGui::TextColored(ui_colors::kBroken, "%s", heading.c_str());
+  if (!facts.closed) ImGui::TextColored(ui_colors::broken(), "%s", heading.c_str());
   else ImGui::TextUnformatted(heading.c_str());
   for (size_t i = 0; i < facts.walk.size(); ++i) {
     ImGui::PushID(static_cast<int>(i));
@@ -208,7 +208,7 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
   }
   const RefState st = reference_state(doc.mesh, e);
   if (st == RefState::OutOfRange) {
-    ImGui::TextColored(ui_colors::kBroken, "%s", reference_problem(doc.mesh, e).c_str());
+    ImGui::TextColored(ui_colors::broken(), "%s", reference_problem(doc.mesh, e).c_str());
     return false;
   }
   if (!state.facts_filled || state.facts.element != e || state.facts_generation != doc.generation ||
@@ -224,8 +224,8 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
 
   ImGui::Text("%s  %s", format_id(e).c_str(), kind_name(e.kind));
   ImGui::SameLine();
-  if (alive) ImGui::TextColored(ui_colors::kValid, "alive");
-  else ImGui::TextColored(ui_colors::kDead, "dead: deleted, fields keep their last values");
+  if (alive) ImGui::TextColored(ui_colors::valid(), "alive");
+  else ImGui::TextColored(ui_colors::dead(), "dead: deleted, fields keep their last values");
   Drawer d{doc.mesh, selection, state.probe};
   draw_fields(d, facts, alive);
   if (alive && (e.kind == ElementKind::Face || e.kind == ElementKind::Boundary))

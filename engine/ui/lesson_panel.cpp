@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "script/lesson_text.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
@@ -19,8 +20,8 @@ fs::file_time_type modified(const fs::path& path) noexcept {
   return ec ? fs::file_time_type{} : time;
 }
 
-const ImVec4 kErrorColour(1.0f, 0.45f, 0.4f, 1.0f);
-const ImVec4 kHintColour(1.0f, 0.8f, 0.35f, 1.0f);
+ImVec4 error_colour() { return im_colour(ui_palette().error); }
+ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }
 
 void draw_lesson_list(LessonPanelState& state) {
   ImGui::TextWrapped("Pick a lesson. Each one is a Lua file in %s; edit it and save, and the lesson reloads.",
@@ -60,7 +61,7 @@ void draw_step_body(LessonRunner& runner) {
   } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
   } else if (wait.waiting()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kHintColour);
+    ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
     ImGui::TextWrapped("-> %s", wait.hint.empty() ? wait.describe().c_str() : wait.hint.c_str());
     ImGui::PopStyleColor();
   }
@@ -119,7 +120,7 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
 
 void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   if (!runner.error().empty()) {
-    ImGui::PushStyleColor(ImGuiCol_Text, kErrorColour);
+    ImGui::PushStyleColor(ImGuiCol_Text, error_colour());
     ImGui::TextWrapped("%s", runner.error().c_str());
     ImGui::PopStyleColor();
     ImGui::Separator();

@@ -17,6 +17,7 @@
 #include "core/mesh_error.h"
 #include "ui/bezier_mine.h"
 #include "ui/flow_layout.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 
@@ -25,17 +26,21 @@ static_assert(std::is_trivially_copyable_v<BezierPatch> && sizeof(BezierPatch) =
 
 namespace {
 
-const glm::vec4 kNetColour{0.55f, 0.55f, 0.62f, 1.0f};
-const glm::vec4 kSelectedNetColour{1.0f, 1.0f, 1.0f, 1.0f};
-const glm::vec4 kRowCurveColour{1.0f, 0.6f, 0.15f, 1.0f};
-const glm::vec4 kRowPointColour{1.0f, 0.9f, 0.2f, 1.0f};
-const glm::vec4 kColumnPolygonColour{0.2f, 0.85f, 1.0f, 1.0f};
-const glm::vec4 kColumnLevelColours[2] = {{0.35f, 0.55f, 1.0f, 1.0f}, {0.9f, 0.4f, 0.9f, 1.0f}};
-const glm::vec4 kColumnCurveColour{0.3f, 0.95f, 0.4f, 1.0f};
-const glm::vec4 kSurfacePointColour{1.0f, 0.25f, 0.25f, 1.0f};
-const glm::vec4 kMineOkColour{0.45f, 0.95f, 0.45f, 1.0f};    // yours is the reference's
-const glm::vec4 kMineWrongColour{1.0f, 0.47f, 0.0f, 1.0f};   // yours is not: the warning colour
-const glm::vec4 kMineErrorColour{1.0f, 0.35f, 0.35f, 1.0f};  // yours failed
+// Colours from the theme's palette (core/palette.h).
+const Palette& palette() { return ui_palette(); }
+glm::vec4 opaque(glm::vec3 rgb) { return glm::vec4(rgb, 1.0f); }
+glm::vec4 column_level_colour(size_t k) {
+  return opaque(palette().column_levels[(k - 1) % palette().column_levels.size()]);
+}
+// Your point: the mine colour when it is the reference's, the wrong colour when not, the error colour when your code
+// failed.
+glm::vec4 mine_colour(const PatchMinePoint& mine) {
+  return opaque(!mine.error.empty() ? palette().error : mine.equal ? palette().mine : palette().wrong);
+}
+// P(u, v); once your point differs from it, it is the reference's answer and takes the reference colour.
+glm::vec4 surface_point_colour(const PatchMinePoint* mine) {
+  return opaque(mine && mine->ran && !mine->equal ? palette().reference : palette().final_point);
+}
 
 bool same_patches(const std::vector<BezierPatch>& a, const std::vector<BezierPatch>& b) {
   return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(BezierPatch)) == 0);
@@ -74,25 +79,26 @@ std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, gl
 }
 
 std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v, int samples) {
-  std::vector<PatchOverlayItem> items = control_net_polylines(patch, kSelectedNetColour, 2.0f, "control net ");
+  std::vector<PatchOverlayItem> items =
+      control_net_polylines(patch, opaque(palette().probed_net), 2.0f, "control net ");
   for (int r = 0; r < 4; ++r) {
     const std::span<const glm::dvec3> row(patch.points.data() + r * 4, 4);
-    items.push_back(item(sample_curve3(row, samples), kRowCurveColour, 2.0f, false, OverlayKind::RowCurve,
+    items.push_back(item(sample_curve3(row, samples), opaque(palette().row_curve), 2.0f, false, OverlayKind::RowCurve,
                          "row curve " + std::to_string(r)));
   }
   const PatchEvaluation eval = evaluate_patch_steps(patch, u, v);
   const std::vector<glm::dvec3> row_points(eval.row_points.begin(), eval.row_points.end());
-  items.push_back(item(row_points, kRowPointColour, 9.0f, true, OverlayKind::RowPoints, "rows at u"));
-  items.push_back(item(row_points, kColumnPolygonColour, 1.5f, false, OverlayKind::ColumnPolygon,
+  items.push_back(item(row_points, opaque(palette().row_points), 9.0f, true, OverlayKind::RowPoints, "rows at u"));
+  items.push_back(item(row_points, opaque(palette().column_polygon), 1.5f, false, OverlayKind::ColumnPolygon,
                        "column control polygon"));
   for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
-    items.push_back(item(eval.column_levels[k], kColumnLevelColours[(k - 1) % 2], 1.5f, false,
+    items.push_back(item(eval.column_levels[k], column_level_colour(k), 1.5f, false,
                          OverlayKind::ColumnLevel, "column level " + std::to_string(k) + " at v"));
   }
-  items.push_back(item(sample_curve3(row_points, samples), kColumnCurveColour, 2.5f, false, OverlayKind::ColumnCurve,
-                       "column curve"));
-  items.push_back(item({evaluate_patch(patch, u, v)}, kSurfacePointColour, 12.0f, true, OverlayKind::SurfacePoint,
-                       "P(u, v)"));
+  items.push_back(item(sample_curve3(row_points, samples), opaque(palette().curve), 2.5f, false,
+                       OverlayKind::ColumnCurve, "column curve"));
+  items.push_back(item({evaluate_patch(patch, u, v)}, surface_point_colour(nullptr), 12.0f, true,
+                       OverlayKind::SurfacePoint, "P(u, v)"));
   return items;
 }
 
@@ -151,21 +157,24 @@ std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, co
     for (int p = 0; p < count; ++p) {
       if (p == selected && state.show_probe) continue;
       const bool bright = p == selected;
-      auto net = control_net_polylines(state.patches[p], bright ? kSelectedNetColour : kNetColour,
+      auto net = control_net_polylines(state.patches[p], opaque(bright ? palette().probed_net : palette().net),
                                        bright ? 2.0f : 1.0f, "patch " + std::to_string(p) + " ");
       std::move(net.begin(), net.end(), std::back_inserter(items));
     }
   }
   if (state.show_probe) {
     auto probe = build_probe_overlay(state.patches[selected], state.u, state.v);
+    for (PatchOverlayItem& probe_item : probe) {
+      if (probe_item.kind == OverlayKind::SurfacePoint) probe_item.colour = surface_point_colour(mine);
+    }
     std::move(probe.begin(), probe.end(), std::back_inserter(items));
     if (mine && mine->ran) {
-      const glm::vec4 colour = mine->equal ? kMineOkColour : kMineWrongColour;
+      const glm::vec4 colour = mine_colour(*mine);
       if (!mine->equal) {
         items.push_back(item({mine->mine, mine->reference}, colour, 2.0f, false, OverlayKind::MinePoint,
                              "yours to P(u, v)"));
       }
-      // Smaller than P(u, v)'s dot, so a right answer shows as a green dot inside the red one.
+      // Smaller than P(u, v)'s dot, so a right answer shows as a dot of the mine colour inside P(u, v)'s.
       items.push_back(item({mine->mine}, colour, 8.0f, true, OverlayKind::MinePoint, "yours"));
     }
   }
@@ -207,22 +216,22 @@ void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mi
   char step[64];
   for (int r = 0; r < 4; ++r) {
     std::snprintf(step, sizeof(step), "row %d at u", r);
-    table_row(step, std::span<const glm::dvec3>(&eval.row_points[r], 1), kRowPointColour);
+    table_row(step, std::span<const glm::dvec3>(&eval.row_points[r], 1), opaque(palette().row_points));
   }
   for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
     std::snprintf(step, sizeof(step), "column level %zu at v", k);
-    table_row(step, eval.column_levels[k], kColumnLevelColours[(k - 1) % 2]);
+    table_row(step, eval.column_levels[k], column_level_colour(k));
   }
-  table_row("P(u, v)", std::span<const glm::dvec3>(&eval.point, 1), kSurfacePointColour);
+  table_row("P(u, v)", std::span<const glm::dvec3>(&eval.point, 1), surface_point_colour(mine));
   if (mine && mine->ran) {
-    table_row("yours", std::span<const glm::dvec3>(&mine->mine, 1), mine->equal ? kMineOkColour : kMineWrongColour);
+    table_row("yours", std::span<const glm::dvec3>(&mine->mine, 1), mine_colour(*mine));
   }
   ImGui::EndTable();
 }
 
 // With the switch on: the verdict on your point (file:line for an error) and the checker's diagnosis.
 void draw_mine_verdict(const PatchMinePoint& mine) {
-  const glm::vec4 colour = !mine.error.empty() ? kMineErrorColour : mine.equal ? kMineOkColour : kMineWrongColour;
+  const glm::vec4 colour = mine_colour(mine);
   ImGui::PushStyleColor(ImGuiCol_Text, to_imvec(colour));
   ImGui::TextWrapped("mine: %s", mine.message.c_str());
   if (!mine.equal) {
@@ -276,7 +285,7 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
   const PatchTessellation& cache = state.tessellation;
   ImGui::TextWrapped("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
               cache.polygons.num_faces(), static_cast<unsigned long long>(cache.rebuilds));
-  if (!cache.error.empty()) ImGui::TextColored(ImVec4(1.0f, 0.35f, 0.35f, 1.0f), "%s", cache.error.c_str());
+  if (!cache.error.empty()) ImGui::TextColored(im_colour(palette().error), "%s", cache.error.c_str());
   if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 
   ImGui::Separator();

@@ -116,8 +116,10 @@ bool update_tessellation(PatchViewState& state);
 // What the renderer should draw over the surface, following the toggles:
 // - show_control_net: the nets of all patches (dim), except the selected one when the probe shows it;
 // - show_probe: build_probe_overlay of the selected patch at (u, v) (its net included, bright).
-// - mine (when given and show_probe): the student's point, green when it is the reference's, in the warning
-//   colour with a segment to P(u, v) when not (nothing when the student's code failed).
+// - mine (when given and show_probe): the student's point, in the palette's mine colour when it is the reference's,
+//   in its wrong colour with a segment to P(u, v) when not, and then P(u, v) in the reference colour (nothing when
+//   the student's code failed).
+// Colours are the current theme's (ui_palette()).
 // Empty when there are no patches.
 std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, const PatchMinePoint* mine = nullptr);
 

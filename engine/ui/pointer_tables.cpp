@@ -116,7 +116,7 @@ ElementRef row_ref(ElementKind kind, uint32_t index) { return ElementRef(kind, i
 
 void mark_if_changed(const TableContext& c, ElementRef row, MeshField field) {
   if (c.doc.last.index.contains(row, field))
-    ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ui_colors::kChangedCell));
+    ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, ImGui::GetColorU32(ui_colors::changed_cell()));
 }
 
 // One reference cell: a link in a live row, stale grey text in a dead one.
@@ -143,7 +143,7 @@ void draw_row(TableContext& c, ElementKind kind, uint32_t index, bool scroll_her
   ImGui::TableNextColumn();
   ImGui::PushID(static_cast<int>(index));
   mark_if_changed(c, row, MeshField::Alive);
-  if (!alive) ImGui::PushStyleColor(ImGuiCol_Text, ui_colors::kDead);
+  if (!alive) ImGui::PushStyleColor(ImGuiCol_Text, ui_colors::dead());
   const std::string label = alive ? format_id(row) : format_id(row) + " dead";
   if (ImGui::Selectable(label.c_str(), c.selection.selected == row,
                         ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
@@ -367,7 +367,7 @@ bool draw_pointer_tables_contents(MeshDocument& doc, Selection& selection, Table
   if (state.probe) state.probe->record_last_item("filter");
   if (!state.filter_message.empty()) {
     ImGui::SameLine();
-    ImGui::TextColored(ui_colors::kBroken, "%s", state.filter_message.c_str());
+    ImGui::TextColored(ui_colors::broken(), "%s", state.filter_message.c_str());
   }
 
   // A tab to open: the kind of a selection to reveal, or `active` when it was set from outside.

@@ -12,6 +12,7 @@
 #include "core/change_journal.h"
 #include "core/mesh_patch.h"
 #include "script/mesh_bindings.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
@@ -177,8 +178,8 @@ int input_callback(ImGuiInputTextCallbackData* data) {
 
 ImVec4 colour_of(ConsoleEntryKind kind) {
   switch (kind) {
-    case ConsoleEntryKind::Input: return ImVec4(0.6f, 0.8f, 1.0f, 1.0f);
-    case ConsoleEntryKind::Error: return ImVec4(1.0f, 0.45f, 0.4f, 1.0f);
+    case ConsoleEntryKind::Input: return im_colour(ui_palette().console_input);
+    case ConsoleEntryKind::Error: return im_colour(ui_palette().error);
     case ConsoleEntryKind::Output: break;
   }
   return ImGui::GetStyleColorVec4(ImGuiCol_Text);

@@ -15,11 +15,10 @@
 #include <string>
 #include <vector>
 
+#include "core/palette.h"  // Theme
 #include "ui/window_layout.h"
 
 namespace meshedit {
-
-enum class Theme { Dark, Light };
 
 struct Settings {
   static constexpr int kDefaultWindowWidth = 1280, kDefaultWindowHeight = 800;

@@ -14,10 +14,10 @@ namespace {
 ImVec4 severity_color(Severity severity) {
   switch (severity) {
     case Severity::Info: return ImGui::GetStyleColorVec4(ImGuiCol_Text);
-    case Severity::Warning: return ui_colors::kWarning;
-    case Severity::Error: return ui_colors::kBroken;
+    case Severity::Warning: return ui_colors::warning();
+    case Severity::Error: return ui_colors::broken();
   }
-  return ui_colors::kBroken;
+  return ui_colors::broken();
 }
 
 void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& state) {
@@ -31,11 +31,11 @@ void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& st
   }
   const ValidationReport& report = cached_validation(doc);
   if (report.ok()) {
-    ImGui::TextColored(ui_colors::kValid, "valid");
+    ImGui::TextColored(ui_colors::valid(), "valid");
     return;
   }
   const Violation& first = report.violations.front();
-  ImGui::TextColored(ui_colors::kBroken, "%zu problem%s; first: %s", report.total, report.total == 1 ? "" : "s",
+  ImGui::TextColored(ui_colors::broken(), "%zu problem%s; first: %s", report.total, report.total == 1 ? "" : "s",
                      first.message.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", report.summary().c_str());
   ImGui::SameLine();

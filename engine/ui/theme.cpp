@@ -2,21 +2,27 @@
 #include "ui/theme.h"
 
 namespace meshedit {
+namespace {
+
+Theme panel_theme = Theme::Dark;
+
+}  // namespace
 
 void apply_theme(ImGuiStyle& style, Theme theme) {
+  const Palette& palette = palette_for(theme);
   if (theme == Theme::Light) {
     ImGui::StyleColorsLight(&style);
-    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.97f, 0.97f, 0.96f, 1.0f);
   } else {
     ImGui::StyleColorsDark(&style);
-    style.Colors[ImGuiCol_WindowBg] = ImVec4(0.09f, 0.09f, 0.10f, 1.0f);  // opaque: the columns are not overlays
   }
+  style.Colors[ImGuiCol_WindowBg] = im_colour(palette.neutrals.panel);  // opaque: the columns are not overlays
   style.WindowRounding = 0.0f;  // columns meet the view edge to edge
   style.WindowBorderSize = 1.0f;
+  panel_theme = theme;
 }
 
-ImVec4 view_background(Theme theme) {
-  return theme == Theme::Light ? ImVec4(0.84f, 0.85f, 0.87f, 1.0f) : ImVec4(0.13f, 0.14f, 0.16f, 1.0f);
-}
+const Palette& ui_palette() { return palette_for(panel_theme); }
+
+ImVec4 view_background(Theme theme) { return im_colour(palette_for(theme).neutrals.view); }
 
 }  // namespace meshedit

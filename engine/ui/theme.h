@@ -1,16 +1,31 @@
-// The window's two looks: dark (the default) and light (for projectors), as ImGui style colours. The 3D view's
-// background follows the theme through view_background().
+// The window's two looks: dark (the default) and light (for projectors). apply_theme() sets ImGui's style colours and
+// makes the theme's palette (core/palette.h) the one the panels draw with (ui_palette()); the 3D view's background
+// and the renderer's colours come from the same palette (palette_for(theme)).
+//
+// Invariant: ui_palette() is the palette of the theme last given to apply_theme(), the dark one before any; like
+// ImGui's style, it is one for the whole process.
 #pragma once
 
 #include <imgui.h>
 
+#include "core/palette.h"
 #include "ui/settings.h"
 
 namespace meshedit {
 
-// Sets `style`'s colours for the theme (its sizes are left as they are).
+// Sets `style`'s colours for the theme (its sizes are left as they are) and the panels' palette.
 void apply_theme(ImGuiStyle& style, Theme theme);
+// The palette the panels, the curve view and the patch view's overlay draw with.
+const Palette& ui_palette();
 // The view's clear colour under the theme, RGBA in [0, 1].
 ImVec4 view_background(Theme theme);
+
+// Palette colours as ImGui takes them.
+inline ImVec4 im_colour(glm::vec3 rgb, float alpha = 1.0f) { return ImVec4(rgb.r, rgb.g, rgb.b, alpha); }
+inline ImVec4 im_colour(glm::vec4 rgba) { return ImVec4(rgba.r, rgba.g, rgba.b, rgba.a); }
+inline ImU32 im_colour_u32(glm::vec3 rgb, float alpha = 1.0f) {
+  return ImGui::ColorConvertFloat4ToU32(im_colour(rgb, alpha));
+}
+inline ImU32 im_colour_u32(glm::vec4 rgba) { return ImGui::ColorConvertFloat4ToU32(im_colour(rgba)); }
 
 }  // namespace meshedit

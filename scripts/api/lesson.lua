@@ -43,10 +43,10 @@ function animate(seconds, fn) end
 ---@param what Mesh|Curve|Patch|Patch[]|point[]|point[][]
 function show(what) end
 
----@alias Colour string|number[] "red" ... "#rrggbb" or {r, g, b} in [0, 1]
+---@alias Colour string|number[] "red" ... (colour-blind-safe palette colours), "#rrggbb" or {r, g, b} in [0, 1]
 
 ---@param element Element|string|(Element|string)[]
----@param colour? Colour default orange
+---@param colour? Colour default: the last-edit colour (vermillion)
 function highlight(element, colour) end
 
 ---@param element Element|string

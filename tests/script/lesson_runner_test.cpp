@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "core/mesh_build.h"
+#include "core/palette.h"
 #include "core/primitives.h"
 #include "script/headless_host.h"
 #include "script/lesson_runner.h"
@@ -88,12 +89,15 @@ step("Scene", function()
 end)
 )lua"))) << runner.error();
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
+  // No colour: the palette's lesson highlight; a name: the palette's swatch; "#rrggbb" and {r, g, b}: as given.
+  const std::string default_colour = colour_hex(palette_for(Theme::Dark).lesson_highlight);
   EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "show_mesh (8 vertices, 18 edges, 12 faces)",
-                                   "highlight e7 #ff8000", "highlight v0 #ff0000", "highlight f1 #00ff80",
+                                   "highlight e7 " + default_colour,
+                                   "highlight v0 " + colour_hex(kDarkSwatches.vermillion), "highlight f1 #00ff80",
                                    "highlight h3 #00ff80", "highlight e2 #0000ff", "label v0 \"apex\"", "camera fit",
                                    "camera yaw=30 pitch=20 distance=4 target=(0, 0, 1)"}));
   ASSERT_EQ(host.highlights().size(), 5u);
-  EXPECT_EQ(host.highlights().at(ElementRef(EdgeId(7))), glm::vec3(1.0f, 0.5f, 0.0f));
+  EXPECT_EQ(host.highlights().at(ElementRef(EdgeId(7))), palette_for(Theme::Dark).lesson_highlight);
   EXPECT_EQ(host.labels().at(ElementRef(VertexId(0))), "apex");
   ASSERT_EQ(host.camera_requests().size(), 2u);
   EXPECT_TRUE(host.camera_requests()[0].fit);
@@ -375,7 +379,7 @@ end)
   runner.back();
   EXPECT_EQ(runner.current_step(), 0u);
   EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "show_mesh (8 vertices, 18 edges, 12 faces)",
-                                   "highlight e7 #ff0000"}));
+                                   "highlight e7 " + colour_hex(kDarkSwatches.vermillion)}));
   EXPECT_EQ(host.highlights().size(), 1u);
   EXPECT_EQ(host.highlights().count(ElementRef(EdgeId(7))), 1u);
   EXPECT_TRUE(host.labels().empty());

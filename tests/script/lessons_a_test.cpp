@@ -12,6 +12,7 @@
 
 #include "core/bezier.h"
 #include "core/mesh_build.h"
+#include "core/palette.h"
 #include "core/primitives.h"
 #include "io/bez_io.h"
 #include "script/headless_host.h"
@@ -149,8 +150,8 @@ TEST(LessonsA, HalfedgeWalksMarkWhatThePointersReach) {
   const HalfedgeId h1 = cube.next(h0), h2 = cube.next(h1);
   EXPECT_EQ(host.labels(), (std::map<ElementRef, std::string>{
                                {ElementRef(h0), "h"}, {ElementRef(h1), "h.next"}, {ElementRef(h2), "h.next.next"}}));
-  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(h0))), "#ff0000");
-  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(FaceId::face(0)))), "#ffe600");
+  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(h0))), colour_hex(kDarkSwatches.vermillion));
+  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(FaceId::face(0)))), colour_hex(kDarkSwatches.yellow));
   EXPECT_EQ(host.highlights().size(), 4u);
 
   // Step 2: every halfedge leaving v0, numbered in the order h = h.twin.next reaches them.
@@ -178,7 +179,7 @@ TEST(LessonsA, HalfedgeWalksMarkWhatThePointersReach) {
   ASSERT_EQ(loop.size(), 10u);
   std::set<ElementRef> green;
   for (const auto& [element, colour] : host.highlights()) {
-    EXPECT_EQ(colour_hex(colour), "#00cc00") << format_id(element);
+    EXPECT_EQ(colour_hex(colour), colour_hex(kDarkSwatches.bluish_green)) << format_id(element);
     green.insert(element);
   }
   EXPECT_EQ(green, loop);

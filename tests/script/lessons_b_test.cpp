@@ -18,6 +18,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
+#include "core/palette.h"
 #include "core/primitives.h"
 #include "script/headless_host.h"
 #include "script/lesson_headless.h"
@@ -127,7 +128,7 @@ TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
   EXPECT_EQ(host.labels().size(), std::size(expected));
   for (const auto& [element, name] : expected) EXPECT_EQ(label_of(host, element), name) << format_id(element);
   EXPECT_TRUE(mesh.is_boundary(mesh.twin(h2)));
-  EXPECT_EQ(colour_of(host, EdgeId(0)), "#ffe600");
+  EXPECT_EQ(colour_of(host, EdgeId(0)), colour_hex(kDarkSwatches.yellow));
 }
 
 TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
@@ -154,7 +155,7 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   for (ElementRef changed : {ElementRef(HalfedgeId(0)), ElementRef(HalfedgeId(1)), ElementRef(HalfedgeId(2)),
                              ElementRef(HalfedgeId(3)), ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5))}) {
-    EXPECT_EQ(colour_of(host, changed), "#ff8000") << format_id(changed);
+    EXPECT_EQ(colour_of(host, changed), colour_hex(kDarkSwatches.orange)) << format_id(changed);
   }
   EXPECT_EQ(host.highlights().size(), 6u);
 }
@@ -203,8 +204,8 @@ TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
   EXPECT_EQ(label_of(host, EdgeId(7)), "ed");
   EXPECT_EQ(label_of(host, FaceId(2)), "g0");
   EXPECT_EQ(label_of(host, FaceId(3)), "g1");
-  EXPECT_EQ(colour_of(host, VertexId(4)), "#ffe600");
-  EXPECT_EQ(colour_of(host, EdgeId(6)), "#ff8000");
+  EXPECT_EQ(colour_of(host, VertexId(4)), colour_hex(kDarkSwatches.yellow));
+  EXPECT_EQ(colour_of(host, EdgeId(6)), colour_hex(kDarkSwatches.orange));
   // The core's documented ids: ec = e6 joins m and c (v2), ed = e7 joins m and d (v3).
   const HalfedgeMesh* screen = host.screen_mesh();
   ASSERT_TRUE(screen);
@@ -272,13 +273,13 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
   ASSERT_EQ(screen->vertex_capacity(), cube.vertex_capacity());
   for (uint32_t i = 0; i < cube.vertex_capacity(); ++i) {
     EXPECT_EQ(screen->position(VertexId(i)), cube.position(VertexId(i))) << i;
-    EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? "#ffe600" : "") << i;
+    EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? colour_hex(kDarkSwatches.yellow) : std::string()) << i;
   }
   size_t cross = 0;
   for (EdgeId e : cube.edges()) {
     const bool is_cross = e.index < state.value.is_new_edge.size() && state.value.is_new_edge[e.index];
     cross += is_cross;
-    EXPECT_EQ(colour_of(host, e), is_cross ? "#ff8000" : "") << format_id(e);
+    EXPECT_EQ(colour_of(host, e), is_cross ? colour_hex(kDarkSwatches.orange) : "") << format_id(e);
   }
   EXPECT_EQ(cross, 36u);
 
@@ -326,7 +327,9 @@ TEST(LessonsB, ShiftLStepChecksEveryPhaseAndStartsAgainOnAnotherEdit) {
   EXPECT_EQ(runner.waiting_for().hint, "Press Shift+L: phase 2 of 4, split every original edge");
   ASSERT_TRUE(phase(2));
   EXPECT_TRUE(contains(said(runner), "Phase 2 split all 18 original edges: now 26 vertices, 72 edges, 48 faces"));
-  for (uint32_t i = 0; i < 26; ++i) EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? "#ffe600" : "") << i;
+  for (uint32_t i = 0; i < 26; ++i) {
+    EXPECT_EQ(colour_of(host, VertexId(i)), i >= 8 ? colour_hex(kDarkSwatches.yellow) : std::string()) << i;
+  }
 
   // L instead of phase 3 (a whole subdivision of the split cube), then Shift+L: not the cube after phase 3.
   edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(loop_subdivide(m).ok); });
@@ -342,7 +345,7 @@ TEST(LessonsB, ShiftLStepChecksEveryPhaseAndStartsAgainOnAnotherEdit) {
   EXPECT_TRUE(contains(said(runner), "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, "
                                      "-0.3125, -0.3125).")) << said(runner);
   EXPECT_TRUE(contains(said(runner), "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << said(runner);
-  EXPECT_EQ(colour_of(host, VertexId(0)), "#ffe600");
+  EXPECT_EQ(colour_of(host, VertexId(0)), colour_hex(kDarkSwatches.yellow));
 }
 
 TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {
@@ -351,7 +354,7 @@ TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {
   ASSERT_TRUE(runner.load(lesson_path("6_loop_subdivision")));
   runner.go_to(step_index(runner, "The pre-split fix"));
   const uint32_t diagonals[] = {2, 7, 11, 14, 16, 17};
-  for (uint32_t e : diagonals) EXPECT_EQ(colour_of(host, EdgeId(e)), "#ffe600") << e;
+  for (uint32_t e : diagonals) EXPECT_EQ(colour_of(host, EdgeId(e)), colour_hex(kDarkSwatches.yellow)) << e;
   EXPECT_EQ(host.highlights().size(), 6u);
   for (size_t i = 0; i < 5; ++i) {
     edit_screen(host, [&](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(diagonals[i])).ok()); });
