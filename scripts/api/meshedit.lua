@@ -54,11 +54,12 @@ local Vertex = {}
 ---@return integer number of edges at the vertex
 function Vertex:degree() end
 
----Iterator over the halfedges leaving the vertex.
+---Iterator over the halfedges leaving the vertex: v.halfedge first, then h.twin.next, which turns clockwise
+---around the vertex seen from outside.
 ---@return fun(): Halfedge?
 function Vertex:halfedges() end
 
----Iterator over the neighbouring vertices.
+---Iterator over the neighbouring vertices, in the order of Vertex:halfedges() (the far end of each).
 ---@return fun(): Vertex?
 function Vertex:neighbors() end
 
@@ -92,6 +93,7 @@ local Face = {}
 ---@return integer number of sides
 function Face:degree() end
 
+---The face's halfedges: f.halfedge first, then h.next, counter-clockwise seen from outside.
 ---@return fun(): Halfedge?
 function Face:halfedges() end
 

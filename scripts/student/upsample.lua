@@ -22,7 +22,9 @@
 --
 -- THE NAMES
 --   After mesh:split(e) returns m, m.halfedge runs along the split edge (m->a); the halfedges leaving m are
---   m.halfedge, m.halfedge.twin.next, ... (four of them for an interior edge: to a, d, b, c).
+--   m.halfedge, m.halfedge.twin.next, ..., and the walk turns clockwise around m seen from outside (four of
+--   them for an interior edge: to a, c, b, d; on a boundary edge three: to a, c, b). a, b, c, d are the names
+--   of split.lua and engine/core/mesh_ops.h: a-b the edge, c and d the corners across it.
 --
 -- WHAT YOU MAY USE
 --   Everything from the earlier parts. Splits and flips: mesh:split(e) and mesh:flip(e) (the reference
