@@ -299,7 +299,8 @@ local Curve = {}
 ---@return vec3
 function Curve:evaluate(t) end
 
----Every de Casteljau level: [1] = control points, last = the single point.
+---Every de Casteljau level at t: levels[k + 1] is level k (Lua lists start at 1), so levels[1] is level 0,
+---the control points, and the last entry is the single curve point.
 ---@param t number
 ---@return vec3[][]
 function Curve:levels(t) end
@@ -317,7 +318,7 @@ function Curve:split(t) end
 
 ---@class PatchEvaluation
 ---@field rows vec3[] the 4 rows evaluated at u
----@field column_levels vec3[][] {{4}, {3}, {2}, {1}}
+---@field column_levels vec3[][] the column's levels at v, {{4}, {3}, {2}, {1}} points: [k + 1] is level k, [1] = rows
 ---@field point vec3
 
 ---A bicubic Bézier patch (immutable); tostring "patch".
