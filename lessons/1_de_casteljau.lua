@@ -46,13 +46,14 @@ does one thing: it takes two neighbouring points and goes the fraction **t** of 
 the second, `(1 - t) * a + t * b`.]]
   say("Doing that to every neighbouring pair of the 4 control points gives 3 new points: that is one **level**. "
     .. "At t = 0.5:\n\n"
-    .. "- control points: " .. list(levels[1]) .. "\n"
+    .. "- level 0, the control points: " .. list(levels[1]) .. "\n"
     .. "- level 1: " .. list(levels[2]) .. "\n"
     .. "- level 2: " .. list(levels[3]) .. "\n"
     .. "- level 3: " .. list(levels[4]))
   say [[
-Each level has one point fewer than the one before. The last level is a single point, and that point
-**is on the curve**. Press **E** to draw one more level in the view.]]
+Level k comes after k steps, so the control points are level 0, as in the table of the curve view. Each level
+has one point fewer than the one before. The last level is a single point, and that point **is on the
+curve**. Press **E** to draw one more level in the view.]]
   wait_for { key = "E", hint = "Press E to draw the next level" }
   say [[
 Keep pressing **E** to add the levels one by one, down to the single point.]]
@@ -61,8 +62,8 @@ end)
 step("Count the points", function()
   show(curve)
   say [[
-A quick check. A **quartic** curve has 5 control points. How many points are in its **second** level
-(two steps of de Casteljau after the control points)?
+A quick check. A **quartic** curve has 5 control points. How many points are in its **level 2** (two
+steps of de Casteljau after the control points, level 0)?
 
 Press the number on the keyboard.]]
   wait_for { key = "3", hint = "Press the number of points: 5 control points, then two steps" }
@@ -125,8 +126,8 @@ the next level, one point fewer.
 
 Check it right here: tick **mine** in the curve view (or press **M**), then press **E**. Each level is now made
 by your function from the level before and checked against the reference. A level that differs is drawn in
-orange over the reference's (grey), its first wrong point ringed, and the line above the curve names the level,
-the point and both values; a Lua error shows its `curve.lua:LINE`. Save the file and the view runs the new
+vermillion over the reference's (faint), its first wrong point ringed, and the line above the curve names the
+level, the point and both values; a Lua error shows its `curve.lua:LINE`. Save the file and the view runs the new
 version; drag the points or move t to try other inputs.
 
 Or check it from a terminal, with the grading suite:

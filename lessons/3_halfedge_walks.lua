@@ -66,7 +66,8 @@ step("Around a vertex", function()
 
 A vertex knows one halfedge that **starts** at it, `v.halfedge`. To reach the next one, go across with
 `h.twin` (it ends at the vertex) and then take `.next` (it starts at the vertex again, in the neighbouring
-face). So the walk around a vertex is `h = h.twin.next`.]]
+face). So the walk around a vertex is `h = h.twin.next`, and seen from outside it turns clockwise around the
+vertex: the opposite way to `next` around a face.]]
   say("The halfedges numbered on screen are the ones that walk visits around **v0**: " .. count
     .. " of them, so v0 has degree " .. count .. " (the mesh agrees: `v:degree()` is " .. v:degree() .. ").")
   say [[

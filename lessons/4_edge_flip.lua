@@ -82,6 +82,13 @@ The labels are the names the core's diagram uses (engine/core/mesh_ops.h):
     .. "h4 = h1.next, and so on. The ids the app shows are the mesh's storage numbers, which need not match: "
     .. id_list(names, { "h0", "h1", "h2", "h3", "h4", "h5" }) .. ".")
   say [[
+The CS184 handout names the same diamond with other letters: it flips the edge b-c between the triangles
+(a, b, c) and (c, b, d), and its (a, b, c) is our f0. Letter by letter:
+
+- course a, b, c, d = our c, a, b, d
+- course edge b-c = our e, a-b; after the flip, course a-d = our c-d
+- course (a, b, c), (c, b, d) = our f0, f1; after the flip, course (a, d, c), (a, b, d) = our f1, f0]]
+  say [[
 Click any label's element and press **I**: the inspector shows its next, twin, vertex, edge and face.]]
 end)
 

@@ -9,7 +9,10 @@
 //   died). `alive(id)` is false for ids past the end, so ids from "the future" (after an undo) read as dead
 //   rather than crashing.
 // - Faces and boundary loops live in separate arrays; a FaceId's boundary bit says which (ids.h).
-// - `h.vertex` is the vertex the halfedge LEAVES (its tail), as in the course code.
+// - `h.vertex` is the vertex the halfedge LEAVES (its tail), as in the course code. Seen from outside (the side
+//   the faces' normals point to; primitives.h makes every face outward), `next` goes counter-clockwise around a
+//   face, and the step h -> twin(h).next, from one halfedge leaving a vertex to the next, turns clockwise around
+//   that vertex.
 // - A boundary vertex's `halfedge` is its outgoing halfedge on the boundary loop, when the mesh was built
 //   here or edited by the core's operations.
 // - The class never follows pointers on its own except in the bounded walks below, which stop after
@@ -208,7 +211,8 @@ class HalfedgeMesh {
   HalfedgeId prev(HalfedgeId h) const;
   // Number of halfedges in f's next-cycle; 0 if the cycle does not close.
   uint32_t degree(FaceId f) const;
-  // Number of outgoing halfedges around v (walking twin->next); 0 if the fan does not close.
+  // Number of outgoing halfedges around v (walking twin->next, clockwise seen from outside); 0 if the fan does not
+  // close.
   uint32_t degree(VertexId v) const;
   // True if v has an outgoing halfedge whose face is a boundary loop.
   bool is_boundary(VertexId v) const;
@@ -219,7 +223,8 @@ class HalfedgeMesh {
   // met an invalid or dead halfedge or did not close within the bound.
   template <class Fn>
   bool for_each_face_halfedge(FaceId f, Fn&& fn) const;
-  // Calls fn(h) for each outgoing halfedge of v (h = twin(h).next), starting at halfedge(v).
+  // Calls fn(h) for each outgoing halfedge of v (h = twin(h).next, clockwise seen from outside), starting at
+  // halfedge(v).
   template <class Fn>
   bool for_each_outgoing(VertexId v, Fn&& fn) const;
 

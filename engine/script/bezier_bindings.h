@@ -5,7 +5,8 @@
 // have z = 0):
 //   meshedit.curve(points) -> curve           1 to kMaxCurvePoints control points
 //   c:evaluate(t) -> vec3                      the curve point
-//   c:levels(t) -> { {vec3...}, ... }          level 1 = the control points, the last level = the single point
+//   c:levels(t) -> { {vec3...}, ... }          [k + 1] = level k: [1] = level 0, the control points, as the curve
+//                                              view numbers them; the last entry is the single point
 //   c:step(points, t) -> {vec3...}             one de Casteljau step of any list of points (n -> n-1)
 //   c:split(t) -> left, right                  two curves, each with as many points as c
 //   c.points -> {vec3...}   #c -> number of control points   tostring(c) -> "curve (4 points)"

@@ -54,11 +54,12 @@ local Vertex = {}
 ---@return integer number of edges at the vertex
 function Vertex:degree() end
 
----Iterator over the halfedges leaving the vertex.
+---Iterator over the halfedges leaving the vertex: v.halfedge first, then h.twin.next, which turns clockwise
+---around the vertex seen from outside.
 ---@return fun(): Halfedge?
 function Vertex:halfedges() end
 
----Iterator over the neighbouring vertices.
+---Iterator over the neighbouring vertices, in the order of Vertex:halfedges() (the far end of each).
 ---@return fun(): Vertex?
 function Vertex:neighbors() end
 
@@ -92,6 +93,7 @@ local Face = {}
 ---@return integer number of sides
 function Face:degree() end
 
+---The face's halfedges: f.halfedge first, then h.next, counter-clockwise seen from outside.
 ---@return fun(): Halfedge?
 function Face:halfedges() end
 
@@ -297,7 +299,8 @@ local Curve = {}
 ---@return vec3
 function Curve:evaluate(t) end
 
----Every de Casteljau level: [1] = control points, last = the single point.
+---Every de Casteljau level at t: levels[k + 1] is level k (Lua lists start at 1), so levels[1] is level 0,
+---the control points, and the last entry is the single curve point.
 ---@param t number
 ---@return vec3[][]
 function Curve:levels(t) end
@@ -315,7 +318,7 @@ function Curve:split(t) end
 
 ---@class PatchEvaluation
 ---@field rows vec3[] the 4 rows evaluated at u
----@field column_levels vec3[][] {{4}, {3}, {2}, {1}}
+---@field column_levels vec3[][] the column's levels at v, {{4}, {3}, {2}, {1}} points: [k + 1] is level k, [1] = rows
 ---@field point vec3
 
 ---A bicubic Bézier patch (immutable); tostring "patch".

@@ -21,13 +21,15 @@
 -- WHAT YOU MAY USE
 --   #points, points[i], a for loop; vec3 arithmetic: a + b, a - b, a * 2, 2 * a, a / 2, -a, tostring(a);
 --   meshedit.vec3(x, y, z) makes a point. Fields p.x, p.y, p.z.
---   To see the reference: local c = meshedit.curve(points); c:levels(t), c:evaluate(t).
+--   To see the reference: local c = meshedit.curve(points); c:evaluate(t), and c:levels(t), the list of every
+--   level: Lua lists start at 1, so c:levels(t)[1] is level 0 (the control points) and [k + 1] is level k.
 --
 -- CHECKING
 --   In the app's curve view, tick "mine" (or press M) and press E: each level comes from this function, run on
---   the level before, and is compared point by point with the reference step. A level that differs is drawn in
---   orange over the reference's, and the view names the level, the point and both values; an error shows its
---   curve.lua:LINE. The view reloads this file when you save it. From a terminal:
+--   the level before, and is compared point by point with the reference step. Its table numbers the levels as
+--   the picture above does. A level that differs is drawn in vermillion over the reference's, and the view
+--   names the level, the point and both values; an error shows its curve.lua:LINE. The view reloads this file
+--   when you save it. From a terminal:
 --   meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student
 
 function evaluate_step(points, t)

@@ -34,6 +34,22 @@
 --     (Leave a vertex's halfedge alone otherwise: a boundary vertex keeps its boundary halfedge.)
 --   Read every handle you need BEFORE you write any pointer: after h0.next = h3, h0.next is no longer h2.
 --
+-- THE COURSE'S LETTERS
+--   The CS184 handout names the same diamond differently: it flips the edge b-c between the triangles
+--   (a, b, c) and (c, b, d) into (a, d, c) and (a, b, d). Its triangle (a, b, c) is our f0; letter by letter:
+--
+--     course   a  b  c  d      flips b-c to a-d;  (a, b, c), (c, b, d)  ->  (a, d, c), (a, b, d)
+--     ours     c  a  b  d      flips a-b to c-d;  f0 (a, b, c), f1 (b, a, d)  ->  f1 (c, d, b), f0 (d, c, a)
+--
+-- THE CLASSIC BUG: FORGETTING A FACE'S OR A VERTEX'S HALFEDGE
+--   Rewriting the six next pointers, h0.vertex, h1.vertex, h4.face and h2.face is not all. Before the flip,
+--   f0.halfedge may be h2, which is now in f1 (f1.halfedge may be h4, now in f0), and a.halfedge may be h0,
+--   which now leaves d (b.halfedge may be h1, now leaving c). Forget f0.halfedge / f1.halfedge or
+--   a.halfedge / b.halfedge and the flip looks right whenever they pointed elsewhere, then breaks on another
+--   edge: drawing or walking that face or vertex goes wrong. Validation names it (with ids for these names):
+--   "f0.halfedge is h2, but h2.face is f1", "a.halfedge is h0, but h0 leaves d". Try several edges of the
+--   cube, and flip the same edge four times: every halfedge's pointers are back where they started.
+--
 -- WHAT YOU MAY USE
 --   Reading: h.next h.twin h.vertex h.edge h.face, v.halfedge, e.halfedge, f.halfedge, f:is_boundary(),
 --   f:degree(), v:neighbors() (for w in c:neighbors() do ... end), a == b to compare handles, tostring(h).
@@ -42,9 +58,9 @@
 --   print(...) shows up in the console. mesh:flip(e) is the reference (not for use in your answer).
 --
 -- CHECKING
---   "mine" runs your function on a copy of the mesh, validates it (a pointer you forgot shows up as, e.g.,
---   "f0.halfedge is h5, but h5.face is f1"), compares it with the reference flip and lists every pointer that
---   differs. You can replay your pointer writes one by one.
+--   "mine" runs your function on a copy of the mesh, validates it (a pointer you forgot shows up as above),
+--   compares it with the reference flip and lists every pointer that differs. You can replay your pointer
+--   writes one by one.
 
 function flip_edge(mesh, e)
   -- TODO: read h0..h5, a..d, f0, f1; refuse boundary edges; then rewrite the pointers listed above.

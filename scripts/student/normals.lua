@@ -14,8 +14,10 @@
 --              p2
 --             /  \            h = v.halfedge leaves v; the face on its left is h.face, whose corners are
 --            /    \               h.vertex (= v), h.next.vertex, h.next.next.vertex (for a triangle).
---           / h.face\         The next outgoing halfedge around v is h.twin.next; you are back at the start
---          v ---h---> p1          when it equals v.halfedge again.
+--           / h.face\         The next outgoing halfedge around v is h.twin.next: h.twin comes back to v
+--          v ---h---> p1          along h's edge, and its next leaves v inside the face on h's right. The
+--                                 walk turns clockwise around v seen from outside (each face's own next goes
+--                                 counter-clockwise); you are back at the start when h equals v.halfedge again.
 --
 --     local h = v.halfedge
 --     repeat

@@ -6,7 +6,8 @@
 --   m.halfedge must run along the edge that was split (the reference uses n1, m->a), not along a new edge.
 --   Boundary edge (extra credit in the course; the reference does it): when one side of e is a boundary
 --   loop, only the triangle side is split (+1 vertex, 2 edges, 1 face, 4 halfedges) and the loop gains n1.
---   Refuse (return nil, change nothing) when a face beside e is not a triangle.
+--   Refuse (return nil, change nothing) when a face beside e is not a triangle, when both sides of e are
+--   boundary loops, and when c == d (two triangles with the same three corners: m would join c twice).
 --
 -- THE NAMES (the same as in the lessons and the reference, engine/core/mesh_ops.h)
 --   h0 is e's halfedge inside a face: e.halfedge, or its twin if e.halfedge lies on a boundary loop.
@@ -25,18 +26,22 @@
 --                 \ /                                 \ | /
 --                  d                                    d
 --
---   New elements, made in this order (the reference's order, so its ids and yours agree):
---     m = mesh:new_vertex((a.position + b.position) * 0.5)
---     edges  ea (a-m), ec (m-c), ed (m-d)                      mesh:new_edge()
---     faces  g0 = (a, m, c), g1 = (m, a, d)                    mesh:new_face()
---     halfedges n0 a->m, n1 m->a, n2 m->c, n3 c->m, n4 m->d, n5 d->m   mesh:new_halfedge()
+--   New elements, made in this order (the reference's order, engine/core/mesh_ops.h, so its ids and yours
+--   agree): first the vertex, then the edges, the faces, the halfedges, each kind in the order listed.
+--     vertex     m = mesh:new_vertex((a.position + b.position) * 0.5)
+--     edges      ea (a-m), ec (m-c), ed (m-d)                          mesh:new_edge()
+--     faces      g0 = (a, m, c), g1 = (m, a, d)                        mesh:new_face()
+--     halfedges  n0 a->m, n1 m->a, n2 m->c, n3 c->m, n4 m->d, n5 d->m   mesh:new_halfedge()
 --   Pointers afterwards (each face's halfedge first; twins h0/h1, n0/n1, n2/n3, n4/n5):
 --     f0 = (m, b, c): h0 -> h2 -> n3        g0 = (a, m, c): n0 -> n2 -> h3
 --     f1 = (b, m, d): h1 -> n4 -> h5        g1 = (m, a, d): n1 -> h4 -> n5
 --     h0.vertex = m (h0 now runs m->b); e keeps h0 and h1 as the half m-b; ea.halfedge = n0,
 --     ec.halfedge = n2, ed.halfedge = n4; m.halfedge = n1; a.halfedge = n0 if it was h0.
---   Boundary edge (f1 a boundary loop): no ed, g1, n4, n5; the loop runs ... h1 (b->m) -> n1 (m->a) -> the
---   halfedge that followed h1 before; n1.face = f1 (the loop).
+--   Boundary edge (f1 a boundary loop; h0 is then the halfedge of e inside the face): make m, ea, ec, g0,
+--   n0..n3 in the same order, and no ed, g1, n4, n5. f0 becomes f0 and g0 as above; f1 (the loop) is not
+--   split, it only gets one halfedge longer: h1 (b->m).next = n1, and n1 = (next: the halfedge that followed
+--   h1 before, twin n0, vertex m, edge ea, face f1). The loop's halfedge stays as it was. m.halfedge = n1
+--   puts m's halfedge on the loop, as every boundary vertex's halfedge must be.
 --
 -- WHAT YOU MAY USE
 --   Everything from flip.lua, plus mesh:new_vertex(position), mesh:new_edge(), mesh:new_face(),

@@ -13,16 +13,27 @@
 --          boundary edge:                                 (a + b) / 2
 --     3. Split every original edge (and ONLY those: remember them before you start; splitting edges made by
 --        a split never ends). Mark the new vertex as new and remember its position from step 2. Mark the two
---        edges that cut across the old faces (m-c and m-d) as new; the two halves of the split edge are not.
+--        edges that cut across the old faces (m-c and m-d) as new; the two halves of the split edge (a-m and
+--        m-b) are not new: leave them unmarked.
 --     4. Flip every new edge that joins an old vertex and a new vertex (one endpoint new, the other old).
+--        Only the marks tell the edges to flip from the halves: a half of a split edge joins an old vertex
+--        (a or b) to a new one (m) too. The halves lie along the original edge, which subdivision keeps (in
+--        two halves); flipping one would swap it for an edge across two old triangles, and each old triangle
+--        would no longer be four: three at its corners and one in the middle.
 --     5. Move every vertex to the position computed in steps 1 and 2.
---   Keep your marks in Lua tables indexed by id (is_new[v.id] = true): handles are made fresh at every read,
---   so two handles of the same vertex are == but are different table keys.
+--   Keep your marks in Lua tables indexed by id (is_new[v.id] = true, is_new_edge[e.id] = true): handles are
+--   made fresh at every read, so two handles of the same vertex are == but are different table keys.
+--   Mark with these flags, not with id ranges ("ids past the original count are new"): split(e) keeps e's id
+--   for the half m-b and gives the half a-m a new id (ea), so a new id does not mean a new edge.
 --   Use numbers like 3 / 16 or 3.0 / 16: in Lua, 3 // 16 is an integer division (0).
 --
 -- THE NAMES
 --   After mesh:split(e) returns m, m.halfedge runs along the split edge (m->a); the halfedges leaving m are
---   m.halfedge, m.halfedge.twin.next, ... (four of them for an interior edge: to a, d, b, c).
+--   m.halfedge, m.halfedge.twin.next, ..., and the walk turns clockwise around m seen from outside (four of
+--   them for an interior edge: to a, c, b, d; on a boundary edge three: to a, c, b). a, b, c, d are the names
+--   of split.lua and engine/core/mesh_ops.h: a-b the edge, c and d the corners across it. So in that walk the
+--   edges to a and b are the halves of e (unmarked) and the edges to c and d the new ones (is_new_edge).
+--   Telling them apart by their far end (read a and b before the split) works whichever split you call.
 --
 -- WHAT YOU MAY USE
 --   Everything from the earlier parts. Splits and flips: mesh:split(e) and mesh:flip(e) (the reference
