@@ -27,6 +27,12 @@ void QualityGovernor::set_steps(QualitySteps steps) {
   crossed_ = -1;  // the costs on either side of the last move are not comparable any more
 }
 
+void QualityGovernor::view_changed() {
+  samples_.clear();
+  ratio_ = rules_.default_ratio;
+  crossed_ = -1;
+}
+
 bool QualityGovernor::available(int step) const {
   switch (QualityStep(step)) {
     case QualityStep::Multisampling:
@@ -77,7 +83,7 @@ void QualityGovernor::measured(double frame_ms) {
   if (crossed_ >= 0) {  // the first frames after a move: what the step crossed costs
     const double with_step = moved_down_ ? median_before_ : now;
     const double without_step = moved_down_ ? now : median_before_;
-    ratio_[size_t(crossed_)] = std::max(1.0, with_step / without_step);
+    ratio_[size_t(crossed_)] = std::clamp(with_step / without_step, 1.0, std::max(1.0, rules_.max_ratio));
     crossed_ = -1;
   }
 

@@ -18,8 +18,11 @@
 //   spike among three frames (an edit, a panel opening) and two among five.
 // - Up: with `window` samples, when the cost predicted with the last step taken back, median x that step's ratio, is
 //   under `up_ms`. A step's ratio is the one measured when the level last crossed it (the median of the first
-//   `down_samples` frames after the move against the median that made the move), at least 1; before that,
-//   `default_ratio`: each step halves the frame (render_bench on llvmpipe measures 1.3 to 2.8 for each).
+//   `down_samples` frames after the move against the median that made the move), within [1, max_ratio]; before that,
+//   or after view_changed(), `default_ratio`. The default is optimistic on purpose (render_bench on llvmpipe measures
+//   1.2 to 2.8 per step): a display synchronised at 60 Hz makes every frame at least 16.7 ms, and 16.7 x 1.4 is still
+//   under 25, so a fast GPU climbs back to full quality; a try that turns out slow costs `down_samples` frames once and
+//   measures the true ratio.
 // - Hysteresis: between up_ms and down_ms nothing moves, up needs a whole window and down fewer frames. A step up that
 //   turns out slow comes back down after `down_samples` frames, having measured the step's ratio, so it is not tried
 //   again while the frames cost what they did.
@@ -48,8 +51,11 @@ struct QualityRules {
   double up_ms = 25.0;
   size_t down_samples = 3;
   size_t window = 5;
-  // Frame time with the step taken back over frame time with it taken, until measured.
-  std::array<double, kQualitySteps> default_ratio{2.0, 2.0, 2.0};
+  // Frame time with the step taken back over frame time with it taken, until measured; and the most a measurement may
+  // say: no step costs that much (render_bench: 2.8 at most), so more means the frames got dearer or cheaper for
+  // another reason as the level moved, and believing it would keep the step away for good.
+  std::array<double, kQualitySteps> default_ratio{1.4, 1.4, 1.4};
+  double max_ratio = 4.0;
 };
 
 class QualityGovernor {
@@ -60,6 +66,9 @@ class QualityGovernor {
   // sample and measured ratio; the next sample is ignored.
   void reset(int level);
   void set_steps(QualitySteps steps);
+  // The view's cost changed for a reason of its own (the user showed or hid something): forgets the samples and the
+  // measured ratios, keeping the level.
+  void view_changed();
   // The time of one frame drawn at level() with the current steps. Not finite or not positive: ignored.
   void measured(double frame_ms);
 
