@@ -70,6 +70,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   read_mouse_and_keys(width, height);  // in the view placed by the last frame
   update_lesson(frame_ms);
+  view_quality_.frame_started(frame_ms);
 
   const ImVec4 bg = view_background(settings_.theme);
   mesh_renderer_->style().background = glm::vec4(bg.x, bg.y, bg.z, bg.w);
@@ -137,33 +138,31 @@ void EditorApp::draw_mesh_view() {
   }
   apply_size_defaults();
   take_pending_view();
-  if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
+  const ViewOptions drawn =
+      undrawable_.empty() ? view_quality_.options_to_draw(view_options_, mesh_renderer_->stats()) : view_options_;
+  status_bar_.note = undrawable_.empty() ? view_quality_.note() : "not drawn: " + undrawable_;
   Highlights highlights;
   highlights.hovered = selection_.hovered;
   highlights.selected = selection_.selected;
   highlights.changed = doc_.last.index.elements();
   highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
-  mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
+  mesh_renderer_->draw(camera_, viewport(), drawn, highlights);
   draw_lesson_marks();
 }
 
 void EditorApp::apply_size_defaults() {
-  // The wireframe's default follows the mesh's size class when it changes (opening a file, a subdivision);
-  // W still toggles it in between. The renderer drops multisampling for large meshes by itself.
+  // The arrows' default follows the mesh's size class when it changes (opening a file, a subdivision); the wireframe
+  // and the rest of the quality follow the frame time (app/view_quality.h), from a guess by size on another mesh.
   const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
   const SizeClass size = large ? SizeClass::Large
                          : doc_.mesh.num_faces() <= kArrowsMaxFaces ? SizeClass::Small
                                                                      : SizeClass::Medium;
   if (size != size_class_) {
     size_class_ = size;
-    view_options_.wireframe = !large;
     view_options_.show_halfedges = size == SizeClass::Small;
   }
-  status_bar_.note.clear();
-  if (large) {
-    status_bar_.note = "large mesh: no multisampling";
-    if (!view_options_.wireframe) status_bar_.note += ", wireframe off (W shows it)";
-  }
+  view_quality_.follow_mesh(doc_.generation, mesh_renderer_->stats().triangles, mesh_renderer_->style(),
+                            view_options_);
 }
 
 void EditorApp::draw_patch_view() {
