@@ -60,8 +60,8 @@ void ViewQuality::write_wireframe(ViewOptions& options) {
 void ViewQuality::update_note() {
   std::vector<const char*> dropped;
   if (governor_.drops(QualityStep::Multisampling)) dropped.push_back("multisampling");
-  if (governor_.drops(QualityStep::Wireframe)) dropped.push_back("wireframe");
   if (governor_.drops(QualityStep::BackSides)) dropped.push_back("back sides");
+  if (governor_.drops(QualityStep::Wireframe)) dropped.push_back("wireframe");  // last: "(W shows it)" follows
   note_.clear();
   if (dropped.empty()) return;
   char why[48];
@@ -76,7 +76,7 @@ void ViewQuality::update_note() {
     note_ += dropped[i];
   }
   note_ += " off";
-  if (governor_.drops(QualityStep::Wireframe)) note_ += " (W shows the wireframe)";
+  if (governor_.drops(QualityStep::Wireframe)) note_ += " (W shows it)";
 }
 
 }  // namespace meshedit

@@ -20,8 +20,8 @@
 // - When the user changes what is shown (the wireframe, vertices, arrows, boundary, shading), the governor forgets
 //   what it measured of each step (QualityGovernor::view_changed): those costs changed.
 // - Multisampling and the back sides are never written into the caller's options, only into the copy drawn.
-// - note() names what is dropped and why: "frame 62 ms: multisampling off", "large mesh: multisampling, wireframe and
-//   back sides off (W shows the wireframe)"; "" at full quality.
+// - note() names what is dropped and why, short enough to leave room in the status bar: "frame 62 ms: multisampling
+//   off", "large mesh: multisampling, back sides and wireframe off (W shows it)"; "" at full quality.
 #pragma once
 
 #include <cstddef>

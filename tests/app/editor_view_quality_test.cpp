@@ -60,7 +60,7 @@ TEST_F(EditorViewQuality, SlowFramesLowerTheQualityTheUsersWireframeWinsAndFastF
 
   frames(80.0f, 3);
   EXPECT_FALSE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling and wireframe off (W shows the wireframe)");
+  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling and wireframe off (W shows it)");
 
   app_->handle_key(GLFW_KEY_W, {});
   frames(80.0f, 1);

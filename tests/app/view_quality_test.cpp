@@ -53,12 +53,12 @@ TEST(ViewQuality, SlowFramesDropMultisamplingThenTheWireframeAndTheNoteSaysSo) {
   drawn = view.frames(62.0f, 3);
   EXPECT_FALSE(drawn.wireframe);
   EXPECT_FALSE(view.options.wireframe);  // written into the app's options: W turns it back on
-  EXPECT_EQ(view.quality.note(), "frame 62 ms: multisampling and wireframe off (W shows the wireframe)");
+  EXPECT_EQ(view.quality.note(), "frame 62 ms: multisampling and wireframe off (W shows it)");
 
   drawn = view.frames(62.0f, 3);
   EXPECT_FALSE(drawn.back_sides);
   EXPECT_EQ(view.quality.note(),
-            "frame 62 ms: multisampling, wireframe and back sides off (W shows the wireframe)");
+            "frame 62 ms: multisampling, back sides and wireframe off (W shows it)");
   // Back sides and multisampling are dropped from the copy drawn only.
   EXPECT_TRUE(view.options.multisampling);
   EXPECT_TRUE(view.options.back_sides);
@@ -83,7 +83,7 @@ TEST(ViewQuality, ALargeMeshStartsCheapAndAnotherDocumentStartsOver) {
   EXPECT_FALSE(drawn.multisampling);
   EXPECT_FALSE(drawn.wireframe);
   EXPECT_FALSE(drawn.back_sides);
-  EXPECT_EQ(view.quality.note(), "large mesh: multisampling, wireframe and back sides off (W shows the wireframe)");
+  EXPECT_EQ(view.quality.note(), "large mesh: multisampling, back sides and wireframe off (W shows it)");
   // Slow, but nothing more to drop: it stays.
   drawn = view.frames(130.0f, 30);
   EXPECT_EQ(view.quality.governor().level(), kQualitySteps);
@@ -142,7 +142,7 @@ TEST(ViewQuality, AnOpenMeshKeepsItsBackSidesAndNoSamplesMeansNoMultisamplingSte
   ViewOptions drawn = view.frames(80.0f, 30);
   EXPECT_FALSE(drawn.wireframe);
   EXPECT_TRUE(drawn.back_sides);
-  EXPECT_EQ(view.quality.note(), "frame 80 ms: wireframe off (W shows the wireframe)");
+  EXPECT_EQ(view.quality.note(), "frame 80 ms: wireframe off (W shows it)");
 }
 
 }  // namespace
