@@ -71,6 +71,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   edit_animator_.advance(frame_ms / 1000.0);  // before this frame's actions: an edit they make starts at time 0
   read_mouse_and_keys(width, height);  // in the view placed by the last frame
   update_lesson(frame_ms);
+  view_quality_.frame_started(frame_ms);
 
   const ImVec4 bg = view_background(settings_.theme);
   set_render_colours(mesh_renderer_->style(), palette_for(settings_.theme));
@@ -139,7 +140,13 @@ void EditorApp::draw_mesh_view() {
   }
   apply_size_defaults();
   take_pending_view();
-  if (!undrawable_.empty()) status_bar_.note = "not drawn: " + undrawable_;
+  const ViewOptions drawn =
+      undrawable_.empty() ? view_quality_.options_to_draw(view_options_, mesh_renderer_->stats()) : view_options_;
+  status_bar_.note = undrawable_.empty() ? view_quality_.note() : "not drawn: " + undrawable_;
+  if (status_bar_.note.empty() && !view_options_.wireframe &&
+      (size_class_ == SizeClass::Dense || size_class_ == SizeClass::Large)) {
+    status_bar_.note = "wireframe off (W shows it)";
+  }
   edit_animator_.set_enabled(edits_animate());
   edit_animator_.follow(doc_);
   // While an edit plays, its moving parts are the only highlight: the selection, the changed elements and the lesson's
@@ -152,14 +159,15 @@ void EditorApp::draw_mesh_view() {
     highlights.changed = doc_.last.index.elements();
     highlights.changed_key = doc_.last.serial + 1;  // nonzero; a new change has a new serial
   }
-  mesh_renderer_->draw(camera_, viewport(), view_options_, highlights);
+  mesh_renderer_->draw(camera_, viewport(), drawn, highlights);
   if (!playing) draw_lesson_marks();
   draw_edit_animation();
 }
 
 void EditorApp::apply_size_defaults() {
-  // The wireframe's default follows the mesh's size class when it changes (opening a file, a subdivision);
-  // W still toggles it in between. The renderer drops multisampling for large meshes by itself.
+  // The arrows' and the wireframe's defaults follow the mesh's size class when it changes (opening a file, a
+  // subdivision); from there the quality (multisampling, wireframe, back sides) follows the frame time
+  // (app/view_quality.h), and W, the menu or a lesson's view{} still choose.
   const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
   const size_t faces = doc_.mesh.num_faces();
   const SizeClass size = large                        ? SizeClass::Large
@@ -171,11 +179,8 @@ void EditorApp::apply_size_defaults() {
     view_options_.wireframe = size == SizeClass::Small || size == SizeClass::Medium;
     view_options_.show_halfedges = size == SizeClass::Small;
   }
-  status_bar_.note.clear();
-  if (large) status_bar_.note = "large mesh: no multisampling";
-  if (!view_options_.wireframe && (size == SizeClass::Large || size == SizeClass::Dense)) {
-    status_bar_.note += std::string(status_bar_.note.empty() ? "" : ", ") + "wireframe off (W shows it)";
-  }
+  view_quality_.follow_mesh(doc_.generation, mesh_renderer_->stats().triangles, mesh_renderer_->style(),
+                            view_options_);
 }
 
 void EditorApp::draw_patch_view() {

@@ -45,6 +45,7 @@
 
 #include "app/edit_animator.h"
 #include "app/up_axis_choice.h"
+#include "app/view_quality.h"
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
 #include "render/camera.h"
@@ -179,6 +180,7 @@ class EditorApp {
   const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
   RenderStyle& mesh_render_style() { return mesh_renderer_->style(); }  // tests lower its buffer cap
   const std::string& status_note() const { return status_bar_.note; }
+  const ViewOptions& view_options() const { return view_options_; }  // as the user and the quality governor set them
   void fit_view() { fit_camera(); }
   Viewport viewport() const { return {view_pixels_.width, view_pixels_.height}; }
   // View > Up axis: shows the mesh or patches on screen with that up axis (app/up_axis_choice.h), refitted.
@@ -253,12 +255,14 @@ class EditorApp {
   bool show_labels_ = true;
   LabelPlacement last_labels_;
   // The shown mesh's size class (apply_size_defaults): small enough for halfedge arrows by default (kArrowsMaxFaces),
-  // for the wireframe (kWireframeMaxFaces: past it the lines of a fitted mesh cover its faces), dense, or past
-  // RenderStyle::large_mesh_triangles. When it changes, the wireframe and the arrows take its defaults.
+  // for the wireframe by default (kWireframeMaxFaces: past it the lines of a fitted mesh cover its faces), dense, or
+  // past RenderStyle::large_mesh_triangles. When it changes, the wireframe and the arrows take its defaults; the
+  // quality then follows the frame time (app/view_quality.h).
   static constexpr size_t kArrowsMaxFaces = 300;
   static constexpr size_t kWireframeMaxFaces = 20000;
   enum class SizeClass { Unknown, Small, Medium, Dense, Large };
   SizeClass size_class_ = SizeClass::Unknown;
+  ViewQuality view_quality_;  // multisampling, wireframe and back sides by the measured frame time
   std::optional<ViewRequest> pending_view_;  // a lesson's view{...}, for the next mesh frame
   void take_pending_view();
   // Why the renderer refused the document's mesh (too large to draw) at this generation and version; "" when drawn.

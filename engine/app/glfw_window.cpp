@@ -114,11 +114,13 @@ void GlfwWindow::begin_frame() {
   // events that are not input (ImGui's cursor updates cause some), so only the callbacks below count.
   constexpr int kSettleFrames = 3;
   constexpr double kIdleTimeoutSeconds = 5.0;  // a redraw now and then, even with no input
+  last_wait_ms_ = 0.0f;
   if (lazy_ && quiet_frames_ >= kSettleFrames) {
     const double start = glfwGetTime();
     while (!input_seen_ && glfwGetTime() - start < kIdleTimeoutSeconds && !should_close()) {
       glfwWaitEventsTimeout(kIdleTimeoutSeconds - (glfwGetTime() - start));
     }
+    last_wait_ms_ = float((glfwGetTime() - start) * 1000.0);
   } else {
     glfwPollEvents();
   }

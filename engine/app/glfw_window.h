@@ -33,6 +33,8 @@ class GlfwWindow {
   void request_close();
   // Waits for input when the last frames were idle (see set_lazy), polls events, starts an ImGui frame.
   void begin_frame();
+  // How long the last begin_frame() waited for input, in milliseconds (0 when it only polled).
+  float last_wait_ms() const { return last_wait_ms_; }
   // Lazy mode: after a few frames with no input, sleep until the next event (or a second passes) instead of
   // redrawing at the display's rate: an idle window costs nothing, even with a million triangles. Off for
   // scripted runs, which need every frame.
@@ -71,6 +73,7 @@ class GlfwWindow {
   bool lazy_ = true;
   bool input_seen_ = true;  // set by the input callbacks, cleared each frame
   int quiet_frames_ = 0;    // frames since the last input
+  float last_wait_ms_ = 0.0f;
 };
 
 }  // namespace meshedit

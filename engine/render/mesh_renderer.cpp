@@ -112,10 +112,11 @@ struct PickKey {
   int width = 0, height = 0;
   bool halfedges = false;
   bool faces_only = false;  // the pass drew faces only (pick_from_faces.h)
+  bool front_only = false;  // the pass skipped back sides (ViewOptions::back_sides)
 
   bool operator==(const PickKey& o) const {
     return mesh == o.mesh && version == o.version && view_projection == o.view_projection && width == o.width &&
-           height == o.height && halfedges == o.halfedges && faces_only == o.faces_only;
+           height == o.height && halfedges == o.halfedges && faces_only == o.faces_only && front_only == o.front_only;
   }
 };
 
@@ -129,8 +130,8 @@ constexpr float kBackOffsetFactor = 16.0f;
 // one pixel of its own depth slope: the grazing front side further than the back one, so a fringe of
 // back colour would win there. The back pass is pushed much further to lose it; the price is that a
 // back side closer than that margin in front of a front side is hidden, which real scenes rarely have.
-// A large closed mesh (no boundary, every face drawn) shows no back side from outside: its back pass, a quarter of
-// llvmpipe's frame there, is skipped (`front_only`).
+// A closed mesh (no boundary, every face drawn) shows no back side from outside: its back pass, a quarter of
+// llvmpipe's frame on a dense mesh, is skipped when the options say so (`front_only`).
 void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program, bool front_only) {
   const GLint extra = program.uniform("u_extra");
   glUniform1i(program.uniform("u_extra_faces"), 3);
@@ -174,6 +175,7 @@ struct MeshRenderer::Impl {
     GLint max_texels = 0;
     glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
     max_buffer_texels = size_t(std::max(max_texels, 0));
+    glGetIntegerv(GL_SAMPLES, &stats.framebuffer_samples);
   }
 
   void upload(const HalfedgeMesh& mesh, std::string reason);
@@ -198,9 +200,7 @@ struct MeshRenderer::Impl {
   void ensure_pick_target(Viewport viewport);
   void count_gpu_bytes();
   PickKey pick_key_for(const OrbitCamera& camera, Viewport viewport) const;
-  bool front_only() const {
-    return is_large_mesh(stats.triangles, style) && stats.boundary_edges == 0 && stats.skipped_faces == 0;
-  }
+  bool front_only(const ViewOptions& options) const { return !options.back_sides && is_closed(stats); }
   // A large mesh whose live faces and edges are all drawn is picked from a faces-only id pass
   // (pick_from_faces.h): every edge and vertex with a face is found through the faces around the cursor.
   bool pick_faces_only() const {
@@ -428,6 +428,7 @@ PickKey MeshRenderer::Impl::pick_key_for(const OrbitCamera& camera, Viewport vie
   key.height = viewport.height;
   key.halfedges = last_options.show_halfedges;
   key.faces_only = pick_faces_only();
+  key.front_only = front_only(last_options);
   return key;
 }
 
@@ -454,7 +455,7 @@ void MeshRenderer::Impl::draw_faces(const gl::CameraUniforms& uniforms, const Or
   changed[kFaceSlot].bind(2);
   glUniform1i(face.uniform("u_face_normals"), 1);
   glUniform1i(face.uniform("u_changed"), 2);
-  draw_triangles(gpu, face, front_only());
+  draw_triangles(gpu, face, front_only(options));
 }
 
 void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniforms, const ViewOptions& options,
@@ -532,7 +533,7 @@ void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfe
   face_pick.use();
   gl::set_camera(face_pick, uniforms);
   glUniform1ui(face_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Face));
-  draw_triangles(gpu, face_pick, front_only());
+  draw_triangles(gpu, face_pick, front_only(last_options));
   if (faces_only) return;
 
   // Edges and arrows as hairlines: pick() reads a window around the cursor, so one within its radius is
@@ -612,9 +613,10 @@ void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const View
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
   glEnable(GL_PROGRAM_POINT_SIZE);
-  // A large mesh is drawn single-sampled even into a multisampled framebuffer (see RenderStyle).
+  // Drawn single-sampled into a multisampled framebuffer when the options say so.
   const bool multisample = glIsEnabled(GL_MULTISAMPLE) == GL_TRUE;
-  const bool single_sample = multisample && is_large_mesh(r.stats.triangles, r.style);
+  const bool single_sample = multisample && !options.multisampling;
+  glGetIntegerv(GL_SAMPLES, &r.stats.framebuffer_samples);
   if (single_sample) glDisable(GL_MULTISAMPLE);
   r.draw_faces(uniforms, camera, options, highlights);
   r.draw_lines_and_points(uniforms, options, highlights);

@@ -23,8 +23,8 @@
 // - draw() and pick() read the mesh given to the last update() for the few highlighted elements and,
 //   when first asked for them, the halfedge arrows: that mesh must still exist (the app calls update()
 //   every frame before draw(), so it always does).
-// - A large mesh (RenderStyle::large_mesh_triangles) is drawn single-sampled, whatever the framebuffer has, and
-//   when it is closed (no boundary edge, no face skipped) without the pass that shows back sides.
+// - ViewOptions::multisampling off draws single-sampled, whatever the framebuffer has; ViewOptions::back_sides off
+//   skips the pass that shows back sides when the mesh is closed (is_closed), in the picture and the id pass alike.
 // - A broken mesh (left so by a script) is drawn as far as it can be walked (mesh_geometry.h): faces
 //   whose cycle does not close are skipped and counted, nothing loops or reads out of range.
 // - Picking is exact: an id pass renders faces, then edges and halfedge arrows (when shown) as hairlines
@@ -73,8 +73,12 @@ struct RenderStats {
   size_t arrows = 0;                            // halfedge slots in the arrow batch (when built)
   size_t skipped_faces = 0, skipped_edges = 0;  // live elements the last update could not draw
   size_t gpu_bytes = 0;                         // buffer memory the renderer holds
-  bool multisampled = false;                    // the last draw() used multisampling (off for large meshes)
+  bool multisampled = false;                    // the last draw() used multisampling
+  int framebuffer_samples = 0;  // samples of the framebuffer the last draw() drew into (at first: the one bound then)
 };
+
+// No boundary edge and no face left undrawn: no back side shows from outside (ViewOptions::back_sides).
+inline bool is_closed(const RenderStats& stats) { return stats.boundary_edges == 0 && stats.skipped_faces == 0; }
 
 class MeshRenderer {
  public:

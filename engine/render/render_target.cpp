@@ -90,12 +90,17 @@ void RenderTarget::clear(const glm::vec4& colour) const {
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 }
 
+void RenderTarget::resolve() const {
+  if (samples_ <= 1) return;
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
+  glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_framebuffer_);
+  glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
+  glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_framebuffer_);
+}
+
 std::vector<uint8_t> RenderTarget::read_rgba() const {
   if (samples_ > 1) {
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolve_framebuffer_);
-    glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT, GL_NEAREST);
-    glBindFramebuffer(GL_READ_FRAMEBUFFER, resolve_framebuffer_);
+    resolve();
   } else {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer_);
   }

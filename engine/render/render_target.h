@@ -29,6 +29,9 @@ class RenderTarget {
   void clear(const glm::vec4& colour) const;
   Viewport viewport() const { return {width_, height_}; }
   int samples() const { return samples_; }
+  // Resolves the samples into the single-sampled copy (what a window's buffer swap does); nothing when not
+  // multisampled. Leaves the copy bound for reading.
+  void resolve() const;
   // Resolves (if multisampled) and reads the colour; leaves this target bound.
   std::vector<uint8_t> read_rgba() const;
 

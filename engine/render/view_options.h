@@ -22,6 +22,9 @@ struct ViewOptions {
   bool show_vertices = false;   // every vertex as a dot
   bool show_halfedges = false;  // every halfedge as an arrow inside its face (pickable only when shown)
   bool show_boundary = true;    // boundary edges in their own colour, even without the wireframe
+  // Quality the app lowers while frames are slow (quality_governor.h):
+  bool multisampling = true;  // use the framebuffer's samples, if it has any
+  bool back_sides = true;     // draw back sides; off skips their pass, on a closed mesh only (none shows from outside)
 };
 
 // Hovered and selected are one element each (an invalid ElementRef for none); `changed` lists what the
@@ -54,10 +57,9 @@ struct RenderStyle {
   float arrow_width = 1.5f;
   float vertex_size = 7.0f;
   float highlight_vertex_size = 11.0f;
-  // Above this many triangles a mesh is "large": drawn without multisampling (which doubles llvmpipe's frame
-  // time and shows little on triangles a few pixels wide) and, when closed, without its back sides (unseen from
-  // outside); the app turns the wireframe off by default (at a million triangles it costs more than the faces and
-  // paints the view black). At or below it nothing changes.
+  // Above this many triangles a mesh is "large": picked from a faces-only id pass (pick_from_faces.h), and the app
+  // draws it at the quality governor's cheapest level until frames are measured (at a million triangles llvmpipe
+  // takes most of a second for a frame at full quality). At or below it the governor starts at full quality.
   size_t large_mesh_triangles = 100000;
   // A cap on the texels of one buffer texture below OpenGL's own (GL_MAX_TEXTURE_BUFFER_SIZE, 128M on llvmpipe);
   // 0 for OpenGL's. Past it a mesh is too large to draw (MeshRenderer::update). Tests set it to try that cheaply.
@@ -85,7 +87,7 @@ inline RenderStyle render_style_for(Theme theme) {
   return style;
 }
 
-// Whether a mesh of this many triangles is drawn the cheap way (see RenderStyle::large_mesh_triangles).
+// Whether a mesh of this many triangles is large (see RenderStyle::large_mesh_triangles).
 inline bool is_large_mesh(size_t triangles, const RenderStyle& style) { return triangles > style.large_mesh_triangles; }
 
 }  // namespace meshedit

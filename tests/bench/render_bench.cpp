@@ -2,11 +2,15 @@
 // and the pointer tables' frame at 6M+ halfedges. Not a test: it prints numbers and asserts nothing.
 //
 //   render_bench [--faces N[,N...]] [--frames F] [--size WxH] [--samples S] [--tables-faces N] [--no-tables]
-//   defaults: 10000,100000,1000000 faces, 10 frames, 1280x800, 4x multisampling, tables on 1M faces subdivided once
+//                [--frames-only]
+//   defaults: 10000,100000,1000000 faces, 10 frames, 1280x800, 4x multisampling, tables on 1M faces subdivided once;
+//   --frames-only stops each mesh after the quality levels and skips the tables
 //
-// For each mesh: the first update (CPU build + upload); a clear alone; the frame (clear + update + draw + glFinish;
-// minimum and median of F frames) as drawn before the large-mesh defaults (4x multisampling, wireframe) and as the
-// app now draws it by default (a large mesh: single-sampled, no wireframe); an idle update() and an orbit frame with
+// For each mesh (with the load average as it starts): the first update (CPU build + upload); a clear alone; the frame
+// (clear + update + draw + resolve of the samples, as a buffer swap does, + glFinish; median and minimum of F frames)
+// at each quality level of the governor (quality_governor.h: full, then without multisampling, the wireframe, the
+// back sides), the ratios between them, and the governor run frame by frame on these frames from the app's starting
+// guess, with the level it settles on; an idle update() and an orbit frame at that level with
 // the counters that prove they do no per-element work; pick() with the id buffer redrawn (which pass) and at the
 // same camera;
 // update() after a flip, a split and a collapse (a patch of the touched slots) against a full rebuild, with the
@@ -14,6 +18,7 @@
 // Then the pointer tables (the halfedge tab) in the headless ImGui harness: the frame at the first row, the middle and
 // the end, and the worst frame of a scroll through a window's worth of rows.
 #include <algorithm>
+#include <array>
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -37,6 +42,7 @@
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_context.h"
+#include "render/quality_governor.h"
 #include "render/render_error.h"
 #include "render/render_target.h"
 #include "render/shader_library.h"
@@ -164,10 +170,72 @@ void time_edit(MeshRenderer& renderer, HalfedgeMesh& mesh, const char* name,
   line(label, "%10.3f ms", ms_since(start), note);
 }
 
-void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& target, const ShaderLibrary& shaders) {
+const char* const kLevelNames[kQualitySteps + 1] = {
+    "full: multisampling, wireframe, back sides", "no multisampling", "no multisampling, no wireframe",
+    "no multisampling, no wireframe, no back sides"};
+const char* const kStepNames[kQualitySteps] = {"multisampling", "wireframe", "back sides"};
+
+// What the window draws at a quality level, on a closed mesh with the user's wireframe choice left to the governor.
+ViewOptions options_at_level(int level) {
+  ViewOptions options;
+  options.multisampling = level < 1;
+  options.wireframe = level < 2;
+  options.back_sides = level < 3;
+  return options;
+}
+
+// The 1-minute load average (other work on the machine skews every figure).
+std::string load_average() {
+  char text[64] = "?";
+  if (FILE* file = std::fopen("/proc/loadavg", "r")) {
+    if (std::fscanf(file, "%15s", text) != 1) std::snprintf(text, sizeof text, "?");
+    std::fclose(file);
+  }
+  return text;
+}
+
+// The governor as the window runs it: each frame drawn at its level and its time fed back, from the app's starting
+// guess (the cheapest level for a large mesh, else full quality), until the level has not moved for three windows
+// (or 80 frames). Prints the levels frame by frame and where it settled; returns the options it settled on.
+ViewOptions run_governor(MeshRenderer& renderer, const std::function<void(const ViewOptions&)>& draw_frame) {
+  const bool large = is_large_mesh(renderer.stats().triangles, renderer.style());
+  QualityGovernor governor;
+  governor.reset(large ? kQualitySteps : 0);
+  QualitySteps steps;
+  steps.multisampling = renderer.stats().framebuffer_samples > 1;
+  steps.back_sides = is_closed(renderer.stats());
+  governor.set_steps(steps);
+  const size_t still_frames = 3 * QualityRules().window;
+  std::string path;
+  std::vector<double> times;
+  size_t still = 0;
+  int frame = 0;
+  for (; frame < 80 && still < still_frames; ++frame) {
+    const int level = governor.level();
+    const auto start = Clock::now();
+    draw_frame(options_at_level(level));
+    const double ms = ms_since(start);
+    governor.measured(ms);
+    path += std::to_string(level);
+    times.push_back(ms);
+    still = governor.level() == level ? still + 1 : 0;
+    if (governor.level() != level) times.clear();
+  }
+  std::sort(times.begin(), times.end());
+  const double median = times.empty() ? 0.0 : times[times.size() / 2];
+  char note[200];
+  std::snprintf(note, sizeof note, "level %d (%s) after %d frames from level %d; levels: %s", governor.level(),
+                kLevelNames[governor.level()], frame, large ? kQualitySteps : 0, path.c_str());
+  line("governor: frame at the level it settles on (median)", "%10.2f ms", median, note);
+  return options_at_level(governor.level());
+}
+
+void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& target, const ShaderLibrary& shaders,
+                bool frames_only) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_torus_with_faces(faces));
   MeshRenderer renderer(shaders);
-  std::printf("\ntorus: %zu triangles, %zu vertices\n", mesh.num_faces(), mesh.num_vertices());
+  std::printf("\ntorus: %zu triangles, %zu vertices; load average %s\n", mesh.num_faces(), mesh.num_vertices(),
+              load_average().c_str());
 
   auto start = Clock::now();
   renderer.update(mesh);
@@ -196,43 +264,38 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
   std::snprintf(note, sizeof note, "median %.2f", clear.median);
   line("clear only (min)", "%10.2f ms", clear.min, note);
 
-  const bool large = is_large_mesh(renderer.stats().triangles, renderer.style());
-  const auto frame_time = [&](const ViewOptions& options, size_t large_threshold) {
-    const size_t saved = renderer.style().large_mesh_triangles;
-    renderer.style().large_mesh_triangles = large_threshold;
-    renderer.draw(camera, viewport, options, {});  // llvmpipe compiles shader variants on first use
+  // The frame at each quality level (quality_governor.h), then the levels the governor picks frame by frame from
+  // these frames' times, from the app's starting guess, and where it settles.
+  const auto draw_frame = [&](const ViewOptions& options) {
+    renderer.update(mesh);
+    target.clear(renderer.style().background);
+    renderer.draw(camera, viewport, options, {});
+    target.resolve();  // as the window's buffer swap does
     glFinish();
-    const Timing t = time_frames(frames, [&] {
-      renderer.update(mesh);
-      target.clear(renderer.style().background);
-      renderer.draw(camera, viewport, options, {});
-      glFinish();
-    });
-    renderer.style().large_mesh_triangles = saved;
-    return t;
   };
-  const size_t never = std::numeric_limits<size_t>::max();
-  ViewOptions faces_only, wireframe;
-  faces_only.wireframe = false;
-  const Timing old_faces = frame_time(faces_only, never), old_wire = frame_time(wireframe, never);
-  std::snprintf(note, sizeof note, "median %.2f", old_faces.median);
-  line("frame, faces, 4x MSAA (min)", "%10.2f ms", old_faces.min, note);
-  std::snprintf(note, sizeof note, "median %.2f; the default before", old_wire.median);
-  line("frame, faces + wireframe, 4x MSAA (min)", "%10.2f ms", old_wire.min, note);
-  ViewOptions app_default;
-  app_default.wireframe = !large;
-  const Timing now = frame_time(app_default, renderer.style().large_mesh_triangles);
-  std::snprintf(note, sizeof note, "median %.2f; %s", now.median,
-                large ? "large: single-sampled, wireframe off" : "small: unchanged, 4x MSAA + wireframe");
-  line("frame, the app's default now (min)", "%10.2f ms", now.min, note);
-  if (large) {
-    const Timing wire = frame_time(wireframe, renderer.style().large_mesh_triangles);
-    std::snprintf(note, sizeof note, "median %.2f", wire.median);
-    line("frame, large mesh with W (single-sampled) (min)", "%10.2f ms", wire.min, note);
+  std::array<double, kQualitySteps + 1> level_ms{};
+  for (int level = 0; level <= kQualitySteps; ++level) {
+    const ViewOptions options = options_at_level(level);
+    draw_frame(options);  // llvmpipe compiles shader variants on first use
+    const Timing t = time_frames(frames, [&] { draw_frame(options); });
+    level_ms[size_t(level)] = t.median;
+    std::snprintf(note, sizeof note, "min %.2f; %s", t.min, kLevelNames[level]);
+    char label[96];
+    std::snprintf(label, sizeof label, "frame at quality level %d (median)", level);
+    line(label, "%10.2f ms", t.median, note);
   }
+  std::printf("  %-52s ", "  ratios, level above / level");
+  for (int step = 0; step < kQualitySteps; ++step) {
+    std::printf(" %s %.2f", kStepNames[step], level_ms[size_t(step)] / level_ms[size_t(step) + 1]);
+  }
+  std::printf("  (the governor's defaults until measured: %.1f %.1f %.1f)\n", QualityRules().default_ratio[0],
+              QualityRules().default_ratio[1], QualityRules().default_ratio[2]);
+  const ViewOptions settled_options = run_governor(renderer, draw_frame);
+
+  if (frames_only) return;
 
   // Idle and orbit: the counters must not move.
-  renderer.draw(camera, viewport, app_default, {});
+  renderer.draw(camera, viewport, settled_options, {});
   renderer.pick(camera, viewport, viewport.width / 2, viewport.height / 2);
   const RenderStats settled = renderer.stats();
   const Timing idle = time_frames(1000, [&] { renderer.update(mesh); });
@@ -240,7 +303,7 @@ void bench_mesh(uint32_t faces, int frames, Viewport viewport, RenderTarget& tar
     camera.orbit(3, 1);
     renderer.update(mesh);
     target.clear(renderer.style().background);
-    renderer.draw(camera, viewport, app_default, {});
+    renderer.draw(camera, viewport, settled_options, {});
     glFinish();
   });
   const RenderStats after = renderer.stats();
@@ -402,6 +465,7 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> counts = parse_counts(arg(argc, argv, "--faces", "10000,100000,1000000"));
   const int frames = std::clamp(std::atoi(arg(argc, argv, "--frames", "10")), 1, 1000);
   const int samples = std::clamp(std::atoi(arg(argc, argv, "--samples", "4")), 0, 16);
+  const bool frames_only = flag(argc, argv, "--frames-only");
   const long table_faces_arg = std::atol(arg(argc, argv, "--tables-faces", "1000000"));
   const uint32_t table_faces = uint32_t(std::clamp(table_faces_arg, 8L, 4000000L));
   Viewport viewport{1280, 800};
@@ -413,11 +477,11 @@ int main(int argc, char** argv) {
     RenderTarget target(viewport.width, viewport.height, samples);
     std::printf("%s; %dx%d, %dx multisampling, %d frames per figure\n", context.description().c_str(),
                 viewport.width, viewport.height, target.samples(), frames);
-    for (uint32_t faces : counts) bench_mesh(faces, frames, viewport, target, shaders);
+    for (uint32_t faces : counts) bench_mesh(faces, frames, viewport, target, shaders, frames_only);
   } catch (const RenderError& e) {
     // No OpenGL here (the render tests skip too): the table figures need none.
     std::fprintf(stderr, "render_bench: %s; the frame figures are skipped\n", e.what());
   }
-  if (!flag(argc, argv, "--no-tables")) bench_tables(table_faces, frames);
+  if (!flag(argc, argv, "--no-tables") && !frames_only) bench_tables(table_faces, frames);
   return 0;
 }

@@ -1,0 +1,82 @@
+// ViewQuality: frames, documents and the wireframe's owner for the quality governor (see view_quality.h).
+#include "app/view_quality.h"
+
+#include <cstdio>
+#include <vector>
+
+namespace meshedit {
+
+void ViewQuality::frame_started(float last_frame_ms) {
+  if (drew_) governor_.measured(double(last_frame_ms));
+  drew_ = false;
+}
+
+void ViewQuality::follow_mesh(uint64_t generation, size_t triangles, const RenderStyle& style, ViewOptions& options) {
+  const bool other_document = !following_ || generation != generation_;
+  const bool resized = triangles != triangles_ && (triangles >= 2 * triangles_ || 2 * triangles <= triangles_);
+  if (!other_document && !resized) return;
+  following_ = true;
+  generation_ = generation;
+  triangles_ = triangles;
+  if (other_document) users_wireframe_ = false;
+  governor_.reset(is_large_mesh(triangles, style) ? kQualitySteps : 0);
+  QualitySteps steps = governor_.steps();
+  steps.wireframe = !users_wireframe_;
+  governor_.set_steps(steps);
+  write_wireframe(options);
+  update_note();
+}
+
+namespace {
+
+// What the user shows besides the wireframe (whose changes are told apart by ViewQuality itself).
+bool same_parts_shown(const ViewOptions& a, const ViewOptions& b) {
+  return a.smooth_shading == b.smooth_shading && a.show_vertices == b.show_vertices &&
+         a.show_halfedges == b.show_halfedges && a.show_boundary == b.show_boundary;
+}
+
+}  // namespace
+
+ViewOptions ViewQuality::options_to_draw(ViewOptions& options, const RenderStats& stats) {
+  drew_ = true;
+  const bool user_wireframe_change = options.wireframe != wireframe_written_;
+  if (user_wireframe_change) users_wireframe_ = true;
+  if (user_wireframe_change || !same_parts_shown(options, last_options_)) governor_.view_changed();
+  last_options_ = options;
+  governor_.set_steps({stats.framebuffer_samples > 1, !users_wireframe_, is_closed(stats)});
+  write_wireframe(options);
+  ViewOptions drawn = options;
+  drawn.multisampling = !governor_.drops(QualityStep::Multisampling);
+  drawn.back_sides = !governor_.drops(QualityStep::BackSides);
+  update_note();
+  return drawn;
+}
+
+void ViewQuality::write_wireframe(ViewOptions& options) {
+  if (!users_wireframe_) options.wireframe = !governor_.drops(QualityStep::Wireframe);
+  wireframe_written_ = options.wireframe;
+}
+
+void ViewQuality::update_note() {
+  std::vector<const char*> dropped;
+  if (governor_.drops(QualityStep::Multisampling)) dropped.push_back("multisampling");
+  if (governor_.drops(QualityStep::BackSides)) dropped.push_back("back sides");
+  if (governor_.drops(QualityStep::Wireframe)) dropped.push_back("wireframe");  // last: "(W shows it)" follows
+  note_.clear();
+  if (dropped.empty()) return;
+  char why[48];
+  if (governor_.slow_ms() > 0.0) {
+    std::snprintf(why, sizeof why, "frame %.0f ms: ", governor_.slow_ms());
+  } else {
+    std::snprintf(why, sizeof why, "large mesh: ");
+  }
+  note_ = why;
+  for (size_t i = 0; i < dropped.size(); ++i) {
+    if (i > 0) note_ += i + 1 == dropped.size() ? " and " : ", ";
+    note_ += dropped[i];
+  }
+  note_ += " off";
+  if (governor_.drops(QualityStep::Wireframe)) note_ += " (W shows it)";
+}
+
+}  // namespace meshedit
