@@ -1,6 +1,6 @@
 // EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
-// selection, the lesson panel with hot reload, and the lesson's highlights over the mesh (its labels are placed with
-// the id labels: id_labels.cpp).
+// selection, the lesson panel with hot reload, and the lesson's highlights and arrows over the mesh (its labels are
+// placed with the id labels: id_labels.cpp).
 //
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
@@ -15,6 +15,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "core/palette.h"
+#include "render/arrow_overlay.h"
 #include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
 
@@ -138,7 +139,7 @@ void EditorApp::show_lesson_list() {
 
 void EditorApp::draw_lesson_marks() {
   const LessonMarks& marks = lesson_host_->marks();
-  if (marks.highlights.empty()) return;
+  if (marks.highlights.empty() && marks.arrows.empty()) return;
   const HalfedgeMesh& mesh = doc_.mesh;
   Overlay overlay;
   overlay.on_top = true;
@@ -167,6 +168,10 @@ void EditorApp::draw_lesson_marks() {
         }
         break;
     }
+  }
+  for (const LessonArrow& arrow : marks.arrows) {
+    const glm::vec4 rgba(swatch_in_theme(arrow.colour, settings_.theme), 1.0f);
+    add_arrow(overlay, arrow.from, arrow.to, camera_.eye(), rgba, 3.0f);
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
 }

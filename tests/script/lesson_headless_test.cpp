@@ -142,7 +142,13 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse, subdivide or loop_phase)");
+             "collapse, subdivide, loop_phase, choose, answer or curve_t)");
+  fails_with("return { [1] = { {key = 'F', feedback = 'no'} } }\n",
+             "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click or answer");
+  fails_with("return { [1] = { {answer = {1}} } }\n",
+             "answers.lua: step 1, answer 1: answer must be a number, a text as typed (\"3/8\") or {x, y[, z]}");
+  fails_with("return { [1] = { {curve_t = 'half'} } }\n",
+             "answers.lua: step 1, answer 1: curve_t must be a number from 0 to 1");
   fails_with("return { [1] = { {loop_phase = 1} } }\n", "answers.lua: step 1, answer 1: write loop_phase = true");
   fails_with("return 3\n", "answers.lua: must return a table of answers per step, like { [2] = { {key = \"F\"} } }");
   fails_with("return { ['A'] = { {key = 'F', click = 'v0'} } }\n",
