@@ -34,6 +34,8 @@ std::string key_name(int key, KeyMods mods) {
   return name;
 }
 
+constexpr float kHiddenArrowAlpha = 0.3f;  // a lesson's arrow where the mesh is in front of it
+
 }  // namespace
 
 void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
@@ -169,11 +171,19 @@ void EditorApp::draw_lesson_marks() {
         break;
     }
   }
-  for (const LessonArrow& arrow : marks.arrows) {
-    const glm::vec4 rgba(swatch_in_theme(arrow.colour, settings_.theme), 1.0f);
-    add_arrow(overlay, arrow.from, arrow.to, camera_.eye(), rgba, 3.0f);
-  }
   overlay_renderer_->draw(camera_, viewport(), overlay);
+  if (marks.arrows.empty()) return;
+  // Arrows (normals, directions) as solid where the mesh does not hide them, and faint where it does: a normal on the
+  // far side of a closed mesh shows as what it is.
+  Overlay hidden, seen;
+  hidden.on_top = true;
+  for (const LessonArrow& arrow : marks.arrows) {
+    const glm::vec3 rgb = swatch_in_theme(arrow.colour, settings_.theme);
+    add_arrow(hidden, arrow.from, arrow.to, camera_.eye(), glm::vec4(rgb, kHiddenArrowAlpha), 2.0f);
+    add_arrow(seen, arrow.from, arrow.to, camera_.eye(), glm::vec4(rgb, 1.0f), 3.0f);
+  }
+  overlay_renderer_->draw(camera_, viewport(), hidden);
+  overlay_renderer_->draw(camera_, viewport(), seen);
 }
 
 }  // namespace meshedit

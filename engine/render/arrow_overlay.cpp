@@ -30,7 +30,8 @@ void add_arrow(Overlay& overlay, const glm::dvec3& from, const glm::dvec3& to, c
   const double head = kArrowHeadFraction * length;
   const glm::dvec3 base = to - d * head;
   overlay.lines.push_back({{from, base}, colour, width, false});
-  overlay.lines.push_back({{to, base + side * (head * 0.5), base - side * (head * 0.5)}, colour, width, true});
+  const glm::dvec3 half = side * (0.5 * kArrowHeadWidth * head);
+  overlay.lines.push_back({{to, base + half, base - half}, colour, width, true});
 }
 
 }  // namespace meshedit

@@ -23,7 +23,7 @@ step("Choose", function()
     },
     hint = "After a flip each face is one old outer halfedge, one more outer halfedge and the new diagonal.",
   }
-  say "Right: the flip hands h1 the other triangle's outer halfedge."
+  say "So the flip hands h1 the other triangle's outer halfedge."
 end)
 
 step("Pick", function()
