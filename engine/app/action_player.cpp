@@ -171,7 +171,9 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
   } else if (a.verb == "lesson-choose" || a.verb == "lesson-answer") {
     const std::string text = rest_of_line(a);
     const LessonEvent event = a.verb == "lesson-choose" ? LessonEvent::choice(text) : LessonEvent::value(text);
-    if (!app.lesson().deliver(event)) fail(a, "the lesson is not asking for it (" + app.lesson().waiting_for().describe() + ")");
+    if (!app.lesson().deliver(event)) {
+      fail(a, "the lesson is not asking for it (it waits for " + app.lesson().waiting_for().describe() + ")");
+    }
   } else if (a.verb == "expect-lesson-feedback" || a.verb == "expect-lesson-hint") {
     const LessonWait& wait = app.lesson().waiting_for();
     const bool hint = a.verb == "expect-lesson-hint";

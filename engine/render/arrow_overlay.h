@@ -1,8 +1,8 @@
 // An arrow as overlay lines (overlay_renderer.h): a shaft from its foot to its tip and a closed triangular head, the
 // head turned to face the eye so it reads as an arrow from any side. Lessons draw normals and directions with it.
 //
-// Invariants: the head is a fifth of the arrow's length and 0.6 times as wide as it is long, in the plane that holds the
-// arrow and faces the eye as well as it can; looking straight along the arrow, the head lies across any direction
+// Invariants: the head is a fifth of the arrow's length and 0.6 times as wide as it is long, in the plane that holds
+// the arrow and faces the eye as well as it can; looking straight along the arrow, the head lies across any direction
 // perpendicular to it. A zero-length or non-finite arrow adds nothing.
 #pragma once
 

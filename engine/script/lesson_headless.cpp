@@ -293,10 +293,11 @@ class HeadlessDriver {
     const std::string expected = "answer " + answer.field + " = \"" + answer.value +
                                  "\" should be judged wrong with feedback containing '" + *answer.feedback + "'";
     const LessonJudgement& judgement = runner_.last_judgement();
+    const bool named = judgement.feedback.find(*answer.feedback) != std::string::npos;
     std::string got;
     if (!judged) got = "no question judged it";
     else if (judgement.right) got = "it was judged right";
-    else if (judgement.feedback.find(*answer.feedback) == std::string::npos) got = "its feedback was '" + judgement.feedback + "'";
+    else if (!named) got = "its feedback was '" + judgement.feedback + "'";
     else return "";
     const std::string where = wait.where.empty() ? "" : wait.where + ": ";
     return where + step_name_ + ": " + expected + ", but " + got;

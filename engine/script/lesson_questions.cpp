@@ -94,7 +94,9 @@ std::string optional_string(lua_State* L, int index, const char* call, const cha
   lua_getfield(L, index, name);
   std::string text;
   if (!lua_isnil(L, -1)) {
-    if (lua_type(L, -1) != LUA_TSTRING) raise(L, std::string(call) + ": " + name + " must be a string, got " + type_name(L, -1));
+    if (lua_type(L, -1) != LUA_TSTRING) {
+      raise(L, std::string(call) + ": " + name + " must be a string, got " + type_name(L, -1));
+    }
     text = lua_tostring(L, -1);
   }
   lua_pop(L, 1);
@@ -121,7 +123,9 @@ std::string joined(const std::vector<std::string>& words) {
 void read_choice(lua_State* L, int index, LessonWait& wait) {
   check_fields(L, index, "choose", {"options", "answer", "feedback", "hint"}, true);
   lua_getfield(L, index, "options");
-  if (!lua_istable(L, -1)) raise(L, "choose: options must be a list of texts like {\"h1\", \"h2\"}, got " + type_name(L, -1));
+  if (!lua_istable(L, -1)) {
+    raise(L, "choose: options must be a list of texts like {\"h1\", \"h2\"}, got " + type_name(L, -1));
+  }
   const lua_Integer n = luaL_len(L, -1);
   for (lua_Integer i = 1; i <= n; ++i) {
     lua_geti(L, -1, i);
@@ -190,7 +194,8 @@ void read_pick(lua_State* L, int index) {
         raise(L, "pick: feedback keys are element ids like \"h1\", got " + key);
       }
       if (lua_type(L, -1) != LUA_TSTRING) {
-        raise(L, "pick: the feedback for " + std::string(lua_tostring(L, -2)) + " must be text, got " + type_name(L, -1));
+        raise(L, "pick: the feedback for " + std::string(lua_tostring(L, -2)) + " must be text, got " +
+                     type_name(L, -1));
       }
       lua_pop(L, 1);
     }

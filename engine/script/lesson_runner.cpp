@@ -383,7 +383,9 @@ void LessonRunner::refresh_live() noexcept {
   if (!script_ || busy_ || (state_ != StepState::Waiting && state_ != StepState::Finished)) return;
   bool follows = false;  // anything that follows the view: most steps have nothing, and pay nothing
   for (const LessonLive& live : script_->lives) follows = follows || live.error.empty();
-  for (const LessonPlot& plot : script_->plots) follows = follows || (plot.error.empty() && plot.marker_ref != LUA_NOREF);
+  for (const LessonPlot& plot : script_->plots) {
+    follows = follows || (plot.error.empty() && plot.marker_ref != LUA_NOREF);
+  }
   if (!follows) return;
   // Each block in a budget window of its own, under the live limits: one slow block stops alone.
   struct LiveLimits {

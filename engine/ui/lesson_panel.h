@@ -6,7 +6,8 @@
 // Invariants:
 // - The panel only reads the runner and calls its public actions (next, back, go_to, reload or state.reload, deliver
 //   of a button, an option or the text typed); it never touches Lua: live text and plot markers are evaluated by the
-//   runner's update(), and a frame of the panel runs no lesson code. A runner in an error state still draws and still takes Back/Next/Reload.
+//   runner's update(), and a frame of the panel runs no lesson code. A runner in an error state still draws and still
+//   takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
 //   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
 //   that runs out of memory (LessonRunner::out_of_memory, not an error that merely says so) is tried again at the next

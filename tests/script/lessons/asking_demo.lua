@@ -82,9 +82,13 @@ step("Weights", function()
   end)
   local curves = {}
   for i = 0, 3 do
-    curves[#curves + 1] = { label = "B" .. i, fn = bernstein(i), colour = ({ "blue", "orange", "green", "purple" })[i + 1] }
+    local colour = ({ "blue", "orange", "green", "purple" })[i + 1]
+    curves[#curves + 1] = { label = "B" .. i, fn = bernstein(i), colour = colour }
   end
-  plot { title = "Bernstein weights", x = { 0, 1 }, y = { 0, 1 }, curves = curves, marker = function() return curve_t() end }
+  plot {
+    title = "Bernstein weights", x = { 0, 1 }, y = { 0, 1 }, curves = curves,
+    marker = function() return curve_t() end,
+  }
   local weight = answer {
     "What is B1(0.5), the weight of the second control point at t = 0.5?",
     number = 0.375,
