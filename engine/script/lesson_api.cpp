@@ -1,6 +1,8 @@
 // The lesson globals (see lesson_api.h): argument checking, the calls into the host, and the small Lua
 // prelude that builds wait_for and animate out of yields, so a condition or an animation frame runs inside
-// the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget).
+// the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget). The
+// questions (lesson_questions.cpp) and what follows the view (lesson_displays.cpp) are defined from here too; what
+// all of them share is lesson_api_support.h.
 #include "script/lesson_api.h"
 
 #include <cmath>
@@ -16,9 +18,6 @@
 
 #include <lua.hpp>
 
-#include "core/palette.h"
-#include "script/binding_support.h"
-#include "script/exception_text.h"
 #include "script/lesson_api_support.h"
 #include "script/lesson_displays.h"
 #include "script/lesson_questions.h"
