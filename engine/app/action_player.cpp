@@ -168,6 +168,32 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     app.lesson().back();
   } else if (a.verb == "lesson-button") {
     if (!app.lesson().deliver(LessonEvent::button(rest_of_line(a)))) fail(a, "the lesson is not waiting for it");
+  } else if (a.verb == "lesson-choose" || a.verb == "lesson-answer") {
+    const std::string text = rest_of_line(a);
+    const LessonEvent event = a.verb == "lesson-choose" ? LessonEvent::choice(text) : LessonEvent::value(text);
+    if (!app.lesson().deliver(event)) {
+      fail(a, "the lesson is not asking for it (it waits for " + app.lesson().waiting_for().describe() + ")");
+    }
+  } else if (a.verb == "expect-lesson-feedback" || a.verb == "expect-lesson-hint") {
+    const LessonWait& wait = app.lesson().waiting_for();
+    const bool hint = a.verb == "expect-lesson-hint";
+    const std::string got = hint ? (wait.hint_shown() ? wait.hint : std::string()) : wait.feedback;
+    if (!wait.is_question()) fail(a, "the lesson asks no question (it waits for " + wait.describe() + ")");
+    else if (got.empty() || got.find(rest_of_line(a)) == std::string::npos) {
+      fail(a, std::string(hint ? "the hint shown is '" : "the feedback is '") + got + "'");
+    }
+  } else if (a.verb == "expect-lesson-live") {
+    std::string texts;
+    bool found = false;
+    for (const LessonLive& live : app.lesson().lives()) {
+      const std::string& shown = live.error.empty() ? live.text : live.error;
+      found = found || shown.find(rest_of_line(a)) != std::string::npos;
+      texts += (texts.empty() ? "'" : ", '") + shown + "'";
+    }
+    if (!found) fail(a, "the live texts are " + (texts.empty() ? std::string("none") : texts));
+  } else if (a.verb == "curve-t") {
+    if (app.mode() != ViewMode::Curve) throw std::runtime_error("the curve view is not on screen");
+    set_t(app.curve_editor(), std::stod(args[0]));
   } else if (a.verb == "expect-lesson-step") {
     const LessonRunner& lesson = app.lesson();
     static const char* const states[] = {"empty", "waiting", "finished", "failed"};

@@ -162,6 +162,9 @@ class EditorApp {
   void run_console(const std::string& code);
   const ScriptConsole& console() const { return console_; }
   ExerciseSession& exercises() { return exercises_; }
+  // The curve view's state (what a lesson reads with curve_t() and curve_points(); the `curve-t` action sets its t).
+  CurveEditorState& curve_editor() { return curve_; }
+  const CurveEditorState& curve_editor() const { return curve_; }
   // The "mine" switches of the curve and patch views (M), with their results.
   BezierMine& bezier_mine() { return bezier_mine_; }
 

@@ -1,6 +1,6 @@
 // EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
-// selection, the lesson panel with hot reload, and the lesson's highlights over the mesh (its labels are placed with
-// the id labels: id_labels.cpp).
+// selection, the lesson panel with hot reload, and the lesson's highlights and arrows over the mesh (its labels are
+// placed with the id labels: id_labels.cpp).
 //
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
@@ -15,6 +15,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "core/palette.h"
+#include "render/arrow_overlay.h"
 #include "render/mesh_geometry.h"
 #include "ui/exception_report.h"
 
@@ -32,6 +33,8 @@ std::string key_name(int key, KeyMods mods) {
   if (mods.ctrl) name = "ctrl+" + name;
   return name;
 }
+
+constexpr float kHiddenArrowAlpha = 0.3f;  // a lesson's arrow where the mesh is in front of it
 
 }  // namespace
 
@@ -138,7 +141,7 @@ void EditorApp::show_lesson_list() {
 
 void EditorApp::draw_lesson_marks() {
   const LessonMarks& marks = lesson_host_->marks();
-  if (marks.highlights.empty()) return;
+  if (marks.highlights.empty() && marks.arrows.empty()) return;
   const HalfedgeMesh& mesh = doc_.mesh;
   Overlay overlay;
   overlay.on_top = true;
@@ -169,6 +172,18 @@ void EditorApp::draw_lesson_marks() {
     }
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
+  if (marks.arrows.empty()) return;
+  // Arrows (normals, directions) as solid where the mesh does not hide them, and faint where it does: a normal on the
+  // far side of a closed mesh shows as what it is.
+  Overlay hidden, seen;
+  hidden.on_top = true;
+  for (const LessonArrow& arrow : marks.arrows) {
+    const glm::vec3 rgb = swatch_in_theme(arrow.colour, settings_.theme);
+    add_arrow(hidden, arrow.from, arrow.to, camera_.eye(), glm::vec4(rgb, kHiddenArrowAlpha), 2.0f);
+    add_arrow(seen, arrow.from, arrow.to, camera_.eye(), glm::vec4(rgb, 1.0f), 3.0f);
+  }
+  overlay_renderer_->draw(camera_, viewport(), hidden);
+  overlay_renderer_->draw(camera_, viewport(), seen);
 }
 
 }  // namespace meshedit

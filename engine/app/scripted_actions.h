@@ -10,6 +10,12 @@
 //   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)
 //   lesson-next   lesson-back   lesson-button LABEL...
 //   expect-lesson-step 3 waiting|finished|failed   expect-lesson-said TEXT...  (the step said TEXT)
+//   lesson-choose OPTION...   (presses that option of the choose{} the step asks, as its button in the panel does)
+//   lesson-answer TEXT...     (types TEXT into the answer{} box and presses Check; a pick{} is answered by click-on)
+//   expect-lesson-feedback TEXT...   (the feedback on the last wrong answer to the question asked contains TEXT)
+//   expect-lesson-hint TEXT...       (the question's hint is shown, and contains TEXT)
+//   expect-lesson-live TEXT...       (a live() text of the step contains TEXT, as the last frame evaluated it)
+//   curve-t T             (the curve view's t, as its slider sets it)
 //   exercise flip FOLDER   run-mine   run-reference   replay-start   replay-step K   replay-finish
 //   exercise curve|patch FOLDER   (where the curve and patch views' "mine", key M, reads curve.lua, patch.lua)
 //   expect-mine TEXT...   (the "mine" line of the curve or patch view on screen contains TEXT; computed when a

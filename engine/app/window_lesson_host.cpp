@@ -21,6 +21,10 @@ void WindowLessonHost::highlight(ElementRef element, glm::vec3 colour) {
 
 void WindowLessonHost::label(ElementRef element, const std::string& text) { marks_.labels.emplace_back(element, text); }
 
+void WindowLessonHost::arrow(const glm::dvec3& from, const glm::dvec3& to, glm::vec3 colour) {
+  marks_.arrows.push_back({from, to, colour});
+}
+
 void WindowLessonHost::clear_annotations() {
   marks_ = {};
   shown_this_step_ = false;
@@ -46,5 +50,11 @@ std::shared_ptr<HalfedgeMesh> WindowLessonHost::current_mesh() const {
 }
 
 ElementRef WindowLessonHost::current_selection() const { return app_.selection().selected; }
+
+std::optional<CurveReading> WindowLessonHost::curve_reading() const {
+  if (app_.mode() != ViewMode::Curve) return std::nullopt;
+  const CurveEditorState& curve = app_.curve_editor();
+  return CurveReading{curve.t, curve.curve.control_points};
+}
 
 }  // namespace meshedit

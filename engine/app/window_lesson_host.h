@@ -5,8 +5,9 @@
 // - show_mesh copies the lesson's mesh into the document (the document owns what the window edits; the
 //   lesson keeps its own object). The first show of a step fits the camera; later shows in the same step keep
 //   the student's view.
-// - Highlights and labels live in LessonMarks until clear_annotations() (each step start); ids that are not
-//   in the shown mesh are kept but draw nothing.
+// - Highlights, labels and arrows live in LessonMarks until clear_annotations() (each step start); ids that are not
+//   in the shown mesh are kept but draw nothing. Arrows are drawn over the mesh view only.
+// - curve_reading() reads the curve view the student sees (its t and control points) while it is on screen.
 #pragma once
 
 #include <string>
@@ -21,9 +22,15 @@ namespace meshedit {
 
 class EditorApp;
 
+struct LessonArrow {
+  glm::dvec3 from, to;
+  glm::vec3 colour;
+};
+
 struct LessonMarks {
   std::vector<std::pair<ElementRef, glm::vec3>> highlights;
   std::vector<std::pair<ElementRef, std::string>> labels;
+  std::vector<LessonArrow> arrows;
 };
 
 class WindowLessonHost : public LessonHost {
@@ -35,11 +42,13 @@ class WindowLessonHost : public LessonHost {
   void show_patches(const std::vector<BezierPatch>& patches) override;
   void highlight(ElementRef element, glm::vec3 colour) override;
   void label(ElementRef element, const std::string& text) override;
+  void arrow(const glm::dvec3& from, const glm::dvec3& to, glm::vec3 colour) override;
   void clear_annotations() override;
   void camera(const CameraRequest& request) override;
   void view(const ViewRequest& request) override;
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override;
+  std::optional<CurveReading> curve_reading() const override;
 
   const LessonMarks& marks() const { return marks_; }
 

@@ -20,6 +20,10 @@ std::string mesh_summary(const HalfedgeMesh& mesh) {
          std::to_string(mesh.num_faces()) + " faces)";
 }
 
+std::string point_text(const glm::dvec3& p) {
+  return "(" + number(p.x) + ", " + number(p.y) + ", " + number(p.z) + ")";
+}
+
 }  // namespace
 
 std::string colour_hex(glm::vec3 colour) {
@@ -50,6 +54,7 @@ void HeadlessHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh) {
 void HeadlessHost::show_curve(const BezierCurve& curve) {
   calls_.push_back("show_curve " + std::to_string(curve.control_points.size()) + " points");
   curve_ = curve;
+  curve_t_ = 0.5;
   patches_.clear();
   shown_mesh_.reset();
   screen_mesh_.reset();
@@ -75,10 +80,25 @@ void HeadlessHost::label(ElementRef element, const std::string& text) {
   labels_[element] = text;
 }
 
+void HeadlessHost::arrow(const glm::dvec3& from, const glm::dvec3& to, glm::vec3 colour) {
+  calls_.push_back("arrow " + point_text(from) + " -> " + point_text(to) + " " + colour_hex(colour));
+  arrows_.push_back({from, to, colour});
+}
+
 void HeadlessHost::clear_annotations() {
   calls_.push_back("clear_annotations");
   highlights_.clear();
   labels_.clear();
+  arrows_.clear();
+}
+
+std::optional<CurveReading> HeadlessHost::curve_reading() const {
+  if (!curve_) return std::nullopt;
+  return CurveReading{curve_t_, curve_->control_points};
+}
+
+void HeadlessHost::set_curve_t(double t) {
+  if (!std::isnan(t)) curve_t_ = std::clamp(t, 0.0, 1.0);
 }
 
 void HeadlessHost::camera(const CameraRequest& request) {
@@ -88,10 +108,7 @@ void HeadlessHost::camera(const CameraRequest& request) {
   if (request.yaw_degrees) line += " yaw=" + number(*request.yaw_degrees);
   if (request.pitch_degrees) line += " pitch=" + number(*request.pitch_degrees);
   if (request.distance) line += " distance=" + number(*request.distance);
-  if (request.target) {
-    line += " target=(" + number(request.target->x) + ", " + number(request.target->y) + ", " +
-            number(request.target->z) + ")";
-  }
+  if (request.target) line += " target=" + point_text(*request.target);
   calls_.push_back(line);
   cameras_.push_back(request);
 }

@@ -13,6 +13,8 @@
 //   patches removes the screen mesh.
 // - current_mesh() always returns a fresh copy, so the runner and a lesson can never change this host's
 //   state through it.
+// - The curve view's t starts at 0.5 with each shown curve, as the window's does; set_curve_t clamps it to [0, 1] and
+//   ignores NaN, as the window's slider. curve_reading() is nullopt while no curve is shown.
 #pragma once
 
 #include <map>
@@ -32,15 +34,18 @@ class HeadlessHost : public LessonHost {
   void show_patches(const std::vector<BezierPatch>& patches) override;
   void highlight(ElementRef element, glm::vec3 colour) override;
   void label(ElementRef element, const std::string& text) override;
+  void arrow(const glm::dvec3& from, const glm::dvec3& to, glm::vec3 colour) override;
   void clear_annotations() override;
   void camera(const CameraRequest& request) override;
   void view(const ViewRequest& request) override;  // recorded as "view halfedges=on wireframe=off
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override { return selection_; }
+  std::optional<CurveReading> curve_reading() const override;
 
   // ---- what a test (or the headless command) does in the student's place ----
   void set_current_mesh(std::shared_ptr<HalfedgeMesh> mesh) { screen_mesh_ = std::move(mesh); }
   void set_selection(ElementRef element) { selection_ = element; }
+  void set_curve_t(double t);
 
   // ---- what was asked ----
   const std::vector<std::string>& calls() const { return calls_; }
@@ -53,6 +58,11 @@ class HeadlessHost : public LessonHost {
   const std::vector<BezierPatch>& shown_patches() const { return patches_; }
   const std::map<ElementRef, glm::vec3>& highlights() const { return highlights_; }
   const std::map<ElementRef, std::string>& labels() const { return labels_; }
+  struct Arrow {
+    glm::dvec3 from, to;
+    glm::vec3 colour;
+  };
+  const std::vector<Arrow>& arrows() const { return arrows_; }
   const std::vector<CameraRequest>& camera_requests() const { return cameras_; }
 
  private:
@@ -63,6 +73,8 @@ class HeadlessHost : public LessonHost {
   std::vector<BezierPatch> patches_;
   std::map<ElementRef, glm::vec3> highlights_;
   std::map<ElementRef, std::string> labels_;
+  std::vector<Arrow> arrows_;
+  double curve_t_ = 0.5;
   std::vector<CameraRequest> cameras_;
   ElementRef selection_;
 };

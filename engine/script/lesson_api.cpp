@@ -1,6 +1,8 @@
 // The lesson globals (see lesson_api.h): argument checking, the calls into the host, and the small Lua
 // prelude that builds wait_for and animate out of yields, so a condition or an animation frame runs inside
-// the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget).
+// the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget). The
+// questions (lesson_questions.cpp) and what follows the view (lesson_displays.cpp) are defined from here too; what
+// all of them share is lesson_api_support.h.
 #include "script/lesson_api.h"
 
 #include <cmath>
@@ -16,17 +18,14 @@
 
 #include <lua.hpp>
 
-#include "core/palette.h"
-#include "script/binding_support.h"
-#include "script/exception_text.h"
+#include "script/lesson_api_support.h"
+#include "script/lesson_displays.h"
+#include "script/lesson_questions.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
 
 namespace meshedit {
 namespace {
-
-constexpr const char* kPreludeName = "(lesson api)";
-constexpr const char* kPreludeSource = "@(lesson api)";
 
 constexpr const char* kPrelude = R"lua(local api = __lesson_api
 __lesson_api = nil
@@ -57,102 +56,6 @@ function animate(seconds, fn)
   end
 end
 )lua";
-
-LessonScript& script_of(lua_State* L) { return *static_cast<LessonScript*>(lua_touserdata(L, lua_upvalueindex(1))); }
-
-// Where the lesson called the running API function.
-std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
-
-[[noreturn]] void raise(lua_State* L, const std::string& message) {
-  try {
-    const std::string where = caller_where(L);
-    lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
-  } catch (const std::exception&) {  // memory ran out placing the message: say so instead
-    LuaRuntime::note_out_of_memory(L);
-    lua_pushstring(L, kScriptMemoryRanOut);
-  }
-  lua_error(L);
-  __builtin_unreachable();  // lua_error never returns (it throws in this C++ build of Lua)
-}
-
-// Runs an API function with C++ exceptions (from the host, or bad_alloc: "memory ran out") turned into Lua errors;
-// the message is copied out first so the Lua error starts after the C++ exception is finished.
-template <lua_CFunction F>
-int lesson_guarded(lua_State* L) {
-  std::string message;
-  try {
-    return F(L);
-  } catch (const std::exception& e) {
-    message = lua_error_text(L, e);
-  }
-  raise(L, message);
-}
-
-void require_step(lua_State* L, const char* name) {
-  const LessonScript& script = script_of(L);
-  if (script.phase == LessonScript::Phase::Step) return;
-  raise(L, std::string(name) + " can only be used inside a step: step(\"title\", function() ... end)");
-}
-
-void require_loading(lua_State* L, const char* name) {
-  if (script_of(L).phase == LessonScript::Phase::Loading) return;
-  raise(L, std::string(name) + " can only be used at the top level of a lesson file, not inside a step");
-}
-
-// A wait or an animation frame may only yield the step's own coroutine.
-void require_step_thread(lua_State* L, const char* name) {
-  require_step(L, name);
-  if (L != script_of(L).step_thread) {
-    raise(L, std::string(name) + " works in the step itself, not inside a coroutine of your own");
-  }
-  if (!lua_isyieldable(L)) {
-    raise(L, std::string(name) + " cannot wait here (inside a metamethod or a C function)");
-  }
-}
-
-std::string type_name(lua_State* L, int index) { return luaL_typename(L, index); }
-
-// Checks that the table at `index` has only the listed string keys.
-void check_fields(lua_State* L, int index, const char* call, std::initializer_list<const char*> allowed) {
-  index = lua_absindex(L, index);
-  lua_pushnil(L);
-  while (lua_next(L, index) != 0) {
-    lua_pop(L, 1);
-    bool ok = false;
-    if (lua_type(L, -1) == LUA_TSTRING) {
-      for (const char* name : allowed) ok = ok || std::strcmp(lua_tostring(L, -1), name) == 0;
-    }
-    if (!ok) {
-      std::string list;
-      for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
-      const std::string key = lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'"
-                                                             : "a " + type_name(L, -1) + " key";
-      raise(L, std::string(call) + ": unknown field " + key + " (fields: " + list + ")");
-    }
-  }
-}
-
-std::optional<ElementKind> kind_by_name(const std::string& name) {
-  for (ElementKind kind : kAllKinds) {
-    if (name == kind_name(kind)) return kind;
-  }
-  return std::nullopt;
-}
-
-// An element handle (of any mesh) or an id string ("e7"), else nullopt.
-std::optional<ElementRef> to_element(lua_State* L, int index) {
-  if (lua_type(L, index) == LUA_TSTRING) return parse_element(lua_tostring(L, index));
-  if (const Handle* handle = test_handle(L, index)) return handle->ref();
-  return std::nullopt;
-}
-
-ElementRef check_element(lua_State* L, int index, const char* call) {
-  if (std::optional<ElementRef> element = to_element(L, index)) return *element;
-  if (lua_type(L, index) == LUA_TSTRING) {
-    raise(L, std::string(call) + ": '" + lua_tostring(L, index) + "' is not an element id (like v3, h12, e7, f2, b0)");
-  }
-  raise(L, std::string(call) + ": expected an element (a handle or an id like \"e7\"), got " + type_name(L, index));
-}
 
 // The value of wait_for{click=...} / {selection=...}: "any", a kind name, an id, or a handle.
 void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
@@ -234,27 +137,6 @@ LessonWait parse_wait(lua_State* L, int index) {
 }
 
 // ---- points, curves, patches ------------------------------------------------------------------------
-
-// A point: a table with numeric x, y (z optional) or a list {x, y[, z]}.
-bool read_point(lua_State* L, int index, glm::dvec3& out) {
-  if (!lua_istable(L, index)) return false;
-  index = lua_absindex(L, index);
-  lua_getfield(L, index, "x");
-  const bool named = lua_type(L, -1) == LUA_TNUMBER;
-  lua_pop(L, 1);
-  double c[3] = {0, 0, 0};
-  for (int i = 0; i < 3; ++i) {
-    if (named) lua_getfield(L, index, i == 0 ? "x" : i == 1 ? "y" : "z");
-    else lua_geti(L, index, i + 1);
-    const int type = lua_type(L, -1);
-    if (type == LUA_TNUMBER) c[i] = lua_tonumber(L, -1);
-    lua_pop(L, 1);
-    if (type != LUA_TNUMBER && (i < 2 || type != LUA_TNIL)) return false;
-  }
-  out = {c[0], c[1], c[2]};
-  return true;
-}
-
 // The `points` field of a curve or patch userdata (from the Bézier bindings), or the table itself.
 void push_points_table(lua_State* L, int index) {
   if (lua_type(L, index) == LUA_TUSERDATA) lua_getfield(L, index, "points");
@@ -315,76 +197,6 @@ BezierPatch read_patch(lua_State* L, int index, const std::string& what) {
   return patch;
 }
 
-// ---- colours ----------------------------------------------------------------------------------------
-
-// A lesson's colour names give the palette's swatches (core/palette.h, the dark theme's values; the window shows each
-// in its theme's shade), so a lesson stays colour-blind safe: "red" is vermillion, "green" bluish green, "cyan" sky
-// blue, "magenta", "pink" and "purple" reddish purple, and "white" and "black" the ink (what reads on the theme's
-// background: white-ish on dark, black-ish on light).
-struct NamedColour {
-  const char* name;
-  glm::vec3 rgb;
-};
-const NamedColour kColours[] = {
-    {"red", kDarkSwatches.vermillion},  {"green", kDarkSwatches.bluish_green},
-    {"blue", kDarkSwatches.blue},       {"yellow", kDarkSwatches.yellow},
-    {"orange", kDarkSwatches.orange},   {"magenta", kDarkSwatches.reddish_purple},
-    {"pink", kDarkSwatches.reddish_purple}, {"cyan", kDarkSwatches.sky_blue},
-    {"purple", kDarkSwatches.reddish_purple}, {"white", kDarkSwatches.ink},
-    {"grey", kDarkSwatches.grey},       {"gray", kDarkSwatches.grey},
-    {"black", kDarkSwatches.ink}};
-
-// The colour of highlight(x) with no colour: the palette's lesson highlight (the last-edit colour).
-glm::vec3 default_highlight() { return palette_for(Theme::Dark).lesson_highlight; }
-
-int hex_digit(char c) {
-  if (c >= '0' && c <= '9') return c - '0';
-  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
-  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
-  return -1;
-}
-
-glm::vec3 read_colour(lua_State* L, int index) {
-  if (lua_isnoneornil(L, index)) return default_highlight();
-  if (lua_type(L, index) == LUA_TSTRING) {
-    const std::string text = lua_tostring(L, index);
-    for (const NamedColour& c : kColours) {
-      if (text == c.name) return c.rgb;
-    }
-    if (text.size() == 7 && text[0] == '#') {
-      glm::vec3 rgb{};
-      bool ok = true;
-      for (int i = 0; i < 3; ++i) {
-        const int hi = hex_digit(text[1 + 2 * i]), lo = hex_digit(text[2 + 2 * i]);
-        ok = ok && hi >= 0 && lo >= 0;
-        rgb[i] = static_cast<float>(hi * 16 + lo) / 255.0f;
-      }
-      if (ok) return rgb;
-    }
-    std::string names;
-    for (const NamedColour& c : kColours) names += (names.empty() ? "" : ", ") + std::string(c.name);
-    raise(L, "unknown colour '" + text + "' (use " + names + ", \"#rrggbb\" or {r, g, b} from 0 to 1)");
-  }
-  if (lua_istable(L, index)) {
-    glm::dvec3 p{};
-    lua_getfield(L, index, "r");
-    const bool named = lua_type(L, -1) == LUA_TNUMBER;
-    lua_pop(L, 1);
-    bool ok = true;
-    for (int i = 0; i < 3; ++i) {
-      if (named) lua_getfield(L, index, i == 0 ? "r" : i == 1 ? "g" : "b");
-      else lua_geti(L, index, i + 1);
-      ok = ok && lua_type(L, -1) == LUA_TNUMBER;
-      p[i] = lua_tonumber(L, -1);
-      lua_pop(L, 1);
-      ok = ok && p[i] >= 0.0 && p[i] <= 1.0;
-    }
-    if (ok) return glm::vec3(p);
-    raise(L, "a colour table needs three numbers from 0 to 1: {r, g, b} or {r=, g=, b=}");
-  }
-  raise(L, "expected a colour (a name like \"red\", \"#rrggbb\" or {r, g, b}), got " + type_name(L, index));
-}
-
 // Calls fn(element) for the element at `index`, or for each element of a list there.
 template <class Fn>
 void for_each_element(lua_State* L, int index, const char* call, Fn fn) {
@@ -439,7 +251,9 @@ int api_say(lua_State* L) {
   if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
     raise(L, "say: expected text, got " + type_name(L, 1));
   }
-  script_of(L).said.emplace_back(lua_tostring(L, 1));
+  LessonScript& script = script_of(L);
+  script.said.emplace_back(lua_tostring(L, 1));
+  script.blocks.push_back({LessonBlock::Kind::Text, script.said.size() - 1});
   return 0;
 }
 
@@ -571,7 +385,7 @@ int api_view(lua_State* L) {
 }
 
 int api_current_mesh(lua_State* L) {
-  require_step(L, "current_mesh()");
+  require_reading(L, "current_mesh()");
   std::shared_ptr<HalfedgeMesh> mesh = script_of(L).host->current_mesh();
   if (mesh) push_mesh(L, std::move(mesh));
   else lua_pushnil(L);
@@ -588,7 +402,7 @@ int api_lesson_file(lua_State* L) {
 }
 
 int api_selection(lua_State* L) {
-  require_step(L, "selection()");
+  require_reading(L, "selection()");
   LessonHost& host = *script_of(L).host;
   const ElementRef selected = host.current_selection();
   if (selected.valid()) push_element_value(L, host, selected);
@@ -636,19 +450,13 @@ int api_frame(lua_State* L) {
   return lua_yield(L, 0);  // the runner resumes with the frame's dt
 }
 
-void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f) {
-  lua_pushlightuserdata(L, &script);
-  lua_pushcclosure(L, f, 1);
-  lua_setfield(L, -2, name);
-}
-
 }  // namespace
 
 std::string lesson_where(lua_State* L, int first_level) {
   lua_Debug ar;
   for (int level = first_level; lua_getstack(L, level, &ar); ++level) {
     if (!lua_getinfo(L, "Sl", &ar)) break;
-    if (ar.currentline <= 0 || std::strcmp(ar.source, kPreludeSource) == 0) continue;
+    if (ar.currentline <= 0 || std::strcmp(ar.source, kLessonPreludeSource) == 0) continue;
     return std::string(ar.short_src) + ":" + std::to_string(ar.currentline);
   }
   return "";
@@ -689,7 +497,21 @@ void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
   set_function(L, script, "frame", lesson_guarded<api_frame>);
   lua_setfield(L, -2, "__lesson_api");
   lua_pop(L, 1);
-  runtime.run_string(kPrelude, kPreludeName);
+  runtime.run_string(kPrelude, kLessonPreludeName);
+  open_lesson_questions(runtime, script);
+  open_lesson_displays(runtime, script);
+}
+
+void clear_step_display(lua_State* L, LessonScript& script) {
+  for (const LessonLive& live : script.lives) luaL_unref(L, LUA_REGISTRYINDEX, live.function_ref);
+  for (const LessonPlot& plot : script.plots) luaL_unref(L, LUA_REGISTRYINDEX, plot.marker_ref);
+  script.said.clear();
+  script.blocks.clear();
+  script.lives.clear();
+  script.plots.clear();
+  script.answered.clear();
+  script.last_judgement = {};
+  script.judgements = 0;
 }
 
 }  // namespace meshedit

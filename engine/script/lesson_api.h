@@ -1,5 +1,6 @@
 // The Lua globals a lesson file sees (lesson, step, say, wait_for, show, highlight, label, clear, camera,
-// animate, current_mesh, selection) and the state they fill in. LessonRunner owns one LessonScript per
+// animate, current_mesh, selection; the questions choose, pick and answer: lesson_questions.h; live, plot, arrow,
+// curve_t and curve_points: lesson_displays.h) and the state they fill in. LessonRunner owns one LessonScript per
 // loaded file; this file knows nothing about steps being run, only what each call is allowed to do.
 //
 // Lua API (a lesson file also has the whole `meshedit` module):
@@ -31,8 +32,9 @@
 //
 // Invariants:
 // - `lesson{}` and `step()` are accepted only while the file's top level runs (phase Loading); scene calls
-//   (say, show, highlight, label, clear, camera, current_mesh, selection) and waits only while a step runs
-//   (phase Step). Anything else is a Lua error naming the call.
+//   (say, show, highlight, label, clear, camera, arrow, live, plot) and waits and questions only while a step runs
+//   (phase Step); the calls that only read the view (current_mesh, selection, curve_t, curve_points) also while a
+//   live block or a plot's marker is evaluated (phase Live). Anything else is a Lua error naming the call.
 // - Every error raised here starts with the lesson's `file:line:` (the innermost frame that is not the API's
 //   own Lua prelude), so the panel can point at the line the author wrote.
 // - wait_for and animate yield only from the step's own coroutine (`step_thread`); before yielding they set
@@ -44,6 +46,7 @@
 #include <string>
 #include <vector>
 
+#include "script/lesson_blocks.h"
 #include "script/lesson_events.h"
 #include "script/lesson_host.h"
 
@@ -60,7 +63,7 @@ struct LessonStepDef {
 };
 
 struct LessonScript {
-  enum class Phase { Loading, Idle, Step };
+  enum class Phase { Loading, Idle, Step, Live };
 
   LessonHost* host = nullptr;
   Phase phase = Phase::Loading;
@@ -73,11 +76,24 @@ struct LessonScript {
   std::vector<std::string> said;
   LessonWait wait;
   bool api_yield = false;
+
+  // What the step shows besides its text (lesson_blocks.h), all in `blocks` in the order it was made.
+  std::vector<LessonBlock> blocks;
+  std::vector<LessonLive> lives;
+  std::vector<LessonPlot> plots;
+  std::vector<LessonJudgement> answered;  // the questions answered right, in order
+  // The latest judgement of an answer and how many were made in this step (right or wrong).
+  LessonJudgement last_judgement;
+  size_t judgements = 0;
 };
 
 // Defines the lesson globals in `runtime` (once, before the lesson file runs), all bound to `script`,
 // which must outlive the runtime's use. Throws ScriptError if the API's own prelude fails.
 void open_lesson_api(LuaRuntime& runtime, LessonScript& script);
+
+// Forgets what the running step showed (its text, blocks, judgements) and releases the registry references its live
+// blocks and plot markers hold in `L` (the runtime's main state). The runner calls it when a step starts.
+void clear_step_display(lua_State* L, LessonScript& script);
 
 // "welcome.lua:12" of the innermost frame of thread L at or above `first_level` that the lesson author wrote
 // (C functions and the API's prelude skipped); "" when there is none.

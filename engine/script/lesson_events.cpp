@@ -2,6 +2,7 @@
 // command use for a wait (see lesson_events.h).
 #include "script/lesson_events.h"
 
+#include <algorithm>
 #include <cctype>
 #include <cstdio>
 
@@ -43,6 +44,11 @@ bool LessonWait::matches(const LessonEvent& event) const {
     case Kind::Button: return event.kind == LessonEvent::Kind::Button && event.name == name;
     case Kind::Click: return event.kind == LessonEvent::Kind::Click && element_matches(*this, event.element);
     case Kind::Selection: return event.kind == LessonEvent::Kind::Selection && element_matches(*this, event.element);
+    case Kind::Choice:
+      return event.kind == LessonEvent::Kind::Choice &&
+             std::find(options.begin(), options.end(), event.name) != options.end();
+    case Kind::Pick: return event.kind == LessonEvent::Kind::Click && event.element.valid();
+    case Kind::Answer: return event.kind == LessonEvent::Kind::Value;
     default: return false;
   }
 }
@@ -64,6 +70,13 @@ std::string LessonWait::describe() const {
       std::snprintf(buffer, sizeof buffer, "an animation (%g s)", seconds);
       return buffer;
     }
+    case Kind::Choice: {
+      std::string list;
+      for (const std::string& option : options) list += (list.empty() ? "" : ", ") + option;
+      return "a choice (" + list + ") in '" + question + "'";
+    }
+    case Kind::Pick: return "a click answering '" + question + "'";
+    case Kind::Answer: return (components == 1 ? "a number answering '" : "a point answering '") + question + "'";
   }
   return "";
 }

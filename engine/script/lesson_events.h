@@ -7,44 +7,64 @@
 //   is met only by a Click; a selection wait by a Selection (or by the selection already being right).
 // - A wait on an element kind ("vertex") is met by any element of that kind; on an id ("e7") only by it;
 //   "any" (or no kind and no id) by any element.
+// - The questions (choose, pick, answer: lesson_questions.h) take any answer of their kind: a Choice event naming one
+//   of the options, any Click, any Value text. Whether it is right is the lesson's to say: a wrong one leaves the step
+//   waiting on the same question, with `tries` one more (a Value that cannot be read as a number: not counted) and
+//   `feedback` saying what is wrong.
+// - A question's hint is held back until the student has tried once (hint_shown); a wait_for's hint is the
+//   instruction itself ("Press F") and shows at once.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "core/ids.h"
 
 namespace meshedit {
 
 struct LessonEvent {
-  enum class Kind { Key, Click, Selection, Button };
+  enum class Kind { Key, Click, Selection, Button, Choice, Value };
   Kind kind = Kind::Key;
-  std::string name;     // the key ("F", "shift+L") or the button label ("Continue")
+  std::string name;     // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed
   ElementRef element;   // Click and Selection
 
   static LessonEvent key(std::string name) { return {Kind::Key, std::move(name), {}}; }
   static LessonEvent click(ElementRef element) { return {Kind::Click, {}, element}; }
   static LessonEvent selection(ElementRef element) { return {Kind::Selection, {}, element}; }
   static LessonEvent button(std::string label) { return {Kind::Button, std::move(label), {}}; }
+  static LessonEvent choice(std::string option) { return {Kind::Choice, std::move(option), {}}; }
+  static LessonEvent value(std::string text) { return {Kind::Value, std::move(text), {}}; }
 };
 
 struct LessonWait {
-  enum class Kind { None, Key, Click, Selection, Condition, Button, Animation };
+  enum class Kind { None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer };
   Kind kind = Kind::None;
   std::string name;                         // Key: the key; Button: the label
   std::optional<ElementKind> element_kind;  // Click/Selection on any element of this kind
   ElementRef element;                       // Click/Selection on exactly this element (when valid)
   double seconds = 0.0, elapsed = 0.0;      // Animation: its length and how far it got
   std::string hint;                         // one line for the panel (the lesson's `hint`, or a default)
-  std::string where;                        // "welcome.lua:12": where wait_for / animate was called
+  std::string where;                        // "welcome.lua:12": where wait_for / animate / a question was called
+
+  // The questions (Choice, Pick, Answer).
+  std::string question;              // the text asked
+  std::vector<std::string> options;  // Choice: the options, in the lesson's order
+  size_t components = 1;             // Answer: 1 for a number, 2 or 3 for a point
+  int tries = 0;                     // wrong answers so far
+  std::string feedback;              // what the lesson said about the last wrong answer ("" before any)
 
   bool waiting() const { return kind != Kind::None; }
+  bool is_question() const { return kind == Kind::Choice || kind == Kind::Pick || kind == Kind::Answer; }
+  // Whether the panel shows the hint: a question's only after one try; any other wait's at once.
+  bool hint_shown() const { return !hint.empty() && (!is_question() || tries > 0); }
   // Whether `event` is what this wait is for (never true for Condition, Animation or None).
   bool matches(const LessonEvent& event) const;
   // Whether the selection being `element` meets this wait (Selection waits only).
   bool selection_matches(ElementRef element) const;
   // "key F", "a click on a vertex", "a click on e7", "the selection of an edge", "the selection of e7",
-  // "a condition", "the Continue button", "an animation (2 s)"; "" for None.
+  // "a condition", "the Continue button", "an animation (2 s)", "a choice (h1, h2, h4) in 'Which...?'", "a click
+  // answering 'Click...'", "a number answering 'What...?'", "a point answering 'Where...?'"; "" for None.
   std::string describe() const;
 };
 

@@ -3,6 +3,8 @@
 #include "script/lesson_headless.h"
 
 #include <algorithm>
+#include <cstdio>
+#include <cstdlib>
 #include <cctype>
 #include <deque>
 #include <fstream>
@@ -14,6 +16,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_ops.h"
 #include "script/headless_host.h"
+#include "script/lesson_answers.h"
 #include "script/lesson_text.h"
 
 namespace meshedit {
@@ -21,103 +24,8 @@ namespace {
 
 constexpr size_t kMaxRoundsPerStep = 100000;
 
-struct Answer {
-  enum class Kind { Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase };
-  Kind kind = Kind::Key;
-  std::string field;  // as written: "key", "click", ...
-  std::string value;  // "F", "v3", "vertex", "Continue", "e7" ("" for subdivide)
-};
-using AnswerList = std::deque<Answer>;
-
-struct Answers {
-  std::map<lua_Integer, AnswerList> by_number;
-  std::map<std::string, AnswerList> by_title;
-};
-
-const std::pair<const char*, Answer::Kind> kAnswerFields[] = {
-    {"key", Answer::Kind::Key},   {"click", Answer::Kind::Click}, {"selection", Answer::Kind::Selection},
-    {"button", Answer::Kind::Button}, {"flip", Answer::Kind::Flip},   {"split", Answer::Kind::Split},
-    {"collapse", Answer::Kind::Collapse}, {"subdivide", Answer::Kind::Subdivide},
-    {"loop_phase", Answer::Kind::LoopPhase}};
-
-bool is_edit(Answer::Kind kind) {
-  return kind == Answer::Kind::Flip || kind == Answer::Kind::Split || kind == Answer::Kind::Collapse ||
-         kind == Answer::Kind::Subdivide || kind == Answer::Kind::LoopPhase;
-}
-
-std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + path.string());
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-}
-
-// One answer table {key = "F"} at the top of the stack (read raw: no script code runs while reading).
-Answer read_answer(lua_State* L, const std::string& where) {
-  if (!lua_istable(L, -1)) throw ScriptError(where + ": expected a table like {key = \"F\"}");
-  Answer answer;
-  int fields = 0;
-  lua_pushnil(L);
-  while (lua_next(L, -2) != 0) {
-    const std::string key = lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : "";
-    const auto* found = std::find_if(std::begin(kAnswerFields), std::end(kAnswerFields),
-                                     [&](const auto& field) { return key == field.first; });
-    if (found == std::end(kAnswerFields)) {
-      throw ScriptError(where + ": unknown answer '" + key +
-                        "' (use key, click, selection, button, flip, split, collapse, subdivide or loop_phase)");
-    }
-    answer.kind = found->second;
-    answer.field = key;
-    if (answer.kind == Answer::Kind::Subdivide || answer.kind == Answer::Kind::LoopPhase) {
-      if (lua_type(L, -1) != LUA_TBOOLEAN || !lua_toboolean(L, -1)) {
-        throw ScriptError(where + ": write " + key + " = true");
-      }
-    } else {
-      if (lua_type(L, -1) != LUA_TSTRING) throw ScriptError(where + ": " + key + " must be a string");
-      answer.value = lua_tostring(L, -1);
-    }
-    ++fields;
-    lua_pop(L, 1);
-  }
-  if (fields != 1) throw ScriptError(where + ": give exactly one answer per table");
-  return answer;
-}
-
-Answers read_answers(const std::filesystem::path& path, const LuaLimits& limits) {
-  const std::string name = path.filename().string();
-  LuaRuntime lua(limits);
-  lua.load(read_text(path), name);
-  lua.start_budget();
-  lua.call(0, 1);
-  lua_State* L = lua.state();
-  if (!lua_istable(L, -1)) {
-    throw ScriptError(name + ": must return a table of answers per step, like { [2] = { {key = \"F\"} } }");
-  }
-  Answers answers;
-  lua_pushnil(L);
-  while (lua_next(L, -2) != 0) {
-    AnswerList* list = nullptr;
-    std::string step;
-    if (lua_isinteger(L, -2)) {
-      step = "step " + std::to_string(lua_tointeger(L, -2));
-      list = &answers.by_number[lua_tointeger(L, -2)];
-    } else if (lua_type(L, -2) == LUA_TSTRING) {
-      step = "step '" + std::string(lua_tostring(L, -2)) + "'";
-      list = &answers.by_title[lua_tostring(L, -2)];
-    } else {
-      throw ScriptError(name + ": keys are step numbers or step titles, got a " + luaL_typename(L, -2));
-    }
-    if (!lua_istable(L, -1)) throw ScriptError(name + ": " + step + ": expected a list of answers");
-    const lua_Integer n = static_cast<lua_Integer>(lua_rawlen(L, -1));
-    for (lua_Integer i = 1; i <= n; ++i) {
-      lua_rawgeti(L, -1, i);
-      list->push_back(read_answer(L, name + ": " + step + ", answer " + std::to_string(i)));
-      lua_pop(L, 1);
-    }
-    lua_pop(L, 1);
-  }
-  lua_settop(L, 0);
-  return answers;
-}
+using Answer = ScriptedAnswer;
+using AnswerList = ScriptedAnswerList;
 
 std::optional<ElementKind> kind_by_name(const std::string& name) {
   for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
@@ -170,7 +78,7 @@ class HeadlessDriver {
     runner_.set_print([this](const std::string& line) { out_ << line << '\n'; });
   }
 
-  HeadlessOutcome run(const std::filesystem::path& lesson, Answers answers) {
+  HeadlessOutcome run(const std::filesystem::path& lesson, ScriptedAnswers answers) {
     HeadlessOutcome outcome;
     if (!runner_.load(lesson)) {
       outcome.failure = runner_.error();
@@ -204,13 +112,9 @@ class HeadlessDriver {
  private:
   // Runs the current step to its end; "" or the failure line.
   std::string run_step(AnswerList& queue) {
-    size_t printed = 0;
+    shown_ = StepShown{};
     for (size_t round = 0; round < kMaxRoundsPerStep; ++round) {
-      const std::vector<std::string>& said = runner_.said();
-      for (; printed < said.size(); ++printed) {
-        if (printed > 0) out_ << '\n';
-        print_block(out_, said[printed]);
-      }
+      print_new_blocks();
       switch (runner_.step_state()) {
         case LessonRunner::StepState::Finished:
           if (!queue.empty()) out_ << "  (" << queue.size() << " scripted answer(s) not used)\n";
@@ -225,6 +129,7 @@ class HeadlessDriver {
         runner_.update(std::max(wait.seconds / 10.0, 1.0 / 60.0));
         continue;
       }
+      print_question(wait);
       if (!queue.empty()) {
         const Answer answer = queue.front();
         queue.pop_front();
@@ -246,9 +151,65 @@ class HeadlessDriver {
     return with_step("did not finish after " + std::to_string(kMaxRoundsPerStep) + " frames and answers", step_name_);
   }
 
+  // What the step shows that was not printed yet: say() text as plain text (a blank line between blocks), live text
+  // ("  [live] t = 0.50"), plots ("  [plot Bernstein weights: B0, B1 for x from 0 to 1, marker at 0.5]"). Answered
+  // questions were printed with their answer.
+  void print_new_blocks() {
+    const std::vector<LessonBlock>& blocks = runner_.blocks();
+    for (; shown_.blocks < blocks.size(); ++shown_.blocks) {
+      const LessonBlock& block = blocks[shown_.blocks];
+      if (block.kind == LessonBlock::Kind::Text) {
+        if (shown_.texts++ > 0) out_ << '\n';
+        print_block(out_, runner_.said()[block.index]);
+      } else if (block.kind == LessonBlock::Kind::Live) {
+        print_live(block.index);
+      } else if (block.kind == LessonBlock::Kind::Plot) {
+        print_plot(runner_.plots()[block.index]);
+      }
+    }
+  }
+
+  void print_live(size_t index) {
+    const LessonLive& live = runner_.lives()[index];
+    const std::string line = live.error.empty() ? "  [live] " + markdown_to_plain(live.text) : "  [live] " + live.error;
+    if (shown_.lives.size() <= index) shown_.lives.resize(index + 1);
+    if (shown_.lives[index] == line) return;
+    shown_.lives[index] = line;
+    out_ << line << '\n';
+  }
+
+  // The live text that changed since it was printed (after an answer moved the view).
+  void print_changed_lives() {
+    runner_.refresh_live();
+    for (size_t i = 0; i < shown_.lives.size() && i < runner_.lives().size(); ++i) print_live(i);
+  }
+
+  void print_plot(const LessonPlot& plot) {
+    std::string labels;
+    for (const LessonPlotCurve& curve : plot.curves) labels += (labels.empty() ? "" : ", ") + curve.label;
+    char range[96];
+    std::snprintf(range, sizeof range, " for x from %g to %g", plot.x_range[0], plot.x_range[1]);
+    out_ << "  [plot " << (plot.title.empty() ? "" : plot.title + ": ") << labels << range;
+    if (plot.marker) out_ << ", marker at " << *plot.marker;
+    if (!plot.error.empty()) out_ << "; marker stopped: " << plot.error;
+    out_ << "]\n";
+  }
+
+  // A question the step asks, once: "  ? Which halfedge...? (h1 | h2 | h4)".
+  void print_question(const LessonWait& wait) {
+    if (!wait.is_question() || shown_.asked) return;
+    shown_.asked = true;
+    out_ << "  ? " << wait.question;
+    std::string options;
+    for (const std::string& option : wait.options) options += (options.empty() ? "" : " | ") + option;
+    if (!options.empty()) out_ << " (" << options << ")";
+    out_ << '\n';
+  }
+
   // Gives one scripted answer; "" or the failure line.
   std::string give(const Answer& answer, const LessonWait& wait) {
     bool used = false;
+    const size_t judged_before = runner_.judgements();
     switch (answer.kind) {
       case Answer::Kind::Key:
         out_ << "  > key " << answer.value;
@@ -257,6 +218,14 @@ class HeadlessDriver {
       case Answer::Kind::Button:
         out_ << "  > button " << answer.value;
         used = runner_.deliver(LessonEvent::button(answer.value));
+        break;
+      case Answer::Kind::Choose:
+        out_ << "  > choose " << answer.value;
+        used = runner_.deliver(LessonEvent::choice(answer.value));
+        break;
+      case Answer::Kind::Value:
+        out_ << "  > answer " << answer.value;
+        used = runner_.deliver(LessonEvent::value(answer.value));
         break;
       case Answer::Kind::Click:
       case Answer::Kind::Selection: {
@@ -272,6 +241,13 @@ class HeadlessDriver {
         }
         break;
       }
+      case Answer::Kind::CurveT: {
+        if (!host_.curve_reading()) return with_step("answer curve_t: no curve on screen", step_name_);
+        host_.set_curve_t(std::strtod(answer.value.c_str(), nullptr));
+        out_ << "  > curve t = " << host_.curve_reading()->t;
+        used = true;
+        break;
+      }
       default: {
         std::string failure = edit(answer);
         if (!failure.empty()) return with_step(failure, step_name_);
@@ -279,16 +255,52 @@ class HeadlessDriver {
         break;
       }
     }
-    if (!used && !is_edit(answer.kind)) {
+    if (!used && !answer.is_edit()) {
       out_ << " (not awaited: the step waits for " << wait.describe() << ")";
     }
+    const bool judged = runner_.judgements() > judged_before;
+    if (judged) print_judgement();
     out_ << '\n';
+    if (judged && !runner_.last_judgement().right) {
+      const LessonWait& now = runner_.waiting_for();
+      if (now.is_question() && now.hint_shown() && !shown_.hint) {
+        shown_.hint = true;
+        out_ << "  hint: " << now.hint << '\n';
+      }
+    }
+    if (judged && runner_.last_judgement().right) shown_.asked = shown_.hint = false;  // the next question is new
+    if (answer.feedback) {
+      if (std::string failure = check_feedback(answer, wait, judged); !failure.empty()) return failure;
+    }
     // A condition may have become true (a selection, an edit): look again.
     if (runner_.step_state() == LessonRunner::StepState::Waiting &&
         runner_.waiting_for().kind == LessonWait::Kind::Condition) {
       runner_.update(0.0);
     }
+    print_changed_lives();
     return "";
+  }
+
+  // ": right", ": right: <feedback>", ": wrong: <feedback>" after the answer's line.
+  void print_judgement() {
+    const LessonJudgement& judgement = runner_.last_judgement();
+    out_ << (judgement.right ? ": right" : ": wrong");
+    if (!judgement.feedback.empty()) out_ << ": " << judgement.feedback;
+  }
+
+  // An answer that carries `feedback`: it must have been judged wrong with feedback containing those words.
+  std::string check_feedback(const Answer& answer, const LessonWait& wait, bool judged) {
+    const std::string expected = "answer " + answer.field + " = \"" + answer.value +
+                                 "\" should be judged wrong with feedback containing '" + *answer.feedback + "'";
+    const LessonJudgement& judgement = runner_.last_judgement();
+    const bool named = judgement.feedback.find(*answer.feedback) != std::string::npos;
+    std::string got;
+    if (!judged) got = "no question judged it";
+    else if (judgement.right) got = "it was judged right";
+    else if (!named) got = "its feedback was '" + judgement.feedback + "'";
+    else return "";
+    const std::string where = wait.where.empty() ? "" : wait.where + ": ";
+    return where + step_name_ + ": " + expected + ", but " + got;
   }
 
   // The edits the window's keys make, applied to the mesh on screen.
@@ -356,11 +368,21 @@ class HeadlessDriver {
     std::shared_ptr<HalfedgeMesh> left;
   };
 
+  // What was printed of the current step.
+  struct StepShown {
+    size_t blocks = 0;               // runner_.blocks() printed
+    size_t texts = 0;                // say() blocks printed (a blank line goes between them)
+    std::vector<std::string> lives;  // each live block's line as last printed
+    bool asked = false;              // the question waited on was printed
+    bool hint = false;               // its hint was printed
+  };
+
   std::ostream& out_;
   HeadlessHost host_;
   LessonRunner runner_;
   std::string step_name_;
   LoopPhases loop_;
+  StepShown shown_;
 };
 
 }  // namespace
@@ -368,7 +390,7 @@ class HeadlessDriver {
 HeadlessOutcome run_lesson_headless(const std::filesystem::path& lesson,
                                     const std::optional<std::filesystem::path>& answers, std::ostream& out,
                                     const LuaLimits& limits) {
-  Answers scripted = answers ? read_answers(*answers, limits) : Answers{};
+  ScriptedAnswers scripted = answers ? read_scripted_answers(*answers, limits) : ScriptedAnswers{};
   HeadlessDriver driver(out, limits);
   return driver.run(lesson, std::move(scripted));
 }

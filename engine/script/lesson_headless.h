@@ -2,20 +2,19 @@
 // answered from a scripted answers file or, where possible, automatically; what the steps say printed as
 // plain text. This is how CI checks that every lesson still runs to its end.
 //
-// Answers file: a Lua file returning a table keyed by step number (1-based) or step title, each a list of
-// answers given in order while that step waits:
-//   return {
-//     [2] = { {click = "v0"} },  -- a click on v0 (it also selects v0); "vertex": the first live vertex
-//     ["Flip it"] = { {selection = "e7"}, {flip = "e7"}, {key = "F"} },
-//   }
-// Answers: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"}, and the
-// edits a key would make in the window, applied to the mesh on screen: {flip = "e7"}, {split = "e7"},
-// {collapse = "e7"}, {subdivide = true} (L), {loop_phase = true} (Shift+L: the next of Loop subdivision's four
-// phases, core/loop_subdivision.h). A headless key press only tells the lesson; it edits nothing, so the
+// Answers file: lesson_answers.h (a table keyed by step number or title, each a list of answers given in order while
+// that step waits: keys, clicks, selections, buttons, the edits a key would make in the window, the answers to
+// choose/pick/answer, the curve view's t). A headless key press only tells the lesson; it edits nothing, so the
 // window's Shift+L is {loop_phase = true} followed by {key = "shift+L"}.
+//
+// The transcript: each say() block as plain text, live text as "[live] ..." (again when an answer changed it), a
+// plot as "[plot TITLE: B0, B1 for x from 0 to 1, marker at 0.5]", a question once as "? TEXT (a | b | c)", each
+// answer as "> choose a: wrong: FEEDBACK" or "> answer 0.375: right", and "hint: ..." when a hint appears.
 //
 // Invariants:
 // - An answer the step does not wait for is used up and reported ("not awaited"), as a student's stray key.
+// - An answer with `feedback = "words"` must be judged wrong with feedback containing the words; otherwise the run
+//   fails with "lesson.lua:LINE: step 2 'Q': answer choose = "h6" should be judged wrong ..., but ...".
 // - With no answer left: a button wait is pressed, a selection wait already met by the selection goes on,
 //   anything else fails with "lesson.lua:LINE: step 3 'Flip it': waiting for key F (no scripted answer)".
 // - Animations advance in frames of a tenth of their length (at least 1/60 s); a step that needs more than

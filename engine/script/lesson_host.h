@@ -10,7 +10,7 @@
 //   change it wants seen.
 // - current_mesh() returns a copy (or nullptr when no mesh is on screen): the app's document owns its mesh,
 //   and a script must never hold a pointer into it.
-// - Highlights and labels belong to the current step: the runner calls clear_annotations() when a step
+// - Highlights, labels and arrows belong to the current step: the runner calls clear_annotations() when a step
 //   starts (Next, Back, reload), so each step rebuilds its own marks. What is shown (mesh, curve,
 //   patches) stays until a step shows something else.
 // - Element references are ids of the mesh on screen (format_id prints them: v12 h37 e5 f3 b0); a host
@@ -22,6 +22,7 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
 #include "core/bezier.h"
@@ -43,6 +44,12 @@ struct CameraRequest {
 
 // What `view{...}` asks for: each field present turns that part of the mesh view on or off; absent fields keep
 // what the student chose. The mesh's own size class sets them again when it changes (a subdivision, another mesh).
+// What the curve view shows, for a lesson that reads it (curve_t(), curve_points()).
+struct CurveReading {
+  double t = 0.5;                           // the curve view's t, in [0, 1]
+  std::vector<glm::dvec2> control_points;  // as the student left them (dragged, added, removed)
+};
+
 struct ViewRequest {
   std::optional<bool> halfedges;  // the halfedge arrows inside their faces
   std::optional<bool> wireframe;
@@ -62,7 +69,9 @@ class LessonHost {
   // ---- marks on the shown mesh (colour components in [0, 1]) ----
   virtual void highlight(ElementRef element, glm::vec3 colour) = 0;
   virtual void label(ElementRef element, const std::string& text) = 0;
-  // Removes every highlight and label.
+  // An arrow from `from` to `to` (the shown mesh's coordinates), drawn over the mesh view.
+  virtual void arrow(const glm::dvec3& from, const glm::dvec3& to, glm::vec3 colour) = 0;
+  // Removes every highlight, label and arrow.
   virtual void clear_annotations() = 0;
 
   virtual void camera(const CameraRequest& request) = 0;
@@ -73,6 +82,8 @@ class LessonHost {
   virtual std::shared_ptr<HalfedgeMesh> current_mesh() const = 0;
   // The selected element, or an invalid ElementRef when nothing is selected.
   virtual ElementRef current_selection() const = 0;
+  // The curve view's t and control points, or nullopt when the curve view is not on screen.
+  virtual std::optional<CurveReading> curve_reading() const = 0;
 };
 
 }  // namespace meshedit

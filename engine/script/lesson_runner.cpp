@@ -23,6 +23,7 @@
 
 #include "script/exception_text.h"
 #include "script/lesson_api.h"
+#include "script/lesson_displays.h"
 
 namespace meshedit {
 namespace {
@@ -43,6 +44,11 @@ class BusyScope {
 const std::string kEmptyText;
 const std::vector<std::string> kNoBlocks;
 const LessonWait kNoWait;
+const std::vector<LessonBlock> kNoDisplay;
+const std::vector<LessonLive> kNoLives;
+const std::vector<LessonPlot> kNoPlots;
+const std::vector<LessonJudgement> kNoAnswers;
+const LessonJudgement kNoJudgement;
 
 std::string error_text(lua_State* co, const LuaLimits& limits) {
   std::string message;
@@ -67,7 +73,15 @@ LuaLimits LessonRunner::default_limits() {
   return limits;
 }
 
-LessonRunner::LessonRunner(LessonHost& host, LuaLimits limits) : host_(host), limits_(limits) {}
+LuaLimits LessonRunner::live_limits(const LuaLimits& step) {
+  LuaLimits limits = step;
+  limits.instructions = std::min<uint64_t>(step.instructions, 2'000'000);
+  limits.wall_seconds = std::min(step.wall_seconds, 0.05);
+  return limits;
+}
+
+LessonRunner::LessonRunner(LessonHost& host, LuaLimits limits)
+    : host_(host), limits_(limits), live_limits_(live_limits(limits)) {}
 
 LessonRunner::~LessonRunner() = default;
 
@@ -211,7 +225,7 @@ void LessonRunner::start_step(size_t index) noexcept try {
   index_ = index;
   step_error_.clear();
   step_out_of_memory_ = false;
-  script_->said.clear();
+  clear_step_display(runtime_->state(), *script_);
   script_->wait = {};
   script_->step_thread = nullptr;
   state_ = StepState::Waiting;
@@ -324,7 +338,12 @@ std::string LessonRunner::protected_call(bool& out_of_memory, const std::functio
   return failure;
 }
 
-void LessonRunner::update(double dt) noexcept try {
+void LessonRunner::update(double dt) noexcept {
+  advance_wait(dt);
+  refresh_live();
+}
+
+void LessonRunner::advance_wait(double dt) noexcept try {
   if (!script_ || busy_ || state_ != StepState::Waiting) return;
   const LessonWait& wait = script_->wait;  // read only before resume(), which clears it; a copy could run out
   switch (wait.kind) {
@@ -360,14 +379,48 @@ void LessonRunner::update(double dt) noexcept try {
   fail_with(e);
 }
 
+void LessonRunner::refresh_live() noexcept {
+  if (!script_ || busy_ || (state_ != StepState::Waiting && state_ != StepState::Finished)) return;
+  bool follows = false;  // anything that follows the view: most steps have nothing, and pay nothing
+  for (const LessonLive& live : script_->lives) follows = follows || live.error.empty();
+  for (const LessonPlot& plot : script_->plots) {
+    follows = follows || (plot.error.empty() && plot.marker_ref != LUA_NOREF);
+  }
+  if (!follows) return;
+  // Each block in a budget window of its own, under the live limits: one slow block stops alone.
+  struct LiveLimits {
+    LuaRuntime& runtime;
+    const LuaLimits& step;
+    LiveLimits(LuaRuntime& r, const LuaLimits& live, const LuaLimits& s) : runtime(r), step(s) { r.set_limits(live); }
+    ~LiveLimits() { runtime.set_limits(step); }
+  } scope(*runtime_, live_limits_, limits_);
+  const auto evaluate = [this](std::string& error, const std::function<void(lua_State*)>& body) {
+    bool out_of_memory = false;
+    std::string failure = protected_call(out_of_memory, body);
+    // Memory that ran out is not the block's doing: the next frame tries again.
+    if (!failure.empty() && !out_of_memory && error.empty()) error = std::move(failure);
+  };
+  try {
+    for (LessonLive& live : script_->lives) {
+      if (live.error.empty()) evaluate(live.error, [&](lua_State* L) { evaluate_live(L, *script_, live); });
+    }
+    for (LessonPlot& plot : script_->plots) {
+      if (plot.error.empty() && plot.marker_ref != LUA_NOREF) {
+        evaluate(plot.error, [&](lua_State* L) { evaluate_marker(L, *script_, plot); });
+      }
+    }
+  } catch (const std::exception&) {  // memory ran out making a block's call: the next frame tries again
+  }
+}
+
 bool LessonRunner::deliver(const LessonEvent& event) {
   if (!script_ || busy_ || state_ != StepState::Waiting || !script_->wait.matches(event)) return false;
   try {
     resume([this, &event](lua_State* L) {
-      if (event.kind == LessonEvent::Kind::Key || event.kind == LessonEvent::Kind::Button) {
-        lua_pushstring(L, event.name.c_str());
-      } else {
+      if (event.kind == LessonEvent::Kind::Click || event.kind == LessonEvent::Kind::Selection) {
         push_element_value(L, host_, event.element);
+      } else {  // a key, a button label, an option, the text typed
+        lua_pushstring(L, event.name.c_str());
       }
       return 1;
     });
@@ -392,6 +445,18 @@ std::vector<std::string> LessonRunner::step_titles() const {
 size_t LessonRunner::step_count() const { return script_ ? script_->steps.size() : 0; }
 
 const std::vector<std::string>& LessonRunner::said() const { return script_ ? script_->said : kNoBlocks; }
+
+const std::vector<LessonBlock>& LessonRunner::blocks() const { return script_ ? script_->blocks : kNoDisplay; }
+
+const std::vector<LessonLive>& LessonRunner::lives() const { return script_ ? script_->lives : kNoLives; }
+
+const std::vector<LessonPlot>& LessonRunner::plots() const { return script_ ? script_->plots : kNoPlots; }
+
+const std::vector<LessonJudgement>& LessonRunner::answered() const { return script_ ? script_->answered : kNoAnswers; }
+
+const LessonJudgement& LessonRunner::last_judgement() const { return script_ ? script_->last_judgement : kNoJudgement; }
+
+size_t LessonRunner::judgements() const { return script_ ? script_->judgements : 0; }
 
 const LessonWait& LessonRunner::waiting_for() const { return script_ ? script_->wait : kNoWait; }
 

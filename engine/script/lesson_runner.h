@@ -24,6 +24,12 @@
 //   One call (update, deliver, next...) resumes a step at most once.
 // - Calls made from inside a host callback (re-entrant) are ignored: deliver returns false, the others do
 //   nothing.
+// - Live blocks and plot markers (lesson_displays.h) are evaluated by update() after the wait, and by refresh_live(),
+//   while the step waits or has finished (not after it failed): each in a budget window of its own under
+//   live_limits(), far below a step's, so a slow one stops alone with its error and the frame goes on.
+// - A question (choose, pick, answer: lesson_questions.h) is a wait like the others: deliver() of an answer of its
+//   kind resumes the step and returns true whether the answer was right or wrong; judgements() counts the answers
+//   judged and last_judgement() says how the latest went.
 #pragma once
 
 #include <cstddef>
@@ -35,6 +41,7 @@
 #include <string>
 #include <vector>
 
+#include "script/lesson_blocks.h"
 #include "script/lesson_events.h"
 #include "script/lesson_host.h"
 #include "script/lua_runtime.h"
@@ -54,6 +61,9 @@ class LessonRunner {
 
   // Limits for one resume of a step: far below LuaRuntime's defaults, since the window waits for each one.
   static LuaLimits default_limits();
+  // Limits for one evaluation of a live block or a plot marker, every frame: `step`'s memory, at most 2 million
+  // instructions and 50 ms.
+  static LuaLimits live_limits(const LuaLimits& step);
 
   explicit LessonRunner(LessonHost& host, LuaLimits limits = default_limits());
   ~LessonRunner();
@@ -100,9 +110,11 @@ class LessonRunner {
   void restart_step();  // the current step again, from its start
   void go_to(size_t index);  // that step (clamped), from its start
 
-  // Advances the current wait: an animation by `dt` seconds, a condition checked again, a selection wait
-  // met by the host's current selection.
+  // Advances the current wait (an animation by `dt` seconds, a condition checked again, a selection wait
+  // met by the host's current selection), then refresh_live().
   void update(double dt) noexcept;
+  // Evaluates the step's live blocks and plot markers again (what the panel shows follows the view).
+  void refresh_live() noexcept;
   // Gives an app event to the waiting step. True when it was what the step waited for (the step resumed).
   bool deliver(const LessonEvent& event);
 
@@ -118,6 +130,14 @@ class LessonRunner {
   bool step_finished() const { return state_ == StepState::Finished; }
   // The markdown blocks say() gave in the current step, in order.
   const std::vector<std::string>& said() const;
+  // Everything the step shows, in order (lesson_blocks.h): each block indexes said(), lives(), plots() or answered().
+  const std::vector<LessonBlock>& blocks() const;
+  const std::vector<LessonLive>& lives() const;
+  const std::vector<LessonPlot>& plots() const;
+  const std::vector<LessonJudgement>& answered() const;  // the questions answered right, in order
+  // The latest answer judged in this step (right or wrong), and how many were judged (0: none yet).
+  const LessonJudgement& last_judgement() const;
+  size_t judgements() const;
   // What the current step waits for (kind None when it does not wait).
   const LessonWait& waiting_for() const;
   // "" when all is well; else "file:line: message" of the failed load or the failed step.
@@ -132,6 +152,7 @@ class LessonRunner {
   // step). Throws ScriptError (the file's error) and std::bad_alloc.
   std::string read_and_run(Prepared& lesson);
   void start_step(size_t index) noexcept;
+  void advance_wait(double dt) noexcept;
   // Resumes the step's coroutine with what `push` leaves on the stack (nullptr: nothing).
   void resume(const std::function<int(lua_State*)>& push) noexcept;
   // Runs `body` on the main thread inside a fresh budget window; returns "" or the error message, with
@@ -143,6 +164,7 @@ class LessonRunner {
 
   LessonHost& host_;
   LuaLimits limits_;
+  LuaLimits live_limits_;
   std::function<void(const std::string&)> print_;
   std::filesystem::path path_;
   // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.

@@ -7,6 +7,8 @@
 #include <imgui.h>
 
 #include "script/lesson_text.h"
+#include "ui/lesson_plot_view.h"
+#include "ui/lesson_question_view.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -50,13 +52,40 @@ ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
   return state.reload ? state.reload(runner) : reload_runner(runner);
 }
 
-void draw_step_body(LessonRunner& runner) {
-  for (const std::string& block : runner.said()) {
-    ImGui::TextWrapped("%s", reflow(markdown_to_plain(block)).c_str());
-    ImGui::Spacing();
+// One block of the step (script/lesson_blocks.h): say() text, live text (or its error), a plot, a question answered.
+void draw_block(const LessonRunner& runner, const LessonBlock& block) {
+  switch (block.kind) {
+    case LessonBlock::Kind::Text:
+      ImGui::TextWrapped("%s", reflow(markdown_to_plain(runner.said()[block.index])).c_str());
+      break;
+    case LessonBlock::Kind::Live: {
+      const LessonLive& live = runner.lives()[block.index];
+      if (!live.error.empty()) {
+        ImGui::PushStyleColor(ImGuiCol_Text, error_colour());
+        ImGui::TextWrapped("%s", live.error.c_str());
+        ImGui::PopStyleColor();
+      } else {
+        ImGui::TextWrapped("%s", reflow(markdown_to_plain(live.text)).c_str());
+      }
+      break;
+    }
+    case LessonBlock::Kind::Plot: draw_lesson_plot(runner.plots()[block.index]); break;
+    case LessonBlock::Kind::Answered: draw_lesson_answered(runner.answered()[block.index]); break;
+  }
+  ImGui::Spacing();
+}
+
+void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
+  const std::vector<LessonBlock>& blocks = runner.blocks();
+  for (size_t i = 0; i < blocks.size(); ++i) {
+    ImGui::PushID(int(i));
+    draw_block(runner, blocks[i]);
+    ImGui::PopID();
   }
   const LessonWait& wait = runner.waiting_for();
-  if (wait.kind == LessonWait::Kind::Button) {
+  if (wait.is_question()) {
+    draw_lesson_question(runner, state.answer_box, state.probe);
+  } else if (wait.kind == LessonWait::Kind::Button) {
     if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
   } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
@@ -149,7 +178,7 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   for (const char* label : buttons) row += ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
   const int rows = row <= ImGui::GetContentRegionAvail().x ? 1 : 2;
   ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * float(rows)), false);
-  draw_step_body(runner);
+  draw_step_body(runner, state);
   ImGui::EndChild();
   if (state.probe) state.probe->record_last_item("lesson-text");
   ImGui::BeginDisabled(current == 0);

@@ -1,9 +1,13 @@
-// The lesson panel: a lesson's title, its steps, what the current step said, what it waits for, its error
-// with file:line, and Back / Next / Reload; with no lesson loaded, the list of lessons to start.
+// The lesson panel: a lesson's title, its steps, what the current step shows (its text, live text, plots and the
+// questions answered: script/lesson_blocks.h, in the order the step made them), what it waits for (a question's options
+// or answer box, feedback and hint: ui/lesson_question_view.h), its error with file:line, and Back / Next / Reload;
+// with no lesson loaded, the list of lessons to start.
 //
 // Invariants:
 // - The panel only reads the runner and calls its public actions (next, back, go_to, reload or state.reload, deliver
-//   of a button); it never touches Lua. A runner in an error state still draws and still takes Back/Next/Reload.
+//   of a button, an option or the text typed); it never touches Lua: live text and plot markers are evaluated by the
+//   runner's update(), and a frame of the panel runs no lesson code. A runner in an error state still draws and still
+//   takes Back/Next/Reload.
 // - Hot reload: reload_if_changed() compares the lesson file's modification time at most every
 //   kReloadCheckSeconds, so a file saved in an editor reloads within a second without a stat per frame. A reload
 //   that runs out of memory (LessonRunner::out_of_memory, not an error that merely says so) is tried again at the next
@@ -20,6 +24,7 @@
 
 #include "script/lesson_runner.h"
 #include "ui/element_link.h"
+#include "ui/lesson_question_view.h"
 
 namespace meshedit {
 
@@ -39,6 +44,7 @@ struct LessonPanelState {
   // How Reload and hot reload reload the lesson; empty: reload_runner.
   std::function<ReloadOutcome(LessonRunner&)> reload;
   UiProbe* probe = nullptr;  // where the step's text ("lesson-text") and Back and Next were drawn (layout checks)
+  LessonAnswerBox answer_box;  // the text typed for the answer{} being asked
 };
 
 // The runner's own reload(), told as a ReloadOutcome (LessonRunner::out_of_memory for OutOfMemory).

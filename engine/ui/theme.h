@@ -17,6 +17,8 @@ namespace meshedit {
 void apply_theme(ImGuiStyle& style, Theme theme);
 // The palette the panels, the curve view and the patch view's overlay draw with.
 const Palette& ui_palette();
+// The theme of ui_palette(): what swatch_in_theme takes to show a lesson's colour in the panels.
+Theme ui_theme();
 // The view's clear colour under the theme, RGBA in [0, 1].
 ImVec4 view_background(Theme theme);
 

@@ -1,7 +1,8 @@
 ---@meta lesson
 -- LuaLS type descriptions of the globals a lesson file sees (engine/script/lesson_api.h), for editors only.
 -- A lesson also has the whole `meshedit` module (meshedit.lua). lesson{} and step() only at the top level;
--- the others only while a step runs (lesson_file anywhere).
+-- the others only while a step runs (lesson_file anywhere; selection, current_mesh, curve_t and curve_points also
+-- inside a live() function or a plot's marker).
 
 ---@class LessonInfo
 ---@field title? string defaults to the file's stem
@@ -26,7 +27,7 @@ function say(markdown) end
 ---@field selection? string|Element "e7", "edge", "any" or a handle; returns the selected element
 ---@field condition? fun(): any checked now, then once per frame; returns its first truthy value
 ---@field button? string a button label; returns the label
----@field hint? string one line under the text
+---@field hint? string one line under the text, shown at once: it is the instruction ("Press F")
 
 ---Pauses the step until the wait is met. Elements come back as handles on a copy of the mesh on screen
 ---(e.mesh), or as id strings when no mesh is shown.
@@ -89,3 +90,89 @@ function selection() end
 ---@param relative string
 ---@return string
 function lesson_file(relative) end
+
+-- ---- asking the student: each waits until the right answer and returns it (scripts/api/README.md) ----
+
+---@class ChooseSpec
+---@field [1] string the question
+---@field options string[] at least two, all different; the panel shows one button each
+---@field answer string the right option (one of options)
+---@field feedback? table<string, string> what to say to each wrong option (and, for the right one, beside it)
+---@field hint? string shown only after the first wrong answer
+
+---Asks a multiple-choice question. A wrong option shows its feedback (or "h2 is not the answer.") and the step keeps
+---waiting; the right one returns.
+---@param spec ChooseSpec
+---@return string option the option chosen (the right one)
+function choose(spec) end
+
+---@alias PickAnswer Element|string|fun(element: Element|string): boolean, string?
+---@alias PickFeedback table<string, string>|fun(element: Element|string): string?
+
+---@class PickSpec
+---@field [1] string the question ("Click the halfedge that ...")
+---@field answer PickAnswer the element (a handle or an id like "h4"), or a function: is this one right, and why
+---@field feedback? PickFeedback what to say to a wrong click: a table from ids to text, or a function of it
+---@field hint? string shown only after the first wrong click
+
+---Asks the student to click an element in the view. A wrong click shows its feedback (the feedback's, then the answer
+---function's reason, then "Not h2: look again.") and the step keeps waiting; the right one returns.
+---@param spec PickSpec
+---@return Element|string element a handle on a copy of the mesh on screen (its id when no mesh is shown)
+function pick(spec) end
+
+---@class AnswerSpec
+---@field [1] string the question
+---@field number? number the answer, when it is a number (give number or point)
+---@field point? point the answer, when it is a point: {x, y} or {x, y, z}
+---@field tolerance? number how far off an answer may be (distance for a point); default 1e-3
+---@field feedback? fun(value: number|vec3): string? what to say to a wrong value
+---@field hint? string shown only after the first wrong answer
+
+---Asks for a number or a point, typed into a box ("0.375", "3/8", "2, 1.5"). Text that is not a number is told how to
+---write one and does not count as a try; a wrong value shows its feedback (or "0.4 is not the answer.").
+---@param spec AnswerSpec
+---@return number|vec3 value the value typed (a vec3 with z = 0 for a 2D point)
+function answer(spec) end
+
+-- ---- what follows the view ----
+
+---A text block whose text is fn's value (tostring, then markdown), evaluated now and again every frame, so it follows
+---the view (curve_t(), curve_points(), selection()). fn may only read: say, show, highlight... are errors in it. An
+---error shows its file:line in place of the text and stops that block for the rest of the step.
+---@param fn fun(): any
+function live(fn) end
+
+---@class PlotCurve
+---@field label? string default "curve N"
+---@field fn fun(x: number): number sampled once, when plot runs
+---@field colour? Colour default: the palette's colours in turn
+
+---@class PlotSpec
+---@field title? string
+---@field x? number[] {from, to}; default {0, 1}
+---@field y? number[] {low, high}; default: the samples' range
+---@field samples? integer samples per curve minus one (2 to 2000); default 100
+---@field curves PlotCurve[] one to twelve
+---@field marker? fun(): number? read every frame like live(); its x is drawn as a vertical line (nil: none)
+
+---A plot in the lesson panel: each curve sampled once at samples + 1 equally spaced x, and an optional marker that
+---follows the view (marker = function() return curve_t() end).
+---@param spec PlotSpec
+function plot(spec) end
+
+---An arrow over the mesh view, from one point to another (the shown mesh's coordinates), cleared with the step's
+---other marks. Solid where the mesh does not hide it, faint where it does.
+---@param from point
+---@param to point
+---@param colour? Colour default: the last-edit colour (vermillion)
+function arrow(from, to, colour) end
+
+---The curve view's t (0 to 1), or nil when the curve view is not on screen.
+---@return number?
+function curve_t() end
+
+---The curve view's control points as the student left them (dragged, added, removed), as vec3 with z = 0, or nil
+---when the curve view is not on screen.
+---@return vec3[]?
+function curve_points() end

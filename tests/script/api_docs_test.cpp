@@ -1,8 +1,9 @@
 // Keeps the LuaLS ---@meta files in scripts/api/ true: every function and field they document for the
 // `meshedit` module, meshes, element handles, vec3, curves and patches must exist on real values, and every
-// function of the real module table and every mesh method must be documented. Lesson and grading globals are
-// only checked against the names listed here (copied from lesson_api.h, expectations.cpp and suite.cpp), since
-// they live in a lesson's or a suite's own state.
+// function of the real module table and every mesh method must be documented. The lesson globals documented in
+// lesson.lua must be exactly the functions a lesson's runtime adds to a plain one (read from a running lesson); grading
+// globals are only checked against the names listed here (copied from expectations.cpp and suite.cpp), since they
+// live in a suite's own state.
 #include <fstream>
 #include <map>
 #include <regex>
@@ -13,6 +14,8 @@
 #include <gtest/gtest.h>
 #include <lua.hpp>
 
+#include "script/headless_host.h"
+#include "script/lesson_runner.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
 #include "support/test_support.h"
@@ -152,12 +155,51 @@ TEST_F(ApiDocs, AnUndocumentedNameIsCaught) {
   EXPECT_NE(lookup("meshedit.vec3(1, 2, 3)", "no_such_method"), "ok");
 }
 
+// The names of the global functions `code` sees, sorted, one string: what the lesson below says and a plain runtime
+// returns.
+constexpr const char* kGlobalFunctions =
+    "local t = {} for k, v in pairs(_G) do if type(v) == 'function' then t[#t + 1] = k end end "
+    "table.sort(t) return table.concat(t, ' ')";
+
+std::set<std::string> words(const std::string& text) {
+  std::istringstream in(text);
+  std::set<std::string> out;
+  for (std::string word; in >> word;) out.insert(word);
+  return out;
+}
+
+TEST(ApiDocsFiles, TheLessonMetaFileDocumentsExactlyTheLessonGlobals) {
+  LuaRuntime plain;
+  const std::set<std::string> base = words(plain.run_string(kGlobalFunctions, "plain.lua").at(0));
+  const auto lesson = ::meshedit::testing::scratch_dir() / "globals.lua";
+  std::ofstream(lesson) << "step('Globals', function() say((function() " << kGlobalFunctions << " end)()) end)\n";
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson)) << runner.error();
+  ASSERT_EQ(runner.said().size(), 1u) << runner.error();
+  std::set<std::string> lesson_globals;
+  for (const std::string& name : words(runner.said()[0])) {
+    if (!base.count(name)) lesson_globals.insert(name);
+  }
+  EXPECT_TRUE(lesson_globals.count("choose") && lesson_globals.count("plot"));  // the set is read, not empty
+
+  const std::string text = ::meshedit::testing::read_text(::meshedit::testing::source_dir() / "scripts" / "api" /
+                                                          "lesson.lua");
+  const std::regex global_function(R"((^|\n)function ([A-Za-z_][A-Za-z0-9_]*)\()");
+  std::set<std::string> documented;
+  for (auto it = std::sregex_iterator(text.begin(), text.end(), global_function); it != std::sregex_iterator(); ++it) {
+    documented.insert((*it)[2]);
+  }
+  EXPECT_EQ(documented, lesson_globals);
+}
+
 TEST(ApiDocsFiles, LessonAndGradingMetaFilesNameTheRealGlobals) {
   const auto dir = ::meshedit::testing::source_dir() / "scripts" / "api";
   Documented lesson = parse_meta(dir / "lesson.lua");
   const std::string text = ::meshedit::testing::read_text(dir / "lesson.lua");
   for (const char* name : {"lesson", "step", "say", "wait_for", "animate", "show", "highlight", "label", "clear",
-                           "camera", "current_mesh", "selection", "lesson_file"}) {
+                           "camera", "current_mesh", "selection", "lesson_file", "choose", "pick", "answer", "live",
+                           "plot", "arrow", "curve_t", "curve_points"}) {
     EXPECT_NE(text.find(std::string("\nfunction ") + name + "("), std::string::npos) << name;
   }
   Documented grading = parse_meta(dir / "grading.lua");

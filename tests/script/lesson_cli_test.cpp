@@ -63,6 +63,34 @@ TEST(CliLesson, AWaitWithoutAnswerExitsOneNamingFileLineAndStep) {
                    "1 of 2 steps passed\n");
 }
 
+TEST(CliLesson, TheAskingDemoNamesEachMistakeAndAWrongExpectationExitsOne) {
+  if (!std::filesystem::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
+  const auto lessons = testing::source_dir() / "tests" / "script" / "lessons";
+  const auto dir = testing::scratch_dir();
+  const Outcome o = run_meshedit(dir, "lesson '" + (lessons / "asking_demo.lua").string() + "' --headless --answers '" +
+                                          (lessons / "asking_demo_answers.lua").string() + "'");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_EQ(o.err, "");
+  EXPECT_NE(o.out.find("  > choose h6: wrong: h6 is h0's twin on the boundary: it is in no face, and h1 keeps its "
+                       "face.\n"),
+            std::string::npos)
+      << o.out;
+  EXPECT_NE(o.out.find("  > answer 1/8: wrong: 0.125 is B0(0.5) or B3(0.5): an end point's weight.\n"),
+            std::string::npos)
+      << o.out;
+  EXPECT_EQ(o.out.substr(o.out.size() - 16), "\n4 steps passed\n");
+
+  // An answers file that expects a mistake the lesson does not name fails the run, naming the question's line.
+  std::ofstream(dir / "wrong.lua") << "return { ['Choose'] = { {choose = 'h6', feedback = 'before the flip'} } }\n";
+  const Outcome wrong =
+      run_meshedit(dir, "lesson '" + (lessons / "asking_demo.lua").string() + "' --headless --answers wrong.lua");
+  EXPECT_EQ(wrong.status, 1);
+  EXPECT_EQ(wrong.err,
+            "meshedit: asking_demo.lua:15: step 1 'Choose': answer choose = \"h6\" should be judged wrong with "
+            "feedback containing 'before the flip', but its feedback was 'h6 is h0's twin on the boundary: it is in no face, "
+            "and h1 keeps its face.'\n");
+}
+
 TEST(CliLesson, WithoutHeadlessItPointsToTheWindow) {
   if (!std::filesystem::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const Outcome o = run_meshedit(testing::scratch_dir(), "lesson welcome.lua");

@@ -142,7 +142,13 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse, subdivide or loop_phase)");
+             "collapse, subdivide, loop_phase, choose, answer or curve_t)");
+  fails_with("return { [1] = { {key = 'F', feedback = 'no'} } }\n",
+             "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click or answer");
+  fails_with("return { [1] = { {answer = {1}} } }\n",
+             "answers.lua: step 1, answer 1: answer must be a number, a text as typed (\"3/8\") or {x, y[, z]}");
+  fails_with("return { [1] = { {curve_t = 'half'} } }\n",
+             "answers.lua: step 1, answer 1: curve_t must be a number from 0 to 1");
   fails_with("return { [1] = { {loop_phase = 1} } }\n", "answers.lua: step 1, answer 1: write loop_phase = true");
   fails_with("return 3\n", "answers.lua: must return a table of answers per step, like { [2] = { {key = \"F\"} } }");
   fails_with("return { ['A'] = { {key = 'F', click = 'v0'} } }\n",
@@ -235,6 +241,67 @@ TEST(LessonHeadless, AnEditBetweenLoopPhasesStartsThemAgain) {
       << text;
   EXPECT_TRUE(contains(text, "after 3: 26 72 48")) << text;  // phase 1 of the new run: still the split cube's counts
   EXPECT_TRUE(contains(text, "after 4: 98 288 192")) << text;  // its phase 2 splits the 72 edges of the flipped mesh
+}
+
+}  // namespace
+}  // namespace meshedit
+
+namespace meshedit {
+namespace {
+
+TEST(LessonHeadlessQuestions, TheAskingDemoPassesNamingEachMistakeWithItsFeedback) {
+  const auto lessons = testing::source_dir() / "tests" / "script" / "lessons";
+  std::ostringstream out;
+  const HeadlessOutcome outcome =
+      run_lesson_headless(lessons / "asking_demo.lua", lessons / "asking_demo_answers.lua", out);
+  const std::string text = out.str();
+  EXPECT_EQ(outcome.failure, "");
+  EXPECT_EQ(outcome.passed, 4u);
+  EXPECT_TRUE(contains(text, "  ? Which halfedge is h1.next after the flip? (h2 | h6 | h4)\n"
+                             "  > choose h2: wrong: h2 is h1.next now, before the flip: h2 lies along e2, and the flip "
+                             "moves e2.\n"
+                             "  hint: After a flip each face is one old outer halfedge, one more outer halfedge and "
+                             "the new diagonal.\n"
+                             "  > choose h6: wrong: h6 is h0's twin on the boundary: it is in no face, and h1 keeps "
+                             "its face.\n"
+                             "  > choose h4: right: After the flip h1 goes on to h4, the outer halfedge of the other "
+                             "triangle.\n")) << text;
+  EXPECT_TRUE(contains(text, "  > click f0: wrong: That is a face: click one of the arrows inside the faces.\n"))
+      << text;
+  EXPECT_TRUE(contains(text, "  > click h4: right\n  You clicked h4.\n")) << text;
+  EXPECT_TRUE(contains(text, "  [live] Selected: nothing. Each blue arrow is a face normal.\n")) << text;
+  // The live text follows the curve's t when an answer moves it.
+  EXPECT_TRUE(contains(text, "  [live] t = 0.50, C(t) = (2.000, 1.500)\n"
+                             "  [plot Bernstein weights: B0, B1, B2, B3 for x from 0 to 1, marker at 0.5]\n")) << text;
+  EXPECT_TRUE(contains(text, "  > curve t = 0.25\n  [live] t = 0.25, C(t) = (0.906, 1.125)\n")) << text;
+  EXPECT_TRUE(contains(text, "  > answer three eighths: wrong: Type a number, like 0.25 or 3/8.\n")) << text;
+  EXPECT_TRUE(contains(text, "  > answer 0.375: right\n  Yes: B1(0.5) = 0.375.\n")) << text;
+  EXPECT_TRUE(contains(text, "  > answer 2, 1.25: wrong: 2, 1.25 is not the answer.\n")) << text;
+}
+
+TEST(LessonHeadlessQuestions, AnAnswerThatShouldBeWrongButIsNotFailsTheRun) {
+  const auto dir = testing::scratch_dir();
+  const auto lesson = write_file(dir, "lesson.lua", R"lua(step("Q", function()
+  choose { "Which?", options = { "a", "b", "c" }, answer = "b", feedback = { a = "a is the first" } }
+end)
+)lua");
+  const auto fails_with = [&](const std::string& answers, const std::string& failure) {
+    std::ostringstream out;
+    const HeadlessOutcome outcome = run_lesson_headless(lesson, write_file(dir, "answers.lua", answers), out);
+    EXPECT_EQ(outcome.failure, failure) << out.str();
+    EXPECT_EQ(outcome.passed, 0u);
+  };
+  fails_with("return { { {choose = 'b', feedback = 'first'} } }\n",
+             "lesson.lua:2: step 1 'Q': answer choose = \"b\" should be judged wrong with feedback containing "
+             "'first', but it was judged right");
+  fails_with("return { { {choose = 'c', feedback = 'first'} } }\n",
+             "lesson.lua:2: step 1 'Q': answer choose = \"c\" should be judged wrong with feedback containing "
+             "'first', but its feedback was 'c is not the answer.'");
+  fails_with("return { { {key = 'F'}, {choose = 'a', feedback = 'first'} } }\n",
+             "lesson.lua:2: step 1 'Q': waiting for a choice (a, b, c) in 'Which?' (no scripted answer)");
+  fails_with("return { { {answer = 1, feedback = 'first'} } }\n",
+             "lesson.lua:2: step 1 'Q': answer answer = \"1\" should be judged wrong with feedback containing "
+             "'first', but no question judged it");
 }
 
 }  // namespace

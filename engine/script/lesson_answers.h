@@ -1,0 +1,57 @@
+// The answers file of `meshedit lesson FILE --headless --answers A.lua` (lesson_headless.h runs them): a Lua file
+// returning a table keyed by step number (1-based) or step title, each a list of answers given in order while that
+// step waits.
+//
+//   return {
+//     [2] = { {click = "v0"} },
+//     ["Flip it"] = { {selection = "e7"}, {flip = "e7"}, {key = "F"} },
+//     ["Which next?"] = { {choose = "h1", feedback = "twin"}, {choose = "h4"} },
+//     ["Weights"] = { {curve_t = 0.25}, {answer = 0.375} },
+//   }
+//
+// Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
+// the edits a key makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"}, {subdivide = true},
+// {loop_phase = true}), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
+// {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), and {curve_t = 0.25} (the curve view's t,
+// as its slider sets it).
+//
+// A choose, click or answer may also carry `feedback = "words"`: the answer must then be judged wrong, with feedback
+// containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
+//
+// Invariants: the file runs in a sandboxed runtime of its own under the given limits and is read raw (no metamethod
+// of the file's runs while reading); anything malformed is a ScriptError naming the file, the step and the answer's
+// position ("a.lua: step 2, answer 1: unknown answer 'klick' (use ...)").
+#pragma once
+
+#include <deque>
+#include <filesystem>
+#include <map>
+#include <optional>
+#include <string>
+
+#include <lua.hpp>
+
+#include "script/lua_runtime.h"
+
+namespace meshedit {
+
+struct ScriptedAnswer {
+  enum class Kind { Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Choose, Value, CurveT };
+  Kind kind = Kind::Key;
+  std::string field;  // as written: "key", "click", "answer", ...
+  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1" ("" for subdivide)
+  std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
+
+  bool is_edit() const;  // an edit of the scene (flip ... loop_phase, curve_t): always used, never "not awaited"
+};
+using ScriptedAnswerList = std::deque<ScriptedAnswer>;
+
+struct ScriptedAnswers {
+  std::map<lua_Integer, ScriptedAnswerList> by_number;
+  std::map<std::string, ScriptedAnswerList> by_title;
+};
+
+// Reads the answers file. Throws ScriptError when it cannot be read or is malformed.
+ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits);
+
+}  // namespace meshedit

@@ -1,0 +1,205 @@
+// The shared pieces of the lesson globals (see lesson_api_support.h).
+#include "script/lesson_api_support.h"
+
+#include <cstring>
+#include <exception>
+
+#include "core/palette.h"
+#include "script/binding_support.h"
+#include "script/lua_runtime.h"
+
+namespace meshedit {
+
+LessonScript& script_of(lua_State* L) { return *static_cast<LessonScript*>(lua_touserdata(L, lua_upvalueindex(1))); }
+
+std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
+
+[[noreturn]] void raise(lua_State* L, const std::string& message) {
+  try {
+    const std::string where = caller_where(L);
+    lua_pushstring(L, (where.empty() ? message : where + ": " + message).c_str());
+  } catch (const std::exception&) {  // memory ran out placing the message: say so instead
+    LuaRuntime::note_out_of_memory(L);
+    lua_pushstring(L, kScriptMemoryRanOut);
+  }
+  lua_error(L);
+  __builtin_unreachable();  // lua_error never returns (it throws in this C++ build of Lua)
+}
+
+void require_step(lua_State* L, const char* name) {
+  const LessonScript& script = script_of(L);
+  if (script.phase == LessonScript::Phase::Step) return;
+  if (script.phase == LessonScript::Phase::Live) {
+    raise(L, std::string(name) + " cannot be used in a live() function or a plot's marker: they only read the view");
+  }
+  raise(L, std::string(name) + " can only be used inside a step: step(\"title\", function() ... end)");
+}
+
+void require_reading(lua_State* L, const char* name) {
+  if (script_of(L).phase == LessonScript::Phase::Live) return;
+  require_step(L, name);
+}
+
+void require_loading(lua_State* L, const char* name) {
+  if (script_of(L).phase == LessonScript::Phase::Loading) return;
+  raise(L, std::string(name) + " can only be used at the top level of a lesson file, not inside a step");
+}
+
+void require_step_thread(lua_State* L, const char* name) {
+  require_step(L, name);
+  if (L != script_of(L).step_thread) {
+    raise(L, std::string(name) + " works in the step itself, not inside a coroutine of your own");
+  }
+  if (!lua_isyieldable(L)) {
+    raise(L, std::string(name) + " cannot wait here (inside a metamethod or a C function)");
+  }
+}
+
+std::string type_name(lua_State* L, int index) { return luaL_typename(L, index); }
+
+void check_fields(lua_State* L, int index, const char* call, std::initializer_list<const char*> allowed,
+                  bool positional) {
+  index = lua_absindex(L, index);
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    lua_pop(L, 1);
+    bool ok = positional && lua_isinteger(L, -1) && lua_tointeger(L, -1) == 1;
+    if (lua_type(L, -1) == LUA_TSTRING) {
+      for (const char* name : allowed) ok = ok || std::strcmp(lua_tostring(L, -1), name) == 0;
+    }
+    if (!ok) {
+      std::string list;
+      for (const char* name : allowed) list += (list.empty() ? "" : ", ") + std::string(name);
+      const std::string key = lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'"
+                                                             : "a " + type_name(L, -1) + " key";
+      raise(L, std::string(call) + ": unknown field " + key + " (fields: " + (positional ? "[1], " : "") + list + ")");
+    }
+  }
+}
+
+std::optional<ElementKind> kind_by_name(const std::string& name) {
+  for (ElementKind kind : kAllKinds) {
+    if (name == kind_name(kind)) return kind;
+  }
+  return std::nullopt;
+}
+
+std::optional<ElementRef> to_element(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TSTRING) return parse_element(lua_tostring(L, index));
+  if (const Handle* handle = test_handle(L, index)) return handle->ref();
+  return std::nullopt;
+}
+
+ElementRef check_element(lua_State* L, int index, const char* call) {
+  if (std::optional<ElementRef> element = to_element(L, index)) return *element;
+  if (lua_type(L, index) == LUA_TSTRING) {
+    raise(L, std::string(call) + ": '" + lua_tostring(L, index) + "' is not an element id (like v3, h12, e7, f2, b0)");
+  }
+  raise(L, std::string(call) + ": expected an element (a handle or an id like \"e7\"), got " + type_name(L, index));
+}
+
+bool read_point(lua_State* L, int index, glm::dvec3& out) {
+  if (!lua_istable(L, index)) return false;
+  index = lua_absindex(L, index);
+  lua_getfield(L, index, "x");
+  const bool named = lua_type(L, -1) == LUA_TNUMBER;
+  lua_pop(L, 1);
+  double c[3] = {0, 0, 0};
+  for (int i = 0; i < 3; ++i) {
+    if (named) lua_getfield(L, index, i == 0 ? "x" : i == 1 ? "y" : "z");
+    else lua_geti(L, index, i + 1);
+    const int type = lua_type(L, -1);
+    if (type == LUA_TNUMBER) c[i] = lua_tonumber(L, -1);
+    lua_pop(L, 1);
+    if (type != LUA_TNUMBER && (i < 2 || type != LUA_TNIL)) return false;
+  }
+  out = {c[0], c[1], c[2]};
+  return true;
+}
+
+// ---- colours ----------------------------------------------------------------------------------------
+
+namespace {
+
+// A lesson's colour names give the palette's swatches (core/palette.h, the dark theme's values; the window shows each
+// in its theme's shade), so a lesson stays colour-blind safe: "red" is vermillion, "green" bluish green, "cyan" sky
+// blue, "magenta", "pink" and "purple" reddish purple, and "white" and "black" the ink (what reads on the theme's
+// background: white-ish on dark, black-ish on light).
+struct NamedColour {
+  const char* name;
+  glm::vec3 rgb;
+};
+const NamedColour kColours[] = {
+    {"red", kDarkSwatches.vermillion},  {"green", kDarkSwatches.bluish_green},
+    {"blue", kDarkSwatches.blue},       {"yellow", kDarkSwatches.yellow},
+    {"orange", kDarkSwatches.orange},   {"magenta", kDarkSwatches.reddish_purple},
+    {"pink", kDarkSwatches.reddish_purple}, {"cyan", kDarkSwatches.sky_blue},
+    {"purple", kDarkSwatches.reddish_purple}, {"white", kDarkSwatches.ink},
+    {"grey", kDarkSwatches.grey},       {"gray", kDarkSwatches.grey},
+    {"black", kDarkSwatches.ink}};
+
+// The colour of highlight(x) with no colour: the palette's lesson highlight (the last-edit colour).
+glm::vec3 default_highlight() { return palette_for(Theme::Dark).lesson_highlight; }
+
+int hex_digit(char c) {
+  if (c >= '0' && c <= '9') return c - '0';
+  if (c >= 'a' && c <= 'f') return c - 'a' + 10;
+  if (c >= 'A' && c <= 'F') return c - 'A' + 10;
+  return -1;
+}
+
+}  // namespace
+
+std::optional<glm::vec3> named_colour(const std::string& name) {
+  for (const NamedColour& c : kColours) {
+    if (name == c.name) return c.rgb;
+  }
+  return std::nullopt;
+}
+
+glm::vec3 read_colour(lua_State* L, int index) {
+  if (lua_isnoneornil(L, index)) return default_highlight();
+  if (lua_type(L, index) == LUA_TSTRING) {
+    const std::string text = lua_tostring(L, index);
+    if (const std::optional<glm::vec3> named = named_colour(text)) return *named;
+    if (text.size() == 7 && text[0] == '#') {
+      glm::vec3 rgb{};
+      bool ok = true;
+      for (int i = 0; i < 3; ++i) {
+        const int hi = hex_digit(text[1 + 2 * i]), lo = hex_digit(text[2 + 2 * i]);
+        ok = ok && hi >= 0 && lo >= 0;
+        rgb[i] = static_cast<float>(hi * 16 + lo) / 255.0f;
+      }
+      if (ok) return rgb;
+    }
+    std::string names;
+    for (const NamedColour& c : kColours) names += (names.empty() ? "" : ", ") + std::string(c.name);
+    raise(L, "unknown colour '" + text + "' (use " + names + ", \"#rrggbb\" or {r, g, b} from 0 to 1)");
+  }
+  if (lua_istable(L, index)) {
+    glm::dvec3 p{};
+    lua_getfield(L, index, "r");
+    const bool named = lua_type(L, -1) == LUA_TNUMBER;
+    lua_pop(L, 1);
+    bool ok = true;
+    for (int i = 0; i < 3; ++i) {
+      if (named) lua_getfield(L, index, i == 0 ? "r" : i == 1 ? "g" : "b");
+      else lua_geti(L, index, i + 1);
+      ok = ok && lua_type(L, -1) == LUA_TNUMBER;
+      p[i] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+      ok = ok && p[i] >= 0.0 && p[i] <= 1.0;
+    }
+    if (ok) return glm::vec3(p);
+    raise(L, "a colour table needs three numbers from 0 to 1: {r, g, b} or {r=, g=, b=}");
+  }
+  raise(L, "expected a colour (a name like \"red\", \"#rrggbb\" or {r, g, b}), got " + type_name(L, index));
+}
+
+void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f) {
+  lua_pushlightuserdata(L, &script);
+  lua_pushcclosure(L, f, 1);
+  lua_setfield(L, -2, name);
+}
+
+}  // namespace meshedit

@@ -1,0 +1,81 @@
+// What the files defining the lesson globals share (internal to engine/script: lesson_api.cpp, lesson_questions.cpp,
+// lesson_displays.cpp): the script state behind each global, errors that start with the lesson's `file:line:`, the
+// phase checks, and the readers of the arguments every global takes the same way (elements, points, colours).
+//
+// Invariants:
+// - Every global is a C closure with the LessonScript as its one upvalue (set_function), wrapped in lesson_guarded so
+//   no C++ exception crosses a Lua frame.
+// - raise() never returns and never throws a C++ exception: it is a Lua error whose message starts with the lesson's
+//   line (the innermost frame outside the API's own Lua preludes, all named kLessonPreludeName).
+// - The readers only read: they raise for a bad argument and change nothing.
+#pragma once
+
+#include <initializer_list>
+#include <optional>
+#include <string>
+
+#include <glm/vec3.hpp>
+#include <lua.hpp>
+
+#include "core/ids.h"
+#include "script/exception_text.h"
+#include "script/lesson_api.h"
+
+namespace meshedit {
+
+// The chunk name of the API's own Lua code (lesson_where skips its frames).
+inline constexpr const char* kLessonPreludeName = "(lesson api)";
+inline constexpr const char* kLessonPreludeSource = "@(lesson api)";
+
+// The script of the running global (its upvalue 1).
+LessonScript& script_of(lua_State* L);
+// Where the lesson called the running API function: "lesson.lua:12", or "".
+std::string caller_where(lua_State* L);
+// A Lua error "lesson.lua:12: message" (the caller's line); never returns.
+[[noreturn]] void raise(lua_State* L, const std::string& message);
+
+// Runs an API function with C++ exceptions (from the host, or bad_alloc: "memory ran out") turned into Lua errors;
+// the message is copied out first so the Lua error starts after the C++ exception is finished.
+template <lua_CFunction F>
+int lesson_guarded(lua_State* L) {
+  std::string message;
+  try {
+    return F(L);
+  } catch (const std::exception& e) {
+    message = lua_error_text(L, e);
+  }
+  raise(L, message);
+}
+
+// Only while a step runs (phase Step): say, show, highlight, waits...
+void require_step(lua_State* L, const char* name);
+// While a step runs or a live block or plot marker is read (phase Step or Live): the calls that only read the view.
+void require_reading(lua_State* L, const char* name);
+// Only at the top level of the file (phase Loading): lesson{}, step().
+void require_loading(lua_State* L, const char* name);
+// A wait may only yield the step's own coroutine.
+void require_step_thread(lua_State* L, const char* name);
+
+std::string type_name(lua_State* L, int index);
+// Checks that the table at `index` has only the listed string keys (and, with `positional`, the integer key 1).
+void check_fields(lua_State* L, int index, const char* call, std::initializer_list<const char*> allowed,
+                  bool positional = false);
+
+std::optional<ElementKind> kind_by_name(const std::string& name);
+// An element handle (of any mesh) or an id string ("e7"), else nullopt.
+std::optional<ElementRef> to_element(lua_State* L, int index);
+ElementRef check_element(lua_State* L, int index, const char* call);
+
+// A point: a table with numeric x, y (z optional) or a list {x, y[, z]}; false for anything else. Never raises.
+bool read_point(lua_State* L, int index, glm::dvec3& out);
+
+// A colour argument: a palette name ("red" is the dark theme's vermillion swatch...), "#rrggbb" or {r, g, b} in [0, 1];
+// none or nil gives the palette's lesson highlight. Raises for anything else.
+glm::vec3 read_colour(lua_State* L, int index);
+// The colour a name gives (the dark theme's swatch), or nullopt.
+std::optional<glm::vec3> named_colour(const std::string& name);
+
+// Sets field `name` of the table on top of the stack to `f` bound to `script`.
+void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f);
+
+}  // namespace meshedit

@@ -1,0 +1,70 @@
+// What a step shows in the lesson panel, in the order the step made it: say() text, live() text, plot{} pictures and
+// the questions the student has answered (choose, pick, answer). Plain data: the runner fills it, the panel and the
+// headless command read it.
+//
+// Invariants:
+// - A step's blocks belong to that step: the runner empties them when a step starts (Next, Back, go_to, reload), with
+//   the host's marks, so a step rebuilds everything it shows.
+// - LessonBlock::index is an index into the runner's list of that kind (said, lives, plots, answered), which only grows
+//   while the step runs.
+// - A live block or a plot's marker with an `error` is never evaluated again in its step; its text or marker keeps the
+//   last value it had.
+// - A plot's samples are taken once, when plot{} runs (x from x_min to x_max in equal steps, every value finite); only
+//   its marker follows the view.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/vec2.hpp>
+#include <glm/vec3.hpp>
+
+namespace meshedit {
+
+struct LessonBlock {
+  enum class Kind { Text, Live, Plot, Answered };
+  Kind kind = Kind::Text;
+  size_t index = 0;
+};
+
+// live(function() ... end): the function's value as text, evaluated again every frame.
+struct LessonLive {
+  int function_ref = -2;  // LUA_NOREF: the function in the registry
+  std::string where;      // "lesson.lua:12", where live() was called
+  std::string text;       // the latest value (tostring)
+  std::string error;      // "lesson.lua:13: ..." once it failed: it is not evaluated again
+};
+
+struct LessonPlotCurve {
+  std::string label;
+  glm::vec3 colour{1.0f};          // a dark-theme swatch for a colour name (the panel shows it in its theme's shade)
+  std::vector<glm::dvec2> points;  // (x, f(x)), x increasing
+};
+
+// plot{...}: curves sampled once, and an optional marker (a vertical line at x = marker()) that follows the view.
+struct LessonPlot {
+  std::string title;
+  std::string where;  // "lesson.lua:20", where plot{} was called
+  glm::dvec2 x_range{0.0, 1.0};
+  glm::dvec2 y_range{0.0, 1.0};  // the lesson's y = {lo, hi}, or the samples' own range
+  std::vector<LessonPlotCurve> curves;
+  int marker_ref = -2;            // LUA_NOREF when the plot has no marker
+  std::optional<double> marker;   // the marker's latest x (nullopt: its function gave nil)
+  std::string error;              // the marker's error, once it failed
+};
+
+// One judgement of an answer to choose{}, pick{} or answer{}.
+struct LessonJudgement {
+  std::string question;  // the question's text
+  std::string given;     // what the student gave: the option, the element's id, the text typed
+  bool right = false;
+  std::string feedback;  // what the lesson says about it ("" when it says nothing about a right answer)
+};
+
+// The value of a plot's curve at x, by straight lines between its samples (clamped to its ends); nullopt when it has
+// no samples.
+std::optional<double> plot_value(const LessonPlotCurve& curve, double x);
+
+}  // namespace meshedit

@@ -1,0 +1,75 @@
+// The questions in the lesson panel (see lesson_question_view.h).
+#include "ui/lesson_question_view.h"
+
+#include <cstring>
+
+#include <imgui.h>
+
+#include "script/lesson_text.h"
+#include "ui/flow_layout.h"
+#include "ui/theme.h"
+
+namespace meshedit {
+namespace {
+
+void coloured_text(glm::vec3 colour, const std::string& text) {
+  ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
+  ImGui::TextWrapped("%s", text.c_str());
+  ImGui::PopStyleColor();
+}
+
+void draw_choices(LessonRunner& runner, const LessonWait& wait, UiProbe* probe) {
+  // deliver() changes the wait: copy the options before the first button can be pressed.
+  const std::vector<std::string> options = wait.options;
+  for (size_t i = 0; i < options.size(); ++i) {
+    if (i > 0) same_line_if_room(options[i].c_str());
+    ImGui::PushID(int(i));
+    const bool pressed = ImGui::Button(options[i].c_str());
+    ImGui::PopID();
+    if (probe) probe->record_last_item("lesson-choice");
+    if (pressed) runner.deliver(LessonEvent::choice(options[i]));
+  }
+}
+
+void draw_answer_box(LessonRunner& runner, LessonAnswerBox& box, UiProbe* probe) {
+  const std::string question = runner.waiting_for().where + "#" + std::to_string(runner.answered().size());
+  if (box.question != question) {
+    box.question = question;
+    box.text[0] = '\0';
+  }
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float check = ImGui::CalcTextSize("Check").x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
+  ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - check, ImGui::GetFontSize() * 4.0f));
+  const bool entered =
+      ImGui::InputText("##lesson-answer", box.text, sizeof box.text, ImGuiInputTextFlags_EnterReturnsTrue);
+  if (probe) probe->record_last_item("lesson-answer");
+  if (entered) ImGui::SetKeyboardFocusHere(-1);  // keep typing after a wrong answer
+  ImGui::SameLine();
+  const bool checked = ImGui::Button("Check");
+  if ((entered || checked) && box.text[0] != '\0') runner.deliver(LessonEvent::value(box.text));
+}
+
+}  // namespace
+
+void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* probe) {
+  const LessonWait& wait = runner.waiting_for();
+  if (!wait.is_question()) return;
+  const Palette& palette = ui_palette();
+  ImGui::TextWrapped("%s", markdown_to_plain(wait.question).c_str());
+  // Read what the panel shows now: a button below may deliver an answer, which changes the wait.
+  const std::string feedback = wait.feedback, hint = wait.hint_shown() ? wait.hint : std::string();
+  const LessonWait::Kind kind = wait.kind;
+  if (kind == LessonWait::Kind::Choice) draw_choices(runner, wait, probe);
+  else if (kind == LessonWait::Kind::Answer) draw_answer_box(runner, box, probe);
+  else ImGui::TextDisabled("(click it in the view)");
+  if (!feedback.empty()) coloured_text(palette.warning, feedback);
+  if (!hint.empty()) coloured_text(palette.emphasis, "Hint: " + hint);
+}
+
+void draw_lesson_answered(const LessonJudgement& judgement) {
+  ImGui::TextWrapped("%s", markdown_to_plain(judgement.question).c_str());
+  coloured_text(ui_palette().ok, "Right: " + judgement.given +
+                                     (judgement.feedback.empty() ? std::string() : ". " + judgement.feedback));
+}
+
+}  // namespace meshedit
