@@ -119,6 +119,9 @@ class StudentCode {
  private:
   void run_protected(int closure_ref);
   bool push_function(Exercise exercise);
+  // Shows what `exercise` may use of the student API (student_api.h) and installs its reference functions; with
+  // nullptr, hides everything hideable. Throws ScriptError if the bindings cannot be restricted.
+  void open_exercise_api(const Exercise* exercise);
 
   std::unique_ptr<LuaRuntime> runtime_;
   int helpers_ref_ = -1;  // registry ref: the helper functions, made before any student code runs
@@ -148,8 +151,20 @@ struct ExerciseReport {
   std::string summary() const;
 };
 
+// Reads what a student's function returned (the value at `index` of L) into `out`, as run_mine does: out.ran, and
+// out.error for a value of the wrong shape; out.returned described; the points, or the element when it is a handle
+// of `mesh`. Reads raw: no metamethod runs. The grader reads the values a student's function returned to the suite
+// through this too (expect.exercise).
+void read_returned_value(lua_State* L, int index, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh,
+                         ExerciseOutcome& out);
+
 // Compares two outcomes of the same exercise and input.
 ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOutcome mine, ExerciseOutcome reference);
+// What to tell a student whose `exercise` ran out of time, instructions or memory ("upsample did not finish: split
+// only the edges of the original mesh ..."); the window adds it under the limit's error, the grader under its
+// "Timed out" or "Out of memory" line.
+std::string unfinished_run_hint(Exercise exercise);
+
 // run_mine, run_reference, compare.
 ExerciseReport check_exercise(StudentCode& code, Exercise exercise, const ExerciseInput& input,
                               const RunOptions& options = {});

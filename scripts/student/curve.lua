@@ -21,7 +21,7 @@
 -- WHAT YOU MAY USE
 --   #points, points[i], a for loop; vec3 arithmetic: a + b, a - b, a * 2, 2 * a, a / 2, -a, tostring(a);
 --   meshedit.vec3(x, y, z) makes a point. Fields p.x, p.y, p.z.
---   To see the reference: local c = meshedit.curve(points); c:levels(t), c:evaluate(t).
+--   The reference, in the Lua console (hidden from your code): local c = meshedit.curve(points); c:levels(t).
 --
 -- CHECKING
 --   In the app's curve view, tick "mine" (or press M) and press E: each level comes from this function, run on
