@@ -1,7 +1,9 @@
-// compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake
-// before the raw differences (issue 5's list of real mistakes: a step that drops the last point or swaps the
-// weights, u and v swapped, unweighted normals, forgotten halfedge pointers, a flipped boundary edge, a split
-// vertex at the wrong place, wrong flips or wrong positions in Loop subdivision, a loop that never ends).
+// compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake before the
+// raw differences (the students' real mistakes: a step that drops the last point or swaps the weights, u and v
+// swapped, unweighted normals, forgotten halfedge pointers, a next pointer left as it was that breaks a face cycle,
+// a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong weights or misplaced positions in
+// Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
+// so a failure there reads like the window.
 //
 // Tolerances: points and normals within 1e-9 of the reference (scaled by the input's size for points),
 // meshes within 1e-9 x the bounding-box diagonal (at least 1e-9); "identical" means bit for bit and, for

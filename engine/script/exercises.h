@@ -12,13 +12,17 @@
 // - Student code runs in its own LuaRuntime (the sandbox and limits of lua_runtime.h), one per
 //   StudentCode; a Lua error, a limit or a wrong return type becomes ExerciseOutcome::error, never an
 //   exception out of run_mine. After "mine" on a mesh, validate() always runs.
+// - Student code sees the student API of student_api.h, grading's own: the file functions and the exercises'
+//   reference operations hidden (a refusal in the same words), upsample given mesh:flip, mesh:split and the
+//   reference flip_edge and split_edge.
 // - The reference is the core: de_casteljau_step, evaluate_patch, vertex_normal (area-weighted), flip, split
 //   and loop_subdivide with the course's weights (core/loop_subdivision.h), so "mine" and the app's own
 //   operations agree by construction.
 // - `equal` is the verdict (the same answer as the reference, up to renumbering and rounding); `identical`
 //   is stronger (bit for bit, pointer for pointer). The correct solutions in tests/script/solutions are
 //   identical on every input the tests use.
-// - Messages name elements with format_id, say "yours" and "the reference", and put the likely mistake first.
+// - Messages name elements with format_id, say "yours" and "the reference", and put the likely mistake first. The
+//   grader records the same messages (expect.exercise), so the window and the grader say the same thing.
 #pragma once
 
 #include <cstddef>
