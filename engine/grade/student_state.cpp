@@ -9,6 +9,7 @@
 #include "script/reference_functions.h"
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
+#include "script/binding_support.h"
 #include "script/mesh_bindings.h"
 #include "script/student_api.h"
 
@@ -57,7 +58,7 @@ StudentState::StudentState(const StudentOptions& options) : runtime_(options.lim
   mesh_limits_for_students.storage_bytes = std::max<size_t>(options.limits.memory_bytes, size_t(64) << 20);
   set_mesh_limits(L, mesh_limits_for_students);
   Setup s{&options_, &returned_tables_ref_};
-  lua_pushcfunction(L, setup);
+  lua_pushcfunction(L, guarded<setup>);
   lua_pushlightuserdata(L, &s);
   runtime_.call(1, 0);
   install_references();

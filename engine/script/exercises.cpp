@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <stdexcept>
 
 #include <lua.hpp>
@@ -300,7 +301,12 @@ StudentCode::StudentCode(LuaLimits limits) : runtime_(std::make_unique<LuaRuntim
   lua_newtable(L);
   modules_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   // Until an exercise runs, student code sees the API with everything hideable hidden (its files' top level).
-  open_exercise_api(nullptr);
+  try {
+    open_exercise_api(nullptr);
+  } catch (const ScriptError& e) {
+    if (e.out_of_memory()) throw std::bad_alloc();  // as any other allocation of the constructor
+    throw;
+  }
   runtime_->set_print([this](const std::string& line) {
     if (output_ && output_->size() < kMaxOutputLines) output_->push_back(line.substr(0, kMaxOutputLineBytes));
   });
@@ -308,23 +314,31 @@ StudentCode::StudentCode(LuaLimits limits) : runtime_(std::make_unique<LuaRuntim
 
 StudentCode::~StudentCode() = default;
 
+namespace {
+
+// Run in protected mode (guarded: a C++ exception becomes a Lua error) with the ExerciseApi to show, or nullptr.
+int apply_exercise_api(lua_State* L) {
+  const auto* api = static_cast<const ExerciseApi*>(lua_touserdata(L, 1));
+  set_student_api(L, api ? std::span<const std::string>(api->allow_api) : std::span<const std::string>());
+  if (api) {
+    for (const std::string& name : api->reference) install_reference_function(L, name);
+  }
+  return 0;
+}
+
+}  // namespace
+
 void StudentCode::open_exercise_api(const Exercise* exercise) {
-  struct Request {
-    const ExerciseApi* api;
-  } request{exercise ? &exercise_api(*exercise) : nullptr};
   lua_State* L = runtime_->state();
-  lua_pushcfunction(L, [](lua_State* S) {
-    const auto* r = static_cast<const Request*>(lua_touserdata(S, 1));
-    set_student_api(S, r->api ? std::span<const std::string>(r->api->allow_api) : std::span<const std::string>());
-    if (r->api) {
-      for (const std::string& name : r->api->reference) install_reference_function(S, name);
-    }
-    return 0;
-  });
-  lua_pushlightuserdata(L, &request);
-  if (lua_pcall(L, 1, 0, 0) != LUA_OK) {
+  lua_pushcfunction(L, guarded<apply_exercise_api>);
+  lua_pushlightuserdata(L, const_cast<ExerciseApi*>(exercise ? &exercise_api(*exercise) : nullptr));
+  if (const int status = lua_pcall(L, 1, 0, 0); status != LUA_OK) {
     const std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "?";
     lua_settop(L, 0);
+    // Memory running out here is not the student's doing: flagged as run_mine's own out-of-memory errors are.
+    if (status == LUA_ERRMEM || runtime_->ran_out_of_memory()) {
+      throw ScriptError(message, ScriptError::Limit::None, true);
+    }
     throw ScriptError("cannot set up the student API: " + message);
   }
 }
@@ -438,6 +452,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
     open_exercise_api(&exercise);
   } catch (const ScriptError& e) {
     out.error = e.what();
+    out.out_of_memory = e.out_of_memory();
     return out;
   }
   lua_State* L = runtime_->state();
