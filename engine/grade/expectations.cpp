@@ -11,6 +11,7 @@
 #include "core/mesh_compare.h"
 #include "core/validate.h"
 #include "core/value_format.h"
+#include "grade/exercise_expectation.h"
 #include "script/binding_support.h"
 #include "script/mesh_bindings.h"
 
@@ -19,11 +20,7 @@ namespace {
 
 constexpr size_t kMaxListed = 3;  // violations or differences quoted in one message
 
-TestRecorder& recorder(lua_State* L) {
-  auto* const* current = static_cast<TestRecorder* const*>(lua_touserdata(L, lua_upvalueindex(1)));
-  if (!current || !*current) luaL_error(L, "expect can only be used while a test runs");
-  return **current;
-}
+TestRecorder& recorder(lua_State* L) { return current_recorder(L); }
 
 // The optional message argument at `index` ("" when absent).
 std::string message_at(lua_State* L, int index) {
@@ -33,11 +30,7 @@ std::string message_at(lua_State* L, int index) {
   return std::string(s, len);
 }
 
-std::string join(const std::string& message, const std::string& detail) {
-  if (message.empty()) return detail;
-  if (detail.empty()) return message;
-  return message + ": " + detail;
-}
+std::string join(const std::string& message, const std::string& detail) { return join_message(message, detail); }
 
 int record(lua_State* L, bool passed, const std::string& text) {
   lua_pushboolean(L, recorder(L).record(passed, text));
@@ -85,6 +78,25 @@ std::string describe_number(lua_State* L, int index) {
 }
 
 }  // namespace
+
+TestRecorder& current_recorder(lua_State* L) {
+  auto* const* current = static_cast<TestRecorder* const*>(lua_touserdata(L, lua_upvalueindex(1)));
+  if (!current || !*current) luaL_error(L, "expect can only be used while a test runs");
+  return **current;
+}
+
+std::string join_message(const std::string& message, const std::string& detail) {
+  if (message.empty()) return detail;
+  if (detail.empty()) return message;
+  return message + ": " + detail;
+}
+
+std::string first_items(const std::vector<std::string>& items, size_t total) {
+  std::string out;
+  for (size_t i = 0; i < items.size() && i < kMaxListed; ++i) out += (i ? "; " : "") + items[i];
+  if (total > kMaxListed) out += "; ... (" + std::to_string(total) + " in all)";
+  return out;
+}
 
 bool TestRecorder::record(bool passed, std::string message) {
   run_.checks.push_back({passed, std::move(message)});
@@ -276,13 +288,6 @@ std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::s
   return mesh;
 }
 
-std::string first_items(const std::vector<std::string>& items, size_t total) {
-  std::string out;
-  for (size_t i = 0; i < items.size() && i < kMaxListed; ++i) out += (i ? "; " : "") + items[i];
-  if (total > kMaxListed) out += "; ... (" + std::to_string(total) + " in all)";
-  return out;
-}
-
 // ---- the functions --------------------------------------------------------------------------------------
 
 int expect_truthy(lua_State* L) {
@@ -406,6 +411,7 @@ void push_expect_table(lua_State* L, TestRecorder* const* current) {
                                 {"pass", expect_pass},
                                 {"fail", expect_fail},
                                 {"score", expect_score},
+                                {"exercise", guarded<expect_exercise>},
                                 {nullptr, nullptr}};
   lua_newtable(L);
   lua_pushlightuserdata(L, const_cast<TestRecorder**>(current));

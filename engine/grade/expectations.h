@@ -20,11 +20,16 @@
 //   expect.pass(message)  expect.fail(message)
 //   expect.score(fraction, message)           the test's share of its points, in [0, 1] (overrides the
 //                                             pass/fail count; the last call wins)
+//   expect.exercise(name, input, returned, yours, message)
+//                                             the window's own check of one exercise (exercise_expectation.h):
+//                                             the failure message is the window's diagnosis
 // Failure messages say what was expected and what was found, naming elements ("h3.next") and list positions
 // ("[2]: expected (0.5, 0, 0), got (0.25, 0, 0), 0.25 away (tolerance 1e-09)").
 #pragma once
 
+#include <cstddef>
 #include <string>
+#include <vector>
 
 #include "grade/grade_types.h"
 
@@ -47,6 +52,16 @@ class TestRecorder {
 // the duration of a test and clears afterwards: an `expect` kept past its test raises an error instead of
 // writing to a finished test.
 void push_expect_table(lua_State* L, TestRecorder* const* current);
+
+// The recorder of the test running now, for a check registered by push_expect_table (it reads the closure's
+// first upvalue); raises "expect can only be used while a test runs" between tests.
+TestRecorder& current_recorder(lua_State* L);
+
+// "message: detail", or whichever of the two is not empty.
+std::string join_message(const std::string& message, const std::string& detail);
+
+// The first three items joined by "; ", then "; ... (N in all)" when total is larger.
+std::string first_items(const std::vector<std::string>& items, size_t total);
 
 // How the checks print a value: "nil", "true", "3", "0.5", "\"text\"", "(1, 2, 3)", "h37", "a mesh (8
 // vertices, 18 edges, 12 faces)", "{1, 2, 3}".

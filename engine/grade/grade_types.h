@@ -50,6 +50,7 @@ struct TestSpec {
   double time_limit = 10.0;             // seconds of wall clock for the whole test
   size_t memory_mb = 256;               // the student state's Lua memory cap
   bool partial = false;                 // score = points * passed checks / checks
+  bool extra_credit = false;            // its points add on top of the base points (max_score 0 in results)
   std::vector<std::string> files;       // student files loaded for this test
   std::vector<std::string> reference;   // reference functions installed in the student's globals
   std::vector<std::string> allow_api;   // mesh API normally hidden from students that this test allows
@@ -64,7 +65,8 @@ struct TestResult {
   std::string visibility;
   std::vector<std::string> tags;
   double score = 0.0;
-  double max_score = 0.0;
+  double max_score = 0.0;     // 0 for extra credit: its score adds on top of the base points
+  double extra_points = 0.0;  // what an extra-credit test can add (0 for the others)
   bool passed = false;
   RunEnd end = RunEnd::Completed;
   std::string failure;  // the first problem in one line ("" when passed), for JUnit/TAP messages
@@ -76,8 +78,9 @@ struct GradeReport {
   std::string suite_name;
   std::vector<TestResult> tests;
   std::string output;  // top-level text: the suite, the files found and whether they compile
-  double score = 0.0;
-  double max_score = 0.0;
+  double score = 0.0;          // base and extra credit together
+  double max_score = 0.0;      // the base points: a submission without the extra credit can reach 100%
+  double extra_points = 0.0;   // what the extra-credit tests can add on top
   double execution_time = 0.0;  // seconds
 
   size_t passed() const;

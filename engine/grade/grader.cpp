@@ -5,11 +5,13 @@
 #include <chrono>
 #include <cmath>
 #include <csignal>
+#include <optional>
 #include <sstream>
 
 #include <nlohmann/json.hpp>
 
 #include "grade/child_process.h"
+#include "script/exercises.h"
 
 namespace meshedit {
 namespace {
@@ -27,6 +29,17 @@ RunEnd end_from_name(const std::string& name) {
 
 std::string plural(size_t n, const char* one, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+// The window's hint for a run that did not finish (exercises.h), when the test loads one exercise's file.
+std::string unfinished_hint(const TestSpec& spec) {
+  std::optional<Exercise> exercise;
+  for (const std::string& file : spec.files) {
+    const std::optional<Exercise> e = find_exercise(file);
+    if (!e || (exercise && *exercise != *e)) return "";
+    exercise = e;
+  }
+  return exercise ? unfinished_run_hint(*exercise) : "";
 }
 
 }  // namespace
@@ -84,7 +97,12 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
   r.name = spec.name;
   r.visibility = spec.visibility;
   r.tags = spec.tags;
-  r.max_score = spec.points;
+  if (spec.extra_credit) {
+    r.name += " (extra credit)";
+    r.tags.push_back("extra credit");
+  }
+  r.max_score = spec.extra_credit ? 0.0 : spec.points;
+  r.extra_points = spec.extra_credit ? spec.points : 0.0;
   r.end = run.end;
   r.seconds = seconds;
   size_t passed = 0;
@@ -102,13 +120,16 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
     fraction = failed == 0 ? 1.0 : 0.0;
   }
   r.score = round_score(spec.points * fraction);
-  r.passed = !stopped && failed == 0 && r.score >= r.max_score;
+  r.passed = !stopped && failed == 0 && r.score >= spec.points;
 
   std::ostringstream out;
   if (stopped) {
     out << (run.end == RunEnd::Timeout ? "Timed out: " : run.end == RunEnd::Memory ? "Out of memory: "
             : run.end == RunEnd::Crash ? "Crashed: " : run.end == RunEnd::LoadError ? "Load error: " : "Error: ")
         << run.error << "\n";
+    if (run.end == RunEnd::Timeout || run.end == RunEnd::Memory) {
+      if (const std::string hint = unfinished_hint(spec); !hint.empty()) out << hint << "\n";
+    }
     if (r.failure.empty()) r.failure = run.error;
   }
   // The first failures say enough; a loop over 40 elements should not print 40 near-identical lines.
@@ -123,6 +144,10 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
     out << (run.checks.empty() ? std::string("Passed.") : "Passed: " + plural(passed, "check", "checks") + ".") << "\n";
   } else if (!run.checks.empty()) {
     out << plural(passed, "check", "checks") << " of " << run.checks.size() << " passed.\n";
+  }
+  if (spec.extra_credit) {
+    out << "Extra credit: " << round_score(r.score) << " of " << spec.points
+        << (spec.points == 1.0 ? " point" : " points") << ", added on top of the base score.\n";
   }
   if (!run.output.empty()) {
     out << "\nYour code printed:\n" << run.output;
@@ -176,11 +201,21 @@ GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions
     }
     TestResult result = score_test(spec, run, child.seconds);
     report.score += result.score;
-    report.max_score += spec.points;
+    (spec.extra_credit ? report.extra_points : report.max_score) += spec.points;
     if (options.on_test) options.on_test(result);
     report.tests.push_back(std::move(result));
   }
   report.score = round_score(report.score);
+  if (report.extra_points > 0) {
+    std::string numbers;
+    for (const auto& spec : suite.tests()) {
+      if (spec.extra_credit) numbers += (numbers.empty() ? "" : ", ") + spec.number;
+    }
+    const bool one = numbers.find(',') == std::string::npos;
+    top << "Extra credit: " << (one ? "test " : "tests ") << numbers << (one ? " adds" : " add") << " up to "
+        << report.extra_points << (report.extra_points == 1.0 ? " point" : " points") << " on top of the "
+        << report.max_score << " base points.\n";
+  }
   report.output = top.str() + filter_note;
   report.execution_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -9,7 +9,12 @@
 // - Scores: a test with an error (student or suite), a timeout or a crash scores 0, unless it is partial,
 //   when it keeps points * passed / (checks + 1). Otherwise: expect.score's fraction if set; partial: points
 //   * passed / checks; else all points when every check passed (a test with no checks passes), 0 if not.
-//   Scores are rounded to 1e-6; a test passes when its score is its max_score and nothing failed.
+//   Scores are rounded to 1e-6; a test passes when its score is its points and nothing failed.
+// - Extra credit: an extra_credit test is scored the same way, but its max_score is 0 (its points are
+//   extra_points) and the report's max_score counts the base tests only; the report's score adds every test's
+//   score. So a submission without the extra credit can reach 100% of max_score, and one with it goes above.
+// - A test that timed out or ran out of memory, loading one exercise's file, says what the window says of such a
+//   run (unfinished_run_hint in exercises.h: "upsample did not finish: split only the edges of the original mesh").
 // - The report lists the files the suite names that the submission lacks, and the submission's notes.
 #pragma once
 

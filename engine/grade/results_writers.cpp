@@ -47,6 +47,12 @@ std::string one_line(const std::string& s) {
   return out.size() > 200 ? out.substr(0, 200) + "..." : out;
 }
 
+// " (extra credit included: up to 2 more)", or "" for a suite without extra credit.
+std::string extra_credit_note(const GradeReport& report) {
+  if (report.extra_points <= 0) return "";
+  return " (extra credit included: up to " + number(report.extra_points) + " more)";
+}
+
 }  // namespace
 
 std::string summary_line(const GradeReport& report) {
@@ -125,7 +131,7 @@ std::string tap_text(const GradeReport& report) {
         << "\n  score: " << number(r.score) << "\n  max_score: " << number(r.max_score) << "\n  ...\n";
     }
   }
-  t << "# score " << number(report.score) << " / " << number(report.max_score) << "\n";
+  t << "# score " << number(report.score) << " / " << number(report.max_score) << extra_credit_note(report) << "\n";
   t << "# " << summary_line(report) << "\n";
   return t.str();
 }
@@ -134,15 +140,16 @@ std::string text_report(const GradeReport& report) {
   std::ostringstream s;
   s << report.output << "\n";
   for (const auto& t : report.tests) {
-    s << (t.passed ? "PASS " : "FAIL ") << t.number << " " << t.name << "  " << number(t.score) << "/"
-      << number(t.max_score) << "\n";
+    s << (t.passed ? "PASS " : "FAIL ") << t.number << " " << t.name << "  ";
+    if (t.extra_points > 0) s << "+" << number(t.score) << " of " << number(t.extra_points) << "\n";
+    else s << number(t.score) << "/" << number(t.max_score) << "\n";
     if (!t.passed) {
       std::istringstream lines(t.output);
       std::string line;
       while (std::getline(lines, line)) s << "    " << line << "\n";
     }
   }
-  s << "\nScore: " << number(report.score) << " / " << number(report.max_score) << "\n";
+  s << "\nScore: " << number(report.score) << " / " << number(report.max_score) << extra_credit_note(report) << "\n";
   s << summary_line(report) << "\n";
   return s.str();
 }

@@ -5,6 +5,9 @@
 // - results.json follows Gradescope's spec (gradescope-autograders.readthedocs.io/en/latest/specs): top level
 //   score, max_score, execution_time (whole seconds), output, visibility, stdout_visibility, tests[] with
 //   number, name, score, max_score, status ("passed" / "failed"), output, visibility (and tags when set).
+//   Extra credit follows Gradescope's convention of a test with max_score 0 whose score adds: its name ends in
+//   "(extra credit)" and its tags hold "extra credit"; the top-level score includes it, the top-level max_score
+//   is the base points only.
 //   The text is valid UTF-8 whatever the student printed (invalid bytes are replaced).
 // - JUnit has no score field: each test case carries properties score and max_score; failed checks are
 //   <failure>, errors, timeouts and crashes <error>.

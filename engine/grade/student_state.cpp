@@ -6,62 +6,30 @@
 
 #include <lua.hpp>
 
-#include "grade/reference_functions.h"
+#include "script/reference_functions.h"
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
+#include "script/binding_support.h"
 #include "script/mesh_bindings.h"
+#include "script/student_api.h"
 
 namespace meshedit {
 namespace {
-
-// Entries that touch files: never available to student code.
-const char* const kFileFunctions[] = {"load", "load_curve", "load_patches"};
-const char* const kFileMethods[] = {"save"};
-
-struct Hideable {
-  const char* api_name;  // how a suite allows it
-  bool method;           // a mesh method (else a meshedit function)
-  const char* field;
-};
-const Hideable kHideable[] = {{"mesh:flip", true, "flip"},
-                              {"mesh:split", true, "split"},
-                              {"mesh:collapse", true, "collapse"},
-                              {"mesh:loop_subdivide", true, "loop_subdivide"},
-                              {"meshedit.curve", false, "curve"},
-                              {"meshedit.patch", false, "patch"}};
-
-void clear_field(lua_State* L, int table, const char* field) {
-  lua_pushnil(L);
-  lua_setfield(L, table, field);
-}
 
 struct Setup {
   const StudentOptions* options;
   int* returned_ref;
 };
 
-// Runs in protected mode on a fresh state: removes what students may not use, makes the returned-tables list.
+// Runs in protected mode on a fresh state: the student API (student_api.h), the returned-tables list.
 int setup(lua_State* L) {
   const auto* s = static_cast<Setup*>(lua_touserdata(L, 1));
-  const auto allowed = [&](const char* name) {
-    return std::find(s->options->allow_api.begin(), s->options->allow_api.end(), name) != s->options->allow_api.end();
-  };
   lua_getglobal(L, "meshedit");
-  const int module = lua_gettop(L);
-  if (!lua_istable(L, module)) return luaL_error(L, "the meshedit module is missing");
+  if (!lua_istable(L, -1)) return luaL_error(L, "the meshedit module is missing");
   // The whole module first (curves and patches too), so that what a test allows is there to allow.
   open_bezier_bindings(L);
-  luaL_getmetatable(L, "mesh");
-  if (!lua_istable(L, -1)) return luaL_error(L, "the mesh metatable is missing");
-  lua_getfield(L, -1, "__index");
-  const int methods = lua_gettop(L);
-  // The grader can only hide methods kept in a table; fail loudly if the bindings ever change that.
-  if (!lua_istable(L, methods)) return luaL_error(L, "the mesh methods are not a table: cannot restrict them");
-  for (const char* f : kFileFunctions) clear_field(L, module, f);
-  for (const char* f : kFileMethods) clear_field(L, methods, f);
-  for (const auto& h : kHideable) {
-    if (!allowed(h.api_name)) clear_field(L, h.method ? methods : module, h.field);
-  }
+  lua_pop(L, 1);
+  set_student_api(L, s->options->allow_api);
   lua_newtable(L);
   *s->returned_ref = luaL_ref(L, LUA_REGISTRYINDEX);
   return 0;
@@ -78,15 +46,6 @@ struct Call {
 
 }  // namespace
 
-const std::vector<std::string>& hideable_api_names() {
-  static const std::vector<std::string> names = [] {
-    std::vector<std::string> v;
-    for (const auto& h : kHideable) v.emplace_back(h.api_name);
-    return v;
-  }();
-  return names;
-}
-
 StudentState::StudentState(const StudentOptions& options) : runtime_(options.limits), options_(options) {
   runtime_.set_print([this](const std::string& line) {
     output_ += line;
@@ -99,7 +58,7 @@ StudentState::StudentState(const StudentOptions& options) : runtime_(options.lim
   mesh_limits_for_students.storage_bytes = std::max<size_t>(options.limits.memory_bytes, size_t(64) << 20);
   set_mesh_limits(L, mesh_limits_for_students);
   Setup s{&options_, &returned_tables_ref_};
-  lua_pushcfunction(L, setup);
+  lua_pushcfunction(L, guarded<setup>);
   lua_pushlightuserdata(L, &s);
   runtime_.call(1, 0);
   install_references();

@@ -5,10 +5,9 @@
 // - One fresh state per test (a new LuaRuntime): nothing a student's code does to its globals, the RNG or
 //   metatables outlives the test. Suite code never runs in this state and nothing of the suite's state is
 //   reachable from it: values cross by copy (value_bridge.h); meshes are shared C++ objects.
-// - No file access from student code: besides LuaRuntime's whitelist (no io, os.execute, require, debug,
-//   load of bytecode, string.dump), meshedit.load, load_curve, load_patches and mesh:save are removed. The
-//   mesh and Bézier operations that ARE exercises (mesh:flip, :split, :collapse, :loop_subdivide,
-//   meshedit.curve, meshedit.patch) are removed too unless the test allows them by name ("mesh:flip").
+// - The student API is script/student_api.h's, the window's own: no file access, and the operations that are
+//   exercises (mesh:flip, :split, :collapse, :loop_subdivide, meshedit.curve, meshedit.patch) hidden unless the
+//   test allows them by name ("mesh:flip"); a hidden one raises the same words as in the window.
 // - Student files all run in the state's one global environment, in the order given, so split.lua may call
 //   a helper flip.lua defines (as in a real program). A function is found as a global first, then in the
 //   tables the files returned, in load order. Lookups are raw: no student __index runs to find it.
@@ -33,7 +32,7 @@ struct StudentOptions {
   LuaLimits limits;
   size_t output_bytes = size_t(64) << 10;
   std::vector<std::string> reference;  // reference functions to install (names checked by the suite loader)
-  std::vector<std::string> allow_api;  // "mesh:flip", "meshedit.curve", ... (see student_api_names)
+  std::vector<std::string> allow_api;  // "mesh:flip", "meshedit.curve", ... (hideable_api_names, script/student_api.h)
 };
 
 // A student file failed to load (compile or run its top level).
@@ -41,10 +40,6 @@ class LoadFailure : public ScriptError {
  public:
   LoadFailure(const std::string& message, Limit limit) : ScriptError(message, limit) {}
 };
-
-// The API entries hidden from students unless a test allows them: "mesh:flip", "mesh:split",
-// "mesh:collapse", "mesh:loop_subdivide", "meshedit.curve", "meshedit.patch".
-const std::vector<std::string>& hideable_api_names();
 
 class StudentState {
  public:

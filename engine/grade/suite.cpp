@@ -13,10 +13,11 @@
 #include <lua.hpp>
 
 #include "grade/expectations.h"
-#include "grade/reference_functions.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
 #include "script/exception_text.h"
+#include "script/reference_functions.h"
+#include "script/student_api.h"
 
 namespace meshedit {
 namespace {
@@ -34,7 +35,7 @@ const std::set<std::string> kVisibilities = {"visible", "hidden", "after_due_dat
 struct Fields {
   std::optional<std::string> name, number, visibility;
   std::optional<double> points, time_limit, memory_mb, output_kb;
-  std::optional<bool> partial;
+  std::optional<bool> partial, extra_credit;
   std::optional<std::vector<std::string>> files, reference, allow_api, tags;
   int run_ref = LUA_NOREF;
 };
@@ -95,7 +96,7 @@ struct SuiteApi {
                                                        "reference", "allow_api", "partial",    "output_kb"};
     static const std::set<std::string> test_fields = {"name",  "points",    "number",    "visibility", "time_limit",
                                                       "memory_mb", "partial", "files",     "reference",  "allow_api",
-                                                      "tags",  "run"};
+                                                      "tags",  "extra_credit", "run"};
     const auto& allowed = test ? test_fields : suite_fields;
     lua_pushnil(L);
     while (lua_next(L, 1) != 0) {
@@ -123,6 +124,11 @@ struct SuiteApi {
       if (get("points")) f.points = number_field(L, -1, "points", 0.0, 1e6);
       lua_pop(L, 1);
       if (get("tags")) f.tags = string_list(L, lua_gettop(L), "tags");
+      lua_pop(L, 1);
+      if (get("extra_credit")) {
+        if (!lua_isboolean(L, -1)) luaL_error(L, "field 'extra_credit' must be true or false");
+        f.extra_credit = lua_toboolean(L, -1);
+      }
       lua_pop(L, 1);
       if (lua_getfield(L, 1, "run") != LUA_TFUNCTION) {
         luaL_error(L, "test '%s': field 'run' must be a function(student, expect)", f.name->c_str());
@@ -383,6 +389,7 @@ void Suite::finish_loading(const std::string& chunk_name) {
     t.reference = pick(&Fields::reference, std::vector<std::string>{});
     t.allow_api = pick(&Fields::allow_api, std::vector<std::string>{});
     t.tags = f.tags.value_or(std::vector<std::string>{});
+    t.extra_credit = f.extra_credit.value_or(false);
     t.run_ref = f.run_ref;
     tests_.push_back(std::move(t));
   }

@@ -7,8 +7,9 @@
 //       defaults for every test (any order in the file; optional)
 //   test{ name = "flip: interior edge", points = 2, number = "1.1", visibility = "after_due_date",
 //         time_limit = 2, memory_mb = 64, partial = true, files = {...}, reference = {...},
-//         allow_api = {...}, tags = {"flip"}, run = function(student, expect) ... end }
-//       declares a test; `name` and `run` are required; unknown fields are errors (typos do not pass silently)
+//         allow_api = {...}, tags = {"flip"}, extra_credit = false, run = function(student, expect) ... end }
+//       declares a test; `name` and `run` are required; unknown fields are errors (typos do not pass silently);
+//       an extra_credit test's points add to the score on top of the base points (grader.h)
 //   SUITE_DIR   the folder of the suite file, for fixtures: meshedit.load(SUITE_DIR .. "/cow.dae")
 //   include("flip.lua")   runs another suite file of the same folder here (one assignment suite gathering the
 //               parts' suites); its suite{} defaults merge with this file's, field by field, the last call winning

@@ -1,7 +1,9 @@
-// compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake
-// before the raw differences (issue 5's list of real mistakes: a step that drops the last point or swaps the
-// weights, u and v swapped, unweighted normals, forgotten halfedge pointers, a flipped boundary edge, a split
-// vertex at the wrong place, wrong flips or wrong positions in Loop subdivision, a loop that never ends).
+// compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake before the
+// raw differences (the students' real mistakes: a step that drops the last point or swaps the weights, u and v
+// swapped, unweighted normals, forgotten halfedge pointers, a next pointer left as it was that breaks a face cycle,
+// a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong weights or misplaced positions in
+// Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
+// so a failure there reads like the window.
 //
 // Tolerances: points and normals within 1e-9 of the reference (scaled by the input's size for points),
 // meshes within 1e-9 x the bounding-box diagonal (at least 1e-9); "identical" means bit for bit and, for
@@ -20,6 +22,7 @@
 #include "core/normals.h"
 #include "core/value_format.h"
 #include "script/exercises.h"
+#include "script/loop_position_diagnosis.h"
 
 namespace meshedit {
 namespace {
@@ -251,6 +254,30 @@ void add_validation(const ExerciseReport& report, const char* function, Messages
   out.count(v.total - v.violations.size());
 }
 
+// When a face cycle is broken: the next pointers the reference rewrote and yours left as they were (the pointer
+// that breaks the cycle is usually one of them).
+void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before, const char* function,
+                        Messages& out) {
+  const ValidationReport& v = *report.mine.validation;
+  const bool cycle_broken = std::any_of(v.violations.begin(), v.violations.end(), [](const Violation& x) {
+    return x.invariant == Invariant::FaceCycle || x.invariant == Invariant::NextNotPermutation;
+  });
+  if (!cycle_broken) return;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+  std::string items;
+  size_t count = 0;
+  for (HalfedgeId h : before.halfedges()) {
+    if (!mine.alive(h) || !reference.alive(h)) continue;
+    if (reference.next(h) == before.next(h) || mine.next(h) != before.next(h)) continue;
+    if (count++ < 3) items += (items.empty() ? "" : ", ") + id(h) + ".next is still " + id(before.next(h));
+  }
+  if (count == 0) return;
+  out.add(items + (count > 3 ? " (and " + std::to_string(count - 3) + " more)" : "") + " after your " + function +
+          ", as before the call; the reference changes " + (count == 1 ? "it: that pointer breaks" : "them: these "
+          "pointers break") + " the face cycle");
+}
+
 std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) {
   const std::vector<FieldChange> changes = diff(before, after);
   if (changes.empty()) return "";
@@ -273,15 +300,17 @@ void note_pointer_differences(ExerciseReport& report, const std::string& what) {
                          exact.differences.front());
 }
 
-// The project's convention (not the course's): a boundary vertex's halfedge is its boundary halfedge.
+// The course's rule for a boundary vertex's halfedge: any halfedge leaving it (the course's own builder picks an
+// interior one). MeshEdit's operations keep it on the boundary loop; a student's that does not is accepted, and
+// the window says so in a note, as the grader (which compares through this code) accepts it.
 void note_boundary_convention(ExerciseReport& report) {
   const HalfedgeMesh& m = *report.mine.mesh;
   for (VertexId v : m.vertices()) {
     const HalfedgeId h = m.halfedge(v);
     if (!m.alive(h) || m.face(h).is_boundary() || !m.is_boundary(v)) continue;
-    report.notes.push_back(id(v) + " is on the boundary but its halfedge " + id(h) +
-                           " is not on the boundary loop; the reference keeps boundary halfedges there (the course "
-                           "does not require it)");
+    report.notes.push_back(id(v) + " is on the boundary and its halfedge " + id(h) +
+                           " is not on the boundary loop: accepted (the course lets a vertex's halfedge be any "
+                           "halfedge leaving it; MeshEdit's own operations keep a boundary vertex's on the loop)");
     return;
   }
 }
@@ -319,6 +348,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
     report.equal = false;
     return;
   }
+  add_unchanged_next(report, before, "flip_edge", out);
   add_validation(report, "flip_edge", out);
   if (report.mine.element != ElementRef(e)) {
     out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + id(e));
@@ -365,6 +395,7 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
     report.equal = false;
     return;
   }
+  add_unchanged_next(report, before, "split_edge", out);
   add_validation(report, "split_edge", out);
 
   const ElementRef m = report.mine.element;
@@ -443,6 +474,9 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
             "(1 - n u) p + u (sum of the neighbours)");
   }
 
+  // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
+  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+
   // Coinciding vertices: positions written to the wrong vertices make the mesh collapse.
   std::vector<glm::dvec3> positions;
   for (VertexId v : mine.vertices()) positions.push_back(mine.position(v));
@@ -516,22 +550,30 @@ void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messag
 void add_run_failure(Exercise exercise, const ExerciseReport& report, Messages& out) {
   const std::string& error = report.mine.error;
   out.add(error);
-  const bool endless = error.find("instruction budget exceeded") != std::string::npos ||
-                       error.find("time limit exceeded") != std::string::npos ||
-                       error.find("memory limit exceeded") != std::string::npos ||
-                       error.find("scripts may make at most") != std::string::npos ||
-                       error.find("changes recorded") != std::string::npos;
-  if (!endless) return;
-  if (exercise == Exercise::Upsample) {
-    out.add("upsample did not finish: split only the edges of the original mesh (list them before the first "
-            "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create");
-  } else if (exercise == Exercise::FlipEdge || exercise == Exercise::SplitEdge || exercise == Exercise::VertexNormal) {
-    out.add("it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
-            "start when a pointer is wrong");
-  }
+  const bool unfinished = error.find("instruction budget exceeded") != std::string::npos ||
+                          error.find("time limit exceeded") != std::string::npos ||
+                          error.find("memory limit exceeded") != std::string::npos ||
+                          error.find("scripts may make at most") != std::string::npos ||
+                          error.find("changes recorded") != std::string::npos;
+  if (!unfinished) return;
+  if (std::string hint = unfinished_run_hint(exercise); !hint.empty()) out.add(std::move(hint));
 }
 
 }  // namespace
+
+std::string unfinished_run_hint(Exercise exercise) {
+  switch (exercise) {
+    case Exercise::Upsample:
+      return "upsample did not finish: split only the edges of the original mesh (list them before the first "
+             "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create";
+    case Exercise::FlipEdge:
+    case Exercise::SplitEdge:
+    case Exercise::VertexNormal:
+      return "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
+             "start when a pointer is wrong";
+    default: return "";
+  }
+}
 
 std::string ExerciseReport::summary() const {
   if (equal) return "same as the reference";

@@ -13,6 +13,7 @@
 #include <algorithm>
 #include <fstream>
 #include <iterator>
+#include <new>
 #include <stdexcept>
 
 #include <lua.hpp>
@@ -26,6 +27,8 @@
 #include "script/binding_support.h"
 #include "script/edit_recorder.h"
 #include "script/mesh_bindings.h"
+#include "script/reference_functions.h"
+#include "script/student_api.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -127,7 +130,7 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
       add();
       break;
     case Exercise::PatchEvaluate:
-      push_patch(L, input.patch);
+      push_student_patch(L, input.patch);
       add();
       lua_pushnumber(L, input.u);
       add();
@@ -154,10 +157,12 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
   lua_setfield(L, -2, "n");
 }
 
-// Reads the first result (at the top of the stack) into the outcome, by exercise.
-void read_result(lua_State* L, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh, ExerciseOutcome& out) {
+}  // namespace
+
+void read_returned_value(lua_State* L, int index, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh,
+                         ExerciseOutcome& out) {
   const ExerciseInfo& info = exercise_info(exercise);
-  const int top = lua_gettop(L);
+  const int top = lua_absindex(L, index);
   out.returned = describe_value(L, top);
   out.ran = true;
   switch (exercise) {
@@ -207,8 +212,6 @@ void read_result(lua_State* L, Exercise exercise, const std::shared_ptr<Halfedge
     case Exercise::Upsample: return;
   }
 }
-
-}  // namespace
 
 // ---- catalogue and inputs ---------------------------------------------------------------------------------
 
@@ -297,12 +300,48 @@ StudentCode::StudentCode(LuaLimits limits) : runtime_(std::make_unique<LuaRuntim
   helpers_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_newtable(L);
   modules_ref_ = luaL_ref(L, LUA_REGISTRYINDEX);
+  // Until an exercise runs, student code sees the API with everything hideable hidden (its files' top level).
+  try {
+    open_exercise_api(nullptr);
+  } catch (const ScriptError& e) {
+    if (e.out_of_memory()) throw std::bad_alloc();  // as any other allocation of the constructor
+    throw;
+  }
   runtime_->set_print([this](const std::string& line) {
     if (output_ && output_->size() < kMaxOutputLines) output_->push_back(line.substr(0, kMaxOutputLineBytes));
   });
 }
 
 StudentCode::~StudentCode() = default;
+
+namespace {
+
+// Run in protected mode (guarded: a C++ exception becomes a Lua error) with the ExerciseApi to show, or nullptr.
+int apply_exercise_api(lua_State* L) {
+  const auto* api = static_cast<const ExerciseApi*>(lua_touserdata(L, 1));
+  set_student_api(L, api ? std::span<const std::string>(api->allow_api) : std::span<const std::string>());
+  if (api) {
+    for (const std::string& name : api->reference) install_reference_function(L, name);
+  }
+  return 0;
+}
+
+}  // namespace
+
+void StudentCode::open_exercise_api(const Exercise* exercise) {
+  lua_State* L = runtime_->state();
+  lua_pushcfunction(L, guarded<apply_exercise_api>);
+  lua_pushlightuserdata(L, const_cast<ExerciseApi*>(exercise ? &exercise_api(*exercise) : nullptr));
+  if (const int status = lua_pcall(L, 1, 0, 0); status != LUA_OK) {
+    const std::string message = lua_tostring(L, -1) ? lua_tostring(L, -1) : "?";
+    lua_settop(L, 0);
+    // Memory running out here is not the student's doing: flagged as run_mine's own out-of-memory errors are.
+    if (status == LUA_ERRMEM || runtime_->ran_out_of_memory()) {
+      throw ScriptError(message, ScriptError::Limit::None, true);
+    }
+    throw ScriptError("cannot set up the student API: " + message);
+  }
+}
 
 // Calls the closure in the registry under `closure_ref` through run_string (so the limits apply).
 void StudentCode::run_protected(int closure_ref) {
@@ -409,6 +448,13 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   ExerciseOutcome out;
   if (is_mesh_exercise(exercise)) out.mesh = std::make_shared<HalfedgeMesh>(*input.mesh);
 
+  try {
+    open_exercise_api(&exercise);
+  } catch (const ScriptError& e) {
+    out.error = e.what();
+    out.out_of_memory = e.out_of_memory();
+    return out;
+  }
   lua_State* L = runtime_->state();
   lua_settop(L, 0);
   if (!push_function(exercise)) {
@@ -461,7 +507,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
     lua_pushliteral(L, "result");
     if (lua_rawget(L, -2) == LUA_TTABLE) {
       lua_rawgeti(L, -1, 1);
-      read_result(L, exercise, out.mesh, out);
+      read_returned_value(L, -1, exercise, out.mesh, out);
     } else {
       out.error = "the call of " + std::string(info.function) + " gave no result table";
     }

@@ -12,13 +12,17 @@
 // - Student code runs in its own LuaRuntime (the sandbox and limits of lua_runtime.h), one per
 //   StudentCode; a Lua error, a limit or a wrong return type becomes ExerciseOutcome::error, never an
 //   exception out of run_mine. After "mine" on a mesh, validate() always runs.
+// - Student code sees the student API of student_api.h, grading's own: the file functions and the exercises'
+//   reference operations hidden (a refusal in the same words), upsample given mesh:flip, mesh:split and the
+//   reference flip_edge and split_edge.
 // - The reference is the core: de_casteljau_step, evaluate_patch, vertex_normal (area-weighted), flip, split
 //   and loop_subdivide with the course's weights (core/loop_subdivision.h), so "mine" and the app's own
 //   operations agree by construction.
 // - `equal` is the verdict (the same answer as the reference, up to renumbering and rounding); `identical`
 //   is stronger (bit for bit, pointer for pointer). The correct solutions in tests/script/solutions are
 //   identical on every input the tests use.
-// - Messages name elements with format_id, say "yours" and "the reference", and put the likely mistake first.
+// - Messages name elements with format_id, say "yours" and "the reference", and put the likely mistake first. The
+//   grader records the same messages (expect.exercise), so the window and the grader say the same thing.
 #pragma once
 
 #include <cstddef>
@@ -119,6 +123,9 @@ class StudentCode {
  private:
   void run_protected(int closure_ref);
   bool push_function(Exercise exercise);
+  // Shows what `exercise` may use of the student API (student_api.h) and installs its reference functions; with
+  // nullptr, hides everything hideable. Throws ScriptError if the bindings cannot be restricted.
+  void open_exercise_api(const Exercise* exercise);
 
   std::unique_ptr<LuaRuntime> runtime_;
   int helpers_ref_ = -1;  // registry ref: the helper functions, made before any student code runs
@@ -148,8 +155,20 @@ struct ExerciseReport {
   std::string summary() const;
 };
 
+// Reads what a student's function returned (the value at `index` of L) into `out`, as run_mine does: out.ran, and
+// out.error for a value of the wrong shape; out.returned described; the points, or the element when it is a handle
+// of `mesh`. Reads raw: no metamethod runs. The grader reads the values a student's function returned to the suite
+// through this too (expect.exercise).
+void read_returned_value(lua_State* L, int index, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh,
+                         ExerciseOutcome& out);
+
 // Compares two outcomes of the same exercise and input.
 ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOutcome mine, ExerciseOutcome reference);
+// What to tell a student whose `exercise` ran out of time, instructions or memory ("upsample did not finish: split
+// only the edges of the original mesh ..."); the window adds it under the limit's error, the grader under its
+// "Timed out" or "Out of memory" line.
+std::string unfinished_run_hint(Exercise exercise);
+
 // run_mine, run_reference, compare.
 ExerciseReport check_exercise(StudentCode& code, Exercise exercise, const ExerciseInput& input,
                               const RunOptions& options = {});

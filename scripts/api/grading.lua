@@ -25,6 +25,7 @@ function suite(spec) end
 ---@field points? number
 ---@field number? string "1.1"
 ---@field tags? string[]
+---@field extra_credit? boolean its points add on top of the base points (max_score 0 in results.json)
 
 ---Declares a test. Unknown fields are errors.
 ---@param spec TestSpec
@@ -134,3 +135,15 @@ function Expect.fail(message) end
 ---@param message? string
 ---@return boolean
 function Expect.score(fraction, message) end
+
+---The window's own check of one exercise: the core's answer as the reference, and on failure the window's
+---diagnosis ("f0.halfedge is h0, but h0.face is f1"). `input` is what the student's function was given, meshes as
+---they were before the call: {points=, t=}, {patch=, u=, v=}, {mesh=, vertex=}, {mesh=, edge=} or {mesh=};
+---`yours` is the mesh the student's function worked on (nil for evaluate_step and evaluate).
+---@param exercise "evaluate_step"|"evaluate"|"vertex_normal"|"flip_edge"|"split_edge"|"upsample"
+---@param input table
+---@param returned any what the student's function returned
+---@param yours? Mesh
+---@param message? string
+---@return boolean
+function Expect.exercise(exercise, input, returned, yours, message) end

@@ -21,8 +21,9 @@
 -- WHAT YOU MAY USE
 --   #points, points[i], a for loop; vec3 arithmetic: a + b, a - b, a * 2, 2 * a, a / 2, -a, tostring(a);
 --   meshedit.vec3(x, y, z) makes a point. Fields p.x, p.y, p.z.
---   To see the reference: local c = meshedit.curve(points); c:evaluate(t), and c:levels(t), the list of every
---   level: Lua lists start at 1, so c:levels(t)[1] is level 0 (the control points) and [k + 1] is level k.
+--   To see the reference, in the Lua console (hidden from your code): local c = meshedit.curve(points);
+--   c:evaluate(t), and c:levels(t), the list of every level: Lua lists start at 1, so c:levels(t)[1] is level 0
+--   (the control points) and [k + 1] is level k.
 --
 -- CHECKING
 --   In the app's curve view, tick "mine" (or press M) and press E: each level comes from this function, run on

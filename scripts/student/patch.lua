@@ -24,7 +24,7 @@
 --
 -- WHAT YOU MAY USE
 --   patch.points (a fresh list each time you read it: read it once), vec3 arithmetic (a + b, a * 2, 2 * a,
---   a - b, a / 2), meshedit.vec3(x, y, z). To see the reference: meshedit.patch(points):evaluation(u, v)
+--   a - b, a / 2), meshedit.vec3(x, y, z). Console only (hidden in your code): meshedit.patch(points):evaluation(u, v)
 --   returns {rows = {q1..q4}, column_levels = {...}, point = ...}.
 --
 -- CHECKING

@@ -73,8 +73,8 @@ TEST(CliGrade, AFailingSubmissionIsStillAGradingThatWorked) {
   EXPECT_EQ(o.status, 0) << o.err;
   // With --tap, stdout is TAP only.
   EXPECT_EQ(o.out.rfind("TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles\n", 0), 0u) << o.out;
-  EXPECT_TRUE(ends_with(o.out, "# score 3.142857 / 10\n# 1 passed, 4 failed\n")) << o.out;
-  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "r.json")).at("score"), 3.142857);
+  EXPECT_TRUE(ends_with(o.out, "# score 2 / 10\n# 1 passed, 4 failed\n")) << o.out;
+  EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "r.json")).at("score"), 2.0);
 }
 
 struct Broken {
@@ -165,18 +165,18 @@ TEST(CliGrade, AWholeClassInParallel) {
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out,
             "alice: 10 / 10 (5 passed, 0 failed)\n"
-            "bob: 3.142857 / 10 (1 passed, 4 failed)\n"
+            "bob: 2 / 10 (1 passed, 4 failed)\n"
             "carol: 9 / 10 (4 passed, 1 failed)\n"
             "3 of 3 submissions graded; summary in marks/summary.csv\n");
   EXPECT_EQ(read_text(dir / "marks" / "summary.csv"),
             "submission,status,score,max_score,passed,failed,results,problem\n"
             "alice,graded,10,10,5,0,marks/alice/results.json,\n"
-            "bob,graded,3.142857,10,1,4,marks/bob/results.json,\n"
+            "bob,graded,2,10,1,4,marks/bob/results.json,\n"
             "carol,graded,9,10,4,1,marks/carol/results.json,\n");
   const auto summary = nlohmann::json::parse(read_text(dir / "marks" / "summary.json"));
   ASSERT_EQ(summary.size(), 3u);
   EXPECT_EQ(summary[1]["submission"], "bob");
-  EXPECT_EQ(summary[1]["score"], 3.142857);
+  EXPECT_EQ(summary[1]["score"], 2.0);
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "marks" / "carol" / "results.json")).at("score"), 9.0);
 }
 
@@ -193,7 +193,8 @@ TEST(CliGrade, TheGradescopeRunAutograderScript) {
   ASSERT_TRUE(WIFEXITED(raw));
   EXPECT_EQ(WEXITSTATUS(raw), 0) << read_text(dir / "stdout.txt");
   const auto results = nlohmann::json::parse(read_text(dir / "results" / "results.json"));
-  EXPECT_EQ(results.at("score"), 56.0);
+  EXPECT_EQ(results.at("score"), 56.0);      // 54 base points and the 2 of extra credit
+  EXPECT_EQ(results.at("max_score"), 54.0);
   EXPECT_EQ(results.at("tests").size(), 29u);
   EXPECT_TRUE(ends_with(read_text(dir / "stdout.txt"), "29 passed, 0 failed\n"));
 }

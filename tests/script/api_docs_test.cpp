@@ -205,7 +205,7 @@ TEST(ApiDocsFiles, LessonAndGradingMetaFilesNameTheRealGlobals) {
   Documented grading = parse_meta(dir / "grading.lua");
   EXPECT_EQ(grading.functions["Expect"],
             (std::set<std::string>{"truthy", "falsy", "is_nil", "equal", "near", "valid", "mesh_equal",
-                                   "same_pointers", "counts", "pass", "fail", "score"}));
+                                   "same_pointers", "counts", "pass", "fail", "score", "exercise"}));
   EXPECT_EQ(grading.functions["Student"], (std::set<std::string>{"has", "call", "output"}));
 }
 

@@ -4,6 +4,8 @@
 // names file:line and changes nothing; show_state keeps history; the panel draws with a report and a replay.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <chrono>
 #include <fstream>
 #include <string>
@@ -43,6 +45,22 @@ std::string broken_flip() {
   EXPECT_NE(at, std::string::npos);
   if (at != std::string::npos) text.erase(at, line.size());
   return text;
+}
+
+// The solution flip with `line` put in front of its first line or of its `return e`.
+std::string solution_flip_with(const std::string& line, bool before_return) {
+  std::string text = testing::read_text(solutions() / "flip.lua");
+  const std::string anchor = before_return ? "  return e\n" : "function flip_edge(mesh, e)\n";
+  const size_t at = text.find(anchor);
+  EXPECT_NE(at, std::string::npos);
+  if (at != std::string::npos) text.insert(before_return ? at : at + anchor.size(), line + "\n");
+  return text;
+}
+
+// The line of `text` (from 1) holding `needle`.
+int line_of(const std::string& text, const std::string& needle) {
+  const size_t at = text.find(needle);
+  return 1 + static_cast<int>(std::count(text.begin(), text.begin() + static_cast<std::ptrdiff_t>(at), '\n'));
 }
 
 TEST(ExerciseSession, MineWithTheSolutionIsTheReferencePointerForPointerAndOneUndoEntry) {
@@ -212,7 +230,7 @@ TEST(ExerciseSession, ASavedFileIsReloadedOnTheNextRun) {
   EXPECT_EQ(session.loads(), 1u);  // unchanged: not loaded again
   EXPECT_FALSE(session.file_changed());
 
-  write_file(folder / "flip.lua", "function flip_edge(mesh, e) print('two', 2) return mesh:flip(e) end\n");
+  write_file(folder / "flip.lua", solution_flip_with("  print('two', 2)", false));
   // Some file systems keep whole seconds: move the time on so the test does not depend on them.
   std::filesystem::last_write_time(folder / "flip.lua",
                                    std::filesystem::last_write_time(folder / "flip.lua") + std::chrono::seconds(2));
@@ -248,7 +266,9 @@ TEST(ExerciseSession, ASyntaxErrorNamesFileAndLineAndChangesNothing) {
 // Warning, as any other error half way (memory really running out is told by a flag: tests/out_of_memory).
 TEST(ExerciseSession, AStudentsOwnMemoryRanOutErrorIsTheStudentsError) {
   const auto folder = testing::scratch_dir();
-  write_file(folder / "flip.lua", "function flip_edge(mesh, e)\n  mesh:flip(e)\n  error('memory ran out')\nend\n");
+  const std::string text = solution_flip_with("  error('memory ran out')", true);
+  write_file(folder / "flip.lua", text);
+  const std::string error = "flip.lua:" + std::to_string(line_of(text, "error('memory ran out')")) + ": memory ran out";
   MeshDocument doc = cube_document();
   HalfedgeMesh flipped = doc.mesh;
   ASSERT_TRUE(flip(flipped, EdgeId(7)).ok());
@@ -256,17 +276,17 @@ TEST(ExerciseSession, AStudentsOwnMemoryRanOutErrorIsTheStudentsError) {
   Selection selection = select(EdgeId(7));
   const Check check = session.run_mine(doc, selection);
   EXPECT_FALSE(check.ok);
-  EXPECT_EQ(check.reason, "flip.lua:3: memory ran out");
+  EXPECT_EQ(check.reason, error);
   ASSERT_TRUE(session.last_run().has_value()) << doc.message.text;
   const ExerciseRun& run = *session.last_run();
   EXPECT_EQ(run.label, "mine (error): flip e7");
-  EXPECT_EQ(run.report.mine.error, "flip.lua:3: memory ran out");
+  EXPECT_EQ(run.report.mine.error, error);
   EXPECT_FALSE(run.report.mine.out_of_memory);
   EXPECT_TRUE(run.applied);
   EXPECT_TRUE(doc.mesh.same_as(flipped));  // what it did before the error goes in
   EXPECT_EQ(doc.history.undo_label(), "mine (error): flip e7");
   EXPECT_EQ(doc.message.severity, Severity::Warning);
-  EXPECT_NE(doc.message.text.find("flip.lua:3: memory ran out"), std::string::npos) << doc.message.text;
+  EXPECT_NE(doc.message.text.find(error), std::string::npos) << doc.message.text;
 }
 
 TEST(ExerciseSession, TheSelectionMustFitTheExercise) {

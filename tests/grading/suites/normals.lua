@@ -1,23 +1,11 @@
--- Grading suite for part 3, vertex_normal(v) in normals.lua: the area-weighted unit normal. The reference is
--- written here in the suite (it runs in the suite's state, never in the student's): the normalised sum of
--- the cross products (p1 - p0) x (p2 - p0) of the faces around v, boundary loops skipped.
+-- Grading suite for part 3, vertex_normal(v) in normals.lua: the area-weighted unit normal (the normalised sum of
+-- the cross products (p1 - p0) x (p2 - p0) of the faces around v, boundary loops skipped). Each normal is checked
+-- by expect.exercise, the window's own check: the core's vertex_normal as the reference, and the window's
+-- diagnosis (an average of unit normals, an inward or unnormalised normal, a boundary loop counted as a face).
 suite{ name = "vertex_normal", files = {"normals.lua"}, time_limit = 5, memory_mb = 64 }
 
 local vec3 = meshedit.vec3
 math.randomseed(184)
-
-local function reference_normal(v)
-  local sum = vec3(0, 0, 0)
-  local h = v.halfedge
-  repeat
-    if not h.face:is_boundary() then
-      local p0, p1, p2 = h.vertex.position, h.next.vertex.position, h.next.next.vertex.position
-      sum = sum + (p1 - p0):cross(p2 - p0)
-    end
-    h = h.twin.next
-  until h == v.halfedge
-  return sum:normalized()
-end
 
 -- A fan around v0 whose triangles have very different areas: averaging unit normals is visibly wrong here.
 local fan = meshedit.from_polygons(
@@ -27,19 +15,22 @@ local fan = meshedit.from_polygons(
 local bumpy = meshedit.icosahedron()
 for v in bumpy:vertices() do v.position = v.position * (0.8 + 0.4 * math.random()) end
 
+-- The student's normal of vertex `id` of a copy of `mesh`, checked as the window checks it.
+local function check(student, expect, mesh, id, what)
+  local mine = mesh:copy()
+  return expect.exercise("vertex_normal", {mesh = mesh, vertex = id}, student.vertex_normal(mine:vertex(id)), mine,
+                         what)
+end
+
 local function check_all(student, expect, mesh, what)
-  for v in mesh:vertices() do
-    expect.near(student.vertex_normal(v), reference_normal(v), 1e-9, what .. ", vertex " .. tostring(v))
-  end
+  for v in mesh:vertices() do check(student, expect, mesh, v.id, what .. ", vertex " .. tostring(v)) end
 end
 
 test{ number = "3.1", name = "the vertices of a cube", points = 2, partial = true,
   run = function(student, expect) check_all(student, expect, meshedit.cube(), "cube") end }
 
 test{ number = "3.2", name = "a fan of triangles of very different areas (area weighting)", points = 3,
-  run = function(student, expect)
-    expect.near(student.vertex_normal(fan:vertex(0)), reference_normal(fan:vertex(0)), 1e-9, "the centre of the fan v0")
-  end }
+  run = function(student, expect) check(student, expect, fan, 0, "the centre of the fan v0") end }
 
 test{ number = "3.3", name = "the mesh is not changed", points = 1,
   run = function(student, expect)

@@ -1,5 +1,6 @@
--- Grading suite for part 2, evaluate(patch, u, v) in patch.lua: rows at u, then the column at v. The
--- reference is the core's evaluation through meshedit.patch(points):evaluate(u, v) in the suite's own state.
+-- Grading suite for part 2, evaluate(patch, u, v) in patch.lua: rows at u, then the column at v. Each point is
+-- checked by expect.exercise, the window's own check (the core's evaluation as the reference; u and v swapped is
+-- named as such).
 -- The patches are not symmetric in u and v, so evaluating in the wrong order gives a different point.
 suite{ name = "evaluate", files = {"patch.lua"}, time_limit = 5, memory_mb = 64 }
 
@@ -20,7 +21,8 @@ end
 
 local function check(student, expect, patch, u, v, what)
   local mine = student.evaluate(patch, u, v)
-  return expect.near(mine, patch:evaluate(u, v), 1e-9, string.format("%s at (u, v) = (%g, %g)", what, u, v))
+  return expect.exercise("evaluate", {patch = patch, u = u, v = v}, mine, nil,
+                         string.format("%s at (u, v) = (%g, %g)", what, u, v))
 end
 
 test{ number = "2.1", name = "the four corners are control points", points = 2,

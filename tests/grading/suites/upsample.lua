@@ -1,26 +1,37 @@
--- Grading suite for part 6, upsample(mesh) in upsample.lua: Loop subdivision in place, compared with the
--- core's (mesh:loop_subdivide, the course's weights) up to renumbering. The reference flip and split are
--- given to the student's code (flip_edge, split_edge, mesh:flip, mesh:split), so a mistake in parts 4 and 5
--- is not paid for twice. Partial credit per test: 20% for a valid mesh, 40% when the element counts are right
--- too, all of it for the right shape (every vertex in its place, every face present).
+-- Grading suite for part 6, upsample(mesh) in upsample.lua: Loop subdivision in place. Each level is checked by
+-- expect.exercise, the window's own check: the core's Loop subdivision with the course's weights as the reference,
+-- the comparison up to renumbering, and the window's diagnosis (a wrong weight, named; edges flipped that were not
+-- new, or halves of split edges; positions written to the wrong vertices). The reference flip and split are given
+-- to the student's code (flip_edge, split_edge, mesh:flip, mesh:split: the window gives upsample the same), so a
+-- mistake in parts 4 and 5 is not paid for twice. Partial credit per base test: 20% for a valid mesh, 40% when the
+-- element counts are right too, all of it for the right shape. The boundary rules are extra credit in the course:
+-- test 6.4 adds its point on top of the base points, all or nothing.
 suite{ name = "upsample", files = {"upsample.lua"}, time_limit = 5, memory_mb = 128,
        reference = {"flip_edge", "split_edge"}, allow_api = {"mesh:flip", "mesh:split"} }
 
 local vec3 = meshedit.vec3
 
-local function check(student, expect, mesh, levels, what)
-  local mine, reference = mesh:copy(), mesh:copy()
+-- The share of the points a level that differs from the reference still earns.
+local function partial_share(mine, before)
+  if not mine:validate() then return 0 end
+  local reference = before:copy()
+  reference:loop_subdivide()
+  local counts = mine:num_vertices() == reference:num_vertices() and mine:num_edges() == reference:num_edges() and
+                 mine:num_faces() == reference:num_faces()
+  return counts and 0.4 or 0.2
+end
+
+local function check(student, expect, mesh, levels, what, all_or_nothing)
+  local mine = mesh:copy()
   for level = 1, levels do
+    local before = mine:copy()
     student.upsample(mine)
-    reference:loop_subdivide()
     local label = what .. (levels > 1 and (", level " .. level) or "")
-    if not expect.valid(mine, label) then return expect.score(0) end
+    if not expect.exercise("upsample", {mesh = before}, nil, mine, label) then
+      return expect.score(all_or_nothing and 0 or partial_share(mine, before))
+    end
   end
-  local label = what .. (levels > 1 and (", " .. levels .. " levels") or "")
-  local counts = expect.counts(mine, {vertices = reference:num_vertices(), edges = reference:num_edges(),
-                                      faces = reference:num_faces()}, label)
-  local shape = expect.mesh_equal(mine, reference, 1e-9, label)
-  expect.score(shape and counts and 1 or counts and 0.4 or 0.2)
+  expect.score(1)
 end
 
 test{ number = "6.1", name = "a tetrahedron, one level", points = 3,
@@ -32,8 +43,9 @@ test{ number = "6.2", name = "a cube, one level", points = 3,
 test{ number = "6.3", name = "an icosahedron, two levels", points = 2, visibility = "after_due_date",
   run = function(student, expect) check(student, expect, meshedit.icosahedron(), 2, "icosahedron") end }
 
-test{ number = "6.4", name = "a grid with a boundary, one level", points = 1, visibility = "hidden",
-  run = function(student, expect) check(student, expect, meshedit.grid(2, 2), 1, "2x2 grid") end }
+test{ number = "6.4", name = "a grid with a boundary, one level", points = 1, extra_credit = true,
+  visibility = "hidden",
+  run = function(student, expect) check(student, expect, meshedit.grid(2, 2), 1, "2x2 grid", true) end }
 
 test{ number = "6.5", name = "an irregular mesh (vertices of degree 3 to 6)", points = 2, visibility = "hidden",
   run = function(student, expect)

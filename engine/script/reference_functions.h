@@ -1,10 +1,11 @@
-// The reference solutions a suite can hand to student code, so that a test of one part does not punish a
-// mistake in another ("a test of upsample uses the reference flip and split").
+// The reference solutions handed to student code, so that one part does not punish a mistake in another ("upsample
+// uses the reference flip and split"): by a grading suite (`reference = {...}`) and by the window for the exercise
+// that builds on them (exercise_api in student_api.h), the same functions in both.
 //
 // Invariants:
 // - Every reference is a C function calling the core (mesh_ops.h, loop_subdivision.h, bezier.h, normals.h):
 //   student code can call it but never read it (no string.dump of C functions, no debug library).
-// - Each keeps the student-facing signature of its exercise (issue-4 contract): flip_edge(mesh, e) -> e | nil,
+// - Each keeps the student-facing signature of its exercise: flip_edge(mesh, e) -> e | nil,
 //   split_edge(mesh, e) -> new vertex | nil, upsample(mesh), vertex_normal(v) -> vec3,
 //   evaluate_step(points, t) -> points, evaluate(patch, u, v) -> vec3 (patch.points: 16, row-major).
 #pragma once

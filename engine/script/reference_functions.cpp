@@ -1,5 +1,5 @@
 // The reference solutions as Lua C functions over the core (see reference_functions.h).
-#include "grade/reference_functions.h"
+#include "script/reference_functions.h"
 
 #include <algorithm>
 #include <array>
