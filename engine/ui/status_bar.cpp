@@ -1,7 +1,9 @@
 // The status bar (see status_bar.h).
 #include "ui/status_bar.h"
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include <imgui.h>
@@ -56,17 +58,30 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoFocusOnAppearing |
                                  ImGuiWindowFlags_NoBringToFrontOnFocus;
   if (ImGui::Begin("##status bar", nullptr, flags)) {
+    // The up axis and the frame time keep their place at the right end; the rest, whose length varies (a message,
+    // the view's note, undo hints), is clipped before them rather than pushing them off the window.
+    char frame[32];
+    std::snprintf(frame, sizeof frame, "%.1f ms", static_cast<double>(frame_ms));
+    const bool show_axis = !state.up_axis.empty() && state.view_is_3d;
+    const float gap = 24.0f;
+    const float right_width = ImGui::CalcTextSize(frame).x +
+                              (show_axis ? ImGui::CalcTextSize(state.up_axis.data(), state.up_axis.data() +
+                                                                                         state.up_axis.size()).x + gap
+                                         : 0.0f);
+    const float left_width = std::max(1.0f, ImGui::GetContentRegionAvail().x - right_width - gap);
+    ImGui::BeginChild("##status left", ImVec2(left_width, ImGui::GetFrameHeight()), false,
+                      ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const HalfedgeMesh& mesh = doc.mesh;
     if (state.mesh_shown) {
       const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
       ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(),
                   mesh.num_faces(), mesh.num_halfedges(), mesh.num_boundaries(), chi);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
-      ImGui::SameLine(0.0f, 24.0f);
+      ImGui::SameLine(0.0f, gap);
       draw_validation(doc, selection, state);
     }
     if (!doc.message.text.empty()) {
-      ImGui::SameLine(0.0f, 24.0f);
+      ImGui::SameLine(0.0f, gap);
       ImGui::TextColored(severity_color(doc.message.severity), "%s", doc.message.text.c_str());
       if (in_range(doc.mesh, doc.message.element) && doc.message.severity != Severity::Info) {
         ImGui::SameLine();
@@ -76,25 +91,26 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
       }
     }
     if (!state.note.empty()) {
-      ImGui::SameLine(0.0f, 24.0f);
+      ImGui::SameLine(0.0f, gap);
       ImGui::TextDisabled("%s", state.note.c_str());
     }
-    if (!state.up_axis.empty() && state.view_is_3d) {
-      ImGui::SameLine(0.0f, 24.0f);
-      ImGui::TextDisabled("%.*s", int(state.up_axis.size()), state.up_axis.data());
-      if (state.probe) state.probe->record_last_item("up-axis");
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(state.up_axis_why.size()), state.up_axis_why.data());
-    }
-    ImGui::SameLine(0.0f, 24.0f);
     if (state.mesh_shown && doc.history.can_undo()) {
+      ImGui::SameLine(0.0f, gap);
       ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
     }
     if (state.mesh_shown && doc.history.can_redo()) {
       ImGui::SameLine();
       ImGui::TextDisabled(" Ctrl+Y: redo %s", doc.history.redo_label().c_str());
     }
-    ImGui::SameLine(0.0f, 24.0f);
-    ImGui::TextDisabled("%.1f ms", static_cast<double>(frame_ms));
+    ImGui::EndChild();
+    if (show_axis) {
+      ImGui::SameLine(0.0f, gap);
+      ImGui::TextDisabled("%.*s", int(state.up_axis.size()), state.up_axis.data());
+      if (state.probe) state.probe->record_last_item("up-axis");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(state.up_axis_why.size()), state.up_axis_why.data());
+    }
+    ImGui::SameLine(0.0f, gap);
+    ImGui::TextDisabled("%s", frame);
   }
   ImGui::End();
   return height;
