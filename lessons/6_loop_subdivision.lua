@@ -169,8 +169,8 @@ step("Phase 1: new positions", function()
 Every position is computed from the **original** mesh, before anything changes (that is why this phase
 only stores numbers):
 
-- an old vertex p with n neighbours q1..qn moves to (1 - n u) p + u (q1 + ... + qn), with u = 3/16 when
-  n = 3 and u = 3/(8n) otherwise
+- an old vertex p with n neighbours q1..qn moves to (1 - n u) p + u (q1 + ... + qn),
+  with u = 3/16 when n = 3 and u = 3/(8n) otherwise
 - the new vertex on an edge a-b, with c and d the corners opposite it, goes to 3/8 (a + b) + 1/8 (c + d)]]
   answer {
     "The yellow vertex v0 has 6 neighbours. What is u for it?",
@@ -190,7 +190,7 @@ only stores numbers):
     end,
     hint = "u = 3/(8n) for n > 3: put in n = 6.",
   }
-  say("u = 3/(8 * 6) = 1/16, and n u = 6/16 = **3/8**. That is so for every n > 3: n u = n * 3/(8n) = 3/8, "
+  say("u = 3/48 = 1/16, and n u = 6/16 = **3/8**. That is so for every n > 3: n u = 3n/(8n) = 3/8, "
     .. "whatever the degree. The vertex keeps 5/8 of its own position and its neighbours share the other 3/8, "
     .. "however many they are; the weights always sum to 1, so a flat patch stays flat. (n = 3 is the exception: "
     .. "u = 3/16, n u = 9/16.)")
@@ -204,7 +204,6 @@ only stores numbers):
       { label = "u = 1/n (no weight kept)", colour = "grey", fn = function() return 1 end },
     },
   }
-  label(v0, "degree " .. v0:degree() .. ", u = " .. fmt(state.u[0]))
   say("The yellow vertex `v0` has " .. v0:degree() .. " neighbours, so u = " .. fmt(state.u[0]) .. ": it will go from "
     .. tostring(v0.position) .. " to " .. tostring(state.vertex[0]) .. ". The new vertex on the orange edge `e0` "
     .. "will sit at " .. tostring(state.edge[0]) .. ".")
@@ -215,15 +214,15 @@ step("Phase 2: split every edge", function()
   show(meshedit.cube())
   choose {
     "Phase 2 splits edges. Which ones?",
-    options = { "The 18 edges of the original cube", "Every edge, including the ones the splits make",
-      "Only the edges that phase 3 will flip" },
-    answer = "The 18 edges of the original cube",
+    options = { "The 18 original edges", "Every edge, new ones too",
+      "Only the edges phase 3 flips" },
+    answer = "The 18 original edges",
     feedback = {
-      ["Every edge, including the ones the splits make"] = "Each split adds three edges; if those were split too, "
+      ["Every edge, new ones too"] = "Each split adds three edges; if those were split too, "
         .. "the loop would never end (and each face would be cut far more than into four).",
-      ["Only the edges that phase 3 will flip"] = "The edges phase 3 flips do not exist yet: splits make them. "
+      ["Only the edges phase 3 flips"] = "The edges phase 3 flips do not exist yet: splits make them. "
         .. "Phase 2 splits every edge of the mesh as it was before phase 2.",
-      ["The 18 edges of the original cube"] = "Only those: list them before the first split.",
+      ["The 18 original edges"] = "Only those: list them before the first split.",
     },
     hint = "Each split adds edges. What happens if the loop visits them too?",
   }
@@ -243,6 +242,7 @@ end)
 step("Phase 3: which edges flip", function()
   local mesh, state = cube_after(2)
   show(mesh)
+  view { halfedges = false, wireframe = true }  -- edges drawn, no arrows over them: a click picks an edge
   for v in mesh:vertices() do if state.is_new_vertex[v.id] then highlight(v, "yellow") end end
   say [[
 Here is the cube after phase 2 again; the new vertices are yellow, the old ones (the cube's corners) are not.
@@ -250,6 +250,7 @@ Phase 3 flips every **new** edge that joins an old vertex and a new one.]]
   pick {
     "Which of these edges should be flipped? Click one.",
     answer = function(x)
+      if x.kind == "halfedge" then x = x.edge end  -- an arrow stands for its edge
       if x.kind ~= "edge" then return false, "That is a " .. x.kind .. ": click an edge." end
       if state.is_new_edge[x.id] and old_to_new(state, x) then
         return true, "Yes: a new edge from a corner across an old face to a new vertex."
@@ -279,19 +280,20 @@ end)
 step("Phase 4: move", function()
   local mesh = cube_after(3)
   show(mesh)
+  view { halfedges = true }  -- back on after phase 3's question turned them off
   choose {
     "Phase 4 moves every vertex to a position phase 1 computed. Why compute them in phase 1, before any split, "
       .. "and not now?",
-    options = { "Now an old vertex's neighbours are the new vertices, not the original ones",
-      "Splits and flips would move the positions computed too early", "It is only faster that way" },
-    answer = "Now an old vertex's neighbours are the new vertices, not the original ones",
+    options = { "The neighbours have changed",
+      "Splits would move stored positions", "It is only faster" },
+    answer = "The neighbours have changed",
     feedback = {
-      ["Splits and flips would move the positions computed too early"] = "Splits and flips change pointers, and "
+      ["Splits would move stored positions"] = "Splits and flips change pointers, and "
         .. "a split only places m at a midpoint; the stored positions are numbers, nothing moves them. The "
         .. "question is what the weights would read now.",
-      ["It is only faster that way"] = "It is not about speed: computed now, the result would be wrong. Look at "
+      ["It is only faster"] = "It is not about speed: computed now, the result would be wrong. Look at "
         .. "v0's neighbours on screen.",
-      ["Now an old vertex's neighbours are the new vertices, not the original ones"] = "Right: the weights are "
+      ["The neighbours have changed"] = "Right: the weights are "
         .. "defined on the original mesh; after phase 2 an old vertex is joined only to new vertices.",
     },
     hint = "Select v0 and look at what it is joined to now.",
@@ -394,19 +396,18 @@ step("The cube's lopsided result", function()
   say("Here is the cube after two steps of L. A cube is symmetric, yet the result is **lopsided**: after two "
     .. "steps the 8 corners are between " .. fmt(lo) .. " and " .. fmt(hi) .. " from the centre. A symmetric "
     .. "input would put them all at the same distance.")
-  local right = "Its corners have different numbers of neighbours, and the weights depend on that number"
+  local right = "Corners differ in degree"
   choose {
-    "Why is it lopsided?",
-    options = { "Rounding error in the weights", "The edges were split in id order, so later splits saw a "
-      .. "changed mesh", right, "The cube's corners are not all the same distance from its centre" },
+    "Why is it lopsided? (degree: a vertex's number of neighbours)",
+    options = { "Rounding error", "Splitting in id order", right, "Corners at different distances" },
     answer = right,
     feedback = {
-      ["Rounding error in the weights"] = string.format("The corners differ by %.3f; rounding in double "
+      ["Rounding error"] = string.format("The corners differ by %.3f; rounding in double "
         .. "precision is about 1e-16. Something in the mesh itself differs from corner to corner.", hi - lo),
-      ["The edges were split in id order, so later splits saw a changed mesh"] = "Phase 1 computes every "
+      ["Splitting in id order"] = "Phase 1 computes every "
         .. "position from the original mesh before the first split, so the order of the splits cannot move "
         .. "anything; it only decides the new ids.",
-      ["The cube's corners are not all the same distance from its centre"] = "They are: every corner of the "
+      ["Corners at different distances"] = "They are: every corner of the "
         .. "cube is " .. fmt(mesh:vertex(0).position:length()) .. " from the centre before subdividing. Look at "
         .. "how each corner is connected instead.",
       [right] = "Right: the cube's 12 triangles cut each square face along one diagonal.",
@@ -500,15 +501,16 @@ rounded away, and the mesh shrinks inside its control mesh.]]
   say [[
 On screen is a cube on which every edge at corner v7 (yellow) was split before three steps of L; corner v0
 (orange) was left alone.]]
-  local right = "v7, whose edges were split first"
+  local right = "v7 (its edges split first)"
   choose {
-    "Which corner is now farther from the centre, the sharper one?",
-    options = { right, "v0, the untouched corner", "Both the same: the same rules run at every vertex" },
+    "Which corner is now farther from the centre, the sharper one: v7, whose edges were split first, or v0, "
+      .. "which was left alone?",
+    options = { right, "v0 (untouched)", "Both the same" },
     answer = right,
     feedback = {
-      ["v0, the untouched corner"] = "v0's averages run over neighbours at the far ends of whole cube edges, "
+      ["v0 (untouched)"] = "v0's averages run over neighbours at the far ends of whole cube edges, "
         .. "and they pull it in. How far are v7's neighbours after its edges were split?",
-      ["Both the same: the same rules run at every vertex"] = "The rules are the same, but what they average is "
+      ["Both the same"] = "The rules are the same, but what they average is "
         .. "not: after the splits v7's neighbours sit halfway along its edges, v0's at their far ends.",
       [right] = "v7: its neighbours are close to it, so its averages barely move it.",
     },
@@ -572,17 +574,17 @@ end)
 step("Your own upsample", function()
   show(meshedit.cube())
   camera "fit"
-  local right = "Flags set while splitting: m-c and m-d marked new, the halves not"
+  local right = "Flags set while splitting"
   choose {
-    "In your upsample, how will phase 3 find the edges to flip?",
-    options = { "Edges with an id past the original edge count", "Edges that join an old vertex and a new one",
+    "In your upsample, how will phase 3 find the edges to flip? Flags: is_new_edge set for m-c and m-d as you split, the halves a-m and m-b left unmarked.",
+    options = { "Ids past the original count", "One old end and one new end",
       right },
     answer = right,
     feedback = {
-      ["Edges with an id past the original edge count"] = "split keeps e's id for the half m-b and gives the "
+      ["Ids past the original count"] = "split keeps e's id for the half m-b and gives the "
         .. "half a-m a new id (ea): ids past the original count include halves of original edges, which must "
         .. "not be flipped.",
-      ["Edges that join an old vertex and a new one"] = "The halves of a split edge join an old vertex and a new "
+      ["One old end and one new end"] = "The halves of a split edge join an old vertex and a new "
         .. "one too: that test alone flips them, the trap of phase 3. Only new edges with one old and one new end.",
       [right] = "Yes: flag them as you split, then flip the flagged edges with one old end and one new end.",
     },

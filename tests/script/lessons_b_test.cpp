@@ -268,7 +268,7 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
 
   runner.go_to(step_index(runner, "Phase 2: split every edge"));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "it asks which edges to split first";
-  ASSERT_TRUE(runner.deliver(LessonEvent::choice("The 18 edges of the original cube")));
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("The 18 original edges")));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   const HalfedgeMesh* screen = host.screen_mesh();
   ASSERT_TRUE(screen);
@@ -304,8 +304,7 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
 
   loop_commit_positions(cube, state.value);
   runner.go_to(step_index(runner, "Phase 4: move"));
-  ASSERT_TRUE(runner.deliver(
-      LessonEvent::choice("Now an old vertex's neighbours are the new vertices, not the original ones")));
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("The neighbours have changed")));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   screen = host.screen_mesh();
   for (VertexId v : cube.vertices()) {

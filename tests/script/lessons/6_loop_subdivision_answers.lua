@@ -9,13 +9,13 @@ return {
   ["Phase 1: new positions"] = { {answer = "3/16", feedback = "n = 3 only"}, {answer = "1/6", feedback = "n u = 1"},
     {answer = "1/16"} },
   ["Phase 2: split every edge"] = {
-    {choose = "Every edge, including the ones the splits make", feedback = "never end"},
-    {choose = "The 18 edges of the original cube"} },
+    {choose = "Every edge, new ones too", feedback = "never end"},
+    {choose = "The 18 original edges"} },
   ["Phase 3: which edges flip"] = { {click = "e0", feedback = "half of a split original edge"},
     {click = "e18", feedback = "not a new edge"}, {click = "e22", feedback = "Both ends"},
     {click = "v0", feedback = "click an edge"}, {click = "e19"} },
-  ["Phase 4: move"] = { {choose = "It is only faster that way", feedback = "not about speed"},
-    {choose = "Now an old vertex's neighbours are the new vertices, not the original ones"} },
+  ["Phase 4: move"] = { {choose = "It is only faster", feedback = "not about speed"},
+    {choose = "The neighbours have changed"} },
   ["Your turn: Shift+L"] = {
     {loop_phase = true}, {key = "shift+L"},  -- 1: compute the new positions
     {loop_phase = true}, {key = "shift+L"},  -- 2: split every original edge
@@ -23,16 +23,16 @@ return {
     {loop_phase = true}, {key = "shift+L"},  -- 4: move
   },
   ["The cube's lopsided result"] = {
-    {choose = "Rounding error in the weights", feedback = "rounding in double precision"},
-    {choose = "The edges were split in id order, so later splits saw a changed mesh", feedback = "Phase 1"},
-    {choose = "Its corners have different numbers of neighbours, and the weights depend on that number"} },
+    {choose = "Rounding error", feedback = "rounding in double precision"},
+    {choose = "Splitting in id order", feedback = "Phase 1"},
+    {choose = "Corners differ in degree"} },
   ["The pre-split fix"] = { {split = "e2"}, {split = "e7"}, {split = "e11"}, {split = "e14"}, {split = "e16"},
     {split = "e17"}, {subdivide = true}, {subdivide = true} },
-  ["Sharp corners"] = { {choose = "Both the same: the same rules run at every vertex", feedback = "halfway"},
-    {choose = "v7, whose edges were split first"} },
+  ["Sharp corners"] = { {choose = "Both the same", feedback = "halfway"},
+    {choose = "v7 (its edges split first)"} },
   ["A mesh with a boundary"] = { {answer = {0, 0}, feedback = "moves too"}, {answer = {0.25, 0.25}, feedback = "1/8"},
     {answer = "0.125, 0.125"}, {subdivide = true} },
-  ["Your own upsample"] = { {choose = "Edges that join an old vertex and a new one", feedback = "halves"},
-    {choose = "Edges with an id past the original edge count", feedback = "new id"},
-    {choose = "Flags set while splitting: m-c and m-d marked new, the halves not"} },
+  ["Your own upsample"] = { {choose = "One old end and one new end", feedback = "halves"},
+    {choose = "Ids past the original count", feedback = "new id"},
+    {choose = "Flags set while splitting"} },
 }
