@@ -124,6 +124,7 @@ end)
 
 step("Predict the pointers", function()
   show(shape)
+  camera { fit = true, pitch = 55 }
   label_all()
   highlight(e, "yellow")
   say [[
@@ -173,6 +174,7 @@ end)
 
 step("Split the middle edge", function()
   show(shape)
+  camera { fit = true, pitch = 55 }
   for element, text in pairs({ [a] = "a", [b] = "b", [c] = "c", [d] = "d" }) do label(element, text) end
   highlight(e, "yellow")
   say("Click the yellow edge (`" .. tostring(e) .. "`) to select it.")
@@ -239,8 +241,10 @@ step("Before and after, pointer by pointer", function()
   say [[
 And the new elements' pointers (twins h0/h1, n0/n1, n2/n3, n4/n5):
 
-- f0 = (m, b, c): h0 -> h2 -> n3        g0 = (a, m, c): n0 -> n2 -> h3
-- f1 = (b, m, d): h1 -> n4 -> h5        g1 = (m, a, d): n1 -> h4 -> n5
+- f0 = (m, b, c): h0 -> h2 -> n3
+- g0 = (a, m, c): n0 -> n2 -> h3
+- f1 = (b, m, d): h1 -> n4 -> h5
+- g1 = (m, a, d): n1 -> h4 -> n5
 - ea.halfedge = n0, ec.halfedge = n2, ed.halfedge = n4, m.halfedge = n1; a.halfedge = n0 if it was h0]]
   say [[
 When you write `split_edge` (scripts/student/split.lua), read every old element first (h0 to h5, a to d, f0, f1),
@@ -250,7 +254,7 @@ end)
 
 step("Split a boundary edge", function()
   show(grid)
-  camera "fit"
+  camera { fit = true, pitch = 55 }  -- flat too: seen from above
   highlight(rim, "yellow")
   local p, q = rim.halfedge.vertex, rim.halfedge.twin.vertex
   label(p, "a")
