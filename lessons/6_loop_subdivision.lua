@@ -1,8 +1,10 @@
 -- Part 6: Loop subdivision, phase by phase. The lesson runs the four phases itself in Lua (the same phases the
--- app's Shift+L steps through, engine/core/loop_subdivision.h), shows the mesh after each, and checks the
--- result against the app's own one-call subdivision. Then the student runs the app's phases with Shift+L, each
--- checked against the Lua ones, meets the cube's asymmetry and fixes it by pre-splitting, sees how corners
--- round off, and subdivides a mesh with a boundary.
+-- app's Shift+L steps through, engine/core/loop_subdivision.h), telling old from new by flags set as it splits,
+-- as scripts/student/upsample.lua asks. Each phase step asks first: the vertex count, u at degree 6, which edges
+-- to split, which edge to flip (a pick on the split cube: the halves of a split edge are the trap), why the
+-- positions come first. Then the student runs the app's phases with Shift+L, each checked against the Lua ones,
+-- explains the cube's lopsided result before pre-splitting fixes it, predicts which corner stays sharper and
+-- where a boundary corner goes, and ends at their own upsample.lua.
 -- CI runs it headless:
 --   meshedit lesson lessons/6_loop_subdivision.lua --headless \
 --     --answers tests/script/lessons/6_loop_subdivision_answers.lua
@@ -11,11 +13,11 @@
 
 lesson {
   title = "Part 6: Loop subdivision",
-  summary = "Loop subdivision in four phases, the cube's asymmetry and the pre-split fix, sharp corners, and "
-    .. "a mesh with a boundary.",
+  summary = "Loop subdivision in four phases, the cube's asymmetry and the pre-split fix, sharp corners, "
+    .. "a mesh with a boundary, and your own upsample.",
 }
 
-local function index(element) return tonumber(tostring(element):sub(2)) end
+local function index(element) return element.id end
 
 local function counts(mesh)
   return mesh:num_vertices() .. " vertices, " .. mesh:num_edges() .. " edges, " .. mesh:num_faces() .. " faces"
@@ -33,40 +35,55 @@ local function phase1(mesh)
     local u = n == 3 and 3 / 16 or 3 / (8 * n)
     local sum = meshedit.vec3(0, 0, 0)
     for w in v:neighbors() do sum = sum + w.position end
-    state.vertex[index(v)] = v.position * (1 - n * u) + sum * u
-    state.u[index(v)] = u
+    state.vertex[v.id] = v.position * (1 - n * u) + sum * u
+    state.u[v.id] = u
   end
   for e in mesh:edges() do
     local h = e.halfedge
     local a, b = h.vertex.position, h.twin.vertex.position
     local c, d = h.next.next.vertex.position, h.twin.next.next.vertex.position
-    state.edge[index(e)] = (a + b) * (3 / 8) + (c + d) * (1 / 8)
+    state.edge[e.id] = (a + b) * (3 / 8) + (c + d) * (1 / 8)
   end
   return state
 end
 
--- Phase 2: split every original edge (ids 0..E-1); remember the new vertices and the edges that cut across faces.
+-- Phase 2: split every original edge (listed before the first split), in id order. Flags, by id: is_new_vertex
+-- for each m, is_new_edge for the two edges from m to the corners across (m-c, m-d); the halves of the split edge
+-- (a-m, m-b) stay unmarked. state.cross lists the new edges in the order the splits made them.
 local function phase2(mesh, state)
   state.new_position = {}
   for i, p in pairs(state.vertex) do state.new_position[i] = p end
-  state.cross = {}
-  for i = 0, state.E - 1 do
-    local before = mesh:num_edges()
-    local m = assert(mesh:split(mesh:edge(i)))
-    state.new_position[index(m)] = state.edge[i]
-    -- split() appends ea, ec, ed: ec and ed cut across the old faces.
-    state.cross[#state.cross + 1] = before + 1
-    state.cross[#state.cross + 1] = before + 2
+  state.is_new_vertex, state.is_new_edge, state.cross = {}, {}, {}
+  local originals = {}
+  for e in mesh:edges() do originals[#originals + 1] = e.id end
+  for _, id in ipairs(originals) do
+    local e = mesh:edge(id)
+    local a, b = e.halfedge.vertex.id, e.halfedge.twin.vertex.id
+    local m = assert(mesh:split(e))
+    state.is_new_vertex[m.id] = true
+    state.new_position[m.id] = state.edge[id]
+    -- Around m (clockwise from m.halfedge): to a, c, b, d. The edges to c and d are the new ones.
+    for h in m:halfedges() do
+      local far = h.twin.vertex.id
+      if far ~= a and far ~= b then
+        state.is_new_edge[h.edge.id] = true
+        state.cross[#state.cross + 1] = h.edge.id
+      end
+    end
   end
 end
 
--- Phase 3: flip every cross edge that joins an old vertex and a new one.
+-- Whether edge `e` joins an old vertex and a new one, by the flags.
+local function old_to_new(state, e)
+  local h = e.halfedge
+  return (state.is_new_vertex[h.vertex.id] or false) ~= (state.is_new_vertex[h.twin.vertex.id] or false)
+end
+
+-- Phase 3: flip every new edge (flagged) that joins an old vertex and a new one.
 local function phase3(mesh, state)
   state.flipped = {}
   for _, i in ipairs(state.cross) do
-    local h = mesh:edge(i).halfedge
-    local old_a, old_b = index(h.vertex) < state.V, index(h.twin.vertex) < state.V
-    if old_a ~= old_b then
+    if old_to_new(state, mesh:edge(i)) then
       assert(mesh:flip(mesh:edge(i)))
       state.flipped[#state.flipped + 1] = i
     end
@@ -75,7 +92,7 @@ end
 
 -- Phase 4: every vertex to its computed position.
 local function phase4(mesh, state)
-  for v in mesh:vertices() do v.position = state.new_position[index(v)] end
+  for v in mesh:vertices() do v.position = state.new_position[v.id] end
 end
 
 -- A fresh cube after the first `phases` phases.
@@ -108,6 +125,7 @@ local function diagonals(mesh)
   return list
 end
 
+
 step("Four phases", function()
   show(meshedit.cube())
   camera "fit"
@@ -123,7 +141,19 @@ It is done in four phases, and the app's **Shift+L** runs them one at a time (L 
 - **2. split every edge** of the original mesh (never the new ones)
 - **3. flip** every new edge that joins an old vertex to a new one
 - **4. move** every vertex to the position computed in phase 1]]
-  say("Counts afterwards: V' = V + E, E' = 2E + 3F, F' = 4F. The cube has " .. counts(meshedit.cube())
+  answer {
+    "The cube on screen has " .. counts(meshedit.cube()) .. ". How many vertices will it have after one step?",
+    number = 26,
+    tolerance = 0.5,
+    feedback = function(value)
+      if value == 8 then return "8 counts only the old vertices, which stay; every edge split adds one more." end
+      if value == 32 then return "Faces are multiplied by four, vertices are not: the old ones stay and each edge adds one." end
+      if value == 20 then return "20 = 8 + 12 counts a new vertex per face; phase 2 splits edges, one vertex each." end
+      if value == 44 then return "44 = 8 + 36 counts two new vertices per edge: a split adds one." end
+    end,
+    hint = "The old vertices stay; phase 2 adds one vertex per original edge.",
+  }
+  say("Yes: V' = V + E. And E' = 2E + 3F, F' = 4F. The cube has " .. counts(meshedit.cube())
     .. ", so one step gives 26 vertices, 72 edges and 48 faces. Press **Next** to watch each phase.")
 end)
 
@@ -134,14 +164,46 @@ step("Phase 1: new positions", function()
   local e0 = mesh:edge(0)
   highlight(v0, "yellow")
   highlight(e0, "orange")
-  label(v0, "degree " .. v0:degree() .. ", u = " .. fmt(state.u[0]))
+  label(v0, "degree " .. v0:degree())
   say [[
 Every position is computed from the **original** mesh, before anything changes (that is why this phase
 only stores numbers):
 
-- an old vertex with n neighbours moves to (1 - n u) p + u (sum of neighbours), with u = 3/16 when n = 3 and
-  u = 3/(8n) otherwise
+- an old vertex p with n neighbours q1..qn moves to (1 - n u) p + u (q1 + ... + qn),
+  with u = 3/16 when n = 3 and u = 3/(8n) otherwise
 - the new vertex on an edge a-b, with c and d the corners opposite it, goes to 3/8 (a + b) + 1/8 (c + d)]]
+  answer {
+    "The yellow vertex v0 has 6 neighbours. What is u for it?",
+    number = 1 / 16,
+    feedback = function(value)
+      if math.abs(value - 3 / 16) < 1e-3 then
+        return "3/16 is u for n = 3 only. For every n > 3, u = 3/(8n)."
+      end
+      if math.abs(value - 1 / 6) < 1e-3 then
+        return "1/6 = 1/n would make n u = 1: v0's own weight 1 - n u would be 0, and it would jump to the "
+          .. "plain average of its neighbours. Loop keeps part of the vertex itself: u = 3/(8n)."
+      end
+      if math.abs(value - 3 / 8) < 1e-3 then
+        return "3/8 is n u, what all six neighbours weigh together; each one gets u = 3/(8n)."
+      end
+      if math.abs(value - 5 / 8) < 1e-3 then return "5/8 = 1 - n u is the weight v0 keeps for itself." end
+    end,
+    hint = "u = 3/(8n) for n > 3: put in n = 6.",
+  }
+  say("u = 3/48 = 1/16, and n u = 6/16 = **3/8**. That is so for every n > 3: n u = 3n/(8n) = 3/8, "
+    .. "whatever the degree. The vertex keeps 5/8 of its own position and its neighbours share the other 3/8, "
+    .. "however many they are; the weights always sum to 1, so a flat patch stays flat. (n = 3 is the exception: "
+    .. "u = 3/16, n u = 9/16.)")
+  plot {
+    title = "n u, the neighbours' total weight", x = { 3, 12 }, y = { 0, 1 }, samples = 90,
+    curves = {
+      { label = "course: u = 3/(8n), 3/16 at n = 3", colour = "blue",
+        fn = function(n) return n < 3.5 and 9 / 16 or 3 / 8 end },
+      { label = "Loop's own beta(n)", colour = "orange",
+        fn = function(n) return 5 / 8 - (3 / 8 + 1 / 4 * math.cos(2 * math.pi / n)) ^ 2 end },
+      { label = "u = 1/n (no weight kept)", colour = "grey", fn = function() return 1 end },
+    },
+  }
   say("The yellow vertex `v0` has " .. v0:degree() .. " neighbours, so u = " .. fmt(state.u[0]) .. ": it will go from "
     .. tostring(v0.position) .. " to " .. tostring(state.vertex[0]) .. ". The new vertex on the orange edge `e0` "
     .. "will sit at " .. tostring(state.edge[0]) .. ".")
@@ -149,21 +211,64 @@ only stores numbers):
 end)
 
 step("Phase 2: split every edge", function()
+  show(meshedit.cube())
+  choose {
+    "Phase 2 splits edges. Which ones?",
+    options = { "The 18 original edges", "Every edge, new ones too",
+      "Only the edges phase 3 flips" },
+    answer = "The 18 original edges",
+    feedback = {
+      ["Every edge, new ones too"] = "Each split adds three edges; if those were split too, "
+        .. "the loop would never end (and each face would be cut far more than into four).",
+      ["Only the edges phase 3 flips"] = "The edges phase 3 flips do not exist yet: splits make them. "
+        .. "Phase 2 splits every edge of the mesh as it was before phase 2.",
+      ["The 18 original edges"] = "Only those: list them before the first split.",
+    },
+    hint = "Each split adds edges. What happens if the loop visits them too?",
+  }
   local mesh, state = cube_after(2)
   show(mesh)
-  for i = state.V, mesh:num_vertices() - 1 do highlight(mesh:vertex(i), "yellow") end
+  for v in mesh:vertices() do if state.is_new_vertex[v.id] then highlight(v, "yellow") end end
   for _, i in ipairs(state.cross) do highlight(mesh:edge(i), "orange") end
   say("Every one of the " .. state.E .. " original edges has been split with the same split as part 5. The mesh "
     .. "now has " .. counts(mesh) .. ": the new vertices (yellow) still sit at the edge midpoints.")
   say [[
-Only the original edges are split: list them *before* splitting, because each split adds edges, and splitting
-those too would never end. Each split made two edges that cut across an old face (orange): some join two new
-vertices, others an old vertex and a new one.]]
+As it splits, the lesson's phase 2 **flags** what is new: the vertex m of each split (yellow), and the two
+edges from m to the corners across, m-c and m-d (orange). The two halves of the split edge, a-m and m-b, are
+not new: they lie along an original edge. Flags, not ids: split keeps e's id for the half m-b and gives the
+half a-m a new id, so "an id past the original count" does not mean "a new edge".]]
 end)
 
-step("Phase 3: flip", function()
-  local mesh, state = cube_after(3)
+step("Phase 3: which edges flip", function()
+  local mesh, state = cube_after(2)
   show(mesh)
+  view { halfedges = false, wireframe = true }  -- edges drawn, no arrows over them: a click picks an edge
+  for v in mesh:vertices() do if state.is_new_vertex[v.id] then highlight(v, "yellow") end end
+  say [[
+Here is the cube after phase 2 again; the new vertices are yellow, the old ones (the cube's corners) are not.
+Phase 3 flips every **new** edge that joins an old vertex and a new one.]]
+  pick {
+    "Which of these edges should be flipped? Click one.",
+    answer = function(x)
+      if x.kind == "halfedge" then x = x.edge end  -- an arrow stands for its edge
+      if x.kind ~= "edge" then return false, "That is a " .. x.kind .. ": click an edge." end
+      if state.is_new_edge[x.id] and old_to_new(state, x) then
+        return true, "Yes: a new edge from a corner across an old face to a new vertex."
+      end
+      if state.is_new_edge[x.id] then
+        return false, "Both ends of this edge are new vertices: it is an edge of an old triangle's middle "
+          .. "triangle, and stays as it is."
+      end
+      return false, "This edge joins an old corner to a new vertex, but it is a half of a split original edge "
+        .. "(a-m or m-b), not a new edge. Subdivision keeps the original edges, in two halves; flipping a half "
+        .. "would swap it for an edge across two old triangles, and those would no longer be four triangles "
+        .. "each. Only the flags tell the halves from the new edges."
+    end,
+    hint = "Look for an edge that cuts across one of the cube's old triangles, from a corner to a yellow vertex.",
+  }
+  mesh, state = cube_after(3)
+  show(mesh)
+  clear()
   for _, i in ipairs(state.flipped) do highlight(mesh:edge(i), "orange") end
   say("Of the " .. #state.cross .. " edges the splits made across faces, " .. #state.flipped .. " joined an old "
     .. "vertex to a new one; those are flipped (orange). Now every old triangle is cut into four: three at its "
@@ -173,7 +278,27 @@ step("Phase 3: flip", function()
 end)
 
 step("Phase 4: move", function()
-  local mesh = cube_after(4)
+  local mesh = cube_after(3)
+  show(mesh)
+  view { halfedges = true }  -- back on after phase 3's question turned them off
+  choose {
+    "Phase 4 moves every vertex to a position phase 1 computed. Why compute them in phase 1, before any split, "
+      .. "and not now?",
+    options = { "The neighbours have changed",
+      "Splits would move stored positions", "It is only faster" },
+    answer = "The neighbours have changed",
+    feedback = {
+      ["Splits would move stored positions"] = "Splits and flips change pointers, and "
+        .. "a split only places m at a midpoint; the stored positions are numbers, nothing moves them. The "
+        .. "question is what the weights would read now.",
+      ["It is only faster"] = "It is not about speed: computed now, the result would be wrong. Look at "
+        .. "v0's neighbours on screen.",
+      ["The neighbours have changed"] = "Right: the weights are "
+        .. "defined on the original mesh; after phase 2 an old vertex is joined only to new vertices.",
+    },
+    hint = "Select v0 and look at what it is joined to now.",
+  }
+  mesh = cube_after(4)
   show(mesh)
   local reference = meshedit.cube()
   reference:loop_subdivide()
@@ -220,7 +345,7 @@ local function phase_report(phase, mesh, state)
   if phase == 1 then
     return "Phase 1 computed every new position and changed nothing: the cube still has " .. counts(mesh) .. "."
   elseif phase == 2 then
-    for i = state.V, mesh:num_vertices() - 1 do highlight(mesh:vertex(i), "yellow") end
+    for v in mesh:vertices() do if state.is_new_vertex[v.id] then highlight(v, "yellow") end end
     return "Phase 2 split all " .. state.E .. " original edges: now " .. counts(mesh) .. ", the new vertices "
       .. "(yellow) still at the midpoints."
   elseif phase == 3 then
@@ -260,26 +385,45 @@ After each press this lesson compares the mesh on screen with its own Lua phases
     .. "faces by four, so stop after four or five.")
 end)
 
-step("The cube's asymmetry", function()
+step("The cube's lopsided result", function()
   local mesh = meshedit.cube()
-  for i = 0, 7 do label(mesh:vertex(i), "degree " .. mesh:vertex(i):degree()) end
   local subdivided = mesh:copy()
   subdivided:loop_subdivide()
   subdivided:loop_subdivide()
   show(subdivided)
+  camera "fit"
+  local lo, hi = corner_range(subdivided)
+  say("Here is the cube after two steps of L. A cube is symmetric, yet the result is **lopsided**: after two "
+    .. "steps the 8 corners are between " .. fmt(lo) .. " and " .. fmt(hi) .. " from the centre. A symmetric "
+    .. "input would put them all at the same distance.")
+  local right = "Corners differ in degree"
+  choose {
+    "Why is it lopsided? (degree: a vertex's number of neighbours)",
+    options = { "Rounding error", "Splitting in id order", right, "Corners at different distances" },
+    answer = right,
+    feedback = {
+      ["Rounding error"] = string.format("The corners differ by %.3f; rounding in double "
+        .. "precision is about 1e-16. Something in the mesh itself differs from corner to corner.", hi - lo),
+      ["Splitting in id order"] = "Phase 1 computes every "
+        .. "position from the original mesh before the first split, so the order of the splits cannot move "
+        .. "anything; it only decides the new ids.",
+      ["Corners at different distances"] = "They are: every corner of the "
+        .. "cube is " .. fmt(mesh:vertex(0).position:length()) .. " from the centre before subdividing. Look at "
+        .. "how each corner is connected instead.",
+      [right] = "Right: the cube's 12 triangles cut each square face along one diagonal.",
+    },
+    hint = "The rule for an old vertex depends on one number per vertex. Is it the same at every corner?",
+  }
   for i = 0, 7 do
     label(subdivided:vertex(i), "degree " .. mesh:vertex(i):degree())
     highlight(subdivided:vertex(i), mesh:vertex(i):degree() == 6 and "orange" or "yellow")
   end
-  local lo, hi = corner_range(subdivided)
   local degrees = {}
   for i = 0, 7 do degrees[#degrees + 1] = tostring(mesh:vertex(i):degree()) end
-  say("Look at the cube after two steps: it is **lopsided**. Its 12 triangles come from cutting each square face "
-    .. "along one diagonal, so the corners do not all have the same number of neighbours: the degrees of v0 to v7 "
-    .. "are " .. table.concat(degrees, ", ") .. ". The weights depend on that number, so corners with different "
-    .. "degrees move differently (orange: degree 6, yellow: fewer).")
-  say("After two steps the 8 corners are between " .. fmt(lo) .. " and " .. fmt(hi) .. " from the centre. A "
-    .. "symmetric input would put them all at the same distance.")
+  say("Its 12 triangles come from cutting each square face along one diagonal, so the corners do not all have the "
+    .. "same number of neighbours: the degrees of v0 to v7 are " .. table.concat(degrees, ", ") .. ". The weights "
+    .. "depend on that number, so corners with different degrees move differently (orange: degree 6, yellow: "
+    .. "fewer).")
 end)
 
 step("The pre-split fix", function()
@@ -354,13 +498,31 @@ rounded away, and the mesh shrinks inside its control mesh.]]
   say("Every corner starts " .. fmt(cube:vertex(7).position:length()) .. " from the centre. On the plain cube, "
     .. "corner `v7` is " .. fmt(plain[1]) .. ", " .. fmt(plain[2]) .. " and " .. fmt(plain[3])
     .. " away after one, two and three steps.")
-  say("To keep a corner sharper, give the mesh more vertices near it before subdividing. On screen, every edge at "
-    .. "`v7` was split first: after the same three steps `v7` is still " .. fmt(sharp[3]) .. " from the centre, "
-    .. "while the untouched corner `v0` (orange) is at " .. fmt(mesh:vertex(0).position:length()) .. ".")
   say [[
-The averages near v7 now run over points close to it, so it rounds off less. Real creases need an extension of
-the rules (crease edges with their own weights), which is beyond this assignment. Try it: split the edges
-around a corner with S, then press L a few times.]]
+On screen is a cube on which every edge at corner v7 (yellow) was split before three steps of L; corner v0
+(orange) was left alone.]]
+  local right = "v7 (its edges split first)"
+  choose {
+    "Which corner is now farther from the centre, the sharper one: v7, whose edges were split first, or v0, "
+      .. "which was left alone?",
+    options = { right, "v0 (untouched)", "Both the same" },
+    answer = right,
+    feedback = {
+      ["v0 (untouched)"] = "v0's averages run over neighbours at the far ends of whole cube edges, "
+        .. "and they pull it in. How far are v7's neighbours after its edges were split?",
+      ["Both the same"] = "The rules are the same, but what they average is "
+        .. "not: after the splits v7's neighbours sit halfway along its edges, v0's at their far ends.",
+      [right] = "v7: its neighbours are close to it, so its averages barely move it.",
+    },
+    hint = "A vertex moves toward the average of its neighbours. Where are v7's neighbours, and where are v0's?",
+  }
+  say("After the same three steps `v7` is still " .. fmt(sharp[3]) .. " from the centre, while the untouched corner "
+    .. "`v0` is at " .. fmt(mesh:vertex(0).position:length()) .. ".")
+  say [[
+To keep a corner sharper, give the mesh more vertices near it before subdividing: the averages near it then run
+over points close to it, so it rounds off less. Real creases need an extension of the rules (crease edges with
+their own weights), which is beyond this assignment. Try it: split the edges around a corner with S, then press
+L a few times.]]
 end)
 
 step("A mesh with a boundary", function()
@@ -374,7 +536,26 @@ On a mesh with a **boundary** the rules change along the border, so it stays a c
 
 - a boundary edge's new vertex is its midpoint, (a + b) / 2
 - a boundary vertex moves to 3/4 p + 1/8 (left + right), using only its two neighbours along the boundary]]
-  say("This grid has " .. counts(grid) .. " and one boundary loop. Press **L**.")
+  say("This grid has " .. counts(grid) .. " and one boundary loop. The yellow corner is at (0, 0); its neighbours "
+    .. "along the boundary are (1, 0) and (0, 1).")
+  answer {
+    "Where will the yellow corner be after one step? Give x, y.",
+    point = { 0.125, 0.125 },
+    feedback = function(p)
+      if p:length() < 1e-3 then
+        return "A boundary vertex moves too, along the boundary's own rule: 3/4 of itself plus 1/8 of each "
+          .. "boundary neighbour."
+      end
+      if (p - meshedit.vec3(0.25, 0.25)):length() < 1e-3 then
+        return "That gives each neighbour 1/4; the boundary rule gives each 1/8 and the corner 3/4."
+      end
+      if (p - meshedit.vec3(1 / 3, 1 / 3)):length() < 1e-2 then
+        return "That is the plain average of the corner and its two neighbours; the rule keeps 3/4 of the corner."
+      end
+    end,
+    hint = "3/4 (0, 0) + 1/8 ((1, 0) + (0, 1)).",
+  }
+  say "Now press **L** and check."
   local mesh = wait_for {
     hint = "Press L",
     condition = function()
@@ -388,4 +569,31 @@ On a mesh with a **boundary** the rules change along the border, so it stays a c
   say("Now " .. counts(mesh) .. ", still " .. mesh:num_boundaries() .. " boundary loop. The corner moved from "
     .. "(0, 0, 0) to " .. tostring(p) .. ": 3/4 of itself plus 1/8 of each boundary neighbour, (1, 0, 0) and "
     .. "(0, 1, 0). The corner of the grid is cut off, as corners are on a closed mesh.")
+end)
+
+step("Your own upsample", function()
+  show(meshedit.cube())
+  camera "fit"
+  local right = "Flags set while splitting"
+  choose {
+    "In your upsample, how will phase 3 find the edges to flip? Flags: is_new_edge set for m-c and m-d as you split, the halves a-m and m-b left unmarked.",
+    options = { "Ids past the original count", "One old end and one new end",
+      right },
+    answer = right,
+    feedback = {
+      ["Ids past the original count"] = "split keeps e's id for the half m-b and gives the "
+        .. "half a-m a new id (ea): ids past the original count include halves of original edges, which must "
+        .. "not be flipped.",
+      ["One old end and one new end"] = "The halves of a split edge join an old vertex and a new "
+        .. "one too: that test alone flips them, the trap of phase 3. Only new edges with one old and one new end.",
+      [right] = "Yes: flag them as you split, then flip the flagged edges with one old end and one new end.",
+    },
+    hint = "Think back to the edges you could click in phase 3 that were not the answer.",
+  }
+  say [[
+Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same phases, with the flags
+(is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra credit. Press **X** for the **Exercises** tab,
+choose **upsample** in its exercise list, select any element of the mesh and press **Run mine**: it runs your
+upsample on a copy of the mesh on screen and compares it with the reference, naming the vertices that moved to
+the wrong place and the edges flipped wrongly. It reads your file again each time you save it.]]
 end)

@@ -163,7 +163,7 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
 // ---- part 5: edge split ----
 
 TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
-  const std::string text = run_headless("5_edge_split", 4);
+  const std::string text = run_headless("5_edge_split", 6);
   EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
       << text;
   EXPECT_TRUE(contains(text, "edges ea = e5, ec = e6, ed = e7; faces g0 = f2 and g1 = f3; halfedges n0 to n5 = h10 "
@@ -217,7 +217,7 @@ TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
 // ---- part 6: Loop subdivision ----
 
 TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
-  const std::string text = run_headless("6_loop_subdivision", 10);
+  const std::string text = run_headless("6_loop_subdivision", 11);
   EXPECT_TRUE(contains(text, "The yellow vertex v0 has 6 neighbours, so u = 0.0625: it will go from (-0.5, -0.5, "
                              "-0.5) to (-0.3125, -0.3125, -0.3125).")) << text;
   EXPECT_TRUE(contains(text, "Every one of the 18 original edges has been split with the same split as part 5. The "
@@ -267,6 +267,8 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
   loop_split_edges(cube, state.value);
 
   runner.go_to(step_index(runner, "Phase 2: split every edge"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "it asks which edges to split first";
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("The 18 original edges")));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   const HalfedgeMesh* screen = host.screen_mesh();
   ASSERT_TRUE(screen);
@@ -283,8 +285,15 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
   }
   EXPECT_EQ(cross, 36u);
 
+  // Phase 3 asks for an edge to flip on the split cube: a half of a split original edge (e0 keeps its id as the
+  // half m-b) is wrong and keeps the step waiting; e19, a new edge from a corner to a new vertex, is right.
+  runner.go_to(step_index(runner, "Phase 3: which edges flip"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
+  EXPECT_TRUE(state.value.is_new_edge[19] && !state.value.is_new_edge[0]);
+  runner.deliver(LessonEvent::click(EdgeId(0)));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
+  ASSERT_TRUE(runner.deliver(LessonEvent::click(EdgeId(19))));
   loop_flip_edges(cube, state.value);
-  runner.go_to(step_index(runner, "Phase 3: flip"));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   screen = host.screen_mesh();
   for (HalfedgeId h : cube.halfedges()) {
@@ -295,6 +304,7 @@ TEST(LessonsB, LoopPhasesShowTheCoresIntermediateMeshes) {
 
   loop_commit_positions(cube, state.value);
   runner.go_to(step_index(runner, "Phase 4: move"));
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("The neighbours have changed")));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   screen = host.screen_mesh();
   for (VertexId v : cube.vertices()) {
