@@ -150,16 +150,12 @@ which **is on the curve**.]]
 end)
 
 step("Moving t", function()
-  say "Watch the curve being traced: for each t the levels give one point, and together those points are the curve."
-  -- The left part of the split at t is exactly the curve from 0 to t: showing it traces the curve.
-  animate(3, function(t)
-    local traced = curve:split(math.max(t, 1e-3))
-    show(traced)
-  end)
   show(curve)
   say [[
-Press **E** three times to draw every level, then drag **t** (the slider, or the wheel over the view). The
-levels below are those of the curve on screen at the view's t, and follow it.]]
+For each t the levels end in one point, and together those points are the curve. See it: press **C** to draw
+the curve and **E** three times to draw every level, then drag **t** from 0 to 1 (the slider, or the wheel over
+the view): the last level's point, C(t), runs along the curve. The levels below are those of the curve on screen
+at the view's t, and follow it.]]
   live(function()
     local t = curve_t()
     if not t then return "(the curve view is not on screen)" end
@@ -334,7 +330,7 @@ step("The hodograph", function()
   camera "fit"
   say("The derivative of a cubic is itself a Bézier curve, the **hodograph**, of degree 2. Its control points are "
     .. "3 times the differences of the cubic's: 3 (P1 - P0), 3 (P2 - P1), 3 (P3 - P2) = **" .. list(hodo.points)
-    .. "**. They are on screen now.")
+    .. "**. They are on screen now (the view calls its point C(t): here that is the hodograph's point, C'(t)).")
   local at = hodo:evaluate(0.25)
   local swapped = hodo:evaluate(0.75)
   local level1 = hodo:levels(0.25)[2]
