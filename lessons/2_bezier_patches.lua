@@ -56,7 +56,7 @@ Each of the four **rows** of the grid is the control polygon of a cubic curve, a
 The patch has two parameters, **u** and **v**, both between 0 and 1, one for each direction of the grid:
 **u** runs along a row (here along x), **v** across the rows (along y).]]
   choose {
-    "The points are stored row by row: points[row * 4 + col + 1]. Which index holds row 1, column 2 (rows and "
+    "The points are stored row by row: `points[row * 4 + col + 1]`. Which index holds row 1, column 2 (rows and "
       .. "columns counted from 0)?",
     options = { "6", "7", "10" },
     answer = "7",
@@ -75,8 +75,8 @@ step("Rows in u", function()
   say [[
 To evaluate the patch at (u, v), use de Casteljau twice:
 
-1. evaluate each of the **four rows** as a curve at **u**: that gives four points
-2. those four points are the control points of one more curve, the **column**: evaluate it at **v**]]
+- first, evaluate each of the **four rows** as a curve at **u**: that gives four points
+- then, those four points are the control points of one more curve, the **column**: evaluate it at **v**]]
   choose {
     "How many one-dimensional de Casteljau evaluations (whole curves, each down to a single point) does one point "
       .. "of a patch take?",
