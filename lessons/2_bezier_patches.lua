@@ -1,5 +1,6 @@
 -- Part 2: Bézier patches: a 4x4 grid of control points, evaluated as four curves in u (the rows) and then
--- one curve in v (the column through the row points); then the Utah teapot, 32 such patches. Numbers come
+-- one curve in v (the column through the row points); then the Utah teapot, 32 such patches. Each step asks the
+-- student to predict before it shows, and names the likely mistakes (u and v swapped, rows and columns swapped). Numbers come
 -- from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from assets/teapot.bez,
 -- found next to this file with lesson_file(). CI runs it headless:
 --   meshedit lesson lessons/2_bezier_patches.lua --headless --answers tests/script/lessons/2_bezier_patches_answers.lua
@@ -23,6 +24,10 @@ local function pt(p)
   return string.format("(%g, %g, %g)", p.x, p.y, p.z)
 end
 
+local function near(p, q, tolerance)
+  return (p - q):length() < (tolerance or 1e-3)
+end
+
 step("From curves to surfaces", function()
   show(hill)
   camera "fit"
@@ -30,36 +35,118 @@ step("From curves to surfaces", function()
 # Bézier patches
 
 A **Bézier patch** is a surface made from a 4 by 4 grid of **control points**, 16 in all. On screen is a
-small hill: the twelve points around the edge lie flat, the four in the middle are raised to height 2.]]
+small hill: the twelve points around the edge lie flat, the four in the middle are raised to height 2.
+Each of the four **rows** of the grid is the control polygon of a cubic curve, as in part 1.]]
+  choose {
+    "Which of the control points does the surface pass through?",
+    options = { "all sixteen", "the four corners", "the four raised middle points", "the twelve around the edge" },
+    answer = "the four corners",
+    feedback = {
+      ["all sixteen"] = "A curve does not pass through its middle control points; a patch, made of curves, does "
+        .. "not either.",
+      ["the four raised middle points"] = "The raised points pull the surface up, but it stays below them: look "
+        .. "at the top of the hill.",
+      ["the twelve around the edge"] = "Each edge of the patch is a cubic curve: it passes through the ends of "
+        .. "its control polygon, not through its middle points.",
+      ["the four corners"] = "Yes: each edge is a cubic through its two end points, the corners.",
+    },
+    hint = "Each edge of the patch is a cubic curve with four of the control points. Which of them does it reach?",
+  }
   say [[
-Each of the four **rows** of the grid is the control polygon of a cubic curve, just like in part 1. A point
-of the surface has two parameters, **u** and **v**, both between 0 and 1, one for each direction of
-the grid.]]
+The patch has two parameters, **u** and **v**, both between 0 and 1, one for each direction of the grid:
+**u** runs along a row (here along x), **v** across the rows (along y).]]
+  choose {
+    "The points are stored row by row: `points[row * 4 + col + 1]`. Which index holds row 1, column 2 (rows and "
+      .. "columns counted from 0)?",
+    options = { "6", "7", "10" },
+    answer = "7",
+    feedback = {
+      ["10"] = "10 = 2 * 4 + 1 + 1 is row 2, column 1: rows and columns swapped. The row is multiplied by 4.",
+      ["6"] = "6 = 1 * 4 + 2 is the index counted from 0; Lua lists start at 1, hence the + 1.",
+      ["7"] = "Yes: 1 * 4 + 2 + 1 = 7.",
+    },
+    hint = "A row holds 4 points, so each row moves the index on by 4.",
+  }
+  say("`points[7]` of the hill is " .. pt(hill.points[7]) .. ": x is the column, y the row, and it is raised.")
 end)
 
-step("Rows in u, then the column in v", function()
+step("Rows in u", function()
   show(hill)
-  local u, v = 0.5, 0.5
-  local e = hill:evaluation(u, v)
-  local rows = {}
-  for i, p in ipairs(e.rows) do rows[i] = pt(p) end
   say [[
 To evaluate the patch at (u, v), use de Casteljau twice:
 
-1. evaluate each of the **four rows** as a curve at **u**: that gives four points
-2. those four points are the control points of one more curve, the **column**: evaluate it at **v**]]
-  say("For the hill at u = 0.5, v = 0.5 the four row points are " .. table.concat(rows, ", ")
-    .. ", and the column curve through them gives **" .. pt(e.point) .. "**.")
+- first, evaluate each of the **four rows** as a curve at **u**: that gives four points
+- then, those four points are the control points of one more curve, the **column**: evaluate it at **v**]]
+  choose {
+    "How many one-dimensional de Casteljau evaluations (whole curves, each down to a single point) does one point "
+      .. "of a patch take?",
+    options = { "4", "5", "8", "16" },
+    answer = "5",
+    feedback = {
+      ["4"] = "4 are the rows: their four points still need one more curve, the column, to become one point.",
+      ["8"] = "8 evaluates every row and every column of the grid; only one column is needed, the one through the "
+        .. "four row points.",
+      ["16"] = "16 is the number of control points, not of curves: each curve takes a whole row of four.",
+      ["5"] = "Yes: four rows and one column.",
+    },
+    hint = "Count the row curves, then the curves that the row points make.",
+  }
+  local row1 = meshedit.curve { hill.points[5], hill.points[6], hill.points[7], hill.points[8] }
+  local at = row1:evaluate(0.25)
+  answer {
+    "Row 1 is (0, 1, 0), (1, 1, 2), (2, 1, 2), (3, 1, 0). Where is its point at u = 0.25? Give x, y, z.",
+    point = { at.x, at.y, at.z },
+    feedback = function(p)
+      local swapped = row1:evaluate(0.75)
+      if near(p, swapped) then return pt(p) .. " is the row's point at 0.75: u and 1 - u swapped." end
+      if near(p, meshedit.vec3(1.5, 1, 1)) then
+        return "(1.5, 1, 1) is the average of the row's four points: the curve's point weights them."
+      end
+      if math.abs(p.x - at.x) < 1e-3 and math.abs(p.z - at.z) > 1e-3 then
+        return "x is right; the height is not: run the steps on z too, 0, 2, 2, 0."
+      end
+    end,
+    hint = "It is part 1's cubic with z for y: x goes 0, 1, 2, 3, and z goes 0, 2, 2, 0.",
+  }
+  local e = hill:evaluation(0.25, 0.5)
+  local rows = {}
+  for i, p in ipairs(e.rows) do rows[i] = pt(p) end
+  say("Yes. The four rows at u = 0.25 give " .. table.concat(rows, ", ")
+    .. ": the two flat rows stay at height 0, and every row point has x = 0.75.")
+end)
+
+step("Then the column in v", function()
+  show(hill)
+  local u, v = 0.25, 0.5
+  local e = hill:evaluation(u, v)
+  local swapped = hill:evaluate(v, u)
+  local rows = {}
+  for i, p in ipairs(e.rows) do rows[i] = pt(p) end
+  say("The four row points at u = 0.25 are " .. table.concat(rows, ", ") .. ". They are the control points of "
+    .. "the column curve.")
+  answer {
+    "Where is the patch's point P(0.25, 0.5)? Give x, y, z.",
+    point = { e.point.x, e.point.y, e.point.z },
+    feedback = function(p)
+      if near(p, swapped) then
+        return pt(p) .. " is P(0.5, 0.25): u and v swapped. u is for the rows (x here), v for the column through "
+          .. "the row points (y)."
+      end
+      if near(p, e.rows[2]) or near(p, e.rows[3]) then
+        return pt(p) .. " is a row point: the column curve through all four row points is still to evaluate."
+      end
+      if math.abs(p.z - 0.5625) < 1e-3 then
+        return "z = 0.5625 is the average of the row points' heights: the column's point weights them."
+      end
+    end,
+    hint = "Run de Casteljau on the four row points at v = 0.5; x stays 0.75.",
+  }
+  say("Yes: **P(0.25, 0.5) = " .. pt(e.point) .. "**. See it in the patch view: set **u** to 0.25 and **v** to "
+    .. "0.5; the probe point P(u, v) is drawn on the surface and listed in the panel. Swapping u and v gives "
+    .. pt(swapped) .. ", the mirror point across the diagonal: on this symmetric hill only x and y tell them apart.")
   say [[
-The middle of the hill is lower than its raised control points: like a curve, a patch is pulled towards
-its control points but passes only through the four corners.]]
-  say [[
-How many one-dimensional de Casteljau evaluations (whole curves, each down to a single point) does one
-point of a patch take? Press the number.]]
-  wait_for { key = "5", hint = "Count the row curves, then the column curve" }
-  say [[
-Right: **5**, four rows and one column. (Doing the columns in v first and then a row in u gives the very
-same point; MeshEdit follows the assignment's order, rows first.)]]
+Doing the columns in v first and then a row in u gives the very same point; MeshEdit follows the assignment's
+order, rows first.]]
 end)
 
 step("The Utah teapot", function()
@@ -71,25 +158,52 @@ step("The Utah teapot", function()
     .. " control points for the whole smooth shape.")
   say [[
 The view draws each patch by evaluating it on a grid of (u, v) values and joining the points into
-triangles. Move the **resolution** slider to see how many points that takes; switch the **control nets**
-on to see the grey points that shape it.]]
-  wait_for { button = "Continue" }
+triangles. At **resolution** n, each patch is cut into n by n small squares.]]
+  choose {
+    "At resolution 8, how many points of one patch does the view evaluate?",
+    options = { "16", "64", "81" },
+    answer = "81",
+    feedback = {
+      ["64"] = "64 counts the squares. A row of 8 squares has 9 corners: the points are one more each way.",
+      ["16"] = "16 are the control points, which the view does not draw on the surface: it evaluates the patch "
+        .. "at values of u and v.",
+      ["81"] = "Yes: 9 values of u (0, 1/8, ..., 1) times 9 values of v.",
+    },
+    hint = "Count the corners along one side of 8 squares in a row first.",
+  }
+  say [[
+Move the **resolution** slider and watch the panel's count of vertices and triangles follow; switch the
+**control nets** on to see the grey points that shape the pot.]]
 end)
 
 step("Where patches meet", function()
   local patches = meshedit.load_patches(lesson_file("../assets/teapot.bez"))
   show(patches)
+  say [[
+Why do 32 separate patches look like one smooth pot? Look at one edge of a patch, where v = 0.]]
+  choose {
+    "Along the edge v = 0 of a patch, which control points decide the edge curve?",
+    options = { "the first row's four points", "the first column's four points", "all sixteen",
+                "the four corners" },
+    answer = "the first row's four points",
+    feedback = {
+      ["the first column's four points"] = "The first column is the edge u = 0: rows and columns swapped. At "
+        .. "v = 0 it is the column curve that is at its start.",
+      ["all sixteen"] = "At v = 0 the column curve is at its first control point, which is the first row's point: "
+        .. "the other rows drop out.",
+      ["the four corners"] = "The corners are the ends of the edge; its middle is pulled by two more points.",
+      ["the first row's four points"] = "Yes: the column curve at v = 0 is its first control point, the first "
+        .. "row's point at u.",
+    },
+    hint = "Evaluate the column curve at v = 0: which of its four control points is left?",
+  }
   local first = patches[1]
   local row = {}
   for c = 1, 4 do row[c] = first.points[c] end
   local edge_curve = meshedit.curve(row)
   local u = 0.3
   local on_patch, on_curve = first:evaluate(u, 0), edge_curve:evaluate(u)
-  say [[
-Why do 32 separate patches look like one smooth pot? Look at the edge of a patch where v = 0: the column
-curve there ends at its first control point, which is the first row's point. So the whole edge **is the
-first row's curve**, and depends on those four points only.]]
-  say("Checked on the first teapot patch at u = 0.3: the patch gives " .. pt(on_patch)
+  say("Checked on the first teapot patch at u = 0.3: the patch at v = 0 gives " .. pt(on_patch)
     .. " and the curve of its first row gives " .. pt(on_curve) .. ". "
     .. (on_patch == on_curve and "The same point." or "They differ!"))
   say [[
@@ -118,4 +232,5 @@ Or check it from a terminal, with the grading suite:
     meshedit grade --suite tests/grading/suites/patch.lua --submission scripts/student
 
 When it is right, it gives the very points of the teapot you saw here.]]
+  wait_for { key = "M", hint = "Press M to check your evaluate in the patch view" }
 end)

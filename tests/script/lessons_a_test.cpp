@@ -1,5 +1,5 @@
 // The lessons for parts 1-3 (lessons/1_de_casteljau.lua, 2_bezier_patches.lua, 3_halfedge_walks.lua): each
-// passes every step headless with its answers file, says the numbers the core computes, rejects a wrong quiz
+// passes every step headless with its answers file, says the numbers the core computes, names each likely wrong
 // answer, and marks the elements its walks really reach (checked against the core mesh's own pointers through
 // HeadlessHost). Also lesson_file(), which the teapot lesson uses to find assets/teapot.bez.
 #include <gtest/gtest.h>
@@ -47,55 +47,76 @@ std::filesystem::path lesson_path(const std::string& stem) {
 TEST(LessonsA, DeCasteljauPassesEveryStep) {
   const Headless r = run("1_de_casteljau");
   ASSERT_EQ(r.outcome.failure, "") << r.text;
-  EXPECT_EQ(r.outcome.steps, 6u);
-  EXPECT_EQ(r.outcome.passed, 6u);
-  // The levels of (0,0) (1,2) (3,2) (4,0) at t = 0.5, worked by hand.
-  EXPECT_TRUE(contains(r.text, "  - level 1: (0.5, 1), (2, 2), (3.5, 1)\n")) << r.text;
-  EXPECT_TRUE(contains(r.text, "  - level 2: (1.25, 1.5), (2.75, 1.5)\n")) << r.text;
-  EXPECT_TRUE(contains(r.text, "  - level 3: (2, 1.5)\n")) << r.text;
-  // The quiz: a wrong count does not move the step on; the right one does.
-  EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 3)\n  > key 3\n")) << r.text;
+  EXPECT_EQ(r.outcome.steps, 9u);
+  EXPECT_EQ(r.outcome.passed, 9u);
+  // The levels of (0,0) (1,2) (3,2) (4,0) at the view's t, live: at t = 0.5 first, then at 0.25 after the move.
+  EXPECT_TRUE(contains(r.text, "- level 1: (0.5, 1), (2, 2), (3.5, 1)\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "- level 2: (1.25, 1.5), (2.75, 1.5)\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "- level 3: (2, 1.5)\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > curve t = 0.25\n  [live] t = 0.25\n")) << r.text;
+  // B(0.25) = 27/64 P0 + 27/64 P1 + 9/64 P2 + 1/64 P3 = (0.90625, 1.125).
+  EXPECT_TRUE(contains(r.text, "- level 3: (0.90625, 1.125)")) << r.text;
+  EXPECT_TRUE(contains(r.text, "Yes, C(0.25) = (0.90625, 1.125).")) << r.text;
+  // Each wrong answer is told what it is (the answers file also checks the words).
+  EXPECT_TRUE(contains(r.text, "> answer 0.75, 1.5: wrong: (0.75, 1.5) is three quarters of the way: t and 1 - t "
+                               "swapped."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "> choose 4: wrong: 4 is level 1, after one step: off by one.")) << r.text;
+  EXPECT_TRUE(contains(r.text, "> answer 2, 1: wrong: (2, 1) is the average of the four control points")) << r.text;
+  // The split follows the view's t, and the first points of the levels are its left half.
+  EXPECT_TRUE(contains(r.text, "At t = 0.50: left (0, 0), (0.5, 1), (1.25, 1.5), (2, 1.5); right (2, 1.5), "
+                               "(2.75, 1.5), (3.5, 1), (4, 0). The first points of the levels are the left half."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "  [live] At t = 0.30: left (0, 0), (0.3, 0.6)")) << r.text;
+  EXPECT_FALSE(contains(r.text, "are NOT")) << r.text;
+  EXPECT_TRUE(contains(r.text, "[plot Bernstein weights: B0, B1, B2, B3 for x from 0 to 1, marker at 0.5]")) << r.text;
+  // The derivative: C'(0) = 3 (P1 - P0); the tangent from the level-2 points; the hodograph at 0.25.
+  EXPECT_TRUE(contains(r.text, "> answer 3, 6: right")) << r.text;
+  EXPECT_TRUE(contains(r.text, "the level-2 points are (1.25, 1.5) and (2.75, 1.5): C'(t) = 3 x their difference = "
+                               "(4.5, 0)."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "= (3, 6), (6, 0), (3, -6).")) << r.text;
+  EXPECT_TRUE(contains(r.text, "Yes: C'(0.25) = (4.125, 3)")) << r.text;
   // The last step points to the view's own check first, then to the grader.
   EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the curve view (or press M), then press E.")) << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/curve.lua")) << r.text;
-  EXPECT_TRUE(contains(r.text, "  Right: 3.")) << r.text;
-  // B(0.25) = 27/64 P0 + 27/64 P1 + 9/64 P2 + 1/64 P3 = (0.90625, 1.125).
-  EXPECT_TRUE(contains(r.text, "At t = 0.25 it is (0.90625, 1.125)")) << r.text;
-  EXPECT_TRUE(contains(r.text, "left half has control points (0, 0), (0.5, 1), (1.25, 1.5), (2, 1.5) and the right "
-                               "half (2, 1.5), (2.75, 1.5), (3.5, 1), (4, 0). Checked against the levels: they "
-                               "match."))
-      << r.text;
-  EXPECT_TRUE(contains(r.text, "  > button Continue (pressed)\n")) << r.text;
 }
 
-TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndTracesIt) {
+TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndItsHodograph) {
   HeadlessHost host;
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("1_de_casteljau"))) << runner.error();
   ASSERT_TRUE(host.shown_curve().has_value());
   EXPECT_EQ(host.shown_curve()->control_points,
             (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
-  runner.go_to(3);  // "Moving t": the animation shows the left part of the split, growing with t
-  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Animation);
-  host.clear_calls();
-  runner.update(1.5);  // half of the 3 s animation: t = 0.5
+  // "The hodograph": the derivative's control points, 3 times the differences of the cubic's.
+  runner.go_to(7);
+  ASSERT_EQ(runner.error(), "");
   ASSERT_TRUE(host.shown_curve().has_value());
-  EXPECT_EQ(host.shown_curve()->control_points,
-            (std::vector<glm::dvec2>{{0, 0}, {0.5, 1}, {1.25, 1.5}, {2, 1.5}}));
-  EXPECT_EQ(host.calls(), (std::vector<std::string>{"show_curve 4 points"}));
+  EXPECT_EQ(host.shown_curve()->control_points, (std::vector<glm::dvec2>{{3, 6}, {6, 0}, {3, -6}}));
 }
 
 TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
   const Headless r = run("2_bezier_patches");
   ASSERT_EQ(r.outcome.failure, "") << r.text;
-  EXPECT_EQ(r.outcome.steps, 5u);
-  EXPECT_EQ(r.outcome.passed, 5u);
-  // The hill at (0.5, 0.5): rows 0 and 3 are flat (z 0), rows 1 and 2 reach z 1.5 in their middle; the column
-  // (0, 1.5, 1.5, 0) at 0.5 is 1.125.
-  EXPECT_TRUE(contains(r.text, "the four row points are (1.5, 0, 0), (1.5, 1, 1.5), (1.5, 2, 1.5), (1.5, 3, 0), and "
-                               "the column curve through them gives (1.5, 1.5, 1.125)."))
+  EXPECT_EQ(r.outcome.steps, 6u);
+  EXPECT_EQ(r.outcome.passed, 6u);
+  // The hill at u = 0.25: rows 0 and 3 are flat (z 0), rows 1 and 2 reach z 1.125 at x 0.75; the column
+  // (0, 1.125, 1.125, 0) at v = 0.5 is 0.84375.
+  EXPECT_TRUE(contains(r.text, "The four row points at u = 0.25 are (0.75, 0, 0), (0.75, 1, 1.125), (0.75, 2, 1.125), "
+                               "(0.75, 3, 0)."))
       << r.text;
-  EXPECT_TRUE(contains(r.text, "  > key 4 (not awaited: the step waits for key 5)\n  > key 5\n")) << r.text;
+  EXPECT_TRUE(contains(r.text, "Yes: P(0.25, 0.5) = (0.75, 1.5, 0.84375).")) << r.text;
+  // u and v swapped, and rows and columns swapped, are named as such.
+  EXPECT_TRUE(contains(r.text, "> answer 1.5, 0.75, 0.84375: wrong: (1.5, 0.75, 0.84375) is P(0.5, 0.25): u and v "
+                               "swapped."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "> choose 10: wrong: 10 = 2 * 4 + 1 + 1 is row 2, column 1: rows and columns "
+                               "swapped."))
+      << r.text;
+  EXPECT_TRUE(contains(r.text, "> choose the first column's four points: wrong: The first column is the edge u = 0: "
+                               "rows and columns swapped."))
+      << r.text;
   EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the patch view (or press M).")) << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/patch.lua")) << r.text;
   EXPECT_TRUE(contains(r.text, "made of 32 Bézier patches")) << r.text;
@@ -111,7 +132,7 @@ TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
   ASSERT_EQ(host.shown_patches().size(), 1u);
   EXPECT_EQ(host.shown_patches()[0].points[5], glm::dvec3(1, 1, 2));   // row 1, column 1: raised
   EXPECT_EQ(host.shown_patches()[0].points[4], glm::dvec3(0, 1, 0));   // row 1, column 0: flat edge
-  runner.go_to(2);
+  runner.go_to(3);  // "The Utah teapot"
   ASSERT_EQ(runner.error(), "");
   const std::vector<BezierPatch> teapot = read_bez(testing::source_dir() / "assets" / "teapot.bez");
   ASSERT_EQ(teapot.size(), 32u);
