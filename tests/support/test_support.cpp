@@ -1,6 +1,8 @@
 // Test helpers (see test_support.h).
 #include "support/test_support.h"
 
+#include <unistd.h>
+
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -31,7 +33,8 @@ std::filesystem::path scratch_dir() {
   for (char& ch : name) {
     if (ch == '/') ch = '_';
   }
-  auto dir = std::filesystem::temp_directory_path() / "meshedit-tests" / name;
+  // The process id keeps two checkouts (or two runs) of the same test from clearing each other's folder.
+  auto dir = std::filesystem::temp_directory_path() / "meshedit-tests" / (name + "." + std::to_string(::getpid()));
   std::filesystem::remove_all(dir);
   std::filesystem::create_directories(dir);
   return dir;

@@ -19,7 +19,8 @@ std::filesystem::path source_dir();
 // The whole file as bytes; a failed expectation (and "") if it cannot be opened.
 std::string read_text(const std::filesystem::path& path);
 
-// A fresh empty directory under the system temp dir, unique to the running test.
+// A fresh empty directory under the system temp dir, unique to the running test and process (a second call in the
+// same test empties it again).
 std::filesystem::path scratch_dir();
 
 // EXPECT_TRUE(near(actual, expected, tol)): every coordinate within tol, printed with 17 digits if not.
