@@ -1,6 +1,8 @@
 -- Part 4: edge flip, on the smallest mesh where a flip means something: two triangles sharing one edge (the
--- "diamond"). Every element gets the name the core's diagram gives it (engine/core/mesh_ops.h); the student
--- flips the middle edge with F and the lesson checks the result on the mesh on screen.
+-- "diamond"). Every element gets the name the core's diagram gives it (engine/core/mesh_ops.h). Each step asks
+-- before it tells: the student clicks h0.next, finds the course's edge, predicts the pointers a flip sets (on a
+-- diamond whose faces and vertices point at the halfedges the flip moves, so the classic "forgot f0.halfedge" bug
+-- shows), flips the edge with F, and the lesson checks every answer on the mesh on screen.
 -- CI runs it headless:
 --   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua
 -- Invariant: every name is found by walking from h0 = e0.halfedge, never assumed from storage order, so the
@@ -8,7 +10,7 @@
 
 lesson {
   title = "Part 4: Edge flip",
-  summary = "Two triangles, every element named; what a flip rewrites, then you flip the edge yourself.",
+  summary = "Two triangles, every element named; predict what a flip rewrites, then flip the edge yourself.",
 }
 
 -- a, b, c, d as in the diagram: a-b is the shared edge, c above it, d below it.
@@ -59,10 +61,45 @@ end
 
 local shape = diamond()
 local names = names_of(shape, shape:edge(0))
+local name = name_by_id(names)
+
+-- The same diamond with the faces and a, b pointing at the halfedges a flip takes away from them: f0.halfedge =
+-- h2 (which the flip moves into f1), f1.halfedge = h4 (moves into f0), a.halfedge = h0 (will leave d),
+-- b.halfedge = h1 (will leave c). Every one of these is allowed (any halfedge of the face, any halfedge leaving
+-- the vertex); the flip has to change all four. Same ids as `shape`, so `names` and `name` hold for it too.
+local function rigged_diamond()
+  local m = diamond()
+  local n = names_of(m, m:edge(0))
+  n.f0.halfedge, n.f1.halfedge = n.h2, n.h4
+  n.a.halfedge, n.b.halfedge = n.h0, n.h1
+  return m
+end
+local rigged = rigged_diamond()
+
+-- The clicked element in the diagram's words, for feedback: "h4 (id h4)", "the edge b-c".
+local function what(element)
+  if element.kind == "edge" then
+    local h = element.halfedge
+    return "an edge (" .. name(tostring(h.vertex)) .. "-" .. name(tostring(h.twin.vertex)) .. ")"
+  end
+  return "a " .. element.kind .. " (" .. name(tostring(element)) .. ")"
+end
+
+-- Feedback for a click that should have been a halfedge inside a face; nil when it is one.
+local function not_a_halfedge(element)
+  if element.kind ~= "halfedge" then
+    return "That is " .. what(element) .. ", not a halfedge: click one of the arrows beside the edges."
+  end
+  local n = name(tostring(element))
+  if n == "h6" or n == "h7" or n == "h8" or n == "h9" then
+    return n .. " runs around the outside, on the boundary loop: it is in no face."
+  end
+end
 
 step("The diamond", function()
   show(shape)
   camera { fit = true, pitch = 55 }  -- a flat mesh: seen from above, its faces and arrows have room
+  view { labels = true, halfedges = true }
   label_all(names)
   highlight(names.e, "yellow")
   say [[
@@ -70,58 +107,215 @@ step("The diamond", function()
 
 A flip works on two triangles that share an edge. On screen is exactly that: the **diamond**, four
 vertices and two faces. The yellow edge in the middle is the one we will flip; call it **e**.]]
+  say("Two kinds of label are on screen. The **names** (a to d, f0, f1, h0 to h9) are the core's diagram's "
+    .. "(engine/core/mesh_ops.h), found by walking from h0 = e.halfedge; this lesson uses them. The **ids** "
+    .. "(v0, e0, h3...) are the mesh's storage numbers, which the inspector and the pointer tables show; they "
+    .. "need not match: " .. id_list(names, { "h0", "h1", "h2", "h3", "h4", "h5" })
+    .. ". From the next step on only the names are drawn.")
   say [[
-The labels are the names the core's diagram uses (engine/core/mesh_ops.h):
+**h0** runs from a to b inside face **f0**; **h1** is its twin, b to a, inside **f1**.]]
+  pick {
+    "Click the halfedge that is h0.next.",
+    answer = function(element)
+      if tostring(element) == tostring(names.h2) then
+        return true, "The arrow named h2 (its id is " .. tostring(names.h2) .. ") runs b to c, after h0 in f0."
+      end
+      return false
+    end,
+    feedback = function(element)
+      local wrong = not_a_halfedge(element)
+      if wrong then return wrong end
+      local n = name(tostring(element))
+      if n == "h0" then return "That is h0 itself; h0.next is the halfedge after it." end
+      if n == "h1" then return "That is h1 = h0.twin: the same edge the other way, in the other face. next stays in h0's face." end
+      if n == "h3" then return "That is h3, the halfedge before h0 (h3.next = h0): next starts where h0 ends, at b." end
+      if n == "h4" or n == "h5" then return n .. " is in f1, the other face; h0.next stays in f0 with h0." end
+    end,
+    hint = "h0 ends at b. Its next starts at b and stays in f0.",
+  }
+  say [[
+Yes: h0.next is **h2**. The rest of the names follow the same walk:
 
 - **a** and **b** are the ends of e, **c** is the corner above it, **d** the corner below
-- **h0** runs a to b inside face **f0** = (a, b, c); **h1** is its twin, running b to a inside **f1** = (b, a, d)
-- around f0: h0, then **h2** (b to c), then **h3** (c to a), back to h0
-- around f1: h1, then **h4** (a to d), then **h5** (d to b), back to h1
+- around f0 = (a, b, c): h0, then **h2** (b to c), then **h3** (c to a), back to h0
+- around f1 = (b, a, d): h1, then **h4** (a to d), then **h5** (d to b), back to h1
 - **h6** to **h9** are the twins of h2 to h5: they run around the outside, on the boundary loop]]
-  say("Every name is found by walking from h0 = e.halfedge: h2 = h0.next, h3 = h2.next, h1 = h0.twin, "
-    .. "h4 = h1.next, and so on. The ids the app shows are the mesh's storage numbers, which need not match: "
-    .. id_list(names, { "h0", "h1", "h2", "h3", "h4", "h5" }) .. ".")
   say [[
-The CS184 handout names the same diamond with other letters: it flips the edge b-c between the triangles
-(a, b, c) and (c, b, d), and its (a, b, c) is our f0. Letter by letter:
+Click any element and press **I**: the inspector shows its next, twin, vertex, edge and face.]]
+end)
+
+step("The course's letters", function()
+  show(shape)
+  camera { fit = true, pitch = 55 }
+  view { labels = false, halfedges = false }  -- no arrows: a click on an edge's line picks the edge
+  local course = { a = "b", b = "c", c = "a", d = "d" }  -- ours -> the handout's (flip.lua's table)
+  for _, v in ipairs { "a", "b", "c", "d" } do label(names[v], v .. ", course " .. course[v]) end
+  label(names.f0, "f0")
+  label(names.f1, "f1")
+  for edge in shape:edges() do highlight(edge, "grey") end  -- the lines to click, all alike
+  say [[
+The CS184 handout draws the same diamond with other letters. Each corner is labelled with our name, then the
+handout's. The handout flips the edge **b-c** between its triangles (a, b, c) and (c, b, d).]]
+  pick {
+    "Click the edge the handout calls b-c.",
+    answer = names.e,
+    feedback = function(element)
+      if element.kind == "halfedge" then
+        return "That is a halfedge, not an edge: click the middle of an edge's line."
+      end
+      if element.kind ~= "edge" then return "That is " .. what(element) .. ": click an edge's line." end
+      local h = element.halfedge
+      local p, q = name(tostring(h.vertex)), name(tostring(h.twin.vertex))
+      return "That edge joins our " .. p .. " and " .. q .. ", which the handout calls " .. course[p] .. "-"
+        .. course[q] .. ". Read the second letter of each label."
+    end,
+    hint = "Find the corners labelled course b and course c.",
+  }
+  choose {
+    "After the flip the handout has the triangles (a, d, c) and (a, b, d). Which of our faces is its (a, d, c)?",
+    options = { "f0", "f1" },
+    answer = "f1",
+    feedback = {
+      f0 = "Our f0 ends up as (d, c, a), which is the handout's (d, b, a): its (a, b, d), not (a, d, c).",
+      f1 = "Its (a, d, c) is our (c, d, b): f1 after the flip.",
+    },
+    hint = "Turn each of the handout's letters into ours first: its a is our c, its d our d, its c our b.",
+  }
+  say [[
+Letter by letter:
 
 - course a, b, c, d = our c, a, b, d
 - course edge b-c = our e, a-b; after the flip, course a-d = our c-d
-- course (a, b, c), (c, b, d) = our f0, f1; after the flip, course (a, d, c), (a, b, d) = our f1, f0]]
-  say [[
-Click any label's element and press **I**: the inspector shows its next, twin, vertex, edge and face.]]
+- course (a, b, c), (c, b, d) = our f0, f1; after the flip, course (a, d, c), (a, b, d) = our f1, f0
+
+Your template scripts/student/flip.lua has the same table.]]
 end)
 
-step("What a flip rewrites", function()
+step("Predict the flip", function()
+  show(shape)
+  camera { fit = true, pitch = 55 }
+  view { labels = false, halfedges = true }
   label_all(names)
   highlight(names.e, "yellow")
-  highlight({ names.h2, names.h4 }, "orange")
   say [[
 Flipping e turns it inside the quad a, d, b, c, so that it joins **d** and **c** instead of a and b. No element
-is created or deleted: the same two faces, the same six inner halfedges, only their pointers change.]]
+is created or deleted: the same two faces, the same six inner halfedges, only their pointers change. After
+the flip h0 runs from **d to c** inside f0, and h1 from c to d inside f1. Predict the rest.]]
+  choose {
+    "After the flip, which halfedge is h0.next?",
+    options = { "h1", "h2", "h3", "h4", "h5" },
+    answer = "h3",
+    feedback = {
+      h1 = "h1 is h0's twin, and a flip changes no twin: next is a different pointer.",
+      h2 = "h2 is h0.next now, before the flip. After it h2 runs b to c inside f1, and h0 is in f0.",
+      h4 = "h4 runs a to d, but h0 will end at c: its next must start at c.",
+      h5 = "h5 stays in f1 (it runs d to b); h0.next is in f0, with h0.",
+      h3 = "h0 ends at c, and h3 runs c to a inside f0.",
+    },
+    hint = "After the flip h0 ends at c. Which halfedge of f0 starts at c?",
+  }
+  pick {
+    "One halfedge of f1 moves into f0. Click it.",
+    answer = function(element)
+      if tostring(element) == tostring(names.h4) then return true, "h4 (a to d) becomes a side of f0 = (d, c, a)." end
+      return false
+    end,
+    feedback = function(element)
+      local wrong = not_a_halfedge(element)
+      if wrong then return wrong end
+      local n = name(tostring(element))
+      if n == "h2" then return "h2 moves the other way: out of f0 into f1." end
+      if n == "h0" or n == "h1" then return n .. " is a halfedge of e: it keeps its face, only its ends change." end
+      if n == "h3" then return "h3 is in f0 already, and stays there." end
+      if n == "h5" then return "h5 stays in f1: f1 becomes (c, d, b) = h1, h5, h2." end
+    end,
+    hint = "f0 becomes the triangle (d, c, a). Which of its sides is in f1 now?",
+  }
   say [[
-Before the flip:
-
-- f0 = (a, b, c): h0.next = h2, h2.next = h3, h3.next = h0
-- f1 = (b, a, d): h1.next = h4, h4.next = h5, h5.next = h1
-- h0.vertex = a, h1.vertex = b]]
-  say [[
-After the flip:
+The whole *after* list:
 
 - f0 = (d, c, a): h0.next = h3, h3.next = h4, h4.next = h0
 - f1 = (c, d, b): h1.next = h5, h5.next = h2, h2.next = h1
 - h0.vertex = d, h1.vertex = c
-- the two orange halfedges change faces: **h4** moves into f0 and **h2** into f1
-- a vertex whose halfedge was h0 (or h1) must take another one, since h0 no longer leaves it]]
-  say [[
+- **h4** moves into f0 and **h2** into f1 (h4.face = f0, h2.face = f1)
+
 Twins, edges and everything outside the two triangles stay as they were. A flip is refused on a boundary
 edge (there is only one triangle) and when c and d are already joined (the flip would duplicate an edge).]]
+  highlight({ names.h2, names.h4 }, "orange")
+end)
+
+step("The pointers that are easy to forget", function()
+  show(rigged)
+  camera { fit = true, pitch = 55 }
+  view { labels = false, halfedges = true }
+  label_all(names)
+  highlight(names.e, "yellow")
+  highlight({ names.f0, names.h2 }, "orange")
+  highlight({ names.a, names.h0 }, "cyan")
+  say [[
+The list above is not all. This is the same diamond, but its faces and vertices store other halfedges, as
+they may (any halfedge of the face, any halfedge leaving the vertex): **f0.halfedge = h2** (orange),
+f1.halfedge = h4, **a.halfedge = h0** (blue) and b.halfedge = h1. The flip moves exactly those halfedges away.]]
+  pick {
+    "After the flip h2 is in f1. Click a halfedge f0.halfedge may point to after the flip.",
+    answer = function(element)
+      local n = element.kind == "halfedge" and name(tostring(element))
+      if n == "h0" or n == "h3" or n == "h4" then
+        return true, "The arrow named " .. n .. " (its id is " .. tostring(element) .. ") is in f0 after the flip."
+      end
+      return false
+    end,
+    feedback = function(element)
+      local wrong = not_a_halfedge(element)
+      if wrong then return wrong end
+      local n = name(tostring(element))
+      if n == "h2" then
+        return "h2 is what f0.halfedge holds now; after the flip h2 is in f1. Leaving it is the classic bug."
+      end
+      if n == "h1" or n == "h5" then return n .. " is in f1 after the flip, not f0." end
+    end,
+    hint = "After the flip f0 = (d, c, a) is made of h0, h3 and h4.",
+  }
+  choose {
+    "a.halfedge is h0, which after the flip runs d to c. Which halfedge must a.halfedge become?",
+    options = { "h0", "h3", "h4" },
+    answer = "h4",
+    feedback = {
+      h0 = "After the flip h0 leaves d, not a: the validator says 'a.halfedge is h0, but h0 leaves d'.",
+      h3 = "h3 runs c to a: it ends at a. A vertex's halfedge must leave the vertex.",
+      h4 = "h4 runs a to d inside f0: it leaves a. (b likewise takes h2.)",
+    },
+    hint = "v.halfedge must start at v. Which of these starts at a after the flip?",
+  }
+  -- A flip that rewrites only the list of the previous step, run on a copy: what validation says of it.
+  local broken = rigged:copy()
+  local n = names_of(broken, broken:edge(0))
+  n.h0.next, n.h3.next, n.h4.next = n.h3, n.h4, n.h0
+  n.h1.next, n.h5.next, n.h2.next = n.h5, n.h2, n.h1
+  n.h0.vertex, n.h1.vertex = n.d, n.c
+  n.h4.face, n.h2.face = n.f0, n.f1
+  local ok, report = broken:validate()
+  local lines = {}
+  for _, v in ipairs(ok and {} or report.violations) do
+    local named = v.message:gsub("%a%d+", function(id) return name(id) end)
+    lines[#lines + 1] = "- " .. named
+  end
+  say("A flip that sets only the next, vertex and face pointers leaves this diamond broken. The validator "
+    .. "finds " .. #lines .. " problems (in the diagram's names):\n\n" .. table.concat(lines, "\n"))
+  say [[
+On the first diamond none of the four pointed at a moved halfedge, so a flip that forgets them looks right
+there and breaks on the next edge. So: after the next, vertex and face pointers, set **f0.halfedge = h0**,
+**f1.halfedge = h1**, and a.halfedge = h4 if it was h0, b.halfedge = h2 if it was h1.]]
 end)
 
 step("Flip it yourself", function()
+  show(rigged)
+  camera { fit = true, pitch = 55 }
+  view { labels = false, halfedges = true }
   label_all(names)
   highlight(names.e, "yellow")
-  say("Click the yellow edge **e** (it is `" .. tostring(names.e) .. "`) to select it.")
+  say("This is the diamond of the last step, with f0.halfedge = h2 and a.halfedge = h0. Click the yellow edge "
+    .. "**e** (its id is `" .. tostring(names.e) .. "`) to select it.")
   wait_for { selection = tostring(names.e), hint = "Click the edge between a and b" }
   say [[
 Now press **F** to flip it.]]
@@ -138,7 +332,6 @@ Now press **F** to flip it.]]
     end,
   }
   local h = result:element(tostring(names.e)).halfedge
-  local name = name_by_id(names)
   say("Flipped. e now runs from **" .. name(tostring(h.vertex)) .. "** to **" .. name(tostring(h.twin.vertex))
     .. "**, and the mesh still passes validation.")
   highlight(result:element(tostring(names.e)), "yellow")
@@ -146,8 +339,9 @@ end)
 
 step("Before and after, pointer by pointer", function()
   local after = current_mesh()
-  local name = name_by_id(names)
-  local changes = after:diff(shape)
+  view { labels = false }
+  label_all(names)
+  local changes = after:diff(rigged)
   local lines = {}
   for _, change in ipairs(changes) do
     lines[#lines + 1] = "- " .. name(change.element) .. "." .. change.field .. ": " .. name(change.before) .. " to "
@@ -156,12 +350,28 @@ step("Before and after, pointer by pointer", function()
   say("Here is every field the flip changed (" .. #changes .. " in all), in the diagram's names:\n\n"
     .. table.concat(lines, "\n"))
   say [[
-Compare them with the *after* list of the previous step: that list is your specification. The pointer tables
-below the view show the same thing: the changed cells are highlighted, and the **changes** tab lists them.]]
+The ten next, vertex and face fields are the *after* list; the other four are the face and vertex pointers of
+the previous step. The pointer tables beside the view show the same: the changed cells are highlighted, and the
+**changes** tab lists them.]]
   for _, change in ipairs(changes) do highlight(change.element, "orange") end
   say [[
-When you write `flip_edge` yourself, collect every element first (h0 to h5, a to d, f0, f1), then set
-every pointer. Press **F** three more times in the app: after four flips every pointer is back where it
-started. To run your own `flip_edge` (scripts/student/flip.lua), select an edge, press **X** and **Run
-mine**: the panel puts your pointers beside the reference's and replays your writes one by one.]]
+When you write `flip_edge` yourself (scripts/student/flip.lua), collect every element first (h0 to h5, a to d,
+f0, f1), then set every pointer. To run it, select an edge, press **X** for the Exercises tab and **Run mine**:
+the panel puts your pointers beside the reference's and replays your writes one by one.]]
+  answer {
+    "Press F again and again: after how many flips of e in a row is every halfedge pointer back where it started?",
+    number = 4,
+    tolerance = 0,
+    feedback = function(value)
+      if value == 2 then
+        return "After 2 flips e joins a and b again, but h0 runs b to a: the two triangles have traded faces."
+      end
+      if value == 1 then return "One flip is what you just did: e joins c and d." end
+      if value == 3 then return "After 3 flips e joins c and d again, with h0 running c to d." end
+    end,
+    hint = "Each flip moves both ends of e one corner on around the quad a, d, b, c.",
+  }
+  say [[
+Four: each flip moves each end of e one corner on, and the quad has four corners. The face and vertex
+pointers stay as the first flip left them, which is fine: any halfedge of the face, any leaving the vertex.]]
 end)

@@ -143,21 +143,26 @@ TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
 TEST(LessonsA, HalfedgeWalksPassesEveryStep) {
   const Headless r = run("3_halfedge_walks");
   ASSERT_EQ(r.outcome.failure, "") << r.text;
-  EXPECT_EQ(r.outcome.steps, 6u);
-  EXPECT_EQ(r.outcome.passed, 6u);
-  EXPECT_TRUE(contains(r.text, "After 3 steps of next the walk is back at the start: f0 is a triangle.")) << r.text;
+  EXPECT_EQ(r.outcome.steps, 7u);
+  EXPECT_EQ(r.outcome.passed, 7u);
+  // Each question names the mistakes the answers file makes.
+  EXPECT_TRUE(contains(r.text, "  > click h14: wrong: That is h.twin: the same edge the other way")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > answer 4: wrong: 4 triangles touch v5, but the list does not say which 4")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > click h8: wrong: That is h.next: it goes on around h's own face")) << r.text;
+  EXPECT_TRUE(contains(r.text, "After 3 steps of next the walk is back at the start: f5 is a triangle.")) << r.text;
   EXPECT_TRUE(contains(r.text, "  > click f5\n")) << r.text;
   EXPECT_TRUE(contains(r.text, "You clicked f5.")) << r.text;
-  EXPECT_TRUE(contains(r.text, "so v0 has degree 6 (the mesh agrees: v:degree() is 6)")) << r.text;
+  EXPECT_TRUE(contains(r.text, "so v5 has degree 4 (the mesh agrees: v:degree() is 4)")) << r.text;
   // A 3x2 grid has 2 * (3 + 2) = 10 boundary edges.
   EXPECT_TRUE(contains(r.text, ": 10 steps around the grid and back to the start")) << r.text;
   // The boundary condition stays false for a vertex and an interior edge, and holds for e0.
   EXPECT_TRUE(contains(r.text, "  > selection v1 (not awaited")) << r.text;
   EXPECT_TRUE(contains(r.text, "  > selection e1 (not awaited")) << r.text;
   EXPECT_TRUE(contains(r.text, "  Yes: e0 is on the boundary.")) << r.text;
-  // v0 of the cube lies in both triangles of each of its three sides: the weighted sum is the diagonal.
-  EXPECT_TRUE(contains(r.text, "meets the 6 orange triangles, and the normal comes out as (-0.577, -0.577, -0.577)."))
-      << r.text;
+  // The fan: the plain average of the unit face normals points straight up; area weighting leans it towards the
+  // big faces on the right.
+  EXPECT_TRUE(contains(r.text, "It points straight up, (0.000, 0.000, 1.000).")) << r.text;
+  EXPECT_TRUE(contains(r.text, "The orange arrow is the area-weighted normal, (0.346, 0.000, 0.938)")) << r.text;
   EXPECT_TRUE(contains(r.text, "  > key Q\n")) << r.text;
 }
 
@@ -166,21 +171,28 @@ TEST(LessonsA, HalfedgeWalksMarkWhatThePointersReach) {
   HeadlessHost host;
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("3_halfedge_walks"))) << runner.error();
-  // Step 1: face f0 and the three halfedges of its next-loop, labelled in walking order.
-  const HalfedgeId h0 = cube.halfedge(FaceId::face(0));
+  // Step 1: face f5 (in sight on the front) and its halfedge h; the step asks for h.next before it walks.
+  const HalfedgeId h0 = cube.halfedge(FaceId::face(5));
   const HalfedgeId h1 = cube.next(h0), h2 = cube.next(h1);
+  EXPECT_EQ(host.labels(), (std::map<ElementRef, std::string>{{ElementRef(h0), "h"}}));
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Pick);
+  ASSERT_TRUE(runner.deliver(LessonEvent::click(h1)));
+  // Then the three halfedges of its next-loop, labelled in walking order.
   EXPECT_EQ(host.labels(), (std::map<ElementRef, std::string>{
                                {ElementRef(h0), "h"}, {ElementRef(h1), "h.next"}, {ElementRef(h2), "h.next.next"}}));
   EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(h0))), colour_hex(kDarkSwatches.vermillion));
-  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(FaceId::face(0)))), colour_hex(kDarkSwatches.yellow));
+  EXPECT_EQ(colour_hex(host.highlights().at(ElementRef(FaceId::face(5)))), colour_hex(kDarkSwatches.yellow));
   EXPECT_EQ(host.highlights().size(), 4u);
 
-  // Step 2: every halfedge leaving v0, numbered in the order h = h.twin.next reaches them.
-  runner.go_to(1);
-  const VertexId v0(0);
-  std::map<ElementRef, std::string> expected{{ElementRef(v0), "v0"}};
+  // Step 3: every halfedge leaving v5 (the front top right corner), numbered in the order h = h.twin.next
+  // reaches them, once the student clicked h.twin.next.
+  runner.go_to(2);
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Pick);
+  const VertexId v0(5);
+  ASSERT_TRUE(runner.deliver(LessonEvent::click(cube.next(cube.twin(cube.halfedge(v0))))));
+  std::map<ElementRef, std::string> expected{{ElementRef(v0), "v5"}};
   HalfedgeId h = cube.halfedge(v0);
-  for (int k = 1; k <= 6; ++k) {
+  for (int k = 1; k <= 4; ++k) {
     EXPECT_EQ(cube.vertex(h), v0);
     expected[ElementRef(h)] = std::to_string(k);
     h = cube.next(cube.twin(h));
@@ -190,8 +202,8 @@ TEST(LessonsA, HalfedgeWalksMarkWhatThePointersReach) {
   EXPECT_EQ(runner.waiting_for().kind, LessonWait::Kind::Key);
   EXPECT_EQ(runner.waiting_for().name, "T");
 
-  // Step 3: the boundary loop of the 3x2 grid, every halfedge of it green.
-  runner.go_to(2);
+  // Step 4: the boundary loop of the 3x2 grid, every halfedge of it green.
+  runner.go_to(3);
   const HalfedgeMesh grid = build_halfedge_mesh(make_grid(3, 2));
   std::set<ElementRef> loop;
   for (uint32_t i = 0; i < grid.num_halfedges(); ++i) {

@@ -93,27 +93,35 @@ HalfedgeMesh diamond() {
 // ---- part 4: edge flip ----
 
 TEST(LessonsB, EdgeFlipPassesHeadlessAndListsTheChangedFields) {
-  const std::string text = run_headless("4_edge_flip", 4);
-  EXPECT_EQ(text.rfind("Part 4: Edge flip (4_edge_flip.lua, 4 steps)\n", 0), 0u) << text;
+  const std::string text = run_headless("4_edge_flip", 6);
+  EXPECT_EQ(text.rfind("Part 4: Edge flip (4_edge_flip.lua, 6 steps)\n", 0), 0u) << text;
   EXPECT_TRUE(contains(text, "  > selection e0\n")) << text;
   EXPECT_TRUE(contains(text, "  > flip e0\n\n  Flipped. e now runs from d to c, and the mesh still passes validation."))
       << text;
   // The diagram's names for the ids the builder gives: h1 is stored as h3, h2 as h1, h3 as h2.
   EXPECT_TRUE(contains(text, "h0 is h0, h1 is h3, h2 is h1, h3 is h2, h4 is h4, h5 is h5.")) << text;
-  // The diff, in the diagram's names: exactly the after-list of mesh_ops.h.
-  EXPECT_TRUE(contains(text, "every field the flip changed (10 in all)")) << text;
+  // The diff, in the diagram's names: exactly the after-list of mesh_ops.h, and (the diamond's faces and a, b
+  // pointing at the halfedges the flip moves) the four face and vertex pointers of the classic bug.
+  EXPECT_TRUE(contains(text, "every field the flip changed (14 in all)")) << text;
   for (const char* line : {"- h0.next: h2 to h3", "- h0.vertex: a to d", "- h2.next: h3 to h1", "- h2.face: f0 to f1",
                            "- h3.next: h0 to h4", "- h1.next: h4 to h5", "- h1.vertex: b to c", "- h4.next: h5 to h0",
-                           "- h4.face: f1 to f0", "- h5.next: h1 to h2"}) {
+                           "- h4.face: f1 to f0", "- h5.next: h1 to h2", "- f0.halfedge: h2 to h0",
+                           "- f1.halfedge: h4 to h1", "- a.halfedge: h0 to h4", "- b.halfedge: h1 to h2"}) {
     EXPECT_TRUE(contains(text, std::string("  ") + line + "\n")) << line << "\n" << text;
   }
+  // The forgetful flip, as the validator reports it in the diagram's names.
+  for (const char* line : {"- f0.halfedge is h2, but h2.face is f1", "- a.halfedge is h0, but h0 leaves d"}) {
+    EXPECT_TRUE(contains(text, std::string("  ") + line + "\n")) << line << "\n" << text;
+  }
+  EXPECT_TRUE(contains(text, "> click h3: wrong: That is h1 = h0.twin")) << text;
 }
 
 TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
   HeadlessHost host;
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("4_edge_flip"))) << runner.error();
-  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  // The first step asks the student to click h0.next, with every name already on screen.
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
   const HalfedgeMesh mesh = diamond();
   const HalfedgeId h0 = mesh.halfedge(EdgeId(0));
   const HalfedgeId h1 = mesh.twin(h0), h2 = mesh.next(h0), h3 = mesh.next(h2), h4 = mesh.next(h1),
@@ -140,24 +148,27 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
   host.set_selection(EdgeId(0));
   ASSERT_TRUE(runner.deliver(LessonEvent::selection(EdgeId(0))));
   ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Condition);
+  const HalfedgeMesh shown = *host.current_mesh();
   // A split is not a flip: the step keeps waiting.
   edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(split(m, EdgeId(0)).ok()); });
   runner.update(0.0);
   EXPECT_EQ(runner.step_state(), LessonRunner::StepState::Waiting);
-  // Undo it (a fresh diamond), then flip.
-  host.set_current_mesh(std::make_shared<HalfedgeMesh>(diamond()));
+  // Undo it (the diamond the step showed), then flip.
+  host.set_current_mesh(std::make_shared<HalfedgeMesh>(shown));
   edit_screen(host, [](HalfedgeMesh& m) { ASSERT_TRUE(flip(m, EdgeId(0)).ok()); });
   runner.update(0.0);
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   EXPECT_TRUE(contains(said(runner), "e now runs from **d** to **c**")) << said(runner);
-  // The next step highlights exactly the elements whose fields changed.
+  // The next step highlights exactly the elements whose fields changed, then asks how many flips go round.
   runner.next();
-  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
   for (ElementRef changed : {ElementRef(HalfedgeId(0)), ElementRef(HalfedgeId(1)), ElementRef(HalfedgeId(2)),
-                             ElementRef(HalfedgeId(3)), ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5))}) {
+                             ElementRef(HalfedgeId(3)), ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5)),
+                             ElementRef(VertexId(0)), ElementRef(VertexId(1)), ElementRef(FaceId(0)),
+                             ElementRef(FaceId(1))}) {
     EXPECT_EQ(colour_of(host, changed), colour_hex(kDarkSwatches.orange)) << format_id(changed);
   }
-  EXPECT_EQ(host.highlights().size(), 6u);
+  EXPECT_EQ(host.highlights().size(), 10u);
 }
 
 // ---- part 5: edge split ----
