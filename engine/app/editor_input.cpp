@@ -4,8 +4,8 @@
 //               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
 //   curve view  E one more de Casteljau level, C the whole curve, M "mine" (levels from scripts/student/curve.lua)
 //   patch view  M "mine" (the probe point from scripts/student/patch.lua)
-//   everywhere  P screenshot, Ctrl+O open, Ctrl+Q quit, F1 help, Esc clears the selection, [ and ] fold the left and right
-//               columns, Ctrl+= Ctrl+- Ctrl+0 text size (bigger, smaller, default), ` console, X exercises
+//   everywhere  P screenshot, Ctrl+O open, Ctrl+Q quit, F1 help, Esc clears the selection, [ and ] fold the left
+//               and right columns, Ctrl+= Ctrl+- Ctrl+0 text size (bigger, smaller, default), ` console, X exercises
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
@@ -124,8 +124,12 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
   switch (key) {
     case GLFW_KEY_I:
       inspector_.open = !inspector_.open;
-      if (inspector_.open) select_tab_ = RightTab::Inspector;
-      if (inspector_.open) (lesson_->loaded() ? settings_.layout.right_open : settings_.layout.left_open) = true;
+      if (inspector_.open) {
+        select_tab_ = RightTab::Inspector;
+        // The inspector is a tab on the right while a lesson has the left column, else on the left: unfold it.
+        bool& column_open = lesson_->loaded() ? settings_.layout.right_open : settings_.layout.left_open;
+        column_open = true;
+      }
       return true;
     case GLFW_KEY_ESCAPE: selection_.selected = {}; return true;
     case GLFW_KEY_S: split_selected(doc_, selection_); return true;  // outcome goes to the status line

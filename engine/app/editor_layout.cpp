@@ -190,7 +190,9 @@ void EditorApp::draw_curve_canvas_window() {
   const ImGuiWindowFlags flags = ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoMove |
                                  ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoBringToFrontOnFocus |
                                  ImGuiWindowFlags_NoScrollWithMouse;
-  if (ImGui::Begin("###curve view", nullptr, flags)) draw_curve_canvas(curve_, ImVec2(v.width, v.height), &bezier_mine_);
+  if (ImGui::Begin("###curve view", nullptr, flags)) {
+    draw_curve_canvas(curve_, ImVec2(v.width, v.height), &bezier_mine_);
+  }
   ImGui::End();
   ImGui::PopStyleVar(2);
 }

@@ -104,7 +104,8 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::MenuItem("Smaller text", "Ctrl+-")) change_font_size(-1);
     if (ImGui::MenuItem("Default text size", "Ctrl+0")) change_font_size(0);
     if (ImGui::BeginMenu("Theme")) {
-      for (const auto& [name, theme] : {std::pair{"Dark", Theme::Dark}, std::pair{"Light (projectors)", Theme::Light}}) {
+      constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
+      for (const auto& [name, theme] : kThemes) {
         if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) {
           settings_.theme = theme;
           look_changed_ = true;

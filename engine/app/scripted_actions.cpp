@@ -19,8 +19,8 @@ const std::map<std::string, int>& arities() {
       {"lesson-next", 0},     {"lesson-back", 0},   {"lesson-button", -1}, {"expect-lesson-step", 2},
       {"expect-lesson-said", -1}, {"exercise", 2},  {"run-mine", 0},      {"run-reference", 0},
       {"replay-start", 0},    {"replay-step", 1},   {"replay-finish", 0}, {"expect-mine", -1},
-      {"orbit", 2},           {"expect-gpu-update", 1}, {"click-on", 1},      {"layout-json", 1},      {"window-size", 2},
-                                                        {"up-axis", 1},      {"expect-up-axis", -1},
+      {"orbit", 2},           {"expect-gpu-update", 1}, {"click-on", 1},     {"layout-json", 1},
+      {"window-size", 2},     {"up-axis", 1},       {"expect-up-axis", -1},
       {"animate-edits", 1},   {"lesson-choose", -1},    {"lesson-answer", -1},    {"expect-lesson-feedback", -1},
       {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},
   };
