@@ -2,9 +2,11 @@
 -- "diamond"). Every element gets the name the core's diagram gives it (engine/core/mesh_ops.h). Each step asks
 -- before it tells: the student clicks h0.next, finds the course's edge, predicts the pointers a flip sets (on a
 -- diamond whose faces and vertices point at the halfedges the flip moves, so the classic "forgot f0.halfedge" bug
--- shows), flips the edge with F, and the lesson checks every answer on the mesh on screen.
--- CI runs it headless:
---   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua
+-- shows), flips the edge with F, and the lesson checks every answer on the mesh on screen. The last step runs the
+-- student's own flip_edge (scripts/student/flip.lua) on that diamond with your_turn, and waits until it is right.
+-- CI runs it headless, with the correct solutions and with buggy ones (tests/script/lesson_student_test.cpp):
+--   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua \
+--     --student tests/script/solutions
 -- Invariant: every name is found by walking from h0 = e0.halfedge, never assumed from storage order, so the
 -- labels stay right whatever order the builder numbers halfedges in.
 
@@ -354,10 +356,6 @@ The ten next, vertex and face fields are the *after* list; the other four are th
 the previous step. The pointer tables beside the view show the same: the changed cells are highlighted, and the
 **changes** tab lists them.]]
   for _, change in ipairs(changes) do highlight(change.element, "orange") end
-  say [[
-When you write `flip_edge` yourself (scripts/student/flip.lua), collect every element first (h0 to h5, a to d,
-f0, f1), then set every pointer. To run it, select an edge, press **X** for the Exercises tab and **Run mine**:
-the panel puts your pointers beside the reference's and replays your writes one by one.]]
   answer {
     "Press F again and again: after how many flips of e in a row is every halfedge pointer back where it started?",
     number = 4,
@@ -374,4 +372,21 @@ the panel puts your pointers beside the reference's and replays your writes one 
   say [[
 Four: each flip moves each end of e one corner on, and the quad has four corners. The face and vertex
 pointers stay as the first flip left them, which is fine: any halfedge of the face, any leaving the vertex.]]
+  show(rigged)
+  clear()
+  label_all(names)
+  say [[
+**Your turn.** Write `flip_edge` in scripts/student/flip.lua: collect every element first (h0 to h5, a to d,
+f0, f1), then set every pointer. Below, the lesson runs your `flip_edge` on this diamond's edge e (with
+f0.halfedge = h2 and a.halfedge = h0, as in the last steps) beside the reference, and says what differs. Save
+the file and it runs again; the lesson goes on when yours gives the reference's answer. The Exercises tab (**X**,
+**Run mine**) runs the same check on any edge and replays your writes one by one.]]
+  your_turn {
+    exercise = "flip",
+    mesh = rigged,
+    element = names.e,
+    hint = "After the flip f0 holds h0, h3, h4 and f1 holds h1, h5, h2: set each face's and each vertex's halfedge "
+      .. "to one that is still in it or still leaves it.",
+  }
+  say "Your `flip_edge` gives the reference's answer, pointer for pointer up to renumbering."
 end)

@@ -32,8 +32,9 @@ constexpr const char* kUsage =
     "  run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
     "  grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap]\n"
     "        --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions\n"
-    "  lesson FILE.lua --headless [--answers ANSWERS.lua]\n"
-    "                                       run a lesson's steps with scripted answers (no window)\n"
+    "  lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"
+    "                                       run a lesson's steps with scripted answers (no window); your_turn\n"
+    "                                       runs DIR's files (default scripts/student)\n"
     "\n"
     "options for files with Bézier patches (.bez): --resolution N (tessellation per patch, default 16)\n"
     "with no command, or a file as the first argument, meshedit opens the window\n";

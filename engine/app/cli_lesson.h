@@ -8,7 +8,8 @@
 
 namespace meshedit {
 
-// `lesson FILE --headless [--answers ANSWERS.lua]`: every step with scripted answers; 0 when all pass.
+// `lesson FILE --headless [--answers ANSWERS.lua] [--student DIR]`: every step with scripted answers, your_turn with
+// the student folder DIR; 0 when all pass.
 // Throws UsageError (bad arguments, or no --headless) and ScriptError (a step failed: its file:line line).
 int run_lesson(const std::vector<std::string>& args, std::ostream& out);
 

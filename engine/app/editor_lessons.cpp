@@ -91,6 +91,7 @@ ReloadOutcome EditorApp::reload_lesson() {
 std::unique_ptr<LessonRunner> EditorApp::make_lesson_runner() {
   auto runner = std::make_unique<LessonRunner>(*lesson_host_);
   runner->set_print([this](const std::string& line) { console_.append_output(line); });
+  runner->set_student_folder(exercises_.folder());  // your_turn runs the Exercises tab's files
   return runner;
 }
 
@@ -109,6 +110,7 @@ void EditorApp::update_lesson(float frame_ms) {
   }
   const double dt = std::min(0.25, double(frame_ms) / 1000.0);  // a long stall must not skip an animation
   reload_if_changed(*lesson_, lesson_panel_, dt);
+  if (lesson_->student_folder() != exercises_.folder()) lesson_->set_student_folder(exercises_.folder());
   lesson_->update(dt);
 }
 

@@ -20,10 +20,11 @@ const AnswerField kAnswerFields[] = {
     {"key", Kind::Key},         {"click", Kind::Click},           {"selection", Kind::Selection},
     {"button", Kind::Button},   {"flip", Kind::Flip},             {"split", Kind::Split},
     {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"loop_phase", Kind::LoopPhase},
-    {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT}};
+    {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT},
+    {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
-    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, choose, answer or curve_t";
+    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, choose, answer, curve_t or your_turn";
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -95,8 +96,15 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
     lua_pop(L, 1);
   }
   if (fields != 1) throw ScriptError(where + ": give exactly one answer per table");
-  if (answer.feedback && answer.kind != Kind::Choose && answer.kind != Kind::Click && answer.kind != Kind::Value) {
-    throw ScriptError(where + ": feedback goes with a wrong choose, click or answer");
+  if (answer.kind == Kind::YourTurn && answer.value != "right" && answer.value != "wrong") {
+    throw ScriptError(where + ": your_turn must be \"right\" or \"wrong\", got '" + answer.value + "'");
+  }
+  if (answer.kind == Kind::YourTurn && answer.feedback && answer.value == "right") {
+    throw ScriptError(where + ": feedback goes with your_turn = \"wrong\"");
+  }
+  if (answer.feedback && answer.kind != Kind::Choose && answer.kind != Kind::Click && answer.kind != Kind::Value &&
+      answer.kind != Kind::YourTurn) {
+    throw ScriptError(where + ": feedback goes with a wrong choose, click, answer or your_turn");
   }
   return answer;
 }

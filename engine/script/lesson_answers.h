@@ -18,6 +18,10 @@
 // A choose, click or answer may also carry `feedback = "words"`: the answer must then be judged wrong, with feedback
 // containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
 //
+// {your_turn = "right"} and {your_turn = "wrong", feedback = "words"} are not given but expected: the verdict of the
+// step's next your_turn run of the student's file (lesson_your_turn.h) must be that one, with a wrong one's diagnosis
+// containing the words.
+//
 // Invariants: the file runs in a sandboxed runtime of its own under the given limits and is read raw (no metamethod
 // of the file's runs while reading); anything malformed is a ScriptError naming the file, the step and the answer's
 // position ("a.lua: step 2, answer 1: unknown answer 'klick' (use ...)").
@@ -36,10 +40,12 @@
 namespace meshedit {
 
 struct ScriptedAnswer {
-  enum class Kind { Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Choose, Value, CurveT };
+  enum class Kind {
+    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Choose, Value, CurveT, YourTurn
+  };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...
-  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1" ("" for subdivide)
+  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right" ("" for subdivide)
   std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
 
   bool is_edit() const;  // an edit of the scene (flip ... loop_phase, curve_t): always used, never "not awaited"

@@ -21,6 +21,7 @@
 #include "script/lesson_api_support.h"
 #include "script/lesson_displays.h"
 #include "script/lesson_questions.h"
+#include "script/lesson_your_turn.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
 
@@ -500,6 +501,7 @@ void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
   runtime.run_string(kPrelude, kLessonPreludeName);
   open_lesson_questions(runtime, script);
   open_lesson_displays(runtime, script);
+  open_lesson_your_turn(runtime, script);
 }
 
 void clear_step_display(lua_State* L, LessonScript& script) {
@@ -512,6 +514,7 @@ void clear_step_display(lua_State* L, LessonScript& script) {
   script.answered.clear();
   script.last_judgement = {};
   script.judgements = 0;
+  script.your_turns.clear();
 }
 
 }  // namespace meshedit

@@ -49,12 +49,11 @@
 #include "script/lesson_blocks.h"
 #include "script/lesson_events.h"
 #include "script/lesson_host.h"
+#include "script/lua_runtime.h"
 
 struct lua_State;
 
 namespace meshedit {
-
-class LuaRuntime;
 
 struct LessonStepDef {
   std::string title;
@@ -70,6 +69,9 @@ struct LessonScript {
   std::string title, summary;
   std::vector<LessonStepDef> steps;
   std::filesystem::path directory;  // the lesson file's folder (lesson_file() resolves against it); may be empty
+  // The student's folder your_turn runs files from (lesson_your_turn.h); empty: your_turn says none was given.
+  std::filesystem::path student_folder;
+  LuaLimits student_limits;  // for the student's code, as the window's exercises run it
 
   // The running step (phase Step): its coroutine, what it said, what it waits for.
   lua_State* step_thread = nullptr;
@@ -85,6 +87,8 @@ struct LessonScript {
   // The latest judgement of an answer and how many were made in this step (right or wrong).
   LessonJudgement last_judgement;
   size_t judgements = 0;
+  // Every your_turn run of this step (lesson_your_turn.h), in order: kept apart from the questions' judgements.
+  std::vector<YourTurnVerdict> your_turns;
 };
 
 // Defines the lesson globals in `runtime` (once, before the lesson file runs), all bound to `script`,

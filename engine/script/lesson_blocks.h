@@ -63,6 +63,19 @@ struct LessonJudgement {
   std::string feedback;  // what the lesson says about it ("" when it says nothing about a right answer)
 };
 
+// One run of the student's file by your_turn (lesson_your_turn.h): the same verdict and words as the Exercises tab.
+struct YourTurnVerdict {
+  std::string file;      // "flip.lua"
+  std::string function;  // "flip_edge"
+  std::string input;     // ExerciseInput::describe: "e0 of a mesh with 2 faces"
+  bool right = false;
+  std::string feedback;  // wrong: compare()'s diagnosis (or the file's error, file:line); right: ""
+  std::string where;     // "4_edge_flip.lua:370": the your_turn call
+  size_t block = 0;      // how many blocks the step showed before this run (where it goes among them)
+  std::string path;      // the file run, and its student_file_stamp before the run (what a wait watches)
+  std::string stamp;
+};
+
 // The value of a plot's curve at x, by straight lines between its samples (clamped to its ends); nullopt when it has
 // no samples.
 std::optional<double> plot_value(const LessonPlotCurve& curve, double x);

@@ -77,6 +77,7 @@ std::string LessonWait::describe() const {
     }
     case Kind::Pick: return "a click answering '" + question + "'";
     case Kind::Answer: return (components == 1 ? "a number answering '" : "a point answering '") + question + "'";
+    case Kind::YourTurn: return "the student's " + name + " to give the reference's answer";
   }
   return "";
 }

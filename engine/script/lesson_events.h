@@ -13,6 +13,8 @@
 //   `feedback` saying what is wrong.
 // - A question's hint is held back until the student has tried once (hint_shown); a wait_for's hint is the
 //   instruction itself ("Press F") and shows at once.
+// - A your_turn wait (lesson_your_turn.h) takes no event: the runner runs the student's file again when its stamp
+//   (watched_stamp, read at most twice a second) changes. `name` is the file's name, `feedback` the last diagnosis.
 #pragma once
 
 #include <optional>
@@ -38,7 +40,7 @@ struct LessonEvent {
 };
 
 struct LessonWait {
-  enum class Kind { None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer };
+  enum class Kind { None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer, YourTurn };
   Kind kind = Kind::None;
   std::string name;                         // Key: the key; Button: the label
   std::optional<ElementKind> element_kind;  // Click/Selection on any element of this kind
@@ -54,6 +56,11 @@ struct LessonWait {
   int tries = 0;                     // wrong answers so far
   std::string feedback;              // what the lesson said about the last wrong answer ("" before any)
 
+  // YourTurn: the student's file and its stamp when it last ran (student_file_stamp), and the seconds since the
+  // stamp was last read.
+  std::string watched_file, watched_stamp;
+  double since_checked = 0.0;
+
   bool waiting() const { return kind != Kind::None; }
   bool is_question() const { return kind == Kind::Choice || kind == Kind::Pick || kind == Kind::Answer; }
   // Whether the panel shows the hint: a question's only after one try; any other wait's at once.
@@ -64,7 +71,8 @@ struct LessonWait {
   bool selection_matches(ElementRef element) const;
   // "key F", "a click on a vertex", "a click on e7", "the selection of an edge", "the selection of e7",
   // "a condition", "the Continue button", "an animation (2 s)", "a choice (h1, h2, h4) in 'Which...?'", "a click
-  // answering 'Click...'", "a number answering 'What...?'", "a point answering 'Where...?'"; "" for None.
+  // answering 'Click...'", "a number answering 'What...?'", "a point answering 'Where...?'", "the student's flip.lua
+  // to give the reference's answer"; "" for None.
   std::string describe() const;
 };
 

@@ -60,6 +60,12 @@ std::string with_step(const std::string& message, const std::string& step) {
   return step + ": " + message;
 }
 
+// A diagnosis of several lines as one ("a; b"), for a failure line.
+std::string one_line(std::string text) {
+  for (size_t at = text.find('\n'); at != std::string::npos; at = text.find('\n', at)) text.replace(at, 1, "; ");
+  return text;
+}
+
 void print_block(std::ostream& out, const std::string& markdown) {
   const std::string plain = markdown_to_plain(markdown);
   size_t start = 0;
@@ -74,8 +80,10 @@ void print_block(std::ostream& out, const std::string& markdown) {
 
 class HeadlessDriver {
  public:
-  HeadlessDriver(std::ostream& out, const LuaLimits& limits) : out_(out), runner_(host_, limits) {
+  HeadlessDriver(std::ostream& out, const LuaLimits& limits, const std::filesystem::path& student_folder)
+      : out_(out), runner_(host_, limits) {
     runner_.set_print([this](const std::string& line) { out_ << line << '\n'; });
+    runner_.set_student_folder(student_folder);
   }
 
   HeadlessOutcome run(const std::filesystem::path& lesson, ScriptedAnswers answers) {
@@ -114,7 +122,7 @@ class HeadlessDriver {
   std::string run_step(AnswerList& queue) {
     shown_ = StepShown{};
     for (size_t round = 0; round < kMaxRoundsPerStep; ++round) {
-      print_new_blocks();
+      if (std::string failure = print_new_blocks(queue); !failure.empty()) return failure;
       switch (runner_.step_state()) {
         case LessonRunner::StepState::Finished:
           if (!queue.empty()) out_ << "  (" << queue.size() << " scripted answer(s) not used)\n";
@@ -125,6 +133,11 @@ class HeadlessDriver {
         case LessonRunner::StepState::Waiting: break;
       }
       const LessonWait wait = runner_.waiting_for();
+      if (wait.kind == LessonWait::Kind::YourTurn && shown_.wrong_expected) {
+        if (!queue.empty()) out_ << "  (" << queue.size() << " scripted answer(s) not used)\n";
+        out_ << "  (wrong, as the answers expect: going on)\n";
+        return "";
+      }
       if (wait.kind == LessonWait::Kind::Animation) {
         runner_.update(std::max(wait.seconds / 10.0, 1.0 / 60.0));
         continue;
@@ -154,9 +167,11 @@ class HeadlessDriver {
   // What the step shows that was not printed yet: say() text as plain text (a blank line between blocks), live text
   // ("  [live] t = 0.50"), plots ("  [plot Bernstein weights: B0, B1 for x from 0 to 1, marker at 0.5]"). Answered
   // questions were printed with their answer.
-  void print_new_blocks() {
+  // your_turn runs are printed in their place among the blocks (check_your_turns); "" or the failure line.
+  std::string print_new_blocks(AnswerList& queue) {
     const std::vector<LessonBlock>& blocks = runner_.blocks();
     for (; shown_.blocks < blocks.size(); ++shown_.blocks) {
+      if (std::string failure = check_your_turns(queue, shown_.blocks); !failure.empty()) return failure;
       const LessonBlock& block = blocks[shown_.blocks];
       if (block.kind == LessonBlock::Kind::Text) {
         if (shown_.texts++ > 0) out_ << '\n';
@@ -167,6 +182,7 @@ class HeadlessDriver {
         print_plot(runner_.plots()[block.index]);
       }
     }
+    return check_your_turns(queue, blocks.size());
   }
 
   void print_live(size_t index) {
@@ -206,8 +222,45 @@ class HeadlessDriver {
     out_ << '\n';
   }
 
+  // The your_turn runs not printed yet that came before block `before`, each printed ("  > your turn flip.lua: wrong:
+  // DIAGNOSIS") and checked against the next answer when that is a your_turn expectation; "" or the failure line.
+  std::string check_your_turns(AnswerList& queue, size_t before) {
+    const std::vector<YourTurnVerdict>& turns = runner_.your_turns();
+    for (; shown_.your_turns < turns.size() && turns[shown_.your_turns].block <= before; ++shown_.your_turns) {
+      const YourTurnVerdict& verdict = turns[shown_.your_turns];
+      out_ << "  > your turn " << verdict.file << ": " << (verdict.right ? "right" : "wrong");
+      std::string feedback = verdict.feedback;
+      for (size_t at = feedback.find('\n'); at != std::string::npos; at = feedback.find('\n', at + 5)) {
+        feedback.replace(at, 1, "\n    ");
+      }
+      if (!feedback.empty()) out_ << ": " << feedback;
+      out_ << '\n';
+      shown_.wrong_expected = false;
+      if (queue.empty() || queue.front().kind != Answer::Kind::YourTurn) continue;
+      const Answer expected = queue.front();
+      queue.pop_front();
+      std::string got;
+      if (verdict.right && expected.value == "wrong") got = "it was judged right";
+      else if (!verdict.right && expected.value == "right") got = "it was judged wrong: " + one_line(verdict.feedback);
+      else if (!verdict.right && expected.feedback && verdict.feedback.find(*expected.feedback) == std::string::npos)
+        got = "its feedback was '" + one_line(verdict.feedback) + "'";
+      if (!got.empty()) {
+        const std::string words = expected.feedback ? " with feedback containing '" + *expected.feedback + "'" : "";
+        const std::string where = verdict.where.empty() ? "" : verdict.where + ": ";
+        return where + step_name_ + ": your_turn should be judged " + expected.value + words + ", but " + got;
+      }
+      shown_.wrong_expected = !verdict.right;
+    }
+    return "";
+  }
+
   // Gives one scripted answer; "" or the failure line.
   std::string give(const Answer& answer, const LessonWait& wait) {
+    if (answer.kind == Answer::Kind::YourTurn) {
+      const std::string where = wait.where.empty() ? "" : wait.where + ": ";
+      return where + step_name_ + ": answer your_turn = \"" + answer.value +
+             "\" expects a your_turn run, but the step waits for " + wait.describe();
+    }
     bool used = false;
     const size_t judged_before = runner_.judgements();
     switch (answer.kind) {
@@ -375,6 +428,8 @@ class HeadlessDriver {
     std::vector<std::string> lives;  // each live block's line as last printed
     bool asked = false;              // the question waited on was printed
     bool hint = false;               // its hint was printed
+    size_t your_turns = 0;           // runner_.your_turns() printed
+    bool wrong_expected = false;     // the last your_turn was wrong, as the answers expected: the step may go on
   };
 
   std::ostream& out_;
@@ -389,9 +444,9 @@ class HeadlessDriver {
 
 HeadlessOutcome run_lesson_headless(const std::filesystem::path& lesson,
                                     const std::optional<std::filesystem::path>& answers, std::ostream& out,
-                                    const LuaLimits& limits) {
+                                    const LuaLimits& limits, const std::filesystem::path& student_folder) {
   ScriptedAnswers scripted = answers ? read_scripted_answers(*answers, limits) : ScriptedAnswers{};
-  HeadlessDriver driver(out, limits);
+  HeadlessDriver driver(out, limits, student_folder);
   return driver.run(lesson, std::move(scripted));
 }
 

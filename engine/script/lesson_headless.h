@@ -1,6 +1,7 @@
 // Running a lesson with no window (`meshedit lesson FILE --headless`): every step in order, each wait
 // answered from a scripted answers file or, where possible, automatically; what the steps say printed as
-// plain text. This is how CI checks that every lesson still runs to its end.
+// plain text. This is how CI checks that every lesson still runs to its end, and (with a student folder) that a
+// lesson's your_turn names a buggy solution's mistake.
 //
 // Answers file: lesson_answers.h (a table keyed by step number or title, each a list of answers given in order while
 // that step waits: keys, clicks, selections, buttons, the edits a key would make in the window, the answers to
@@ -17,6 +18,9 @@
 //   fails with "lesson.lua:LINE: step 2 'Q': answer choose = "h6" should be judged wrong ..., but ...".
 // - With no answer left: a button wait is pressed, a selection wait already met by the selection goes on,
 //   anything else fails with "lesson.lua:LINE: step 3 'Flip it': waiting for key F (no scripted answer)".
+// - Each your_turn run (lesson_your_turn.h) prints "  > your turn flip.lua: right" or ": wrong: DIAGNOSIS" and is
+//   checked against the step's next answer when that is {your_turn = "right" | "wrong", feedback = "words"}; a wrong
+//   verdict the answers expected ends the step there (the student's file cannot change headless), counted as passed.
 // - Animations advance in frames of a tenth of their length (at least 1/60 s); a step that needs more than
 //   100000 frames or answers fails rather than hanging.
 // - loop_phase keeps the phases' state between answers as the window's document does (ui/document_actions.h):
@@ -41,10 +45,12 @@ struct HeadlessOutcome {
   std::string failure;  // "" when every step passed; else one line with file:line and the step
 };
 
-// Runs the lesson. Writes the transcript to `out`. Throws ScriptError when the answers file cannot be read
-// or is malformed; a lesson that fails to load or run is reported in the outcome.
+// Runs the lesson, your_turn with the files of `student_folder` (none given: your_turn fails the step saying so).
+// Writes the transcript to `out`. Throws ScriptError when the answers file cannot be read or is malformed; a lesson
+// that fails to load or run is reported in the outcome.
 HeadlessOutcome run_lesson_headless(const std::filesystem::path& lesson,
                                     const std::optional<std::filesystem::path>& answers, std::ostream& out,
-                                    const LuaLimits& limits = LessonRunner::default_limits());
+                                    const LuaLimits& limits = LessonRunner::default_limits(),
+                                    const std::filesystem::path& student_folder = {});
 
 }  // namespace meshedit

@@ -24,6 +24,7 @@
 #include "script/exception_text.h"
 #include "script/lesson_api.h"
 #include "script/lesson_displays.h"
+#include "script/lesson_your_turn.h"
 
 namespace meshedit {
 namespace {
@@ -86,6 +87,16 @@ LessonRunner::LessonRunner(LessonHost& host, LuaLimits limits)
 LessonRunner::~LessonRunner() = default;
 
 void LessonRunner::set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
+
+void LessonRunner::set_student_folder(std::filesystem::path folder) {
+  student_folder_ = std::move(folder);
+  if (script_) script_->student_folder = student_folder_;
+}
+
+void LessonRunner::set_student_limits(const LuaLimits& limits) {
+  student_limits_ = limits;
+  if (script_) script_->student_limits = limits;
+}
 
 LessonRunner::Prepared::Prepared() = default;
 LessonRunner::Prepared::~Prepared() = default;
@@ -154,6 +165,8 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
   LessonScript& script = *lesson.script;
   script.host = &host_;
   script.directory = path.parent_path();  // lesson_file() finds assets next to the lesson
+  script.student_folder = student_folder_;
+  script.student_limits = student_limits_;
   {
     const BusyScope busy(busy_);
     lesson.runtime = std::make_unique<LuaRuntime>(limits_);
@@ -373,6 +386,14 @@ void LessonRunner::advance_wait(double dt) noexcept try {
         return 1;
       });
     }
+    case LessonWait::Kind::YourTurn: {
+      LessonWait& turn = script_->wait;
+      turn.since_checked += std::isfinite(dt) && dt > 0.0 ? dt : 0.0;
+      if (turn.since_checked < kStudentFileCheckSeconds) return;
+      turn.since_checked = 0.0;
+      if (student_file_stamp(turn.watched_file) == turn.watched_stamp) return;
+      return resume(nullptr);  // saved: your_turn runs the file again
+    }
     default: return;
   }
 } catch (const std::exception& e) {  // memory ran out making what resumes the step
@@ -457,6 +478,11 @@ const std::vector<LessonJudgement>& LessonRunner::answered() const { return scri
 const LessonJudgement& LessonRunner::last_judgement() const { return script_ ? script_->last_judgement : kNoJudgement; }
 
 size_t LessonRunner::judgements() const { return script_ ? script_->judgements : 0; }
+
+const std::vector<YourTurnVerdict>& LessonRunner::your_turns() const {
+  static const std::vector<YourTurnVerdict> kNone;
+  return script_ ? script_->your_turns : kNone;
+}
 
 const LessonWait& LessonRunner::waiting_for() const { return script_ ? script_->wait : kNoWait; }
 

@@ -30,6 +30,8 @@
 // - A question (choose, pick, answer: lesson_questions.h) is a wait like the others: deliver() of an answer of its
 //   kind resumes the step and returns true whether the answer was right or wrong; judgements() counts the answers
 //   judged and last_judgement() says how the latest went.
+// - A your_turn wait (lesson_your_turn.h) is resumed by update() when the student's file changed on disk, read at most
+//   every kStudentFileCheckSeconds of update time; your_turns() lists the step's runs and their verdicts.
 #pragma once
 
 #include <cstddef>
@@ -72,6 +74,11 @@ class LessonRunner {
 
   // Where the lesson's print() goes (each line without its newline); applies to later loads too.
   void set_print(std::function<void(const std::string&)> print);
+  // The student's folder your_turn runs files from (lesson_your_turn.h), and the limits of the student's code (the
+  // exercises' own by default); apply to the lesson running and to later loads.
+  void set_student_folder(std::filesystem::path folder);
+  const std::filesystem::path& student_folder() const { return student_folder_; }
+  void set_student_limits(const LuaLimits& limits);
 
   // A lesson file read and run to its list of steps, not yet the one running (prepare, then take).
   struct Prepared {
@@ -138,6 +145,8 @@ class LessonRunner {
   // The latest answer judged in this step (right or wrong), and how many were judged (0: none yet).
   const LessonJudgement& last_judgement() const;
   size_t judgements() const;
+  // Every your_turn run of this step, in order (lesson_your_turn.h).
+  const std::vector<YourTurnVerdict>& your_turns() const;
   // What the current step waits for (kind None when it does not wait).
   const LessonWait& waiting_for() const;
   // "" when all is well; else "file:line: message" of the failed load or the failed step.
@@ -166,6 +175,8 @@ class LessonRunner {
   LuaLimits limits_;
   LuaLimits live_limits_;
   std::function<void(const std::string&)> print_;
+  std::filesystem::path student_folder_;
+  LuaLimits student_limits_;
   std::filesystem::path path_;
   // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.
   std::unique_ptr<LessonScript> script_;

@@ -87,6 +87,16 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
     draw_lesson_question(runner, state.answer_box, state.probe);
   } else if (wait.kind == LessonWait::Kind::Button) {
     if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
+  } else if (wait.kind == LessonWait::Kind::YourTurn) {  // the student's file gave another answer: why, until saved
+    ImGui::TextWrapped("%s", wait.question.c_str());
+    ImGui::PushStyleColor(ImGuiCol_Text, im_colour(ui_palette().warning));
+    ImGui::TextWrapped("%s", wait.feedback.c_str());
+    ImGui::PopStyleColor();
+    if (!wait.hint.empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
+      ImGui::TextWrapped("Hint: %s", wait.hint.c_str());
+      ImGui::PopStyleColor();
+    }
   } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
   } else if (wait.waiting()) {

@@ -135,6 +135,25 @@ function pick(spec) end
 ---@return number|vec3 value the value typed (a vec3 with z = 0 for a 2D point)
 function answer(spec) end
 
+---@class YourTurnSpec
+---@field exercise "curve"|"patch"|"normals"|"flip"|"split"|"upsample" the student's function to run (scripts/student/)
+---@field mesh? Mesh normals, flip, split, upsample: the mesh (copied when your_turn is called)
+---@field element? Element|string normals: a vertex; flip, split: an edge (a handle or an id like "e0")
+---@field points? point[] curve: the points given to evaluate_step
+---@field t? number curve
+---@field patch? Patch patch: meshedit.patch(...)
+---@field u? number patch
+---@field v? number patch
+---@field hint? string shown under the diagnosis while the student's answer is wrong
+
+---Runs the student's function from the student folder (scripts/student, the Exercises tab's) on the input, beside the
+---reference, with the Exercises tab's comparison. Right: returns. Wrong (or a Lua error, shown as "flip.lua:LINE: ...",
+---or a run stopped by the sandbox's limits): the panel shows the diagnosis in the Exercises tab's words and the step
+---waits; each save of the file runs it again.
+---@param spec YourTurnSpec
+---@return true
+function your_turn(spec) end
+
 -- ---- what follows the view ----
 
 ---A text block whose text is fn's value (tostring, then markdown), evaluated now and again every frame, so it follows

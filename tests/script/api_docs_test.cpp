@@ -199,7 +199,7 @@ TEST(ApiDocsFiles, LessonAndGradingMetaFilesNameTheRealGlobals) {
   const std::string text = ::meshedit::testing::read_text(dir / "lesson.lua");
   for (const char* name : {"lesson", "step", "say", "wait_for", "animate", "show", "highlight", "label", "clear",
                            "camera", "current_mesh", "selection", "lesson_file", "choose", "pick", "answer", "live",
-                           "plot", "arrow", "curve_t", "curve_points"}) {
+                           "plot", "arrow", "curve_t", "curve_points", "your_turn"}) {
     EXPECT_NE(text.find(std::string("\nfunction ") + name + "("), std::string::npos) << name;
   }
   Documented grading = parse_meta(dir / "grading.lua");

@@ -102,7 +102,7 @@ TEST(CliLesson, WithoutHeadlessItPointsToTheWindow) {
   EXPECT_EQ(none.status, 2);
   EXPECT_EQ(none.err,
             "meshedit: lesson needs one file: meshedit lesson FILE.lua --headless [--answers ANSWERS.lua] "
-            "(see meshedit --help)\n");
+            "[--student DIR] (see meshedit --help)\n");
 }
 
 }  // namespace

@@ -142,9 +142,13 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse, subdivide, loop_phase, choose, answer or curve_t)");
+             "collapse, subdivide, loop_phase, choose, answer, curve_t or your_turn)");
+  fails_with("return { [1] = { {your_turn = 'yes'} } }\n",
+             "answers.lua: step 1, answer 1: your_turn must be \"right\" or \"wrong\", got 'yes'");
+  fails_with("return { [1] = { {your_turn = 'right', feedback = 'twin'} } }\n",
+             "answers.lua: step 1, answer 1: feedback goes with your_turn = \"wrong\"");
   fails_with("return { [1] = { {key = 'F', feedback = 'no'} } }\n",
-             "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click or answer");
+             "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click, answer or your_turn");
   fails_with("return { [1] = { {answer = {1}} } }\n",
              "answers.lua: step 1, answer 1: answer must be a number, a text as typed (\"3/8\") or {x, y[, z]}");
   fails_with("return { [1] = { {curve_t = 'half'} } }\n",

@@ -32,12 +32,13 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 
 std::filesystem::path lesson_path(const std::string& name) { return testing::source_dir() / "lessons" / (name + ".lua"); }
 
-// Runs lessons/NAME.lua headless with tests/script/lessons/NAME_answers.lua; expects every step to pass with
-// every answer awaited and used. Returns the transcript.
+// Runs lessons/NAME.lua headless with tests/script/lessons/NAME_answers.lua and the correct solutions as the student's
+// folder (your_turn); expects every step to pass with every answer awaited and used. Returns the transcript.
 std::string run_headless(const std::string& name, size_t steps) {
   std::ostringstream out;
   const auto answers = testing::source_dir() / "tests" / "script" / "lessons" / (name + "_answers.lua");
-  const HeadlessOutcome outcome = run_lesson_headless(lesson_path(name), answers, out);
+  const HeadlessOutcome outcome = run_lesson_headless(lesson_path(name), answers, out, LessonRunner::default_limits(),
+                                                      testing::source_dir() / "tests" / "script" / "solutions");
   const std::string text = out.str();
   EXPECT_EQ(outcome.failure, "") << text;
   EXPECT_EQ(outcome.steps, steps) << text;

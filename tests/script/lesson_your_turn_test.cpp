@@ -1,0 +1,143 @@
+// your_turn on a LessonRunner and a HeadlessHost: a wrong flip_edge leaves the step waiting with compare()'s
+// diagnosis, saving the right one makes the next look at the file (not before half a second of updates) run it again
+// and the step go on; a runaway student loop is stopped by the student limits and said so; a student file with a
+// syntax error is its file:line; bad arguments fail the step at the lesson's line; the lesson's mesh is not changed.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+#include "script/exercises.h"
+#include "script/headless_host.h"
+#include "script/lesson_runner.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+using State = LessonRunner::StepState;
+
+// A step that runs the student's flip_edge on e2 of a 1x1 grid, then says so.
+constexpr const char* kLesson = R"lua(local grid = meshedit.grid(1, 1)
+step("Your turn", function()
+  show(grid)
+  local before = tostring(grid:edge(2).halfedge.next)
+  your_turn { exercise = "flip", mesh = grid, element = "e2", hint = "Set every next pointer." }
+  say(tostring(grid:edge(2).halfedge.next) == before and "the grid is as it was" or "the grid changed")
+end)
+)lua";
+
+constexpr const char* kChangesNothing = "function flip_edge(mesh, e) return e end\n";
+
+fs::path write(const fs::path& path, const std::string& text) {
+  std::ofstream(path) << text;
+  return path;
+}
+
+// Saves `text` as the student's file with a modification time clearly after the last one.
+void save(const fs::path& file, const std::string& text) {
+  const auto before = fs::last_write_time(file);
+  write(file, text);
+  fs::last_write_time(file, before + std::chrono::seconds(2));
+}
+
+TEST(LessonYourTurn, AWrongFlipWaitsWithTheDiagnosisAndASaveRunsItAgain) {
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  const fs::path file = write(dir / "student" / "flip.lua", kChangesNothing);
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  ASSERT_TRUE(runner.load(write(dir / "lesson.lua", kLesson))) << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Waiting) << runner.error();
+  const LessonWait& wait = runner.waiting_for();
+  EXPECT_EQ(wait.kind, LessonWait::Kind::YourTurn);
+  EXPECT_EQ(wait.describe(), "the student's flip.lua to give the reference's answer");
+  EXPECT_EQ(wait.where, "lesson.lua:5");
+  EXPECT_EQ(wait.hint, "Set every next pointer.");
+  EXPECT_EQ(wait.tries, 1);
+  ASSERT_EQ(runner.your_turns().size(), 1u);
+  EXPECT_FALSE(runner.your_turns()[0].right);
+  EXPECT_EQ(runner.your_turns()[0].input.rfind("e2 of ", 0), 0u) << runner.your_turns()[0].input;
+  EXPECT_NE(wait.feedback.find("your flip_edge changed nothing"), std::string::npos) << wait.feedback;
+
+  runner.update(0.25);  // the file did not change: nothing runs
+  runner.update(0.25);
+  EXPECT_EQ(runner.your_turns().size(), 1u);
+
+  save(file, testing::read_text(testing::source_dir() / "tests" / "script" / "solutions" / "flip.lua"));
+  runner.update(0.25);  // a quarter of a second: not looked at yet
+  EXPECT_EQ(runner.your_turns().size(), 1u);
+  EXPECT_EQ(runner.step_state(), State::Waiting);
+  runner.update(0.25);  // half a second: the save is seen, the file runs again and is right
+  ASSERT_EQ(runner.your_turns().size(), 2u);
+  EXPECT_TRUE(runner.your_turns()[1].right);
+  EXPECT_EQ(runner.your_turns()[1].feedback, "");
+  EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
+  ASSERT_EQ(runner.answered().size(), 1u);
+  EXPECT_EQ(runner.answered()[0].given, "your flip_edge");
+  // The runs worked on copies: the lesson's grid is not flipped.
+  EXPECT_EQ(runner.said(), std::vector<std::string>{"the grid is as it was"});
+}
+
+TEST(LessonYourTurn, ARunawayLoopIsStoppedByTheStudentLimitsAndSaidSo) {
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  write(dir / "student" / "flip.lua", "function flip_edge(mesh, e)\n  while true do end\nend\n");
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  LuaLimits limits;
+  limits.instructions = 2'000'000;
+  runner.set_student_limits(limits);
+  ASSERT_TRUE(runner.load(write(dir / "lesson.lua", kLesson))) << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Waiting) << runner.error();
+  const std::string& feedback = runner.waiting_for().feedback;
+  EXPECT_EQ(feedback.rfind("flip.lua:2: instruction budget exceeded", 0), 0u) << feedback;
+  EXPECT_NE(feedback.find(unfinished_run_hint(Exercise::FlipEdge)), std::string::npos) << feedback;
+}
+
+TEST(LessonYourTurn, AStudentSyntaxErrorIsItsFileAndLine) {
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  write(dir / "student" / "flip.lua", "function flip_edge(mesh, e)\n  return e +\nend\n");
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  ASSERT_TRUE(runner.load(write(dir / "lesson.lua", kLesson))) << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Waiting) << runner.error();
+  EXPECT_EQ(runner.waiting_for().feedback.rfind("flip.lua:3: ", 0), 0u) << runner.waiting_for().feedback;
+}
+
+TEST(LessonYourTurn, BadArgumentsFailTheStepAtTheLessonsLine) {
+  const fs::path dir = testing::scratch_dir();
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir);
+  const auto fails_with = [&](const std::string& call, const std::string& message) {
+    ASSERT_TRUE(runner.load(write(dir / "lesson.lua", "local m = meshedit.grid(1, 1)\nstep('S', function()\n  " + call +
+                                                          "\nend)\n")))
+        << runner.error();
+    EXPECT_EQ(runner.step_state(), State::Failed) << call;
+    EXPECT_EQ(runner.error(), message);
+  };
+  fails_with("your_turn { exercise = 'flop', mesh = m, element = 'e2' }",
+             "lesson.lua:3: your_turn: unknown exercise 'flop' (use curve, patch, normals, flip, split or upsample)");
+  fails_with("your_turn { exercise = 'flip', mesh = m, element = 'v2' }",
+             "lesson.lua:3: your_turn: element must be an edge of the mesh (a handle or an id like \"e0\"), got v2");
+  fails_with("your_turn { exercise = 'flip', element = 'e2' }",
+             "lesson.lua:3: your_turn: the flip exercise needs mesh = a mesh, got nil");
+  fails_with("your_turn { exercise = 'flip', mesh = m, edge = 'e2' }",
+             "lesson.lua:3: your_turn: unknown field 'edge' (fields: exercise, mesh, element, points, t, patch, u, v, "
+             "hint)");
+  runner.set_student_folder({});
+  fails_with("your_turn { exercise = 'upsample', mesh = m }",
+             "lesson.lua:3: your_turn: no student folder (meshedit lesson FILE --headless --student DIR)");
+}
+
+}  // namespace
+}  // namespace meshedit
