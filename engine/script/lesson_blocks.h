@@ -21,6 +21,8 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "script/file_stamp.h"
+
 namespace meshedit {
 
 struct LessonBlock {
@@ -72,8 +74,8 @@ struct YourTurnVerdict {
   std::string feedback;  // wrong: compare()'s diagnosis (or the file's error, file:line); right: ""
   std::string where;     // "4_edge_flip.lua:370": the your_turn call
   size_t block = 0;      // how many blocks the step showed before this run (where it goes among them)
-  std::string path;      // the file run, and its student_file_stamp before the run (what a wait watches)
-  std::string stamp;
+  std::string path;      // the file run, and its stamp before the run (what a wait watches)
+  FileStamp stamp;
 };
 
 // The value of a plot's curve at x, by straight lines between its samples (clamped to its ends); nullopt when it has

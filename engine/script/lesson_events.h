@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "core/ids.h"
+#include "script/file_stamp.h"
 
 namespace meshedit {
 
@@ -56,9 +57,10 @@ struct LessonWait {
   int tries = 0;                     // wrong answers so far
   std::string feedback;              // what the lesson said about the last wrong answer ("" before any)
 
-  // YourTurn: the student's file and its stamp when it last ran (student_file_stamp), and the seconds since the
+  // YourTurn: the student's file and its stamp when it last ran (script/file_stamp.h), and the seconds since the
   // stamp was last read.
-  std::string watched_file, watched_stamp;
+  std::string watched_file;
+  FileStamp watched_stamp;
   double since_checked = 0.0;
 
   bool waiting() const { return kind != Kind::None; }

@@ -391,7 +391,7 @@ void LessonRunner::advance_wait(double dt) noexcept try {
       turn.since_checked += std::isfinite(dt) && dt > 0.0 ? dt : 0.0;
       if (turn.since_checked < kStudentFileCheckSeconds) return;
       turn.since_checked = 0.0;
-      if (student_file_stamp(turn.watched_file) == turn.watched_stamp) return;
+      if (file_stamp(turn.watched_file) == turn.watched_stamp) return;
       return resume(nullptr);  // saved: your_turn runs the file again
     }
     default: return;

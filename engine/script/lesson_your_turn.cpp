@@ -8,13 +8,13 @@
 #include <memory>
 #include <optional>
 #include <string>
-#include <system_error>
 #include <vector>
 
 #include <lua.hpp>
 
 #include "script/bezier_bindings.h"
 #include "script/exercises.h"
+#include "script/file_stamp.h"
 #include "script/lesson_api_support.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
@@ -208,7 +208,7 @@ int api_run(lua_State* L) {
   verdict.where = caller_where(L);
   verdict.block = script.blocks.size();
   verdict.path = file.string();
-  verdict.stamp = student_file_stamp(file);
+  verdict.stamp = file_stamp(file);
   try {
     std::unique_ptr<StudentCode> code = load_student_file(file, script.student_limits);
     const ExerciseReport report = check_exercise(*code, held.exercise, held.input);
@@ -258,14 +258,6 @@ int api_await(lua_State* L) {
 
 }  // namespace
 
-std::string student_file_stamp(const std::filesystem::path& file) {
-  std::error_code error;
-  const auto time = std::filesystem::last_write_time(file, error);
-  if (error) return "missing";
-  const auto size = std::filesystem::file_size(file, error);
-  if (error) return "missing";
-  return std::to_string(time.time_since_epoch().count()) + " " + std::to_string(size);
-}
 
 void open_lesson_your_turn(LuaRuntime& runtime, LessonScript& script) {
   lua_State* L = runtime.state();

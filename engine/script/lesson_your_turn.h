@@ -17,7 +17,7 @@
 //   limits, with the Exercises tab's hint for the exercise: both are the run's wrong verdict, never the step's error.
 // - Every run is a YourTurnVerdict in LessonScript::your_turns; a right one is also an Answered block (the panel keeps
 //   it, as a question answered right). A wrong one leaves the step waiting (LessonWait::Kind::YourTurn, with the
-//   diagnosis as its feedback) until student_file_stamp of the file changes; the runner reads it at most every
+//   diagnosis as its feedback) until the file's stamp (script/file_stamp.h) changes; the runner reads it at most every
 //   kStudentFileCheckSeconds.
 // - Bad arguments are Lua errors at the lesson's line ("lesson.lua:12: your_turn: ..."), like every lesson call.
 #pragma once
@@ -31,9 +31,6 @@ namespace meshedit {
 
 // How often a waiting your_turn looks at the student's file (twice a second, as the lesson's own hot reload).
 inline constexpr double kStudentFileCheckSeconds = 0.5;
-
-// What changes when the file is saved: its modification time and size ("missing" when it cannot be read).
-std::string student_file_stamp(const std::filesystem::path& file);
 
 // Defines your_turn in `runtime` (after open_lesson_api's own globals), bound to `script`. Throws ScriptError if the
 // API's own prelude fails.

@@ -3,7 +3,6 @@
 
 #include <exception>
 #include <new>
-#include <system_error>
 #include <utility>
 
 #include "script/exception_text.h"
@@ -23,11 +22,8 @@ void StudentFile::set_path(std::filesystem::path path) {
 
 bool StudentFile::changed() const {
   if (!attempted_ || attempted_path_ != path_) return true;
-  std::error_code error;
-  const auto time = std::filesystem::last_write_time(path_, error);
-  if (error) return true;
-  const auto size = std::filesystem::file_size(path_, error);
-  return error || time != attempted_time_ || size != attempted_size_;
+  const FileStamp now = file_stamp(path_);
+  return !now.readable || now != attempted_stamp_;
 }
 
 bool StudentFile::ensure_loaded() {
@@ -35,10 +31,8 @@ bool StudentFile::ensure_loaded() {
   code_.reset();
   ++loads_;
   try {
-    std::error_code error;
     // Taken before loading: a save during the load makes the next call load again rather than miss it.
-    attempted_time_ = std::filesystem::last_write_time(path_, error);
-    attempted_size_ = error ? uintmax_t(0) : std::filesystem::file_size(path_, error);
+    attempted_stamp_ = file_stamp(path_);
     attempted_path_ = path_;
     attempted_ = true;
     code_ = load_student_file(path_);

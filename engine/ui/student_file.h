@@ -20,6 +20,7 @@
 #include <string>
 
 #include "script/exercises.h"
+#include "script/file_stamp.h"
 
 namespace meshedit {
 
@@ -49,8 +50,7 @@ class StudentFile {
   std::unique_ptr<StudentCode> code_;
   bool attempted_ = false;
   std::filesystem::path attempted_path_;
-  std::filesystem::file_time_type attempted_time_{};
-  uintmax_t attempted_size_ = 0;
+  FileStamp attempted_stamp_;
   std::string error_;
   size_t loads_ = 0;
 };
