@@ -73,11 +73,9 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   update_lesson(frame_ms);
   view_quality_.frame_started(frame_ms);
 
-  const ImVec4 bg = view_background(settings_.theme);
-  set_render_colours(mesh_renderer_->style(), palette_for(settings_.theme));
-  set_render_colours(patch_renderer_->style(), palette_for(settings_.theme));
+  const glm::vec4 bg = mesh_renderer_->style().background;  // the theme's (set_theme)
   glViewport(0, 0, std::max(1, width), std::max(1, height));
-  glClearColor(bg.x, bg.y, bg.z, bg.w);
+  glClearColor(bg.r, bg.g, bg.b, bg.a);
   glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
 
   probe_.clear();

@@ -221,6 +221,8 @@ class EditorApp {
   // The mouse position in view pixels, or nullopt when it is outside the view.
   std::optional<glm::ivec2> mouse_in_view() const;
   void change_font_size(int steps);  // 0: back to the default
+  // The theme: the renderers' colours now, ImGui's and the panels' when the window applies the look.
+  void set_theme(Theme theme);
   void apply_size_defaults();
   void draw_patch_view();
   // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window

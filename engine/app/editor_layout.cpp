@@ -204,7 +204,15 @@ void EditorApp::change_font_size(int steps) {
 
 void EditorApp::apply_settings(const Settings& settings) {
   settings_ = settings;
-  look_changed_ = true;
+  set_theme(settings.theme);
+}
+
+void EditorApp::set_theme(Theme theme) {
+  settings_.theme = theme;
+  const Palette& palette = palette_for(theme);
+  set_render_colours(mesh_renderer_->style(), palette);
+  set_render_colours(patch_renderer_->style(), palette);
+  look_changed_ = true;  // the window applies ImGui's colours and the panels' palette before the next frame
 }
 
 void EditorApp::fonts_applied(const FontsLoaded& fonts) {

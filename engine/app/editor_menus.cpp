@@ -106,10 +106,7 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::BeginMenu("Theme")) {
       constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
       for (const auto& [name, theme] : kThemes) {
-        if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) {
-          settings_.theme = theme;
-          look_changed_ = true;
-        }
+        if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) set_theme(theme);
       }
       ImGui::EndMenu();
     }

@@ -25,6 +25,5 @@ const Palette& ui_palette() { return palette_for(panel_theme); }
 
 Theme ui_theme() { return panel_theme; }
 
-ImVec4 view_background(Theme theme) { return im_colour(palette_for(theme).neutrals.view); }
 
 }  // namespace meshedit

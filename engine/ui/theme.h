@@ -1,6 +1,6 @@
 // The window's two looks: dark (the default) and light (for projectors). apply_theme() sets ImGui's style colours and
 // makes the theme's palette (core/palette.h) the one the panels draw with (ui_palette()); the 3D view's background
-// and the renderer's colours come from the same palette (palette_for(theme)).
+// and the renderer's colours come from the same palette (palette_for(theme), core/palette.h).
 //
 // Invariant: ui_palette() is the palette of the theme last given to apply_theme(), the dark one before any; like
 // ImGui's style, it is one for the whole process.
@@ -19,8 +19,6 @@ void apply_theme(ImGuiStyle& style, Theme theme);
 const Palette& ui_palette();
 // The theme of ui_palette(): what swatch_in_theme takes to show a lesson's colour in the panels.
 Theme ui_theme();
-// The view's clear colour under the theme, RGBA in [0, 1].
-ImVec4 view_background(Theme theme);
 
 // Palette colours as ImGui takes them.
 inline ImVec4 im_colour(glm::vec3 rgb, float alpha = 1.0f) { return ImVec4(rgb.r, rgb.g, rgb.b, alpha); }

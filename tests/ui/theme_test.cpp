@@ -49,14 +49,6 @@ TEST_F(UiTheme, ApplyingAThemeSetsThePanelsPalette) {
   EXPECT_GT(style_.Colors[ImGuiCol_Text].x, 0.8f);
 }
 
-TEST_F(UiTheme, TheViewBackgroundIsThePalettes) {
-  for (Theme theme : {Theme::Dark, Theme::Light}) {
-    const ImVec4 bg = view_background(theme);
-    EXPECT_EQ(glm::vec3(bg.x, bg.y, bg.z), palette_for(theme).neutrals.view);
-    EXPECT_EQ(bg.w, 1.0f);
-  }
-}
-
 TEST_F(UiTheme, ThePatchOverlayFollowsTheTheme) {
   PatchViewState state = make_patch_view({raised_patch()});
   for (Theme theme : {Theme::Dark, Theme::Light}) {
