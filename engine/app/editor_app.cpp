@@ -69,7 +69,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   edit_animator_.advance(frame_ms / 1000.0);  // before this frame's actions: an edit they make starts at time 0
-  read_mouse_and_keys(width, height);  // in the view placed by the last frame
+  read_mouse_and_keys();  // in the view placed by the last frame
   update_lesson(frame_ms);
   view_quality_.frame_started(frame_ms);
 

@@ -206,7 +206,7 @@ class EditorApp {
 
  private:
   void run_frame(int width, int height, float frame_ms);  // frame() without its guard
-  void read_mouse_and_keys(int width, int height);
+  void read_mouse_and_keys();
   void draw_mesh_view();
   // The view's rectangle in framebuffer pixels, from the layout's (window coordinates).
   void place_view(int framebuffer_width, int framebuffer_height);
@@ -317,6 +317,7 @@ class EditorApp {
   };
   PixelRect view_pixels_;
   int framebuffer_height_ = 1;
+  glm::vec2 pixels_per_point_{1.0f, 1.0f};  // framebuffer pixels per ImGui window coordinate (place_view)
   bool dragging_ = false;
   // A hover waiting for the mouse to rest, because the id buffer is stale and slow to redraw (read_mouse_and_keys).
   static constexpr double kSlowIdPassMs = 30.0;

@@ -180,7 +180,7 @@ void EditorApp::hover(int x, int y) {
   selection_.hovered = mesh_renderer_->pick(camera_, viewport(), x, y);
 }
 
-void EditorApp::read_mouse_and_keys(int width, int height) {
+void EditorApp::read_mouse_and_keys() {
   ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
@@ -199,11 +199,9 @@ void EditorApp::read_mouse_and_keys(int width, int height) {
   }
   // ImGui gives window coordinates; the renderer wants framebuffer pixels of the view. A drag that started in the
   // view goes on over the columns; a click, a hover or the wheel count only in the view.
-  const float sx = io.DisplaySize.x > 0 ? float(width) / io.DisplaySize.x : 1.0f;
-  const float sy = io.DisplaySize.y > 0 ? float(height) / io.DisplaySize.y : 1.0f;
   const std::optional<glm::ivec2> in_view = mouse_in_view();
   const int x = in_view ? in_view->x : -1, y = in_view ? in_view->y : -1;
-  const ImVec2 delta(io.MouseDelta.x * sx, io.MouseDelta.y * sy);
+  const ImVec2 delta(io.MouseDelta.x * pixels_per_point_.x, io.MouseDelta.y * pixels_per_point_.y);
   if (io.MouseWheel != 0.0f && in_view) camera_.zoom(io.MouseWheel);
 
   const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||

@@ -58,6 +58,7 @@ void EditorApp::place_view(int framebuffer_width, int framebuffer_height) {
   const ImGuiIO& io = ImGui::GetIO();
   const float sx = io.DisplaySize.x > 0 ? float(framebuffer_width) / io.DisplaySize.x : 1.0f;
   const float sy = io.DisplaySize.y > 0 ? float(framebuffer_height) / io.DisplaySize.y : 1.0f;
+  pixels_per_point_ = {sx, sy};
   const ScreenRect& v = layout_.view;
   const int x0 = int(std::lround(v.x * sx)), y0 = int(std::lround(v.y * sy));
   const int x1 = int(std::lround(v.right() * sx)), y1 = int(std::lround(v.bottom() * sy));
@@ -78,9 +79,8 @@ void EditorApp::end_view_drawing() { glDisable(GL_SCISSOR_TEST); }
 std::optional<glm::ivec2> EditorApp::mouse_in_view() const {
   const ImGuiIO& io = ImGui::GetIO();
   if (!ImGui::IsMousePosValid() || !layout_.view.contains(io.MousePos.x, io.MousePos.y)) return std::nullopt;
-  const float sx = io.DisplaySize.x > 0 ? float(view_pixels_.width) / std::max(1.0f, layout_.view.width) : 1.0f;
-  const float sy = io.DisplaySize.y > 0 ? float(view_pixels_.height) / std::max(1.0f, layout_.view.height) : 1.0f;
-  return glm::ivec2(int((io.MousePos.x - layout_.view.x) * sx), int((io.MousePos.y - layout_.view.y) * sy));
+  return glm::ivec2(int((io.MousePos.x - layout_.view.x) * pixels_per_point_.x),
+                    int((io.MousePos.y - layout_.view.y) * pixels_per_point_.y));
 }
 
 void EditorApp::draw_columns() {
