@@ -158,12 +158,15 @@ void GlfwWindow::set_size(int width, int height) { glfwSetWindowSize(window_, wi
 int GlfwWindow::width() const { return size_of(glfwGetWindowSize, window_).first; }
 int GlfwWindow::height() const { return size_of(glfwGetWindowSize, window_).second; }
 
+float GlfwWindow::pixels_per_coordinate() const {
+  const int w = width();
+  return w > 0 ? std::max(1.0f, float(framebuffer_width()) / float(w)) : 1.0f;
+}
+
 float GlfwWindow::ui_scale() const {
   float sx = 1.0f, sy = 1.0f;
   glfwGetWindowContentScale(window_, &sx, &sy);
-  const int w = width();
-  const float dense = w > 0 ? float(framebuffer_width()) / float(w) : 1.0f;  // framebuffer pixels per coordinate
-  const float scale = std::max(sx, 0.5f) / std::max(dense, 1.0f);
+  const float scale = std::max(sx, 0.5f) / pixels_per_coordinate();
   return std::isfinite(scale) ? std::clamp(scale, 0.5f, 4.0f) : 1.0f;
 }
 
@@ -171,9 +174,7 @@ bool GlfwWindow::take_content_scale_changed() { return std::exchange(content_sca
 
 FontsLoaded GlfwWindow::apply_look(float font_px, Theme theme) {
   const float scale = ui_scale();
-  const int w = width();
-  const float dense = w > 0 ? std::max(1.0f, float(framebuffer_width()) / float(w)) : 1.0f;
-  const FontsLoaded fonts = load_fonts(font_px, scale, dense);
+  const FontsLoaded fonts = load_fonts(font_px, scale, pixels_per_coordinate());
   ImGuiStyle style;
   apply_theme(style, theme);
   style.ScaleAllSizes(scale);

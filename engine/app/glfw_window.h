@@ -57,6 +57,8 @@ class GlfwWindow {
   // The monitor's content scale (1 on an ordinary screen, 2 on a HiDPI one) divided by how many framebuffer pixels
   // a window coordinate holds (2 on macOS's Retina screens, where ImGui's coordinates are points).
   float ui_scale() const;
+  // Framebuffer pixels per window coordinate, at least 1 (2 on a Retina screen, 1 elsewhere).
+  float pixels_per_coordinate() const;
   // True once after the window moved to a monitor of another content scale.
   bool take_content_scale_changed();
   // Applies the text size (pixels at content scale 1) and the theme; returns what the fonts became.
