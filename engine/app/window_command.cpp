@@ -19,6 +19,25 @@
 
 namespace meshedit {
 
+namespace {
+
+// Writes what the window ends with: the app's settings (the size they were read with, when `remember_size` is off or
+// the window is minimised), or a warning on stderr when the file cannot be written.
+void save_settings(const std::filesystem::path& file, const EditorApp& app, const GlfwWindow& window,
+                   bool remember_size) {
+  if (file.empty()) return;
+  Settings kept = app.settings();
+  if (remember_size && window.width() > 0 && window.height() > 0) {
+    kept.window_width = std::clamp(window.width(), Settings::kMinWindowWidth, Settings::kMaxWindowSide);
+    kept.window_height = std::clamp(window.height(), Settings::kMinWindowHeight, Settings::kMaxWindowSide);
+  }
+  if (const std::string why = write_settings(file, kept); !why.empty()) {
+    std::cerr << "meshedit: settings not saved: " << why << "\n";
+  }
+}
+
+}  // namespace
+
 int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
   const auto script = take_option(args, "--actions");
@@ -67,19 +86,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     last = now;
     if (player.active() && !player.step(app)) break;
   }
-  Settings kept = app.settings();
-  if (!size && window.width() > 0 && window.height() > 0) {  // a minimised window keeps the size it had
-    kept.window_width = std::clamp(window.width(), Settings::kMinWindowWidth, Settings::kMaxWindowSide);
-    kept.window_height = std::clamp(window.height(), Settings::kMinWindowHeight, Settings::kMaxWindowSide);
-  } else {
-    kept.window_width = settings.window_width;
-    kept.window_height = settings.window_height;
-  }
-  if (!settings_file.empty()) {
-    if (const std::string why = write_settings(settings_file, kept); !why.empty()) {
-      std::cerr << "meshedit: settings not saved: " << why << "\n";
-    }
-  }
+  save_settings(settings_file, app, window, /*remember_size=*/!size);
   if (player.active()) {
     out << "actions: " << (player.failures() == 0 ? "all expectations held" : "some expectations failed") << "\n";
     return player.failures() == 0 ? 0 : 3;
