@@ -12,30 +12,29 @@
 #include "app/editor_app.h"
 #include "core/palette.h"
 #include "render/labels.h"
+#include "ui/theme.h"
 
 namespace meshedit {
 namespace {
 
 constexpr size_t kMaxLabelledFaces = 120;
 
-ImU32 to_imgui_colour(glm::vec4 rgba) { return ImGui::ColorConvertFloat4ToU32(ImVec4(rgba.r, rgba.g, rgba.b, rgba.a)); }
-
 // A label's text takes its element kind's colour from the palette, a lesson's label the lesson colour; each sits on a
 // box of the theme's label_box (dark boxes on the dark theme, light ones on the light), so it reads over any face.
 ImU32 text_colour(const PlacedLabel& label, const Palette& palette) {
-  if (label.source == LabelSource::Lesson) return to_imgui_colour(glm::vec4(palette.lesson_label, 1.0f));
+  if (label.source == LabelSource::Lesson) return im_colour_u32(palette.lesson_label);
   switch (label.element.kind) {
-    case ElementKind::Vertex: return to_imgui_colour(glm::vec4(palette.vertex_label, 1.0f));
-    case ElementKind::Edge: return to_imgui_colour(glm::vec4(palette.edge_label, 1.0f));
-    case ElementKind::Halfedge: return to_imgui_colour(glm::vec4(palette.halfedge_label, 1.0f));
+    case ElementKind::Vertex: return im_colour_u32(palette.vertex_label);
+    case ElementKind::Edge: return im_colour_u32(palette.edge_label);
+    case ElementKind::Halfedge: return im_colour_u32(palette.halfedge_label);
     case ElementKind::Face:
     case ElementKind::Boundary: break;
   }
-  return to_imgui_colour(glm::vec4(palette.face_label, 1.0f));
+  return im_colour_u32(palette.face_label);
 }
 
 ImU32 box_colour(const PlacedLabel& label, const Palette& palette) {
-  return to_imgui_colour(label.source == LabelSource::Lesson ? palette.lesson_label_box : palette.neutrals.label_box);
+  return im_colour_u32(label.source == LabelSource::Lesson ? palette.lesson_label_box : palette.neutrals.label_box);
 }
 
 ImVec2 to_imgui(const glm::dvec2& p) { return ImVec2(float(p.x), float(p.y)); }
