@@ -195,12 +195,10 @@ std::string format_points(std::span<const glm::dvec3> points) {
   return text;
 }
 
-ImVec4 to_imvec(glm::vec4 c) { return ImVec4(c.r, c.g, c.b, c.a); }
-
 void table_row(const char* step, std::span<const glm::dvec3> points, glm::vec4 colour) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
-  ImGui::TextColored(to_imvec(colour), "%s", step);
+  ImGui::TextColored(im_colour(colour), "%s", step);
   ImGui::TableNextColumn();
   ImGui::TextWrapped("%s", format_points(points).c_str());
 }
@@ -232,7 +230,7 @@ void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mi
 // With the switch on: the verdict on your point (file:line for an error) and the checker's diagnosis.
 void draw_mine_verdict(const PatchMinePoint& mine) {
   const glm::vec4 colour = mine_colour(mine);
-  ImGui::PushStyleColor(ImGuiCol_Text, to_imvec(colour));
+  ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
   ImGui::TextWrapped("mine: %s", mine.message.c_str());
   if (!mine.equal) {
     for (const std::string& line : mine.details) ImGui::TextWrapped("- %s", line.c_str());
