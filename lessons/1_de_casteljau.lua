@@ -369,18 +369,23 @@ step("Your turn", function()
 # Your code
 
 Open `scripts/student/curve.lua` and write `evaluate_step(points, t)`: given the points of one level, return
-the next level, one point fewer.
+the next level, one point fewer. The lesson runs it on this curve's control points at t = 0.25 each time you
+save the file, and compares it with the reference's level 1. A point that is missing or in the wrong place is
+named, and a Lua error shows its `curve.lua:LINE`.]]
+  your_turn {
+    exercise = "curve",
+    points = curve.points,
+    t = 0.25,
+    hint = "Point i of the next level is (1 - t) * points[i] + t * points[i + 1], for i = 1 .. #points - 1.",
+  }
+  say [[
+Your `evaluate_step` gives the reference's level 1. Now watch it make every level: tick **mine** in the curve
+view (or press **M**) and press **E**. Each level is made by your function from the level before and checked
+against the reference; drag the points or move t to try other inputs. A level that differs is drawn in
+vermillion over the reference's.
 
-Check it right here: tick **mine** in the curve view (or press **M**), then press **E**. Each level is now made
-by your function from the level before and checked against the reference. A level that differs is drawn in
-vermillion over the reference's (faint), its first wrong point ringed, and the line above the curve names the
-level, the point and both values; a Lua error shows its `curve.lua:LINE`. Save the file and the view runs the new
-version; drag the points or move t to try other inputs.
+The grading suite runs the same checks from a terminal:
 
-Or check it from a terminal, with the grading suite:
-
-    meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student
-
-Each failed test says what differs (a missing point, weights the wrong way round...).]]
-  wait_for { key = "M", hint = "Press M to check your evaluate_step in the curve view" }
+    meshedit grade --suite tests/grading/suites/curve.lua --submission scripts/student]]
+  wait_for { key = "M", hint = "Press M to draw your evaluate_step's levels in the curve view" }
 end)

@@ -219,15 +219,22 @@ step("Your turn", function()
 
 Open `scripts/student/patch.lua` and write `evaluate(patch, u, v)`. `patch.points` holds the 16 control
 points row by row (`patch.points[row * 4 + col + 1]`). Use your curve step from part 1: four rows at **u**,
-then the column at **v**.
-
-Check it right here: tick **mine** in the patch view (or press **M**). The probe point at (u, v) is then also
-computed by your `evaluate`: a bluish-green dot inside the vermillion P(u, v) when it is right, a vermillion dot
-joined to P(u, v) when it is not (P(u, v) is then the reference's, in the plain ink colour), with both points in
-the panel (and a hint when u and v are swapped); a Lua error shows its `patch.lua:LINE`. Move u and v, pick other
+then the column at **v**. The lesson runs it on the hill at u = 0.25, v = 0.5, the point you computed by hand,
+each time you save the file, and compares it with the reference; a Lua error shows its `patch.lua:LINE`.]]
+  your_turn {
+    exercise = "patch",
+    patch = hill,
+    u = 0.25,
+    v = 0.5,
+    hint = "Evaluate each row (points 1-4, 5-8, 9-12, 13-16) at u, then the curve through those four points at v.",
+  }
+  say [[
+Your `evaluate` gives the reference's P(0.25, 0.5). Now try it everywhere: tick **mine** in the patch view (or
+press **M**). The probe point at (u, v) is then also computed by your `evaluate`: a bluish-green dot inside the
+vermillion P(u, v) when it is right, a vermillion dot joined to P(u, v) when it is not. Move u and v, pick other
 patches; save the file and the view runs the new version.
 
-Or check it from a terminal, with the grading suite:
+The grading suite runs the same checks from a terminal:
 
     meshedit grade --suite tests/grading/suites/patch.lua --submission scripts/student
 

@@ -334,12 +334,28 @@ Same triangles, same positions: only the normals used for lighting changed. That
 end)
 
 step("Your turn", function()
-  show(cube)
+  local mesh = fan()
+  show(mesh)
+  camera "fit"
+  camera { yaw = 0, pitch = 30 }
+  view { labels = false, halfedges = false }
+  highlight(mesh:vertex(0), "red")
+  label(mesh:vertex(0), "v")
   say [[
 # Your code
 
 Open `scripts/student/normals.lua` and write `vertex_normal(v)`: walk around `v` with `h = h.twin.next`,
-add the cross products of the faces you meet (skip boundary halfedges, which have no face) and return
-the sum normalized. To try it, select a vertex, press **X** for the exercises panel, choose the vertex
-normal and press **Run mine**: the panel compares your normal with the reference's.]]
+add the cross products of the faces you meet (skip boundary halfedges, which have no face) and return the sum
+normalized. The lesson runs it on the fan's vertex **v** each time you save the file and compares it with the
+reference's area-weighted normal: the plain average of unit normals is named as such, and a Lua error shows its
+`normals.lua:LINE`.]]
+  your_turn {
+    exercise = "normals",
+    mesh = mesh,
+    element = mesh:vertex(0),
+    hint = "Add (b - a):cross(c - a) for each face as it is: its length is twice the face's area, so normalize only the sum.",
+  }
+  say [[
+Your `vertex_normal` gives the reference's normal at **v**. In the window you can run it on any vertex of any
+mesh: select a vertex, open the **Exercises** tab (X), choose the vertex normal and press **Run mine**.]]
 end)

@@ -388,5 +388,15 @@ the file and it runs again; the lesson goes on when yours gives the reference's 
     hint = "After the flip f0 holds h0, h3, h4 and f1 holds h1, h5, h2: set each face's and each vertex's halfedge "
       .. "to one that is still in it or still leaves it.",
   }
-  say "Your `flip_edge` gives the reference's answer, pointer for pointer up to renumbering."
+  say [[
+Your `flip_edge` gives the reference's answer, pointer for pointer up to renumbering. One more case: the edge
+a-c has a face on one side only. There is no second triangle to turn the edge inside, so `flip_edge` must leave
+the mesh as it is (and return nothing). The lesson runs yours on a-c next.]]
+  your_turn {
+    exercise = "flip",
+    mesh = rigged,
+    element = names.h7.edge,
+    hint = "If the face of e.halfedge or of its twin is a boundary face (f:is_boundary()), return before any write.",
+  }
+  say "Your `flip_edge` leaves a boundary edge alone, as the reference does."
 end)

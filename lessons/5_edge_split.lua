@@ -320,3 +320,34 @@ It does not change: V - E + F, the Euler characteristic, is the same before and 
 split adds 1 - 2 + 1 = 0 too) and every flip. Ctrl+Z undoes a split; try splitting and flipping on the grid
 until the counts make sense to you.]]
 end)
+
+step("Your turn", function()
+  -- A lopsided diamond: the average of a, b, c and d is not the midpoint of a-b, so a split that puts m at the
+  -- corners' average is told so.
+  local lopsided = meshedit.from_polygons(
+    { {-1, 0, 0}, {1.2, 0.1, 0}, {0.5, 1.1, 0.1}, {-0.3, -0.9, -0.2} },
+    { {1, 2, 3}, {2, 1, 4} })
+  show(lopsided)
+  camera "fit"
+  local n = names_of(lopsided:edge(0))
+  for _, name in ipairs(order) do label(n[name], name) end
+  say [[
+# Your code
+
+Open `scripts/student/split.lua` and write `split_edge(mesh, e)`: collect the old elements, make m, the three
+new edges, the two new faces and the six new halfedges, then set every pointer (the before-and-after list of the
+last steps is the plan). The lesson runs yours on the edge e of this lopsided diamond each time you save the file,
+beside the reference, and names what differs: m's position, a pointer that breaks a face cycle, a face that does
+not hold its halfedge.]]
+  your_turn {
+    exercise = "split",
+    mesh = lopsided,
+    element = n.e,
+    hint = "m goes at the midpoint of a and b; after the split every face is a triangle of three halfedges whose "
+      .. "next pointers close the cycle, and each one's face is that triangle.",
+  }
+  say [[
+Your `split_edge` gives the reference's answer, up to the order you made the new elements in. Splitting a
+boundary edge is extra credit: the Exercises tab (**X**, **Run mine**) checks it on any boundary edge you select,
+and the grading suite's boundary tests count as extra credit.]]
+end)

@@ -572,7 +572,8 @@ On a mesh with a **boundary** the rules change along the border, so it stays a c
 end)
 
 step("Your own upsample", function()
-  show(meshedit.cube())
+  local cube = meshedit.cube()
+  show(cube)
   camera "fit"
   local right = "Flags set while splitting"
   choose {
@@ -592,8 +593,29 @@ step("Your own upsample", function()
   }
   say [[
 Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same phases, with the flags
-(is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra credit. Press **X** for the **Exercises** tab,
-choose **upsample** in its exercise list, select any element of the mesh and press **Run mine**: it runs your
-upsample on a copy of the mesh on screen and compares it with the reference, naming the vertices that moved to
-the wrong place and the edges flipped wrongly. It reads your file again each time you save it.]]
+(is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra credit. The lesson runs your `upsample` on a
+copy of this cube each time you save the file and compares the result with the reference's: it names the
+vertices that moved to the wrong place, the weight they moved with, and the edges flipped wrongly. An upsample
+that never ends is stopped, at the line it was running.]]
+  your_turn {
+    exercise = "upsample",
+    mesh = cube,
+    hint = "Compute every new position first, split only the original edges, flip only flagged new edges with one "
+      .. "old and one new end, and write the positions last.",
+  }
+  local tetrahedron = meshedit.tetrahedron()
+  show(tetrahedron)
+  camera "fit"
+  say [[
+Right on the cube, whose vertices have 4, 5 or 6 neighbours. Every vertex of a tetrahedron has 3, the one degree
+where u is not 3 / (8n): the lesson runs yours on it next.]]
+  your_turn {
+    exercise = "upsample",
+    mesh = tetrahedron,
+    hint = "u = 3/16 when n = 3, and 3 / (8n) otherwise.",
+  }
+  say [[
+Your `upsample` gives the reference's mesh, up to the order you made the new elements in. The **Exercises** tab
+(**X**, choose **upsample**, **Run mine**) runs it on any mesh on screen and replays its writes one by one; try it
+on a mesh with a boundary for the extra credit.]]
 end)

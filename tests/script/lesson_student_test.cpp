@@ -1,21 +1,24 @@
-// your_turn end to end: the built binary runs lesson 4 (`meshedit lesson ... --headless --student DIR`) with the
-// correct solutions (its last step's your_turn is right, every step passes) and with buggy flips from
-// tests/grading/students, each in a folder of its own as flip.lua: the lesson names the mistake in the Exercises tab's
-// words (check_exercise on the same diamond gives the same first difference), an answers file that expects "right"
-// fails naming the step, and a Lua error is reported at the student's file:line. Skips when the binary is not built.
+// your_turn end to end: the built binary runs each of lessons 1 to 6 (`meshedit lesson ... --headless --student
+// DIR`) with the correct solutions (every your_turn is right, every step passes) and with every buggy fixture of
+// tests/grading/students, each in a student folder of its own (the correct solutions, with the fixture as its part's
+// file). The lesson that asks for that function names the mistake in the words tests/grade/
+// window_grader_agreement_test.cpp holds the Exercises tab and the grader to: an answers file that expects those words
+// passes, and the shipped answers (which expect "right") fail naming the step. A Lua error is reported at the
+// student's file:line. Skips when the binary is not built. A fixture added without a case here fails
+// EveryBuggyFixtureHasALessonCase.
 #include <gtest/gtest.h>
 
 #include <sys/wait.h>
 
+#include <algorithm>
 #include <cstdlib>
 #include <filesystem>
 #include <fstream>
-#include <memory>
+#include <set>
+#include <stdexcept>
 #include <string>
+#include <vector>
 
-#include "core/mesh_build.h"
-#include "core/polygon_mesh.h"
-#include "script/exercises.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -45,132 +48,239 @@ const fs::path& source() {
   return dir;
 }
 
-fs::path shipped_answers() { return source() / "tests" / "script" / "lessons" / "4_edge_flip_answers.lua"; }
+const fs::path& solutions() {
+  static const fs::path dir = source() / "tests" / "script" / "solutions";
+  return dir;
+}
 
-// Lesson 4 headless with `answers` and the student folder `student`.
-Outcome run_lesson_4(const fs::path& dir, const fs::path& answers, const fs::path& student) {
-  const fs::path lesson = source() / "lessons" / "4_edge_flip.lua";
-  return run_meshedit(dir, "lesson '" + lesson.string() + "' --headless --answers '" + answers.string() +
+// The lessons that end with your_turn, by the part their student file belongs to, and how many steps each has.
+struct Lesson {
+  const char* part;  // "flip": flip.lua, the fixtures flip_*.lua
+  const char* stem;  // "4_edge_flip"
+  size_t steps;
+};
+const std::vector<Lesson> kLessons = {
+    {"curve", "1_de_casteljau", 9},  {"patch", "2_bezier_patches", 6}, {"normals", "3_halfedge_walks", 7},
+    {"flip", "4_edge_flip", 6},      {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 11},
+};
+
+void PrintTo(const Lesson& lesson, std::ostream* out) { *out << lesson.stem; }
+
+const Lesson& lesson_of(const std::string& part) {
+  for (const Lesson& lesson : kLessons) {
+    if (part == lesson.part) return lesson;
+  }
+  throw std::runtime_error("no lesson for the part " + part);
+}
+
+fs::path shipped_answers(const Lesson& lesson) {
+  return source() / "tests" / "script" / "lessons" / (std::string(lesson.stem) + "_answers.lua");
+}
+
+Outcome run_lesson(const fs::path& dir, const Lesson& lesson, const fs::path& answers, const fs::path& student) {
+  const fs::path file = source() / "lessons" / (std::string(lesson.stem) + ".lua");
+  return run_meshedit(dir, "lesson '" + file.string() + "' --headless --answers '" + answers.string() +
                                "' --student '" + student.string() + "'");
 }
 
-// A student folder in `dir` holding tests/grading/students/FIXTURE.lua as flip.lua.
+// "flip_forgets_faces" -> "flip".
+std::string part_of(const std::string& fixture) { return fixture.substr(0, fixture.find('_')); }
+
+// A student folder in `dir`: the correct solutions, with tests/grading/students/FIXTURE.lua as its part's file.
 fs::path student_folder(const fs::path& dir, const std::string& fixture) {
   const fs::path folder = dir / fixture;
   fs::create_directories(folder);
-  fs::copy_file(source() / "tests" / "grading" / "students" / (fixture + ".lua"), folder / "flip.lua",
+  for (const auto& entry : fs::directory_iterator(solutions())) {
+    fs::copy_file(entry.path(), folder / entry.path().filename(), fs::copy_options::overwrite_existing);
+  }
+  fs::copy_file(source() / "tests" / "grading" / "students" / (fixture + ".lua"), folder / (part_of(fixture) + ".lua"),
                 fs::copy_options::overwrite_existing);
   return folder;
 }
 
-// The shipped answers with the last step's your_turn expecting a wrong verdict that names `words`.
-fs::path answers_expecting_wrong(const fs::path& dir, const std::string& words) {
-  std::string text = testing::read_text(shipped_answers());
+// The shipped answers with their your_turn answers, in order, replaced by `verdicts`: "right", or words a wrong
+// verdict's feedback must contain (the last verdict; the lesson's step goes on after it).
+fs::path answers_expecting(const fs::path& dir, const Lesson& lesson, const std::vector<std::string>& verdicts) {
+  std::string text = testing::read_text(shipped_answers(lesson));
   const std::string right = "{your_turn = \"right\"}";
-  const size_t at = text.find(right);
-  EXPECT_NE(at, std::string::npos) << "the shipped answers expect your_turn = \"right\"";
-  if (at != std::string::npos) text.replace(at, right.size(), "{your_turn = \"wrong\", feedback = \"" + words + "\"}");
-  const fs::path path = dir / "wrong_answers.lua";
+  size_t at = 0;
+  for (const std::string& verdict : verdicts) {
+    at = text.find(right, at);
+    EXPECT_NE(at, std::string::npos) << lesson.stem << ": fewer your_turn answers than verdicts";
+    if (at == std::string::npos) break;
+    const std::string replacement =
+        verdict == "right" ? right : "{your_turn = \"wrong\", feedback = \"" + verdict + "\"}";
+    text.replace(at, right.size(), replacement);
+    at += replacement.size();
+  }
+  // A step goes on after the first wrong verdict the answers expect: the your_turns after it in the step never run.
+  const std::string unused = ", " + right;
+  for (size_t rest = text.find(unused, at); rest != std::string::npos; rest = text.find(unused, rest)) {
+    text.erase(rest, unused.size());
+  }
+  EXPECT_EQ(text.find(right, at), std::string::npos) << lesson.stem << ": more your_turn answers than verdicts";
+  const fs::path path = dir / "answers.lua";
   std::ofstream(path) << text;
   return path;
 }
 
-// The lesson's last diamond ("rigged"): f0.halfedge = h2, f1.halfedge = h4, a.halfedge = h0, b.halfedge = h1 in the
-// diagram's names, walking from e0's halfedge as the lesson does.
-std::shared_ptr<const HalfedgeMesh> rigged_diamond() {
-  PolygonMesh polygons;
-  polygons.positions = {{-1, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}};
-  polygons.indices = {0, 1, 2, 1, 0, 3};
-  polygons.face_offsets = {0, 3, 6};
-  auto mesh = std::make_shared<HalfedgeMesh>(build_halfedge_mesh(polygons));
-  const HalfedgeId h0 = mesh->halfedge(EdgeId(0)), h1 = mesh->twin(h0);
-  mesh->set_halfedge(mesh->face(h0), mesh->next(h0));
-  mesh->set_halfedge(mesh->face(h1), mesh->next(h1));
-  mesh->set_halfedge(mesh->vertex(h0), h0);
-  mesh->set_halfedge(mesh->vertex(h1), h1);
-  return mesh;
+std::string passed_line(const Lesson& lesson) { return "\n" + std::to_string(lesson.steps) + " steps passed\n"; }
+
+bool ends_with(const std::string& text, const std::string& end) {
+  return text.size() >= end.size() && text.compare(text.size() - end.size(), end.size(), end) == 0;
 }
 
-// What the Exercises tab says first about the fixture's flip_edge on that diamond's e0.
-std::string exercises_tab_diagnosis(const fs::path& folder) {
-  auto code = load_student_file(folder / "flip.lua");
-  const ExerciseReport report =
-      check_exercise(*code, Exercise::FlipEdge, ExerciseInput::edge(rigged_diamond(), EdgeId(0)));
-  EXPECT_FALSE(report.equal);
-  return report.differences.empty() ? "(no difference)" : report.differences.front();
-}
+// ---- the correct solutions pass every lesson --------------------------------------------------------------------
 
-TEST(LessonStudent, TheCorrectFlipPassesLessonFour) {
+class CorrectSolutions : public ::testing::TestWithParam<Lesson> {};
+
+TEST_P(CorrectSolutions, PassEveryStepAndEveryYourTurn) {
   if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
-  const fs::path solutions = source() / "tests" / "script" / "solutions";
-  const Outcome o = run_lesson_4(testing::scratch_dir(), shipped_answers(), solutions);
+  const Lesson& lesson = GetParam();
+  const Outcome o = run_lesson(testing::scratch_dir(), lesson, shipped_answers(lesson), solutions());
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.err, "");
-  EXPECT_NE(o.out.find("  > your turn flip.lua: right\n"), std::string::npos) << o.out;
-  ASSERT_GE(o.out.size(), 16u);
-  EXPECT_EQ(o.out.substr(o.out.size() - 16), "\n6 steps passed\n");
+  EXPECT_NE(o.out.find("  > your turn " + std::string(lesson.part) + ".lua: right\n"), std::string::npos) << o.out;
+  EXPECT_EQ(o.out.find("  > your turn " + std::string(lesson.part) + ".lua: wrong"), std::string::npos) << o.out;
+  EXPECT_TRUE(ends_with(o.out, passed_line(lesson))) << o.out;
 }
 
-TEST(LessonStudent, AFlipThatForgetsTheFacesIsToldWhatTheExercisesTabSays) {
-  if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
-  const fs::path dir = testing::scratch_dir();
-  const fs::path student = student_folder(dir, "flip_forgets_faces");
-  const std::string words = "f0.halfedge is h1, but h1.face is f1";
-  EXPECT_NE(exercises_tab_diagnosis(student).find(words), std::string::npos) << exercises_tab_diagnosis(student);
+INSTANTIATE_TEST_SUITE_P(Lessons, CorrectSolutions, ::testing::ValuesIn(kLessons),
+                         [](const ::testing::TestParamInfo<Lesson>& lesson) { return std::string(lesson.param.part); });
 
-  const Outcome o = run_lesson_4(dir, answers_expecting_wrong(dir, words), student);
+// ---- every buggy fixture is told its mistake --------------------------------------------------------------------
+
+struct BuggyCase {
+  const char* fixture;                // tests/grading/students/FIXTURE.lua
+  std::vector<std::string> verdicts;  // per your_turn of its lesson, in order: "right"s, then words of the wrong one
+};
+
+// The fixtures that are correct (for the lessons: boundary rules are extra credit, which no lesson requires).
+const std::set<std::string> kCorrect = {"flip_correct",         "split_correct",   "split_reordered",
+                                        "split_without_boundary", "upsample_correct", "upsample_without_boundary"};
+
+const std::vector<BuggyCase>& buggy_cases() {
+  static const std::vector<BuggyCase> all = {
+      {"curve_drops_last", {"point 3 of the step is missing"}},
+      {"curve_swapped_weights", {"the weights are swapped"}},
+      {"patch_columns_first", {"u and v are swapped"}},
+      {"normals_unit_average", {"is the average of the faces' unit normals; the reference"}},
+      // The diamond's middle edge is flipped right; the boundary edge a-c must be left alone.
+      {"flip_boundary", {"right", "the reference does not flip e2 (e2 is on the boundary"}},
+      {"flip_breaks_face_cycle",
+       {"h5.next is still h3 after your flip_edge, as before the call; the reference changes it: that pointer breaks "
+        "the face cycle"}},
+      {"flip_forgets_faces", {"f0.halfedge is h1, but h1.face is f1"}},
+      {"flip_forgets_vertices", {"v0.halfedge is h0, but h0 leaves v3"}},
+      {"split_corner_average", {"the average of the corners v0 v1 v2 v3; it belongs at the midpoint of v0 and v1"}},
+      {"split_wrong_face", {"h12.face is f0, but h12 is in f2's next-cycle"}},
+      // Upsample runs on the cube, then on the tetrahedron (every vertex of degree 3).
+      {"upsample_flip_one_check", {"a new edge whose ends were both new was flipped"}},
+      {"upsample_flips_split_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
+      {"upsample_integer_division", {"8 of the 8 original vertices kept their old positions"}},
+      {"upsample_splits_new_edges", {"upsample did not finish: split only the edges of the original mesh"}},
+      {"upsample_wrong_vertices", {"a position computed for a new vertex (step 2) was written to an original one"}},
+      {"upsample_wrong_weight", {"right", "moved as if u = 0.125"}},
+  };
+  return all;
+}
+
+void PrintTo(const BuggyCase& c, std::ostream* out) { *out << c.fixture; }
+
+class BuggyFixture : public ::testing::TestWithParam<BuggyCase> {};
+
+TEST_P(BuggyFixture, TheLessonNamesTheMistake) {
+  if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
+  const BuggyCase& c = GetParam();
+  const Lesson& lesson = lesson_of(part_of(c.fixture));
+  const fs::path dir = testing::scratch_dir();
+  const fs::path student = student_folder(dir, c.fixture);
+
+  const Outcome o = run_lesson(dir, lesson, answers_expecting(dir, lesson, c.verdicts), student);
   EXPECT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("  > your turn flip.lua: wrong: " + exercises_tab_diagnosis(student) + "\n"),
-            std::string::npos)
-      << o.out;
+  // Each your_turn prints its verdict in order: "right", or "wrong: " and the diagnosis holding the case's words.
+  const std::string run = "  > your turn " + part_of(c.fixture) + ".lua: ";
+  size_t at = 0;
+  for (const std::string& verdict : c.verdicts) {
+    at = o.out.find(run, at);
+    ASSERT_NE(at, std::string::npos) << o.out;
+    at += run.size();
+    if (verdict == "right") {
+      EXPECT_EQ(o.out.compare(at, 6, "right\n"), 0) << o.out.substr(at, 200);
+    } else {
+      EXPECT_EQ(o.out.compare(at, 7, "wrong: "), 0) << o.out.substr(at, 200);
+      EXPECT_NE(o.out.substr(at, o.out.find("\n  >", at) - at).find(verdict), std::string::npos) << o.out.substr(at);
+    }
+  }
   EXPECT_NE(o.out.find("  (wrong, as the answers expect: going on)\n"), std::string::npos) << o.out;
-  EXPECT_EQ(o.out.substr(o.out.size() - 16), "\n6 steps passed\n");
+  EXPECT_TRUE(ends_with(o.out, passed_line(lesson))) << o.out;
 
-  // The shipped answers expect the right answer: a buggy flip fails the run at the your_turn line, naming the step.
-  const Outcome failed = run_lesson_4(dir, shipped_answers(), student);
-  EXPECT_EQ(failed.status, 1);
-  EXPECT_NE(failed.err.find("4_edge_flip.lua:"), std::string::npos) << failed.err;
-  EXPECT_NE(failed.err.find(": step 6 'Before and after, pointer by pointer': your_turn should be judged right, but it "
-                            "was judged wrong: after your flip_edge the mesh is not valid (2 problems): " + words),
-            std::string::npos)
+  // The shipped answers expect the right answer: the buggy file fails the run at its step, quoting the diagnosis.
+  const std::string& first_wrong = *std::find_if(c.verdicts.begin(), c.verdicts.end(),
+                                                 [](const std::string& v) { return v != "right"; });
+  const Outcome failed = run_lesson(dir, lesson, shipped_answers(lesson), student);
+  EXPECT_EQ(failed.status, 1) << failed.out;
+  EXPECT_NE(failed.err.find(std::string(lesson.stem) + ".lua:"), std::string::npos) << failed.err;
+  EXPECT_NE(failed.err.find("step " + std::to_string(lesson.steps) + " '"), std::string::npos) << failed.err;
+  EXPECT_NE(failed.err.find("your_turn should be judged right, but it was judged wrong: "), std::string::npos)
       << failed.err;
+  EXPECT_NE(failed.err.find(first_wrong), std::string::npos) << failed.err;
 }
 
-TEST(LessonStudent, AFlipThatForgetsTheVerticesIsToldWhatTheExercisesTabSays) {
+INSTANTIATE_TEST_SUITE_P(Fixtures, BuggyFixture, ::testing::ValuesIn(buggy_cases()),
+                         [](const ::testing::TestParamInfo<BuggyCase>& fixture) { return std::string(fixture.param.fixture); });
+
+TEST(LessonStudent, EveryBuggyFixtureHasALessonCase) {
+  std::set<std::string> covered(kCorrect);
+  for (const BuggyCase& c : buggy_cases()) covered.insert(c.fixture);
+  for (const auto& entry : fs::directory_iterator(source() / "tests" / "grading" / "students")) {
+    EXPECT_TRUE(covered.count(entry.path().stem().string())) << entry.path().filename() << " has no case here";
+  }
+}
+
+TEST(LessonStudent, TheCorrectFixturesPassTheirLesson) {
   if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
-  const fs::path dir = testing::scratch_dir();
-  const fs::path student = student_folder(dir, "flip_forgets_vertices");
-  const std::string words = "v0.halfedge is h0, but h0 leaves v3";
-  EXPECT_NE(exercises_tab_diagnosis(student).find(words), std::string::npos) << exercises_tab_diagnosis(student);
-
-  const Outcome o = run_lesson_4(dir, answers_expecting_wrong(dir, words), student);
-  EXPECT_EQ(o.status, 0) << o.err;
-  EXPECT_NE(o.out.find("  > your turn flip.lua: wrong: " + exercises_tab_diagnosis(student) + "\n"), std::string::npos)
-      << o.out;
-
-  // Expecting words the diagnosis does not hold fails the run and quotes what it said.
-  const Outcome other = run_lesson_4(dir, answers_expecting_wrong(dir, "h2.face"), student);
-  EXPECT_EQ(other.status, 1);
-  EXPECT_NE(other.err.find("your_turn should be judged wrong with feedback containing 'h2.face', but its feedback was "
-                           "'after your flip_edge the mesh is not valid (2 problems): " + words),
-            std::string::npos)
-      << other.err;
+  for (const std::string& fixture : kCorrect) {
+    const Lesson& lesson = lesson_of(part_of(fixture));
+    const fs::path dir = testing::scratch_dir() / fixture;
+    fs::create_directories(dir);
+    const Outcome o = run_lesson(dir, lesson, shipped_answers(lesson), student_folder(dir, fixture));
+    EXPECT_EQ(o.status, 0) << fixture << ": " << o.err;
+    EXPECT_TRUE(ends_with(o.out, passed_line(lesson))) << fixture << ": " << o.out;
+  }
 }
+
+// ---- errors and usage -------------------------------------------------------------------------------------------
 
 TEST(LessonStudent, AStudentFileThatFailsIsReportedAtItsLine) {
   if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const fs::path dir = testing::scratch_dir();
   fs::create_directories(dir / "broken");
   std::ofstream(dir / "broken" / "flip.lua") << "function flip_edge(mesh, e)\n  return e.halfedge.nope.twin\nend\n";
-  const Outcome o = run_lesson_4(dir, answers_expecting_wrong(dir, "flip.lua:2:"), dir / "broken");
+  const Lesson& lesson = lesson_of("flip");
+  const Outcome o = run_lesson(dir, lesson, answers_expecting(dir, lesson, {"flip.lua:2:"}),
+                               dir / "broken");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("  > your turn flip.lua: wrong: flip.lua:2: "), std::string::npos) << o.out;
+}
+
+TEST(LessonStudent, ExpectingOtherWordsFailsAndQuotesTheDiagnosis) {
+  if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
+  const fs::path dir = testing::scratch_dir();
+  const Lesson& lesson = lesson_of("flip");
+  const Outcome o = run_lesson(dir, lesson, answers_expecting(dir, lesson, {"h2.face"}),
+                               student_folder(dir, "flip_forgets_vertices"));
+  EXPECT_EQ(o.status, 1);
+  EXPECT_NE(o.err.find("your_turn should be judged wrong with feedback containing 'h2.face', but its feedback was "
+                       "'after your flip_edge the mesh is not valid (2 problems): v0.halfedge is h0, but h0 leaves v3"),
+            std::string::npos)
+      << o.err;
 }
 
 TEST(LessonStudent, AMissingStudentFolderIsAUsageError) {
   if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const fs::path dir = testing::scratch_dir();
-  const Outcome o = run_lesson_4(dir, shipped_answers(), dir / "nowhere");
+  const Outcome o = run_lesson(dir, lesson_of("flip"), shipped_answers(lesson_of("flip")), dir / "nowhere");
   EXPECT_EQ(o.status, 2);
   EXPECT_EQ(o.err, "meshedit: --student " + (dir / "nowhere").string() + ": no such folder (see meshedit --help)\n");
 }

@@ -1,7 +1,7 @@
 // The lessons for parts 1-3 (lessons/1_de_casteljau.lua, 2_bezier_patches.lua, 3_halfedge_walks.lua): each
-// passes every step headless with its answers file, says the numbers the core computes, names each likely wrong
-// answer, and marks the elements its walks really reach (checked against the core mesh's own pointers through
-// HeadlessHost). Also lesson_file(), which the teapot lesson uses to find assets/teapot.bez.
+// passes every step headless with its answers file and the correct solutions as the student's folder (each ends
+// with your_turn), says the numbers the core computes, names each likely wrong answer, and marks the elements its
+// walks really reach (checked against the core mesh's own pointers through HeadlessHost). Also lesson_file(), which the teapot lesson uses to find assets/teapot.bez.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -35,7 +35,8 @@ Headless run(const std::string& stem) {
   std::ostringstream out;
   Headless result;
   result.outcome = run_lesson_headless(source / "lessons" / (stem + ".lua"),
-                                       source / "tests" / "script" / "lessons" / (stem + "_answers.lua"), out);
+                                       source / "tests" / "script" / "lessons" / (stem + "_answers.lua"), out,
+                                       LessonRunner::default_limits(), source / "tests" / "script" / "solutions");
   result.text = out.str();
   return result;
 }
@@ -77,8 +78,8 @@ TEST(LessonsA, DeCasteljauPassesEveryStep) {
       << r.text;
   EXPECT_TRUE(contains(r.text, "= (3, 6), (6, 0), (3, -6).")) << r.text;
   EXPECT_TRUE(contains(r.text, "Yes: C'(0.25) = (4.125, 3)")) << r.text;
-  // The last step points to the view's own check first, then to the grader.
-  EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the curve view (or press M), then press E.")) << r.text;
+  // The last step runs the student's evaluate_step, then points to the view's own check and to the grader.
+  EXPECT_TRUE(contains(r.text, "> your turn curve.lua: right\n\n  Your evaluate_step gives the reference's level 1.")) << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/curve.lua")) << r.text;
 }
 
@@ -117,7 +118,7 @@ TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
   EXPECT_TRUE(contains(r.text, "> choose the first column's four points: wrong: The first column is the edge u = 0: "
                                "rows and columns swapped."))
       << r.text;
-  EXPECT_TRUE(contains(r.text, "Check it right here: tick mine in the patch view (or press M).")) << r.text;
+  EXPECT_TRUE(contains(r.text, "> your turn patch.lua: right\n\n  Your evaluate gives the reference's P(0.25, 0.5).")) << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/patch.lua")) << r.text;
   EXPECT_TRUE(contains(r.text, "made of 32 Bézier patches")) << r.text;
   EXPECT_TRUE(contains(r.text, "only 512 control points")) << r.text;

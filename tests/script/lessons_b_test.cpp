@@ -175,7 +175,7 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
 // ---- part 5: edge split ----
 
 TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
-  const std::string text = run_headless("5_edge_split", 6);
+  const std::string text = run_headless("5_edge_split", 7);
   EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
       << text;
   EXPECT_TRUE(contains(text, "edges ea = e5, ec = e6, ed = e7; faces g0 = f2 and g1 = f3; halfedges n0 to n5 = h10 "

@@ -20,5 +20,5 @@ return {
   ["The hodograph"] = { {answer = {6, 0}, feedback = "middle control point"},
                        {answer = {4.125, -3}, feedback = "t and 1 - t swapped"}, {answer = {4.125, 3}},
                        {key = "E"} },
-  ["Your turn"] = { {key = "M"} },
+  ["Your turn"] = { {your_turn = "right"}, {key = "M"} },
 }

@@ -14,5 +14,5 @@ return {
   ["The Utah teapot"] = { {choose = "64", feedback = "counts the squares"}, {choose = "81"} },
   ["Where patches meet"] = { {choose = "the first column's four points", feedback = "rows and columns swapped"},
                              {choose = "the first row's four points"} },
-  ["Your turn"] = { {key = "M"} },
+  ["Your turn"] = { {your_turn = "right"}, {key = "M"} },
 }

@@ -14,4 +14,5 @@ return {
                                 {choose = "Leaning left, towards the small faces", feedback = "counts for less"},
                                 {choose = "Leaning right, towards the big faces"} },
   ["Flat or smooth"] = { {key = "Q"} },
+  ["Your turn"] = { {your_turn = "right"} },
 }

@@ -17,5 +17,5 @@ return {
                                                {choose = "h3", feedback = "must leave the vertex"}, {choose = "h4"} },
   ["Flip it yourself"] = { {selection = "e0"}, {flip = "e0"} },
   ["Before and after, pointer by pointer"] = { {answer = 2, feedback = "traded faces"}, {answer = 4},
-                                               {your_turn = "right"} },
+                                               {your_turn = "right"}, {your_turn = "right"} },
 }

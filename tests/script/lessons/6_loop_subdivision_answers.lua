@@ -34,5 +34,5 @@ return {
     {answer = "0.125, 0.125"}, {subdivide = true} },
   ["Your own upsample"] = { {choose = "One old end and one new end", feedback = "halves"},
     {choose = "Ids past the original count", feedback = "new id"},
-    {choose = "Flags set while splitting"} },
+    {choose = "Flags set while splitting"}, {your_turn = "right"}, {your_turn = "right"} },
 }
