@@ -22,6 +22,7 @@
 #include "core/normals.h"
 #include "core/value_format.h"
 #include "script/exercises.h"
+#include "script/loop_boundary_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
 
 namespace meshedit {
@@ -476,6 +477,7 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
 
   // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
   for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+  for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
 
   // Coinciding vertices: positions written to the wrong vertices make the mesh collapse.
   std::vector<glm::dvec3> positions;

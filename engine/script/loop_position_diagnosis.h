@@ -14,7 +14,7 @@
 //   the average of a, b, c, d). An original vertex of yours that sits where the reference puts a new vertex was
 //   given a new vertex's position.
 // - At most one message per rule (the first vertex in id order, and how many share the mistake); boundary
-//   vertices and edges are left out (their rules are extra credit and have their own tests).
+//   vertices and edges are left out (their rules are extra credit: loop_boundary_diagnosis.h).
 // - Reads every mesh through bounded walks only; `yours` should be valid (the caller checks first).
 #pragma once
 

@@ -142,8 +142,8 @@ TEST_P(WindowAndGrader, TheGraderCarriesTheWindowsDiagnosis) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, WindowAndGrader, ::testing::ValuesIn(cases()),
-                         [](const ::testing::TestParamInfo<Case>& info) {
-                           std::string name = info.param.fixture;
+                         [](const ::testing::TestParamInfo<Case>& fixture) {
+                           std::string name = fixture.param.fixture;
                            name = name.substr(0, name.size() - 4);
                            return name;
                          });
@@ -169,6 +169,28 @@ TEST(WindowAndGrader, ABoundaryVertexMayPointAtAnInteriorHalfedgeInBoth) {
   const GradeReport report = grade(*suite, testing::submission_of({{"split.lua", text}}), testing::quick_options());
   EXPECT_EQ(report.score, 10.0);  // every base point and the boundary extra credit
   EXPECT_EQ(report.failed(), 0u);
+}
+
+// The boundary rules are extra credit: an upsample with the interior rules only is right on closed meshes, and on the
+// grid of test 6.4 the window and the grader both name the interior rules used on the boundary.
+TEST(WindowAndGrader, TheExtraCreditBoundaryRulesAreNamedAlikeInBoth) {
+  const Case c{"upsample_without_boundary.lua", "6.4", [] { return ExerciseInput::whole_mesh(grid(2, 2)); }, ""};
+  const ExerciseReport window = window_check(c);
+  ASSERT_FALSE(window.equal);
+  const auto names = [&](const std::string& words) {
+    for (const std::string& d : window.differences) {
+      if (d.find(words) != std::string::npos) return d;
+    }
+    return std::string();
+  };
+  const std::string vertex = names("boundary vertices, e.g. v0 (3 neighbours, 2 of them along the boundary), moved by "
+                                   "the interior rule");
+  const std::string edge = names("are at the interior rule 3/8 (a + b) + 1/8 (c + d) with d read across the boundary");
+  ASSERT_NE(vertex, "") << window.summary();
+  ASSERT_NE(edge, "") << window.summary();
+  const std::string grader = grader_output(c);
+  EXPECT_NE(grader.find(vertex), std::string::npos) << grader;
+  EXPECT_NE(grader.find(edge), std::string::npos) << grader;
 }
 
 TEST(WindowAndGrader, EveryBuggyFixtureHasACase) {
