@@ -178,10 +178,20 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     const LessonWait& wait = app.lesson().waiting_for();
     const bool hint = a.verb == "expect-lesson-hint";
     const std::string got = hint ? (wait.hint_shown() ? wait.hint : std::string()) : wait.feedback;
-    if (!wait.is_question()) fail(a, "the lesson asks no question (it waits for " + wait.describe() + ")");
+    if (!wait.is_question() && wait.kind != LessonWait::Kind::YourTurn) {
+      fail(a, "the lesson asks no question (it waits for " + wait.describe() + ")");
+    }
     else if (got.empty() || got.find(rest_of_line(a)) == std::string::npos) {
       fail(a, std::string(hint ? "the hint shown is '" : "the feedback is '") + got + "'");
     }
+  } else if (a.verb == "lesson-show-mine") {
+    if (const Check check = app.show_your_turn_mine(); !check) fail(a, check.reason);
+  } else if (a.verb == "expect-exercise-run") {
+    const std::optional<ExerciseRun>& run = app.exercises().last_run();
+    const std::string got = run ? run->label + " (" + run->input.describe(run->exercise) + "): " +
+                                      (run->mine ? run->report.summary() : "the reference alone")
+                                : std::string("none");
+    if (got.find(rest_of_line(a)) == std::string::npos) fail(a, "the Exercises tab's last run is '" + got + "'");
   } else if (a.verb == "expect-lesson-live") {
     std::string texts;
     bool found = false;

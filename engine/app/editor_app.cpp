@@ -31,6 +31,7 @@ EditorApp::EditorApp()
   lesson_panel_.lessons_dir = lessons_dir();
   refresh_lessons(lesson_panel_);
   lesson_panel_.reload = [this](LessonRunner&) { return reload_lesson(); };
+  lesson_panel_.show_your_turn = [this] { show_your_turn_mine(); };
 }
 
 EditorApp::~EditorApp() = default;

@@ -118,6 +118,11 @@ class EditorApp {
   // the lesson, its highlights and labels all go, or (memory ran out making the runner) all stay and the exception is
   // thrown (the frame guard reports it).
   void show_lesson_list();
+  // The lesson panel's "Show mine vs reference" (app/editor_your_turn.cpp): the run of the your_turn the step waits on
+  // with a wrong answer, shown where the window compares runs: for a mesh exercise its input in the document, its
+  // element selected, mine run on it by the Exercises tab, brought to the front; for the curve and patch exercises its
+  // input in the view with "mine" on. Refused (a Warning) when the step waits on no wrong your_turn; never throws.
+  Check show_your_turn_mine();
   LessonRunner& lesson() { return *lesson_; }
   const LessonMarks& lesson_marks() const { return lesson_host_->marks(); }  // the lesson's highlights and labels
   // True while something on screen moves by itself (a lesson animation, an edit playing) or a hover waits for the mouse
@@ -155,7 +160,8 @@ class EditorApp {
   // What the window's apply_look made of the fonts: a missing font is a warning in the status line.
   void fonts_applied(const FontsLoaded& fonts);
   const WindowLayout& layout() const { return layout_; }
-  const UiProbe& probe() const { return probe_; }  // where the lesson's text and buttons were drawn last frame
+  // Where the lesson's text and buttons were drawn last frame, and "exercises-tab" when the Exercises tab was in front.
+  const UiProbe& probe() const { return probe_; }
   float font_pixels() const { return font_pixels_; }
 
   // Opens the console and runs `code` in it, as if typed there and Enter pressed.
@@ -250,6 +256,7 @@ class EditorApp {
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
   void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
+  void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
 
   ShaderLibrary shaders_;
   std::unique_ptr<MeshRenderer> mesh_renderer_;

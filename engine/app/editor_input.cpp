@@ -39,10 +39,10 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
     if (key == edit_key) exercises_.finish_replay(doc_);
   }
   if (key == GLFW_KEY_X && !mods.ctrl) {
-    exercise_panel_.open = !exercise_panel_.open;
     if (exercise_panel_.open) {
-      select_tab_ = RightTab::Exercises;
-      settings_.layout.right_open = true;
+      exercise_panel_.open = false;
+    } else {
+      bring_exercises_tab_forward();
     }
     return true;
   }

@@ -148,6 +148,7 @@ void EditorApp::draw_right_column() {
       ImGui::EndTabItem();
     }
     if (exercise_panel_.open && tab("Exercises", RightTab::Exercises, &exercise_panel_.open)) {
+      probe_.record_last_item("exercises-tab");  // the tab is in front (tests)
       draw_exercise_panel_contents(exercises_, exercise_panel_, doc_, selection_);
       ImGui::EndTabItem();
     }

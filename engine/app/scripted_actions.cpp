@@ -22,7 +22,8 @@ const std::map<std::string, int>& arities() {
       {"orbit", 2},           {"expect-gpu-update", 1}, {"click-on", 1},     {"layout-json", 1},
       {"window-size", 2},     {"up-axis", 1},       {"expect-up-axis", -1},
       {"animate-edits", 1},   {"lesson-choose", -1},    {"lesson-answer", -1},    {"expect-lesson-feedback", -1},
-      {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},
+      {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},     {"lesson-show-mine", 0},
+      {"expect-exercise-run", -1},
   };
   return table;
 }

@@ -12,7 +12,12 @@
 //   expect-lesson-step 3 waiting|finished|failed   expect-lesson-said TEXT...  (the step said TEXT)
 //   lesson-choose OPTION...   (presses that option of the choose{} the step asks, as its button in the panel does)
 //   lesson-answer TEXT...     (types TEXT into the answer{} box and presses Check; a pick{} is answered by click-on)
-//   expect-lesson-feedback TEXT...   (the feedback on the last wrong answer to the question asked contains TEXT)
+//   expect-lesson-feedback TEXT...   (the feedback on the last wrong answer to the question asked, or the diagnosis of
+//                                     the your_turn waited on, contains TEXT)
+//   lesson-show-mine      (presses the your_turn's "Show mine vs reference": fails when the step waits on no wrong
+//                          your_turn)
+//   expect-exercise-run TEXT...   (the Exercises tab's last run, as "LABEL (INPUT): SUMMARY" ("mine: flip e0 (e0 of a
+//                                  mesh with 2 faces): different: ..."), contains TEXT)
 //   expect-lesson-hint TEXT...       (the question's hint is shown, and contains TEXT)
 //   expect-lesson-live TEXT...       (a live() text of the step contains TEXT, as the last frame evaluated it)
 //   curve-t T             (the curve view's t, as its slider sets it)

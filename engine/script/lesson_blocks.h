@@ -1,6 +1,6 @@
 // What a step shows in the lesson panel, in the order the step made it: say() text, live() text, plot{} pictures and
-// the questions the student has answered (choose, pick, answer). Plain data: the runner fills it, the panel and the
-// headless command read it.
+// the questions the student has answered (choose, pick, answer); and each your_turn run with its verdict and the
+// exercise's input. Plain data: the runner fills it, the panel, the window and the headless command read it.
 //
 // Invariants:
 // - A step's blocks belong to that step: the runner empties them when a step starts (Next, Back, go_to, reload), with
@@ -11,6 +11,9 @@
 //   last value it had.
 // - A plot's samples are taken once, when plot{} runs (x from x_min to x_max in equal steps, every value finite); only
 //   its marker follows the view.
+// - A YourTurnVerdict's exercise_input is the input both runs of it worked on: the copy your_turn made when it was
+//   called, shared by every run of that your_turn and never changed (its mesh is const), so the window can run the
+//   same check on the same input (the Exercises tab, the curve and patch views' "mine").
 #pragma once
 
 #include <cstddef>
@@ -21,6 +24,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "script/exercises.h"
 #include "script/file_stamp.h"
 
 namespace meshedit {
@@ -67,6 +71,8 @@ struct LessonJudgement {
 
 // One run of the student's file by your_turn (lesson_your_turn.h): the same verdict and words as the Exercises tab.
 struct YourTurnVerdict {
+  Exercise exercise = Exercise::FlipEdge;
+  ExerciseInput exercise_input;  // what mine and the reference ran on (for a mesh: its mesh and element)
   std::string file;      // "flip.lua"
   std::string function;  // "flip_edge"
   std::string input;     // ExerciseInput::describe: "e0 of a mesh with 2 faces"

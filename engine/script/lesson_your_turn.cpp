@@ -202,6 +202,8 @@ int api_run(lua_State* L) {
   }
   const std::filesystem::path file = script.student_folder / info.file;
   YourTurnVerdict verdict;
+  verdict.exercise = held.exercise;
+  verdict.exercise_input = held.input;  // shares the held copy's mesh, which nothing changes
   verdict.file = info.file;
   verdict.function = info.function;
   verdict.input = held.input.describe(held.exercise);

@@ -254,6 +254,10 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
       state.rows_serial = run->serial;
     }
     draw_pointer_table(state.rows);
+    if (std::exchange(state.bring_table_into_view, false) &&
+        ImGui::GetCursorScreenPos().y > ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) {
+      ImGui::SetScrollHereY(1.0f);
+    }
     if (run->mine) draw_replay(session, state, doc);
   } else if (session.load_error().empty()) {
     ImGui::TextDisabled("select an element and press Run mine");

@@ -44,6 +44,8 @@ struct ExercisePanelState {
   size_t writes_drawn = 0;        // rows of the write list drawn in the last frame (tests)
   float run_mine_x = -1.0f;       // where "Run mine" was drawn in the last frame, its centre (tests click it)
   float run_mine_y = -1.0f;
+  // Scroll the panel, once, so the next run's changed-pointers table ends in sight (the lesson's your_turn sets it).
+  bool bring_table_into_view = false;
 };
 
 // Draws the "Exercises" window (nothing when state.open is false).

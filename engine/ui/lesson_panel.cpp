@@ -7,6 +7,7 @@
 #include <imgui.h>
 
 #include "script/lesson_text.h"
+#include "ui/exercise_session.h"
 #include "ui/lesson_plot_view.h"
 #include "ui/lesson_question_view.h"
 #include "ui/theme.h"
@@ -75,6 +76,44 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
   ImGui::Spacing();
 }
 
+// What the student sees of their file's wrong run: the task, the diagnosis, the hint and the button that shows the run
+// side by side with the reference.
+void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, const LessonWait& wait) {
+  ImGui::TextWrapped("%s", wait.question.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, im_colour(ui_palette().warning));
+  ImGui::TextWrapped("%s", wait.feedback.c_str());
+  ImGui::PopStyleColor();
+  if (!wait.hint.empty()) {
+    ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
+    ImGui::TextWrapped("Hint: %s", wait.hint.c_str());
+    ImGui::PopStyleColor();
+  }
+  const YourTurnVerdict* verdict = your_turn_to_show(runner);
+  if (!verdict || !state.show_your_turn) return;
+  ImGui::Spacing();
+  const bool clicked = ImGui::Button(kShowMineButton);
+  if (state.probe) state.probe->record_last_item("lesson-show-mine");
+  const float width = ImGui::GetContentRegionAvail().x;
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  if (is_mesh_exercise(verdict->exercise)) {
+    ImGui::TextWrapped("Runs your %s on this input in the Exercises tab (X): the pointers it changed beside the "
+                       "reference's, and your writes one by one.", verdict->function.c_str());
+  } else {
+    ImGui::TextWrapped("Shows this input in the %s view with its \"mine\" on (M): your %s beside the reference's.",
+                       verdict->exercise == Exercise::CurveStep ? "curve" : "patch", verdict->function.c_str());
+  }
+  ImGui::PopStyleColor();
+  // A new run, or the text wrapped anew (a resize): the diagnosis and the button come into sight, once.
+  const size_t step = runner.current_step(), runs = runner.your_turns().size();
+  if (state.scrolled_step != step || state.scrolled_runs != runs || state.scrolled_width != width) {
+    ImGui::SetScrollHereY(1.0f);
+    state.scrolled_step = step;
+    state.scrolled_runs = runs;
+    state.scrolled_width = width;
+  }
+  if (clicked) state.show_your_turn();
+}
+
 void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
   const std::vector<LessonBlock>& blocks = runner.blocks();
   for (size_t i = 0; i < blocks.size(); ++i) {
@@ -88,15 +127,7 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
   } else if (wait.kind == LessonWait::Kind::Button) {
     if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
   } else if (wait.kind == LessonWait::Kind::YourTurn) {  // the student's file gave another answer: why, until saved
-    ImGui::TextWrapped("%s", wait.question.c_str());
-    ImGui::PushStyleColor(ImGuiCol_Text, im_colour(ui_palette().warning));
-    ImGui::TextWrapped("%s", wait.feedback.c_str());
-    ImGui::PopStyleColor();
-    if (!wait.hint.empty()) {
-      ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
-      ImGui::TextWrapped("Hint: %s", wait.hint.c_str());
-      ImGui::PopStyleColor();
-    }
+    draw_your_turn_wait(runner, state, wait);
   } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
   } else if (wait.waiting()) {
@@ -108,6 +139,12 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
 }
 
 }  // namespace
+
+const YourTurnVerdict* your_turn_to_show(const LessonRunner& runner) {
+  if (runner.waiting_for().kind != LessonWait::Kind::YourTurn || runner.your_turns().empty()) return nullptr;
+  const YourTurnVerdict& last = runner.your_turns().back();
+  return last.right ? nullptr : &last;
+}
 
 ReloadOutcome reload_runner(LessonRunner& runner) {
   if (runner.reload()) return ReloadOutcome::Reloaded;

@@ -14,6 +14,10 @@
 //   check; one that fails otherwise waits for the next save.
 // - Reload and hot reload reload through state.reload when it is set (the app's, which renames the window after the
 //   lesson, whole or nothing), else with the runner's own reload().
+// - While the step waits on a your_turn whose last run was wrong (your_turn_to_show), the panel shows the diagnosis and,
+//   when state.show_your_turn is set, the "Show mine vs reference" button, which calls it: the app shows that run where
+//   it compares runs (the Exercises tab, the curve and patch views' "mine"). The step's child scrolls to the button once
+//   per run and once per width of the panel, so a new diagnosis and its button are in sight, after a resize too.
 #pragma once
 
 #include <filesystem>
@@ -43,9 +47,21 @@ struct LessonPanelState {
   double since_check = 0.0;
   // How Reload and hot reload reload the lesson; empty: reload_runner.
   std::function<ReloadOutcome(LessonRunner&)> reload;
-  UiProbe* probe = nullptr;  // where the step's text ("lesson-text") and Back and Next were drawn (layout checks)
+  UiProbe* probe = nullptr;  // where the step's text ("lesson-text"), Back, Next and the your_turn's button were drawn
   LessonAnswerBox answer_box;  // the text typed for the answer{} being asked
+  // What the your_turn's "Show mine vs reference" does (the app's); empty: the panel offers no button.
+  std::function<void()> show_your_turn;
+  // The your_turn run the step's child last scrolled to: its step, how many runs the step had made, the panel's width.
+  size_t scrolled_step = 0, scrolled_runs = 0;
+  float scrolled_width = 0.0f;
 };
+
+// The label of the your_turn's button (the scripted action lesson-show-mine presses it).
+inline constexpr const char kShowMineButton[] = "Show mine vs reference";
+
+// The your_turn run the "Show mine vs reference" button shows: the step's last run, while the step waits on it and it
+// was wrong (a different answer, or the file's error); nullptr otherwise.
+const YourTurnVerdict* your_turn_to_show(const LessonRunner& runner);
 
 // The runner's own reload(), told as a ReloadOutcome (LessonRunner::out_of_memory for OutOfMemory).
 ReloadOutcome reload_runner(LessonRunner& runner);

@@ -1,7 +1,8 @@
 // your_turn on a LessonRunner and a HeadlessHost: a wrong flip_edge leaves the step waiting with compare()'s
 // diagnosis, saving the right one makes the next look at the file (not before half a second of updates) run it again
 // and the step go on; a runaway student loop is stopped by the student limits and said so; a student file with a
-// syntax error is its file:line; bad arguments fail the step at the lesson's line; the lesson's mesh is not changed.
+// syntax error is its file:line; bad arguments fail the step at the lesson's line; the lesson's mesh is not changed;
+// each verdict keeps the exercise and the input it ran on.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,6 +11,8 @@
 #include <string>
 #include <vector>
 
+#include "core/mesh_build.h"
+#include "core/primitives.h"
 #include "script/exercises.h"
 #include "script/headless_host.h"
 #include "script/lesson_runner.h"
@@ -64,6 +67,19 @@ TEST(LessonYourTurn, AWrongFlipWaitsWithTheDiagnosisAndASaveRunsItAgain) {
   EXPECT_FALSE(runner.your_turns()[0].right);
   EXPECT_EQ(runner.your_turns()[0].input.rfind("e2 of ", 0), 0u) << runner.your_turns()[0].input;
   EXPECT_NE(wait.feedback.find("your flip_edge changed nothing"), std::string::npos) << wait.feedback;
+  // The verdict keeps what both runs worked on: the grid as the lesson gave it, and e2.
+  const YourTurnVerdict& first = runner.your_turns()[0];
+  EXPECT_EQ(first.exercise, Exercise::FlipEdge);
+  EXPECT_EQ(first.exercise_input.element, ElementRef(EdgeId(2)));
+  ASSERT_TRUE(first.exercise_input.mesh);
+  EXPECT_TRUE(first.exercise_input.mesh->same_as(build_halfedge_mesh(make_grid(1, 1))));
+  EXPECT_EQ(first.exercise_input.describe(first.exercise), first.input);
+  // The same check on that input says what the lesson said first.
+  auto mine = load_student_file(file);
+  const ExerciseReport report = check_exercise(*mine, first.exercise, first.exercise_input);
+  EXPECT_FALSE(report.equal);
+  ASSERT_FALSE(report.differences.empty());
+  EXPECT_EQ(wait.feedback.substr(0, report.differences[0].size()), report.differences[0]);
 
   runner.update(0.25);  // the file did not change: nothing runs
   runner.update(0.25);
@@ -77,6 +93,8 @@ TEST(LessonYourTurn, AWrongFlipWaitsWithTheDiagnosisAndASaveRunsItAgain) {
   ASSERT_EQ(runner.your_turns().size(), 2u);
   EXPECT_TRUE(runner.your_turns()[1].right);
   EXPECT_EQ(runner.your_turns()[1].feedback, "");
+  // Both runs of one your_turn share its one copy of the input.
+  EXPECT_EQ(runner.your_turns()[1].exercise_input.mesh, runner.your_turns()[0].exercise_input.mesh);
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
   ASSERT_EQ(runner.answered().size(), 1u);
   EXPECT_EQ(runner.answered()[0].given, "your flip_edge");

@@ -1,0 +1,86 @@
+// EditorApp and the lesson's your_turn (script/lesson_your_turn.h): the lesson panel's "Show mine vs reference" (and
+// the scripted action lesson-show-mine) shows the run the lesson judged wrong where the window compares runs.
+//   - flip, split, normals, upsample: the your_turn's input mesh goes into the document as a lesson's show() puts it
+//     there (show_lesson_mesh: the view kept, fitted only when it was not the mesh view), its element is selected, the
+//     Exercises tab takes the your_turn's exercise and runs mine on it (ExerciseSession::run_mine: the changed pointers
+//     mine vs reference, the validation, the write-by-write replay), and the tab comes to the front of the right
+//     column, scrolled so the changed-pointers table is in sight.
+//   - curve, patch: the input goes into the curve view (its points, its t, every level shown) or the patch view (the
+//     patch, the probe at its (u, v)) with the view's "mine" switch on (ui/bezier_mine.h).
+//
+// Invariants:
+// - The file run is the lesson's: the Exercises tab's folder is the lesson's student folder (update_lesson keeps them
+//   the same), and the curve and patch views' "mine" is given that folder here. The run is on the input the lesson's
+//   runs worked on (YourTurnVerdict::exercise_input), so the Exercises tab's report says what the lesson said.
+// - Never throws: what stops it (memory running out) is an Error in the status line and the Check it returns. The input
+//   is shown whole or not at all (show_lesson_mesh, show_curve, show_patches) before anything else changes; the run
+//   then reports as the Exercises tab's Run mine does (a file that no longer loads is its file:line in the tab and
+//   the status line).
+#include <algorithm>
+#include <exception>
+#include <new>
+
+#include "app/editor_app.h"
+#include "ui/exception_report.h"
+
+namespace meshedit {
+
+void EditorApp::bring_exercises_tab_forward() {
+  exercise_panel_.open = true;
+  select_tab_ = RightTab::Exercises;
+  settings_.layout.right_open = true;
+}
+
+Check EditorApp::show_your_turn_mine() {
+  const YourTurnVerdict* found = your_turn_to_show(*lesson_);
+  if (!found) {
+    const Check no = Check::no("no your_turn waits on a wrong answer: nothing to show beside the reference");
+    set_message_noexcept(doc_, Severity::Warning, [&] { return no.reason; });
+    return no;
+  }
+  try {
+    const YourTurnVerdict verdict = *found;  // the runner's list may grow while the window changes
+    const ExerciseInput& input = verdict.exercise_input;
+    switch (verdict.exercise) {
+      case Exercise::CurveStep: {
+        BezierCurve curve;
+        for (const glm::dvec3& p : input.points) curve.control_points.emplace_back(p.x, p.y);
+        show_curve(curve);
+        set_t(curve_, input.t);
+        curve_.levels_shown = std::max(0, int(curve_.curve.control_points.size()) - 1);
+        bezier_mine_.set_folder(lesson_->student_folder());
+        bezier_mine_.set_curve_on(true);
+        set_message(doc_, Severity::Info, "mine: your " + verdict.function + " on " + verdict.input + ", every level");
+        return Check::yes();
+      }
+      case Exercise::PatchEvaluate: {
+        show_patches({input.patch});
+        set_probe(patches_, input.u, input.v);
+        bezier_mine_.set_folder(lesson_->student_folder());
+        bezier_mine_.set_patch_on(true);
+        set_message(doc_, Severity::Info, "mine: your " + verdict.function + " at " + verdict.input);
+        return Check::yes();
+      }
+      case Exercise::VertexNormal:
+      case Exercise::FlipEdge:
+      case Exercise::SplitEdge:
+      case Exercise::Upsample: break;
+    }
+    if (!input.mesh) return Check::no("the your_turn kept no mesh");  // every mesh your_turn keeps one
+    exercises_.finish_replay(doc_);
+    show_lesson_mesh(*input.mesh, false);
+    selection_.selected = input.element;  // none for upsample: the whole mesh
+    exercises_.set_exercise(verdict.exercise);
+    bring_exercises_tab_forward();
+    exercise_panel_.bring_table_into_view = true;
+    return exercises_.run_mine(doc_, selection_);
+  } catch (const std::bad_alloc& e) {
+    report_exception(doc_, e);
+    return Check::no(kMemoryRanOut);  // fits std::string's inline buffer: no allocation
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);
+    return Check::no(e.what());
+  }
+}
+
+}  // namespace meshedit

@@ -1,0 +1,163 @@
+// The lesson panel's "Show mine vs reference" in the window (EditorApp on a surfaceless EGL context, its frames run
+// through a headless ImGui, the button clicked where the panel drew it): lesson 4's last step runs a buggy flip.lua
+// (tests/grading/students/flip_forgets_faces.lua) and waits; the button puts the your_turn's diamond in the document
+// with the student's flip applied (f0.halfedge left on h2, now in f1), selects e, and the Exercises tab, brought to the
+// front, holds mine on e with the lesson's first difference. A curve your_turn turns the curve view's "mine" on for its
+// points and t. With no wrong your_turn waiting, the app refuses and changes nothing. Skipped where no EGL context can
+// be made.
+#include <gtest/gtest.h>
+
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <string>
+
+#include "app/editor_app.h"
+#include "render/gl_test_support.h"
+#include "script/exercises.h"
+#include "support/imgui_harness.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+constexpr int kWidth = 1280, kHeight = 800;
+
+class EditorYourTurn : public testing::GlTest {
+ protected:
+  void SetUp() override {
+    GlTest::SetUp();
+    if (IsSkipped()) return;
+    app_ = std::make_unique<EditorApp>();
+    student_ = testing::scratch_dir() / "student";
+    fs::create_directories(student_);
+    app_->exercises().set_folder(student_);  // the lesson's student folder follows the Exercises tab's
+  }
+  void TearDown() override { app_.reset(); }  // its GL objects go while the context is current
+
+  void student_file(const std::string& fixture, const std::string& as) {
+    fs::copy_file(testing::source_dir() / "tests" / "grading" / "students" / (fixture + ".lua"), student_ / as,
+                  fs::copy_options::overwrite_existing);
+  }
+  void draw() { app_->frame(kWidth, kHeight, 16.0f); }
+  void frames(int count) {
+    for (int i = 0; i < count; ++i) harness_.frame([&] { draw(); });
+  }
+  // Clicks the your_turn's button where the lesson panel drew it in the last frame.
+  void click_show_mine() {
+    const UiProbe::Item* button = app_->probe().find("lesson-show-mine");
+    ASSERT_NE(button, nullptr) << "the lesson panel drew no \"" << kShowMineButton << "\" button";
+    harness_.click(button->center(), [&] { draw(); });
+  }
+  // The first line of a your_turn's diagnosis: the first difference it names.
+  static std::string first_line(const std::string& text) { return text.substr(0, text.find('\n')); }
+
+  ui_testing::ImGuiHarness harness_{ImVec2(kWidth, kHeight)};
+  std::unique_ptr<EditorApp> app_;
+  fs::path student_;
+};
+
+TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercisesTab) {
+  student_file("flip_forgets_faces", "flip.lua");
+  ASSERT_TRUE(app_->open(testing::source_dir() / "lessons" / "4_edge_flip.lua")) << app_->lesson().error();
+  frames(2);
+  LessonRunner& lesson = app_->lesson();
+  lesson.go_to(5);  // "Before and after, pointer by pointer": a question, then the your_turn
+  ASSERT_TRUE(lesson.deliver(LessonEvent::value("4"))) << lesson.error();
+  frames(3);
+  ASSERT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurn) << lesson.error();
+  ASSERT_EQ(lesson.your_turns().size(), 1u);
+  const YourTurnVerdict verdict = lesson.your_turns().back();
+  ASSERT_FALSE(verdict.right);
+  ASSERT_EQ(verdict.exercise, Exercise::FlipEdge);
+  ASSERT_TRUE(verdict.exercise_input.mesh);
+  EXPECT_EQ(app_->probe().find("exercises-tab"), nullptr);  // the Exercises tab is not open yet
+
+  // The diamond as the lesson rigged it, by the diagram's names: h0 = e.halfedge, f0.halfedge = h2.
+  const HalfedgeMesh& input = *verdict.exercise_input.mesh;
+  const EdgeId e(verdict.exercise_input.element.index);
+  const HalfedgeId h0 = input.halfedge(e), h1 = input.twin(h0), h2 = input.next(h0);
+  const FaceId f0 = input.face(h0), f1 = input.face(h1);
+  ASSERT_EQ(input.halfedge(f0), h2);
+
+  click_show_mine();
+  frames(2);
+
+  // The document: the your_turn's diamond with the student's flip applied, as the student's file gives it.
+  const HalfedgeMesh& shown = app_->document().mesh;
+  ASSERT_EQ(shown.num_vertices(), input.num_vertices());
+  for (VertexId v : input.vertices()) EXPECT_EQ(shown.position(v), input.position(v)) << format_id(v);
+  auto code = load_student_file(student_ / "flip.lua");
+  const ExerciseReport expected = check_exercise(*code, verdict.exercise, verdict.exercise_input);
+  ASSERT_TRUE(expected.mine.mesh);
+  EXPECT_TRUE(shown.same_as(*expected.mine.mesh));
+  EXPECT_EQ(shown.halfedge(f0), h2);  // the bug: f0 keeps h2, which the flip moved into f1
+  EXPECT_EQ(shown.face(h2), f1);
+  EXPECT_EQ(shown.next(h0), input.next(input.next(h0)));  // h0.next = h3: the flip itself happened
+  EXPECT_EQ(app_->selection().selected, ElementRef(e));
+
+  // The Exercises tab: in front, its last run mine on e, wrong, with the lesson's first difference.
+  EXPECT_NE(app_->probe().find("exercises-tab"), nullptr);
+  const std::optional<ExerciseRun>& run = app_->exercises().last_run();
+  ASSERT_TRUE(run.has_value());
+  EXPECT_TRUE(run->mine);
+  EXPECT_EQ(run->exercise, Exercise::FlipEdge);
+  EXPECT_EQ(run->input.element, ElementRef(e));
+  EXPECT_TRUE(run->applied);
+  EXPECT_FALSE(run->report.equal);
+  ASSERT_FALSE(run->report.differences.empty());
+  EXPECT_EQ(run->report.differences[0], first_line(verdict.feedback));
+  EXPECT_EQ(run->report.differences[0], expected.differences[0]);
+  EXPECT_FALSE(run->report.mine.edits.empty());  // the replay has the student's writes
+  EXPECT_TRUE(app_->exercises().can_replay(app_->document()));
+  // The lesson waits on as it did: the button changes nothing of the step.
+  EXPECT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurn);
+  EXPECT_EQ(lesson.your_turns().size(), 1u);
+}
+
+TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
+  student_file("curve_drops_last", "curve.lua");
+  const fs::path file = testing::scratch_dir() / "curve_turn.lua";
+  std::ofstream(file) << "lesson { title = \"Curve turn\" }\n"
+                         "step(\"Yours\", function()\n"
+                         "  your_turn { exercise = \"curve\", points = {{0, 0}, {1, 2}, {3, 2}, {4, 0}}, t = 0.3 }\n"
+                         "end)\n";
+  ASSERT_TRUE(app_->open(file)) << app_->lesson().error();
+  frames(3);
+  ASSERT_NE(your_turn_to_show(app_->lesson()), nullptr) << app_->lesson().error();
+  EXPECT_FALSE(app_->bezier_mine().curve_on());
+
+  click_show_mine();
+  frames(2);
+
+  EXPECT_EQ(app_->mode(), ViewMode::Curve);
+  const CurveEditorState& curve = app_->curve_editor();
+  const std::vector<glm::dvec2> points = {{0, 0}, {1, 2}, {3, 2}, {4, 0}};
+  EXPECT_EQ(curve.curve.control_points, points);
+  EXPECT_DOUBLE_EQ(curve.t, 0.3);
+  EXPECT_EQ(curve.levels_shown, 3);
+  ASSERT_TRUE(app_->bezier_mine().curve_on());
+  // The view's mine ran the student's evaluate_step on the your_turn's input and stopped at its wrong level.
+  const CurveMineLevels& mine = app_->bezier_mine().curve();
+  EXPECT_TRUE(mine.failed()) << mine.message;
+  EXPECT_EQ(mine.failed_level, 1) << mine.message;
+  EXPECT_FALSE(mine.message.empty());
+}
+
+TEST_F(EditorYourTurn, WithNoWrongYourTurnWaitingItRefusesAndChangesNothing) {
+  ASSERT_TRUE(app_->open(testing::source_dir() / "lessons" / "4_edge_flip.lua")) << app_->lesson().error();
+  frames(2);
+  const HalfedgeMesh before = app_->document().mesh;
+  const Check check = app_->show_your_turn_mine();
+  EXPECT_FALSE(check.ok);
+  EXPECT_NE(check.reason.find("no your_turn waits on a wrong answer"), std::string::npos) << check.reason;
+  EXPECT_EQ(app_->document().message.severity, Severity::Warning);
+  EXPECT_TRUE(app_->document().mesh.same_as(before));
+  EXPECT_FALSE(app_->exercises().last_run().has_value());
+  frames(1);
+  EXPECT_EQ(app_->probe().find("lesson-show-mine"), nullptr);  // and the panel offers no button
+}
+
+}  // namespace
+}  // namespace meshedit
