@@ -2,8 +2,10 @@
 -- level k comes after k steps), the curve traced as t moves, splitting a curve in two, the Bernstein weights and the
 -- derivative. Each step asks the student to predict or to act before it shows; every number the lesson prints is
 -- computed by the project's own Bézier code (meshedit.curve), so the text never drifts from what the curve view draws.
+-- The last step runs the student's own evaluate_step (your_turn) at t = 0.25, where swapped weights show.
 -- CI runs it headless:
---   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/script/lessons/1_de_casteljau_answers.lua
+--   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/script/lessons/1_de_casteljau_answers.lua \
+--     --student tests/script/solutions
 
 lesson {
   title = "de Casteljau's algorithm",

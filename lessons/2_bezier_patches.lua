@@ -2,8 +2,10 @@
 -- one curve in v (the column through the row points); then the Utah teapot, 32 such patches. Each step asks the
 -- student to predict before it shows, and names the likely mistakes (u and v swapped, rows and columns swapped). Numbers come
 -- from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from assets/teapot.bez,
--- found next to this file with lesson_file(). CI runs it headless:
---   meshedit lesson lessons/2_bezier_patches.lua --headless --answers tests/script/lessons/2_bezier_patches_answers.lua
+-- found next to this file with lesson_file(). The last step runs the student's own evaluate (your_turn) at the
+-- (u, v) of the hand computation. CI runs it headless:
+--   meshedit lesson lessons/2_bezier_patches.lua --headless --answers tests/script/lessons/2_bezier_patches_answers.lua \
+--     --student tests/script/solutions
 
 lesson {
   title = "Bézier patches and the teapot",

@@ -2,9 +2,11 @@
 -- on the boundary of a grid. Each step asks the student to predict before it shows: how many edges a split makes,
 -- which halfedge runs m to b afterwards, m's halfedge, which of h0's fields change, the boundary split's faces and
 -- what a split does to V - E + F. After each split the lesson names the new elements, as engine/core/mesh_ops.h
--- documents them, lists every pointer the split wrote, and checks the mesh on screen.
+-- documents them, lists every pointer the split wrote, and checks the mesh on screen. The last step runs the
+-- student's own split_edge (your_turn) on a lopsided diamond, where the corners' average is not the midpoint.
 -- CI runs it headless:
---   meshedit lesson lessons/5_edge_split.lua --headless --answers tests/script/lessons/5_edge_split_answers.lua
+--   meshedit lesson lessons/5_edge_split.lua --headless --answers tests/script/lessons/5_edge_split_answers.lua \
+--     --student tests/script/solutions
 -- Invariants: the checks read the student's mesh through current_mesh() only; the new vertex is found as the
 -- one vertex id the mesh did not have before (ids are appended, never reused), and the new edges, faces and
 -- halfedges by split's documented order of new ids; the diagram's names are found by walking from h0, as in part 4.

@@ -4,10 +4,11 @@
 -- to split, which edge to flip (a pick on the split cube: the halves of a split edge are the trap), why the
 -- positions come first. Then the student runs the app's phases with Shift+L, each checked against the Lua ones,
 -- explains the cube's lopsided result before pre-splitting fixes it, predicts which corner stays sharper and
--- where a boundary corner goes, and ends at their own upsample.lua.
+-- where a boundary corner goes, and ends with their own upsample.lua run by your_turn on a cube and a tetrahedron
+-- (every vertex of degree 3).
 -- CI runs it headless:
 --   meshedit lesson lessons/6_loop_subdivision.lua --headless \
---     --answers tests/script/lessons/6_loop_subdivision_answers.lua
+--     --answers tests/script/lessons/6_loop_subdivision_answers.lua --student tests/script/solutions
 -- Invariants: every step rebuilds its meshes from scratch (Back runs a step again, and must not subdivide
 -- twice); the Lua phases use the course weights and split edges in id order, so their ids match the core's.
 

@@ -24,7 +24,7 @@ void draw_choices(LessonRunner& runner, const LessonWait& wait, UiProbe* probe) 
   for (size_t i = 0; i < options.size(); ++i) {
     if (i > 0) same_line_if_room(options[i].c_str());
     ImGui::PushID(int(i));
-    const bool pressed = ImGui::Button(options[i].c_str());
+    const bool pressed = wrapping_button(options[i].c_str());
     ImGui::PopID();
     if (probe) probe->record_last_item("lesson-choice");
     if (pressed) runner.deliver(LessonEvent::choice(options[i]));
