@@ -29,12 +29,14 @@ void jump(ExerciseSession& session, MeshDocument& doc, size_t k) {
   session.replay_step(doc, k);
 }
 
+// "19..30", or "2..40 (12 of them)" when other phases' writes come between.
 std::string writes_text(const UpsamplePhases& phases, int p) {
-  if (p == 1) return "none: your Lua tables";
+  if (p == 1) return "none (your Lua tables)";
   const UpsamplePhaseSpan& span = phases.span[size_t(p)];
   if (!span.started) return "never started";
-  return "from write " + std::to_string(span.first + 1) + ", " + std::to_string(span.writes) +
-         (span.writes == 1 ? " write" : " writes");
+  std::string out = std::to_string(span.first + 1) + ".." + std::to_string(span.last + 1);
+  if (span.last - span.first + 1 != span.writes) out += " (" + std::to_string(span.writes) + " of them)";
+  return out;
 }
 
 // "identical", "same shape, other ids", "12 positions, 30 halfedges differ".
@@ -52,25 +54,28 @@ std::string verdict_text(const UpsamplePhaseState& s, bool& good) {
 void draw_table(ExerciseSession& session, const ExercisePanelState& state, MeshDocument& doc, UpsamplePhase current) {
   const UpsamplePhases& phases = *state.phases;
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
-  if (!ImGui::BeginTable("phases", 5, flags)) return;
-  ImGui::TableSetupColumn("phase", ImGuiTableColumnFlags_WidthStretch, 2.2f);
-  ImGui::TableSetupColumn("your writes", ImGuiTableColumnFlags_WidthStretch, 1.8f);
-  ImGui::TableSetupColumn("yours V/E/F", ImGuiTableColumnFlags_WidthStretch, 1.3f);
-  ImGui::TableSetupColumn("reference V/E/F", ImGuiTableColumnFlags_WidthStretch, 1.3f);
-  ImGui::TableSetupColumn("yours vs the reference", ImGuiTableColumnFlags_WidthStretch, 2.2f);
+  if (!ImGui::BeginTable("phases", 4, flags)) return;
+  ImGui::TableSetupColumn("phase", ImGuiTableColumnFlags_WidthStretch, 2.0f);
+  ImGui::TableSetupColumn("yours", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn("vs reference", ImGuiTableColumnFlags_WidthStretch, 1.4f);
   ImGui::TableHeadersRow();
   for (int p = 1; p <= kUpsamplePhaseCount; ++p) {
     const UpsamplePhase phase = UpsamplePhase(p);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
-    const std::string label = std::to_string(p) + ". " + upsample_phase_name(phase) + "##phase" + std::to_string(p);
     const std::optional<size_t> start = phases.start_position(phase);
-    const bool is_current = session.replaying() && phase == current;
-    if (ImGui::Selectable(label.c_str(), is_current, ImGuiSelectableFlags_SpanAllColumns) && start) {
+    // The row of the write shown is lit whole, however many lines its cells wrap to; a click on it jumps there.
+    if (session.replaying() && phase == current) {
+      ImGui::TableSetBgColor(ImGuiTableBgTarget_RowBg0, ImGui::GetColorU32(ImGuiCol_Header));
+    }
+    const std::string number = std::to_string(p) + "##phase" + std::to_string(p);
+    if (ImGui::Selectable(number.c_str(), false, ImGuiSelectableFlags_SpanAllColumns) && start) {
       jump(session, doc, *start);
     }
-    ImGui::TableNextColumn();
-    text(writes_text(phases, p));
+    ImGui::SameLine();
+    text(upsample_phase_name(phase));
+    ImGui::TextDisabled("%s", ("writes " + writes_text(phases, p)).c_str());
     if (!state.phase_states) continue;
     const UpsamplePhaseState& s = state.phase_states->at[size_t(p)];
     ImGui::TableNextColumn();
@@ -130,7 +135,6 @@ void draw_upsample_phases(ExerciseSession& session, ExercisePanelState& state, M
   state.next_phase_y = 0.5f * (low.y + high.y);
   if (pressed && next) jump(session, doc, *next);
   ImGui::EndDisabled();
-  ImGui::SameLine();
   const UpsamplePhase current = phases.phase_at(k);
   if (!replaying) {
     text("yours after all " + std::to_string(n) + " writes");
