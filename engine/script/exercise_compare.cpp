@@ -24,6 +24,7 @@
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
+#include "script/upsample_runaway.h"
 
 namespace meshedit {
 namespace {
@@ -548,15 +549,20 @@ void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messag
   if (report.equal) note_pointer_differences(report, "a correct subdivision");
 }
 
-// A Lua error or a limit, with a hint for the usual reasons.
-void add_run_failure(Exercise exercise, const ExerciseReport& report, Messages& out) {
+// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish is explained from where
+// it was stopped and what it had done (upsample_runaway.h), its line first.
+void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
   const std::string& error = report.mine.error;
-  out.add(error);
   const bool unfinished = error.find("instruction budget exceeded") != std::string::npos ||
                           error.find("time limit exceeded") != std::string::npos ||
                           error.find("memory limit exceeded") != std::string::npos ||
                           error.find("scripts may make at most") != std::string::npos ||
                           error.find("changes recorded") != std::string::npos;
+  if (unfinished && exercise == Exercise::Upsample && input.mesh) {
+    out.add(explain_unfinished_upsample(error, *input.mesh, report.mine.mesh.get(), report.mine.edits));
+  } else {
+    out.add(error);
+  }
   if (!unfinished) return;
   if (std::string hint = unfinished_run_hint(exercise); !hint.empty()) out.add(std::move(hint));
 }
@@ -567,7 +573,8 @@ std::string unfinished_run_hint(Exercise exercise) {
   switch (exercise) {
     case Exercise::Upsample:
       return "upsample did not finish: split only the edges of the original mesh (list them before the first "
-             "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create";
+             "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create. A "
+             "loop that splits nothing never ends when what its condition waits for never changes";
     case Exercise::FlipEdge:
     case Exercise::SplitEdge:
     case Exercise::VertexNormal:
@@ -599,7 +606,7 @@ ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOu
   }
   if (on_mesh && report.mine.mesh && !report.mine.validation) report.mine.validation = validate(*report.mine.mesh);
   if (!report.mine.ran) {
-    add_run_failure(exercise, report, out);
+    add_run_failure(exercise, input, report, out);
     report.equal = false;
     return report;
   }

@@ -29,6 +29,7 @@
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
 #include "script/student_api.h"
+#include "script/upsample_runaway.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -486,6 +487,8 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   if (options.record_edits && out.mesh) {
     EditRecorder::Options recording;
     recording.keep_before = false;
+    if (options.max_edits > 0) recording.max_edits = options.max_edits;
+    else if (exercise == Exercise::Upsample) recording.max_edits = upsample_edit_budget(*input.mesh);
     recorder.emplace(L, out.mesh, recording);
   }
   output_ = &out.output;

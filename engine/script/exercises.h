@@ -99,6 +99,9 @@ struct ExerciseOutcome {
 
 struct RunOptions {
   bool record_edits = false;  // fill ExerciseOutcome::edits (for the app's write-by-write replay)
+  // The most changes recorded before the run is stopped (a Lua error at the line making the next one); 0: the
+  // exercise's own bound (upsample: upsample_edit_budget of the input, upsample_runaway.h; others EditRecorder's).
+  size_t max_edits = 0;
 };
 
 // One or more student files loaded into one fresh LuaRuntime (so upsample.lua may call a flip_edge defined

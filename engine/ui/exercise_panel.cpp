@@ -9,6 +9,7 @@
 
 #include "core/history.h"
 #include "ui/theme.h"
+#include "ui/upsample_phase_view.h"
 
 namespace meshedit {
 namespace {
@@ -143,6 +144,7 @@ void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocume
       session.replay_step(doc, size_t(std::max(slider, 0)));
     }
   }
+  draw_upsample_phases(session, state, doc);
   const std::vector<RecordedEdit>& edits = session.edits();
   const size_t current = session.replaying() ? session.replay_position() : 0;
   state.writes_drawn = 0;
@@ -152,7 +154,11 @@ void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocume
   while (clipper.Step()) {
     for (int i = clipper.DisplayStart; i < clipper.DisplayEnd; ++i) {
       const RecordedEdit& edit = edits[size_t(i)];
-      const std::string line = std::to_string(i + 1) + ". " + describe(edit) + (edit.where.empty() ? "" : "   " + edit.where);
+      // An upsample's writes say their phase: "[2] 5. split e4 -> v12".
+      const std::string phase =
+          state.phases ? "[" + std::to_string(int(state.phases->phase_at(size_t(i) + 1))) + "] " : std::string();
+      const std::string line =
+          phase + std::to_string(i + 1) + ". " + describe(edit) + (edit.where.empty() ? "" : "   " + edit.where);
       const bool is_current = session.replaying() && size_t(i) + 1 == current;
       const bool done = session.replaying() && size_t(i) + 1 < current;
       const ImVec4 colour = is_current ? im_colour(ui_palette().emphasis)
@@ -253,6 +259,7 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
                        : std::vector<PointerRow>{};
       state.rows_serial = run->serial;
     }
+    update_upsample_phases(*run, state);
     draw_pointer_table(state.rows);
     if (std::exchange(state.bring_table_into_view, false) &&
         ImGui::GetCursorScreenPos().y > ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) {

@@ -1,20 +1,24 @@
 // The "Exercises" panel: choose a mesh exercise, run the student's function ("mine") or the reference on the
 // selection, read the report (verdict, differences, notes, validation of mine, print output, errors with
-// file:line), compare the changed pointers side by side, and replay the student's writes one by one.
+// file:line), compare the changed pointers side by side, and replay the student's writes one by one; for upsample,
+// phase by phase (upsample_phases.h), beside the reference's mesh at each phase boundary (upsample_phase_states.h).
 //
 // Invariants:
 // - The panel draws and forwards clicks; every change to the document goes through ExerciseSession.
-// - The side-by-side rows are computed once per run (ExerciseRun::serial), not per frame, and at most
-//   kMaxPointerRows are kept; the write list is clipped (ImGuiListClipper), so a long recording costs O(rows
-//   on screen) per frame.
+// - The side-by-side rows and an upsample's phases are computed once per run (ExerciseRun::serial), not per frame;
+//   at most kMaxPointerRows are kept; the write list is clipped (ImGuiListClipper), so a long recording costs
+//   O(rows on screen) per frame.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "script/upsample_phase_states.h"
+#include "script/upsample_phases.h"
 #include "ui/exercise_session.h"
 #include "ui/mesh_document.h"
 #include "ui/selection.h"
@@ -41,9 +45,15 @@ struct ExercisePanelState {
   bool follow_replay = true;      // scroll the write list to the current write
   uint64_t rows_serial = 0;       // the run the cached rows belong to
   std::vector<PointerRow> rows;
+  uint64_t phases_serial = 0;     // the run the phases belong to
+  std::optional<UpsamplePhases> phases;            // a mine upsample run with recorded writes
+  std::optional<UpsamplePhaseStates> phase_states;
+  std::string phases_error;       // why the phase states could not be made
   size_t writes_drawn = 0;        // rows of the write list drawn in the last frame (tests)
   float run_mine_x = -1.0f;       // where "Run mine" was drawn in the last frame, its centre (tests click it)
   float run_mine_y = -1.0f;
+  float next_phase_x = -1.0f;     // where "next phase" was drawn in the last frame, its centre (tests click it)
+  float next_phase_y = -1.0f;
   // Scroll the panel, once, so the next run's changed-pointers table ends in sight (the lesson's your_turn sets it).
   bool bring_table_into_view = false;
 };

@@ -390,5 +390,48 @@ TEST(ExercisePanel, DrawsAReportAndAReplayInProgress) {
   imgui.frame(draw);
 }
 
+// An upsample's replay goes phase by phase: "replay by phase" starts at phase 1 (nothing written), "next phase" jumps
+// to the first split, then to the first flip; the table holds yours beside the reference at each boundary.
+TEST(ExercisePanel, NextPhaseJumpsTheUpsampleReplayToEachPhasesFirstWrite) {
+  ui_testing::ImGuiHarness imgui;
+  MeshDocument doc = cube_document();
+  const HalfedgeMesh before = doc.mesh;
+  ExerciseSession session(solutions());
+  ASSERT_TRUE(session.set_exercise(Exercise::Upsample));
+  ExercisePanelState state;
+  state.open = true;
+  Selection none;
+  auto draw = [&] { draw_exercise_panel(session, state, doc, none); };
+  ASSERT_TRUE(session.run_mine(doc, none).ok) << doc.message.text;
+  EXPECT_GT(imgui.frame(draw), 0);
+  ASSERT_TRUE(state.phases.has_value());
+  ASSERT_TRUE(state.phase_states.has_value());
+  EXPECT_EQ(state.phases_serial, session.last_run()->serial);
+  for (int p = 1; p <= 4; ++p) EXPECT_TRUE(state.phase_states->at[size_t(p)].identical()) << p;
+  EXPECT_FALSE(session.replaying());
+
+  const size_t E = 18;
+  const size_t expected[] = {0, 1, E + 1, state.phases->span[4].first + 1};
+  for (const size_t k : expected) {
+    imgui.click(ImVec2(state.next_phase_x, state.next_phase_y), draw);
+    ASSERT_TRUE(session.replaying()) << doc.message.text;
+    EXPECT_EQ(session.replay_position(), k);
+    EXPECT_TRUE(doc.mesh.same_as(replay(before, session.edits(), k)));
+  }
+  EXPECT_EQ(state.phases->phase_at(session.replay_position()), UpsamplePhase::Commit);
+  // Past the last phase the button does nothing.
+  imgui.click(ImVec2(state.next_phase_x, state.next_phase_y), draw);
+  EXPECT_EQ(session.replay_position(), expected[3]);
+  session.finish_replay(doc);
+  EXPECT_EQ(doc.history.undo_depth(), 1u);
+
+  // A flip run has no phases.
+  ASSERT_TRUE(session.set_exercise(Exercise::FlipEdge));
+  Selection edge = select(EdgeId(7));
+  ASSERT_TRUE(session.run_mine(doc, edge).ok);
+  imgui.frame(draw);
+  EXPECT_FALSE(state.phases.has_value());
+}
+
 }  // namespace
 }  // namespace meshedit
