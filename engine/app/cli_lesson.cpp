@@ -4,6 +4,7 @@
 // failing step's file:line on stderr otherwise. The window mode of a lesson is opened with
 // `meshedit FILE.lua`; without --headless this command says so (usage error, exit 2).
 #include <filesystem>
+#include <iostream>
 #include <optional>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include "app/cli_commands.h"
 #include "app/cli_lesson.h"
 #include "script/lesson_headless.h"
+#include "script/scripted_exercise.h"
 #include "script/lua_runtime.h"
 #include "ui/student_file.h"
 
@@ -34,6 +36,10 @@ int run_lesson(const std::vector<std::string>& arguments, std::ostream& out) {
   const std::filesystem::path student_folder = student ? std::filesystem::path(*student) : default_student_folder();
   if (!std::filesystem::is_directory(student_folder)) {
     throw UsageError("--student " + student_folder.string() + ": no such folder");
+  }
+  // your_turn may ask for an exercise defined in Lua: each one that does not load is named, and left out.
+  for (const std::string& error : load_exercise_folder(default_exercise_folder())) {
+    std::cerr << "meshedit: exercise: " << error << '\n';
   }
   const HeadlessOutcome outcome = run_lesson_headless(args.front(), answers_path, out,
                                                       LessonRunner::default_limits(), student_folder);

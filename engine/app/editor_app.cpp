@@ -3,6 +3,8 @@
 // files in editor_files.cpp.
 #include "app/editor_app.h"
 
+#include <cstdio>
+
 #include <epoxy/gl.h>
 #include <imgui.h>
 
@@ -15,6 +17,7 @@
 #include "render/mesh_geometry.h"
 #include "render/render_error.h"
 #include "render/render_target.h"
+#include "script/scripted_exercise.h"
 #include "ui/exception_report.h"
 #include "ui/frame_guard.h"
 #include "ui/theme.h"
@@ -32,6 +35,10 @@ EditorApp::EditorApp()
   refresh_lessons(lesson_panel_);
   lesson_panel_.reload = [this](LessonRunner&) { return reload_lesson(); };
   lesson_panel_.show_your_turn = [this] { show_your_turn_mine(); };
+  // The exercises defined in Lua: a definition that does not load is named (file:line) and left out.
+  const std::vector<std::string> errors = load_exercise_folder(default_exercise_folder());
+  for (const std::string& error : errors) std::fprintf(stderr, "meshedit: exercise: %s\n", error.c_str());
+  if (!errors.empty()) message(Severity::Warning, "an exercise in scripts/exercises did not load: " + errors.front());
 }
 
 EditorApp::~EditorApp() = default;

@@ -12,17 +12,13 @@
 #include "script/binding_support.h"
 #include "script/exercises.h"
 #include "script/mesh_bindings.h"
+#include "script/scripted_exercise.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
 namespace {
 
 constexpr int kInput = 2, kReturned = 3, kYours = 4, kMessage = 5;
-
-bool is_mesh_exercise(Exercise e) {
-  return e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge ||
-         e == Exercise::Upsample;
-}
 
 double number_field(lua_State* L, const char* field) {
   lua_getfield(L, kInput, field);
@@ -101,6 +97,10 @@ ExerciseInput read_input(lua_State* L, Exercise exercise) {
   const std::shared_ptr<HalfedgeMesh> mesh = to_mesh(L, -1);
   lua_pop(L, 1);
   if (!mesh) luaL_error(L, "expect.exercise: input.mesh must be the mesh before the call");
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    if (!scripted->takes()) return ExerciseInput::whole_mesh(mesh);
+    return ExerciseInput::element_of(mesh, element_field(L, "element", *scripted->takes(), mesh));
+  }
   switch (exercise) {
     case Exercise::VertexNormal:
       return ExerciseInput::vertex(mesh, VertexId(element_field(L, "vertex", ElementKind::Vertex, mesh).index));

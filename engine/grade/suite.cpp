@@ -15,8 +15,11 @@
 #include "grade/expectations.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
+#include "script/binding_support.h"
 #include "script/exception_text.h"
+#include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
+#include "script/scripted_exercise.h"
 #include "script/student_api.h"
 
 namespace meshedit {
@@ -64,6 +67,24 @@ struct Suite::Context {
   std::string student_error;
   ScriptError::Limit student_limit = ScriptError::Limit::None;
 };
+
+// A scripted exercise's fixture as a test's run function: the student's function on a copy of the fixture's mesh,
+// checked by expect.exercise against the mesh before the call.
+constexpr const char* kFixtureTest = R"lua(local fixture = ...
+return function(name, call, index, what)
+  return function(student, expect)
+    local before, kind, id = fixture(name, index)
+    local mine = before:copy()
+    local result
+    if kind then
+      result = student[call](mine, mine[kind](mine, id))
+    else
+      result = student[call](mine)
+    end
+    return expect.exercise(name, { mesh = before, element = id }, result, mine, what)
+  end
+end
+)lua";
 
 // The C functions of the suite's Lua API (friends of Suite).
 struct SuiteApi {
@@ -223,6 +244,88 @@ struct SuiteApi {
     return 0;
   }
 
+  // exercise{...}: a file of scripts/exercises (scripted_exercise.h) used as a suite. The definition is loaded from
+  // the calling file into a state of its own and registered (expect.exercise finds it by name); the suite's defaults
+  // become its student file and allowed API, and each fixture a test that runs the student's function on a copy of
+  // the fixture's mesh and checks it with expect.exercise, as the window checks it.
+  static int declare_exercise(lua_State* L) {
+    Suite& s = suite_of(L);
+    if (!s.declarations_) return luaL_error(L, "exercise{} can only be called while the suite file loads");
+    lua_Debug caller;
+    if (!lua_getstack(L, 1, &caller) || !lua_getinfo(L, "S", &caller)) return luaL_error(L, "exercise: no caller");
+    std::string source = caller.source;
+    if (!source.empty() && (source[0] == '@' || source[0] == '=')) source.erase(0, 1);
+    const std::filesystem::path file = s.folder_ / std::filesystem::path(source).filename();
+    std::shared_ptr<const ScriptedExercise> definition;
+    try {
+      std::shared_ptr<ScriptedExercise> loaded = ScriptedExercise::load(file);
+      register_scripted_exercise(loaded);
+      definition = std::move(loaded);
+    } catch (const ScriptError& e) {
+      return luaL_error(L, "%s", e.what());
+    }
+    const ExerciseInfo& info = definition->info();
+    lua_getglobal(L, "suite");
+    lua_createtable(L, 0, 3);
+    lua_pushstring(L, info.name);
+    lua_setfield(L, -2, "name");
+    lua_createtable(L, 1, 0);
+    lua_pushstring(L, info.file);
+    lua_rawseti(L, -2, 1);
+    lua_setfield(L, -2, "files");
+    lua_createtable(L, static_cast<int>(definition->api().allow_api.size()), 0);
+    for (size_t i = 0; i < definition->api().allow_api.size(); ++i) {
+      lua_pushstring(L, definition->api().allow_api[i].c_str());
+      lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+    }
+    lua_setfield(L, -2, "allow_api");
+    lua_call(L, 1, 0);
+    if (luaL_loadbufferx(L, kFixtureTest, std::char_traits<char>::length(kFixtureTest), "=exercise fixtures", "t") !=
+        LUA_OK) {
+      return lua_error(L);
+    }
+    lua_pushcfunction(L, fixture_of);
+    lua_call(L, 1, 1);  // make_run(name, call, index, what)
+    const int make_run = lua_gettop(L);
+    const std::vector<ScriptedFixture>& fixtures = definition->fixtures();
+    for (size_t i = 0; i < fixtures.size(); ++i) {
+      lua_getglobal(L, "test");
+      lua_createtable(L, 0, 4);
+      lua_pushstring(L, std::to_string(i + 1).c_str());
+      lua_setfield(L, -2, "number");
+      lua_pushstring(L, fixtures[i].name.c_str());
+      lua_setfield(L, -2, "name");
+      lua_pushnumber(L, fixtures[i].points);
+      lua_setfield(L, -2, "points");
+      lua_pushvalue(L, make_run);
+      lua_pushstring(L, info.name);
+      lua_pushstring(L, info.function);
+      lua_pushinteger(L, static_cast<lua_Integer>(i + 1));
+      lua_pushstring(L, fixtures[i].name.c_str());
+      lua_call(L, 4, 1);
+      lua_setfield(L, -2, "run");
+      lua_call(L, 1, 0);
+    }
+    return 0;
+  }
+
+  // fixture(name, index) -> a copy of the fixture's mesh, the kind of element the exercise takes ("edge") or nil, the
+  // element's id or nil.
+  static int fixture_of(lua_State* L) {
+    const std::optional<Exercise> exercise = find_exercise(luaL_checkstring(L, 1));
+    const std::shared_ptr<const ScriptedExercise> definition = exercise ? scripted_exercise(*exercise) : nullptr;
+    const lua_Integer index = luaL_checkinteger(L, 2);
+    if (!definition || index < 1 || static_cast<size_t>(index) > definition->fixtures().size()) {
+      return luaL_error(L, "no fixture %d of the exercise %s", int(index), lua_tostring(L, 1));
+    }
+    const ScriptedFixture& fixture = definition->fixtures()[static_cast<size_t>(index - 1)];
+    push_mesh(L, std::make_shared<HalfedgeMesh>(*fixture.mesh));
+    if (!definition->takes()) return 1;
+    lua_pushstring(L, kind_name(*definition->takes()));
+    lua_pushinteger(L, fixture.element.index);
+    return 3;
+  }
+
   static Suite::Context& context(lua_State* L) {
     Suite& s = suite_of(L);
     if (!s.current_ || !s.current_->student) luaL_error(L, "student can only be used while a test runs");
@@ -347,6 +450,9 @@ std::unique_ptr<Suite> Suite::from_text(std::string_view text, const std::string
   lua_pushlightuserdata(L, s.get());
   lua_pushcclosure(L, SuiteApi::include, 1);
   lua_setglobal(L, "include");
+  lua_pushlightuserdata(L, s.get());
+  lua_pushcclosure(L, guarded<SuiteApi::declare_exercise>, 1);
+  lua_setglobal(L, "exercise");
   s->folder_ = folder;
   s->chunk_folder_ = std::filesystem::path(chunk_name).parent_path().generic_string();
   lua_pushstring(L, folder.string().c_str());

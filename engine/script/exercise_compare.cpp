@@ -24,6 +24,7 @@
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
+#include "script/scripted_exercise.h"
 #include "script/upsample_runaway.h"
 
 namespace meshedit {
@@ -549,6 +550,94 @@ void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messag
   if (report.equal) note_pointer_differences(report, "a correct subdivision");
 }
 
+// ---- scripted exercises ---------------------------------------------------------------------------------------
+
+// What a returned element is, for comparing returns across meshes that number their elements differently: a
+// vertex by its position, an edge by its two ends' positions, a face or halfedge by its corners'.
+std::vector<glm::dvec3> element_points(const HalfedgeMesh& mesh, ElementRef r) {
+  std::vector<glm::dvec3> points;
+  if (!r.valid() || !mesh.alive(r)) return points;
+  switch (r.kind) {
+    case ElementKind::Vertex: points.push_back(mesh.position(VertexId(r.index))); break;
+    case ElementKind::Edge: {
+      const HalfedgeId h = mesh.halfedge(EdgeId(r.index));
+      points = {mesh.position(mesh.vertex(h)), mesh.position(mesh.vertex(mesh.twin(h)))};
+      break;
+    }
+    case ElementKind::Halfedge: {
+      const HalfedgeId h(r.index);
+      points = {mesh.position(mesh.vertex(h)), mesh.position(mesh.vertex(mesh.twin(h)))};
+      return points;  // a halfedge's direction counts
+    }
+    default: {
+      const FaceId f(r.index);
+      mesh.for_each_face_halfedge(f, [&](HalfedgeId h) { points.push_back(mesh.position(mesh.vertex(h))); });
+      break;
+    }
+  }
+  std::sort(points.begin(), points.end(), [](const glm::dvec3& a, const glm::dvec3& b) {
+    return a.x != b.x ? a.x < b.x : a.y != b.y ? a.y < b.y : a.z < b.z;
+  });
+  return points;
+}
+
+bool same_element(const HalfedgeMesh& mine, ElementRef a, const HalfedgeMesh& reference, ElementRef b,
+                  double tolerance) {
+  if (a.valid() != b.valid()) return false;
+  if (!a.valid()) return true;
+  if (a.kind != b.kind) return false;
+  const std::vector<glm::dvec3> p = element_points(mine, a), q = element_points(reference, b);
+  if (p.size() != q.size()) return false;
+  for (size_t i = 0; i < p.size(); ++i) {
+    if (!close(p[i], q[i], tolerance)) return false;
+  }
+  return true;
+}
+
+// An exercise defined in Lua: a refusal as for flip; else the definition's diagnoses first (only when something
+// differs), then what breaks the mesh, what it returned, and the surface up to renumbering.
+void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& input, ExerciseReport& report,
+                      Messages& out) {
+  const char* function = scripted.info().function;
+  if (!report.reference.ran) {
+    out.add(report.reference.error);
+    report.equal = false;
+    return;
+  }
+  const std::string what = std::string(function) + (input.element.valid() ? " on " + id(input.element) : "");
+  if (!report.reference.refused.empty()) {
+    return compare_refusal(input, report, "change the mesh in " + what, function, out);
+  }
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+  const double tolerance = mesh_tolerance(before);
+  if (mine.same_as(before)) {
+    out.add("your " + std::string(function) + " changed nothing; the reference changes " +
+            first_change(before, reference));
+  } else {
+    add_unchanged_next(report, before, function, out);
+    add_validation(report, function, out);
+    if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
+  }
+  if (!same_element(mine, report.mine.element, reference, report.reference.element, tolerance)) {
+    out.add("your " + std::string(function) + " returned " + report.mine.returned + "; the reference returns " +
+            report.reference.returned);
+  }
+  if (out.any()) {
+    // The definition's diagnoses go first: move the checks' messages after them.
+    std::vector<std::string> checks = std::move(report.differences);
+    const size_t counted = report.total_differences;
+    report.differences.clear();
+    report.total_differences = 0;
+    for (std::string& m : scripted.diagnose(input, report.mine, report.reference)) out.add(std::move(m));
+    for (std::string& m : checks) out.add(std::move(m));
+    out.count(counted - checks.size());
+  }
+  report.equal = !out.any();
+  if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
+}
+
 // A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish is explained from where
 // it was stopped and what it had done (upsample_runaway.h), its line first.
 void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
@@ -580,7 +669,10 @@ std::string unfinished_run_hint(Exercise exercise) {
     case Exercise::VertexNormal:
       return "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
              "start when a pointer is wrong";
-    default: return "";
+    default: {
+      const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      return scripted ? scripted->hint() : "";
+    }
   }
 }
 
@@ -598,8 +690,7 @@ ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOu
   report.mine = std::move(mine);
   report.reference = std::move(reference);
   Messages out(report);
-  const bool on_mesh = exercise == Exercise::VertexNormal || exercise == Exercise::FlipEdge ||
-                       exercise == Exercise::SplitEdge || exercise == Exercise::Upsample;
+  const bool on_mesh = is_mesh_exercise(exercise);
   if (on_mesh && report.mine.ran && !report.mine.mesh) {
     report.mine.ran = false;
     report.mine.error = "no mesh came back from " + std::string(exercise_info(exercise).function);
@@ -617,6 +708,10 @@ ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOu
     case Exercise::FlipEdge: compare_flip(input, report, out); break;
     case Exercise::SplitEdge: compare_split(input, report, out); break;
     case Exercise::Upsample: compare_upsample(input, report, out); break;
+    default:
+      if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+        compare_scripted(*scripted, input, report, out);
+      }
   }
   return report;
 }

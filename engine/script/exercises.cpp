@@ -28,6 +28,7 @@
 #include "script/edit_recorder.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
+#include "script/scripted_exercise.h"
 #include "script/student_api.h"
 #include "script/upsample_runaway.h"
 #include "script/vec3_bindings.h"
@@ -70,11 +71,6 @@ return {
 }
 )lua";
 
-bool is_mesh_exercise(Exercise e) {
-  return e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge ||
-         e == Exercise::Upsample;
-}
-
 // Describes the Lua value at `index` for messages, reading tables raw.
 std::string describe_value(lua_State* L, int index) {
   switch (lua_type(L, index)) {
@@ -104,8 +100,10 @@ std::string describe_value(lua_State* L, int index) {
 void check_input(Exercise exercise, const ExerciseInput& input) {
   if (!is_mesh_exercise(exercise)) return;
   if (!input.mesh) throw MeshError(std::string(exercise_info(exercise).function) + " needs a mesh");
-  if (exercise == Exercise::Upsample) return;
-  const ElementKind wanted = exercise == Exercise::VertexNormal ? ElementKind::Vertex : ElementKind::Edge;
+  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+  if (exercise == Exercise::Upsample || (scripted && !scripted->takes())) return;
+  const ElementKind wanted = scripted ? *scripted->takes()
+                             : exercise == Exercise::VertexNormal ? ElementKind::Vertex : ElementKind::Edge;
   if (input.element.kind != wanted || !input.mesh->alive(input.element)) {
     throw MeshError(std::string(exercise_info(exercise).function) + " needs a live " + kind_name(wanted) +
                         " of the mesh, got " + format_id(input.element),
@@ -119,6 +117,14 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
   lua_newtable(L);
   int n = 0;
   const auto add = [&] { lua_rawseti(L, -2, ++n); };
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    push_mesh(L, mesh);
+    add();
+    if (scripted->takes()) {
+      push_handle(L, mesh, input.element);
+      add();
+    }
+  }
   switch (exercise) {
     case Exercise::CurveStep:
       lua_createtable(L, static_cast<int>(input.points.size()), 0);
@@ -153,6 +159,7 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
       push_mesh(L, mesh);
       add();
       break;
+    default: break;  // scripted: above
   }
   lua_pushinteger(L, n);
   lua_setfield(L, -2, "n");
@@ -202,15 +209,16 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
       out.points.push_back(p);
       return;
     }
+    case Exercise::Upsample: return;
     case Exercise::FlipEdge:
-    case Exercise::SplitEdge: {
+    case Exercise::SplitEdge:
+    default: {  // and the scripted exercises: an element of the mesh, or nil
       if (const Handle* h = test_handle(L, top)) {
         if (h->mesh() == mesh) out.element = h->ref();
         else out.returned += " of another mesh";
       }
       return;
     }
-    case Exercise::Upsample: return;
   }
 }
 
@@ -222,6 +230,7 @@ const ExerciseInfo& exercise_info(Exercise exercise) {
   for (const ExerciseInfo& info : kExercises) {
     if (info.exercise == exercise) return info;
   }
+  if (const ExerciseInfo* scripted = scripted_exercise_info(exercise)) return *scripted;
   return kExercises[0];
 }
 
@@ -229,7 +238,12 @@ std::optional<Exercise> find_exercise(std::string_view name) {
   for (const ExerciseInfo& info : kExercises) {
     if (name == info.name || name == info.file || name == info.function) return info.exercise;
   }
-  return std::nullopt;
+  return find_scripted_exercise(name);
+}
+
+bool is_mesh_exercise(Exercise e) {
+  return e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge ||
+         e == Exercise::Upsample || scripted_exercise(e) != nullptr;
 }
 
 ExerciseInput ExerciseInput::curve_step(std::vector<glm::dvec3> points, double t) {
@@ -267,6 +281,13 @@ ExerciseInput ExerciseInput::whole_mesh(std::shared_ptr<const HalfedgeMesh> mesh
   return input;
 }
 
+ExerciseInput ExerciseInput::element_of(std::shared_ptr<const HalfedgeMesh> mesh, ElementRef element) {
+  ExerciseInput input;
+  input.mesh = std::move(mesh);
+  input.element = element;
+  return input;
+}
+
 std::string ExerciseInput::describe(Exercise exercise) const {
   const auto mesh_text = [&] {
     if (!mesh) return std::string("no mesh");
@@ -282,7 +303,7 @@ std::string ExerciseInput::describe(Exercise exercise) const {
     case Exercise::SplitEdge: return format_id(element) + " of " + mesh_text();
     case Exercise::Upsample: return mesh_text();
   }
-  return "";
+  return element.valid() ? format_id(element) + " of " + mesh_text() : mesh_text();  // scripted
 }
 
 // ---- student code -----------------------------------------------------------------------------------------
@@ -533,6 +554,9 @@ ExerciseOutcome run_mine(StudentCode& code, Exercise exercise, const ExerciseInp
 
 ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   check_input(exercise, input);
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    return scripted->run_reference(input);
+  }
   ExerciseOutcome out;
   out.ran = true;
   switch (exercise) {

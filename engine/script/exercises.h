@@ -1,5 +1,6 @@
-// "Mine vs reference": the six student exercises (scripts/student/*.lua), running a student's function and the
-// C++ reference on copies of the same input, and a report that points at the mistake.
+// "Mine vs reference": the six student exercises (scripts/student/*.lua), and those an instructor defines in Lua
+// (scripted_exercise.h), running a student's function and the reference on copies of the same input, and a report
+// that points at the mistake.
 //
 //   auto code = load_student_file("scripts/student/flip.lua");          // ScriptError "flip.lua:3: ..." if broken
 //   const ExerciseInput input = ExerciseInput::edge(mesh, EdgeId(5));
@@ -17,7 +18,10 @@
 //   reference flip_edge and split_edge.
 // - The reference is the core: de_casteljau_step, evaluate_patch, vertex_normal (area-weighted), flip, split
 //   and loop_subdivide with the course's weights (core/loop_subdivision.h), so "mine" and the app's own
-//   operations agree by construction.
+//   operations agree by construction. A scripted exercise's reference is its definition's Lua function.
+// - An Exercise is an id in one catalogue: the six named values are the built-in exercises; the values after them
+//   are the scripted exercises registered in this process (scripted_exercise.h). exercise_info, find_exercise and
+//   everything below take both; a scripted exercise works on a mesh (and the element its definition takes).
 // - `equal` is the verdict (the same answer as the reference, up to renumbering and rounding); `identical`
 //   is stronger (bit for bit, pointer for pointer). The correct solutions in tests/script/solutions are
 //   identical on every input the tests use.
@@ -55,11 +59,14 @@ struct ExerciseInfo {
   const char* title;      // "Part 1: a de Casteljau step"
 };
 
-// The six, in the assignment's order.
+// The six built-in ones, in the assignment's order.
 std::span<const ExerciseInfo> all_exercises();
+// A built-in or registered scripted exercise's (an unknown id gives the first built-in's).
 const ExerciseInfo& exercise_info(Exercise exercise);
-// By name, file name or function name ("flip", "flip.lua", "flip_edge").
+// By name, file name or function name ("flip", "flip.lua", "flip_edge"), the built-in ones first.
 std::optional<Exercise> find_exercise(std::string_view name);
+// Whether the exercise works on a mesh: normals, flip, split, upsample and every scripted exercise.
+bool is_mesh_exercise(Exercise exercise);
 
 // What one run works on. Build it with the named constructors; fields not used by the exercise are ignored.
 struct ExerciseInput {
@@ -68,13 +75,14 @@ struct ExerciseInput {
   BezierPatch patch;               // PatchEvaluate
   double u = 0.5, v = 0.5;         // PatchEvaluate
   std::shared_ptr<const HalfedgeMesh> mesh;  // the mesh exercises (never changed: runs work on copies)
-  ElementRef element;              // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge
+  ElementRef element;              // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge; scripted: what it takes
 
   static ExerciseInput curve_step(std::vector<glm::dvec3> points, double t);
   static ExerciseInput patch_point(const BezierPatch& patch, double u, double v);
   static ExerciseInput vertex(std::shared_ptr<const HalfedgeMesh> mesh, VertexId v);
   static ExerciseInput edge(std::shared_ptr<const HalfedgeMesh> mesh, EdgeId e);
   static ExerciseInput whole_mesh(std::shared_ptr<const HalfedgeMesh> mesh);
+  static ExerciseInput element_of(std::shared_ptr<const HalfedgeMesh> mesh, ElementRef element);
 
   // "4 points, t = 0.3", "(u, v) = (0.3, 0.8)", "v3 of a mesh with 12 faces", "e5 of ...", "a mesh with ...".
   std::string describe(Exercise exercise) const;

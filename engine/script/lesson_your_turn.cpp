@@ -18,6 +18,7 @@
 #include "script/lesson_api_support.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
+#include "script/scripted_exercise.h"
 
 namespace meshedit {
 namespace {
@@ -35,7 +36,8 @@ function your_turn(spec)
 end
 )lua";
 
-constexpr const char* kExerciseNames = "curve, patch, normals, flip, split or upsample";
+constexpr const char* kExerciseNames =
+    "curve, patch, normals, flip, split, upsample or an exercise of scripts/exercises";
 
 Exercise read_exercise(lua_State* L, int index) {
   lua_getfield(L, index, "exercise");
@@ -76,9 +78,9 @@ ElementRef read_element(lua_State* L, int index, const HalfedgeMesh& mesh, Eleme
   const std::optional<ElementRef> element = to_element(L, -1);
   if (!element || element->kind != kind || !mesh.alive(*element)) {
     const std::string got = element ? format_id(*element) : "a " + type_name(L, -1);
-    raise(L, std::string("your_turn: element must be ") + (kind == ElementKind::Edge ? "an edge" : "a vertex") +
-                 " of the mesh (a handle or an id like \"" + (kind == ElementKind::Edge ? "e0" : "v0") + "\"), got " +
-                 got);
+    raise(L, std::string("your_turn: element must be ") + (kind == ElementKind::Edge ? "an " : "a ") + kind_name(kind) +
+                 " of the mesh (a handle or an id like \"" +
+                 kind_prefix(kind) + "0\"), got " + got);
   }
   lua_pop(L, 1);
   return *element;
@@ -107,6 +109,12 @@ std::vector<glm::dvec3> read_points(lua_State* L, int index) {
 
 // The exercise's input, copied out of the table at `index`.
 ExerciseInput read_input(lua_State* L, int index, Exercise exercise) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    std::shared_ptr<const HalfedgeMesh> mesh = read_mesh(L, index, exercise);
+    if (!scripted->takes()) return ExerciseInput::whole_mesh(std::move(mesh));
+    const ElementRef element = read_element(L, index, *mesh, *scripted->takes());
+    return ExerciseInput::element_of(std::move(mesh), element);
+  }
   switch (exercise) {
     case Exercise::CurveStep: {
       std::vector<glm::dvec3> points = read_points(L, index);

@@ -5,7 +5,8 @@
 // Lua API:
 //   your_turn { exercise = "flip", mesh = m, element = m:edge(0) | "e0", hint = "..." }
 //       exercise: "curve" (points = {...}, t =), "patch" (patch = meshedit.patch(...), u =, v =), "normals" (mesh =,
-//       element = a vertex), "flip" / "split" (mesh =, element = an edge), "upsample" (mesh =).
+//       element = a vertex), "flip" / "split" (mesh =, element = an edge), "upsample" (mesh =), or the name of an
+//       exercise registered from scripts/exercises (scripted_exercise.h: mesh =, and element = what it takes).
 //       -> true once the student's function gives the reference's answer. Until then the step waits: the panel shows
 //          the diagnosis, and the file runs again each time it is saved.
 //

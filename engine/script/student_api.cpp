@@ -6,6 +6,7 @@
 
 #include <lua.hpp>
 
+#include "script/scripted_exercise.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -98,6 +99,7 @@ bool is_hideable_api(const std::string& name) {
 const ExerciseApi& exercise_api(Exercise exercise) {
   static const ExerciseApi none;
   static const ExerciseApi upsample{{"mesh:flip", "mesh:split"}, {"flip_edge", "split_edge"}};
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) return scripted->api();
   return exercise == Exercise::Upsample ? upsample : none;
 }
 

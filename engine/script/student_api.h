@@ -35,7 +35,7 @@ const std::vector<std::string>& hideable_api_names();
 bool is_hideable_api(const std::string& name);
 
 // What an exercise's code may use beyond the always-available API: upsample gets mesh:flip and mesh:split and the
-// reference flip_edge and split_edge; the others get nothing more.
+// reference flip_edge and split_edge; a scripted exercise what its definition allows; the others get nothing more.
 struct ExerciseApi {
   std::vector<std::string> allow_api;  // hideable names
   std::vector<std::string> reference;  // reference function names (reference_functions.h)

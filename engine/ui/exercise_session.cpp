@@ -17,6 +17,7 @@
 
 #include "core/mesh_error.h"
 #include "script/lua_runtime.h"
+#include "script/scripted_exercise.h"
 #include "ui/document_actions.h"
 #include "ui/exception_report.h"
 
@@ -56,6 +57,23 @@ OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, co
     case Exercise::Upsample: return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
     default: break;
   }
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    if (!scripted->takes()) return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
+    const ElementKind kind = *scripted->takes();
+    if (kind == ElementKind::Edge) {  // as flip and split take it: a selected halfedge names its edge
+      const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
+      if (!edge.ok()) return {edge.check, {}};
+      return {Check::yes(), ExerciseInput::element_of(std::move(mesh), edge.value)};
+    }
+    const ElementRef ref = selection.selected;
+    if (!ref.valid() || ref.kind != kind) {
+      return {Check::no(std::string("select ") + (kind == ElementKind::Edge ? "an " : "a ") + kind_name(kind) +
+                        " first: " + scripted->info().signature),
+              {}};
+    }
+    if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
+    return {Check::yes(), ExerciseInput::element_of(std::move(mesh), ref)};
+  }
   return {Check::no(std::string(exercise_info(exercise).name) + " is not a mesh exercise"), {}};
 }
 
@@ -68,12 +86,9 @@ std::string point_text(const std::vector<glm::dvec3>& points) {
 }  // namespace
 
 std::vector<Exercise> mesh_exercises() {
-  return {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
-}
-
-bool is_mesh_exercise(Exercise exercise) {
-  const auto all = mesh_exercises();
-  return std::find(all.begin(), all.end(), exercise) != all.end();
+  std::vector<Exercise> all = {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
+  for (Exercise scripted : scripted_exercises()) all.push_back(scripted);
+  return all;
 }
 
 ExerciseSession::ExerciseSession(std::filesystem::path folder)

@@ -45,9 +45,9 @@
 
 namespace meshedit {
 
-// The exercises the window runs on its mesh: flip, split, normals, upsample (in the assignment's order).
+// The exercises the window runs on its mesh: normals, flip, split, upsample (in the assignment's order), then the
+// scripted ones registered from scripts/exercises (scripted_exercise.h).
 std::vector<Exercise> mesh_exercises();
-bool is_mesh_exercise(Exercise exercise);
 
 // The last run (mine or the reference) and what it worked on.
 struct ExerciseRun {

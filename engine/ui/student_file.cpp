@@ -13,6 +13,10 @@ std::filesystem::path default_student_folder() {
   return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "scripts" / "student";
 }
 
+std::filesystem::path default_exercise_folder() {
+  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "scripts" / "exercises";
+}
+
 void StudentFile::set_path(std::filesystem::path path) {
   if (path == path_) return;
   path_ = std::move(path);

@@ -26,6 +26,9 @@ namespace meshedit {
 
 // <source tree>/scripts/student (the source tree's path is compiled in).
 std::filesystem::path default_student_folder();
+// <source tree>/scripts/exercises: the exercises defined in Lua (script/scripted_exercise.h) the window and the
+// lesson command register when they start.
+std::filesystem::path default_exercise_folder();
 
 class StudentFile {
  public:
