@@ -100,6 +100,10 @@ void set_string_field(lua_State* L, const char* key, const std::string& value);
 // The method groups of the mesh metatable, each adding its functions to the table on top of the stack.
 void add_edit_methods(lua_State* L);       // edit_bindings.cpp: new_*, delete, record
 void add_operation_methods(lua_State* L);  // operation_bindings.cpp: flip, split, collapse, loop_subdivide
+// mesh:flip(e) and mesh:split(e) as C functions of (mesh, e), recorded and journaled like every change a script makes
+// (the reference flip_edge and split_edge are these).
+int mesh_flip(lua_State* L);
+int mesh_split(lua_State* L);
 void add_history_methods(lua_State* L);    // history_bindings.cpp: snapshot, restore, undo, redo, diff
 void add_table_methods(lua_State* L);      // table_bindings.cpp: tables
 // Module functions (module_bindings.cpp): load, cube, ..., grid, from_polygons; added to the table on top.

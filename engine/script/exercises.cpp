@@ -504,8 +504,10 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   const int results_ref = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_settop(L, 0);
 
+  // An upsample is recorded even when no replay asked for it: the recording's budget is what stops a runaway one
+  // early (upsample_runaway.h), and its edits say where it was.
   std::optional<EditRecorder> recorder;
-  if (options.record_edits && out.mesh) {
+  if ((options.record_edits || exercise == Exercise::Upsample) && out.mesh) {
     EditRecorder::Options recording;
     recording.keep_before = false;
     if (options.max_edits > 0) recording.max_edits = options.max_edits;

@@ -101,12 +101,12 @@ struct ExerciseOutcome {
   ElementRef element;       // FlipEdge, SplitEdge: the element returned (invalid for nil)
   std::string refused;      // reference only: the core's reason when it refuses (flip of a boundary edge...)
   std::optional<ValidationReport> validation;  // mesh exercises, after the call
-  std::vector<RecordedEdit> edits;  // mine on a mesh, when RunOptions::record_edits
+  std::vector<RecordedEdit> edits;  // mine on a mesh, when RunOptions::record_edits (an upsample: always)
   std::vector<std::string> output;  // what print() wrote during the call (capped)
 };
 
 struct RunOptions {
-  bool record_edits = false;  // fill ExerciseOutcome::edits (for the app's write-by-write replay)
+  bool record_edits = false;  // fill ExerciseOutcome::edits (for the app's write-by-write replay; upsample always)
   // The most changes recorded before the run is stopped (a Lua error at the line making the next one); 0: the
   // exercise's own bound (upsample: upsample_edit_budget of the input, upsample_runaway.h; others EditRecorder's).
   size_t max_edits = 0;

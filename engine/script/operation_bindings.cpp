@@ -47,8 +47,6 @@ int run_edge_operation(lua_State* L, const char* name) {
   return 1;
 }
 
-int mesh_flip(lua_State* L) { return run_edge_operation<OpResult<EdgeId>, flip>(L, "flip"); }
-int mesh_split(lua_State* L) { return run_edge_operation<OpResult<VertexId>, split>(L, "split"); }
 int mesh_collapse(lua_State* L) { return run_edge_operation<OpResult<VertexId>, collapse>(L, "collapse"); }
 
 // One loop_subdivide call quadruples the faces; past this many faces it is refused so that a script repeating it
@@ -76,6 +74,9 @@ int mesh_loop_subdivide(lua_State* L) {
 }
 
 }  // namespace
+
+int mesh_flip(lua_State* L) { return run_edge_operation<OpResult<EdgeId>, flip>(L, "flip"); }
+int mesh_split(lua_State* L) { return run_edge_operation<OpResult<VertexId>, split>(L, "split"); }
 
 void add_operation_methods(lua_State* L) {
   const luaL_Reg methods[] = {{"flip", guarded<mesh_flip>},

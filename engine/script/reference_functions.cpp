@@ -9,7 +9,6 @@
 
 #include "core/bezier.h"
 #include "core/loop_subdivision.h"
-#include "core/mesh_ops.h"
 #include "core/normals.h"
 #include "script/binding_support.h"
 #include "script/vec3_bindings.h"
@@ -20,30 +19,6 @@ namespace {
 // The same cap the mesh API puts on loop_subdivide: one call runs in C++, out of the hook's reach.
 constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
 constexpr size_t kMaxPoints = 1024;
-
-Handle& edge_of(lua_State* L, const MeshBox& box) {
-  Handle& e = check_handle(L, 2, ElementKind::Edge);
-  check_same_mesh(L, box.mesh, e);
-  return e;
-}
-
-int flip_edge(lua_State* L) {
-  MeshBox& box = check_mesh(L, 1);
-  const Handle& e = edge_of(L, box);
-  const OpResult<EdgeId> result = flip(*box.mesh, EdgeId(e.index));
-  if (!result.ok()) return push_refusal(L, result.check.reason);
-  push_handle_at(L, 1, result.value);
-  return 1;
-}
-
-int split_edge(lua_State* L) {
-  MeshBox& box = check_mesh(L, 1);
-  const Handle& e = edge_of(L, box);
-  const OpResult<VertexId> result = split(*box.mesh, EdgeId(e.index));
-  if (!result.ok()) return push_refusal(L, result.check.reason);
-  push_handle_at(L, 1, result.value);
-  return 1;
-}
 
 int upsample(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);
@@ -101,8 +76,8 @@ struct Reference {
   lua_CFunction function;
 };
 
-const std::array<Reference, 6> kReferences = {{{"flip_edge", guarded<flip_edge>},
-                                               {"split_edge", guarded<split_edge>},
+const std::array<Reference, 6> kReferences = {{{"flip_edge", guarded<mesh_flip>},
+                                               {"split_edge", guarded<mesh_split>},
                                                {"upsample", guarded<upsample>},
                                                {"vertex_normal", guarded<vertex_normal_function>},
                                                {"evaluate_step", guarded<evaluate_step>},

@@ -4,7 +4,8 @@
 //
 // Invariants:
 // - Every reference is a C function calling the core (mesh_ops.h, loop_subdivision.h, bezier.h, normals.h):
-//   student code can call it but never read it (no string.dump of C functions, no debug library).
+//   student code can call it but never read it (no string.dump of C functions, no debug library). flip_edge and
+//   split_edge are mesh:flip and mesh:split themselves, so their changes are recorded (the window's replay) alike.
 // - Each keeps the student-facing signature of its exercise: flip_edge(mesh, e) -> e | nil,
 //   split_edge(mesh, e) -> new vertex | nil, upsample(mesh), vertex_normal(v) -> vec3,
 //   evaluate_step(points, t) -> points, evaluate(patch, u, v) -> vec3 (patch.points: 16, row-major).

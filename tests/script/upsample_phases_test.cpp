@@ -147,6 +147,23 @@ TEST(UpsamplePhases, TheSolutionsFourPhasesBeginWhereItsStepsDo) {
   }
 }
 
+// The reference split_edge and flip_edge the template offers are recorded as mesh:split and mesh:flip are: the replay
+// and the phases are the same whichever a student calls.
+TEST(UpsamplePhases, TheReferenceSplitEdgeAndFlipEdgeAreRecordedAsTheMeshMethodsAre) {
+  const std::string text = replaced(replaced(solution_text(), "mesh:split(e)", "split_edge(mesh, e)"), "mesh:flip(e)",
+                                    "flip_edge(mesh, e)");
+  const Recording r = record(text, mesh_of(make_cube()));
+  ASSERT_TRUE(r.report.identical) << r.report.summary();
+  const size_t E = 18, V = 8, flips = count_operations(r.edits(), "flip");
+  EXPECT_EQ(count_operations(r.edits(), "split"), E);
+  ASSERT_EQ(r.edits().size(), E + flips + V + E);
+  EXPECT_EQ(r.edits()[0].where, line_of(text, "split_edge(mesh, e)"));
+  const UpsamplePhases phases = find_upsample_phases(r.edits());
+  EXPECT_TRUE(phases.problems.empty()) << phases.problems.front();
+  EXPECT_EQ(phases.span[3].first, E);
+  expect_identical_at_every_boundary(r, phases);
+}
+
 TEST(UpsamplePhases, FlippingTheHalvesOfSplitEdgesDepartsFromTheReferenceInPhaseThree) {
   const std::string text =
       testing::read_text(testing::source_dir() / "tests/grading/students/upsample_flips_split_halves.lua");

@@ -1,0 +1,83 @@
+// An exercise defined in Lua alone graded as a suite of its own (`meshedit grade --suite
+// scripts/exercises/collapse.lua`): one test per fixture, with the fixture's name and points; the correct solution
+// scores every point; a buggy one fails each test with the diagnosis the window's check gives on the same input;
+// the built binary prints the same.
+#include <gtest/gtest.h>
+
+#include <sys/wait.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <string>
+
+#include "grade/grader.h"
+#include "grade/suite.h"
+#include "grade_test_support.h"
+#include "script/exercises.h"
+#include "script/scripted_exercise.h"
+
+namespace meshedit {
+namespace {
+
+namespace fs = std::filesystem;
+using testing::read_text;
+
+fs::path definition() { return testing::source_dir() / "scripts" / "exercises" / "collapse.lua"; }
+std::string solution() { return read_text(testing::source_dir() / "tests" / "script" / "solutions" / "collapse.lua"); }
+fs::path buggy_file() { return testing::grading_dir() / "scripted" / "collapse_keeps_position.lua"; }
+
+TEST(ScriptedExerciseGrading, EachFixtureIsATestAndTheSolutionScoresEveryPoint) {
+  auto suite = Suite::load(definition());
+  const GradeReport report =
+      grade(*suite, testing::submission_of({{"collapse.lua", solution()}}), testing::quick_options());
+  EXPECT_EQ(report.suite_name, "collapse");
+  ASSERT_EQ(report.tests.size(), 3u);
+  EXPECT_EQ(report.tests[0].number, "1");
+  EXPECT_EQ(report.tests[0].name, "an edge of an icosahedron");
+  EXPECT_EQ(report.tests[0].max_score, 2.0);
+  EXPECT_EQ(report.tests[2].name, "a diagonal of a 2x2 grid's corner square");
+  EXPECT_EQ(report.tests[2].max_score, 1.0);
+  EXPECT_EQ(report.failed(), 0u) << report.tests[0].output;
+  EXPECT_EQ(report.score, 5.0);
+  EXPECT_EQ(report.max_score, 5.0);
+}
+
+TEST(ScriptedExerciseGrading, ABuggySubmissionIsToldWhatTheWindowSays) {
+  auto suite = Suite::load(definition());
+  const GradeReport report =
+      grade(*suite, testing::submission_of({{"collapse.lua", read_text(buggy_file())}}), testing::quick_options());
+  EXPECT_EQ(report.score, 0.0);
+  // The window's check of the third fixture, on the registry's own copy of it.
+  const std::optional<Exercise> id = find_exercise("collapse");
+  ASSERT_TRUE(id.has_value());
+  const ScriptedFixture& fixture = scripted_exercise(*id)->fixtures()[2];
+  const fs::path dir = testing::scratch_dir();
+  fs::copy_file(buggy_file(), dir / "collapse.lua");
+  auto code = load_student_file(dir / "collapse.lua");
+  const ExerciseReport window = check_exercise(*code, *id, ExerciseInput::element_of(fixture.mesh, fixture.element));
+  ASSERT_FALSE(window.differences.empty());
+  EXPECT_EQ(window.differences[0], "the vertex that remains is still where a was; collapse moves it to the midpoint "
+                                   "of a and b, (0.5, 0.5, 0)");
+  ASSERT_EQ(report.tests.size(), 3u);
+  EXPECT_NE(report.tests[2].output.find("FAILED: a diagonal of a 2x2 grid's corner square: " + window.differences[0]),
+            std::string::npos)
+      << report.tests[2].output;
+}
+
+TEST(ScriptedExerciseGrading, TheCommandLineGradesTheDefinitionFile) {
+  if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
+  const fs::path dir = testing::scratch_dir();
+  testing::write_text(dir / "submission" / "collapse.lua", solution());
+  const std::string command = "'" + std::string(MESHEDIT_BINARY) + "' grade --suite '" + definition().string() +
+                              "' --submission '" + (dir / "submission").string() + "' > '" + (dir / "out.txt").string() +
+                              "' 2>&1";
+  const int status = std::system(command.c_str());
+  ASSERT_TRUE(WIFEXITED(status));
+  EXPECT_EQ(WEXITSTATUS(status), 0);
+  const std::string out = read_text(dir / "out.txt");
+  EXPECT_NE(out.find("PASS 1 an edge of an icosahedron  2/2"), std::string::npos) << out;
+  EXPECT_NE(out.find("Score: 5 / 5"), std::string::npos) << out;
+}
+
+}  // namespace
+}  // namespace meshedit
