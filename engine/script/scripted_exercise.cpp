@@ -185,6 +185,7 @@ std::shared_ptr<ScriptedExercise> ScriptedExercise::load(const std::filesystem::
   const std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
   std::shared_ptr<ScriptedExercise> x(new ScriptedExercise());
   x->path_ = file;
+  x->stamp_ = file_stamp(file);
   x->runtime_ = std::make_unique<LuaRuntime>();
   lua_State* L = x->runtime_->state();
   Reading reading{x.get(), false};
@@ -332,6 +333,22 @@ std::vector<Exercise> scripted_exercises() {
   std::vector<Exercise> out;
   for (const Entry& entry : catalogue()) out.push_back(entry.info.exercise);
   return out;
+}
+
+std::string reload_scripted_exercise_if_changed(Exercise exercise) {
+  const std::shared_ptr<const ScriptedExercise> current = scripted_exercise(exercise);
+  if (!current || file_stamp(current->path()) == current->stamp()) return "";
+  try {
+    std::shared_ptr<ScriptedExercise> loaded = ScriptedExercise::load(current->path());
+    if (std::string(loaded->info().name) != current->info().name) {
+      return loaded->path().filename().string() + ": the exercise's name changed from '" + current->info().name +
+             "' to '" + loaded->info().name + "'; open it again to register it under its new name";
+    }
+    register_scripted_exercise(std::move(loaded));
+  } catch (const ScriptError& e) {
+    return e.what();
+  }
+  return "";
 }
 
 std::vector<std::string> load_exercise_folder(const std::filesystem::path& folder) {

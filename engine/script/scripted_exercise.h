@@ -40,6 +40,7 @@
 
 #include "core/halfedge_mesh.h"
 #include "script/exercises.h"
+#include "script/file_stamp.h"
 #include "script/student_api.h"
 
 namespace meshedit {
@@ -63,6 +64,7 @@ class ScriptedExercise {
   ScriptedExercise& operator=(const ScriptedExercise&) = delete;
 
   const std::filesystem::path& path() const { return path_; }
+  const FileStamp& stamp() const { return stamp_; }
   // name, file, function (`call`), signature, title, as exercise_info gives them once registered.
   const ExerciseInfo& info() const { return info_; }
   // The kind of element the function takes after the mesh; nullopt when it takes the whole mesh.
@@ -84,6 +86,7 @@ class ScriptedExercise {
   ScriptedExercise() = default;
 
   std::filesystem::path path_;
+  FileStamp stamp_;  // the file as it was loaded
   std::string name_, file_, function_, signature_, title_, hint_;
   ExerciseInfo info_{};
   std::optional<ElementKind> takes_;
@@ -104,6 +107,10 @@ std::vector<Exercise> scripted_exercises();
 // ExerciseInfo stays where it is; its strings are the definition's, good until that name is registered again.
 const ExerciseInfo* scripted_exercise_info(Exercise exercise);
 std::optional<Exercise> find_scripted_exercise(std::string_view name);
+
+// A registered exercise whose file changed since it was loaded is loaded again and registered under the same id.
+// Returns "" (unchanged, reloaded, or a built-in exercise) or the error that kept the old definition in place.
+std::string reload_scripted_exercise_if_changed(Exercise exercise);
 
 // Loads and registers every NAME.lua in `folder` (by name order). Returns one error per file that failed to load
 // ("collapse.lua:12: exercise: takes must be ..."); a missing folder is no error.

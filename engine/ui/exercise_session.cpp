@@ -128,6 +128,12 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
                                    std::optional<PreparedRun>& prepared) {
   finish_replay(doc);
   const char* who = mine ? "mine" : "reference";
+  // An instructor's exercise whose definition was saved since: its new version runs (or its error is shown).
+  if (const std::string error = reload_scripted_exercise_if_changed(exercise_); !error.empty()) {
+    Check refused = Check::no("the exercise's definition did not load: " + error);
+    set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
+    return refused;
+  }
   OpResult<ExerciseInput> input = input_for(exercise_, doc, selection);
   if (!input.ok()) {
     // A refusal for lack of memory is an Error: memory to spare might have run it.

@@ -35,6 +35,40 @@ function test(spec) end
 ---@param file string
 function include(file) end
 
+---One fixture of an exercise defined in Lua: one test of its suite.
+---@class ExerciseFixture
+---@field name? string the test's name
+---@field mesh Mesh the mesh as it is before the call
+---@field element? Element|string|integer the element the function takes (a handle, "e7" or 7); not for takes = "mesh"
+---@field points? number default 1
+
+---What the definition's diagnose is given when the student's answer differs (copies: changing them changes nothing).
+---@class ExerciseRun
+---@field before Mesh
+---@field mine Mesh
+---@field reference Mesh
+---@field element? Element the input's element, of run.before
+---@field returned string what the student's function returned, described
+
+---An exercise defined in Lua alone (a file of scripts/exercises). See scripts/api/README.md.
+---@class ExerciseSpec
+---@field name string a word; not a built-in exercise's name
+---@field title? string
+---@field file string the student's file, "collapse.lua"
+---@field call string the student's function, "collapse_edge"
+---@field signature? string "collapse_edge(mesh, e) -> the vertex that remains, or nil"
+---@field takes "vertex"|"edge"|"face"|"halfedge"|"mesh"
+---@field allow? string[] hideable API the student's code may call: "mesh:flip", ...
+---@field reference fun(mesh: Mesh, element?: Element): Element?, string? nil and the mesh unchanged: a refusal
+---@field diagnose? fun(run: ExerciseRun): string|string[]|nil the likely mistakes first
+---@field hint? string shown under a run that did not finish
+---@field fixtures? ExerciseFixture[] what grading checks, one test each
+
+---Defines an exercise (in scripts/exercises/NAME.lua). In a suite it also declares the suite: the student file, the
+---allowed API and one test per fixture.
+---@param spec ExerciseSpec
+function exercise(spec) end
+
 ---The folder of the suite file, for fixtures: meshedit.load(SUITE_DIR .. "/cow.dae"). Load fixtures at the top
 ---level: a running test cannot open files.
 ---@type string
