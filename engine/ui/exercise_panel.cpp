@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "core/history.h"
+#include "script/scripted_exercise.h"
 #include "ui/theme.h"
 #include "ui/upsample_phase_view.h"
 
@@ -51,6 +52,8 @@ void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_val
   ImGui::PopID();
 }
 
+constexpr size_t kDifferencesShown = 3;  // a report's first differences, always shown
+
 void draw_report(const ExerciseRun& run) {
   const ExerciseReport& report = run.report;
   text(run.label + "  (" + run.input.describe(run.exercise) + ")");
@@ -63,11 +66,17 @@ void draw_report(const ExerciseRun& run) {
   } else if (report.equal) {
     coloured(passed_colour(), "equal to the reference (up to renumbering and rounding)");
   } else {
-    coloured(failed_colour(), report.summary());
+    const size_t n = report.total_differences;
+    coloured(failed_colour(), "different from the reference: " + std::to_string(n) +
+                                  (n == 1 ? " difference" : " differences, the likely mistake first"));
   }
-  if (!report.differences.empty() && ImGui::TreeNodeEx("differences", ImGuiTreeNodeFlags_DefaultOpen, "differences (%zu)",
-                                                       report.total_differences)) {
-    for (const std::string& line : report.differences) coloured(failed_colour(), "- " + line);
+  // The likely mistakes are the first differences: those are shown, the rest fold away so that the tables and the
+  // replay below stay in reach.
+  const size_t shown = std::min(report.differences.size(), kDifferencesShown);
+  for (size_t i = 0; i < shown; ++i) coloured(failed_colour(), "- " + report.differences[i]);
+  if (report.total_differences > shown &&
+      ImGui::TreeNode("differences", "%zu more differences", report.total_differences - shown)) {
+    for (size_t i = shown; i < report.differences.size(); ++i) coloured(failed_colour(), "- " + report.differences[i]);
     if (report.total_differences > report.differences.size())
       text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
     ImGui::TreePop();
@@ -194,12 +203,16 @@ std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows) {
   auto key = [](const FieldChange& c) { return format_id(c.element) + "." + c.field; };
   const std::vector<FieldChange> mine_changes = diff(*before, *mine);
   const std::vector<FieldChange> reference_changes = diff(*before, *reference);
+  // Fields of an element both deleted say nothing (the dead elements' fields are left as they were).
+  const auto dead_in_both = [&](const FieldChange& c) { return !mine->alive(c.element) && !reference->alive(c.element); };
   for (const FieldChange& change : mine_changes) {
     if (rows.size() >= max_rows) break;
+    if (dead_in_both(change)) continue;
     index.emplace(key(change), rows.size());
     rows.push_back({change.element, change.field, change.before, change.after, change.before});
   }
   for (const FieldChange& change : reference_changes) {
+    if (dead_in_both(change)) continue;
     const auto found = index.find(key(change));
     if (found != index.end()) {
       rows[found->second].reference = change.after;
@@ -208,6 +221,8 @@ std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows) {
       rows.push_back({change.element, change.field, change.before, change.before, change.after});
     }
   }
+  // The rows that differ first: they are what the student is looking for.
+  std::stable_partition(rows.begin(), rows.end(), [](const PointerRow& row) { return row.differs(); });
   return rows;
 }
 
@@ -235,7 +250,9 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   }
   text(session.file().string());
   ImGui::TextDisabled("%s", active.signature);
-  ImGui::TextDisabled("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views");
+  if (!session.last_run()) {
+    ImGui::TextDisabled("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views");
+  }
   const bool run_mine = ImGui::Button("Run mine");
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   state.run_mine_x = 0.5f * (low.x + high.x);
@@ -254,7 +271,8 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   if (run) {
     draw_report(*run);
     if (run->serial != state.rows_serial) {
-      state.rows = (run->exercise == Exercise::FlipEdge || run->exercise == Exercise::SplitEdge)
+      state.rows = (run->exercise == Exercise::FlipEdge || run->exercise == Exercise::SplitEdge ||
+                    scripted_exercise(run->exercise))
                        ? pointer_rows(*run, ExercisePanelState::kMaxPointerRows)
                        : std::vector<PointerRow>{};
       state.rows_serial = run->serial;

@@ -35,8 +35,9 @@ struct PointerRow {
   bool differs() const { return mine != reference; }
 };
 
-// Every field that mine or the reference changed (from the run's input), in the order of core diff(): rows
-// only one side changed show the unchanged value on the other. Empty for runs without both meshes.
+// Every field that mine or the reference changed (from the run's input), but those of elements both deleted: the rows
+// where mine and the reference differ first, each group in the order of core diff(); rows only one side changed show
+// the unchanged value on the other. Empty for runs without both meshes.
 std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows);
 
 struct ExercisePanelState {

@@ -133,11 +133,15 @@ TEST(ExerciseSession, TheTemplateIsDifferentAndAWrongAnswerStillReachesTheDocume
   EXPECT_EQ(doc.history.undo_label(), "mine: flip e7");
   EXPECT_FALSE(cached_validation(doc).ok());
   std::string red;
-  for (const PointerRow& row : pointer_rows(broken, 1000)) {
+  const std::vector<PointerRow> broken_rows = pointer_rows(broken, 1000);
+  for (const PointerRow& row : broken_rows) {
     if (row.differs()) red += format_id(row.element) + "." + row.field + " " + row.mine + " vs " + row.reference + "; ";
   }
-  // Exactly the forgotten write is red: f0 of the flip (f2 on the cube) keeps its old halfedge.
+  // Exactly the forgotten write is red: f0 of the flip (f2 on the cube) keeps its old halfedge. It comes first.
   EXPECT_EQ(red, "f2.halfedge h6 vs h8; ");
+  ASSERT_GT(broken_rows.size(), 1u);
+  EXPECT_TRUE(broken_rows.front().differs());
+  EXPECT_EQ(format_id(broken_rows.front().element) + "." + broken_rows.front().field, "f2.halfedge");
 }
 
 TEST(ExerciseSession, ReplayShowsEachStateWithItsWriteAndAddsNoHistory) {
