@@ -359,7 +359,7 @@ local function phase_report(phase, mesh, state)
     .. tostring(mesh:vertex(0).position) .. "."
 end
 
-step("Your turn: Shift+L", function()
+step("The app's phases: Shift+L", function()
   show(meshedit.cube())
   camera "fit"
   say [[

@@ -59,7 +59,8 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
     if (close(q, (1.0 - double(ring->n) * u) * p + u * ring->sum, tolerance)) {
       interior.add(format_id(v) + " (" + std::to_string(ring->n) + " neighbours, 2 of them along the boundary)");
     } else {
-      other.add(format_id(v) + " at " + format_position(q) + ", where the course puts it at " + format_position(course));
+      other.add(format_id(v) + " at " + format_position(q) + ", where the course puts it at " +
+                format_position(course));
     }
   }
   const std::string rule = "a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along "

@@ -33,7 +33,8 @@ constexpr TakesName kTakes[] = {{"vertex", ElementKind::Vertex},
 
 bool is_identifier(const std::string& text) {
   if (text.empty() || !(std::isalpha(static_cast<unsigned char>(text[0])) || text[0] == '_')) return false;
-  return std::all_of(text.begin(), text.end(), [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
+  return std::all_of(text.begin(), text.end(),
+                     [](char c) { return std::isalnum(static_cast<unsigned char>(c)) || c == '_'; });
 }
 
 // What the exercise{} call being read fills in (a light userdata upvalue of the exercise global).
@@ -140,7 +141,9 @@ struct ScriptedExerciseReader {
     for (lua_Integer i = 1; i <= luaL_len(L, list); ++i) {
       const std::string which = "exercise: fixtures[" + std::to_string(i) + "]";
       lua_geti(L, list, i);
-      if (!lua_istable(L, -1)) raise(L, which + " must be a table {name =, mesh =, element =}, got " + type_name(L, -1));
+      if (!lua_istable(L, -1)) {
+        raise(L, which + " must be a table {name =, mesh =, element =}, got " + type_name(L, -1));
+      }
       const int item = lua_gettop(L);
       check_fields(L, item, which.c_str(), {"name", "mesh", "element", "points"});
       ScriptedFixture fixture;

@@ -19,7 +19,9 @@ std::string leading_line(const std::string& error) {
   return end > lua + 5 ? error.substr(0, end) : "";
 }
 
-std::string plural(size_t n, const char* one, const char* many) { return std::to_string(n) + " " + (n == 1 ? one : many); }
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
 
 }  // namespace
 

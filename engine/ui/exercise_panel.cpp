@@ -204,7 +204,9 @@ std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows) {
   const std::vector<FieldChange> mine_changes = diff(*before, *mine);
   const std::vector<FieldChange> reference_changes = diff(*before, *reference);
   // Fields of an element both deleted say nothing (the dead elements' fields are left as they were).
-  const auto dead_in_both = [&](const FieldChange& c) { return !mine->alive(c.element) && !reference->alive(c.element); };
+  const auto dead_in_both = [&](const FieldChange& c) {
+    return !mine->alive(c.element) && !reference->alive(c.element);
+  };
   for (const FieldChange& change : mine_changes) {
     if (rows.size() >= max_rows) break;
     if (dead_in_both(change)) continue;

@@ -1,8 +1,8 @@
 // Lessons in the real window under Xvfb: `meshedit lessons/welcome.lua` opens the lesson panel on its first
 // step; keys, a click on a vertex and Next reach the lesson through the same handlers a student uses, the
 // lesson's highlight and label are drawn, and a broken lesson shows its file:line without taking the window.
-// Lesson 6's "Your turn: Shift+L" step follows the app's own Loop phases, one Shift+L at a time. The asking demo's
-// questions are answered wrong, then right, through the panel's actions and clicks in the view, with the feedback, the
+// Lesson 6's "The app's phases: Shift+L" step follows the app's own Loop phases, one Shift+L at a time. The asking
+// demo's questions are answered wrong, then right, through the panel's actions and clicks in the view, with the feedback, the
 // answers, the arrows and the live text on screen.
 #include <gtest/gtest.h>
 

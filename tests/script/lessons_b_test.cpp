@@ -328,7 +328,7 @@ TEST(LessonsB, ShiftLStepChecksEveryPhaseAndStartsAgainOnAnotherEdit) {
   HeadlessHost host;
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("6_loop_subdivision")));
-  runner.go_to(step_index(runner, "Your turn: Shift+L"));
+  runner.go_to(step_index(runner, "The app's phases: Shift+L"));
   const LessonEvent shift_l = LessonEvent::key("shift+L");
   ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Key);
   EXPECT_EQ(runner.waiting_for().hint, "Press Shift+L: phase 1 of 4, compute new positions");

@@ -16,7 +16,7 @@ return {
     {click = "v0", feedback = "click an edge"}, {click = "e19"} },
   ["Phase 4: move"] = { {choose = "It is only faster", feedback = "not about speed"},
     {choose = "The neighbours have changed"} },
-  ["Your turn: Shift+L"] = {
+  ["The app's phases: Shift+L"] = {
     {loop_phase = true}, {key = "shift+L"},  -- 1: compute the new positions
     {loop_phase = true}, {key = "shift+L"},  -- 2: split every original edge
     {loop_phase = true}, {key = "shift+L"},  -- 3: flip
