@@ -19,8 +19,8 @@
 // - Every run is a YourTurnVerdict in LessonScript::your_turns, with the exercise and the input it ran on (the copy
 //   above), so the window can show the same run in the Exercises tab; a right one is also an Answered block (the
 //   panel keeps it, as a question answered right). A wrong one leaves the step waiting (LessonWait::Kind::YourTurn,
-//   with the diagnosis as its feedback) until the file's stamp (script/file_stamp.h) changes; the runner reads it at most every
-//   kStudentFileCheckSeconds.
+//   with the diagnosis as its feedback) until the file's stamp (script/file_stamp.h) changes; the runner reads it at
+//   most every kStudentFileCheckSeconds.
 // - Bad arguments are Lua errors at the lesson's line ("lesson.lua:12: your_turn: ..."), like every lesson call.
 #pragma once
 
