@@ -257,6 +257,11 @@ int api_await(lua_State* L) {
   lua_getfield(L, 1, "hint");
   if (lua_type(L, -1) == LUA_TSTRING) wait.hint = lua_tostring(L, -1);
   lua_pop(L, 1);
+  if (wait.hint.empty()) {  // an exercise defined in Lua brings its own
+    if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(last.exercise)) {
+      wait.hint = scripted->hint();
+    }
+  }
   for (const YourTurnVerdict& verdict : script.your_turns) wait.tries += verdict.right ? 0 : 1;
   wait.watched_file = last.path;
   wait.watched_stamp = last.stamp;

@@ -18,6 +18,7 @@ namespace {
 // Colours from the theme's palette (core/palette.h).
 ImVec4 failed_colour() { return im_colour(ui_palette().error); }
 ImVec4 passed_colour() { return im_colour(ui_palette().ok); }
+ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }  // as the lesson panel's hints
 
 void text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
 
@@ -80,6 +81,14 @@ void draw_report(const ExerciseRun& run) {
     if (report.total_differences > report.differences.size())
       text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
     ImGui::TreePop();
+  }
+  if (!report.equal) {  // an instructor's exercise brings its own hint
+    if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(run.exercise);
+        scripted && !scripted->hint().empty()) {
+      ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
+      text("Hint: " + scripted->hint());
+      ImGui::PopStyleColor();
+    }
   }
   if (!report.notes.empty() && ImGui::TreeNode("notes", "notes (%zu)", report.notes.size())) {
     for (const std::string& line : report.notes) text("- " + line);

@@ -16,6 +16,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "script/exercises.h"
+#include "script/headless_host.h"
 #include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
 #include "script/scripted_exercise.h"
@@ -175,6 +176,27 @@ end)
   EXPECT_NE(out2.str().find("  > your turn collapse.lua: wrong: the vertex that remains is still where a was"),
             std::string::npos)
       << out2.str();
+}
+
+// A your_turn without a hint of its own shows the definition's under a wrong answer.
+TEST(ScriptedExercise, AWaitingYourTurnShowsTheDefinitionsHint) {
+  const Exercise id = collapse_exercise();
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  fs::copy_file(buggy(), dir / "student" / "collapse.lua");
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  ASSERT_TRUE(runner.load(write(dir, "lesson.lua", R"lua(lesson { title = "Collapse" }
+step("Your turn", function()
+  your_turn { exercise = "collapse", mesh = meshedit.icosahedron(), element = "e0" }
+end)
+)lua"))) << runner.error();
+  const LessonWait& wait = runner.waiting_for();
+  ASSERT_EQ(wait.kind, LessonWait::Kind::YourTurn) << runner.error();
+  EXPECT_EQ(wait.hint, scripted_exercise(id)->hint());
+  EXPECT_EQ(wait.hint.rfind("Read every handle first (h0 to h5, a to d, t2 to t5)", 0), 0u) << wait.hint;
+  EXPECT_EQ(wait.feedback.rfind("the vertex that remains is still where a was", 0), 0u) << wait.feedback;
 }
 
 TEST(ScriptedExercise, ABrokenDefinitionIsNamedAtItsLine) {
