@@ -7,13 +7,12 @@
 
 #include "core/loop_rules.h"
 #include "core/value_format.h"
+#include "script/loop_diagnosis_support.h"
 
 namespace meshedit {
 namespace {
 
-bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
-
-double course_u(size_t n) { return n == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * double(n)); }
+using namespace loop_diagnosis;
 
 // A boundary vertex's neighbours: the two along the boundary, and all of them (their count and sum).
 struct BoundaryRing {
@@ -77,25 +76,12 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
   return out;
 }
 
-// The halfedge of `mesh` from a to b, if a and b are joined.
-HalfedgeId halfedge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
-  HalfedgeId found;
-  mesh.for_each_outgoing(a, [&](HalfedgeId h) {
-    if (mesh.vertex(mesh.twin(h)) == b) found = h;
-  });
-  return found;
-}
-
 std::vector<std::string> edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance) {
   Tally across, without_d, other;
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
     if (w.index < old_capacity) continue;
-    std::vector<VertexId> old_neighbours;
-    yours.for_each_outgoing(w, [&](HalfedgeId h) {
-      const VertexId x = yours.vertex(yours.twin(h));
-      if (x.index < old_capacity && before.alive(x)) old_neighbours.push_back(x);
-    });
+    const std::vector<VertexId> old_neighbours = original_neighbours(before, yours, w);
     for (size_t i = 0; i < old_neighbours.size(); ++i) {
       for (size_t j = i + 1; j < old_neighbours.size(); ++j) {
         HalfedgeId inside = halfedge_between(before, old_neighbours[i], old_neighbours[j]);

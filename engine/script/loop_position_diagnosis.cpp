@@ -9,13 +9,12 @@
 #include <glm/geometric.hpp>
 
 #include "core/value_format.h"
+#include "script/loop_diagnosis_support.h"
 
 namespace meshedit {
 namespace {
 
-bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
-
-double course_u(size_t n) { return n == 3 ? 3.0 / 16.0 : 3.0 / (8.0 * double(n)); }
+using namespace loop_diagnosis;
 
 double loop_original_u(size_t n) {
   const double c = 3.0 / 8.0 + 0.25 * std::cos(2.0 * std::numbers::pi / double(n));
@@ -37,15 +36,6 @@ std::optional<Ring> interior_ring(const HalfedgeMesh& mesh, VertexId v) {
   });
   if (!ok || boundary || ring.n == 0) return std::nullopt;
   return ring;
-}
-
-// The halfedge of `mesh` from a to b, if a and b are joined.
-HalfedgeId halfedge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
-  HalfedgeId found;
-  mesh.for_each_outgoing(a, [&](HalfedgeId h) {
-    if (mesh.vertex(mesh.twin(h)) == b) found = h;
-  });
-  return found;
 }
 
 std::string vertex_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& yours,
@@ -104,11 +94,7 @@ std::string edge_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& 
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
     if (w.index < old_capacity) continue;
-    std::vector<VertexId> old_neighbours;
-    yours.for_each_outgoing(w, [&](HalfedgeId h) {
-      const VertexId x = yours.vertex(yours.twin(h));
-      if (x.index < old_capacity && before.alive(x)) old_neighbours.push_back(x);
-    });
+    const std::vector<VertexId> old_neighbours = original_neighbours(before, yours, w);
     bool done = false;
     for (size_t i = 0; i < old_neighbours.size() && !done; ++i) {
       for (size_t j = i + 1; j < old_neighbours.size() && !done; ++j) {
