@@ -67,6 +67,10 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
     if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
     if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
+    if (ImGui::MenuItem("Triangulate")) {
+      exercises_.finish_replay(doc_);
+      triangulate_all(doc_, selection_);
+    }
     char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
     std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
     if (ImGui::MenuItem(phase, "Shift+L")) handle_key(GLFW_KEY_L, {false, true});

@@ -9,7 +9,7 @@
 //    (copies of the positions) used by that face alone;
 // 4. per connected component (faces joined by edges of exactly two faces), faces are re-oriented to agree by a
 //    breadth-first walk from the component's lowest face; whichever orientation more faces already had is kept.
-//    A component that cannot be oriented (a Möbius strip) is reported and left as it is;
+//    A component that cannot be oriented (a Moebius strip) is reported and left as it is;
 // 5. a vertex whose faces form several fans (joined through edges of exactly two faces) keeps the fan with the
 //    lowest face; each other fan gets a new vertex (a bow-tie split);
 // 6. vertices no face uses any more (or ever did) are dropped.
@@ -18,7 +18,8 @@
 // - Surviving faces keep their order; surviving original vertices keep their order, followed by the new vertices
 //   of steps 3 and 5 in the order they were made. Positions are never moved.
 // - The report names original vertex and face numbers (what the file says); a new vertex is named by its number in
-//   the repaired polygons ("vertex 12 was a bow-tie: split into 12 and new vertex 40 (faces 3, 4 moved)"). A mesh with nothing to repair gives an empty report and identical polygons.
+//   the repaired polygons ("vertex 12 was a bow-tie: split into 12 and new vertex 40 (faces 3, 4 moved)").
+//   A mesh with nothing to repair gives an empty report and identical polygons.
 // - Nothing here builds a half-edge mesh: build_halfedge_mesh keeps refusing unrepaired input.
 #pragma once
 

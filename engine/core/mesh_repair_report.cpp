@@ -50,7 +50,8 @@ std::string RepairReport::summary() const {
   if (reversed_faces) parts.push_back(count(reversed_faces, "face reversed", "faces reversed"));
   if (dropped_vertices) parts.push_back(count(dropped_vertices, "unused vertex dropped", "unused vertices dropped"));
   if (non_orientable_components) {
-    parts.push_back(count(non_orientable_components, "one-sided part left unoriented", "one-sided parts left unoriented"));
+    parts.push_back(
+        count(non_orientable_components, "one-sided part left unoriented", "one-sided parts left unoriented"));
   }
   std::string text = "repaired: ";
   for (size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : "") + parts[i];
