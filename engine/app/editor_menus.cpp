@@ -48,6 +48,7 @@ void EditorApp::draw_menu_bar() {
       }
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
     if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
     if (ImGui::MenuItem("Screenshot", "P")) request_screenshot("meshedit-screenshot.png");
     ImGui::Separator();
@@ -194,6 +195,21 @@ void EditorApp::draw_open_panel() {
     if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
   }
   end_dialog(show_open_panel_);
+}
+
+// The changes File > Open a repaired copy made: the summary, then one line per change in the file's numbers.
+void EditorApp::draw_repairs_panel() {
+  const float em = ImGui::GetFontSize();
+  if (!begin_dialog("Repairs", show_repairs_, ImVec2(36 * em, 20 * em))) return;
+  for (size_t i = 0; i < repairs_shown_.size(); ++i) {
+    if (i == 0) {
+      ImGui::TextWrapped("%s", repairs_shown_[i].c_str());
+      ImGui::Separator();
+    } else {
+      ImGui::BulletText("%s", repairs_shown_[i].c_str());
+    }
+  }
+  end_dialog(show_repairs_);
 }
 
 void EditorApp::draw_help_panel() {
