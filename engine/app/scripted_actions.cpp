@@ -13,7 +13,7 @@ namespace {
 const std::map<std::string, int>& arities() {
   static const std::map<std::string, int> table = {
       {"frames", 1},          {"key", 1},           {"select", 1},         {"click", 2},
-      {"hover", 2},           {"open", 1}, {"open-repaired", 0}, {"triangulate", 0},          {"save", 1},           {"screenshot", 1},
+      {"hover", 2},           {"open", 1},          {"save", 1},           {"screenshot", 1},
       {"expect-selected", 1}, {"expect-field", 3},  {"expect-changed", 2}, {"expect-message", -1},
       {"expect-valid", 0},    {"quit", 0},           {"console", -1},       {"expect-console", -1},
       {"lesson-next", 0},     {"lesson-back", 0},   {"lesson-button", -1}, {"expect-lesson-step", 2},
@@ -23,7 +23,7 @@ const std::map<std::string, int>& arities() {
       {"window-size", 2},     {"up-axis", 1},       {"expect-up-axis", -1},
       {"animate-edits", 1},   {"lesson-choose", -1},    {"lesson-answer", -1},    {"expect-lesson-feedback", -1},
       {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},     {"lesson-show-mine", 0},
-      {"expect-exercise-run", -1},
+      {"expect-exercise-run", -1}, {"open-repaired", 0}, {"triangulate", 0},
   };
   return table;
 }
