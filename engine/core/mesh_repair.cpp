@@ -7,7 +7,6 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
-#include <unordered_map>
 
 #include <glm/geometric.hpp>
 
@@ -63,15 +62,27 @@ uint64_t edge_key(uint32_t a, uint32_t b) {
   return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
 }
 
+// Every kept face's edge uses, sorted by edge key, then face: bucketed by the edge's lower vertex (linear), then each
+// small bucket sorted.
 std::vector<EdgeUse> edge_uses(const Work& w) {
-  std::vector<EdgeUse> uses;
-  uses.reserve(w.indices.size());
+  std::vector<uint32_t> start(w.positions.size() + 1, 0);
   for (uint32_t f = 0; f < w.num_faces(); ++f) {
     if (!w.kept[f]) continue;
     const uint32_t n = w.size(f);
-    for (uint32_t c = 0; c < n; ++c) uses.push_back({edge_key(w.at(f, c), w.at(f, (c + 1) % n)), f, c});
+    for (uint32_t c = 0; c < n; ++c) ++start[std::min(w.at(f, c), w.at(f, (c + 1) % n)) + 1];
   }
-  std::sort(uses.begin(), uses.end());
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<EdgeUse> uses(start.back());
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    const uint32_t n = w.size(f);
+    for (uint32_t c = 0; c < n; ++c) {
+      const uint32_t a = w.at(f, c), b = w.at(f, (c + 1) % n);
+      uses[fill[std::min(a, b)]++] = {edge_key(a, b), f, c};
+    }
+  }
+  for (size_t v = 0; v + 1 < start.size(); ++v) std::sort(uses.begin() + start[v], uses.begin() + start[v + 1]);
   return uses;
 }
 
@@ -93,9 +104,10 @@ bool goes_up(const Work& w, const EdgeUse& u) {
 
 void drop_bad_faces(Work& w) {
   std::vector<uint32_t> sorted;
+  std::vector<glm::dvec3> corners;
   for (uint32_t f = 0; f < w.num_faces(); ++f) {
     const uint32_t n = w.size(f);
-    const std::string face = "face " + std::to_string(f);
+    const std::string face = "face " + std::to_string(f);  // short: no allocation
     std::string why;
     for (uint32_t c = 0; c < n && why.empty(); ++c) {
       if (w.at(f, c) >= w.original_vertices) {
@@ -111,7 +123,7 @@ void drop_bad_faces(Work& w) {
       if (repeat != sorted.end()) why = face + " repeats vertex " + std::to_string(*repeat) + ": dropped";
     }
     if (why.empty()) {
-      std::vector<glm::dvec3> corners;
+      corners.clear();
       double perimeter = 0;
       for (uint32_t c = 0; c < n; ++c) {
         corners.push_back(w.positions[w.at(f, c)]);
@@ -128,32 +140,52 @@ void drop_bad_faces(Work& w) {
   }
 }
 
-struct CornersHash {
-  size_t operator()(const std::vector<uint32_t>& v) const {
-    uint64_t h = 1469598103934665603ull;
-    for (uint32_t x : v) h = (h ^ x) * 1099511628211ull;
-    return size_t(h);
-  }
-};
+// A face's corners sorted (the same set of corners in any order or direction gives the same list).
+void sorted_corners(const Work& w, uint32_t f, std::vector<uint32_t>& out) {
+  out.assign(w.indices.begin() + w.offsets[f], w.indices.begin() + w.offsets[f + 1]);
+  std::sort(out.begin(), out.end());
+}
 
 void drop_repeated_faces(Work& w) {
-  std::unordered_map<std::vector<uint32_t>, uint32_t, CornersHash> first;
-  first.reserve(w.num_faces());
-  std::vector<uint32_t> corners;
+  // Faces ordered by a hash of their sorted corners, then by number: repeats are neighbours, the first one first.
+  std::vector<std::pair<uint64_t, uint32_t>> keyed;
+  keyed.reserve(w.num_faces());
+  std::vector<uint32_t> corners, other;
   for (uint32_t f = 0; f < w.num_faces(); ++f) {
     if (!w.kept[f]) continue;
-    corners.assign(w.indices.begin() + w.offsets[f], w.indices.begin() + w.offsets[f + 1]);
-    std::sort(corners.begin(), corners.end());
-    const auto [it, inserted] = first.emplace(corners, f);
-    if (inserted) continue;
+    sorted_corners(w, f, corners);
+    uint64_t h = 1469598103934665603ull;
+    for (uint32_t x : corners) h = (h ^ x) * 1099511628211ull;
+    keyed.emplace_back(h, f);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::pair<uint32_t, uint32_t>> repeats;  // (face, the earlier face it repeats)
+  for (size_t i = 0; i < keyed.size();) {
+    size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    for (size_t k = i + 1; k < j; ++k) {  // rare: only faces whose hashes collide or repeat
+      sorted_corners(w, keyed[k].second, corners);
+      for (size_t e = i; e < k; ++e) {
+        sorted_corners(w, keyed[e].second, other);
+        if (other == corners) {
+          repeats.emplace_back(keyed[k].second, keyed[e].second);
+          break;
+        }
+      }
+    }
+    i = j;
+  }
+  std::sort(repeats.begin(), repeats.end());
+  for (const auto& [f, earlier] : repeats) {
     w.kept[f] = 0;
     ++w.report.dropped_repeated_faces;
-    w.say("face " + std::to_string(f) + " repeated face " + std::to_string(it->second) + ": dropped");
+    w.say("face " + std::to_string(f) + " repeated face " + std::to_string(earlier) + ": dropped");
   }
 }
 
-void detach_extra_faces(Work& w) {
-  const std::vector<EdgeUse> uses = edge_uses(w);
+// Returns whether any face was detached (so `uses` no longer describes the faces).
+bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
+  const size_t before = w.report.detached_faces;
   for_each_edge(uses, [&](size_t first, size_t last) {
     if (last - first < 3) return;
     const uint32_t a = uint32_t(uses[first].key >> 32), b = uint32_t(uses[first].key);
@@ -192,10 +224,11 @@ void detach_extra_faces(Work& w) {
       });
     }
   });
+  return w.report.detached_faces != before;
 }
 
-void orient_components(Work& w) {
-  const std::vector<EdgeUse> uses = edge_uses(w);
+// `uses` must describe the faces as they are; reversing faces leaves their undirected edges as they were.
+void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
   const uint32_t faces = static_cast<uint32_t>(w.num_faces());
   // Neighbours across edges of exactly two faces, with whether the two use the edge the same way.
   std::vector<uint32_t> degree(faces + 1, 0);
@@ -265,13 +298,14 @@ uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
   return x;
 }
 
-void split_bowties(Work& w) {
-  const std::vector<EdgeUse> uses = edge_uses(w);
+// `uses` gives each face's undirected edges (its corner numbers may be stale after orient_components).
+void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
   std::vector<uint32_t> parent(w.indices.size());
   std::iota(parent.begin(), parent.end(), 0u);
   const auto corner_at = [&](const EdgeUse& u, uint32_t v) {
-    const uint32_t n = w.size(u.face);
-    return w.offsets[u.face] + (w.at(u.face, u.corner) == v ? u.corner : (u.corner + 1) % n);
+    uint32_t i = w.offsets[u.face];
+    while (w.indices[i] != v) ++i;  // v is a corner of the face: the edge's key names two of them
+    return i;
   };
   for_each_edge(uses, [&](size_t first, size_t last) {
     if (last - first != 2) return;
@@ -373,9 +407,10 @@ RepairResult repair_polygons(const PolygonMesh& polygons) {
   w.original_vertices = polygons.num_vertices();
   drop_bad_faces(w);
   drop_repeated_faces(w);
-  detach_extra_faces(w);
-  orient_components(w);
-  split_bowties(w);
+  std::vector<EdgeUse> uses = edge_uses(w);
+  if (detach_extra_faces(w, uses)) uses = edge_uses(w);
+  orient_components(w, uses);
+  split_bowties(w, uses);
   RepairResult result;
   FinalNumbers final;
   result.polygons = finish(w, final);

@@ -2,6 +2,7 @@
 // numbers, and the result builds and validates; a mesh with nothing wrong comes back identical with no report.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <vector>
 
@@ -95,9 +96,10 @@ TEST(MeshRepair, RepeatedFaceIsDropped) {
   PolygonMesh p = make_cube();
   const std::vector<uint32_t> face3(p.face(3).begin(), p.face(3).end());
   p.add_face({face3[1], face3[0], face3[2]});  // face 12: face 3's corners, the other way round
+  p.add_face({face3[2], face3[0], face3[1]});  // face 13: again
   const RepairResult r = repair_and_build(p);
-  EXPECT_EQ(r.report.changes, Strings{"face 12 repeated face 3: dropped"});
-  EXPECT_EQ(r.report.summary(), "repaired: 1 repeated face dropped");
+  EXPECT_EQ(r.report.changes, (Strings{"face 12 repeated face 3: dropped", "face 13 repeated face 3: dropped"}));
+  EXPECT_EQ(r.report.summary(), "repaired: 2 repeated faces dropped");
   EXPECT_EQ(r.polygons.positions, make_cube().positions);
   EXPECT_EQ(faces_of(r.polygons), faces_of(make_cube()));
 }
@@ -182,6 +184,31 @@ TEST(MeshRepair, SeveralDefectsAreReportedWithTheOriginalNumbers) {
   ASSERT_EQ(r.polygons.num_vertices(), 7u);
   EXPECT_EQ(r.polygons.positions[6], p.positions[1]);
   EXPECT_EQ(faces_of(r.polygons), (std::vector<std::vector<uint32_t>>{{0, 1, 2}, {6, 3, 4}, {3, 5, 4}}));
+}
+
+TEST(MeshRepair, AMoebiusStripIsReportedAndLeftAsItIs) {
+  // Six quads (as triangles) around a circle, the last one joined with a half twist.
+  PolygonMesh p;
+  for (int i = 0; i < 6; ++i) {
+    const double t = 2 * M_PI * i / 6, half = t / 2;
+    for (double side : {-0.3, 0.3}) {
+      p.add_vertex({std::cos(t) * (1 + side * std::cos(half)), std::sin(t) * (1 + side * std::cos(half)),
+                    side * std::sin(half)});
+    }
+  }
+  for (uint32_t i = 0; i < 6; ++i) {
+    const uint32_t a = 2 * i, b = 2 * i + 1;
+    const uint32_t c = i < 5 ? 2 * i + 3 : 0, d = i < 5 ? 2 * i + 2 : 1;  // the twist: 0 and 1 swap sides
+    p.add_face({a, b, c});
+    p.add_face({a, c, d});
+  }
+  EXPECT_THROW(build_halfedge_mesh(p), MeshError);
+  const RepairResult r = repair_polygons(p);
+  EXPECT_EQ(r.report.changes, Strings{"the 12 faces joined to face 0 cannot all agree (a one-sided surface, like a "
+                                      "Moebius strip): left as they are"});
+  EXPECT_EQ(r.report.non_orientable_components, 1u);
+  EXPECT_EQ(r.polygons.indices, p.indices);
+  EXPECT_THROW(build_halfedge_mesh(r.polygons), MeshError);
 }
 
 TEST(MeshRepair, AGoodMeshIsLeftAsItIs) {
