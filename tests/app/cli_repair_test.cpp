@@ -6,6 +6,8 @@
 
 #include <unistd.h>
 
+#include <nlohmann/json.hpp>
+
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "core/validate.h"
@@ -128,6 +130,12 @@ TEST(CliInfo, ABuildableFileWithUnusedVerticesMentionsTheRepair) {
   ASSERT_EQ(run.status, 0) << run.err;
   EXPECT_TRUE(contains(run.out, "meshedit repair would: repaired: 1 unused vertex dropped")) << run.out;
   EXPECT_TRUE(contains(run.out, "    vertex 3 was used by no face: dropped")) << run.out;
+  const CommandRun json = meshedit({"info", (dir / "extra.obj").string(), "--json"});
+  ASSERT_EQ(json.status, 0) << json.err;
+  const nlohmann::json info = nlohmann::json::parse(json.out);
+  EXPECT_EQ(info["repair"]["summary"], "repaired: 1 unused vertex dropped");
+  EXPECT_EQ(info["repair"]["changes"], nlohmann::json::array({"vertex 3 was used by no face: dropped"}));
+  EXPECT_EQ(info["faces"], 1);
 }
 
 }  // namespace

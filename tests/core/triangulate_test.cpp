@@ -234,6 +234,16 @@ TEST(Triangulate, HalfedgeMeshOfQuadsIsReplacedByTriangles) {
   for (FaceId f : mesh.faces()) EXPECT_EQ(mesh.degree(f), 3u);
 }
 
+TEST(Triangulate, BrokenHalfedgeMeshIsRefusedUnchanged) {
+  HalfedgeMesh mesh = build_halfedge_mesh(make_cube_quads());
+  mesh.set_next(HalfedgeId(0), HalfedgeId(0));
+  const HalfedgeMesh before = mesh;
+  const OpResult<TriangulationReport> done = triangulate_mesh(mesh);
+  EXPECT_FALSE(done.ok());
+  EXPECT_EQ(done.check.reason.rfind("cannot triangulate: ", 0), 0u) << done.check.reason;
+  EXPECT_TRUE(mesh.same_as(before));
+}
+
 TEST(Triangulate, TriangleMeshIsLeftUntouched) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_cube());
   const HalfedgeMesh before = mesh;
