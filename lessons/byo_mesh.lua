@@ -116,7 +116,7 @@ step("Subdivide it", function()
   local mesh = mesh_on_screen()
   if most_sides(mesh) > 3 then
     say("Loop subdivision needs triangles, and this mesh has faces with " .. most_sides(mesh) .. " sides. "
-      .. "Triangulate it in Blender and open it again, then come back to this step (Back, Next).")
+      .. "Triangulate it (Edit > Triangulate), then come back to this step (Back, Next).")
     return
   end
   say("Press **L** to subdivide your mesh (" .. counts(mesh) .. "). Each step makes every triangle four, so on a "

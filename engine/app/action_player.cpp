@@ -122,6 +122,10 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     write_file(args[0], layout_json(app));
   } else if (a.verb == "open") {
     if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
+  } else if (a.verb == "open-repaired") {
+    if (!app.open_repaired()) throw std::runtime_error(app.document().message.text);
+  } else if (a.verb == "triangulate") {
+    if (!triangulate_all(app.document(), app.selection()).ok) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "save") {
     if (!app.save(args[0])) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "orbit") {

@@ -27,6 +27,9 @@ constexpr const char* kUsage =
     "  convert IN OUT                       convert between mesh formats (.obj .dae .gltf .glb .bez -> .obj .gltf .glb)\n"
     "  subdivide IN -n LEVELS [--weights course|loop] -o OUT\n"
     "                                       Loop subdivision, LEVELS times\n"
+    "  triangulate IN -o OUT                every face of more than three corners split into triangles\n"
+    "  repair IN -o OUT                     split bow-tie vertices, detach extra faces at an edge, drop repeated\n"
+    "                                       and degenerate faces and unused vertices, re-orient faces; lists each\n"
     "  render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
     "                                       a picture without a display (EGL); also --vertices --halfedges\n"
     "  run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
@@ -44,7 +47,8 @@ constexpr const char* kUsage =
 // run_cli reports as unknown.
 std::string command_name(const std::vector<std::string>& args) {
   static const std::set<std::string> commands = {"demo",  "info", "convert", "subdivide", "render", "run",
-                                                 "lesson", "grade", "help", "-h",       "--help", "--version"};
+                                                 "lesson", "grade", "help", "-h",       "--help", "--version",
+                                                 "triangulate", "repair"};
   if (args.empty()) return "window";
   const std::string& first = args.front();
   if (commands.count(first)) return first;
@@ -72,6 +76,8 @@ int run_cli(int argc, char** argv) {
     if (command == "info") return run_info(args, std::cout);
     if (command == "convert") return run_convert(args, std::cout);
     if (command == "subdivide") return run_subdivide(args, std::cout);
+    if (command == "triangulate") return run_triangulate(args, std::cout);
+    if (command == "repair") return run_repair(args, std::cout);
     if (command == "render") return run_render(args, std::cout);
     if (command == "run") return run_run(args, std::cout);
     if (command == "grade") return run_grade(args, std::cout);

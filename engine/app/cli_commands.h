@@ -21,6 +21,8 @@ int run_demo(const std::vector<std::string>& args, std::ostream& out);
 int run_info(const std::vector<std::string>& args, std::ostream& out);
 int run_convert(const std::vector<std::string>& args, std::ostream& out);
 int run_subdivide(const std::vector<std::string>& args, std::ostream& out);
+int run_triangulate(const std::vector<std::string>& args, std::ostream& out);
+int run_repair(const std::vector<std::string>& args, std::ostream& out);
 int run_render(const std::vector<std::string>& args, std::ostream& out);
 // A Lua script with no window; ScriptError (its file:line message) when the script fails.
 int run_run(const std::vector<std::string>& args, std::ostream& out);

@@ -1,11 +1,14 @@
 // `meshedit info FILE [--json]`: what a file holds. Meshes get counts, topology and validation;
 // patch files their patch count and the stats of their tessellation; curve files their point count.
+// A mesh also gets what `meshedit repair` would change (core/mesh_repair.h), when anything; a mesh that does not
+// build prints that on stdout and still fails with the builder's message on stderr.
 #include <nlohmann/json.hpp>
 
 #include "app/cli_commands.h"
 #include "app/mesh_loading.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
+#include "core/mesh_repair.h"
 #include "core/mesh_stats.h"
 #include "core/validate.h"
 
@@ -13,6 +16,20 @@ namespace meshedit {
 namespace {
 
 constexpr size_t kProblemsShown = 5;
+constexpr size_t kRepairsShown = 20;
+
+nlohmann::json repair_json(const RepairReport& report) {
+  nlohmann::json changes = nlohmann::json::array();
+  for (size_t i = 0; i < report.changes.size() && i < kRepairsShown; ++i) changes.push_back(report.changes[i]);
+  return {{"summary", report.summary()}, {"change_count", report.changes.size()}, {"changes", changes}};
+}
+
+void print_repair(const nlohmann::json& r, std::ostream& out) {
+  out << "  meshedit repair would: " << r["summary"].get<std::string>() << "\n";
+  for (const auto& change : r["changes"]) out << "    " << change.get<std::string>() << "\n";
+  const size_t shown = r["changes"].size(), total = r["change_count"].get<size_t>();
+  if (total > shown) out << "    ... and " << total - shown << " more\n";
+}
 
 nlohmann::json mesh_json(const HalfedgeMesh& mesh, size_t unused_vertices) {
   const MeshStats s = compute_stats(mesh);
@@ -95,8 +112,19 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
     }
     case FileKind::Mesh: {
       result["kind"] = "mesh";
-      const LoadedMesh loaded = build_from_file(file.mesh, path);
-      result.update(mesh_json(loaded.mesh, loaded.unused_vertices));
+      const RepairReport repair = repair_polygons(file.mesh).report;
+      if (!repair.empty()) result["repair"] = repair_json(repair);
+      try {
+        const LoadedMesh loaded = build_from_file(file.mesh, path);
+        result.update(mesh_json(loaded.mesh, loaded.unused_vertices));
+      } catch (const MeshError&) {
+        if (json) out << result.dump(2) << "\n";
+        if (!json && result.contains("repair")) {
+          out << path.string() << ": mesh that is not a manifold\n";
+          print_repair(result["repair"], out);
+        }
+        throw;
+      }
       break;
     }
   }
@@ -118,6 +146,7 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
     }
   } else {
     print_mesh(result, out, "  ");
+    if (result.contains("repair")) print_repair(result["repair"], out);
   }
   return 0;
 }

@@ -115,6 +115,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   draw_columns();
   draw_open_panel();
   draw_help_panel();
+  draw_repairs_panel();
 }
 
 void EditorApp::draw_mesh_view() {

@@ -88,6 +88,12 @@ class EditorApp {
   // Opens any supported file: shows it, names it in the title and puts it first in the recent list. On failure
   // keeps all of them as they were and reports the error. Returns whether it opened.
   bool open(const std::filesystem::path& path);
+  // Opens a repaired copy (core/mesh_repair.h) of the last mesh file open() refused as not a manifold, whole or
+  // nothing as open(): the status line gives the repair's summary and the Repairs dialog lists every change with the
+  // file's numbers. The copy is named "FILE (repaired)"; the file itself is not touched. Returns whether it opened.
+  bool open_repaired();
+  // The file open_repaired() would repair ("" when the last file open() tried opened, or failed otherwise).
+  const std::string& repairable_file() const { return repairable_path_; }
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
   // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);
@@ -237,6 +243,9 @@ class EditorApp {
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
+  void draw_repairs_panel();
+  // After open() failed: remembers `path` for open_repaired() when `repairable`, and says so in the message.
+  void offer_repair(const std::filesystem::path& path, bool repairable) noexcept;
   void message(Severity severity, const std::string& text);
   void fit_camera();  // to what the view shows: the mesh, or the patches' surface
   void fit_camera(const BoundingBox& bounds);
@@ -305,6 +314,9 @@ class EditorApp {
 
   bool show_open_panel_ = false;
   bool show_help_ = false;
+  std::string repairable_path_;            // the mesh file open() last refused as not a manifold
+  std::vector<std::string> repairs_shown_;  // the Repairs dialog: the summary, then every change
+  bool show_repairs_ = false;
   std::string open_path_input_;
   std::string save_path_input_;
   std::deque<std::string> recent_;

@@ -9,15 +9,20 @@
 // renderer comes last: it is a view that every frame updates from the document, so when it cannot take the new mesh at
 // once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
 // frame guard, which reports what stops it.
+// A mesh file the builder refuses as not a manifold is remembered, and File > Open a repaired copy opens it repaired
+// (core/mesh_repair.h), whole or nothing in the same way, listing the changes in the Repairs dialog.
 // Saving makes the new recent list and the message before it writes the file, and only swaps them in after.
 #include <deque>
 #include <new>
 #include <optional>
+#include <stdexcept>
 #include <type_traits>
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "core/mesh_build.h"
+#include "core/mesh_error.h"
+#include "core/mesh_repair.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
 #include "render/mesh_geometry.h"
@@ -124,6 +129,7 @@ void EditorApp::show_patches(const std::vector<BezierPatch>& patches) {
 }
 
 bool EditorApp::open(const std::filesystem::path& path) {
+  bool not_a_manifold = false;
   try {
     if (path.extension() == ".lua") return open_lesson(path);
     exercises_.finish_replay(doc_);
@@ -139,7 +145,9 @@ bool EditorApp::open(const std::filesystem::path& path) {
         patches = tessellated_view(file.patches);
         break;
       case FileKind::Mesh:
+        not_a_manifold = true;
         mesh = build_from_file(file.mesh, path).mesh;
+        not_a_manifold = false;
     }
     std::string title = window_title(path.filename().string());
     std::string name = path.string();
@@ -156,10 +164,53 @@ bool EditorApp::open(const std::filesystem::path& path) {
     title_.swap(title);
     title_names_lesson_ = false;
     recent_.swap(recent);
+    repairable_path_.clear();
     set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
     // Nothing was switched yet: the window shows what it showed. The report needs no memory, so nothing escapes.
+    report_exception(doc_, e);
+    offer_repair(path, not_a_manifold && dynamic_cast<const MeshError*>(&e) != nullptr);
+    return false;
+  }
+}
+
+void EditorApp::offer_repair(const std::filesystem::path& path, bool repairable) noexcept {
+  try {
+    repairable_path_ = repairable ? path.string() : std::string();
+    if (repairable) doc_.message.text += " (File > Open a repaired copy)";
+  } catch (const std::bad_alloc&) {
+    repairable_path_.clear();  // the refusal's message stays as report_exception left it
+  }
+}
+
+bool EditorApp::open_repaired() {
+  try {
+    if (repairable_path_.empty()) throw std::runtime_error("no file to repair: open one that is not a manifold first");
+    const std::filesystem::path path = repairable_path_;
+    exercises_.finish_replay(doc_);
+    LoadedFile file = load_file(path);
+    if (file.kind != FileKind::Mesh) throw std::runtime_error(path.string() + " is not a mesh file");
+    const RepairResult repaired = repair_polygons(file.mesh);
+    HalfedgeMesh mesh = build_from_file(repaired.polygons, path).mesh;
+    std::vector<std::string> shown{repaired.report.summary()};
+    shown.insert(shown.end(), repaired.report.changes.begin(), repaired.report.changes.end());
+    std::string title = window_title(path.filename().string() + " (repaired)");
+    std::string name = path.string() + " (repaired)";
+    std::string text = "opened a repaired copy of " + path.string() + ": " + repaired.report.summary() +
+                       " (the Repairs dialog lists each change)";
+    // Nothing from here on can fail.
+    file_up_axis_ = file.up_axis;
+    up_axis_choice_ = UpAxisChoice::FromFile;
+    take_mesh(std::move(mesh), std::move(name));
+    title_.swap(title);
+    title_names_lesson_ = false;
+    repairs_shown_.swap(shown);
+    show_repairs_ = true;
+    repairable_path_.clear();
+    set_message(doc_, Severity::Info, std::move(text));
+    return true;
+  } catch (const std::exception& e) {
     report_exception(doc_, e);
     return false;
   }

@@ -48,6 +48,7 @@ void EditorApp::draw_menu_bar() {
       }
       ImGui::EndMenu();
     }
+    if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
     if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
     if (ImGui::MenuItem("Screenshot", "P")) request_screenshot("meshedit-screenshot.png");
     ImGui::Separator();
@@ -67,6 +68,10 @@ void EditorApp::draw_menu_bar() {
     if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
     if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
     if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
+    if (ImGui::MenuItem("Triangulate")) {
+      exercises_.finish_replay(doc_);
+      triangulate_all(doc_, selection_);
+    }
     char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
     std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
     if (ImGui::MenuItem(phase, "Shift+L")) handle_key(GLFW_KEY_L, {false, true});
@@ -190,6 +195,21 @@ void EditorApp::draw_open_panel() {
     if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
   }
   end_dialog(show_open_panel_);
+}
+
+// The changes File > Open a repaired copy made: the summary, then one line per change in the file's numbers.
+void EditorApp::draw_repairs_panel() {
+  const float em = ImGui::GetFontSize();
+  if (!begin_dialog("Repairs", show_repairs_, ImVec2(36 * em, 20 * em))) return;
+  for (size_t i = 0; i < repairs_shown_.size(); ++i) {
+    if (i == 0) {
+      ImGui::TextWrapped("%s", repairs_shown_[i].c_str());
+      ImGui::Separator();
+    } else {
+      ImGui::BulletText("%s", repairs_shown_[i].c_str());
+    }
+  }
+  end_dialog(show_repairs_);
 }
 
 void EditorApp::draw_help_panel() {

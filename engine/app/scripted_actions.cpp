@@ -23,7 +23,7 @@ const std::map<std::string, int>& arities() {
       {"window-size", 2},     {"up-axis", 1},       {"expect-up-axis", -1},
       {"animate-edits", 1},   {"lesson-choose", -1},    {"lesson-answer", -1},    {"expect-lesson-feedback", -1},
       {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},     {"lesson-show-mine", 0},
-      {"expect-exercise-run", -1},
+      {"expect-exercise-run", -1}, {"open-repaired", 0}, {"triangulate", 0},
   };
   return table;
 }

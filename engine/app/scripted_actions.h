@@ -5,6 +5,8 @@
 //   # comment                      frames N            key F | key ctrl+Z | key shift+S
 //   select h12                     click X Y           (view pixels, below)
 //   hover X Y                      open PATH           save PATH           screenshot PATH
+//   open-repaired         (File > Open a repaired copy of the mesh file `open` last refused)
+//   triangulate           (Edit > Triangulate)
 //   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
 //   expect-message TEXT...         expect-valid        quit
 //   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)

@@ -10,6 +10,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
+#include "core/triangulate.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -114,6 +115,8 @@ void apply_operation(HalfedgeMesh& mesh, const RecordedEdit& edit) {
   Check check;
   if (op == "loop_subdivide") {
     check = loop_subdivide(mesh);
+  } else if (op == "triangulate") {
+    check = triangulate_mesh(mesh).check;
   } else if (op == "flip" || op == "split" || op == "collapse") {
     if (edit.element.kind != ElementKind::Edge) refuse(edit, "the element must be an edge");
     const EdgeId e(edit.element.index);

@@ -14,6 +14,7 @@
 #include "core/loop_rules.h"
 #include "core/mesh_ops.h"
 #include "core/quick_check.h"
+#include "core/triangulate.h"
 #include "core/validate.h"
 
 namespace meshedit {
@@ -45,7 +46,7 @@ Check can_loop_subdivide_without_shortcut(const HalfedgeMesh& mesh) {
     const uint32_t sides = mesh.degree(f);
     if (sides != 3) {
       return Check::no(format_id(f) + " has " + std::to_string(sides) +
-                       " sides; Loop subdivision needs triangles");
+                       " sides; Loop subdivision needs triangles; " + kHowToTriangulate);
     }
   }
   // A valid triangle mesh can still hold an edge split() refuses (two faces with the same three corners,

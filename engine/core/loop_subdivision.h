@@ -14,7 +14,8 @@
 //   interior edge point: 3/8 (a + b) + 1/8 (c + d); boundary edge point: (a + b) / 2;
 //   boundary vertex: 3/4 p + 1/8 (left + right boundary neighbours).
 // Refused, changing nothing: a mesh validate() rejects (the reason quotes its first problem) and a mesh
-// with a non-triangle face ("f3 has 4 sides; Loop subdivision needs triangles"), or with an edge split()
+// with a non-triangle face ("f3 has 4 sides; Loop subdivision needs triangles; triangulate first: ..." naming
+// the menu item, the Lua call and the command: triangulate.h), or with an edge split()
 // refuses (two faces with the same three corners), quoting split's reason. An interior vertex's
 // valence n counts its neighbours; a boundary vertex uses only its two neighbours along the boundary loop.
 // Counts, closed or not: V' = V + E, E' = 2E + 3F, F' = 4F (boundary loops stay one per hole).

@@ -1,4 +1,9 @@
-// The functions of the `meshedit` table that make meshes: load, the primitives, grid and from_polygons.
+// The functions of the `meshedit` table that make meshes: load, the primitives, grid, from_polygons and repair.
+//
+//   meshedit.load(path [, {repair = true}]) -> mesh [, report]
+//   meshedit.repair(positions, polygons) -> mesh, report        report = {summary = "...", changes = {"...", ...}}
+// With repair, the polygons go through repair_polygons (core/mesh_repair.h) before building; the report's numbers
+// are the file's (0-based) or, for repair(), the tables' entries minus one, as from_polygons' messages say.
 //
 // Invariants: every mesh made here is a script-made copy charged to the state's storage budget
 // (binding_state.h); from_polygons checks the Lua tables itself and names the offending entry in Lua's 1-based
@@ -10,6 +15,7 @@
 
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
+#include "core/mesh_repair.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
 #include "script/binding_state.h"
@@ -20,8 +26,44 @@
 namespace meshedit {
 namespace {
 
+// Pushes the repair report as {summary = "...", changes = {"...", ...}}.
+void push_repair_report(lua_State* L, const RepairReport& report) {
+  lua_createtable(L, 0, 2);
+  lua_pushstring(L, report.summary().c_str());
+  lua_setfield(L, -2, "summary");
+  lua_createtable(L, static_cast<int>(report.changes.size()), 0);
+  for (size_t i = 0; i < report.changes.size(); ++i) {
+    lua_pushstring(L, report.changes[i].c_str());
+    lua_rawseti(L, -2, static_cast<lua_Integer>(i + 1));
+  }
+  lua_setfield(L, -2, "changes");
+}
+
+// Repairs, builds and pushes the mesh and its report; a build refusal after repair names `what`.
+int push_repaired(lua_State* L, const PolygonMesh& polygons, const std::string& what) {
+  const RepairResult repaired = repair_polygons(polygons);
+  HalfedgeMesh mesh;
+  try {
+    mesh = build_halfedge_mesh(repaired.polygons);
+  } catch (const MeshError& e) {
+    throw MeshError(what + ": still not a manifold after repair (" + repaired.report.summary() + "): " + e.what());
+  }
+  push_mesh(L, own_mesh(L, std::move(mesh)));
+  push_repair_report(L, repaired.report);
+  return 2;
+}
+
 int module_load(lua_State* L) {
-  push_mesh(L, own_mesh(L, build_halfedge_mesh(load_mesh(luaL_checkstring(L, 1)))));
+  const char* path = luaL_checkstring(L, 1);
+  bool repair = false;
+  if (!lua_isnoneornil(L, 2)) {
+    luaL_checktype(L, 2, LUA_TTABLE);
+    lua_getfield(L, 2, "repair");
+    repair = lua_toboolean(L, -1);
+    lua_pop(L, 1);
+  }
+  if (repair) return push_repaired(L, load_mesh(path), path);
+  push_mesh(L, own_mesh(L, build_halfedge_mesh(load_mesh(path))));
   return 1;
 }
 
@@ -63,8 +105,8 @@ void read_polygon(lua_State* L, lua_Integer i, lua_Integer num_positions, Polygo
   out.add_face(corners);
 }
 
-// meshedit.from_polygons(positions, polygons).
-int module_from_polygons(lua_State* L) {
+// The polygons of from_polygons' and repair's two tables (checked, with 1-based messages).
+PolygonMesh read_polygons(lua_State* L) {
   luaL_checktype(L, 1, LUA_TTABLE);
   luaL_checktype(L, 2, LUA_TTABLE);
   PolygonMesh polygons;
@@ -85,6 +127,12 @@ int module_from_polygons(lua_State* L) {
     read_polygon(L, i, num_positions, polygons);
     lua_pop(L, 1);
   }
+  return polygons;
+}
+
+// meshedit.from_polygons(positions, polygons).
+int module_from_polygons(lua_State* L) {
+  const PolygonMesh polygons = read_polygons(L);
   HalfedgeMesh mesh;
   try {
     mesh = build_halfedge_mesh(polygons);
@@ -97,6 +145,11 @@ int module_from_polygons(lua_State* L) {
   return 1;
 }
 
+// meshedit.repair(positions, polygons).
+int module_repair(lua_State* L) {
+  return push_repaired(L, read_polygons(L), "repair");
+}
+
 }  // namespace
 
 void add_module_functions(lua_State* L) {
@@ -106,6 +159,7 @@ void add_module_functions(lua_State* L) {
                                 {"icosahedron", guarded<module_primitive<make_icosahedron>>},
                                 {"grid", guarded<module_grid>},
                                 {"from_polygons", guarded<module_from_polygons>},
+                                {"repair", guarded<module_repair>},
                                 {nullptr, nullptr}};
   luaL_setfuncs(L, functions, 0);
 }

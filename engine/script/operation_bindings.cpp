@@ -1,7 +1,8 @@
-// The core's operations as mesh methods: flip, split, collapse and loop_subdivide.
+// The core's operations as mesh methods: flip, split, collapse, loop_subdivide and triangulate.
 //
 //   mesh:flip(e) -> e | nil, reason        mesh:split(e) -> new vertex | nil, reason
 //   mesh:collapse(e) -> surviving vertex | nil, reason      mesh:loop_subdivide() -> true | nil, reason
+//   mesh:triangulate() -> number of polygons split | nil, reason (the mesh is rebuilt: core/triangulate.h)
 // Invariants: a refused operation changes nothing and answers nil and the core's reason (a dead or broken edge
 // included: the core checks every pointer before following it); an accepted one is an undo point and is
 // recorded as one Operation edit. Operations run in C++ out of the instruction hook's reach, so they are
@@ -13,6 +14,7 @@
 #include "core/edit_log.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_ops.h"
+#include "core/triangulate.h"
 #include "script/binding_state.h"
 #include "script/binding_support.h"
 
@@ -73,6 +75,31 @@ int mesh_loop_subdivide(lua_State* L) {
   return 1;
 }
 
+int mesh_triangulate(lua_State* L) {
+  MeshBox& box = check_mesh(L, 1);
+  HalfedgeMesh& m = *box.mesh;
+  size_t triangles = 0, polygons = 0;
+  for (FaceId f : m.faces()) {
+    triangles += m.degree(f) > 2 ? m.degree(f) - 2 : 0;
+    polygons += m.degree(f) > 3 ? 1 : 0;
+  }
+  if (polygons == 0) {  // nothing to split: no undo point, nothing recorded
+    lua_pushinteger(L, 0);
+    return 1;
+  }
+  const uint32_t cap = binding_state(L).limits.elements_per_kind;
+  if (3 * triangles > cap) {
+    return push_refusal(L, "triangulating would make " + std::to_string(3 * triangles) +
+                               " halfedges; scripts may make at most " + std::to_string(cap));
+  }
+  begin_change(L, box.mesh, true);
+  const OpResult<TriangulationReport> done = triangulate_mesh(m);
+  if (!done.ok()) return push_refusal(L, done.check.reason);
+  end_change(L, box.mesh, operation_edit("triangulate", ElementRef(), ElementRef()));
+  lua_pushinteger(L, static_cast<lua_Integer>(done.value.polygons_split));
+  return 1;
+}
+
 }  // namespace
 
 int mesh_flip(lua_State* L) { return run_edge_operation<OpResult<EdgeId>, flip>(L, "flip"); }
@@ -83,6 +110,7 @@ void add_operation_methods(lua_State* L) {
                               {"split", guarded<mesh_split>},
                               {"collapse", guarded<mesh_collapse>},
                               {"loop_subdivide", guarded<mesh_loop_subdivide>},
+                              {"triangulate", guarded<mesh_triangulate>},
                               {nullptr, nullptr}};
   luaL_setfuncs(L, methods, 0);
 }

@@ -12,6 +12,7 @@
 
 #include "core/mesh_ops.h"
 #include "core/parallel_for.h"
+#include "core/triangulate.h"
 #include "ui/edge_edit_label.h"
 
 namespace meshedit {
@@ -20,6 +21,7 @@ namespace {
 // The edits' labels as strings made when the program starts: apply_operation takes them without a copy that could run
 // out of memory (each is longer than std::string's inline buffer).
 const std::string kLoopSubdivisionLabel = "Loop subdivision";
+const std::string kTriangulateLabel = "Triangulate every face";
 const std::string kLoopPhaseLabels[] = {
     "",
     "Loop 1/4: compute new positions",
@@ -173,6 +175,24 @@ Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights we
   });
   keep_if_alive(selection, doc.mesh);
   if (check) doc.loop = LoopStepper{};
+  return check;
+}
+
+Check triangulate_all(MeshDocument& doc, Selection& selection) {
+  TriangulationReport report;
+  Check check = apply_operation(doc, kTriangulateLabel, [&](HalfedgeMesh& mesh) {
+    OpResult<TriangulationReport> done = triangulate_mesh(mesh);
+    report = done.value;
+    return std::move(done.check);
+  });
+  if (!check) return check;
+  selection = Selection{};  // the mesh was rebuilt: an id now names another element
+  doc.loop = LoopStepper{};
+  append_to_message(doc, [&] {
+    if (report.polygons_split == 0) return std::string("; every face was already a triangle");
+    return "; " + std::to_string(report.polygons_split) + " faces split into " +
+           std::to_string(report.triangles_made) + " triangles";
+  });
   return check;
 }
 

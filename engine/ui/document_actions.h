@@ -1,5 +1,5 @@
 // The actions the app binds to keys and buttons: pointer navigation, flip, split, collapse, Loop subdivision
-// (whole or one phase per press), undo and redo.
+// (whole or one phase per press), triangulation, undo and redo.
 //
 // Invariants:
 // - Every action leaves a sentence in doc.message (what happened, or why nothing did).
@@ -42,6 +42,9 @@ Check split_selected(MeshDocument& doc, Selection& selection);     // S; keeps t
 Check collapse_selected(MeshDocument& doc, Selection& selection);  // selects the surviving vertex
 // L: all four phases as one undoable step.
 Check loop_subdivide_all(MeshDocument& doc, Selection& selection, LoopWeights weights = LoopWeights::Course);
+// Edit > Triangulate: every face of more than three corners split into triangles (core/triangulate.h), as one
+// undoable step. The mesh is rebuilt, so ids change and the selection is cleared.
+Check triangulate_all(MeshDocument& doc, Selection& selection);
 // One phase per call (1 compute, 2 split, 3 flip, 4 move), each of 2-4 its own undoable step with its own
 // diff; phase 1 changes nothing and records nothing. If the mesh changed since the last phase (an undo,
 // another edit), the next call starts again at phase 1 and says so. doc.loop.next_phase tells which is next.

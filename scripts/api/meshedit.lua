@@ -272,6 +272,13 @@ function Mesh:collapse(e) end
 ---@return string? reason
 function Mesh:loop_subdivide() end
 
+---Splits every face of more than three corners into triangles (ear clipping in the face's plane, keeping its
+---orientation). The mesh is rebuilt from its faces: live vertices keep their order and positions but are numbered
+---densely, and every face, edge and halfedge gets a new id. A mesh of triangles only is left as it is (0).
+---@return integer|nil polygons_split the number of faces that became triangles
+---@return string? reason
+function Mesh:triangulate() end
+
 ---@return Snapshot
 function Mesh:snapshot() end
 
@@ -344,9 +351,14 @@ function Patch:evaluation(u, v) end
 meshedit = {}
 
 ---Loads a mesh file (.dae, .obj, .ply, .gltf...). Not available to student code under grading.
+---With `{repair = true}` the file's polygons are repaired first (bow-tie vertices split, extra faces at an edge
+---detached, repeated and degenerate faces dropped, faces re-oriented, unused vertices dropped) and the report is
+---returned too; its numbers are the file's (0-based).
 ---@param path string
+---@param options? {repair: boolean}
 ---@return Mesh
-function meshedit.load(path) end
+---@return RepairReport? report only with repair = true
+function meshedit.load(path, options) end
 
 ---@return Mesh
 function meshedit.cube() end
@@ -365,6 +377,20 @@ function meshedit.grid(nx, ny) end
 ---@param polygons integer[][]
 ---@return Mesh
 function meshedit.from_polygons(positions, polygons) end
+
+---What a repair changed: one sentence per change, naming the input's vertex and face numbers (0-based: vertex k
+---is positions[k+1], face k is polygons[k+1]; a new vertex by its id in the repaired mesh), and a one-line summary.
+---@class RepairReport
+---@field summary string "nothing to repair", or "repaired: 1 bow-tie vertex split, 2 faces reversed"
+---@field changes string[] e.g. "vertex 0 was a bow-tie: split into 0 and new vertex 5 (face 1 moved)"
+
+---Like from_polygons, but repairs the polygons first (see meshedit.load's repair option) instead of refusing them.
+---Raises an error only if they are still not a manifold after repair (a one-sided surface).
+---@param positions point[]
+---@param polygons integer[][]
+---@return Mesh
+---@return RepairReport report
+function meshedit.repair(positions, polygons) end
 
 ---Missing components are 0.
 ---@param x? number

@@ -11,6 +11,7 @@
 
 #include "core/history.h"
 #include "core/loop_subdivision.h"
+#include "core/triangulate.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
@@ -79,7 +80,7 @@ TEST(LoopFast, RefusesLikeThePhasesAndChangesNothing) {
   const uint64_t version = quads.version();
   const Check refused = loop_subdivide(quads, LoopWeights::Course, 3, 2);
   EXPECT_FALSE(refused.ok);
-  EXPECT_EQ(refused.reason, "f0 has 4 sides; Loop subdivision needs triangles");
+  EXPECT_EQ(refused.reason, std::string("f0 has 4 sides; Loop subdivision needs triangles; ") + kHowToTriangulate);
   EXPECT_TRUE(quads.same_as(before));
   EXPECT_EQ(quads.version(), version);
 

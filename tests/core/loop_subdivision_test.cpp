@@ -18,6 +18,7 @@
 #include <gtest/gtest.h>
 
 #include "core/loop_subdivision.h"
+#include "core/triangulate.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "support/test_support.h"
@@ -415,7 +416,7 @@ TEST(LoopSubdivision, RefusesQuadsNamingTheFaceAndChangesNothing) {
   const uint64_t version = m.version();
   const Check check = can_loop_subdivide(m);
   EXPECT_FALSE(check.ok);
-  EXPECT_EQ(check.reason, "f0 has 4 sides; Loop subdivision needs triangles");
+  EXPECT_EQ(check.reason, std::string("f0 has 4 sides; Loop subdivision needs triangles; ") + kHowToTriangulate);
   const Check refused = loop_subdivide(m);
   EXPECT_FALSE(refused.ok);
   EXPECT_EQ(refused.reason, check.reason);
@@ -438,7 +439,7 @@ TEST(LoopSubdivision, RefusalNamesTheFirstNonTriangle) {
   HalfedgeMesh m = build_halfedge_mesh(p);
   const HalfedgeMesh copy = m;
   const Check refused = loop_subdivide(m);
-  EXPECT_EQ(refused.reason, "f4 has 4 sides; Loop subdivision needs triangles");
+  EXPECT_EQ(refused.reason, std::string("f4 has 4 sides; Loop subdivision needs triangles; ") + kHowToTriangulate);
   EXPECT_TRUE(m.same_as(copy));
 }
 

@@ -1,0 +1,423 @@
+// The repair steps of mesh_repair.h on a working copy of the polygons: faces are dropped by flag (so a face's index
+// stays its original number), vertices are only appended (so an original vertex keeps its number) until step 6
+// renumbers both. Messages that name new vertices are formatted after that renumbering.
+#include "core/mesh_repair.h"
+
+#include <algorithm>
+#include <cstdint>
+#include <functional>
+#include <numeric>
+
+#include <glm/geometric.hpp>
+
+#include "core/triangulate.h"
+
+namespace meshedit {
+namespace {
+
+constexpr uint32_t kNone = UINT32_MAX;
+
+// One face's use of an undirected edge: the edge (min, max) as a key, the face, and the corner it leaves from.
+struct EdgeUse {
+  uint64_t key;
+  uint32_t face;
+  uint32_t corner;
+  bool operator<(const EdgeUse& o) const { return key != o.key ? key < o.key : face < o.face; }
+};
+
+// Renumbering of step 6: vertex -> its number in the repaired polygons.
+using FinalNumbers = std::vector<uint32_t>;
+using Message = std::function<std::string(const FinalNumbers&)>;
+
+struct Work {
+  std::vector<glm::dvec3> positions;
+  std::vector<uint32_t> indices;
+  std::vector<uint32_t> offsets;
+  std::vector<uint8_t> kept;       // per face
+  size_t original_vertices = 0;
+  std::vector<Message> messages;   // formatted once the final numbers are known
+  RepairReport report;
+
+  size_t num_faces() const { return offsets.size() - 1; }
+  uint32_t size(uint32_t f) const { return offsets[f + 1] - offsets[f]; }
+  uint32_t& at(uint32_t f, uint32_t c) { return indices[offsets[f] + c]; }
+  uint32_t at(uint32_t f, uint32_t c) const { return indices[offsets[f] + c]; }
+  uint32_t copy_vertex(uint32_t v) {
+    positions.push_back(positions[v]);
+    return static_cast<uint32_t>(positions.size() - 1);
+  }
+  void say(std::string text) {
+    messages.push_back([text = std::move(text)](const FinalNumbers&) { return text; });
+  }
+  // "vertex 12" for an original vertex, "new vertex 41" (its final number) for a copy.
+  Message vertex_name(uint32_t v) const {
+    const bool original = v < original_vertices;
+    return [v, original](const FinalNumbers& final) {
+      return original ? "vertex " + std::to_string(v) : "new vertex " + std::to_string(final[v]);
+    };
+  }
+};
+
+uint64_t edge_key(uint32_t a, uint32_t b) {
+  return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
+}
+
+// Every kept face's edge uses, sorted by edge key, then face: bucketed by the edge's lower vertex (linear), then each
+// small bucket sorted.
+std::vector<EdgeUse> edge_uses(const Work& w) {
+  std::vector<uint32_t> start(w.positions.size() + 1, 0);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    const uint32_t n = w.size(f);
+    for (uint32_t c = 0; c < n; ++c) ++start[std::min(w.at(f, c), w.at(f, (c + 1) % n)) + 1];
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<EdgeUse> uses(start.back());
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    const uint32_t n = w.size(f);
+    for (uint32_t c = 0; c < n; ++c) {
+      const uint32_t a = w.at(f, c), b = w.at(f, (c + 1) % n);
+      uses[fill[std::min(a, b)]++] = {edge_key(a, b), f, c};
+    }
+  }
+  for (size_t v = 0; v + 1 < start.size(); ++v) std::sort(uses.begin() + start[v], uses.begin() + start[v + 1]);
+  return uses;
+}
+
+// Calls visit(first, last) for each run of uses of one edge.
+template <class Visit>
+void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
+  for (size_t i = 0; i < uses.size();) {
+    size_t j = i + 1;
+    while (j < uses.size() && uses[j].key == uses[i].key) ++j;
+    visit(i, j);
+    i = j;
+  }
+}
+
+// Whether face f's use of its edge at `corner` goes from the lower vertex number to the higher.
+bool goes_up(const Work& w, const EdgeUse& u) {
+  return w.at(u.face, u.corner) < w.at(u.face, (u.corner + 1) % w.size(u.face));
+}
+
+void drop_bad_faces(Work& w) {
+  std::vector<uint32_t> sorted;
+  std::vector<glm::dvec3> corners;
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    const uint32_t n = w.size(f);
+    const std::string face = "face " + std::to_string(f);  // short: no allocation
+    std::string why;
+    for (uint32_t c = 0; c < n && why.empty(); ++c) {
+      if (w.at(f, c) >= w.original_vertices) {
+        why = face + " uses vertex " + std::to_string(w.at(f, c)) + ", but there are only " +
+              std::to_string(w.original_vertices) + ": dropped";
+      }
+    }
+    if (why.empty() && n < 3) why = face + " has " + std::to_string(n) + " corners: dropped";
+    if (why.empty()) {
+      sorted.assign(w.indices.begin() + w.offsets[f], w.indices.begin() + w.offsets[f + 1]);
+      std::sort(sorted.begin(), sorted.end());
+      const auto repeat = std::adjacent_find(sorted.begin(), sorted.end());
+      if (repeat != sorted.end()) why = face + " repeats vertex " + std::to_string(*repeat) + ": dropped";
+    }
+    if (why.empty()) {
+      corners.clear();
+      double perimeter = 0;
+      for (uint32_t c = 0; c < n; ++c) {
+        corners.push_back(w.positions[w.at(f, c)]);
+        perimeter += glm::length(w.positions[w.at(f, (c + 1) % n)] - w.positions[w.at(f, c)]);
+      }
+      if (glm::length(newell_normal(corners)) <= 1e-12 * perimeter * perimeter) {
+        why = face + " has zero area: dropped";
+      }
+    }
+    if (why.empty()) continue;
+    w.kept[f] = 0;
+    ++w.report.dropped_bad_faces;
+    w.say(std::move(why));
+  }
+}
+
+// A face's corners sorted (the same set of corners in any order or direction gives the same list).
+void sorted_corners(const Work& w, uint32_t f, std::vector<uint32_t>& out) {
+  out.assign(w.indices.begin() + w.offsets[f], w.indices.begin() + w.offsets[f + 1]);
+  std::sort(out.begin(), out.end());
+}
+
+void drop_repeated_faces(Work& w) {
+  // Faces ordered by a hash of their sorted corners, then by number: repeats are neighbours, the first one first.
+  std::vector<std::pair<uint64_t, uint32_t>> keyed;
+  keyed.reserve(w.num_faces());
+  std::vector<uint32_t> corners, other;
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    sorted_corners(w, f, corners);
+    uint64_t h = 1469598103934665603ull;
+    for (uint32_t x : corners) h = (h ^ x) * 1099511628211ull;
+    keyed.emplace_back(h, f);
+  }
+  std::sort(keyed.begin(), keyed.end());
+  std::vector<std::pair<uint32_t, uint32_t>> repeats;  // (face, the earlier face it repeats)
+  for (size_t i = 0; i < keyed.size();) {
+    size_t j = i + 1;
+    while (j < keyed.size() && keyed[j].first == keyed[i].first) ++j;
+    for (size_t k = i + 1; k < j; ++k) {  // rare: only faces whose hashes collide or repeat
+      sorted_corners(w, keyed[k].second, corners);
+      for (size_t e = i; e < k; ++e) {
+        sorted_corners(w, keyed[e].second, other);
+        if (other == corners) {
+          repeats.emplace_back(keyed[k].second, keyed[e].second);
+          break;
+        }
+      }
+    }
+    i = j;
+  }
+  std::sort(repeats.begin(), repeats.end());
+  for (const auto& [f, earlier] : repeats) {
+    w.kept[f] = 0;
+    ++w.report.dropped_repeated_faces;
+    w.say("face " + std::to_string(f) + " repeated face " + std::to_string(earlier) + ": dropped");
+  }
+}
+
+// Returns whether any face was detached (so `uses` no longer describes the faces).
+bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
+  const size_t before = w.report.detached_faces;
+  for_each_edge(uses, [&](size_t first, size_t last) {
+    if (last - first < 3) return;
+    const uint32_t a = uint32_t(uses[first].key >> 32), b = uint32_t(uses[first].key);
+    // Uses still on this edge (an earlier detachment may have moved a face off it).
+    std::vector<EdgeUse> on;
+    for (size_t i = first; i < last; ++i) {
+      const EdgeUse& u = uses[i];
+      if (edge_key(w.at(u.face, u.corner), w.at(u.face, (u.corner + 1) % w.size(u.face))) == u.key) on.push_back(u);
+    }
+    if (on.size() < 3) return;
+    size_t partner = 1;
+    for (size_t i = 1; i < on.size(); ++i) {
+      if (goes_up(w, on[i]) != goes_up(w, on[0])) {
+        partner = i;
+        break;
+      }
+    }
+    std::vector<size_t> sharing;
+    for (const EdgeUse& u : on) sharing.push_back(u.face);
+    for (size_t i = 1; i < on.size(); ++i) {
+      if (i == partner) continue;
+      const EdgeUse& u = on[i];
+      const uint32_t next = (u.corner + 1) % w.size(u.face);
+      const uint32_t from = w.at(u.face, u.corner), to = w.at(u.face, next);
+      const uint32_t from_copy = w.copy_vertex(from), to_copy = w.copy_vertex(to);
+      w.at(u.face, u.corner) = from_copy;
+      w.at(u.face, next) = to_copy;
+      ++w.report.detached_faces;
+      const Message va = w.vertex_name(a), vb = w.vertex_name(b);
+      const std::string faces = number_list(sharing);
+      const uint32_t face = u.face;
+      w.messages.push_back([=](const FinalNumbers& final) {
+        return "the edge between " + va(final) + " and " + vb(final) + " had faces " + faces + ": face " +
+               std::to_string(face) + " detached (its corners there are now new vertices " +
+               std::to_string(final[from_copy]) + " and " + std::to_string(final[to_copy]) + ")";
+      });
+    }
+  });
+  return w.report.detached_faces != before;
+}
+
+// `uses` must describe the faces as they are; reversing faces leaves their undirected edges as they were.
+void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
+  const uint32_t faces = static_cast<uint32_t>(w.num_faces());
+  // Neighbours across edges of exactly two faces, with whether the two use the edge the same way.
+  std::vector<uint32_t> degree(faces + 1, 0);
+  struct Link { uint32_t f, g; uint8_t same; };
+  std::vector<Link> links;
+  for_each_edge(uses, [&](size_t first, size_t last) {
+    if (last - first != 2 || uses[first].face == uses[first + 1].face) return;
+    links.push_back({uses[first].face, uses[first + 1].face, goes_up(w, uses[first]) == goes_up(w, uses[first + 1])});
+  });
+  for (const Link& l : links) ++degree[l.f + 1], ++degree[l.g + 1];
+  std::partial_sum(degree.begin(), degree.end(), degree.begin());
+  std::vector<std::pair<uint32_t, uint8_t>> adjacent(degree.back());
+  std::vector<uint32_t> fill(degree.begin(), degree.end() - 1);
+  for (const Link& l : links) {
+    adjacent[fill[l.f]++] = {l.g, l.same};
+    adjacent[fill[l.g]++] = {l.f, l.same};
+  }
+  std::vector<uint8_t> seen(faces, 0), flip(faces, 0);
+  std::vector<uint32_t> component;
+  for (uint32_t seed = 0; seed < faces; ++seed) {
+    if (!w.kept[seed] || seen[seed]) continue;
+    component.assign(1, seed);
+    seen[seed] = 1;
+    bool orientable = true;
+    for (size_t k = 0; k < component.size(); ++k) {
+      const uint32_t f = component[k];
+      for (uint32_t i = degree[f]; i < degree[f + 1]; ++i) {
+        const auto [g, same] = adjacent[i];
+        const uint8_t wanted = flip[f] ^ same;
+        if (!seen[g]) {
+          seen[g] = 1;
+          flip[g] = wanted;
+          component.push_back(g);
+        } else if (flip[g] != wanted) {
+          orientable = false;
+        }
+      }
+    }
+    if (!orientable) {
+      ++w.report.non_orientable_components;
+      w.say("the " + std::to_string(component.size()) + " faces joined to face " + std::to_string(seed) +
+            " cannot all agree (a one-sided surface, like a Moebius strip): left as they are");
+      continue;
+    }
+    size_t flipped = 0;
+    for (uint32_t f : component) flipped += flip[f];
+    if (flipped == 0) continue;
+    const uint8_t reverse = 2 * flipped > component.size() ? 0 : 1;  // the majority keeps its orientation
+    std::vector<size_t> reversed;
+    uint32_t reference = kNone;
+    for (uint32_t f : component) {
+      if (flip[f] == reverse) {
+        reversed.push_back(f);
+        std::reverse(w.indices.begin() + w.offsets[f] + 1, w.indices.begin() + w.offsets[f + 1]);
+      } else {
+        reference = std::min(reference, f);
+      }
+    }
+    w.report.reversed_faces += reversed.size();
+    w.say(std::string(reversed.size() == 1 ? "face " : "faces ") + number_list(reversed) +
+          " reversed to agree with face " + std::to_string(reference));
+  }
+}
+
+uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
+}
+
+// `uses` gives each face's undirected edges (its corner numbers may be stale after orient_components).
+void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
+  std::vector<uint32_t> parent(w.indices.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  const auto corner_at = [&](const EdgeUse& u, uint32_t v) {
+    uint32_t i = w.offsets[u.face];
+    while (w.indices[i] != v) ++i;  // v is a corner of the face: the edge's key names two of them
+    return i;
+  };
+  for_each_edge(uses, [&](size_t first, size_t last) {
+    if (last - first != 2) return;
+    for (uint32_t v : {uint32_t(uses[first].key >> 32), uint32_t(uses[first].key)}) {
+      parent[find_root(parent, corner_at(uses[first], v))] = find_root(parent, corner_at(uses[first + 1], v));
+    }
+  });
+  // Corners of each vertex, in face order.
+  const size_t vertices = w.positions.size();
+  std::vector<uint32_t> start(vertices + 1, 0);
+  std::vector<uint32_t> face_of(w.indices.size(), kNone);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    for (uint32_t i = w.offsets[f]; i < w.offsets[f + 1]; ++i) ++start[w.indices[i] + 1], face_of[i] = f;
+  }
+  std::partial_sum(start.begin(), start.end(), start.begin());
+  std::vector<uint32_t> corners(start.back());
+  std::vector<uint32_t> fill(start.begin(), start.end() - 1);
+  for (uint32_t i = 0; i < w.indices.size(); ++i) {
+    if (face_of[i] != kNone) corners[fill[w.indices[i]]++] = i;
+  }
+  std::vector<uint32_t> roots;
+  for (uint32_t v = 0; v < vertices; ++v) {
+    roots.clear();
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      const uint32_t r = find_root(parent, corners[k]);
+      if (std::find(roots.begin(), roots.end(), r) == roots.end()) roots.push_back(r);
+    }
+    if (roots.size() < 2) continue;
+    ++w.report.split_vertices;
+    std::vector<uint32_t> copies;
+    std::vector<std::vector<size_t>> moved(roots.size());
+    for (size_t r = 1; r < roots.size(); ++r) copies.push_back(w.copy_vertex(v));
+    for (uint32_t k = start[v]; k < start[v + 1]; ++k) {
+      const size_t r = size_t(std::find(roots.begin(), roots.end(), find_root(parent, corners[k])) - roots.begin());
+      if (r == 0) continue;
+      w.indices[corners[k]] = copies[r - 1];
+      moved[r].push_back(face_of[corners[k]]);
+    }
+    const Message name = w.vertex_name(v);
+    const bool original = v < w.original_vertices;
+    w.messages.push_back([=](const FinalNumbers& final) {
+      std::string text = name(final) + " was a bow-tie: split into " + std::to_string(original ? v : final[v]);
+      for (size_t r = 0; r < copies.size(); ++r) {
+        text += (r + 1 == copies.size() ? " and new vertex " : ", new vertex ") + std::to_string(final[copies[r]]);
+      }
+      if (copies.size() == 1) return text + " (" + (moved[1].size() == 1 ? "face " : "faces ") +
+                                     number_list(moved[1]) + " moved)";
+      text += " (";
+      for (size_t r = 1; r < moved.size(); ++r) {
+        text += (r > 1 ? "; " : "") + std::string(moved[r].size() == 1 ? "face " : "faces ") +
+                number_list(moved[r]) + " moved to " + std::to_string(final[copies[r - 1]]);
+      }
+      return text + ")";
+    });
+  }
+}
+
+// Step 6 and the output: the final numbers of used vertices, and the repaired polygons.
+PolygonMesh finish(Work& w, FinalNumbers& final) {
+  std::vector<uint8_t> used(w.positions.size(), 0);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    for (uint32_t i = w.offsets[f]; i < w.offsets[f + 1]; ++i) used[w.indices[i]] = 1;
+  }
+  PolygonMesh out;
+  final.assign(w.positions.size(), kNone);
+  std::vector<size_t> unused;
+  for (uint32_t v = 0; v < w.positions.size(); ++v) {
+    if (!used[v]) {
+      if (v < w.original_vertices) unused.push_back(v);
+      continue;
+    }
+    final[v] = out.add_vertex(w.positions[v]);
+  }
+  if (!unused.empty()) {
+    w.report.dropped_vertices = unused.size();
+    w.say(std::string(unused.size() == 1 ? "vertex " : "vertices ") + number_list(unused) +
+          (unused.size() == 1 ? " was" : " were") + " used by no face: dropped");
+  }
+  out.indices.reserve(w.indices.size());
+  out.face_offsets.reserve(w.num_faces() + 1);
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    for (uint32_t i = w.offsets[f]; i < w.offsets[f + 1]; ++i) out.indices.push_back(final[w.indices[i]]);
+    out.face_offsets.push_back(static_cast<uint32_t>(out.indices.size()));
+  }
+  return out;
+}
+
+}  // namespace
+
+RepairResult repair_polygons(const PolygonMesh& polygons) {
+  Work w;
+  w.positions = polygons.positions;
+  w.indices = polygons.indices;
+  w.offsets = polygons.face_offsets;
+  w.kept.assign(polygons.num_faces(), 1);
+  w.original_vertices = polygons.num_vertices();
+  drop_bad_faces(w);
+  drop_repeated_faces(w);
+  std::vector<EdgeUse> uses = edge_uses(w);
+  if (detach_extra_faces(w, uses)) uses = edge_uses(w);
+  orient_components(w, uses);
+  split_bowties(w, uses);
+  RepairResult result;
+  FinalNumbers final;
+  result.polygons = finish(w, final);
+  result.report = std::move(w.report);
+  result.report.changes.reserve(w.messages.size());
+  for (const Message& m : w.messages) result.report.changes.push_back(m(final));
+  return result;
+}
+
+}  // namespace meshedit

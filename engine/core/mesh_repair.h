@@ -1,0 +1,59 @@
+// Repairing indexed polygons so the half-edge builder (mesh_build.h) accepts them, with a report of every change.
+//
+// The steps, in order (each sees the previous ones' result):
+// 1. faces that are not polygons are dropped: an index out of range, fewer than 3 corners, a repeated corner, or
+//    zero area (Newell normal of length below 1e-12 of the squared perimeter);
+// 2. a face with the same corners as an earlier face (in any order or direction) is dropped;
+// 3. at an edge used by three or more faces, the first face and the first later one that uses the edge the other
+//    way (else the second) keep it; each other face is detached: its two corners on that edge become new vertices
+//    (copies of the positions) used by that face alone;
+// 4. per connected component (faces joined by edges of exactly two faces), faces are re-oriented to agree by a
+//    breadth-first walk from the component's lowest face; whichever orientation more faces already had is kept.
+//    A component that cannot be oriented (a Moebius strip) is reported and left as it is;
+// 5. a vertex whose faces form several fans (joined through edges of exactly two faces) keeps the fan with the
+//    lowest face; each other fan gets a new vertex (a bow-tie split);
+// 6. vertices no face uses any more (or ever did) are dropped.
+//
+// Invariants:
+// - Surviving faces keep their order; surviving original vertices keep their order, followed by the new vertices
+//   of steps 3 and 5 in the order they were made. Positions are never moved.
+// - The report names original vertex and face numbers (what the file says); a new vertex is named by its number in
+//   the repaired polygons ("vertex 12 was a bow-tie: split into 12 and new vertex 40 (faces 3, 4 moved)").
+//   A mesh with nothing to repair gives an empty report and identical polygons.
+// - Nothing here builds a half-edge mesh: build_halfedge_mesh keeps refusing unrepaired input.
+#pragma once
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "core/polygon_mesh.h"
+
+namespace meshedit {
+
+struct RepairReport {
+  std::vector<std::string> changes;  // one sentence per change, in the order of the steps
+  size_t dropped_bad_faces = 0;      // step 1
+  size_t dropped_repeated_faces = 0; // step 2
+  size_t detached_faces = 0;         // step 3
+  size_t reversed_faces = 0;         // step 4
+  size_t non_orientable_components = 0;
+  size_t split_vertices = 0;         // step 5: vertices that were bow-ties
+  size_t dropped_vertices = 0;       // step 6
+
+  bool empty() const { return changes.empty(); }
+  // One line: "nothing to repair", or the counts ("repaired: 1 bow-tie vertex split, 2 faces reversed").
+  std::string summary() const;
+};
+
+struct RepairResult {
+  PolygonMesh polygons;
+  RepairReport report;
+};
+
+RepairResult repair_polygons(const PolygonMesh& polygons);
+
+// "3", "3, 5", "20..35", "1, 4..6": sorted numbers with runs of three or more written as ranges.
+std::string number_list(std::vector<size_t> numbers);
+
+}  // namespace meshedit
