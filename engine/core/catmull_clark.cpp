@@ -123,9 +123,10 @@ Check catmull_clark_subdivide_by_phases(HalfedgeMesh& mesh) {
 }
 
 Check catmull_clark_subdivide(HalfedgeMesh& mesh, int levels) {
+  // Checked once: a level of an accepted mesh is a valid mesh of quads with four distinct corners, accepted too.
+  const Check check = can_catmull_clark(mesh);
+  if (!check) return check;
   for (int level = 0; level < levels; ++level) {
-    const Check check = can_catmull_clark(mesh);
-    if (!check) return check;
     const CatmullClarkState state = compute_points(mesh);
     mesh = refine_mesh(mesh, RefineRule::Quads, state.layout, final_positions(mesh, state));
   }

@@ -48,8 +48,8 @@ void catmull_clark_commit_positions(HalfedgeMesh& mesh, const CatmullClarkState&
 Check catmull_clark_subdivide_by_phases(HalfedgeMesh& mesh);
 
 // `levels` levels, each building the refined mesh with the final positions at once (no midpoint stage): the same
-// mesh as `levels` calls of catmull_clark_subdivide_by_phases, id for id and bit for bit. A refused level leaves the
-// mesh as the previous level made it; a mesh refused at level 1 is unchanged.
+// mesh as `levels` calls of catmull_clark_subdivide_by_phases, id for id and bit for bit. The input is checked once,
+// like can_catmull_clark (each level's result passes that check); a refused mesh is left unchanged.
 Check catmull_clark_subdivide(HalfedgeMesh& mesh, int levels = 1);
 
 }  // namespace meshedit

@@ -20,7 +20,7 @@ namespace meshedit {
 
 Check can_linear_subdivide(const HalfedgeMesh& mesh);
 
-// `levels` levels. A mesh refused at level 1 is unchanged.
+// `levels` levels. The input is checked once (each level's result passes the check); a refused mesh is unchanged.
 Check linear_subdivide(HalfedgeMesh& mesh, int levels = 1);
 
 }  // namespace meshedit

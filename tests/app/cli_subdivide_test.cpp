@@ -98,7 +98,8 @@ TEST(CliSubdivide, WrongSchemeOrLoopOnlyWeightsAreUsageErrors) {
   EXPECT_NE(weights.status, 0);
   EXPECT_NE(weights.err.find("--weights is for --scheme loop only"), std::string::npos) << weights.err;
   // The default is still Loop, which refuses quads.
-  const CommandRun loop = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "1", "-o", (dir / "o.obj").string()});
+  const CommandRun loop =
+      meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "1", "-o", (dir / "o.obj").string()});
   EXPECT_NE(loop.status, 0);
   EXPECT_NE(loop.err.find("Loop subdivision needs triangles"), std::string::npos) << loop.err;
 }

@@ -2,8 +2,8 @@
 // contender: build a half-edge mesh from indexed triangles, Loop subdivision with Loop's weights (closed
 // torus, and the torus with holes), area-weighted vertex normals, memory at rest; then Catmull-Clark against
 // OpenMesh (peer_catmull_clark.h). Every contender's subdivided mesh (counts, every position, boundary flags,
-// normals) is checked against ours before any of its times is taken; a mismatch makes the program exit 1. The peers take part when CMake found them
-// (scripts/setup_bench.sh installs them); without them it runs ours alone.
+// normals) is checked against ours before any of its times is taken; a mismatch makes the program exit 1. The
+// peers take part when CMake found them (scripts/setup_bench.sh installs them); without them it runs ours alone.
 //
 //   peer_bench [--faces 100000] [--levels 3] [--reps 5] [--build-faces 1000000] [--threads 2]
 //              [--closed | --boundary]   only the closed torus / only the torus with holes (default both)

@@ -66,6 +66,8 @@ class OpenMeshCatmullClark final : public CatmullClarkContender {
 
 }  // namespace
 
-std::unique_ptr<CatmullClarkContender> make_openmesh_catmull_clark() { return std::make_unique<OpenMeshCatmullClark>(); }
+std::unique_ptr<CatmullClarkContender> make_openmesh_catmull_clark() {
+  return std::make_unique<OpenMeshCatmullClark>();
+}
 
 }  // namespace meshedit::bench
