@@ -83,6 +83,10 @@ void EditorApp::draw_menu_bar() {
       exercises_.finish_replay(doc_);
       catmull_clark_all(doc_, selection_);
     }
+    if (ImGui::MenuItem(next_catmull_clark_phase_label(doc_, catmull_clark_stepper_).c_str())) {
+      exercises_.finish_replay(doc_);
+      catmull_clark_step(doc_, selection_, catmull_clark_stepper_);
+    }
     if (ImGui::MenuItem("Linear subdivision")) {  // triangles in four at midpoints, other faces quads; nothing moves
       exercises_.finish_replay(doc_);
       linear_subdivide_all(doc_, selection_);
