@@ -14,7 +14,8 @@
 //     halfedge(f) leaves and go round the face in `next` order (under TrianglesInFour the middle triangle
 //     comes last); edges, halfedges and boundary loops in build_halfedge_mesh's order (mesh_build.h).
 // Invariant: refine_mesh reads the original mesh only and returns a new one, so a caller that refuses keeps
-// the original unchanged; on a mesh can_refine accepts the result is one validate() accepts.
+// the original unchanged; on a mesh can_refine accepts the result is one validate() accepts, with the ids
+// build_halfedge_mesh gives the children (mesh_build.h).
 #pragma once
 
 #include <cstdint>
@@ -24,6 +25,7 @@
 
 #include "core/check.h"
 #include "core/halfedge_mesh.h"
+#include "core/polygon_mesh.h"
 
 namespace meshedit {
 
@@ -47,8 +49,14 @@ RefineLayout plan_refinement(const HalfedgeMesh& mesh, RefineRule rule);
 // their edge's midpoint, centre vertices at their face's centroid (the mean of its corners).
 std::vector<glm::dvec3> midpoint_positions(const HalfedgeMesh& mesh, const RefineLayout& layout);
 
-// The refined mesh, with vertex i at positions[i] (positions.size() == layout.vertex_count). Precondition:
-// can_refine(mesh) and layout == plan_refinement(mesh, rule). Throws MeshError only if that is broken.
+// The children as indexed polygons, vertex i at positions[i] (positions.size() == layout.vertex_count): what
+// build_halfedge_mesh would be given. Precondition: layout == plan_refinement(mesh, rule).
+PolygonMesh refined_polygons(const HalfedgeMesh& mesh, RefineRule rule, const RefineLayout& layout,
+                             const std::vector<glm::dvec3>& positions);
+
+// The refined mesh: exactly build_halfedge_mesh(refined_polygons(...)) (a test holds the two together), built
+// without the builder's search for twins, since each child's twins follow from the original mesh's.
+// Precondition: can_refine(mesh) and layout == plan_refinement(mesh, rule).
 HalfedgeMesh refine_mesh(const HalfedgeMesh& mesh, RefineRule rule, const RefineLayout& layout,
                          const std::vector<glm::dvec3>& positions);
 
