@@ -40,8 +40,9 @@ int run_subdivision(lua_State* L, const char* name, const char* scheme, size_t t
     return push_refusal(L, std::string(scheme) + " would make " + std::to_string(faces) +
                                " faces; scripts may make at most " + std::to_string(kMaxSubdividedFaces));
   }
-  // Halfedges, the most numerous ids of the result: two per edge, and at most 2E + 4 F' edges.
-  if (const std::string full = room_refusal(L, m, 2 * (2 * m.num_edges() + 4 * faces)); !full.empty()) {
+  // Halfedges, the most numerous ids of the result: two per edge, and 2E + F' edges at most (each original edge
+  // in two, plus at most one new edge inside an original face per child face).
+  if (const std::string full = room_refusal(L, m, 2 * (2 * m.num_edges() + faces)); !full.empty()) {
     return push_refusal(L, full);
   }
   begin_change(L, box.mesh, true);
