@@ -1,8 +1,14 @@
-// `meshedit convert IN OUT` and `meshedit subdivide IN -n LEVELS [--weights course|loop] -o OUT`.
+// `meshedit convert IN OUT` and
+// `meshedit subdivide IN -n LEVELS [--scheme loop|catmull-clark|linear] [--weights course|loop] -o OUT`
+// (the scheme defaults to loop; --weights is Loop's and refused with another scheme).
+#include <algorithm>
 #include <chrono>
+#include <optional>
 
 #include "app/cli_commands.h"
 #include "app/mesh_loading.h"
+#include "core/catmull_clark.h"
+#include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
@@ -37,7 +43,9 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   const int resolution = take_resolution_option(args);
   const auto levels_text = take_option(args, "--levels", "-n");
   const auto output = take_option(args, "--output", "-o");
-  const std::string weights_name = take_option(args, "--weights").value_or("course");
+  const std::optional<std::string> weights_option = take_option(args, "--weights");
+  const std::string weights_name = weights_option.value_or("course");
+  const std::string scheme = take_option(args, "--scheme").value_or("loop");
   reject_unknown_options(args);
   if (args.size() != 1) throw UsageError("subdivide takes one input file");
   if (!levels_text) throw UsageError("subdivide needs -n LEVELS");
@@ -45,13 +53,19 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   if (weights_name != "course" && weights_name != "loop") {
     throw UsageError("--weights must be 'course' or 'loop', not '" + weights_name + "'");
   }
+  if (scheme != "loop" && scheme != "catmull-clark" && scheme != "linear") {
+    throw UsageError("--scheme must be 'loop', 'catmull-clark' or 'linear', not '" + scheme + "'");
+  }
+  if (weights_option && scheme != "loop") throw UsageError("--weights is for --scheme loop only");
   const LoopWeights weights = weights_name == "loop" ? LoopWeights::Loop : LoopWeights::Course;
   const int levels = parse_count(*levels_text, "-n", 10);
 
   LoadedMesh loaded = load_halfedge_mesh(args[0], resolution);
   HalfedgeMesh& mesh = loaded.mesh;
-  double faces = double(mesh.num_faces());
-  for (int i = 0; i < levels; ++i) faces *= 4;
+  // Every scheme makes at most 4 faces of each face of up to 4 sides; an n-gon makes n, the first level only.
+  double faces = 0;
+  for (FaceId f : mesh.faces()) faces += std::max<uint32_t>(4, mesh.degree(f));
+  for (int i = 1; i < levels; ++i) faces *= 4;
   if (faces > kMaxOutputFaces) {
     throw UsageError(std::to_string(levels) + " levels would make " + std::to_string(static_cast<long long>(faces)) +
                      " faces; use fewer levels");
@@ -59,10 +73,13 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   out << args[0] << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
   for (int level = 1; level <= levels; ++level) {
     const auto start = std::chrono::steady_clock::now();
-    const Check done = loop_subdivide(mesh, weights, 1, hardware_threads());
+    const Check done = scheme == "catmull-clark" ? catmull_clark_subdivide(mesh)
+                       : scheme == "linear"      ? linear_subdivide(mesh)
+                                                 : loop_subdivide(mesh, weights, 1, hardware_threads());
     if (!done) throw MeshError(args[0] + ": cannot subdivide: " + done.reason);
     out << "level " << level << ": " << mesh.num_vertices() << " vertices, " << mesh.num_edges() << " edges, "
-        << mesh.num_faces() << " faces (" << milliseconds_since(start) << " ms, " << weights_name << " weights)\n";
+        << mesh.num_faces() << " faces (" << milliseconds_since(start) << " ms, "
+        << (scheme == "loop" ? weights_name + " weights" : scheme) << ")\n";
   }
   save_mesh(*output, to_polygon_mesh(mesh));
   out << "wrote " << *output << "\n";

@@ -65,6 +65,7 @@
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
 #include "ui/selection.h"
+#include "ui/subdivision_actions.h"
 #include "ui/fonts.h"
 #include "ui/settings.h"
 #include "ui/status_bar.h"
@@ -308,6 +309,7 @@ class EditorApp {
   CurveEditorState curve_;
   PatchViewState patches_;
   LoopWeights loop_weights_ = LoopWeights::Course;
+  CatmullClarkStepper catmull_clark_stepper_;  // Subdivide > Catmull-Clark one phase at a time
   // The up axis of the file shown (nullopt: a mesh no file gave, Z-up) and View > Up axis's choice.
   std::optional<FileUpAxis> file_up_axis_;
   UpAxisChoice up_axis_choice_ = UpAxisChoice::FromFile;

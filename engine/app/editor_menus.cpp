@@ -11,6 +11,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "ui/document_actions.h"
+#include "ui/subdivision_actions.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -67,6 +68,9 @@ void EditorApp::draw_menu_bar() {
     }
     if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
     if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
+    ImGui::EndMenu();
+  }
+  if (ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) {
     if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
     if (ImGui::MenuItem("Triangulate")) {
       exercises_.finish_replay(doc_);
@@ -78,6 +82,19 @@ void EditorApp::draw_menu_bar() {
     bool loop_beta = loop_weights_ == LoopWeights::Loop;
     if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
       loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
+    }
+    ImGui::Separator();
+    if (ImGui::MenuItem("Catmull-Clark subdivision")) {  // any polygons; every face becomes quads
+      exercises_.finish_replay(doc_);
+      catmull_clark_all(doc_, selection_);
+    }
+    if (ImGui::MenuItem(next_catmull_clark_phase_label(doc_, catmull_clark_stepper_).c_str())) {
+      exercises_.finish_replay(doc_);
+      catmull_clark_step(doc_, selection_, catmull_clark_stepper_);
+    }
+    if (ImGui::MenuItem("Linear subdivision")) {  // triangles in four at midpoints, other faces quads; nothing moves
+      exercises_.finish_replay(doc_);
+      linear_subdivide_all(doc_, selection_);
     }
     ImGui::EndMenu();
   }

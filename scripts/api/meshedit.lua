@@ -279,6 +279,17 @@ function Mesh:loop_subdivide() end
 ---@return string? reason
 function Mesh:triangulate() end
 
+---Catmull-Clark subdivision, one level: any polygons in, quads out (an undo point).
+---@return true|nil ok
+---@return string? reason
+function Mesh:catmull_clark() end
+
+---Linear subdivision, one level: triangles into 4 at their edges' midpoints, other faces into quads around their
+---centroid; no vertex moves (an undo point).
+---@return true|nil ok
+---@return string? reason
+function Mesh:linear_subdivide() end
+
 ---@return Snapshot
 function Mesh:snapshot() end
 

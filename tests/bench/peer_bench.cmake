@@ -3,7 +3,8 @@
 # installs Debian's libopenmesh-dev and libcgal-dev), and the program builds, runs and passes its smoke
 # test with ours alone otherwise (or with -DMESHEDIT_BENCH_PEERS=OFF).
 add_executable(peer_bench
-  bench/peer_bench.cpp bench/peer_ours.cpp bench/peer_match.cpp bench/peer_memory.cpp bench/peer_table.cpp)
+  bench/peer_bench.cpp bench/peer_ours.cpp bench/peer_match.cpp bench/peer_memory.cpp bench/peer_table.cpp
+  bench/peer_catmull_clark.cpp)
 target_include_directories(peer_bench PRIVATE ${CMAKE_CURRENT_SOURCE_DIR})
 target_link_libraries(peer_bench PRIVATE meshedit_core meshedit_warnings)
 # Tiny run: keeps the program building and its match check passing, with or without the peers.
@@ -12,7 +13,7 @@ add_test(NAME peer_bench_smoke COMMAND peer_bench --faces 2000 --build-faces 200
 option(MESHEDIT_BENCH_PEERS "peer_bench: compare against OpenMesh and CGAL when they are found" ON)
 
 # OpenMesh: Debian ships a CMake config (targets OpenMeshCore/OpenMeshTools); elsewhere look for the
-# header and library by hand. LoopT is header-only over OpenMeshCore.
+# header and library by hand. LoopT and CatmullClarkT are header-only over OpenMeshCore.
 if(MESHEDIT_BENCH_PEERS)
   find_package(OpenMesh CONFIG QUIET)
   if(TARGET OpenMeshCore)
@@ -40,6 +41,8 @@ endfunction()
 if(MESHEDIT_OPENMESH_LIB)
   message(STATUS "peer_bench: OpenMesh found, compared against")
   meshedit_peer(peer_bench_openmesh bench/peer_openmesh.cpp ${MESHEDIT_OPENMESH_LIB} MESHEDIT_HAVE_OPENMESH)
+  meshedit_peer(peer_bench_openmesh_catmull_clark bench/peer_openmesh_catmull_clark.cpp ${MESHEDIT_OPENMESH_LIB}
+                MESHEDIT_HAVE_OPENMESH)
 else()
   message(STATUS "peer_bench: OpenMesh not used (scripts/setup_bench.sh installs it); ours runs without it")
 endif()

@@ -1,9 +1,9 @@
 // peer_bench: MeshEdit against OpenMesh and CGAL on the same generated input (issue 6). For each
 // contender: build a half-edge mesh from indexed triangles, Loop subdivision with Loop's weights (closed
-// torus, and the torus with holes), area-weighted vertex normals, memory at rest. Every contender's
-// subdivided mesh (counts, every position, boundary flags, normals) is checked against ours before any
-// of its times is taken; a mismatch makes the program exit 1. The peers take part when CMake found them
-// (scripts/setup_bench.sh installs them); without them it runs ours alone.
+// torus, and the torus with holes), area-weighted vertex normals, memory at rest; then Catmull-Clark against
+// OpenMesh (peer_catmull_clark.h). Every contender's subdivided mesh (counts, every position, boundary flags,
+// normals) is checked against ours before any of its times is taken; a mismatch makes the program exit 1. The
+// peers take part when CMake found them (scripts/setup_bench.sh installs them); without them it runs ours alone.
 //
 //   peer_bench [--faces 100000] [--levels 3] [--reps 5] [--build-faces 1000000] [--threads 2]
 //              [--closed | --boundary]   only the closed torus / only the torus with holes (default both)
@@ -24,6 +24,7 @@
 #include <vector>
 
 #include "bench/bench_support.h"
+#include "bench/peer_catmull_clark.h"
 #include "bench/peer_contender.h"
 #include "bench/peer_input.h"
 #include "bench/peer_match.h"
@@ -350,6 +351,13 @@ int main(int argc, char** argv) {
                   row.ours / row.ours_threads >= 1.6 ? "met" : "NOT met");
     }
   }
+  CatmullClarkOptions catmull_clark;
+  catmull_clark.faces = o.faces;
+  catmull_clark.levels = o.levels;
+  catmull_clark.reps = o.reps;
+  catmull_clark.back_memory = !o.cold;
+  catmull_clark.backed_mib = kBackedMiB;
+  all_ok = compare_catmull_clark(catmull_clark) && all_ok;
   if (!all_ok) {
     std::printf("\nSOME OUTPUTS DID NOT MATCH OURS (see FAIL lines): their times are left out\n");
     return 1;
