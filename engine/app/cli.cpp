@@ -29,7 +29,7 @@ constexpr const char* kUsage =
     "                                       subdivision (default Loop; --weights is Loop's), LEVELS times\n"
     "  triangulate IN -o OUT                every face of more than three corners split into triangles\n"
     "  repair IN -o OUT                     split bow-tie vertices, detach extra faces at an edge, drop repeated\n"
-    "                                       and degenerate faces and unused vertices, re-orient faces; lists each\n"
+    "                                       and degenerate faces and unused vertices, re-orient faces; lists each change\n"
     "  render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
     "                                       a picture without a display (EGL); also --vertices --halfedges\n"
     "  run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
