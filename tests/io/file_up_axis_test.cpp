@@ -22,7 +22,8 @@ TEST(FileUpAxis, EachFormatHasItsUpAxisInAnyCase) {
   EXPECT_EQ(format_up_axis("a/b.gltf"), UpAxis::Y);
   EXPECT_EQ(format_up_axis("b.GLB"), UpAxis::Y);
   EXPECT_EQ(format_up_axis("bunny.ply"), UpAxis::Y);
-  EXPECT_EQ(format_up_axis("part.Stl"), UpAxis::Y);
+  EXPECT_EQ(format_up_axis("part.Stl"), UpAxis::Z);
+  EXPECT_EQ(format_up_axis("chair.OFF"), UpAxis::Z);
   EXPECT_EQ(format_up_axis("cow.dae"), UpAxis::Y);  // COLLADA's default, for a file without <up_axis>
   EXPECT_EQ(format_up_axis("teapot.bez"), UpAxis::Z);
   EXPECT_EQ(format_up_axis("curve1.bzc"), std::nullopt);
