@@ -2,6 +2,8 @@
 // which extension. Extensions compare case-insensitively (".OBJ" is ".obj").
 #include "io/mesh_file.h"
 
+#include <optional>
+
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
 #include "io/dae_reader.h"
@@ -27,16 +29,24 @@ std::string describe_extension(const std::filesystem::path& path) {
   return ext.empty() ? "file has no extension" : "unsupported file type '" + ext + "'";
 }
 
-}  // namespace
-
-FileKind file_kind(const std::filesystem::path& path) {
-  const std::string ext = lowercase_extension(path);
+std::optional<FileKind> kind_of_extension(const std::string& ext) {
   for (const char* mesh_ext : {".obj", ".dae", ".gltf", ".glb", ".ply", ".stl", ".off"}) {
     if (ext == mesh_ext) return FileKind::Mesh;
   }
   if (ext == ".bez") return FileKind::Patches;
   if (ext == ".bzc") return FileKind::Curve;
+  return std::nullopt;
+}
+
+}  // namespace
+
+FileKind file_kind(const std::filesystem::path& path) {
+  if (const auto kind = kind_of_extension(lowercase_extension(path))) return *kind;
   throw FileError(path.string(), "", describe_extension(path) + "; " + kReadable);
+}
+
+bool is_readable(const std::filesystem::path& path) {
+  return kind_of_extension(lowercase_extension(path)).has_value();
 }
 
 LoadedFile load_file(const std::filesystem::path& path) {

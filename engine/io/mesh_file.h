@@ -29,6 +29,8 @@ struct LoadedFile {
 
 // The kind a path's extension promises, or a FileError for an extension we do not read.
 FileKind file_kind(const std::filesystem::path& path);
+// True when load_file reads files with the path's extension (what the Open dialog lists).
+bool is_readable(const std::filesystem::path& path);
 LoadedFile load_file(const std::filesystem::path& path);
 // Loads a mesh file; throws FileError if the file holds patches or a curve instead.
 PolygonMesh load_mesh(const std::filesystem::path& path);

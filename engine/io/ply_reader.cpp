@@ -62,6 +62,7 @@ class PlyBody {
   // Skips `count` values of `type` (a list's items that are not used).
   void skip(PlyType type, uint64_t count, std::string_view what) {
     if (binary()) {
+      value_start_ = offset_;
       if (count > (bytes_.size() - offset_) / ply_type_size(type)) {
         fail("file ends inside " + std::string(what) + " (" + std::to_string(count) + " values)");
       }
@@ -73,7 +74,7 @@ class PlyBody {
 
   [[noreturn]] void fail(const std::string& message) const {
     const std::string where = place_.element ? *place_.element + " " + std::to_string(place_.index) : "body";
-    if (binary()) throw FileError(name_, where + ", byte " + std::to_string(offset_), message);
+    if (binary()) throw FileError(name_, where + ", byte " + std::to_string(value_start_), message);
     throw FileError(name_, line_ == 0 ? scanner_.line() : line_, where + ": " + message);
   }
 
@@ -99,6 +100,7 @@ class PlyBody {
 
   double read_binary(PlyType type, std::string_view what) {
     const size_t size = ply_type_size(type);
+    value_start_ = offset_;
     if (bytes_.size() - offset_ < size) fail("file ends where " + std::string(what) + " was expected");
     const uint64_t raw = load_unsigned(bytes_, offset_, size, order_);
     double value = 0;
@@ -131,6 +133,7 @@ class PlyBody {
   TextScanner scanner_;
   std::string_view bytes_;
   size_t offset_ = 0;
+  size_t value_start_ = 0;  // where the last value read (or expected) starts: the byte messages name
   ByteOrder order_ = ByteOrder::Little;
   size_t line_ = 0;
   PlyPlace place_;
