@@ -17,9 +17,7 @@ bool all_digits(std::string_view text) {
 
 class OffReader {
  public:
-  OffReader(std::string_view text, const std::string& name) : scanner_(text, name) {
-    scanner_.set_comment_char('#');
-  }
+  OffReader(std::string_view text, const std::string& name) : scanner_(text, name) { scanner_.set_comment_char('#'); }
 
   PolygonMesh read() {
     if (scanner_.at_end()) scanner_.fail(1, "file is empty");

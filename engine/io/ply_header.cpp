@@ -15,11 +15,21 @@ struct TypeName {
 };
 
 constexpr std::array<TypeName, 16> kTypeNames = {{
-    {"char", PlyType::Int8},     {"uchar", PlyType::Uint8},    {"short", PlyType::Int16},
-    {"ushort", PlyType::Uint16}, {"int", PlyType::Int32},      {"uint", PlyType::Uint32},
-    {"float", PlyType::Float32}, {"double", PlyType::Float64}, {"int8", PlyType::Int8},
-    {"uint8", PlyType::Uint8},   {"int16", PlyType::Int16},    {"uint16", PlyType::Uint16},
-    {"int32", PlyType::Int32},   {"uint32", PlyType::Uint32},  {"float32", PlyType::Float32},
+    {"char", PlyType::Int8},
+    {"uchar", PlyType::Uint8},
+    {"short", PlyType::Int16},
+    {"ushort", PlyType::Uint16},
+    {"int", PlyType::Int32},
+    {"uint", PlyType::Uint32},
+    {"float", PlyType::Float32},
+    {"double", PlyType::Float64},
+    {"int8", PlyType::Int8},
+    {"uint8", PlyType::Uint8},
+    {"int16", PlyType::Int16},
+    {"uint16", PlyType::Uint16},
+    {"int32", PlyType::Int32},
+    {"uint32", PlyType::Uint32},
+    {"float32", PlyType::Float32},
     {"float64", PlyType::Float64},
 }};
 

@@ -37,9 +37,9 @@ PolygonMesh parse_binary(std::string_view bytes, const std::string& name) {
                         std::to_string(bytes.size()) + " bytes");
   }
   if (count * 3 > kMaxCorners) {
-    throw FileError(name, "byte 80",
-                    "declares " + std::to_string(count) + " triangles; MeshEdit reads up to " +
-                        std::to_string(kMaxCorners / 3));
+    throw FileError(
+        name, "byte 80",
+        "declares " + std::to_string(count) + " triangles; MeshEdit reads up to " + std::to_string(kMaxCorners / 3));
   }
   PolygonMesh mesh;
   PositionWelder welder(mesh);

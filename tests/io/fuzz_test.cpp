@@ -278,7 +278,8 @@ TEST(Fuzz, Off) {
       "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n"};
   // A ModelNet-style file: the counts glued to the keyword, a larger mesh.
   const PolygonMesh torus = make_torus(4, 3);
-  std::string modelnet = "OFF" + std::to_string(torus.num_vertices()) + " " + std::to_string(torus.num_faces()) + " 0\n";
+  std::string modelnet =
+      "OFF" + std::to_string(torus.num_vertices()) + " " + std::to_string(torus.num_faces()) + " 0\n";
   for (const glm::dvec3& p : torus.positions) {
     modelnet += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
   }

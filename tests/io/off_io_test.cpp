@@ -35,8 +35,8 @@ TEST(Off, ReadsCommentsAndFaceColours) {
 }
 
 TEST(Off, ReadsCoffWithVertexColours) {
-  const PolygonMesh m = parse_off("COFF\n3 1 3\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 -2 0 0 255 255\n3 0 1 2\n",
-                                  "c.off");
+  const PolygonMesh m =
+      parse_off("COFF\n3 1 3\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 -2 0 0 255 255\n3 0 1 2\n", "c.off");
   ASSERT_EQ(m.num_vertices(), 3u);
   EXPECT_EQ(m.positions[2], glm::dvec3(0, 1, -2));
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2}));
@@ -61,7 +61,8 @@ TEST(Off, RefusesBadFilesWithTheLine) {
   EXPECT_FILE_ERROR(parse_off("XOFF\n3 1 0\n", "t.off"), "t.off:1: expected the keyword OFF");
   EXPECT_FILE_ERROR(parse_off("OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n", "t.off"),
                     "t.off:2: the face count must be between 1 and");
-  EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 3\n", "t.off"), "t.off:6: face 0: index \"3\" is not below the vertex count 3");
+  EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 3\n", "t.off"),
+                    "t.off:6: face 0: index \"3\" is not below the vertex count 3");
   EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 -1\n", "t.off"), "t.off:6: face 0: index \"-1\" is not below");
   EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 x\n", "t.off"), "t.off:6: face 0: expected a vertex index, found \"x\"");
   EXPECT_FILE_ERROR(parse_off(tri + "2 0 1 2\n", "t.off"), "t.off:6: face 0's corner count must be between 3 and");
@@ -80,7 +81,8 @@ TEST(Off, RefusesBadFilesWithTheLine) {
 }
 
 TEST(Off, HugeDeclaredCountsFailBeforeAllocating) {
-  EXPECT_FILE_ERROR(parse_off("OFF\n4000000000 1 0\n", "t.off"), "t.off:2: the vertex count must be between 0 and 16777216");
+  EXPECT_FILE_ERROR(parse_off("OFF\n4000000000 1 0\n", "t.off"),
+                    "t.off:2: the vertex count must be between 0 and 16777216");
   EXPECT_FILE_ERROR(parse_off("OFF\n16000000 1 0\n0 0 0\n", "t.off"),
                     "t.off:2: declares 16000000 vertices and 1 faces, but the file holds only 3 numbers");
   EXPECT_FILE_ERROR(parse_off("OFF\n3 30000000 0\n", "t.off"), "t.off:2: the face count must be between 1 and");

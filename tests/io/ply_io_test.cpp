@@ -116,7 +116,7 @@ TEST(Ply, ReadsDoublesVertexIndexAndSkipsOtherElements) {
 }
 
 TEST(Ply, ReadsEveryIntegerListType) {
-  const char* types[] = {"char", "uchar", "short", "ushort", "int", "uint",
+  const char* types[] = {"char", "uchar", "short", "ushort", "int",   "uint",
                          "int8", "uint8", "int16", "uint16", "int32", "uint32"};
   for (const char* count_type : types) {
     for (const char* index_type : types) {

@@ -48,10 +48,11 @@ TEST(Stl, ReadsAsciiAndWeldsCornersByPosition) {
 }
 
 TEST(Stl, ReadsSeveralSolidsAndCrlf) {
-  std::string two = "solid a\r\nfacet normal 0 0 1\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\nvertex 0 1 0\r\n"
-                    "endloop\r\nendfacet\r\nendsolid a\r\n"
-                    "solid b\nfacet normal 0 0 1\nouter loop\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n"
-                    "endloop\nendfacet\nendsolid\n";
+  std::string two =
+      "solid a\r\nfacet normal 0 0 1\r\nouter loop\r\nvertex 0 0 0\r\nvertex 1 0 0\r\nvertex 0 1 0\r\n"
+      "endloop\r\nendfacet\r\nendsolid a\r\n"
+      "solid b\nfacet normal 0 0 1\nouter loop\nvertex 1 0 0\nvertex 1 1 0\nvertex 0 1 0\n"
+      "endloop\nendfacet\nendsolid\n";
   const PolygonMesh m = parse_stl(two, "two.stl");
   EXPECT_EQ(m.num_vertices(), 4u);
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 1, 3, 2}));
@@ -85,8 +86,8 @@ TEST(Stl, ReadsBinaryEvenWhenTheHeaderStartsWithSolid) {
 }
 
 TEST(Stl, DropsTrianglesWithoutArea) {
-  const PolygonMesh m = parse_stl(
-      binary_stl(header("x"), {{0, 0, 0, 1, 0, 0, 1, 0, 0}, {0, 0, 0, 1, 0, 0, 0, 1, 0}}), "d.stl");
+  const PolygonMesh m =
+      parse_stl(binary_stl(header("x"), {{0, 0, 0, 1, 0, 0, 1, 0, 0}, {0, 0, 0, 1, 0, 0, 0, 1, 0}}), "d.stl");
   EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2}));
   EXPECT_FILE_ERROR(parse_stl(binary_stl(header("x"), {{0, 0, 0, 0, 0, 0, 1, 0, 0}}), "d.stl"),
                     "d.stl: file holds no triangles with area");
@@ -104,9 +105,9 @@ TEST(Stl, RefusesBadBinaryFilesWithTriangleAndByte) {
                     "t.stl: byte 80: the header declares 4294967295 triangles (214748364834 bytes), but the file "
                     "has 134 bytes");
   const float nan = std::numeric_limits<float>::quiet_NaN();
-  EXPECT_FILE_ERROR(parse_stl(binary_stl(header("x"), {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, nan, 0, 0, 1, 0}}),
-                              "t.stl"),
-                    "t.stl: triangle 1, byte 162: corner 1 is not a finite position");
+  EXPECT_FILE_ERROR(
+      parse_stl(binary_stl(header("x"), {{0, 0, 0, 1, 0, 0, 0, 1, 0}, {0, 0, 0, 1, nan, 0, 0, 1, 0}}), "t.stl"),
+      "t.stl: triangle 1, byte 162: corner 1 is not a finite position");
 }
 
 TEST(Stl, RefusesBadAsciiFilesWithTheLine) {
@@ -115,9 +116,9 @@ TEST(Stl, RefusesBadAsciiFilesWithTheLine) {
     text.replace(text.find(from), from.size(), to);
     return text;
   };
-  EXPECT_FILE_ERROR(parse_stl(broken("      vertex 1.000000e+00 1.000000e+00 0.000000e+00\n    endloop", "    endloop"),
-                              "t.stl"),
-                    "t.stl:6: expected \"vertex\", found \"endloop\"");
+  EXPECT_FILE_ERROR(
+      parse_stl(broken("      vertex 1.000000e+00 1.000000e+00 0.000000e+00\n    endloop", "    endloop"), "t.stl"),
+      "t.stl:6: expected \"vertex\", found \"endloop\"");
   EXPECT_FILE_ERROR(parse_stl(broken("vertex 0 1 2.5e-1", "vertex 0 1 x"), "t.stl"),
                     "t.stl:13: expected a vertex coordinate, found \"x\"");
   EXPECT_FILE_ERROR(parse_stl(broken("vertex 1 1 0", "vertex 1 inf 0"), "t.stl"),
