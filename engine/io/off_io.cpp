@@ -33,7 +33,7 @@ class OffReader {
   // The keyword (optional) and the counts, up to the end of their line.
   void read_counts() {
     Token first = scanner_.expect("the OFF keyword");
-    std::optional<Token> vertex_count;
+    std::optional<Token> vertex_count, face_count;
     const size_t off = first.text.find("OFF");
     if (off != std::string_view::npos) {
       const std::string_view prefix = first.text.substr(0, off);
@@ -50,7 +50,7 @@ class OffReader {
         scanner_.fail(line, "binary OFF files are not supported");
       } else if (word) {
         if (vertex_count) {
-          faces_token_ = word;
+          face_count = word;
         } else {
           vertex_count = word;
         }
@@ -59,7 +59,7 @@ class OffReader {
       vertex_count = first;  // the keyword is optional
     }
     if (!vertex_count) vertex_count = scanner_.expect("the vertex count");
-    const Token faces = faces_token_ ? *faces_token_ : scanner_.expect("the face count");
+    const Token faces = face_count ? *face_count : scanner_.expect("the face count");
     const size_t counts_line = faces.line;
     num_vertices_ = static_cast<size_t>(
         parse_integer(*vertex_count, scanner_.file(), "the vertex count", 0, int64_t(kMaxVertices)));
@@ -119,7 +119,6 @@ class OffReader {
 
   TextScanner scanner_;
   PolygonMesh mesh_;
-  std::optional<Token> faces_token_;
   size_t num_vertices_ = 0;
   size_t num_faces_ = 0;
 };
