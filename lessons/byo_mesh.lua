@@ -44,7 +44,7 @@ step("Export from Blender", function()
 # Bring your own mesh
 
 Everything you wrote works on any triangle mesh, not just the course files. This lesson takes a model from
-**Blender** into MeshEdit. MeshEdit reads **glTF** (.gltf and .glb) as well as .obj and .dae.]]
+**Blender** into MeshEdit. MeshEdit reads **glTF** (.gltf and .glb) as well as .obj, .dae, .ply, .stl and .off.]]
   say [[
 In Blender, with your object selected:
 
@@ -131,6 +131,6 @@ step("Subdivide it", function()
   say("Subdivided: " .. counts(after) .. ", that is V + E vertices and 4F faces, and still valid. Boundary loops: "
     .. after:num_boundaries() .. " (the same as before: subdivision never opens or closes a hole).")
   say [[
-Save the result with File > **Save as...** as .obj, .gltf or .glb, and open it back in Blender. Then try your own flips
-and splits on it, and your own `upsample` from the exercises.]]
+Save the result with File > **Save as...** as .obj, .gltf, .glb, .ply or .stl, and open it back in Blender. Then try
+your own flips and splits on it, and your own `upsample` from the exercises.]]
 end)

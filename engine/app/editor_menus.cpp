@@ -17,15 +17,6 @@
 namespace meshedit {
 namespace {
 
-bool supported(const std::filesystem::path& path) {
-  std::string ext = path.extension().string();
-  std::transform(ext.begin(), ext.end(), ext.begin(), [](unsigned char c) { return char(std::tolower(c)); });
-  for (const char* known : {".obj", ".dae", ".gltf", ".glb", ".bez", ".bzc"}) {
-    if (ext == known) return true;
-  }
-  return false;
-}
-
 // ImGui 1.86 has no std::string input without imgui_stdlib; a fixed buffer is enough for a path.
 bool input_path(const char* label, std::string& text) {
   char buffer[1024];
@@ -183,7 +174,7 @@ void EditorApp::draw_open_panel() {
     input_path("save as", save_path_input_);
     ImGui::SameLine();
     if (ImGui::Button("Save") && !save_path_input_.empty()) save(save_path_input_);
-    ImGui::TextDisabled(".obj, .gltf or .glb");
+    ImGui::TextDisabled(".obj, .gltf, .glb, .ply or .stl");
   }
   ImGui::Separator();
 
@@ -195,7 +186,7 @@ void EditorApp::draw_open_panel() {
   if (ImGui::Selectable("..")) open_path_input_ = folder.parent_path().string();
   std::vector<std::filesystem::directory_entry> entries;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
-    if (entry.is_directory(ec) || supported(entry.path())) entries.push_back(entry);
+    if (entry.is_directory(ec) || is_readable(entry.path())) entries.push_back(entry);
   }
   std::sort(entries.begin(), entries.end(), [](const auto& a, const auto& b) { return a.path() < b.path(); });
   for (const auto& entry : entries) {

@@ -4,8 +4,11 @@
 // The rule:
 // - A format that does not say (every one but COLLADA) has the up axis of the files people make in it, from
 //   one data table, kFormatUpAxes: Y for .obj (Blender's and most tools' default export), .gltf/.glb (Y-up by
-//   the glTF spec), .ply and .stl; Z for .bez (the Utah teapot's patches, Z-up since Newell). A format not in
-//   the table has none (format_up_axis gives nullopt): a new reader gets an entry there, nowhere else.
+//   the glTF spec) and .ply (the Stanford scans, the bunny, the dragon and the Buddha, stand on Y, and
+//   MeshLab keeps a scan's axes); Z for .stl (made for 3D printing and CAD, whose build plate is the XY
+//   plane: slicers and CAD tools are Z-up), .off (ModelNet's aligned shapes stand on Z) and .bez (the Utah
+//   teapot's patches, Z-up since Newell). A format not in the table has none (format_up_axis gives
+//   nullopt): a new reader gets an entry there, nowhere else.
 // - A COLLADA file says, in <asset>/<up_axis> (Y_UP when absent, COLLADA's default); the rule trusts it,
 //   except for the exporters in kMistaggedExporters, whose files are Z-up whatever their tag says.
 //   The one there, "modo 801 [Build 77509], Mac OS X 10.9.3 (10.9.3)", wrote every CS184 course .dae that is
@@ -33,12 +36,13 @@ struct FormatUpAxis {
   UpAxis up_axis;
 };
 
-inline constexpr std::array<FormatUpAxis, 7> kFormatUpAxes = {{
+inline constexpr std::array<FormatUpAxis, 8> kFormatUpAxes = {{
     {".obj", UpAxis::Y},
     {".gltf", UpAxis::Y},
     {".glb", UpAxis::Y},
     {".ply", UpAxis::Y},
-    {".stl", UpAxis::Y},
+    {".stl", UpAxis::Z},
+    {".off", UpAxis::Z},
     {".dae", UpAxis::Y},  // COLLADA's default, for a file without <up_axis>; collada_up_axis reads the tag
     {".bez", UpAxis::Z},
 }};

@@ -2,6 +2,8 @@
 // which extension. Extensions compare case-insensitively (".OBJ" is ".obj").
 #include "io/mesh_file.h"
 
+#include <optional>
+
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
 #include "io/dae_reader.h"
@@ -10,27 +12,41 @@
 #include "io/file_up_axis.h"
 #include "io/gltf_io.h"
 #include "io/obj_io.h"
+#include "io/off_io.h"
+#include "io/ply_io.h"
+#include "io/stl_io.h"
 
 namespace meshedit {
 namespace {
 
 constexpr const char* kReadable =
-    "MeshEdit reads .obj, .dae, .gltf and .glb (meshes), .bez (Bézier patches) and .bzc (Bézier curves)";
-constexpr const char* kWritable = "MeshEdit writes meshes as .obj, .gltf or .glb";
+    "MeshEdit reads .obj, .dae, .gltf, .glb, .ply, .stl and .off (meshes), .bez (Bézier patches) and .bzc "
+    "(Bézier curves)";
+constexpr const char* kWritable = "MeshEdit writes meshes as .obj, .gltf, .glb, .ply or .stl";
 
 std::string describe_extension(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
   return ext.empty() ? "file has no extension" : "unsupported file type '" + ext + "'";
 }
 
+std::optional<FileKind> kind_of_extension(const std::string& ext) {
+  for (const char* mesh_ext : {".obj", ".dae", ".gltf", ".glb", ".ply", ".stl", ".off"}) {
+    if (ext == mesh_ext) return FileKind::Mesh;
+  }
+  if (ext == ".bez") return FileKind::Patches;
+  if (ext == ".bzc") return FileKind::Curve;
+  return std::nullopt;
+}
+
 }  // namespace
 
 FileKind file_kind(const std::filesystem::path& path) {
-  const std::string ext = lowercase_extension(path);
-  if (ext == ".obj" || ext == ".dae" || ext == ".gltf" || ext == ".glb") return FileKind::Mesh;
-  if (ext == ".bez") return FileKind::Patches;
-  if (ext == ".bzc") return FileKind::Curve;
+  if (const auto kind = kind_of_extension(lowercase_extension(path))) return *kind;
   throw FileError(path.string(), "", describe_extension(path) + "; " + kReadable);
+}
+
+bool is_readable(const std::filesystem::path& path) {
+  return kind_of_extension(lowercase_extension(path)).has_value();
 }
 
 LoadedFile load_file(const std::filesystem::path& path) {
@@ -46,6 +62,12 @@ LoadedFile load_file(const std::filesystem::path& path) {
     loaded.up_axis = collada_up_axis(dae.asset);
   } else if (ext == ".gltf" || ext == ".glb") {
     loaded.mesh = read_gltf(path);
+  } else if (ext == ".ply") {
+    loaded.mesh = read_ply(path);
+  } else if (ext == ".stl") {
+    loaded.mesh = read_stl(path);
+  } else if (ext == ".off") {
+    loaded.mesh = read_off(path);
   } else if (ext == ".bez") {
     loaded.patches = read_bez(path);
   } else {
@@ -69,6 +91,10 @@ void save_mesh(const std::filesystem::path& path, const PolygonMesh& mesh) {
     write_gltf(path, mesh);
   } else if (ext == ".glb") {
     write_glb(path, mesh);
+  } else if (ext == ".ply") {
+    write_ply(path, mesh);
+  } else if (ext == ".stl") {
+    write_stl(path, mesh);
   } else {
     throw FileError(path.string(), "", describe_extension(path) + " for saving; " + kWritable);
   }

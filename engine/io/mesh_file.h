@@ -1,9 +1,9 @@
 // Opening and saving any supported file, chosen by extension:
-//   read:  .obj .dae .gltf .glb (meshes), .bez (Bézier patches), .bzc (a Bézier curve)
-//   write: .obj .gltf .glb (meshes)
+//   read:  .obj .dae .gltf .glb .ply .stl .off (meshes), .bez (Bézier patches), .bzc (a Bézier curve)
+//   write: .obj .gltf .glb .ply .stl (meshes)
 // Every failure is a FileError naming the file and the place; nothing here exits or aborts, whatever
-// the bytes are. Readers for one format are in their own headers (obj_io.h, dae_reader.h, ...), each
-// with a parse_* function over text in memory that the fuzz tests call. A loaded file carries the axis to
+// the bytes are. Readers for one format are in their own headers (obj_io.h, dae_reader.h, ply_io.h, ...),
+// each with a parse_* function over the bytes in memory that the fuzz tests call. A loaded file carries the axis to
 // show up (file_up_axis.h): COLLADA's from the file, every other format's from kFormatUpAxes.
 #pragma once
 
@@ -29,6 +29,8 @@ struct LoadedFile {
 
 // The kind a path's extension promises, or a FileError for an extension we do not read.
 FileKind file_kind(const std::filesystem::path& path);
+// True when load_file reads files with the path's extension (what the Open dialog lists).
+bool is_readable(const std::filesystem::path& path);
 LoadedFile load_file(const std::filesystem::path& path);
 // Loads a mesh file; throws FileError if the file holds patches or a curve instead.
 PolygonMesh load_mesh(const std::filesystem::path& path);

@@ -126,7 +126,7 @@ TEST(Cli, SubdivideWritesTheRefinedMesh) {
 TEST(Cli, ConvertRoundTripsBetweenFormats) {
   const fs::path dir = testing::scratch_dir();
   save_mesh(dir / "ico.obj", make_icosahedron());
-  for (const char* ext : {".gltf", ".glb", ".obj"}) {
+  for (const char* ext : {".gltf", ".glb", ".obj", ".ply", ".stl"}) {
     const fs::path out = dir / (std::string("ico_out") + ext);
     const CommandRun run = meshedit({"convert", (dir / "ico.obj").string(), out.string()});
     ASSERT_EQ(run.status, 0) << run.err;
@@ -135,6 +135,30 @@ TEST(Cli, ConvertRoundTripsBetweenFormats) {
     EXPECT_EQ(j["faces"], 20) << ext;
     EXPECT_EQ(j["valid"], true) << ext;
   }
+}
+
+TEST(Cli, InfoAndConvertReadOffPlyAndStl) {
+  const fs::path dir = testing::scratch_dir();
+  // A tetrahedron as ModelNet writes OFF: the counts glued to the keyword.
+  std::ofstream(dir / "tet.off") << "OFF4 4 0\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n3 0 2 1\n3 0 1 3\n3 1 2 3\n3 2 0 3\n";
+  nlohmann::json j = info_json(dir / "tet.off");
+  EXPECT_EQ(j["vertices"], 4);
+  EXPECT_EQ(j["faces"], 4);
+  EXPECT_EQ(j["genus"], 0);
+  EXPECT_EQ(j["valid"], true);
+  ASSERT_EQ(meshedit({"convert", (dir / "tet.off").string(), (dir / "tet.stl").string()}).status, 0);
+  ASSERT_EQ(meshedit({"convert", (dir / "tet.stl").string(), (dir / "tet.ply").string()}).status, 0);
+  j = info_json(dir / "tet.ply");
+  EXPECT_EQ(j["vertices"], 4);  // the STL's twelve corners welded back into four vertices
+  EXPECT_EQ(j["faces"], 4);
+  EXPECT_EQ(j["valid"], true);
+
+  std::ofstream(dir / "bad.ply") << "ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\n"
+                                 << "property float y\nproperty float z\nelement face 1\n"
+                                 << "property list uchar int vertex_indices\nend_header\n";
+  const CommandRun bad = meshedit({"info", (dir / "bad.ply").string()});
+  EXPECT_NE(bad.status, 0);
+  EXPECT_NE(bad.err.find("bad.ply:3: declares 4000000000 vertices"), std::string::npos) << bad.err;
 }
 
 TEST(Cli, InfoAndSubdivideOnEveryCourseFile) {

@@ -22,7 +22,8 @@ TEST(FileUpAxis, EachFormatHasItsUpAxisInAnyCase) {
   EXPECT_EQ(format_up_axis("a/b.gltf"), UpAxis::Y);
   EXPECT_EQ(format_up_axis("b.GLB"), UpAxis::Y);
   EXPECT_EQ(format_up_axis("bunny.ply"), UpAxis::Y);
-  EXPECT_EQ(format_up_axis("part.Stl"), UpAxis::Y);
+  EXPECT_EQ(format_up_axis("part.Stl"), UpAxis::Z);
+  EXPECT_EQ(format_up_axis("chair.OFF"), UpAxis::Z);
   EXPECT_EQ(format_up_axis("cow.dae"), UpAxis::Y);  // COLLADA's default, for a file without <up_axis>
   EXPECT_EQ(format_up_axis("teapot.bez"), UpAxis::Z);
   EXPECT_EQ(format_up_axis("curve1.bzc"), std::nullopt);
@@ -73,6 +74,9 @@ TEST(FileUpAxis, LoadFileCarriesTheUpAxis) {
   const auto dir = testing::scratch_dir();
   save_mesh(dir / "cube.obj", make_cube());
   save_mesh(dir / "cube.glb", make_cube());
+  save_mesh(dir / "cube.ply", make_cube());
+  save_mesh(dir / "cube.stl", make_cube());
+  write_file(dir / "tri.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
   write_file(dir / "c.bzc", "2\n0 0 1 1\n");
   const std::string collada =
       "<COLLADA version=\"1.4.1\">\n<asset><up_axis>X_UP</up_axis></asset>\n<library_geometries>\n"
@@ -83,6 +87,9 @@ TEST(FileUpAxis, LoadFileCarriesTheUpAxis) {
   write_file(dir / "x.dae", collada);
   EXPECT_EQ(load_file(dir / "cube.obj").up_axis.up_axis, UpAxis::Y);
   EXPECT_EQ(load_file(dir / "cube.glb").up_axis.up_axis, UpAxis::Y);
+  EXPECT_EQ(load_file(dir / "cube.ply").up_axis.up_axis, UpAxis::Y);
+  EXPECT_EQ(load_file(dir / "cube.stl").up_axis.up_axis, UpAxis::Z);
+  EXPECT_EQ(load_file(dir / "tri.off").up_axis.up_axis, UpAxis::Z);
   EXPECT_EQ(load_file(dir / "c.bzc").up_axis.up_axis, UpAxis::Z);
   const FileUpAxis dae = load_file(dir / "x.dae").up_axis;
   EXPECT_EQ(dae.up_axis, UpAxis::X);

@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "core/primitives.h"
+#include "binary_builder.h"
 #include "fuzz_mutator.h"
 #include "gltf_test_files.h"
 #include "io/bez_io.h"
@@ -23,6 +24,9 @@
 #include "io/file_error.h"
 #include "io/gltf_io.h"
 #include "io/obj_io.h"
+#include "io/off_io.h"
+#include "io/ply_io.h"
+#include "io/stl_io.h"
 #include "support/test_support.h"
 
 // The largest single allocation since the last reset, for the "never allocate absurdly" check. This
@@ -208,6 +212,84 @@ TEST(Fuzz, Glb) {
       meshedit::testing::kSquareBuffer));
   fuzz(
       "glb", seeds, 6000, 7, [](const std::string& t) { parse_glb(t, "f.glb"); }, mutate_glb);
+}
+
+// Binary formats: a third of the time the raw bytes are mutated (headers, counts, truncation), otherwise
+// only bytes past the text header flip, so the file keeps its size and layout and the mutations reach the
+// values: counts, indices, NaN and infinite coordinates.
+std::string mutate_binary_body(Mutator& m, const std::string& bytes, size_t body_start) {
+  if (m.below(3) == 0 || bytes.size() <= body_start) return m.mutate(bytes);
+  std::string out = bytes;
+  for (size_t flips = 1 + m.below(4); flips > 0; --flips) {
+    const size_t at = body_start + m.below(out.size() - body_start);
+    out[at] = m.below(4) == 0 ? static_cast<char>(0xff) : static_cast<char>(out[at] ^ (1u << m.below(8)));
+  }
+  return out;
+}
+
+std::string mutate_ply(Mutator& m, const std::string& bytes) {
+  const size_t end = bytes.find("end_header\n");
+  if (end == std::string::npos || bytes.find("format ascii") != std::string::npos) return m.mutate(bytes);
+  if (m.below(3) == 0) return m.mutate(bytes.substr(0, end)) + bytes.substr(end);  // the header only
+  return mutate_binary_body(m, bytes, end + 11);
+}
+
+std::vector<std::string> ply_seeds() {
+  const std::string xyz = "property float x\nproperty float y\nproperty float z\n";
+  const std::string ascii =
+      "ply\nformat ascii 1.0\ncomment by hand\nelement vertex 4\n" + xyz +
+      "property uchar red\nproperty list uchar float uv\nelement face 2\nproperty list uchar int vertex_indices\n"
+      "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
+      "0 0 0 255 0\n1 0 0 0 2 0.5 0.5\n1 1 0 7 0\n0 1 0.5 9 0\n3 0 1 2\n4 0 2 3 1\n0 1\n";
+  testing::BinaryBuilder big(true,
+                             "ply\nformat binary_big_endian 1.0\nelement vertex 3\n" + xyz +
+                                 "property float confidence\nelement face 1\n"
+                                 "property list uchar int vertex_indices\nend_header\n");
+  big.f32(0).f32(0).f32(0).f32(1).f32(1).f32(0).f32(0).f32(1).f32(0).f32(1).f32(0).f32(1);
+  big.u8(3).i32(0).i32(1).i32(2);
+  return {ascii, big.bytes(), format_ply(make_torus(4, 3), "t.ply")};
+}
+
+TEST(Fuzz, Ply) {
+  fuzz(
+      "ply", ply_seeds(), 8000, 8, [](const std::string& t) { parse_ply(t, "f.ply"); }, mutate_ply);
+}
+
+std::string mutate_stl(Mutator& m, const std::string& bytes) {
+  if (bytes.compare(0, 5, "solid") == 0) return m.mutate(bytes);
+  return mutate_binary_body(m, bytes, 80);
+}
+
+TEST(Fuzz, Stl) {
+  const std::string ascii =
+      "solid s\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 1 0 0\nvertex 1 1 0\nendloop\nendfacet\n"
+      "facet normal 0 0 1\n outer loop\n  vertex 0 0 0\n  vertex 1 1 0\n  vertex 0 1 1e-3\n endloop\nendfacet\n"
+      "endsolid s\n";
+  const std::vector<std::string> seeds = {ascii, format_stl(make_cube_quads(), "c.stl"),
+                                          format_stl(make_icosahedron(), "i.stl")};
+  fuzz(
+      "stl", seeds, 8000, 9, [](const std::string& t) { parse_stl(t, "f.stl"); }, mutate_stl);
+}
+
+TEST(Fuzz, Off) {
+  std::vector<std::string> seeds = {
+      "OFF\n# pyramid\n5 5 8\n0 0 0\n1 0 0 # x\n1 1 0\n0 1 0\n0.5 0.5 1\n4 3 2 1 0\n3 0 1 4 255 0 0\n"
+      "3 1 2 4\n3 2 3 4 0.5 0.5 0.5 1\n3 3 0 4\n",
+      "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n"};
+  // A ModelNet-style file: the counts glued to the keyword, a larger mesh.
+  const PolygonMesh torus = make_torus(4, 3);
+  std::string modelnet =
+      "OFF" + std::to_string(torus.num_vertices()) + " " + std::to_string(torus.num_faces()) + " 0\n";
+  for (const glm::dvec3& p : torus.positions) {
+    modelnet += std::to_string(p.x) + " " + std::to_string(p.y) + " " + std::to_string(p.z) + "\n";
+  }
+  for (size_t f = 0; f < torus.num_faces(); ++f) {
+    modelnet += std::to_string(torus.face(f).size());
+    for (uint32_t v : torus.face(f)) modelnet += " " + std::to_string(v);
+    modelnet += "\n";
+  }
+  seeds.push_back(modelnet);
+  fuzz("off", seeds, 8000, 10, [](const std::string& t) { parse_off(t, "f.off"); });
 }
 
 }  // namespace

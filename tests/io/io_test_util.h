@@ -1,5 +1,5 @@
 // Helpers shared by the io tests: the message of the FileError a call throws, and exact comparison of
-// polygon meshes.
+// polygon meshes (by index, or by the corner positions of each face).
 #pragma once
 
 #include <gtest/gtest.h>
@@ -48,6 +48,18 @@ inline void expect_same_mesh(const PolygonMesh& a, const PolygonMesh& b) {
     EXPECT_EQ(a.positions[v].z, b.positions[v].z) << "vertex " << v;
   }
   expect_same_faces(a, b);
+}
+
+// The same faces by the positions of their corners, in order, whatever the vertex numbering: what a format
+// that stores every face's corners separately (STL) keeps.
+inline void expect_same_face_positions(const PolygonMesh& a, const PolygonMesh& b) {
+  ASSERT_EQ(a.num_faces(), b.num_faces());
+  for (size_t f = 0; f < a.num_faces(); ++f) {
+    ASSERT_EQ(a.face(f).size(), b.face(f).size()) << "face " << f;
+    for (size_t c = 0; c < a.face(f).size(); ++c) {
+      EXPECT_EQ(a.positions[a.face(f)[c]], b.positions[b.face(f)[c]]) << "face " << f << " corner " << c;
+    }
+  }
 }
 
 }  // namespace meshedit::testing

@@ -20,8 +20,15 @@ TEST(MeshFile, KindsFollowTheExtensionInAnyCase) {
   EXPECT_EQ(file_kind("a.glb"), FileKind::Mesh);
   EXPECT_EQ(file_kind("teapot.Bez"), FileKind::Patches);
   EXPECT_EQ(file_kind("curve1.BZC"), FileKind::Curve);
-  EXPECT_FILE_ERROR(file_kind("model.stl"), "model.stl: unsupported file type '.stl'", ".obj", ".dae", ".gltf", ".glb",
-                    ".bez", ".bzc");
+  EXPECT_EQ(file_kind("bunny.PLY"), FileKind::Mesh);
+  EXPECT_EQ(file_kind("part.stl"), FileKind::Mesh);
+  EXPECT_EQ(file_kind("chair.Off"), FileKind::Mesh);
+  EXPECT_FILE_ERROR(file_kind("model.3ds"), "model.3ds: unsupported file type '.3ds'", ".obj", ".dae", ".gltf", ".glb",
+                    ".ply", ".stl", ".off", ".bez", ".bzc");
+  EXPECT_TRUE(is_readable("a/B.STL"));
+  EXPECT_TRUE(is_readable("c.bzc"));
+  EXPECT_FALSE(is_readable("model.3ds"));
+  EXPECT_FALSE(is_readable("README"));
   EXPECT_FILE_ERROR(file_kind("README"), "README: file has no extension");
 }
 
@@ -39,12 +46,20 @@ TEST(MeshFile, LoadsEveryKind) {
   save_mesh(dir / "m.OBJ", make_cube());
   save_mesh(dir / "m.gltf", make_cube());
   save_mesh(dir / "m.glb", make_cube());
-  for (const char* name : {"m.OBJ", "m.gltf", "m.glb"}) {
+  save_mesh(dir / "m.ply", make_cube());
+  save_mesh(dir / "m.Stl", make_cube());
+  for (const char* name : {"m.OBJ", "m.gltf", "m.glb", "m.ply"}) {
     const LoadedFile loaded = load_file(dir / name);
     EXPECT_EQ(loaded.kind, FileKind::Mesh);
     testing::expect_same_mesh(loaded.mesh, make_cube());  // the cube's coordinates are exact floats
     testing::expect_same_mesh(load_mesh(dir / name), make_cube());
   }
+  // STL stores each triangle's corners; read back, they are welded into the cube's 8 vertices again.
+  const PolygonMesh stl = load_mesh(dir / "m.Stl");
+  EXPECT_EQ(stl.num_vertices(), 8u);
+  testing::expect_same_face_positions(stl, make_cube());
+  write_file(dir / "t.off", "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n");
+  EXPECT_EQ(load_mesh(dir / "t.off").indices, (std::vector<uint32_t>{0, 1, 2}));
   EXPECT_FILE_ERROR(load_mesh(dir / "c.BZC"), "c.BZC: holds a Bézier curve, not a mesh");
 }
 
@@ -68,7 +83,7 @@ TEST(MeshFile, MissingAndUnreadableFilesNameTheReason) {
 TEST(MeshFile, SavingRefusesOtherExtensionsAndUnwritablePlaces) {
   const auto dir = testing::scratch_dir();
   EXPECT_FILE_ERROR(save_mesh(dir / "m.dae", make_cube()), "m.dae: unsupported file type '.dae' for saving",
-                    ".obj, .gltf or .glb");
+                    ".obj, .gltf, .glb, .ply or .stl");
   EXPECT_FILE_ERROR(save_mesh(dir / "no_such_dir" / "m.obj", make_cube()),
                     "m.obj: cannot write: No such file or directory");
   EXPECT_FALSE(std::filesystem::exists(dir / "m.dae"));
