@@ -12,8 +12,8 @@
 // Errors name the file and the place: the line for ASCII ("part.stl:9: expected \"vertex\", found
 // \"endloop\""), the triangle and byte offset for binary ("part.stl: triangle 3, byte 234: ...").
 //
-// Write: binary, with a normal per triangle; polygons of more than three corners are split into a fan
-// of triangles from their first corner (right for the convex faces MeshEdit makes). Coordinates are
+// Write: binary, with a normal per triangle; polygons of more than three corners are split into triangles
+// by ear clipping in their plane (core/triangulate.h), so a non-convex face stays inside itself. Coordinates are
 // stored as float, as the format requires, so a round trip keeps positions exactly only when they are
 // floats; a position beyond the float range is refused.
 #pragma once

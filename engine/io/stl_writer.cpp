@@ -1,9 +1,12 @@
-// STL writing (see stl_io.h): binary, polygons split into fans, a unit normal per triangle.
+// STL writing (see stl_io.h): binary, polygons split into triangles by ear clipping (core/triangulate.h, so a
+// non-convex face is cut inside itself), a unit normal per triangle.
 #include <cfloat>
 #include <cmath>
+#include <vector>
 
 #include <glm/geometric.hpp>
 
+#include "core/triangulate.h"
 #include "io/binary_bytes.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
@@ -31,12 +34,16 @@ std::string format_stl(const PolygonMesh& mesh, const std::string& name) {
   auto append_vector = [&out](const glm::dvec3& v) {
     for (int a = 0; a < 3; ++a) append_float_le(out, static_cast<float>(v[a]));
   };
+  std::vector<glm::dvec3> points;
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     const auto corners = mesh.face(f);
-    for (size_t i = 1; i + 1 < corners.size(); ++i) {
-      const glm::dvec3& a = mesh.positions[corners[0]];
-      const glm::dvec3& b = mesh.positions[corners[i]];
-      const glm::dvec3& c = mesh.positions[corners[i + 1]];
+    points.clear();
+    for (const uint32_t corner : corners) points.push_back(mesh.positions[corner]);
+    const std::vector<uint32_t> triangles_of_face = triangulate_polygon(points);
+    for (size_t t = 0; t + 2 < triangles_of_face.size(); t += 3) {
+      const glm::dvec3& a = points[triangles_of_face[t]];
+      const glm::dvec3& b = points[triangles_of_face[t + 1]];
+      const glm::dvec3& c = points[triangles_of_face[t + 2]];
       const glm::dvec3 n = glm::cross(b - a, c - a);
       const double length = glm::length(n);
       append_vector(length > 0 && std::isfinite(length) ? n / length : glm::dvec3(0));

@@ -148,8 +148,8 @@ TEST_P(WindowLayoutOnScreen, TheMeshCurveAndPatchViewsKeepTheViewClear) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Screens, WindowLayoutOnScreen, ::testing::Values(Screen{1280, 800}, Screen{1024, 640}),
-                         [](const ::testing::TestParamInfo<Screen>& info) {
-                           return std::to_string(info.param.width) + "x" + std::to_string(info.param.height);
+                         [](const ::testing::TestParamInfo<Screen>& screen) {
+                           return std::to_string(screen.param.width) + "x" + std::to_string(screen.param.height);
                          });
 
 TEST(WindowLayout, TheFlipAndSplitLessonsLabelsNeverOverlapAndStayInTheView) {

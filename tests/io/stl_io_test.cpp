@@ -5,8 +5,12 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
+
 #include <cmath>
 #include <limits>
+
+#include <glm/geometric.hpp>
 
 #include "binary_builder.h"
 #include "core/primitives.h"
@@ -152,12 +156,46 @@ TEST(Stl, RoundTripsTrianglesAndSplitsPolygonsIntoFans) {
   const PolygonMesh back = parse_stl(bytes, "q.stl");
   EXPECT_EQ(back.num_faces(), 12u);
   EXPECT_EQ(back.num_vertices(), 8u);
-  // The first quad's fan: (q0 q1 q2) and (q0 q2 q3).
+  // The first quad's two triangles: its corners only, covering its area, facing its way.
   const PolygonMesh quads = make_cube_quads();
   const auto q = quads.face(0);
-  EXPECT_EQ(back.positions[back.face(1)[0]], quads.positions[q[0]]);
-  EXPECT_EQ(back.positions[back.face(1)[1]], quads.positions[q[2]]);
-  EXPECT_EQ(back.positions[back.face(1)[2]], quads.positions[q[3]]);
+  const glm::dvec3 quad_normal = glm::cross(quads.positions[q[1]] - quads.positions[q[0]],
+                                            quads.positions[q[2]] - quads.positions[q[0]]);
+  double area = 0;
+  for (size_t f = 0; f < 2; ++f) {
+    const auto t = back.face(f);
+    for (const uint32_t corner : t) {
+      EXPECT_TRUE(
+          std::any_of(q.begin(), q.end(), [&](uint32_t c) { return quads.positions[c] == back.positions[corner]; }));
+    }
+    const glm::dvec3 n =
+        glm::cross(back.positions[t[1]] - back.positions[t[0]], back.positions[t[2]] - back.positions[t[0]]);
+    EXPECT_GT(glm::dot(n, quad_normal), 0.0);
+    area += 0.5 * glm::length(n);
+  }
+  EXPECT_DOUBLE_EQ(area, glm::length(quad_normal));
+}
+
+// A non-convex face (an L-shaped hexagon from whose first corner a fan would cross the notch, making a triangle that
+// faces the other way) is written as triangles inside it, each facing the face's way, their areas adding up to the L's.
+TEST(Stl, WriterCutsANonConvexFaceInsideItself) {
+  PolygonMesh l_shape;
+  for (const glm::dvec3& p : {glm::dvec3(0, 2, 0), glm::dvec3(0, 0, 0), glm::dvec3(2, 0, 0), glm::dvec3(2, 1, 0),
+                              glm::dvec3(1, 1, 0), glm::dvec3(1, 2, 0)}) {
+    l_shape.add_vertex(p);
+  }
+  l_shape.add_face({0, 1, 2, 3, 4, 5});
+  const PolygonMesh back = parse_stl(format_stl(l_shape, "l.stl"), "l.stl");
+  ASSERT_EQ(back.num_faces(), 4u);
+  double area = 0;
+  for (size_t f = 0; f < back.num_faces(); ++f) {
+    const auto t = back.face(f);
+    const glm::dvec3 n =
+        glm::cross(back.positions[t[1]] - back.positions[t[0]], back.positions[t[2]] - back.positions[t[0]]);
+    EXPECT_GT(n.z, 0.0) << "triangle " << f << " faces the polygon's way";
+    area += 0.5 * n.z;
+  }
+  EXPECT_DOUBLE_EQ(area, 3.0);
 }
 
 TEST(Stl, WriterRefusesPositionsBeyondFloats) {
