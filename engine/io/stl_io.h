@@ -8,7 +8,8 @@
 // file's triangles are ignored. Stored normals and attributes are ignored.
 // Corners are merged by exact position (+0 and -0 are one position), in order of first appearance, so
 // the result is an indexed mesh whose shared edges connect. A triangle whose corners merge into fewer
-// than three vertices has no area and is dropped; a file left with no triangles is refused.
+// than three vertices is kept as the file has it (nothing is dropped silently: the builder refuses it by its
+// number and mesh repair drops it with a report); a file with no triangles is refused.
 // Errors name the file and the place: the line for ASCII ("part.stl:9: expected \"vertex\", found
 // \"endloop\""), the triangle and byte offset for binary ("part.stl: triangle 3, byte 234: ...").
 //

@@ -20,12 +20,13 @@ bool starts_with_solid(std::string_view bytes) {
   return first != std::string_view::npos && bytes.substr(first, 5) == "solid";
 }
 
-// Adds the triangle unless its corners merge into fewer than three vertices.
+// Adds the triangle as the file has it, even when two of its corners merge into one vertex: such a zero-area
+// triangle is the file's, and the builder names it (mesh repair drops it, and says so).
 void add_triangle(PolygonMesh& mesh, PositionWelder& welder, const glm::dvec3 (&corners)[3]) {
   const uint32_t a = welder.vertex_at(corners[0]);
   const uint32_t b = welder.vertex_at(corners[1]);
   const uint32_t c = welder.vertex_at(corners[2]);
-  if (a != b && b != c && a != c) mesh.add_face({a, b, c});
+  mesh.add_face({a, b, c});
 }
 
 PolygonMesh parse_binary(std::string_view bytes, const std::string& name) {
@@ -132,7 +133,7 @@ PolygonMesh parse_stl(std::string_view bytes, const std::string& name) {
                     "not an STL file: " + std::to_string(bytes.size()) +
                         " bytes, too short for a binary STL's 84-byte header, and no \"solid\" line");
   }
-  if (mesh.num_faces() == 0) throw FileError(name, "", "file holds no triangles with area");
+  if (mesh.num_faces() == 0) throw FileError(name, "", "file holds no triangles");
   return mesh;
 }
 

@@ -13,6 +13,9 @@
 #include <glm/geometric.hpp>
 
 #include "binary_builder.h"
+#include "core/mesh_build.h"
+#include "core/mesh_error.h"
+#include "core/mesh_repair.h"
 #include "core/primitives.h"
 #include "io_test_util.h"
 
@@ -89,12 +92,22 @@ TEST(Stl, ReadsBinaryEvenWhenTheHeaderStartsWithSolid) {
   EXPECT_EQ(padded.num_faces(), 2u);
 }
 
-TEST(Stl, DropsTrianglesWithoutArea) {
+// A triangle whose corners merge is kept as the file has it: the builder names it, and repair drops it and says so.
+TEST(Stl, KeepsTrianglesWithoutAreaForTheBuilderToName) {
   const PolygonMesh m =
       parse_stl(binary_stl(header("x"), {{0, 0, 0, 1, 0, 0, 1, 0, 0}, {0, 0, 0, 1, 0, 0, 0, 1, 0}}), "d.stl");
-  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2}));
-  EXPECT_FILE_ERROR(parse_stl(binary_stl(header("x"), {{0, 0, 0, 0, 0, 0, 1, 0, 0}}), "d.stl"),
-                    "d.stl: file holds no triangles with area");
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 1, 0, 1, 2}));
+  try {
+    build_halfedge_mesh(m);
+    ADD_FAILURE() << "the builder took a face that uses a vertex twice";
+  } catch (const MeshError& e) {
+    EXPECT_EQ(std::string(e.what()).rfind("face 0 is degenerate: it uses vertex 1 twice", 0), 0u) << e.what();
+  }
+  const RepairResult repaired = repair_polygons(m);
+  EXPECT_EQ(repaired.polygons.indices, (std::vector<uint32_t>{0, 1, 2}));
+  ASSERT_EQ(repaired.report.changes.size(), 1u);
+  EXPECT_NE(repaired.report.changes[0].find("face 0"), std::string::npos) << repaired.report.changes[0];
+  EXPECT_FILE_ERROR(parse_stl(binary_stl(header("x"), {}), "d.stl"), "d.stl: file holds no triangles");
 }
 
 TEST(Stl, RefusesBadBinaryFilesWithTriangleAndByte) {
