@@ -132,7 +132,7 @@ step("Face points", function()
   local cube = quad_cube()
   show(cube)
   camera "fit"
-  view { halfedges = false }
+  view { halfedges = false, labels = true }
   local top = cube:face(1)
   highlight(top, "yellow")
   say [[
@@ -178,17 +178,19 @@ end)
 step("Edge points", function()
   local cube = quad_cube()
   show(cube)
-  view { halfedges = false }
+  camera "fit"
+  view { halfedges = false, labels = false }  -- the lesson's own labels only: the edge, the two face points
   local e = edge_between(cube, 0, 1)
   local h = e.halfedge
   local a, b = h.vertex.position, h.twin.vertex.position
   local f0, f1 = centroid(h.face), centroid(h.twin.face)
   highlight(e, "orange")
-  highlight(h.face, "yellow")
-  highlight(h.twin.face, "yellow")
+  label(e, tostring(e))
+  label(h.face, "face point")
+  label(h.twin.face, "face point")
   say("An **edge point** is the mean of four points: the edge's two ends and the face points of the two faces "
     .. "beside it. The orange edge " .. tostring(e) .. " runs from " .. point(a) .. " to " .. point(b) .. "; the "
-    .. "yellow faces beside it have face points " .. point(f0) .. " and " .. point(f1) .. ".")
+    .. "two faces beside it have face points " .. point(f0) .. " and " .. point(f1) .. ".")
   local right = edge_point(cube, e)
   local midpoint = (a + b) / 2
   answer {
@@ -207,7 +209,7 @@ step("Edge points", function()
           .. "Each of the four points, a, b and the two face points, weighs 1/4."
       end
     end,
-    hint = "(a + b + f0 + f1) / 4, with a and b the edge's ends and f0, f1 the yellow faces' face points.",
+    hint = "(a + b + f0 + f1) / 4, with a and b the edge's ends and f0, f1 the two faces' face points.",
   }
   arrow(midpoint, right, "blue")
   say("The core puts it at " .. point(right) .. ". The blue arrow goes from the midpoint " .. point(midpoint)
@@ -218,7 +220,8 @@ end)
 step("Vertex points", function()
   local cube = quad_cube()
   show(cube)
-  view { halfedges = false }
+  camera "fit"
+  view { halfedges = false, labels = false }
   local v = cube:vertex(0)
   local n = v:degree()
   local P = v.position
@@ -271,7 +274,8 @@ end)
 step("Counting after one level", function()
   local cube = quad_cube()
   show(cube)
-  view { halfedges = false }
+  camera "fit"
+  view { halfedges = false, labels = true }
   local V, E, F = cube:num_vertices(), cube:num_edges(), cube:num_faces()
   local after = catmull_clark(cube)
   local sides = 0
@@ -308,6 +312,7 @@ step("Counting after one level", function()
   }
   show(after)
   camera "fit"
+  view { labels = false }  -- 26 vertices and 48 edges: their ids would hide the quads
   say("The core's level: " .. counts(after) .. ", all " .. face_kinds(after) .. ". Every new quad joins an old "
     .. "vertex, an edge point, a face point and the next edge point, so the " .. sides .. " corners of the old faces "
     .. "give " .. after:num_faces() .. " quads and E' = 2E + " .. sides .. " = " .. after:num_edges() .. " edges.")
@@ -317,7 +322,7 @@ step("Triangles become quads", function()
   local tetrahedron = meshedit.tetrahedron()
   show(tetrahedron)
   camera "fit"
-  view { halfedges = false }
+  view { halfedges = false, labels = true }
   local after = catmull_clark(tetrahedron)
   local right = after:num_faces() .. " quads"
   local loop = tetrahedron:copy()
@@ -340,6 +345,7 @@ step("Triangles become quads", function()
   }
   show(after)
   camera "fit"
+  view { labels = false }
   say("The core's level: " .. counts(after) .. ", all " .. face_kinds(after) .. ". After one level every face is a "
     .. "quad whatever the input was, so from then on Catmull-Clark works on quads only. The vertices that were "
     .. "triangles' face points have 3 edges: those, like the old corners, are the **extraordinary** vertices "
@@ -349,8 +355,8 @@ end)
 step("Boundary rules", function()
   local grid = quad_grid(2)
   show(grid)
-  camera "fit"
-  view { halfedges = false }
+  camera { fit = true, pitch = 70 }  -- a flat mesh: seen from above
+  view { halfedges = false, labels = true }
   local corner = grid:vertex(0)
   local e = edge_between(grid, 0, 1)
   local a, b = corner.position, grid:vertex(1).position
@@ -405,7 +411,8 @@ step("Boundary rules", function()
   }
   local after = catmull_clark(grid)
   show(after)
-  camera "fit"
+  clear()
+  view { labels = false }
   highlight(after:vertex(0), "yellow")
   label(after:vertex(0), "corner")
   arrow(a, right_vertex, "blue")
@@ -418,7 +425,7 @@ step("Linear subdivision beside it", function()
   local cube = quad_cube()
   show(cube)
   camera "fit"
-  view { halfedges = false }
+  view { halfedges = false, labels = true }
   local linear = cube:copy()
   assert(linear:linear_subdivide())
   local smooth = catmull_clark(cube)
@@ -446,6 +453,7 @@ step("Linear subdivision beside it", function()
   local both = side_by_side(linear, smooth, meshedit.vec3(4 * width, 0, 0))
   show(both)
   camera "fit"
+  view { labels = false }
   label(both:vertex(0), "linear")
   label(both:vertex(linear:num_vertices()), "Catmull-Clark")
   highlight(both:vertex(0), "yellow")
