@@ -240,8 +240,10 @@ An old vertex P with n edges moves to its **vertex point**
   (F + 2R + (n - 3) P) / n
 
 where F is the mean of the face points of its n faces and R the mean of the **midpoints** of its n edges.]]
-  say("The yellow corner v0 is at P = " .. point(P) .. " with n = " .. n .. ". Its faces' face points average to "
-    .. "F = " .. point(F) .. ", and its edges' midpoints to R = " .. point(R) .. ".")
+  say("The yellow corner v0 has n = " .. n .. " edges, and\n\n"
+    .. "- P, where it is: " .. point(P) .. "\n"
+    .. "- F, the mean of its faces' face points: " .. point(F) .. "\n"
+    .. "- R, the mean of its edges' midpoints: " .. point(R))
   local right = vertex_point(cube, v)
   local mistakes = {
     { P, "It moves: Catmull-Clark approximates, every old vertex goes to its vertex point." },
