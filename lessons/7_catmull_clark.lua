@@ -135,24 +135,16 @@ step("Face points", function()
   view { halfedges = false, labels = true }
   local top = cube:face(1)
   highlight(top, "yellow")
+  local half = cube:vertex(7).position
   say [[
 # Catmull-Clark subdivision
 
-Loop subdivision (part 6) needs triangles. **Catmull-Clark** takes any polygons and turns every face of n corners
-into n quads. Like Loop it makes new points from the old mesh first, then rebuilds, then moves every vertex:
-
-- a **face point** for every face
-- an **edge point** for every edge
-- a **vertex point** for every old vertex, where that vertex moves
-
-The window's **Subdivide** menu runs it whole, or one phase at a time.]]
-  say("On screen is the unit cube centred at 0, as **six quads**: " .. counts(cube) .. ". The face point of a face "
-    .. "is the **centroid** of its corners. The yellow face is the top, z = 0.5; its corners are "
-    .. (function()
-      local list = {}
-      for v in top:vertices() do list[#list + 1] = point(v.position) end
-      return table.concat(list, ", ")
-    end)() .. ".")
+Loop subdivision (part 6) needs triangles. **Catmull-Clark** takes any polygons: every face of n corners becomes
+n quads. From the old mesh it makes a **face point** per face, an **edge point** per edge and a **vertex point**
+per old vertex (where that vertex moves). The window's **Subdivide** menu runs it whole, or a phase at a time.]]
+  say("On screen: the unit cube centred at 0 as **six quads** (" .. counts(cube) .. "), its corners at (±"
+    .. num(half.x) .. ", ±" .. num(half.y) .. ", ±" .. num(half.z) .. "). A face point is the **centroid** of "
+    .. "the face's corners. The yellow face is the top, where z = " .. num(centroid(top).z) .. ".")
   local right = face_point(cube, top)
   local sum = centroid(top) * top:degree()
   answer {
@@ -471,6 +463,5 @@ step("Linear subdivision beside it", function()
     .. "level after level the mesh converges to a smooth surface (v0 starts "
     .. num(cube:vertex(0).position:length()) .. " from the centre; after three levels it is "
     .. num(levels:vertex(0).position:length()) .. " from it, and there are " .. levels:num_faces()
-    .. " quads). Try both on any mesh in the window with **Subdivide**, and step through Catmull-Clark's phases "
-    .. "one at a time there.")
+    .. " quads). Try both in the window's **Subdivide** menu.")
 end)
