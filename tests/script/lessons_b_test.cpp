@@ -1,4 +1,4 @@
-// The part 4, 5, 6 and "bring your own mesh" lessons: each runs headless with its answers file through every
+// The part 4, 5, 6, 7 and "bring your own mesh" lessons: each runs headless with its answers file through every
 // step (run_lesson_headless, as CI's `meshedit lesson --headless` does) and says the numbers the core gives;
 // driven step by step on a HeadlessHost, the labels and highlights name the right elements, and each check
 // waits until the mesh on screen really is right (a wrong edit leaves the step waiting).
@@ -15,6 +15,8 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/catmull_clark.h"
+#include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
@@ -395,6 +397,178 @@ TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {
   runner.update(0.0);
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   EXPECT_TRUE(contains(said(runner), "All 8 corners are 0.5954 from the centre")) << said(runner);
+}
+
+// ---- part 7: Catmull-Clark subdivision ----
+
+// A number as lesson 7 prints it: at most four decimals, trailing zeros dropped, never "-0".
+std::string lesson_number(double x) {
+  char text[64];
+  std::snprintf(text, sizeof text, "%.4f", x + 0.0);
+  std::string s = text;
+  while (s.back() == '0') s.pop_back();
+  if (s.back() == '.') s.pop_back();
+  return s == "-0" ? "0" : s;
+}
+
+std::string lesson_point(const glm::dvec3& p) {
+  return "(" + lesson_number(p.x) + ", " + lesson_number(p.y) + ", " + lesson_number(p.z) + ")";
+}
+
+std::string lesson_counts(const HalfedgeMesh& mesh) {
+  return std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(mesh.num_edges()) + " edges, " +
+         std::to_string(mesh.num_faces()) + " faces";
+}
+
+// The lesson's grid of n by n unit quads in the z = 0 plane, row by row from v0 at (0, 0).
+HalfedgeMesh quad_grid(uint32_t n) {
+  PolygonMesh polygons;
+  for (uint32_t y = 0; y <= n; ++y) {
+    for (uint32_t x = 0; x <= n; ++x) polygons.add_vertex({double(x), double(y), 0});
+  }
+  for (uint32_t y = 0; y < n; ++y) {
+    for (uint32_t x = 0; x < n; ++x) {
+      const uint32_t a = y * (n + 1) + x;
+      polygons.add_face({a, a + 1, a + n + 2, a + n + 1});
+    }
+  }
+  return build_halfedge_mesh(polygons);
+}
+
+EdgeId edge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
+  for (EdgeId e : mesh.edges()) {
+    const HalfedgeId h = mesh.halfedge(e);
+    const VertexId u = mesh.vertex(h), w = mesh.vertex(mesh.twin(h));
+    if ((u == a && w == b) || (u == b && w == a)) return e;
+  }
+  ADD_FAILURE() << "no edge between " << format_id(a) << " and " << format_id(b);
+  return EdgeId(0);
+}
+
+// Each face, edge and vertex point the lesson prints is the one the core's phase 1 computes (the lesson reads them
+// back from mesh:catmull_clark() by the documented id layout), and every count, the linear mesh and the three
+// levels are the core's too.
+TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
+  const std::string text = run_headless("7_catmull_clark", 7);
+  const HalfedgeMesh cube = build_halfedge_mesh(make_cube_quads());
+  const OpResult<CatmullClarkState> state = catmull_clark_compute_points(cube);
+  ASSERT_TRUE(state.ok());
+
+  // Face points: f1 is the top, z = 0.5.
+  const HalfedgeId top = cube.halfedge(FaceId(1));
+  HalfedgeId h = top;
+  do {
+    EXPECT_EQ(cube.position(cube.vertex(h)).z, 0.5);
+    h = cube.next(h);
+  } while (h != top);
+  EXPECT_TRUE(contains(text, "The core puts it at " + lesson_point(state.value.face_point[1]) +
+                                 ": the centre of the top.")) << text;
+
+  // Edge points: the edge from v0 to v1, pulled in from its midpoint.
+  const EdgeId e = edge_between(cube, VertexId(0), VertexId(1));
+  const glm::dvec3 midpoint = 0.5 * (cube.position(VertexId(0)) + cube.position(VertexId(1)));
+  const glm::dvec3 edge_point = state.value.edge_point[e.index];
+  EXPECT_GT(glm::length(edge_point - midpoint), 0.1);
+  EXPECT_TRUE(contains(text, "The orange edge " + format_id(e) + " runs from")) << text;
+  EXPECT_TRUE(contains(text, "The core puts it at " + lesson_point(edge_point) + ". The blue arrow goes from the "
+                                 "midpoint " + lesson_point(midpoint) + " to it: the two face points pull it " +
+                                 lesson_number(glm::length(midpoint - edge_point)) + " in")) << text;
+
+  // Vertex points: the corner v0 keeps 5/9 of its distance from the centre.
+  const glm::dvec3 corner = state.value.vertex_point[0];
+  EXPECT_NEAR(glm::length(corner) / glm::length(cube.position(VertexId(0))), 5.0 / 9.0, 1e-12);
+  EXPECT_TRUE(contains(text, "The core moves v0 to " + lesson_point(corner) + " (blue arrow): 5/9 of its distance "
+                             "from the centre")) << text;
+
+  // Counts after one level, on the cube and on the tetrahedron.
+  HalfedgeMesh once = cube;
+  ASSERT_TRUE(catmull_clark_subdivide(once).ok);
+  EXPECT_EQ(once.num_vertices(), cube.num_vertices() + cube.num_edges() + cube.num_faces());
+  EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(once) + ", all " +
+                                 std::to_string(once.num_faces()) + " quads.")) << text;
+  EXPECT_TRUE(contains(text, "so the 24 corners of the old faces give " + std::to_string(once.num_faces()) +
+                                 " quads and E' = 2E + 24 = " + std::to_string(once.num_edges()) + " edges.")) << text;
+  HalfedgeMesh tetrahedron = build_halfedge_mesh(make_tetrahedron());
+  ASSERT_TRUE(catmull_clark_subdivide(tetrahedron).ok);
+  for (FaceId f : tetrahedron.faces()) EXPECT_EQ(tetrahedron.degree(f), 4u) << format_id(f);
+  EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(tetrahedron) + ", all " +
+                                 std::to_string(tetrahedron.num_faces()) + " quads. After one level")) << text;
+
+  // The boundary: a boundary edge's point is its midpoint, the grid's corner goes to 3/4 P + 1/8 (r0 + r1).
+  const HalfedgeMesh grid = quad_grid(2);
+  const OpResult<CatmullClarkState> grid_state = catmull_clark_compute_points(grid);
+  ASSERT_TRUE(grid_state.ok());
+  const EdgeId boundary = edge_between(grid, VertexId(0), VertexId(1));
+  EXPECT_EQ(grid_state.value.edge_point[boundary.index], glm::dvec3(0.5, 0, 0));
+  EXPECT_TRUE(contains(text, "The core puts it at the midpoint, " +
+                                 lesson_point(grid_state.value.edge_point[boundary.index]) + ".")) << text;
+  HalfedgeMesh grid_once = grid;
+  ASSERT_TRUE(catmull_clark_subdivide(grid_once).ok);
+  EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(grid_once) + ", still " +
+                                 std::to_string(grid_once.num_boundaries()) + " boundary loop. The corner went from "
+                                 "(0, 0, 0) to " + lesson_point(grid_state.value.vertex_point[0]))) << text;
+  EXPECT_EQ(grid_state.value.vertex_point[0], glm::dvec3(0.125, 0.125, 0));
+
+  // Linear subdivision moves no old vertex; Catmull-Clark moves v0; three levels.
+  HalfedgeMesh linear = cube;
+  ASSERT_TRUE(linear_subdivide(linear).ok);
+  for (uint32_t i = 0; i < 8; ++i) EXPECT_EQ(linear.position(VertexId(i)), cube.position(VertexId(i))) << i;
+  EXPECT_TRUE(contains(text, "Left, linear: not one old vertex moved, and v0 is still at " +
+                                 lesson_point(linear.position(VertexId(0))) + ". Right, Catmull-Clark: v0 went to " +
+                                 lesson_point(once.position(VertexId(0))) + ". Both have " + lesson_counts(linear)))
+      << text;
+  HalfedgeMesh thrice = cube;
+  ASSERT_TRUE(catmull_clark_subdivide(thrice, 3).ok);
+  EXPECT_TRUE(contains(text, "after three levels it is " + lesson_number(glm::length(thrice.position(VertexId(0)))) +
+                                 " from it, and there are " + std::to_string(thrice.num_faces()) + " quads")) << text;
+}
+
+// Driven step by step: a wrong vertex point keeps the step waiting; the right one draws the arrow from the corner to
+// the core's vertex point. The last step shows the linear and the Catmull-Clark cube side by side, v0 of each
+// labelled.
+TEST(LessonsB, CatmullClarkVertexPointArrowIsTheCoresAndTheLastStepShowsBoth) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(lesson_path("7_catmull_clark"))) << runner.error();
+  const HalfedgeMesh cube = build_halfedge_mesh(make_cube_quads());
+  const OpResult<CatmullClarkState> state = catmull_clark_compute_points(cube);
+  ASSERT_TRUE(state.ok());
+
+  runner.go_to(step_index(runner, "Vertex points"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
+  EXPECT_EQ(label_of(host, VertexId(0)), "v0, n = 3");
+  EXPECT_EQ(colour_of(host, VertexId(0)), colour_hex(kDarkSwatches.yellow));
+  runner.deliver(LessonEvent::value("-0.5, -0.5, -0.5"));  // the corner where it was
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "a wrong answer keeps the step waiting";
+  EXPECT_TRUE(host.arrows().empty());
+  const glm::dvec3 p = state.value.vertex_point[0];
+  char typed[128];
+  std::snprintf(typed, sizeof typed, "%.17g, %.17g, %.17g", p.x, p.y, p.z);
+  ASSERT_TRUE(runner.deliver(LessonEvent::value(typed)));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  ASSERT_EQ(host.arrows().size(), 1u);
+  EXPECT_EQ(host.arrows()[0].from, cube.position(VertexId(0)));
+  EXPECT_EQ(host.arrows()[0].to, p);
+
+  runner.go_to(step_index(runner, "Linear subdivision beside it"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("Where it was")));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
+  HalfedgeMesh once = cube;
+  ASSERT_TRUE(catmull_clark_subdivide(once).ok);
+  const HalfedgeMesh* screen = host.screen_mesh();
+  ASSERT_TRUE(screen);
+  const uint32_t right = static_cast<uint32_t>(once.num_vertices());
+  EXPECT_EQ(screen->num_vertices(), 2 * once.num_vertices());
+  EXPECT_EQ(screen->num_faces(), 2 * once.num_faces());
+  EXPECT_EQ(screen->position(VertexId(0)), cube.position(VertexId(0)));
+  // The right-hand copy is the core's level moved along x.
+  const glm::dvec3 offset = screen->position(VertexId(right)) - once.position(VertexId(0));
+  EXPECT_GT(offset.x, 1.0);
+  EXPECT_EQ(offset.y, 0.0);
+  EXPECT_EQ(offset.z, 0.0);
+  EXPECT_EQ(label_of(host, VertexId(0)), "linear");
+  EXPECT_EQ(label_of(host, VertexId(right)), "Catmull-Clark");
 }
 
 // ---- bring your own mesh ----
