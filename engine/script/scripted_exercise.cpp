@@ -18,9 +18,6 @@
 namespace meshedit {
 namespace {
 
-constexpr const char* kFields[] = {"name",      "title",    "file",     "call", "signature", "takes",
-                                   "allow",     "reference", "diagnose", "hint", "fixtures"};
-
 struct TakesName {
   const char* name;
   std::optional<ElementKind> kind;
@@ -64,8 +61,8 @@ struct ScriptedExerciseReader {
     if (reading->called) raise(L, "exercise: a file defines one exercise; exercise{} was called a second time");
     if (!lua_istable(L, 1)) raise(L, "exercise: expected a table like exercise{ name = \"collapse\", ... }, got " +
                                          type_name(L, 1));
-    check_fields(L, 1, "exercise", {kFields[0], kFields[1], kFields[2], kFields[3], kFields[4], kFields[5],
-                                    kFields[6], kFields[7], kFields[8], kFields[9], kFields[10]});
+    check_fields(L, 1, "exercise", {"name", "title", "file", "call", "signature", "takes", "allow", "reference",
+                                    "diagnose", "hint", "fixtures"});
     ScriptedExercise& x = *reading->target;
     x.name_ = string_field(L, "name", true);
     if (!is_identifier(x.name_)) raise(L, "exercise: name must be a word like \"collapse\", got '" + x.name_ + "'");
