@@ -165,6 +165,7 @@ bool EditorApp::open(const std::filesystem::path& path) {
     title_names_lesson_ = false;
     recent_.swap(recent);
     repairable_path_.clear();
+    repairs_ = RepairMarks();  // the Repairs tab belongs to the repaired copy this file replaces
     set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {

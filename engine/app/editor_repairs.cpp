@@ -23,6 +23,27 @@ std::string spot_ids(const RepairSpots& spots) {
   return text.empty() ? std::string("nothing left to show") : text;
 }
 
+// `text` with line breaks at spaces so that no line is wider than `width` (a word wider than that keeps a line of its
+// own). ImGui's own wrapping also breaks after a full stop, which would split "faces 2..4" in two.
+std::string wrapped_at_spaces(const std::string& text, float width) {
+  std::string out, line;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = longer;
+    }
+    start = end + 1;
+  }
+  return out + line;
+}
+
 }  // namespace
 
 bool EditorApp::repair_spots_current() const {
@@ -52,18 +73,16 @@ void EditorApp::draw_repairs_tab() {
   const bool current = repair_spots_current();
   const Palette& palette = palette_for(settings_.theme);
   ImGui::TextWrapped("%s", repairs_.summary.c_str());
-  if (current) {
-    ImGui::TextDisabled("Click a change to select it; its spots are drawn in the last edit's colour.");
-  } else {
-    ImGui::TextDisabled("The mesh was edited or another opened: the spots are no longer shown.");
-  }
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", current ? "Click a change to select it; its spots are drawn in the last edit's colour."
+                                   : "The mesh was edited or another shown: the spots are no longer drawn.");
+  ImGui::PopStyleColor();
   ImGui::Separator();
   const float line = ImGui::GetTextLineHeight();
   for (size_t i = 0; i < repairs_.rows.size(); ++i) {
-    const std::string& sentence = repairs_.rows[i];
+    const std::string sentence = wrapped_at_spaces(repairs_.rows[i], ImGui::GetContentRegionAvail().x);
     const std::string ids = spot_ids(repairs_.spots[i]);
-    const float width = ImGui::GetContentRegionAvail().x;
-    const float height = ImGui::CalcTextSize(sentence.c_str(), nullptr, false, width).y + line;
+    const float height = ImGui::CalcTextSize(sentence.c_str()).y + line;
     const ImVec2 top = ImGui::GetCursorScreenPos();
     ImGui::PushID(int(i));
     ImGui::BeginDisabled(!current);
@@ -75,9 +94,7 @@ void EditorApp::draw_repairs_tab() {
     ImGui::PopID();
     const ImVec2 after = ImGui::GetCursorScreenPos();
     ImGui::SetCursorScreenPos(top);
-    ImGui::PushTextWrapPos(ImGui::GetCursorPosX() + width);
     ImGui::TextUnformatted(sentence.c_str());
-    ImGui::PopTextWrapPos();
     ImGui::TextColored(im_colour(current ? palette.changed : palette.dead), "%s", ids.c_str());
     ImGui::SetCursorScreenPos(after);
     ImGui::Spacing();
@@ -93,7 +110,7 @@ void EditorApp::draw_repair_spots() {
   // A selected spot vertex keeps its selection colour inside the spot's ring, so both read.
   if (selection_.selected.kind == ElementKind::Vertex && doc_.mesh.alive(selection_.selected)) {
     const glm::vec4 selected(palette_for(settings_.theme).selected, 1.0f);
-    overlay.points.push_back({doc_.mesh.position(VertexId(selection_.selected.index)), selected, 8.0f});
+    overlay.points.push_back({doc_.mesh.position(VertexId(selection_.selected.index)), selected, 9.0f});
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
 }

@@ -6,7 +6,8 @@
 // - rows.size() == spots.size(); a row with empty spots (unused vertices dropped) selects nothing.
 // - The spots are current only for the mesh exactly as it was opened: the document generation and mesh version
 //   recorded then. Opening another file (a new generation) or any edit, undo included (a new version), makes them
-//   stale for good: the view stops highlighting them and the rows stop selecting; the rows stay listed.
+//   stale for good: the view stops highlighting them and the rows stop selecting; the rows stay listed (opening
+//   another file with open() empties the marks, and the Repairs tab goes).
 #pragma once
 
 #include <cstdint>

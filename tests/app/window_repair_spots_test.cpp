@@ -1,6 +1,6 @@
 // The real window: after File > Open a repaired copy, clicking a change in the Repairs tab selects its spot in the
-// repaired mesh, and once the mesh is edited the rows no longer select (scripted actions under Xvfb; skips without
-// Xvfb).
+// repaired mesh; once the mesh is edited the rows no longer select, and another file opened drops them (scripted
+// actions under Xvfb; skips without Xvfb).
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -51,6 +51,8 @@ TEST(WindowRepairSpots, ClickingTheBowTiesRowSelectsTheSplitVertex) {
       "select e0\nkey S\nframes 1\nselect v1\n"
       "repair-row 1\n"  // line 22: the mesh was edited, the spots are stale
       "expect-selected v1\n"
+      "open " + file.string() + "\n"
+      "repair-row 1\n"  // line 25: another file is open, the Repairs tab is gone
       "quit\n";
   const WindowRun run = run_window(x.display(), file, actions, dir);
   EXPECT_EQ(run.status, 3) << run.output;  // the refused `open` and the two refused rows are failures by design
@@ -65,6 +67,8 @@ TEST(WindowRepairSpots, ClickingTheBowTiesRowSelectsTheSplitVertex) {
   EXPECT_TRUE(has(run.output, "the Repairs tab has no change 2")) << run.output;
   EXPECT_TRUE(has(run.output, "actions.txt:22: repair-row failed")) << run.output;
   EXPECT_TRUE(has(run.output, "the repaired spots are gone")) << run.output;
+  EXPECT_FALSE(has(run.output, "actions.txt:24: open failed")) << run.output;
+  EXPECT_TRUE(has(run.output, "actions.txt:25: repair-row failed: the Repairs tab has no change 1")) << run.output;
 }
 
 }  // namespace
