@@ -124,6 +124,10 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     if (!app.open(args[0])) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "open-repaired") {
     if (!app.open_repaired()) throw std::runtime_error(app.document().message.text);
+  } else if (a.verb == "repair-row") {
+    const int row = std::stoi(args[0]);
+    if (row < 1) throw std::runtime_error("repair-row counts from 1");
+    if (!app.click_repair_row(size_t(row - 1))) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "triangulate") {
     if (!triangulate_all(app.document(), app.selection()).ok) throw std::runtime_error(app.document().message.text);
   } else if (a.verb == "save") {

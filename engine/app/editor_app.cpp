@@ -115,7 +115,6 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   draw_columns();
   draw_open_panel();
   draw_help_panel();
-  draw_repairs_panel();
 }
 
 void EditorApp::draw_mesh_view() {
@@ -168,6 +167,7 @@ void EditorApp::draw_mesh_view() {
   }
   mesh_renderer_->draw(camera_, viewport(), drawn, highlights);
   if (!playing) draw_lesson_marks();
+  if (!playing) draw_repair_spots();
   draw_edit_animation();
 }
 

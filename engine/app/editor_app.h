@@ -33,6 +33,7 @@
 //   relative to the view's top-left corner.
 #pragma once
 
+#include <cstdint>
 #include <deque>
 #include <filesystem>
 #include <memory>
@@ -44,6 +45,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/edit_animator.h"
+#include "app/repair_marks.h"
 #include "app/up_axis_choice.h"
 #include "app/view_quality.h"
 #include "app/window_lesson_host.h"
@@ -90,9 +92,16 @@ class EditorApp {
   // keeps all of them as they were and reports the error. Returns whether it opened.
   bool open(const std::filesystem::path& path);
   // Opens a repaired copy (core/mesh_repair.h) of the last mesh file open() refused as not a manifold, whole or
-  // nothing as open(): the status line gives the repair's summary and the Repairs dialog lists every change with the
-  // file's numbers. The copy is named "FILE (repaired)"; the file itself is not touched. Returns whether it opened.
+  // nothing as open(): the status line gives the repair's summary and the Repairs tab (in front) lists every change
+  // with the file's numbers, its spots highlighted in the view. The copy is named "FILE (repaired)"; the file itself
+  // is not touched. Returns whether it opened.
   bool open_repaired();
+  // The Repairs tab's row `row` (0: the first change) clicked: selects the row's first spot (a vertex, else a face) in
+  // the repaired mesh. Refused (false, a Warning in the status line, the selection kept) when there is no such row,
+  // the row has no spot, or the spots are stale (app/repair_marks.h: another file, or the mesh edited).
+  bool click_repair_row(size_t row);
+  const RepairMarks& repair_marks() const { return repairs_; }
+  bool repair_spots_current() const;  // the spots are the shown mesh's: highlighted, and the rows select
   // The file open_repaired() would repair ("" when the last file open() tried opened, or failed otherwise).
   const std::string& repairable_file() const { return repairable_path_; }
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
@@ -244,7 +253,8 @@ class EditorApp {
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
-  void draw_repairs_panel();
+  void draw_repairs_tab();    // the Repairs tab's rows (editor_repairs.cpp)
+  void draw_repair_spots();   // every current spot highlighted over the mesh
   // After open() failed: remembers `path` for open_repaired() when `repairable`, and says so in the message.
   void offer_repair(const std::filesystem::path& path, bool repairable) noexcept;
   void message(Severity severity, const std::string& text);
@@ -317,8 +327,9 @@ class EditorApp {
   bool show_open_panel_ = false;
   bool show_help_ = false;
   std::string repairable_path_;            // the mesh file open() last refused as not a manifold
-  std::vector<std::string> repairs_shown_;  // the Repairs dialog: the summary, then every change
-  bool show_repairs_ = false;
+  RepairMarks repairs_;                    // the Repairs tab: the last repaired copy's changes and their spots
+  bool repairs_tab_open_ = false;
+  size_t repair_row_clicked_ = SIZE_MAX;   // the row last clicked (shown selected while the spots are current)
   std::string open_path_input_;
   std::string save_path_input_;
   std::deque<std::string> recent_;
@@ -330,7 +341,7 @@ class EditorApp {
   float font_pixels_ = Settings::kDefaultFontPx;
   WindowLayout layout_;
   UiProbe probe_;
-  enum class RightTab { None, Tables, Inspector, Exercises };
+  enum class RightTab { None, Tables, Inspector, Exercises, Repairs };
   RightTab select_tab_ = RightTab::None;  // a tab to bring to the front at the next frame (I, X)
   // The view in framebuffer pixels: x and y from the framebuffer's top-left corner.
   struct PixelRect {

@@ -10,7 +10,7 @@
 // once (memory ran out, a mesh too large to draw) it drops what it showed and the next frame tries again, under the
 // frame guard, which reports what stops it.
 // A mesh file the builder refuses as not a manifold is remembered, and File > Open a repaired copy opens it repaired
-// (core/mesh_repair.h), whole or nothing in the same way, listing the changes in the Repairs dialog.
+// (core/mesh_repair.h), whole or nothing in the same way, listing the changes in the Repairs tab.
 // Saving makes the new recent list and the message before it writes the file, and only swaps them in after.
 #include <deque>
 #include <new>
@@ -165,6 +165,7 @@ bool EditorApp::open(const std::filesystem::path& path) {
     title_names_lesson_ = false;
     recent_.swap(recent);
     repairable_path_.clear();
+    repairs_ = RepairMarks();  // the Repairs tab belongs to the repaired copy this file replaces
     set_message(doc_, Severity::Info, std::move(text));
     return true;
   } catch (const std::exception& e) {
@@ -193,20 +194,24 @@ bool EditorApp::open_repaired() {
     if (file.kind != FileKind::Mesh) throw std::runtime_error(path.string() + " is not a mesh file");
     const RepairResult repaired = repair_polygons(file.mesh);
     HalfedgeMesh mesh = build_from_file(repaired.polygons, path).mesh;
-    std::vector<std::string> shown{repaired.report.summary()};
-    shown.insert(shown.end(), repaired.report.changes.begin(), repaired.report.changes.end());
+    RepairMarks marks = marks_of_repair(repaired.report);
     std::string title = window_title(path.filename().string() + " (repaired)");
     std::string name = path.string() + " (repaired)";
     std::string text = "opened a repaired copy of " + path.string() + ": " + repaired.report.summary() +
-                       " (the Repairs dialog lists each change)";
+                       " (the Repairs tab lists each change; click one to select it)";
     // Nothing from here on can fail.
     file_up_axis_ = file.up_axis;
     up_axis_choice_ = UpAxisChoice::FromFile;
     take_mesh(std::move(mesh), std::move(name));
     title_.swap(title);
     title_names_lesson_ = false;
-    repairs_shown_.swap(shown);
-    show_repairs_ = true;
+    marks.generation = doc_.generation;
+    marks.version = doc_.mesh.version();
+    repairs_ = std::move(marks);
+    repairs_tab_open_ = true;
+    repair_row_clicked_ = SIZE_MAX;
+    select_tab_ = RightTab::Repairs;
+    settings_.layout.right_open = true;
     repairable_path_.clear();
     set_message(doc_, Severity::Info, std::move(text));
     return true;

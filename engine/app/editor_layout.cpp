@@ -152,6 +152,10 @@ void EditorApp::draw_right_column() {
       draw_exercise_panel_contents(exercises_, exercise_panel_, doc_, selection_);
       ImGui::EndTabItem();
     }
+    if (!repairs_.empty() && repairs_tab_open_ && tab("Repairs", RightTab::Repairs, &repairs_tab_open_)) {
+      draw_repairs_tab();
+      ImGui::EndTabItem();
+    }
     ImGui::EndTabBar();
   }
   select_tab_ = RightTab::None;

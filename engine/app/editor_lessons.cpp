@@ -13,6 +13,7 @@
 #include <imgui.h>
 
 #include "app/editor_app.h"
+#include "app/element_highlight.h"
 #include "app/mesh_loading.h"
 #include "core/palette.h"
 #include "render/arrow_overlay.h"
@@ -149,29 +150,7 @@ void EditorApp::draw_lesson_marks() {
   overlay.on_top = true;
   for (const auto& [element, colour] : marks.highlights) {
     const glm::vec4 rgba(swatch_in_theme(colour, settings_.theme), 1.0f);  // a named swatch in this theme's shade
-    if (!mesh.alive(element)) continue;
-    switch (element.kind) {
-      case ElementKind::Vertex:
-        overlay.points.push_back({mesh.position(VertexId(element.index)), rgba, 14.0f});
-        break;
-      case ElementKind::Edge:
-        if (const auto s = edge_segment(mesh, EdgeId(element.index))) {
-          overlay.lines.push_back({{glm::dvec3(s->start), glm::dvec3(s->end)}, rgba, 5.0f, false});
-        }
-        break;
-      case ElementKind::Halfedge:
-        if (const auto a = halfedge_arrow(mesh, HalfedgeId(element.index))) {
-          overlay.lines.push_back(
-              {{glm::dvec3(a->tail), glm::dvec3(a->tip), glm::dvec3(a->barb_inner)}, rgba, 4.0f, false});
-        }
-        break;
-      case ElementKind::Face:
-      case ElementKind::Boundary:
-        if (const auto corners = face_corners(mesh, element.face_id())) {
-          overlay.lines.push_back({*corners, rgba, 4.0f, true});
-        }
-        break;
-    }
+    add_highlight(overlay, mesh, element, rgba);
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
   if (marks.arrows.empty()) return;

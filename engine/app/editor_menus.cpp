@@ -205,21 +205,6 @@ void EditorApp::draw_open_panel() {
   end_dialog(show_open_panel_);
 }
 
-// The changes File > Open a repaired copy made: the summary, then one line per change in the file's numbers.
-void EditorApp::draw_repairs_panel() {
-  const float em = ImGui::GetFontSize();
-  if (!begin_dialog("Repairs", show_repairs_, ImVec2(36 * em, 20 * em))) return;
-  for (size_t i = 0; i < repairs_shown_.size(); ++i) {
-    if (i == 0) {
-      ImGui::TextWrapped("%s", repairs_shown_[i].c_str());
-      ImGui::Separator();
-    } else {
-      ImGui::BulletText("%s", repairs_shown_[i].c_str());
-    }
-  }
-  end_dialog(show_repairs_);
-}
-
 void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;

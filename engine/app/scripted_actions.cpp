@@ -24,6 +24,7 @@ const std::map<std::string, int>& arities() {
       {"animate-edits", 1},   {"lesson-choose", -1},    {"lesson-answer", -1},    {"expect-lesson-feedback", -1},
       {"expect-lesson-hint", -1}, {"expect-lesson-live", -1}, {"curve-t", 1},     {"lesson-show-mine", 0},
       {"expect-exercise-run", -1}, {"open-repaired", 0}, {"triangulate", 0},
+      {"repair-row", 1},
   };
   return table;
 }

@@ -7,6 +7,8 @@
 //   hover X Y                      open PATH           save PATH           screenshot PATH
 //   open-repaired         (File > Open a repaired copy of the mesh file `open` last refused)
 //   triangulate           (Edit > Triangulate)
+//   repair-row K          (clicks the Repairs tab's K-th change, 1 the first: selects its first spot; fails when
+//                          there is no such row, it has no spot, or the spots are stale)
 //   expect-selected h12            expect-field h0 next h3                expect-changed h0 next
 //   expect-message TEXT...         expect-valid        quit
 //   console LUA CODE...            expect-console TEXT...   (the console's last line contains TEXT)

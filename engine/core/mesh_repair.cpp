@@ -1,6 +1,6 @@
 // The repair steps of mesh_repair.h on a working copy of the polygons: faces are dropped by flag (so a face's index
 // stays its original number), vertices are only appended (so an original vertex keeps its number) until step 6
-// renumbers both. Messages that name new vertices are formatted after that renumbering.
+// renumbers both. Messages that name new vertices, and every change's spots, are made after that renumbering.
 #include "core/mesh_repair.h"
 
 #include <algorithm>
@@ -25,9 +25,30 @@ struct EdgeUse {
   bool operator<(const EdgeUse& o) const { return key != o.key ? key < o.key : face < o.face; }
 };
 
-// Renumbering of step 6: vertex -> its number in the repaired polygons.
+// Renumbering of step 6: vertex -> its number in the repaired polygons (kNone: dropped).
 using FinalNumbers = std::vector<uint32_t>;
 using Message = std::function<std::string(const FinalNumbers&)>;
+// The renumbering of vertices and of faces (face -> its index among the kept faces, kNone: dropped).
+struct Renumbering {
+  FinalNumbers vertices, faces;
+};
+using SpotMaker = std::function<RepairSpots(const Renumbering&)>;
+
+// The numbers that survive, renumbered, in the order given.
+std::vector<uint32_t> renumbered(const FinalNumbers& final, const std::vector<uint32_t>& numbers) {
+  std::vector<uint32_t> out;
+  for (uint32_t x : numbers) {
+    if (final[x] != kNone) out.push_back(final[x]);
+  }
+  return out;
+}
+
+// Spots of the given working vertices and faces (either list may be empty).
+SpotMaker spots_of(std::vector<uint32_t> vertices, std::vector<uint32_t> faces) {
+  return [vertices = std::move(vertices), faces = std::move(faces)](const Renumbering& r) {
+    return RepairSpots{renumbered(r.vertices, vertices), renumbered(r.faces, faces)};
+  };
+}
 
 struct Work {
   std::vector<glm::dvec3> positions;
@@ -36,6 +57,7 @@ struct Work {
   std::vector<uint8_t> kept;       // per face
   size_t original_vertices = 0;
   std::vector<Message> messages;   // formatted once the final numbers are known
+  std::vector<SpotMaker> spots;    // spots[i] for messages[i]
   RepairReport report;
 
   size_t num_faces() const { return offsets.size() - 1; }
@@ -46,8 +68,13 @@ struct Work {
     positions.push_back(positions[v]);
     return static_cast<uint32_t>(positions.size() - 1);
   }
-  void say(std::string text) {
+  void say(std::string text, SpotMaker where) {
     messages.push_back([text = std::move(text)](const FinalNumbers&) { return text; });
+    spots.push_back(std::move(where));
+  }
+  void say(Message text, SpotMaker where) {
+    messages.push_back(std::move(text));
+    spots.push_back(std::move(where));
   }
   // "vertex 12" for an original vertex, "new vertex 41" (its final number) for a copy.
   Message vertex_name(uint32_t v) const {
@@ -57,6 +84,11 @@ struct Work {
     };
   }
 };
+
+std::vector<uint32_t> sorted_copy(std::vector<uint32_t> numbers) {
+  std::sort(numbers.begin(), numbers.end());
+  return numbers;
+}
 
 uint64_t edge_key(uint32_t a, uint32_t b) {
   return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
@@ -136,7 +168,14 @@ void drop_bad_faces(Work& w) {
     if (why.empty()) continue;
     w.kept[f] = 0;
     ++w.report.dropped_bad_faces;
-    w.say(std::move(why));
+    std::vector<uint32_t> in_range;  // the corners that are vertices (each once, in corner order)
+    for (uint32_t c = 0; c < n; ++c) {
+      const uint32_t v = w.at(f, c);
+      if (v < w.original_vertices && std::find(in_range.begin(), in_range.end(), v) == in_range.end()) {
+        in_range.push_back(v);
+      }
+    }
+    w.say(std::move(why), spots_of(std::move(in_range), {}));
   }
 }
 
@@ -179,7 +218,8 @@ void drop_repeated_faces(Work& w) {
   for (const auto& [f, earlier] : repeats) {
     w.kept[f] = 0;
     ++w.report.dropped_repeated_faces;
-    w.say("face " + std::to_string(f) + " repeated face " + std::to_string(earlier) + ": dropped");
+    w.say("face " + std::to_string(f) + " repeated face " + std::to_string(earlier) + ": dropped",
+          spots_of({}, {earlier}));
   }
 }
 
@@ -217,11 +257,11 @@ bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
       const Message va = w.vertex_name(a), vb = w.vertex_name(b);
       const std::string faces = number_list(sharing);
       const uint32_t face = u.face;
-      w.messages.push_back([=](const FinalNumbers& final) {
+      w.say([=](const FinalNumbers& final) {
         return "the edge between " + va(final) + " and " + vb(final) + " had faces " + faces + ": face " +
                std::to_string(face) + " detached (its corners there are now new vertices " +
                std::to_string(final[from_copy]) + " and " + std::to_string(final[to_copy]) + ")";
-      });
+      }, spots_of({from_copy, to_copy}, {face}));
     }
   });
   return w.report.detached_faces != before;
@@ -270,7 +310,8 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
     if (!orientable) {
       ++w.report.non_orientable_components;
       w.say("the " + std::to_string(component.size()) + " faces joined to face " + std::to_string(seed) +
-            " cannot all agree (a one-sided surface, like a Moebius strip): left as they are");
+            " cannot all agree (a one-sided surface, like a Moebius strip): left as they are",
+            spots_of({}, sorted_copy(component)));
       continue;
     }
     size_t flipped = 0;
@@ -278,10 +319,12 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
     if (flipped == 0) continue;
     const uint8_t reverse = 2 * flipped > component.size() ? 0 : 1;  // the majority keeps its orientation
     std::vector<size_t> reversed;
+    std::vector<uint32_t> reversed_faces;
     uint32_t reference = kNone;
     for (uint32_t f : component) {
       if (flip[f] == reverse) {
         reversed.push_back(f);
+        reversed_faces.push_back(f);
         std::reverse(w.indices.begin() + w.offsets[f] + 1, w.indices.begin() + w.offsets[f + 1]);
       } else {
         reference = std::min(reference, f);
@@ -289,7 +332,8 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
     }
     w.report.reversed_faces += reversed.size();
     w.say(std::string(reversed.size() == 1 ? "face " : "faces ") + number_list(reversed) +
-          " reversed to agree with face " + std::to_string(reference));
+          " reversed to agree with face " + std::to_string(reference),
+          spots_of({}, sorted_copy(reversed_faces)));
   }
 }
 
@@ -347,7 +391,12 @@ void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
     }
     const Message name = w.vertex_name(v);
     const bool original = v < w.original_vertices;
-    w.messages.push_back([=](const FinalNumbers& final) {
+    std::vector<uint32_t> spot_vertices{v}, spot_faces;
+    spot_vertices.insert(spot_vertices.end(), copies.begin(), copies.end());
+    for (size_t r = 1; r < moved.size(); ++r) {
+      for (size_t f : moved[r]) spot_faces.push_back(uint32_t(f));
+    }
+    w.say([=](const FinalNumbers& final) {
       std::string text = name(final) + " was a bow-tie: split into " + std::to_string(original ? v : final[v]);
       for (size_t r = 0; r < copies.size(); ++r) {
         text += (r + 1 == copies.size() ? " and new vertex " : ", new vertex ") + std::to_string(final[copies[r]]);
@@ -360,12 +409,13 @@ void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
                 number_list(moved[r]) + " moved to " + std::to_string(final[copies[r - 1]]);
       }
       return text + ")";
-    });
+    }, spots_of(std::move(spot_vertices), sorted_copy(std::move(spot_faces))));
   }
 }
 
-// Step 6 and the output: the final numbers of used vertices, and the repaired polygons.
-PolygonMesh finish(Work& w, FinalNumbers& final) {
+// Step 6 and the output: the final numbers of used vertices and of kept faces, and the repaired polygons.
+PolygonMesh finish(Work& w, Renumbering& numbers) {
+  FinalNumbers& final = numbers.vertices;
   std::vector<uint8_t> used(w.positions.size(), 0);
   for (uint32_t f = 0; f < w.num_faces(); ++f) {
     if (!w.kept[f]) continue;
@@ -384,12 +434,15 @@ PolygonMesh finish(Work& w, FinalNumbers& final) {
   if (!unused.empty()) {
     w.report.dropped_vertices = unused.size();
     w.say(std::string(unused.size() == 1 ? "vertex " : "vertices ") + number_list(unused) +
-          (unused.size() == 1 ? " was" : " were") + " used by no face: dropped");
+          (unused.size() == 1 ? " was" : " were") + " used by no face: dropped",
+          spots_of({}, {}));
   }
   out.indices.reserve(w.indices.size());
   out.face_offsets.reserve(w.num_faces() + 1);
+  numbers.faces.assign(w.num_faces(), kNone);
   for (uint32_t f = 0; f < w.num_faces(); ++f) {
     if (!w.kept[f]) continue;
+    numbers.faces[f] = static_cast<uint32_t>(out.face_offsets.size() - 1);
     for (uint32_t i = w.offsets[f]; i < w.offsets[f + 1]; ++i) out.indices.push_back(final[w.indices[i]]);
     out.face_offsets.push_back(static_cast<uint32_t>(out.indices.size()));
   }
@@ -412,11 +465,13 @@ RepairResult repair_polygons(const PolygonMesh& polygons) {
   orient_components(w, uses);
   split_bowties(w, uses);
   RepairResult result;
-  FinalNumbers final;
-  result.polygons = finish(w, final);
+  Renumbering numbers;
+  result.polygons = finish(w, numbers);
   result.report = std::move(w.report);
   result.report.changes.reserve(w.messages.size());
-  for (const Message& m : w.messages) result.report.changes.push_back(m(final));
+  for (const Message& m : w.messages) result.report.changes.push_back(m(numbers.vertices));
+  result.report.spots.reserve(w.spots.size());
+  for (const SpotMaker& s : w.spots) result.report.spots.push_back(s(numbers));
   return result;
 }
 

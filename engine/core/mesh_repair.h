@@ -20,10 +20,17 @@
 // - The report names original vertex and face numbers (what the file says); a new vertex is named by its number in
 //   the repaired polygons ("vertex 12 was a bow-tie: split into 12 and new vertex 40 (faces 3, 4 moved)").
 //   A mesh with nothing to repair gives an empty report and identical polygons.
+// - Each change also has its spots: where it is in the REPAIRED polygons, as output vertex and face indices (which
+//   build_halfedge_mesh keeps as VertexId and FaceId: mesh_build.h). A bow-tie split: the vertex's output index,
+//   then its new vertices; the faces moved. A detached face: its output face and its two new vertices. Reversed
+//   faces (and a one-sided part): their output faces. A dropped face points at its nearest survivors: a degenerate
+//   face at those of its corners that are still used (no face), a repeated face at the face it repeats. Dropped
+//   unused vertices point at nothing (empty spots). spots.size() == changes.size().
 // - Nothing here builds a half-edge mesh: build_halfedge_mesh keeps refusing unrepaired input.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -31,8 +38,16 @@
 
 namespace meshedit {
 
+// Where one change is in the repaired polygons (see the invariants): output indices, sorted as the change lists them.
+struct RepairSpots {
+  std::vector<uint32_t> vertices;
+  std::vector<uint32_t> faces;
+  bool empty() const { return vertices.empty() && faces.empty(); }
+};
+
 struct RepairReport {
   std::vector<std::string> changes;  // one sentence per change, in the order of the steps
+  std::vector<RepairSpots> spots;    // spots[i]: where changes[i] is in the repaired polygons
   size_t dropped_bad_faces = 0;      // step 1
   size_t dropped_repeated_faces = 0; // step 2
   size_t detached_faces = 0;         // step 3

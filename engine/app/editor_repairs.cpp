@@ -1,0 +1,118 @@
+// The Repairs tab and the repaired spots in the mesh view (app/repair_marks.h): the summary, then one clickable row per
+// change (its sentence, and the ids of its spots in the repaired mesh); a click selects the row's first spot. While
+// the spots are current every one of them is drawn in the palette's "last edit" colour (the lesson highlights' path,
+// app/element_highlight.h); a selected vertex among them shows its selection colour inside the spot's ring.
+#include <imgui.h>
+
+#include <string>
+
+#include "app/editor_app.h"
+#include "app/element_highlight.h"
+#include "core/palette.h"
+#include "ui/document_actions.h"
+#include "ui/theme.h"
+
+namespace meshedit {
+namespace {
+
+// "v0 v5 f1", or what the row points at when it has no spot.
+std::string spot_ids(const RepairSpots& spots) {
+  std::string text;
+  for (uint32_t v : spots.vertices) text += (text.empty() ? "" : " ") + format_id(VertexId(v));
+  for (uint32_t f : spots.faces) text += (text.empty() ? "" : " ") + format_id(FaceId::face(f));
+  return text.empty() ? std::string("nothing left to show") : text;
+}
+
+// `text` with line breaks at spaces so that no line is wider than `width` (a word wider than that keeps a line of its
+// own). ImGui's own wrapping also breaks after a full stop, which would split "faces 2..4" in two.
+std::string wrapped_at_spaces(const std::string& text, float width) {
+  std::string out, line;
+  size_t start = 0;
+  while (start <= text.size()) {
+    size_t end = text.find(' ', start);
+    if (end == std::string::npos) end = text.size();
+    const std::string word = text.substr(start, end - start);
+    const std::string longer = line.empty() ? word : line + " " + word;
+    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+      out += line + "\n";
+      line = word;
+    } else {
+      line = longer;
+    }
+    start = end + 1;
+  }
+  return out + line;
+}
+
+}  // namespace
+
+bool EditorApp::repair_spots_current() const {
+  return mode_ == ViewMode::Mesh && repairs_.current(doc_.generation, doc_.mesh.version());
+}
+
+bool EditorApp::click_repair_row(size_t row) {
+  std::string refused;
+  ElementRef spot;
+  if (row >= repairs_.rows.size()) {
+    refused = "the Repairs tab has no change " + std::to_string(row + 1);
+  } else if (!repair_spots_current()) {
+    refused = "the repaired spots are gone: the mesh was edited or another one opened";
+  } else if (!(spot = repairs_.first_spot(row)).valid()) {
+    refused = "that change left nothing in the mesh to select";
+  }
+  if (refused.empty() && !select_element(doc_, selection_, spot)) refused = format_id(spot) + " is not live";
+  if (!refused.empty()) {
+    set_message(doc_, Severity::Warning, std::move(refused));
+    return false;
+  }
+  repair_row_clicked_ = row;
+  return true;
+}
+
+void EditorApp::draw_repairs_tab() {
+  const bool current = repair_spots_current();
+  const Palette& palette = palette_for(settings_.theme);
+  ImGui::TextWrapped("%s", repairs_.summary.c_str());
+  ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
+  ImGui::TextWrapped("%s", current ? "Click a change to select it; its spots are drawn in the last edit's colour."
+                                   : "The mesh was edited or another shown: the spots are no longer drawn.");
+  ImGui::PopStyleColor();
+  ImGui::Separator();
+  const float line = ImGui::GetTextLineHeight();
+  for (size_t i = 0; i < repairs_.rows.size(); ++i) {
+    const std::string sentence = wrapped_at_spaces(repairs_.rows[i], ImGui::GetContentRegionAvail().x);
+    const std::string ids = spot_ids(repairs_.spots[i]);
+    const float height = ImGui::CalcTextSize(sentence.c_str()).y + line;
+    const ImVec2 top = ImGui::GetCursorScreenPos();
+    ImGui::PushID(int(i));
+    ImGui::BeginDisabled(!current);
+    if (ImGui::Selectable("##change", current && repair_row_clicked_ == i, ImGuiSelectableFlags_AllowItemOverlap,
+                          ImVec2(0, height))) {
+      click_repair_row(i);
+    }
+    ImGui::EndDisabled();
+    ImGui::PopID();
+    const ImVec2 after = ImGui::GetCursorScreenPos();
+    ImGui::SetCursorScreenPos(top);
+    ImGui::TextUnformatted(sentence.c_str());
+    ImGui::TextColored(im_colour(current ? palette.changed : palette.dead), "%s", ids.c_str());
+    ImGui::SetCursorScreenPos(after);
+    ImGui::Spacing();
+  }
+}
+
+void EditorApp::draw_repair_spots() {
+  if (!repair_spots_current()) return;
+  Overlay overlay;
+  overlay.on_top = true;
+  const glm::vec4 rgba(palette_for(settings_.theme).changed, 1.0f);
+  for (const ElementRef spot : repairs_.all_spots()) add_highlight(overlay, doc_.mesh, spot, rgba);
+  // A selected spot vertex keeps its selection colour inside the spot's ring, so both read.
+  if (selection_.selected.kind == ElementKind::Vertex && doc_.mesh.alive(selection_.selected)) {
+    const glm::vec4 selected(palette_for(settings_.theme).selected, 1.0f);
+    overlay.points.push_back({doc_.mesh.position(VertexId(selection_.selected.index)), selected, 9.0f});
+  }
+  overlay_renderer_->draw(camera_, viewport(), overlay);
+}
+
+}  // namespace meshedit
