@@ -12,6 +12,7 @@
 #include "core/primitives.h"
 #include "core/validate.h"
 #include "io/mesh_file.h"
+#include "app/cli_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -19,31 +20,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int status = -1;
-  std::string out, err;
-};
+using testing::CommandRun;
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs the meshedit binary with `args` (each shell-quoted), capturing stdout, stderr and the status.
-CommandRun meshedit(const std::vector<std::string>& args) {
-  const fs::path dir = fs::temp_directory_path() / "meshedit-tests" / ("cli-repair-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::string command = quoted(MESHEDIT_BINARY);
-  for (const auto& a : args) command += " " + quoted(a);
-  command += " >" + quoted((dir / "out").string()) + " 2>" + quoted((dir / "err").string());
-  CommandRun run;
-  const int raw = std::system(command.c_str());
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  run.out = testing::read_text(dir / "out");
-  run.err = testing::read_text(dir / "err");
-  return run;
-}
+CommandRun meshedit(const std::vector<std::string>& args) { return testing::run_meshedit(args, "cli-repair"); }
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

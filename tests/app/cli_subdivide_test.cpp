@@ -13,6 +13,7 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
+#include "app/cli_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -20,31 +21,9 @@ namespace {
 
 namespace fs = std::filesystem;
 
-struct CommandRun {
-  int status = -1;
-  std::string out, err;
-};
+using testing::CommandRun;
 
-std::string quoted(const std::string& s) {
-  std::string q = "'";
-  for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);
-  return q + "'";
-}
-
-// Runs the meshedit binary with `args` (each shell-quoted), capturing stdout, stderr and the status.
-CommandRun meshedit(const std::vector<std::string>& args) {
-  const fs::path dir = fs::temp_directory_path() / "meshedit-tests" / ("cli-subdivide-" + std::to_string(::getpid()));
-  fs::create_directories(dir);
-  std::string command = quoted(MESHEDIT_BINARY);
-  for (const auto& a : args) command += " " + quoted(a);
-  command += " >" + quoted((dir / "out").string()) + " 2>" + quoted((dir / "err").string());
-  CommandRun run;
-  const int raw = std::system(command.c_str());
-  run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  run.out = testing::read_text(dir / "out");
-  run.err = testing::read_text(dir / "err");
-  return run;
-}
+CommandRun meshedit(const std::vector<std::string>& args) { return testing::run_meshedit(args, "cli-subdivide"); }
 
 // The cube [-9, 9]^3 of 6 quads: one Catmull-Clark level puts every corner at +-5 (5/9 of it), 26 vertices and
 // 24 quads; a second level gives 98 vertices and 96 quads.
