@@ -120,6 +120,27 @@ std::vector<uint32_t> sorted_corners(const PolygonMesh& in, uint32_t f) {
 
 }  // namespace
 
+void write_face_halfedges(const PolygonMesh& in, const std::vector<uint32_t>& twin, size_t num_halfedges,
+                          HalfedgeMesh& mesh) {
+  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
+  m.h.resize(num_halfedges);
+  m.h_alive.assign(num_halfedges, true);
+  HalfedgeRecord* h_ = m.h.data();
+  m.f_halfedge.resize(in.num_faces());
+  m.f_alive.assign(in.num_faces(), true);
+  for (uint32_t f = 0; f < in.num_faces(); ++f) {
+    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
+    m.f_halfedge[f] = HalfedgeId(begin);
+    for (uint32_t h = begin; h < end; ++h) {
+      HalfedgeRecord& r = h_[h];
+      r.next = HalfedgeId(h + 1 < end ? h + 1 : begin);
+      r.twin = HalfedgeId(twin[h]);
+      r.vertex = VertexId(in.indices[h]);
+      r.face = FaceId::face(f);
+    }
+  }
+}
+
 bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertices) {
   if (!faces_are_clean(in)) return false;
   const uint32_t num_interior = uint32_t(in.indices.size());
@@ -148,23 +169,9 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   const uint32_t num_halfedges = num_interior + num_boundary;
   if (num_halfedges >= kNone / 2) return false;
 
+  write_face_halfedges(in, twin, num_halfedges, mesh);
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
-  m.h.resize(num_halfedges);
-  m.h_alive.assign(num_halfedges, true);
-  HalfedgeRecord* h_ = m.h.data();
-  m.f_halfedge.resize(in.num_faces());
-  m.f_alive.assign(in.num_faces(), true);
-  for (uint32_t f = 0; f < in.num_faces(); ++f) {
-    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
-    m.f_halfedge[f] = HalfedgeId(begin);
-    for (uint32_t h = begin; h < end; ++h) {
-      HalfedgeRecord& r = h_[h];
-      r.next = HalfedgeId(h + 1 < end ? h + 1 : begin);
-      r.twin = HalfedgeId(twin[h]);
-      r.vertex = VertexId(idx[h]);
-      r.face = FaceId::face(f);
-    }
-  }
+  const HalfedgeRecord* h_ = m.h.data();
 
   // Two faces glued along an edge with the same corners are one face repeated.
   for (uint32_t h = 0; h < num_interior; ++h) {

@@ -17,6 +17,12 @@ namespace meshedit::build_detail {
 // oriented manifold; the checked builder then runs and explains what is wrong. Never throws except bad_alloc.
 bool build_fast(const PolygonMesh& in, HalfedgeMesh& out, size_t& unused_vertices);
 
+// The first step after the twins are known, for the fast builder and for subdivision's refine_mesh: halfedge h of
+// face f is corner h of `in` (next around the face, twin from `twin`, its vertex, face f), every face's halfedge its
+// first corner's, all live; room for `num_halfedges` (the interior ones, then the boundary ones finish_build fills).
+void write_face_halfedges(const PolygonMesh& in, const std::vector<uint32_t>& twin, size_t num_halfedges,
+                          HalfedgeMesh& mesh);
+
 // What both builders do once every interior halfedge has its next, twin (kInvalidIndex when open), vertex and face
 // and every face its halfedge (mesh_build.cpp): boundary loops, each hole walked from its first open halfedge;
 // edges in order of their first halfedge; vertex positions, halfedges and liveness; live counts. `twin` holds the

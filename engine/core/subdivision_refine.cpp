@@ -170,23 +170,7 @@ HalfedgeMesh refine_mesh(const HalfedgeMesh& mesh, RefineRule rule, const Refine
   }
 
   HalfedgeMesh refined;
-  MeshStorage::Arrays m = MeshStorage::arrays(refined);
-  m.h.resize(num_interior + num_boundary);
-  m.h_alive.assign(num_interior + num_boundary, true);
-  m.f_halfedge.resize(polygons.num_faces());
-  m.f_alive.assign(polygons.num_faces(), true);
-  HalfedgeRecord* h_ = m.h.data();
-  for (uint32_t f = 0; f < polygons.num_faces(); ++f) {
-    const uint32_t begin = polygons.face_offsets[f], end = polygons.face_offsets[f + 1];
-    m.f_halfedge[f] = HalfedgeId(begin);
-    for (uint32_t h = begin; h < end; ++h) {
-      HalfedgeRecord& r = h_[h];
-      r.next = HalfedgeId(h + 1 < end ? h + 1 : begin);
-      r.twin = HalfedgeId(twin[h]);
-      r.vertex = VertexId(polygons.indices[h]);
-      r.face = FaceId::face(f);
-    }
-  }
+  build_detail::write_face_halfedges(polygons, twin, num_interior + num_boundary, refined);
   const size_t unused = build_detail::finish_build(polygons, twin, open_incoming, refined);
   // Vouched as the builder vouches: all triangles, every vertex used, every position finite.
   const bool finite_positions =
