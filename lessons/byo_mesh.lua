@@ -127,8 +127,11 @@ end)
 step("A bow-tie vertex", function()
   local fixed, report = meshedit.repair(BOWTIE.positions, BOWTIE.polygons)
   show(fixed)
-  camera "fit"
-  view { labels = true }
+  camera { fit = true, pitch = 55 }  -- flat pieces: seen from above
+  view { labels = false }
+  label(fixed:vertex(0), "vertex 0")
+  label(fixed:face(0), "face 0")
+  label(fixed:face(1), "face 1")
   say [[
 A half-edge mesh can only hold an **oriented manifold**: at most two faces per edge, running along it in opposite
 directions, and the faces around each vertex a single fan. On screen: two triangles from a file that share only
@@ -157,8 +160,11 @@ step("A fin and a flipped face", function()
   local fin_fixed, fin_report = meshedit.repair(FIN.positions, FIN.polygons)
   local detached = number_in(fin_report, "face (%d+) detached")
   show(fin_fixed)
-  camera "fit"
-  view { labels = true }
+  camera { fit = true, pitch = 30 }
+  view { labels = false }
+  for f = 0, 2 do label(fin_fixed:face(f), "face " .. f) end
+  label(fin_fixed:vertex(0), "0")
+  label(fin_fixed:vertex(1), "1")
   say [[
 Three triangles on the edge from vertex 0 to vertex 1, a **fin**: face 0 runs 0 to 1, face 1 runs 1 to 0 and
 face 2 runs 0 to 1 again. The repair keeps the edge for the first face and the first later face that runs the other
@@ -177,6 +183,12 @@ way, and gives each other face corners of its own there (it *detaches* it).]]
 
   local flip_fixed, flip_report = meshedit.repair(FLIPPED.positions, FLIPPED.polygons)
   local reversed = number_in(flip_report, "face (%d+) reversed")
+  clear()
+  show(flip_fixed)
+  camera { fit = true, pitch = 55 }
+  for f = 0, 1 do label(flip_fixed:face(f), "face " .. f) end
+  label(flip_fixed:vertex(0), "0")
+  label(flip_fixed:vertex(1), "1")
   say [[
 Now two triangles on one edge that **both** run from vertex 0 to vertex 1: one of them faces the wrong way. The
 repair turns faces to agree with the lowest face of their piece, unless more of them already face the other way.]]
@@ -188,6 +200,7 @@ repair turns faces to agree with the lowest face of their piece, unless more of 
       ["neither: it is refused"] = "from_polygons refuses it; meshedit.repair and Open a repaired copy fix it.",
     },
   }
+  highlight(flip_fixed:face(reversed), "orange")
   say("Refused: " .. refusal(FLIPPED.positions, FLIPPED.polygons) .. ".")
   say("Repaired: " .. counts(flip_fixed) .. ".\n\n" .. report_text(flip_report))
 end)
@@ -197,8 +210,9 @@ step("The Repairs tab", function()
   local fixed, report = meshedit.repair(positions, polygons)
   local reversed = number_in(report, "face (%d+) reversed")
   show(fixed)
-  camera "fit"
+  camera { fit = true, pitch = 55 }
   view { labels = false }
+  for f = 0, fixed:num_faces() - 1 do label(fixed:face(f), "f" .. f) end
   choose {
     "Ctrl+O refuses your file, naming faces and a vertex. How do you see it anyway?",
     options = { "File > Open a repaired copy", "Edit > Triangulate", "View > Up axis" },
@@ -211,9 +225,7 @@ step("The Repairs tab", function()
   say([[
 The three pieces side by side, as one file with all three problems, opened repaired. The **Repairs** tab lists
 every change with the file's own vertex and face numbers; clicking a row selects and highlights its spot. Here is
-the list the repair gives:
-
-]] .. report_text(report))
+the list the repair gives, for a mesh of ]] .. counts(fixed) .. ".\n\n" .. report_text(report))
   pick {
     "Click the face the row \"... reversed ...\" names, as a click on that row would select it.",
     answer = function(e)
@@ -280,6 +292,7 @@ step("Subdivide it", function()
       return m and m:num_faces() == 4 * mesh:num_faces() and m:validate() and m
     end,
   }
+  camera "fit"
   say("Loop: " .. counts(after) .. ".")
   local cc = mesh:copy()
   assert(cc:catmull_clark())
