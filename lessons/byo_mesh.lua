@@ -92,6 +92,7 @@ end
 step("Which way is up", function()
   show(quad_cube())
   camera "fit"
+  view { labels = false }
   say [[
 # Bring your own mesh
 
