@@ -1,126 +1,291 @@
--- Bring your own mesh: export a glTF from Blender, open it in MeshEdit, read what the validator says, and
--- subdivide it. The lesson inspects whatever mesh is on screen (a stand-in icosahedron until the student
--- opens a file), so it works the same in the window and headless.
--- CI runs it headless:
+-- Bring your own mesh: what MeshEdit does with a real user's file. Which axis a scan (.ply) or a Blender export
+-- (.glb, .gltf, .obj) is shown with up, and View > Up axis; what happens to a file that is not an oriented
+-- manifold (the refusal, File > Open a repaired copy, the Repairs tab, `meshedit repair` and `meshedit info`);
+-- triangulating quads so Loop accepts them; and the Subdivide menu. Every step asks the student to predict or act
+-- before it tells, and each likely wrong answer is named in its feedback.
+-- Every number and report line comes from the core: the broken meshes are built here from lists of polygons and
+-- handed to meshedit.from_polygons (the refusal) and meshedit.repair (engine/core/mesh_repair.h), the quads to
+-- mesh:triangulate(), mesh:loop_subdivide() and mesh:catmull_clark() on copies.
+-- CI runs it headless (tests/script/lessons_b_test.cpp):
 --   meshedit lesson lessons/byo_mesh.lua --headless --answers tests/script/lessons/byo_mesh_answers.lua
--- Invariant: the lesson never assumes what the student opened; every number it says is read from
--- current_mesh() at the time.
+-- Invariants: the lesson never assumes what file the student opened; it inspects only the meshes it builds and
+-- what current_mesh() returns. Every step shows what it talks about itself (Back runs a step again).
 
 lesson {
   title = "Bring your own mesh",
-  summary = "Export a model from Blender as glTF, open it, understand what the validator says, and subdivide it.",
+  summary = "Open a scan or a Blender export the right way up, repair a file that is not a manifold, triangulate "
+    .. "quads and subdivide them.",
 }
 
 local function counts(mesh)
   return mesh:num_vertices() .. " vertices, " .. mesh:num_edges() .. " edges, " .. mesh:num_faces() .. " faces"
 end
 
--- The mesh on screen, or the stand-in shown when there is none.
-local function mesh_on_screen()
-  local mesh = current_mesh()
-  if mesh then return mesh end
-  show(meshedit.icosahedron())
-  return current_mesh()
-end
-
--- The largest number of sides of any face (3 for a triangle mesh).
-local function most_sides(mesh)
-  local most = 0
-  for f in mesh:faces() do most = math.max(most, f:degree()) end
-  return most
-end
-
--- The error message a bad polygon list gets from the mesh builder (the same check a file goes through).
+-- The message the mesh builder refuses polygons with (a file goes through the same check), without the note on
+-- numbering that every refusal ends with.
 local function refusal(positions, polygons)
   local ok, message = pcall(meshedit.from_polygons, positions, polygons)
-  if ok then return "accepted" end
-  return tostring(message)
+  assert(not ok, "these polygons were meant to be refused")
+  return (tostring(message):gsub(" %(face k is polygons.*$", ""))
 end
 
-step("Export from Blender", function()
-  show(meshedit.icosahedron())
+-- The number in the first change that matches `pattern` (a Lua pattern with one capture), e.g. "face (%d+) reversed".
+local function number_in(report, pattern)
+  for _, change in ipairs(report.changes) do
+    local n = change:match(pattern)
+    if n then return tonumber(n) end
+  end
+  error("no change of the report matches " .. pattern)
+end
+
+-- A repair report as the Repairs tab lists it: the summary, then one line per change.
+local function report_text(report)
+  local lines = { "**" .. report.summary .. "**" }
+  for _, change in ipairs(report.changes) do lines[#lines + 1] = "- " .. change end
+  return table.concat(lines, "\n")
+end
+
+-- Three broken pieces, as lists of positions and 1-based polygons (what a file holds).
+-- A bow-tie: two triangles that share only vertex 0.
+local BOWTIE = {
+  positions = { { 0, 0, 0 }, { 1, 0.5, 0 }, { 1, -0.5, 0 }, { -1, -0.5, 0 }, { -1, 0.5, 0 } },
+  polygons = { { 1, 2, 3 }, { 1, 4, 5 } },
+}
+-- A fin: three triangles on the edge from vertex 0 to vertex 1.
+local FIN = {
+  positions = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0 }, { 0.5, 0, 1 } },
+  polygons = { { 1, 2, 3 }, { 2, 1, 4 }, { 1, 2, 5 } },
+}
+-- A flipped face: two triangles on the edge from vertex 0 to vertex 1 that both run from 0 to 1.
+local FLIPPED = {
+  positions = { { 0, 0, 0 }, { 1, 0, 0 }, { 0.5, 1, 0 }, { 0.5, -1, 0 } },
+  polygons = { { 1, 2, 3 }, { 1, 2, 4 } },
+}
+
+-- The three pieces side by side in one list, as one file that has all three problems.
+local function all_three()
+  local positions, polygons = {}, {}
+  for piece_index, piece in ipairs({ BOWTIE, FIN, FLIPPED }) do
+    local base = #positions
+    for _, p in ipairs(piece.positions) do
+      positions[#positions + 1] = { p[1] + 3 * (piece_index - 1), p[2], p[3] }
+    end
+    for _, polygon in ipairs(piece.polygons) do
+      local shifted = {}
+      for k, corner in ipairs(polygon) do shifted[k] = corner + base end
+      polygons[#polygons + 1] = shifted
+    end
+  end
+  return positions, polygons
+end
+
+-- The cube's six sides as counter-clockwise quads (1-based corners of meshedit.cube()), like a Blender export
+-- that was not triangulated.
+local CUBE_QUADS = { { 1, 3, 4, 2 }, { 5, 6, 8, 7 }, { 1, 2, 6, 5 }, { 3, 7, 8, 4 }, { 1, 5, 7, 3 }, { 2, 4, 8, 6 } }
+local function quad_cube()
+  local corners = meshedit.cube()
+  local positions = {}
+  for i = 0, 7 do positions[i + 1] = corners:vertex(i).position end
+  return meshedit.from_polygons(positions, CUBE_QUADS)
+end
+
+step("Which way is up", function()
+  show(quad_cube())
   camera "fit"
+  view { labels = false }
   say [[
 # Bring your own mesh
 
-Everything you wrote works on any triangle mesh, not just the course files. This lesson takes a model from
-**Blender** into MeshEdit. MeshEdit reads **glTF** (.gltf and .glb) as well as .obj, .dae, .ply, .stl and .off.]]
+Everything you wrote works on any mesh, not only the course files. MeshEdit opens **.obj**, **glTF** (.gltf,
+.glb), **.ply**, .stl, .off and .dae with **Ctrl+O** or by dropping the file on the window. Positions are never
+rotated: only the view chooses which axis points up, by the file's format.]]
+  choose {
+    "A laser scan saved as .ply (the Stanford bunny, say) has no up axis in the file. Which does MeshEdit show up?",
+    options = { "Y up", "Z up" }, answer = "Y up",
+    feedback = {
+      ["Y up"] = "The Stanford scans stand on Y, and MeshLab keeps a scan's axes, so a .ply opens Y-up.",
+      ["Z up"] = "Z up is for .stl and .off: 3D printing and CAD put the build plate in the XY plane. Scans differ.",
+    },
+    hint = "Think of where the scans come from, not of Blender.",
+  }
+  choose {
+    "Blender's glTF export keeps +Y Up by default, glTF's own rule. You ticked it off, so the file is Z-up, and "
+      .. "MeshEdit shows it lying on its side. What do you change?",
+    options = { "View > Up axis > Z up", "Rotate it 90 degrees in Blender and export again", "Nothing: Ctrl+O again" },
+    answer = "View > Up axis > Z up",
+    feedback = {
+      ["View > Up axis > Z up"] = "Only the view turns; the file's coordinates stay as they are.",
+      ["Rotate it 90 degrees in Blender and export again"] = "That changes every position in the file to fix what "
+        .. "is only a question of the view.",
+      ["Nothing: Ctrl+O again"] = "Opening it again reads the same file the same way: a .glb is shown Y-up.",
+    },
+  }
   say [[
-In Blender, with your object selected:
-
-- **Triangulate**: in Edit Mode select everything (A), then Face > Triangulate Faces (Ctrl+T). Loop
-  subdivision, flip and split need triangles.
-- **Weld**: Mesh > Clean Up > Merge by Distance, so no two vertices sit at the same place.
-- **Apply transforms**: in Object Mode, Object > Apply > All Transforms (Ctrl+A), so the mesh's own coordinates
-  are what you see.]]
-  say [[
-Then File > Export > glTF 2.0, and in the export options:
-
-- Format **glTF Binary (.glb)**; Include: **Selected Objects**
-- Data > Mesh: untick **UVs** and **Normals**. glTF stores one vertex per distinct set of attributes, so UV seams
-  and sharp edges would split vertices apart, and MeshEdit (like glTF) does not weld them back: each seam would
-  open into a boundary.
-- Transform: keep **+Y Up**, glTF's convention and the default: MeshEdit shows a glTF with +Y up (the status
-  bar says which axis is up). Exported with +Z up, Blender's own, it lies on its side: View > Up axis > **Z up**
-  stands it up. Only the view changes, never the mesh.]]
+The **status bar** says which axis is up. Y is up for .obj (Blender's default export), glTF and .ply; Z for .stl
+and .off; a COLLADA file says so itself. **View > Up axis** overrides it for the file on screen.]]
 end)
 
-step("Open it", function()
-  local mesh = mesh_on_screen()
+step("A bow-tie vertex", function()
+  local fixed, report = meshedit.repair(BOWTIE.positions, BOWTIE.polygons)
+  show(fixed)
+  camera { fit = true, pitch = 55 }  -- flat pieces: seen from above
+  view { labels = false }
+  label(fixed:vertex(0), "vertex 0")
+  label(fixed:face(0), "face 0")
+  label(fixed:face(1), "face 1")
   say [[
-Open the file with **Ctrl+O**, or drag and drop it onto the window. A file MeshEdit cannot read is refused with
-one line naming the file and the place, and the mesh you had stays on screen.]]
-  say [[
-No file at hand? Keep the icosahedron on screen: it stands in for yours. Press the button when your mesh is open.]]
-  wait_for { button = "My mesh is open", hint = "Ctrl+O or drag a .glb onto the window" }
-  mesh = mesh_on_screen()
-  local ok, report = mesh:validate()
-  local chi = mesh:num_vertices() - mesh:num_edges() + mesh:num_faces()
-  say("Your mesh has " .. counts(mesh) .. " and " .. mesh:num_boundaries() .. " boundary loop(s). Its Euler "
-    .. "characteristic V - E + F is " .. chi .. (chi == 2 and mesh:num_boundaries() == 0
-      and ": a closed surface like a sphere." or ".") .. " The validator says: "
-    .. (ok and "valid." or report.summary))
-  if most_sides(mesh) > 3 then
-    say("Some faces have " .. most_sides(mesh) .. " sides: triangulate in Blender (Ctrl+T) and export again before "
-      .. "subdividing.")
-  else
-    say "Every face is a triangle: ready for flips, splits and subdivision."
-  end
-  if mesh:num_boundaries() > 0 then
-    say [[
-The boundary loops are drawn in blue. If you did not expect any, a UV seam or a sharp edge split the vertices
-in the export: untick UVs and Normals, or merge by distance, and export again.]]
-  end
+A half-edge mesh can only hold an **oriented manifold**: at most two faces per edge, running along it in opposite
+directions, and the faces around each vertex a single fan. On screen: two triangles from a file that share only
+**vertex 0**, with nothing else between them, a bow-tie. MeshEdit refuses such a file, naming the faces and the
+vertex. File > **Open a repaired copy** opens it repaired instead.]]
+  answer {
+    "The file has " .. #BOWTIE.positions .. " vertices. How many does the repaired mesh have?",
+    number = fixed:num_vertices(),
+    feedback = function(value)
+      if value == #BOWTIE.positions then
+        return "That is the file's count. A vertex can be the corner of one fan only: one triangle needs a vertex "
+          .. "of its own there."
+      end
+      if value < #BOWTIE.positions then return "The repair never merges or drops a vertex a face uses." end
+      return "The repair adds one vertex per fan beyond the first, and here there are two fans."
+    end,
+  }
+  say("Refused as it is: " .. refusal(BOWTIE.positions, BOWTIE.polygons) .. ".")
+  say("Repaired (meshedit.repair): " .. counts(fixed) .. ".\n\n" .. report_text(report))
+  local moved = number_in(report, "%(face (%d+) moved%)")
+  highlight(fixed:face(moved), "orange")
+  say("The orange face, f" .. moved .. ", is the one moved to the new vertex, at the same place as vertex 0.")
 end)
 
-step("When the file is refused", function()
+step("A fin and a flipped face", function()
+  local fin_fixed, fin_report = meshedit.repair(FIN.positions, FIN.polygons)
+  local detached = number_in(fin_report, "face (%d+) detached")
+  show(fin_fixed)
+  camera { fit = true, pitch = 30 }
+  view { labels = false }
+  for f = 0, 2 do label(fin_fixed:face(f), "face " .. f) end
+  label(fin_fixed:vertex(0), "0")
+  label(fin_fixed:vertex(1), "1")
   say [[
-MeshEdit only accepts **manifold, consistently oriented** surfaces: every edge has at most two faces, the two
-faces of an edge run along it in opposite directions, and the faces around each vertex form a single fan. A
-half-edge mesh cannot store anything else, so such a file is refused with the faces and the vertex or edge
-that break the rule. Three examples, built here from lists of triangles:]]
-  local fin = refusal({ {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1} },
-    { {1, 2, 3}, {2, 1, 4}, {1, 2, 5} })
-  say("Three triangles on one edge (a \"fin\"): " .. fin)
-  local flipped = refusal({ {0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, -1, 0} }, { {1, 2, 3}, {1, 2, 4} })
-  say("Two triangles facing opposite ways: " .. flipped)
-  local bowtie = refusal({ {0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {-1, 0, 0}, {-1, -1, 0} }, { {1, 2, 3}, {1, 4, 5} })
-  say("Two triangles touching at one vertex (a bow-tie): " .. bowtie)
+Three triangles on the edge from vertex 0 to vertex 1, a **fin**: face 0 runs 0 to 1, face 1 runs 1 to 0 and
+face 2 runs 0 to 1 again. The repair keeps the edge for the first face and the first later face that runs the other
+way, and gives each other face corners of its own there (it *detaches* it).]]
+  choose {
+    "Which face does the repair detach?",
+    options = { "face 0", "face 1", "face 2" }, answer = "face " .. detached,
+    feedback = {
+      ["face 0"] = "Face 0 is the first face on the edge: it keeps it.",
+      ["face 1"] = "Face 1 runs 1 to 0, against face 0: the two are a proper pair, and it keeps the edge.",
+    },
+  }
+  say("Refused: " .. refusal(FIN.positions, FIN.polygons) .. ".")
+  say("Repaired: " .. counts(fin_fixed) .. ".\n\n" .. report_text(fin_report))
+  highlight(fin_fixed:face(detached), "orange")
+
+  local flip_fixed, flip_report = meshedit.repair(FLIPPED.positions, FLIPPED.polygons)
+  local reversed = number_in(flip_report, "face (%d+) reversed")
+  clear()
+  show(flip_fixed)
+  camera { fit = true, pitch = 55 }
+  for f = 0, 1 do label(flip_fixed:face(f), "face " .. f) end
+  label(flip_fixed:vertex(0), "0")
+  label(flip_fixed:vertex(1), "1")
   say [[
-A file goes through the same checks; its message names the file and its own face and vertex numbers.
-In Blender, Select > Select All by Trait > **Non Manifold** (in Edit Mode) selects the culprits; Mesh >
-Normals > **Recalculate Outside** (Shift+N) fixes inconsistent orientation. Fix, export, open again.]]
+Now two triangles on one edge that **both** run from vertex 0 to vertex 1: one of them faces the wrong way. The
+repair turns faces to agree with the lowest face of their piece, unless more of them already face the other way.]]
+  choose {
+    "Which face does the repair reverse?",
+    options = { "face 0", "face 1", "neither: it is refused" }, answer = "face " .. reversed,
+    feedback = {
+      ["face 0"] = "Face 0 is the lowest face of the piece, and the two are one each: the others follow face 0.",
+      ["neither: it is refused"] = "from_polygons refuses it; meshedit.repair and Open a repaired copy fix it.",
+    },
+  }
+  highlight(flip_fixed:face(reversed), "orange")
+  say("Refused: " .. refusal(FLIPPED.positions, FLIPPED.polygons) .. ".")
+  say("Repaired: " .. counts(flip_fixed) .. ".\n\n" .. report_text(flip_report))
+end)
+
+step("The Repairs tab", function()
+  local positions, polygons = all_three()
+  local fixed, report = meshedit.repair(positions, polygons)
+  local reversed = number_in(report, "face (%d+) reversed")
+  show(fixed)
+  camera { fit = true, pitch = 55 }
+  view { labels = false }
+  for f = 0, fixed:num_faces() - 1 do label(fixed:face(f), "f" .. f) end
+  choose {
+    "Ctrl+O refuses your file, naming faces and a vertex. How do you see it anyway?",
+    options = { "File > Open a repaired copy", "Edit > Triangulate", "View > Up axis" },
+    answer = "File > Open a repaired copy",
+    feedback = {
+      ["Edit > Triangulate"] = "Triangulate works on the mesh on screen, and a refused file never got there.",
+      ["View > Up axis"] = "The up axis only turns the view; it cannot make a mesh of a file that is refused.",
+    },
+  }
+  say([[
+The three pieces side by side, as one file with all three problems, opened repaired. The **Repairs** tab lists
+every change with the file's own vertex and face numbers; clicking a row selects and highlights its spot. Here is
+the list the repair gives, for a mesh of ]] .. counts(fixed) .. ".\n\n" .. report_text(report))
+  pick {
+    "Click the face the row \"... reversed ...\" names, as a click on that row would select it.",
+    answer = function(e)
+      if e.kind ~= "face" then return false, "That is a " .. e.kind .. ": click inside a triangle." end
+      return e.id == reversed
+    end,
+    feedback = function(e)
+      if e.kind == "face" then return "f" .. e.id .. " faced the right way already. Nothing was dropped, so a face "
+        .. "keeps the file's number." end
+    end,
+  }
+  highlight(fixed:face(reversed), "orange")
+  say [[
+Outside the window: `meshedit info FILE` lists what a repair would change, and `meshedit repair IN -o OUT` writes
+the repaired copy. In Lua, `meshedit.repair(positions, polygons)` returns the mesh and this report.]]
+end)
+
+step("Triangulate the quads", function()
+  local quads = quad_cube()
+  show(quads)
+  camera "fit"
+  view { labels = false }
+  say("A Blender export keeps Blender's quads unless you triangulate. On screen: a cube of " .. quads:num_faces()
+    .. " quads, like one. Press **L** to try Loop subdivision on it.")
+  wait_for { key = "L", hint = "Press L" }
+  local loop_ok, why = quads:copy():loop_subdivide()
+  assert(not loop_ok, "Loop subdivision was meant to refuse quads")
+  say("Loop subdivision refuses it, and the status bar says why: " .. why .. ".")
+  local triangles = quads:copy()
+  local split = triangles:triangulate()
+  answer {
+    "How many faces does the cube have after Edit > Triangulate?",
+    number = triangles:num_faces(),
+    feedback = function(value)
+      if value == quads:num_faces() then return "That is the number of quads. Each one is cut into triangles." end
+      if value == 4 * quads:num_faces() then
+        return "Four per quad is a cut through the centre; triangulation adds no vertex, so a quad makes n - 2."
+      end
+    end,
+  }
+  show(triangles)
+  say("mesh:triangulate() split " .. split .. " faces: " .. counts(quads) .. " before, " .. counts(triangles)
+    .. " after. No vertex was added or moved. The same is `meshedit triangulate IN -o OUT`.")
 end)
 
 step("Subdivide it", function()
-  local mesh = mesh_on_screen()
-  if most_sides(mesh) > 3 then
-    say("Loop subdivision needs triangles, and this mesh has faces with " .. most_sides(mesh) .. " sides. "
-      .. "Triangulate it (Edit > Triangulate), then come back to this step (Back, Next).")
+  local mesh = current_mesh()
+  if not mesh then
+    local triangles = quad_cube()
+    triangles:triangulate()
+    show(triangles)
+    mesh = current_mesh()
+  end
+  local ok_loop, why = mesh:copy():loop_subdivide()
+  if not ok_loop then
+    say("The mesh on screen cannot be Loop-subdivided: " .. why .. ". Go Back to triangulate it.")
     return
   end
-  say("Press **L** to subdivide your mesh (" .. counts(mesh) .. "). Each step makes every triangle four, so on a "
-    .. "big mesh stop after one or two.")
+  say("Press **L** to subdivide the mesh on screen (" .. counts(mesh) .. ").")
   local after = wait_for {
     hint = "Press L",
     condition = function()
@@ -128,9 +293,22 @@ step("Subdivide it", function()
       return m and m:num_faces() == 4 * mesh:num_faces() and m:validate() and m
     end,
   }
-  say("Subdivided: " .. counts(after) .. ", that is V + E vertices and 4F faces, and still valid. Boundary loops: "
-    .. after:num_boundaries() .. " (the same as before: subdivision never opens or closes a hole).")
-  say [[
-Save the result with File > **Save as...** as .obj, .gltf, .glb, .ply or .stl, and open it back in Blender. Then try
-your own flips and splits on it, and your own `upsample` from the exercises.]]
+  camera "fit"
+  say("Loop: " .. counts(after) .. ".")
+  local cc = mesh:copy()
+  assert(cc:catmull_clark())
+  answer {
+    "The Subdivide menu also has Catmull-Clark. How many faces would it make of the " .. mesh:num_faces()
+      .. " triangles you had before L?",
+    number = cc:num_faces(),
+    feedback = function(value)
+      if value == after:num_faces() then
+        return "That is Loop's count, four per triangle. Catmull-Clark makes one quad per corner of each face."
+      end
+    end,
+  }
+  local linear = mesh:copy()
+  assert(linear:linear_subdivide())
+  say("Catmull-Clark: " .. counts(cc) .. ", all quads. The menu's **Linear** cuts the same way as Loop ("
+    .. counts(linear) .. ") but moves no vertex. Save any of them with File > Save as... and open it in Blender.")
 end)

@@ -19,9 +19,14 @@
 #include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
+#include "core/mesh_error.h"
 #include "core/mesh_ops.h"
+#include "core/mesh_repair.h"
 #include "core/palette.h"
 #include "core/primitives.h"
+#include "core/triangulate.h"
+#include "core/up_axis.h"
+#include "io/file_up_axis.h"
 #include "script/headless_host.h"
 #include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
@@ -573,40 +578,164 @@ TEST(LessonsB, CatmullClarkVertexPointArrowIsTheCoresAndTheLastStepShowsBoth) {
 
 // ---- bring your own mesh ----
 
-TEST(LessonsB, BringYourOwnMeshPassesHeadlessOnTheStandIn) {
-  const std::string text = run_headless("byo_mesh", 4);
-  EXPECT_TRUE(contains(text, "Your mesh has 12 vertices, 30 edges, 20 faces and 0 boundary loop(s). Its Euler "
-                             "characteristic V - E + F is 2: a closed surface like a sphere. The validator says: valid."))
-      << text;
-  EXPECT_TRUE(contains(text, "Three triangles on one edge (a \"fin\"): from_polygons: the edge between vertices 0 and "
-                             "1 is shared by 3 faces")) << text;
-  EXPECT_TRUE(contains(text, "Two triangles facing opposite ways: from_polygons: faces 0 and 1 both go from vertex 0 "
-                             "to vertex 1")) << text;
-  EXPECT_TRUE(contains(text, "Two triangles touching at one vertex (a bow-tie): from_polygons: vertex 0 is a bow-tie"))
-      << text;
-  EXPECT_TRUE(contains(text, "Subdivided: 42 vertices, 120 edges, 80 faces")) << text;
+// The lesson's three broken pieces (lessons/byo_mesh.lua: BOWTIE, FIN, FLIPPED), as polygons with 0-based corners.
+PolygonMesh bowtie() {
+  PolygonMesh polygons;
+  polygons.positions = {{0, 0, 0}, {1, 0.5, 0}, {1, -0.5, 0}, {-1, -0.5, 0}, {-1, 0.5, 0}};
+  polygons.add_face({0, 1, 2});
+  polygons.add_face({0, 3, 4});
+  return polygons;
+}
+PolygonMesh fin() {
+  PolygonMesh polygons;
+  polygons.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}, {0.5, 0, 1}};
+  polygons.add_face({0, 1, 2});
+  polygons.add_face({1, 0, 3});
+  polygons.add_face({0, 1, 4});
+  return polygons;
+}
+PolygonMesh flipped() {
+  PolygonMesh polygons;
+  polygons.positions = {{0, 0, 0}, {1, 0, 0}, {0.5, 1, 0}, {0.5, -1, 0}};
+  polygons.add_face({0, 1, 2});
+  polygons.add_face({0, 1, 3});
+  return polygons;
+}
+// The three side by side, 3 apart along x, as the lesson's "Repairs tab" step puts them in one list.
+PolygonMesh all_three() {
+  PolygonMesh all;
+  double shift = 0;
+  for (const PolygonMesh& piece : {bowtie(), fin(), flipped()}) {
+    const uint32_t base = static_cast<uint32_t>(all.positions.size());
+    for (const glm::dvec3& p : piece.positions) all.positions.push_back(p + glm::dvec3(shift, 0, 0));
+    for (size_t f = 0; f < piece.num_faces(); ++f) {
+      std::vector<uint32_t> corners;
+      for (uint32_t corner : piece.face(f)) corners.push_back(base + corner);
+      all.add_face(corners);
+    }
+    shift += 3;
+  }
+  return all;
 }
 
-TEST(LessonsB, BringYourOwnMeshReadsTheStudentsMesh) {
+// The refusal the core gives the polygons (the lesson prints it after "from_polygons: ").
+std::string refusal_of(const PolygonMesh& polygons) {
+  try {
+    build_halfedge_mesh(polygons);
+  } catch (const MeshError& error) {
+    return error.what();
+  }
+  ADD_FAILURE() << "the polygons were accepted";
+  return "";
+}
+
+// The repair's summary and each change line, as the lesson lists them, are in the transcript, with the counts.
+void expect_report(const std::string& text, const PolygonMesh& polygons) {
+  const RepairResult repaired = repair_polygons(polygons);
+  ASSERT_FALSE(repaired.report.empty());
+  EXPECT_TRUE(contains(text, "\n  " + repaired.report.summary() + "\n")) << text;
+  for (const std::string& change : repaired.report.changes) EXPECT_TRUE(contains(text, "- " + change)) << text;
+  EXPECT_TRUE(contains(text, lesson_counts(build_halfedge_mesh(repaired.polygons)) + ".")) << text;
+}
+
+// Every step passes with each question answered wrong once (its feedback naming the mistake) and then right; the
+// right answers, the refusals, the repair reports and the counts are the core's own.
+TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
+  const std::string text = run_headless("byo_mesh", 6);
+
+  // Up axis: a scan (.ply) and a glTF are shown with the axis the window's rule gives them; Z up is the override.
+  const auto ply = format_up_axis("bunny.ply");
+  ASSERT_TRUE(ply);
+  EXPECT_TRUE(contains(text, "> choose " + std::string(up_axis_name(*ply)) + ": right")) << text;
+  const auto glb = format_up_axis("chair.glb");
+  ASSERT_TRUE(glb);
+  EXPECT_EQ(*glb, UpAxis::Y) << "the lesson says a .glb opens Y-up, so a Z-up export lies on its side";
+  EXPECT_TRUE(contains(text, "> choose View > Up axis > " + std::string(up_axis_name(UpAxis::Z)) + ": right")) << text;
+
+  // The bow-tie: the answer is the repaired vertex count; the refusal and the report are the core's.
+  const PolygonMesh tie = bowtie();
+  const RepairResult tie_fixed = repair_polygons(tie);
+  EXPECT_TRUE(contains(text, "> answer " + std::to_string(tie_fixed.polygons.positions.size()) + ": right")) << text;
+  EXPECT_NE(tie_fixed.polygons.positions.size(), tie.positions.size());
+  EXPECT_TRUE(contains(text, "Refused as it is: from_polygons: " + refusal_of(tie).substr(0, 40))) << text;
+  expect_report(text, tie);
+
+  // The fin and the flipped face: the faces chosen are the ones the report names.
+  const RepairResult fin_fixed = repair_polygons(fin());
+  ASSERT_EQ(fin_fixed.report.detached_faces, 1u);
+  ASSERT_EQ(fin_fixed.report.spots.size(), 1u);
+  ASSERT_EQ(fin_fixed.report.spots[0].faces.size(), 1u);
+  EXPECT_TRUE(contains(text, "> choose face " + std::to_string(fin_fixed.report.spots[0].faces[0]) + ": right"))
+      << text;
+  expect_report(text, fin());
+  const RepairResult flip_fixed = repair_polygons(flipped());
+  ASSERT_EQ(flip_fixed.report.reversed_faces, 1u);
+  EXPECT_TRUE(contains(text, "> choose face " + std::to_string(flip_fixed.report.spots[0].faces[0]) + ": right"))
+      << text;
+  expect_report(text, flipped());
+  EXPECT_TRUE(contains(text, "Refused: from_polygons: " + refusal_of(fin()).substr(0, 40))) << text;
+  EXPECT_TRUE(contains(text, "Refused: from_polygons: " + refusal_of(flipped()).substr(0, 40))) << text;
+
+  // The Repairs tab: the whole list, and the face clicked is the spot of the "reversed" change.
+  const RepairResult all_fixed = repair_polygons(all_three());
+  expect_report(text, all_three());
+  for (size_t i = 0; i < all_fixed.report.changes.size(); ++i) {
+    if (!contains(all_fixed.report.changes[i], "reversed")) continue;
+    ASSERT_EQ(all_fixed.report.spots[i].faces.size(), 1u);
+    EXPECT_TRUE(contains(text, "> click f" + std::to_string(all_fixed.report.spots[i].faces[0]) + ": right")) << text;
+  }
+
+  // Triangulate: Loop's refusal of the quads, and the counts before and after.
+  HalfedgeMesh quads = build_halfedge_mesh(make_cube_quads());
+  HalfedgeMesh refused = quads;
+  const Check loop_quads = loop_subdivide(refused);
+  ASSERT_FALSE(loop_quads.ok);
+  EXPECT_TRUE(contains(text, "the status bar says why: " + loop_quads.reason + ".")) << text;
+  HalfedgeMesh triangles = quads;
+  const OpResult<TriangulationReport> split = triangulate_mesh(triangles);
+  ASSERT_TRUE(split.ok());
+  EXPECT_TRUE(contains(text, "> answer " + std::to_string(triangles.num_faces()) + ": right")) << text;
+  EXPECT_TRUE(contains(text, "mesh:triangulate() split " + std::to_string(split.value.polygons_split) + " faces: " +
+                                 lesson_counts(quads) + " before, " + lesson_counts(triangles) + " after.")) << text;
+
+  // Subdivide: L on the triangulated cube, then Catmull-Clark's and Linear's counts.
+  HalfedgeMesh loop = triangles;
+  ASSERT_TRUE(loop_subdivide(loop).ok);
+  EXPECT_TRUE(contains(text, "Loop: " + lesson_counts(loop) + ".")) << text;
+  HalfedgeMesh cc = triangles;
+  ASSERT_TRUE(catmull_clark_subdivide(cc).ok);
+  EXPECT_TRUE(contains(text, "> answer " + std::to_string(cc.num_faces()) + ": right")) << text;
+  EXPECT_TRUE(contains(text, "Catmull-Clark: " + lesson_counts(cc) + ", all quads.")) << text;
+  HalfedgeMesh linear = triangles;
+  ASSERT_TRUE(linear_subdivide(linear).ok);
+  EXPECT_TRUE(contains(text, "(" + lesson_counts(linear) + ") but moves no vertex")) << text;
+}
+
+// The last step reads the student's mesh: a triangle mesh is subdivided where it is; a quad mesh is sent back.
+TEST(LessonsB, BringYourOwnMeshSubdividesTheStudentsMesh) {
   HeadlessHost host;
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("byo_mesh")));
-  runner.go_to(step_index(runner, "Open it"));
-  // The student opens a grid of quads: the lesson reports its boundary and asks for triangles.
-  PolygonMesh quads;
-  quads.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {2, 0, 0}, {2, 1, 0}};
-  quads.add_face({0, 1, 2, 3});
-  quads.add_face({1, 4, 5, 2});
-  host.set_current_mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(quads)));
-  ASSERT_TRUE(runner.deliver(LessonEvent::button("My mesh is open")));
-  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
-  const std::string text = said(runner);
-  EXPECT_TRUE(contains(text, "Your mesh has 6 vertices, 7 edges, 2 faces and 1 boundary loop(s). Its Euler "
-                             "characteristic V - E + F is 1.")) << text;
-  EXPECT_TRUE(contains(text, "Some faces have 4 sides")) << text;
+  const HalfedgeMesh ico = build_halfedge_mesh(make_icosahedron());
+  host.set_current_mesh(std::make_shared<HalfedgeMesh>(ico));
+  runner.go_to(step_index(runner, "Subdivide it"));
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
+  EXPECT_TRUE(contains(said(runner), "(" + lesson_counts(ico) + ")")) << said(runner);
+  runner.update(0.1);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "it waits until the mesh is subdivided";
+  EXPECT_FALSE(contains(said(runner), "Loop: ")) << said(runner);
+  edit_screen(host, [](HalfedgeMesh& mesh) { ASSERT_TRUE(loop_subdivide(mesh).ok); });
+  runner.update(0.1);
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "then asks about Catmull-Clark"
+                                                                    << runner.error();
+  HalfedgeMesh loop = ico;
+  ASSERT_TRUE(loop_subdivide(loop).ok);
+  EXPECT_TRUE(contains(said(runner), "Loop: " + lesson_counts(loop) + ".")) << said(runner);
+
+  host.set_current_mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(make_cube_quads())));
   runner.go_to(step_index(runner, "Subdivide it"));
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
-  EXPECT_TRUE(contains(said(runner), "Loop subdivision needs triangles")) << said(runner);
+  EXPECT_TRUE(contains(said(runner), "Go Back to triangulate it.")) << said(runner);
 }
 
 }  // namespace
