@@ -304,10 +304,18 @@ step("Counting after one level", function()
     end,
     hint = "The cube has " .. F .. " faces of 4 corners each.",
   }
-  show(after)
+  say "Now do it: **Subdivide > Catmull-Clark subdivision** (the menu above the view) on the cube on screen."
+  wait_for {
+    condition = function()
+      local mesh = current_mesh()
+      return mesh ~= nil and mesh:num_faces() == after:num_faces() and mesh:num_vertices() == after:num_vertices()
+    end,
+    hint = "Subdivide > Catmull-Clark subdivision",
+  }
   camera "fit"
   view { labels = false }  -- 26 vertices and 48 edges: their ids would hide the quads
-  say("The core's level: " .. counts(after) .. ", all " .. face_kinds(after) .. ". Every new quad joins an old "
+  local yours = current_mesh()
+  say("Your level: " .. counts(yours) .. ", all " .. face_kinds(yours) .. ". Every new quad joins an old "
     .. "vertex, an edge point, a face point and the next edge point, so the " .. sides .. " corners of the old faces "
     .. "give " .. after:num_faces() .. " quads and E' = 2E + " .. sides .. " = " .. after:num_edges() .. " edges.")
 end)

@@ -267,9 +267,17 @@ step("Triangulate the quads", function()
       end
     end,
   }
-  show(triangles)
-  say("mesh:triangulate() split " .. split .. " faces: " .. counts(quads) .. " before, " .. counts(triangles)
-    .. " after. No vertex was added or moved. The same is `meshedit triangulate IN -o OUT`.")
+  say "Now do it: **Edit > Triangulate** on the cube on screen."
+  local yours = wait_for {
+    hint = "Edit > Triangulate",
+    condition = function()
+      local m = current_mesh()
+      return m and m:num_faces() == triangles:num_faces() and m:validate() and m
+    end,
+  }
+  say("Triangulate split " .. split .. " faces: " .. counts(quads) .. " before, " .. counts(yours)
+    .. " after. No vertex was added or moved. In Lua it is mesh:triangulate(); on the shell, "
+    .. "`meshedit triangulate IN -o OUT`.")
 end)
 
 step("Subdivide it", function()

@@ -20,11 +20,13 @@ const AnswerField kAnswerFields[] = {
     {"key", Kind::Key},         {"click", Kind::Click},           {"selection", Kind::Selection},
     {"button", Kind::Button},   {"flip", Kind::Flip},             {"split", Kind::Split},
     {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"loop_phase", Kind::LoopPhase},
+    {"triangulate", Kind::Triangulate},
     {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT},
     {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
-    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, choose, answer, curve_t or your_turn";
+    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, triangulate, choose, answer, "
+    "curve_t or your_turn";
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -77,10 +79,17 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
     }
     answer.kind = found->kind;
     answer.field = key;
-    if (answer.kind == Kind::Subdivide || answer.kind == Kind::LoopPhase) {
+    if (answer.kind == Kind::Subdivide && lua_type(L, -1) == LUA_TSTRING) {
+      answer.value = lua_tostring(L, -1);
+      if (answer.value != "loop" && answer.value != "catmull-clark" && answer.value != "linear") {
+        throw ScriptError(where + ": subdivide must be true or \"loop\", \"catmull-clark\" or \"linear\", got '" +
+                          answer.value + "'");
+      }
+    } else if (answer.kind == Kind::Subdivide || answer.kind == Kind::LoopPhase || answer.kind == Kind::Triangulate) {
       if (lua_type(L, -1) != LUA_TBOOLEAN || !lua_toboolean(L, -1)) {
         throw ScriptError(where + ": write " + key + " = true");
       }
+      if (answer.kind == Kind::Subdivide) answer.value = "loop";
     } else if (answer.kind == Kind::Value) {
       answer.value = value_text(L, where);
     } else if (answer.kind == Kind::CurveT) {
@@ -113,7 +122,7 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
 
 bool ScriptedAnswer::is_edit() const {
   return kind == Kind::Flip || kind == Kind::Split || kind == Kind::Collapse || kind == Kind::Subdivide ||
-         kind == Kind::LoopPhase || kind == Kind::CurveT;
+         kind == Kind::LoopPhase || kind == Kind::Triangulate || kind == Kind::CurveT;
 }
 
 ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits) {

@@ -10,8 +10,9 @@
 //   }
 //
 // Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
-// the edits a key makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"}, {subdivide = true},
-// {loop_phase = true}), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
+// the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
+// {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
+// {loop_phase = true}, {triangulate = true} (Edit > Triangulate)), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
 // {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), and {curve_t = 0.25} (the curve view's t,
 // as its slider sets it).
 //
@@ -41,11 +42,12 @@ namespace meshedit {
 
 struct ScriptedAnswer {
   enum class Kind {
-    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Choose, Value, CurveT, YourTurn
+    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Triangulate, Choose, Value, CurveT,
+    YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...
-  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right" ("" for subdivide)
+  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right"; subdivide's scheme
   std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
 
   bool is_edit() const;  // an edit of the scene (flip ... loop_phase, curve_t): always used, never "not awaited"

@@ -13,8 +13,11 @@
 
 #include <lua.hpp>
 
+#include "core/catmull_clark.h"
+#include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_ops.h"
+#include "core/triangulate.h"
 #include "script/headless_host.h"
 #include "script/lesson_answers.h"
 #include "script/lesson_text.h"
@@ -361,9 +364,14 @@ class HeadlessDriver {
     std::shared_ptr<HalfedgeMesh> mesh = host_.current_mesh();
     if (!mesh) return "answer " + answer.field + ": no mesh on screen";
     Check check;
-    if (answer.kind == Answer::Kind::Subdivide) {
-      out_ << "  > subdivide";
-      check = loop_subdivide(*mesh);
+    if (answer.kind == Answer::Kind::Subdivide) {  // L, or the Subdivide menu's schemes
+      out_ << "  > subdivide" << (answer.value == "loop" ? "" : " " + answer.value);
+      if (answer.value == "catmull-clark") check = catmull_clark_subdivide(*mesh);
+      else if (answer.value == "linear") check = linear_subdivide(*mesh);
+      else check = loop_subdivide(*mesh);
+    } else if (answer.kind == Answer::Kind::Triangulate) {  // Edit > Triangulate
+      out_ << "  > triangulate";
+      check = triangulate_mesh(*mesh).check;
     } else if (answer.kind == Answer::Kind::LoopPhase) {
       check = loop_phase(*mesh);
     } else {

@@ -142,7 +142,11 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse, subdivide, loop_phase, choose, answer, curve_t or your_turn)");
+             "collapse, subdivide, loop_phase, triangulate, choose, answer, curve_t or your_turn)");
+  fails_with("return { [1] = { {subdivide = 'butterfly'} } }\n",
+             "answers.lua: step 1, answer 1: subdivide must be true or \"loop\", \"catmull-clark\" or \"linear\", got "
+             "'butterfly'");
+  fails_with("return { [1] = { {triangulate = 'yes'} } }\n", "answers.lua: step 1, answer 1: write triangulate = true");
   fails_with("return { [1] = { {your_turn = 'yes'} } }\n",
              "answers.lua: step 1, answer 1: your_turn must be \"right\" or \"wrong\", got 'yes'");
   fails_with("return { [1] = { {your_turn = 'right', feedback = 'twin'} } }\n",

@@ -489,8 +489,10 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   HalfedgeMesh once = cube;
   ASSERT_TRUE(catmull_clark_subdivide(once).ok);
   EXPECT_EQ(once.num_vertices(), cube.num_vertices() + cube.num_edges() + cube.num_faces());
-  EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(once) + ", all " +
-                                 std::to_string(once.num_faces()) + " quads.")) << text;
+  // The student's Subdivide > Catmull-Clark on the cube on screen (the answers' {subdivide = "catmull-clark"}).
+  EXPECT_TRUE(contains(text, "  > subdivide catmull-clark\n")) << text;
+  EXPECT_TRUE(contains(text, "Your level: " + lesson_counts(once) + ", all " + std::to_string(once.num_faces()) +
+                                 " quads.")) << text;
   EXPECT_TRUE(contains(text, "so the 24 corners of the old faces give " + std::to_string(once.num_faces()) +
                                  " quads and E' = 2E + 24 = " + std::to_string(once.num_edges()) + " edges.")) << text;
   HalfedgeMesh tetrahedron = build_halfedge_mesh(make_tetrahedron());
@@ -695,7 +697,9 @@ TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
   const OpResult<TriangulationReport> split = triangulate_mesh(triangles);
   ASSERT_TRUE(split.ok());
   EXPECT_TRUE(contains(text, "> answer " + std::to_string(triangles.num_faces()) + ": right")) << text;
-  EXPECT_TRUE(contains(text, "mesh:triangulate() split " + std::to_string(split.value.polygons_split) + " faces: " +
+  // The student's Edit > Triangulate on the cube on screen (the answers' {triangulate = true}).
+  EXPECT_TRUE(contains(text, "  > triangulate\n")) << text;
+  EXPECT_TRUE(contains(text, "Triangulate split " + std::to_string(split.value.polygons_split) + " faces: " +
                                  lesson_counts(quads) + " before, " + lesson_counts(triangles) + " after.")) << text;
 
   // Subdivide: L on the triangulated cube, then Catmull-Clark's and Linear's counts.

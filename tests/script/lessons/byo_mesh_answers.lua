@@ -17,6 +17,6 @@ return {
     { click = "f6" },
   },
   ["Triangulate the quads"] = { { key = "L" }, { answer = 6, feedback = "number of quads" }, { answer = 24, feedback = "n - 2" },
-    { answer = 12 } },
+    { answer = 12 }, { triangulate = true } },
   ["Subdivide it"] = { { subdivide = true }, { answer = 48, feedback = "Loop's count" }, { answer = 36 } },
 }
