@@ -244,6 +244,38 @@ Outside the window: `meshedit info FILE` lists what a repair would change, and `
 the repaired copy. In Lua, `meshedit.repair(positions, polygons)` returns the mesh and this report.]]
 end)
 
+-- A scan patch shipped with the app (assets/scan_with_defects.ply, see assets/README.md): a flipped face, a repeated
+-- face and a loose triangle touching the patch at one corner, as scans have.
+local SCAN = "../assets/scan_with_defects.ply"
+
+step("Open a scan with defects", function()
+  local scan, report = meshedit.load(lesson_file(SCAN), { repair = true })
+  say([[
+Now a real file. The app ships a small scanned patch in MeshEdit's folder, **assets/scan_with_defects.ply**. Open
+it with **File > Open** (Ctrl+O): it is refused, and the status bar names the problem. Then **File > Open a
+repaired copy**.]])
+  answer {
+    "Before you open it: the file has " .. (scan:num_faces() + 1) .. " faces, and one of them repeats another. "
+      .. "How many faces will the repaired copy have?",
+    number = scan:num_faces(),
+    feedback = function(value)
+      if value == scan:num_faces() + 1 then return "The repeated face is dropped: it is the same triangle twice." end
+      if value < scan:num_faces() then return "Only the repeated face goes; a flipped face is turned, not dropped." end
+    end,
+    hint = "Which of a repeat, a flipped face and a bow-tie corner removes a face?",
+  }
+  wait_for {
+    hint = "File > Open assets/scan_with_defects.ply, then File > Open a repaired copy",
+    condition = function()
+      local m = current_mesh()
+      return m and m:num_faces() == scan:num_faces() and m:num_vertices() == scan:num_vertices()
+    end,
+  }
+  camera "fit"
+  say("The repaired copy: " .. counts(scan) .. ". The Repairs tab lists what was done, in the file's numbers:\n\n"
+    .. report_text(report) .. "\n\nClick its rows: each one selects its spot on the patch.")
+end)
+
 step("Triangulate the quads", function()
   local quads = quad_cube()
   show(quads)

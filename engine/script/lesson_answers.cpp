@@ -20,13 +20,13 @@ const AnswerField kAnswerFields[] = {
     {"key", Kind::Key},         {"click", Kind::Click},           {"selection", Kind::Selection},
     {"button", Kind::Button},   {"flip", Kind::Flip},             {"split", Kind::Split},
     {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"loop_phase", Kind::LoopPhase},
-    {"triangulate", Kind::Triangulate},
+    {"triangulate", Kind::Triangulate}, {"open_repaired", Kind::OpenRepaired},
     {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT},
     {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
-    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, triangulate, choose, answer, "
-    "curve_t or your_turn";
+    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, triangulate, open_repaired, choose, "
+    "answer, curve_t or your_turn";
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -122,7 +122,7 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
 
 bool ScriptedAnswer::is_edit() const {
   return kind == Kind::Flip || kind == Kind::Split || kind == Kind::Collapse || kind == Kind::Subdivide ||
-         kind == Kind::LoopPhase || kind == Kind::Triangulate || kind == Kind::CurveT;
+         kind == Kind::LoopPhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired || kind == Kind::CurveT;
 }
 
 ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits) {

@@ -12,7 +12,8 @@
 // Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
 // the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
 // {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
-// {loop_phase = true}, {triangulate = true} (Edit > Triangulate)), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
+// {loop_phase = true}, {triangulate = true} (Edit > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
+// repaired copy of that file, a path from the lesson's folder)), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
 // {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), and {curve_t = 0.25} (the curve view's t,
 // as its slider sets it).
 //
@@ -42,8 +43,8 @@ namespace meshedit {
 
 struct ScriptedAnswer {
   enum class Kind {
-    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Triangulate, Choose, Value, CurveT,
-    YourTurn
+    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Triangulate, OpenRepaired, Choose,
+    Value, CurveT, YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...

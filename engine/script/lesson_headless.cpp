@@ -16,8 +16,11 @@
 #include "core/catmull_clark.h"
 #include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
+#include "core/mesh_build.h"
 #include "core/mesh_ops.h"
+#include "core/mesh_repair.h"
 #include "core/triangulate.h"
+#include "io/mesh_file.h"
 #include "script/headless_host.h"
 #include "script/lesson_answers.h"
 #include "script/lesson_text.h"
@@ -91,6 +94,7 @@ class HeadlessDriver {
 
   HeadlessOutcome run(const std::filesystem::path& lesson, ScriptedAnswers answers) {
     HeadlessOutcome outcome;
+    lesson_folder_ = lesson.parent_path();
     if (!runner_.load(lesson)) {
       outcome.failure = runner_.error();
       return outcome;
@@ -359,8 +363,22 @@ class HeadlessDriver {
     return where + step_name_ + ": " + expected + ", but " + got;
   }
 
+  // File > Open a repaired copy: the file (a path from the lesson's folder) read, repaired and shown.
+  std::string open_repaired(const Answer& answer) {
+    const std::filesystem::path path = lesson_folder_ / answer.value;
+    out_ << "  > open a repaired copy of " << answer.value;
+    try {
+      const RepairResult repaired = repair_polygons(load_mesh(path));
+      host_.set_current_mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(repaired.polygons)));
+    } catch (const std::exception& e) {
+      return "answer open_repaired = \"" + answer.value + "\": " + e.what();
+    }
+    return "";
+  }
+
   // The edits the window's keys make, applied to the mesh on screen.
   std::string edit(const Answer& answer) {
+    if (answer.kind == Answer::Kind::OpenRepaired) return open_repaired(answer);
     std::shared_ptr<HalfedgeMesh> mesh = host_.current_mesh();
     if (!mesh) return "answer " + answer.field + ": no mesh on screen";
     Check check;
@@ -445,6 +463,7 @@ class HeadlessDriver {
   LessonRunner runner_;
   std::string step_name_;
   LoopPhases loop_;
+  std::filesystem::path lesson_folder_;  // where open_repaired's paths start
   StepShown shown_;
 };
 

@@ -27,6 +27,7 @@
 #include "core/triangulate.h"
 #include "core/up_axis.h"
 #include "io/file_up_axis.h"
+#include "io/mesh_file.h"
 #include "script/headless_host.h"
 #include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
@@ -643,7 +644,17 @@ void expect_report(const std::string& text, const PolygonMesh& polygons) {
 // Every step passes with each question answered wrong once (its feedback naming the mistake) and then right; the
 // right answers, the refusals, the repair reports and the counts are the core's own.
 TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
-  const std::string text = run_headless("byo_mesh", 6);
+  const std::string text = run_headless("byo_mesh", 7);
+
+  // The shipped scan: the student opens a repaired copy; the counts and every report line are the core's.
+  const RepairResult scan = repair_polygons(load_mesh(testing::source_dir() / "assets" / "scan_with_defects.ply"));
+  const HalfedgeMesh scan_mesh = build_halfedge_mesh(scan.polygons);
+  EXPECT_TRUE(contains(text, "> answer " + std::to_string(scan_mesh.num_faces()) + ": right")) << text;
+  EXPECT_TRUE(contains(text, "  > open a repaired copy of ../assets/scan_with_defects.ply\n")) << text;
+  EXPECT_TRUE(contains(text, "The repaired copy: " + lesson_counts(scan_mesh) + ".")) << text;
+  EXPECT_TRUE(contains(text, scan.report.summary())) << text;
+  ASSERT_EQ(scan.report.changes.size(), 3u);
+  for (const std::string& change : scan.report.changes) EXPECT_TRUE(contains(text, "- " + change)) << change;
 
   // Up axis: a scan (.ply) and a glTF are shown with the axis the window's rule gives them; Z up is the override.
   const auto ply = format_up_axis("bunny.ply");

@@ -16,6 +16,8 @@ return {
     { click = "v0", feedback = "That is a vertex" }, { click = "f5", feedback = "faced the right way" },
     { click = "f6" },
   },
+  ["Open a scan with defects"] = { { answer = 26, feedback = "same triangle twice" }, { answer = 25 },
+    { open_repaired = "../assets/scan_with_defects.ply" } },
   ["Triangulate the quads"] = { { key = "L" }, { answer = 6, feedback = "number of quads" }, { answer = 24, feedback = "n - 2" },
     { answer = 12 }, { triangulate = true } },
   ["Subdivide it"] = { { subdivide = true }, { answer = 48, feedback = "Loop's count" }, { answer = 36 } },
