@@ -4,8 +4,8 @@
 -- from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from assets/teapot.bez,
 -- found next to this file with lesson_file(). The last step runs the student's own evaluate (your_turn) at the
 -- (u, v) of the hand computation. CI runs it headless:
---   meshedit lesson lessons/2_bezier_patches.lua --headless --answers tests/script/lessons/2_bezier_patches_answers.lua \
---     --student tests/script/solutions
+--   meshedit lesson lessons/2_bezier_patches.lua --headless \
+--     --answers tests/script/lessons/2_bezier_patches_answers.lua --student tests/script/solutions
 
 lesson {
   title = "Bézier patches and the teapot",

@@ -5,8 +5,8 @@
 -- and every wrong answer is told what it is. Every walk is done on the mesh on screen and every highlight and
 -- label marks the element the walk reached, so what the student sees is what the pointers say. The last step
 -- runs the student's own vertex_normal (your_turn) on the fan. CI runs it headless:
---   meshedit lesson lessons/3_halfedge_walks.lua --headless --answers tests/script/lessons/3_halfedge_walks_answers.lua \
---     --student tests/script/solutions
+--   meshedit lesson lessons/3_halfedge_walks.lua --headless \
+--     --answers tests/script/lessons/3_halfedge_walks_answers.lua --student tests/script/solutions
 
 lesson {
   title = "Walking the half-edge mesh",
@@ -354,7 +354,8 @@ reference's area-weighted normal: the plain average of unit normals is named as 
     exercise = "normals",
     mesh = mesh,
     element = mesh:vertex(0),
-    hint = "Add (b - a):cross(c - a) for each face as it is: its length is twice the face's area, so normalize only the sum.",
+    hint = "Add (b - a):cross(c - a) for each face as it is: its length is twice the face's area, so normalize "
+      .. "only the sum.",
   }
   say [[
 Your `vertex_normal` gives the reference's normal at **v**. In the window you can run it on any vertex of any
