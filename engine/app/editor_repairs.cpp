@@ -10,6 +10,7 @@
 #include "app/element_highlight.h"
 #include "core/palette.h"
 #include "ui/document_actions.h"
+#include "ui/flow_layout.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -21,27 +22,6 @@ std::string spot_ids(const RepairSpots& spots) {
   for (uint32_t v : spots.vertices) text += (text.empty() ? "" : " ") + format_id(VertexId(v));
   for (uint32_t f : spots.faces) text += (text.empty() ? "" : " ") + format_id(FaceId::face(f));
   return text.empty() ? std::string("nothing left to show") : text;
-}
-
-// `text` with line breaks at spaces so that no line is wider than `width` (a word wider than that keeps a line of its
-// own). ImGui's own wrapping also breaks after a full stop, which would split "faces 2..4" in two.
-std::string wrapped_at_spaces(const std::string& text, float width) {
-  std::string out, line;
-  size_t start = 0;
-  while (start <= text.size()) {
-    size_t end = text.find(' ', start);
-    if (end == std::string::npos) end = text.size();
-    const std::string word = text.substr(start, end - start);
-    const std::string longer = line.empty() ? word : line + " " + word;
-    if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
-      out += line + "\n";
-      line = word;
-    } else {
-      line = longer;
-    }
-    start = end + 1;
-  }
-  return out + line;
 }
 
 }  // namespace

@@ -33,4 +33,35 @@ bool wrapping_button(const char* label) {
   return pressed;
 }
 
+std::string wrapped_at_spaces(const std::string& text, float width) {
+  std::string out;
+  size_t line_start = 0;
+  while (line_start <= text.size()) {
+    size_t line_end = text.find('\n', line_start);
+    if (line_end == std::string::npos) line_end = text.size();
+    std::string line;
+    for (size_t start = line_start; start <= line_end;) {
+      size_t end = text.find(' ', start);
+      if (end == std::string::npos || end > line_end) end = line_end;
+      const std::string word = text.substr(start, end - start);
+      const std::string longer = line.empty() ? word : line + " " + word;
+      if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
+        out += line + "\n";
+        line = word;
+      } else {
+        line = longer;
+      }
+      start = end + 1;
+    }
+    out += line;
+    if (line_end < text.size()) out += "\n";
+    line_start = line_end + 1;
+  }
+  return out;
+}
+
+void text_wrapped_at_spaces(const std::string& text) {
+  ImGui::TextUnformatted(wrapped_at_spaces(text, ImGui::GetContentRegionAvail().x).c_str());
+}
+
 }  // namespace meshedit

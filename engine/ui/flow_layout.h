@@ -1,7 +1,9 @@
 // Widgets set left to right that wrap to a new line when the panel is too narrow for the next one, so a row of
-// buttons and checkboxes stays readable in a narrow column instead of running off its edge; and a button whose
-// label, too long for the column, wraps inside it.
+// buttons and checkboxes stays readable in a narrow column instead of running off its edge; a button whose
+// label, too long for the column, wraps inside it; and text that wraps only at spaces.
 #pragma once
+
+#include <string>
 
 namespace meshedit {
 
@@ -13,5 +15,12 @@ void same_line_if_room(const char* label);
 // column with the label wrapped inside it (ImGui's own buttons never wrap). `label` is shown whole (no "##" part);
 // push an id around it when two buttons may share a label. Returns true when pressed.
 bool wrapping_button(const char* label);
+
+// `text` with line breaks put at spaces so that no line is wider than `width` pixels in the current font (a word
+// wider than that keeps a line of its own); the text's own line breaks stay. ImGui's own wrapping also breaks after
+// a full stop or a comma, which splits numbers ("-0.\n2778") and ranges ("faces 2.\n.4").
+std::string wrapped_at_spaces(const std::string& text, float width);
+// ImGui::TextWrapped for text with numbers in it: wrapped at spaces only, to the content region's width.
+void text_wrapped_at_spaces(const std::string& text);
 
 }  // namespace meshedit

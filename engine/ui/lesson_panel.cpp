@@ -8,6 +8,7 @@
 
 #include "script/lesson_text.h"
 #include "ui/exercise_session.h"
+#include "ui/flow_layout.h"
 #include "ui/lesson_plot_view.h"
 #include "ui/lesson_question_view.h"
 #include "ui/theme.h"
@@ -57,7 +58,7 @@ ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
 void draw_block(const LessonRunner& runner, const LessonBlock& block) {
   switch (block.kind) {
     case LessonBlock::Kind::Text:
-      ImGui::TextWrapped("%s", reflow(markdown_to_plain(runner.said()[block.index])).c_str());
+      text_wrapped_at_spaces(reflow(markdown_to_plain(runner.said()[block.index])));
       break;
     case LessonBlock::Kind::Live: {
       const LessonLive& live = runner.lives()[block.index];
@@ -66,7 +67,7 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
         ImGui::TextWrapped("%s", live.error.c_str());
         ImGui::PopStyleColor();
       } else {
-        ImGui::TextWrapped("%s", reflow(markdown_to_plain(live.text)).c_str());
+        text_wrapped_at_spaces(reflow(markdown_to_plain(live.text)));
       }
       break;
     }
@@ -79,13 +80,13 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
 // What the student sees of their file's wrong run: the task, the diagnosis, the hint and the button that shows the run
 // side by side with the reference.
 void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, const LessonWait& wait) {
-  ImGui::TextWrapped("%s", wait.question.c_str());
+  text_wrapped_at_spaces(wait.question);
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(ui_palette().warning));
-  ImGui::TextWrapped("%s", wait.feedback.c_str());
+  text_wrapped_at_spaces(wait.feedback);
   ImGui::PopStyleColor();
   if (!wait.hint.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
-    ImGui::TextWrapped("Hint: %s", wait.hint.c_str());
+    text_wrapped_at_spaces("Hint: " + wait.hint);
     ImGui::PopStyleColor();
   }
   const YourTurnVerdict* verdict = your_turn_to_show(runner);

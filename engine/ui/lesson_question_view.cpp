@@ -14,7 +14,7 @@ namespace {
 
 void coloured_text(glm::vec3 colour, const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
-  ImGui::TextWrapped("%s", text.c_str());
+  text_wrapped_at_spaces(text);
   ImGui::PopStyleColor();
 }
 
@@ -55,7 +55,7 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
   const LessonWait& wait = runner.waiting_for();
   if (!wait.is_question()) return;
   const Palette& palette = ui_palette();
-  ImGui::TextWrapped("%s", markdown_to_plain(wait.question).c_str());
+  text_wrapped_at_spaces(markdown_to_plain(wait.question));
   // Read what the panel shows now: a button below may deliver an answer, which changes the wait.
   const std::string feedback = wait.feedback, hint = wait.hint_shown() ? wait.hint : std::string();
   const LessonWait::Kind kind = wait.kind;
@@ -67,7 +67,7 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
 }
 
 void draw_lesson_answered(const LessonJudgement& judgement) {
-  ImGui::TextWrapped("%s", markdown_to_plain(judgement.question).c_str());
+  text_wrapped_at_spaces(markdown_to_plain(judgement.question));
   coloured_text(ui_palette().ok, "Right: " + judgement.given +
                                      (judgement.feedback.empty() ? std::string() : ". " + judgement.feedback));
 }
