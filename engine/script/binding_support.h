@@ -15,12 +15,14 @@
 // - No C++ exception crosses into Lua: every lua_CFunction registered by the module is wrapped in guarded<>.
 #pragma once
 
+#include <cstddef>
 #include <exception>
 #include <memory>
 #include <string>
 
 #include <lua.hpp>
 
+#include "core/edit_log.h"
 #include "core/halfedge_mesh.h"
 #include "script/exception_text.h"
 
@@ -96,6 +98,13 @@ MeshBox& check_mesh(lua_State* L, int arg);
 int push_refusal(lua_State* L, const std::string& reason);
 // Sets t[key] = value on the table on top of the stack.
 void set_string_field(lua_State* L, const char* key, const std::string& value);
+
+// The most faces one whole-mesh subdivision call from a script may make (Loop, Catmull-Clark, linear, the reference
+// upsample): such a call runs in C++, out of the instruction hook's reach, so it is refused past this instead.
+inline constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
+// The record of one core operation a script ran (flip, split, collapse, a subdivision...), for the journal and the
+// recorders: an Operation edit named `name` on `element` (none for whole-mesh ones), which returned `result`.
+RecordedEdit operation_edit(const char* name, ElementRef element, ElementRef result);
 
 // The method groups of the mesh metatable, each adding its functions to the table on top of the stack.
 void add_edit_methods(lua_State* L);       // edit_bindings.cpp: new_*, delete, record

@@ -24,14 +24,6 @@ namespace {
 // Ids one flip, split or collapse makes at most, of any kind.
 constexpr size_t kMaxIdsPerOperation = 6;
 
-RecordedEdit operation_edit(const char* name, ElementRef element, ElementRef result) {
-  RecordedEdit edit;
-  edit.what = EditKind::Operation;
-  edit.element = element;
-  edit.field = name;
-  edit.value.element = result;
-  return edit;
-}
 
 template <class Result, Result (*Operation)(HalfedgeMesh&, EdgeId)>
 int run_edge_operation(lua_State* L, const char* name) {
@@ -51,9 +43,6 @@ int run_edge_operation(lua_State* L, const char* name) {
 
 int mesh_collapse(lua_State* L) { return run_edge_operation<OpResult<VertexId>, collapse>(L, "collapse"); }
 
-// One loop_subdivide call quadruples the faces; past this many faces it is refused so that a script repeating it
-// cannot exhaust memory or time inside one call.
-constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
 
 int mesh_loop_subdivide(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);
@@ -101,6 +90,15 @@ int mesh_triangulate(lua_State* L) {
 }
 
 }  // namespace
+
+RecordedEdit operation_edit(const char* name, ElementRef element, ElementRef result) {
+  RecordedEdit edit;
+  edit.what = EditKind::Operation;
+  edit.element = element;
+  edit.field = name;
+  edit.value.element = result;
+  return edit;
+}
 
 int mesh_flip(lua_State* L) { return run_edge_operation<OpResult<EdgeId>, flip>(L, "flip"); }
 int mesh_split(lua_State* L) { return run_edge_operation<OpResult<VertexId>, split>(L, "split"); }

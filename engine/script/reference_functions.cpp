@@ -16,8 +16,6 @@
 namespace meshedit {
 namespace {
 
-// The same cap the mesh API puts on loop_subdivide: one call runs in C++, out of the hook's reach.
-constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
 constexpr size_t kMaxPoints = 1024;
 
 int upsample(lua_State* L) {

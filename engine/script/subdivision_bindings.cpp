@@ -18,9 +18,6 @@
 namespace meshedit {
 namespace {
 
-// The cap mesh:loop_subdivide puts on one call's result.
-constexpr size_t kMaxSubdividedFaces = size_t(1) << 22;
-
 // Faces after one level: a triangle gives `triangle_children` (4 for linear, 3 for Catmull-Clark), an n-gon n.
 size_t faces_after(const HalfedgeMesh& mesh, size_t triangle_children) {
   size_t faces = 0;
@@ -48,10 +45,7 @@ int run_subdivision(lua_State* L, const char* name, const char* scheme, size_t t
   begin_change(L, box.mesh, true);
   const Check check = subdivide(m, 1);
   if (!check.ok) return push_refusal(L, check.reason);
-  RecordedEdit edit;
-  edit.what = EditKind::Operation;
-  edit.field = name;
-  end_change(L, box.mesh, edit);
+  end_change(L, box.mesh, operation_edit(name, ElementRef(), ElementRef()));
   lua_pushboolean(L, 1);
   return 1;
 }
