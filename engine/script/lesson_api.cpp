@@ -491,14 +491,13 @@ void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
   set_function(L, script, "current_mesh", lesson_guarded<api_current_mesh>);
   set_function(L, script, "selection", lesson_guarded<api_selection>);
   set_function(L, script, "lesson_file", lesson_guarded<api_lesson_file>);
-  lua_newtable(L);
-  set_function(L, script, "check_wait", lesson_guarded<api_check_wait>);
-  set_function(L, script, "wait", lesson_guarded<api_wait>);
-  set_function(L, script, "check_animate", lesson_guarded<api_check_animate>);
-  set_function(L, script, "frame", lesson_guarded<api_frame>);
-  lua_setfield(L, -2, "__lesson_api");
   lua_pop(L, 1);
-  runtime.run_string(kPrelude, kLessonPreludeName);
+  open_prelude_functions(runtime, script, "__lesson_api",
+                         {{"check_wait", lesson_guarded<api_check_wait>},
+                          {"wait", lesson_guarded<api_wait>},
+                          {"check_animate", lesson_guarded<api_check_animate>},
+                          {"frame", lesson_guarded<api_frame>}},
+                         kPrelude);
   open_lesson_questions(runtime, script);
   open_lesson_displays(runtime, script);
   open_lesson_your_turn(runtime, script);

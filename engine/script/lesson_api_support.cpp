@@ -202,4 +202,15 @@ void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFun
   lua_setfield(L, -2, name);
 }
 
+void open_prelude_functions(LuaRuntime& runtime, LessonScript& script, const char* table,
+                            std::initializer_list<PreludeFunction> functions, const char* prelude) {
+  lua_State* L = runtime.state();
+  lua_pushglobaltable(L);
+  lua_newtable(L);
+  for (const PreludeFunction& f : functions) set_function(L, script, f.name, f.function);
+  lua_setfield(L, -2, table);
+  lua_pop(L, 1);
+  runtime.run_string(prelude, kLessonPreludeName);
+}
+
 }  // namespace meshedit

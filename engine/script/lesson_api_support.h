@@ -78,4 +78,15 @@ std::optional<glm::vec3> named_colour(const std::string& name);
 // Sets field `name` of the table on top of the stack to `f` bound to `script`.
 void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f);
 
+// A C function a Lua prelude of the lesson API calls (bound to the script, lesson_guarded already applied).
+struct PreludeFunction {
+  const char* name;
+  lua_CFunction function;
+};
+// Sets the global `table` to a table of `functions` bound to `script`, then runs `prelude` (named kLessonPreludeName),
+// which takes the table and clears the global (`local api = TABLE; TABLE = nil`). Throws ScriptError if the prelude
+// fails.
+void open_prelude_functions(LuaRuntime& runtime, LessonScript& script, const char* table,
+                            std::initializer_list<PreludeFunction> functions, const char* prelude);
+
 }  // namespace meshedit

@@ -354,16 +354,12 @@ int api_record(lua_State* L) {
 }  // namespace
 
 void open_lesson_questions(LuaRuntime& runtime, LessonScript& script) {
-  lua_State* L = runtime.state();
-  lua_pushglobaltable(L);
-  lua_newtable(L);
-  set_function(L, script, "check", lesson_guarded<api_check>);
-  set_function(L, script, "ask", lesson_guarded<api_ask>);
-  set_function(L, script, "read_answer", lesson_guarded<api_read_answer>);
-  set_function(L, script, "record", lesson_guarded<api_record>);
-  lua_setfield(L, -2, "__lesson_questions");
-  lua_pop(L, 1);
-  runtime.run_string(kQuestionsPrelude, kLessonPreludeName);
+  open_prelude_functions(runtime, script, "__lesson_questions",
+                         {{"check", lesson_guarded<api_check>},
+                          {"ask", lesson_guarded<api_ask>},
+                          {"read_answer", lesson_guarded<api_read_answer>},
+                          {"record", lesson_guarded<api_record>}},
+                         kQuestionsPrelude);
 }
 
 }  // namespace meshedit

@@ -273,17 +273,12 @@ int api_await(lua_State* L) {
 
 }  // namespace
 
-
 void open_lesson_your_turn(LuaRuntime& runtime, LessonScript& script) {
-  lua_State* L = runtime.state();
-  lua_pushglobaltable(L);
-  lua_newtable(L);
-  set_function(L, script, "check", lesson_guarded<api_check>);
-  set_function(L, script, "run", lesson_guarded<api_run>);
-  set_function(L, script, "await", lesson_guarded<api_await>);
-  lua_setfield(L, -2, "__lesson_your_turn");
-  lua_pop(L, 1);
-  runtime.run_string(kYourTurnPrelude, kLessonPreludeName);
+  open_prelude_functions(runtime, script, "__lesson_your_turn",
+                         {{"check", lesson_guarded<api_check>},
+                          {"run", lesson_guarded<api_run>},
+                          {"await", lesson_guarded<api_await>}},
+                         kYourTurnPrelude);
 }
 
 }  // namespace meshedit
