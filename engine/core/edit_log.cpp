@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <string_view>
 
+#include "core/catmull_clark.h"
+#include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
@@ -105,7 +107,7 @@ void apply_delete(HalfedgeMesh& mesh, const RecordedEdit& edit) {
 
 void apply_operation(HalfedgeMesh& mesh, const RecordedEdit& edit) {
   const std::string_view op = edit.field;
-  if (op == "restore" || op == "undo" || op == "redo") {
+  if (op == "restore" || op == "undo" || op == "redo" || op == "subdivision phase") {
     if (!edit.state) refuse(edit, "the recording holds no mesh state to restore");
     const uint64_t seen = mesh.version();
     mesh = *edit.state;
@@ -115,6 +117,10 @@ void apply_operation(HalfedgeMesh& mesh, const RecordedEdit& edit) {
   Check check;
   if (op == "loop_subdivide") {
     check = loop_subdivide(mesh);
+  } else if (op == "catmull_clark") {
+    check = catmull_clark_subdivide(mesh);
+  } else if (op == "linear_subdivide") {
+    check = linear_subdivide(mesh);
   } else if (op == "triangulate") {
     check = triangulate_mesh(mesh).check;
   } else if (op == "flip" || op == "split" || op == "collapse") {

@@ -29,8 +29,9 @@ enum class EditKind : uint8_t {
               // (vertices, edges, faces, boundary loops), "position" (vertices)
   Create,     // a new element, appended; field "alive"; a vertex starts at value.position
   Delete,     // an element marked dead; field "alive"
-  Operation,  // field "flip" "split" "collapse" (element = the edge), "loop_subdivide", "triangulate", or
-              // "restore" "undo" "redo" (the mesh was replaced by `state`)
+  Operation,  // field "flip" "split" "collapse" (element = the edge), "loop_subdivide", "catmull_clark",
+              // "linear_subdivide", "triangulate", or "restore" "undo" "redo" "subdivision phase" (the mesh was
+              // replaced by `state`)
 };
 
 // "set", "new", "delete", "operation".

@@ -7,6 +7,19 @@ namespace meshedit {
 
 Check can_linear_subdivide(const HalfedgeMesh& mesh) { return can_refine(mesh, "linear subdivision"); }
 
+OpResult<LinearState> linear_compute_points(const HalfedgeMesh& mesh) {
+  OpResult<LinearState> result;
+  result.check = can_linear_subdivide(mesh);
+  if (!result.check) return result;
+  result.value.layout = plan_refinement(mesh, RefineRule::TrianglesInFour);
+  result.value.position = midpoint_positions(mesh, result.value.layout);
+  return result;
+}
+
+void linear_refine(HalfedgeMesh& mesh, const LinearState& state) {
+  mesh = refine_mesh(mesh, RefineRule::TrianglesInFour, state.layout, state.position);
+}
+
 Check linear_subdivide(HalfedgeMesh& mesh, int levels) {
   // Checked once: a level of an accepted mesh is valid and its faces have distinct corners, so it is accepted too.
   const Check check = can_linear_subdivide(mesh);
