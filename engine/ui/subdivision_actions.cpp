@@ -5,6 +5,7 @@
 #include <string>
 #include <utility>
 
+#include "core/catmull_clark.h"
 #include "core/linear_subdivision.h"
 
 namespace meshedit {
@@ -13,14 +14,7 @@ namespace {
 // Made when the program starts, so apply_operation takes them without an allocation that could fail.
 const std::string kCatmullClarkLabel = "Catmull-Clark subdivision";
 const std::string kLinearLabel = "Linear subdivision";
-const std::string kCatmullClarkPhaseLabels[] = {
-    "",
-    "Catmull-Clark 1/3: compute face, edge and vertex points",
-    "Catmull-Clark 2/3: split every face into quads (nothing moves yet)",
-    "Catmull-Clark 3/3: move every vertex to its point",
-};
-
-bool stepper_current(const MeshDocument& doc, const CatmullClarkStepper& stepper) {
+bool stepper_current(const MeshDocument& doc, const SubdivisionStepper& stepper) {
   return stepper.generation == doc.generation && stepper.version == doc.mesh.version();
 }
 
@@ -51,54 +45,46 @@ Check linear_subdivide_all(MeshDocument& doc, Selection& selection) {
   return subdivide_all(doc, selection, kLinearLabel, linear_subdivide);
 }
 
-const std::string& next_catmull_clark_phase_label(const MeshDocument& doc, const CatmullClarkStepper& stepper) {
-  return kCatmullClarkPhaseLabels[stepper.next_phase > 1 && stepper_current(doc, stepper) ? stepper.next_phase : 1];
+const std::string& next_phase_label(const MeshDocument& doc, const SubdivisionStepper& stepper) {
+  const SubdivisionPhases& phases = stepper.phases;
+  return phase_label(phases.scheme(), phases.computed() && stepper_current(doc, stepper) ? phases.next_phase() : 1);
 }
 
-Check catmull_clark_step(MeshDocument& doc, Selection& selection, CatmullClarkStepper& stepper) {
-  const bool restarting = stepper.next_phase > 1 && !stepper_current(doc, stepper);
-  const int stale_phase = stepper.next_phase - 1;
-  const int phase = restarting ? 1 : stepper.next_phase;
-  const std::string& label = kCatmullClarkPhaseLabels[phase];
+Check subdivision_step(MeshDocument& doc, Selection& selection, SubdivisionStepper& stepper) {
+  SubdivisionPhases& phases = stepper.phases;
+  const bool restarting = phases.computed() && !stepper_current(doc, stepper);
+  const int stale_phase = phases.next_phase() - 1;
+  const int phase = restarting ? 1 : phases.next_phase();
+  const std::string& label = phase_label(phases.scheme(), phase);
   auto restarted = [&] {
-    return restarting ? "the mesh changed after Catmull-Clark phase " + std::to_string(stale_phase) +
-                            "; starting again. "
+    return restarting ? std::string("the mesh changed after ") + scheme_title(phases.scheme()) + " phase " +
+                            std::to_string(stale_phase) + "; starting again. "
                       : std::string();
   };
   Check check;
   if (phase == 1) {
-    OpResult<CatmullClarkState> computed;
+    // Phase 1 reads the mesh and allocates its points before anything changes: memory running out there does nothing.
+    SubdivisionPhases computed(phases.scheme());
     try {
-      computed = catmull_clark_compute_points(doc.mesh);
+      check = computed.run_next(doc.mesh);
     } catch (const std::bad_alloc&) {
       set_memory_ran_out_message(doc, Severity::Error);
       return Check::no(kMemoryRanOut);
     }
-    if (restarting) stepper = CatmullClarkStepper{};
-    if (!computed) {
-      set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + computed.check.reason; });
-      return std::move(computed.check);
+    phases = std::move(computed);
+    if (!check) {
+      set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + check.reason; });
+      return check;
     }
-    stepper.state = std::move(computed.value);
-    set_message_noexcept(doc, Severity::Info, [&] {
-      return restarted() + label + ": " + std::to_string(doc.mesh.num_faces()) + " face points, " +
-             std::to_string(doc.mesh.num_edges()) + " edge points, " + std::to_string(doc.mesh.num_vertices()) +
-             " vertex points; nothing moved yet";
-    });
+    set_message_noexcept(doc, Severity::Info,
+                         [&] { return restarted() + label + ": " + phases.computed_summary() + "; nothing moved yet"; });
   } else {
-    const CatmullClarkState& state = stepper.state;
-    check = apply_operation(doc, label, [&](HalfedgeMesh& mesh) {
-      if (phase == 2) catmull_clark_refine(mesh, state);
-      if (phase == 3) catmull_clark_commit_positions(mesh, state);
-      return Check::yes();
-    });
-    if (phase == 2) keep_vertices_only(selection, doc.mesh);
+    check = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return phases.run_next(mesh); });
+    if (phase == 2) keep_vertices_only(selection, doc.mesh);  // every scheme refines in phase 2
     if (!check) return check;
   }
-  stepper.next_phase = phase == 3 ? 1 : phase + 1;
   stepper.generation = doc.generation;
   stepper.version = doc.mesh.version();
-  if (phase == 3) stepper.state = CatmullClarkState{};
   return check;
 }
 

@@ -63,24 +63,24 @@ TEST(SubdivisionActions, CatmullClarkPhaseByPhase) {
   ASSERT_TRUE(catmull_clark_subdivide(reference));
   MeshDocument doc = make_document(start);
   Selection sel{V(5), {}};
-  CatmullClarkStepper stepper;
-  EXPECT_EQ(next_catmull_clark_phase_label(doc, stepper), "Catmull-Clark 1/3: compute face, edge and vertex points");
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
+  SubdivisionStepper stepper(SubdivisionScheme::CatmullClark);
+  EXPECT_EQ(next_phase_label(doc, stepper), "Catmull-Clark 1/3: compute face, edge and vertex points");
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   EXPECT_TRUE(doc.mesh.same_as(start));
   EXPECT_FALSE(doc.history.can_undo());
   EXPECT_EQ(doc.message.text,
             "Catmull-Clark 1/3: compute face, edge and vertex points: 6 face points, 12 edge points, 8 vertex points; "
             "nothing moved yet");
-  EXPECT_EQ(next_catmull_clark_phase_label(doc, stepper),
+  EXPECT_EQ(next_phase_label(doc, stepper),
             "Catmull-Clark 2/3: split every face into quads (nothing moves yet)");
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   EXPECT_EQ(doc.mesh.num_faces(), 24u);
   EXPECT_EQ(doc.mesh.position(V(5)), start.position(V(5)));  // nothing moved yet
   EXPECT_REF(sel.selected, V(5));
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   EXPECT_TRUE(doc.mesh.same_as(reference));
   EXPECT_EQ(doc.last.label, "Catmull-Clark 3/3: move every vertex to its point");
-  EXPECT_EQ(stepper.next_phase, 1);
+  EXPECT_EQ(stepper.phases.next_phase(), 1);
   // Two undo steps back to the start.
   ASSERT_TRUE(undo_edit(doc, sel));
   EXPECT_EQ(doc.mesh.num_faces(), 24u);
@@ -93,15 +93,15 @@ TEST(SubdivisionActions, CatmullClarkStepsStartAgainAfterAChange) {
   const HalfedgeMesh start = build_halfedge_mesh(make_cube_quads());
   MeshDocument doc = make_document(start);
   Selection sel;
-  CatmullClarkStepper stepper;
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
+  SubdivisionStepper stepper(SubdivisionScheme::CatmullClark);
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   ASSERT_TRUE(undo_edit(doc, sel));
-  EXPECT_EQ(next_catmull_clark_phase_label(doc, stepper), "Catmull-Clark 1/3: compute face, edge and vertex points");
-  ASSERT_TRUE(catmull_clark_step(doc, sel, stepper).ok);
+  EXPECT_EQ(next_phase_label(doc, stepper), "Catmull-Clark 1/3: compute face, edge and vertex points");
+  ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   EXPECT_EQ(doc.message.text.rfind("the mesh changed after Catmull-Clark phase 2; starting again. ", 0), 0u)
       << doc.message.text;
-  EXPECT_EQ(stepper.next_phase, 2);
+  EXPECT_EQ(stepper.phases.next_phase(), 2);
   EXPECT_TRUE(doc.mesh.same_as(start));
 }
 
