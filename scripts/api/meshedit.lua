@@ -290,6 +290,37 @@ function Mesh:catmull_clark() end
 ---@return string? reason
 function Mesh:linear_subdivide() end
 
+---A scheme's phases, one call each, on this mesh: what the window's Subdivide menu steps through.
+---"loop" (4 phases, the course's weights): compute positions, split every original edge, flip new edges joining an
+---old and a new vertex, move every vertex. "catmull-clark" (3): compute face, edge and vertex points, split every
+---face into quads (nothing moves yet), move every vertex. "linear" (2): compute midpoints and centres, split every
+---face. Phase 1 only computes; each later phase is an undo point.
+---@param scheme "loop"|"catmull-clark"|"linear"
+---@return SubdivisionPhases
+function Mesh:subdivision_phases(scheme) end
+
+---@class SubdivisionPhases
+---@field scheme string "loop", "catmull-clark" or "linear"
+---@field phase_count integer 4, 3 or 2
+---@field next_phase integer the phase step() runs next, 1 to phase_count
+---@field next_label string "Catmull-Clark 2/3: split every face into quads (nothing moves yet)"
+local SubdivisionPhases = {}
+
+---Runs the next phase. Refused (nothing changes) when phase 1 is refused as the one-call method would be, or when
+---the mesh changed since the last phase (restart() starts again).
+---@return integer|nil phase the phase that ran
+---@return string label_or_reason its label, or why nothing ran
+function SubdivisionPhases:step() end
+
+---What phase 1 computed, by the ids of the mesh it read (nil before phase 1 and after the last phase):
+---Loop `vertices` and `edges`; Catmull-Clark `vertices`, `edges` and `faces`; linear `edges`, and `faces` for the
+---faces of more than three sides (their centres).
+---@return {vertices: table<integer, Vec3>?, edges: table<integer, Vec3>?, faces: table<integer, Vec3>?}|nil
+function SubdivisionPhases:points() end
+
+---Back to phase 1; the computed points are dropped.
+function SubdivisionPhases:restart() end
+
 ---@return Snapshot
 function Mesh:snapshot() end
 
