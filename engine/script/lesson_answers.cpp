@@ -7,6 +7,8 @@
 #include <fstream>
 #include <iterator>
 
+#include "core/subdivision_phases.h"
+
 namespace meshedit {
 namespace {
 
@@ -19,14 +21,15 @@ struct AnswerField {
 const AnswerField kAnswerFields[] = {
     {"key", Kind::Key},         {"click", Kind::Click},           {"selection", Kind::Selection},
     {"button", Kind::Button},   {"flip", Kind::Flip},             {"split", Kind::Split},
-    {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"loop_phase", Kind::LoopPhase},
+    {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"subdivide_phase", Kind::SubdividePhase},
+    {"loop_phase", Kind::SubdividePhase},
     {"triangulate", Kind::Triangulate}, {"open_repaired", Kind::OpenRepaired},
     {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT},
     {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
-    "key, click, selection, button, flip, split, collapse, subdivide, loop_phase, triangulate, open_repaired, choose, "
-    "answer, curve_t or your_turn";
+    "key, click, selection, button, flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate, "
+    "open_repaired, choose, answer, curve_t or your_turn";
 
 std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
@@ -79,17 +82,21 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
     }
     answer.kind = found->kind;
     answer.field = key;
-    if (answer.kind == Kind::Subdivide && lua_type(L, -1) == LUA_TSTRING) {
+    const bool schemes = answer.kind == Kind::Subdivide || (answer.kind == Kind::SubdividePhase && key != "loop_phase");
+    if (schemes && lua_type(L, -1) == LUA_TSTRING) {
       answer.value = lua_tostring(L, -1);
-      if (answer.value != "loop" && answer.value != "catmull-clark" && answer.value != "linear") {
-        throw ScriptError(where + ": subdivide must be true or \"loop\", \"catmull-clark\" or \"linear\", got '" +
-                          answer.value + "'");
+      if (!scheme_named(answer.value)) {
+        throw ScriptError(where + ": " + key + " must be " + (answer.kind == Kind::Subdivide ? "true or " : "") +
+                          scheme_names() + ", got '" + answer.value + "'");
       }
-    } else if (answer.kind == Kind::Subdivide || answer.kind == Kind::LoopPhase || answer.kind == Kind::Triangulate) {
+    } else if (answer.kind == Kind::SubdividePhase && key != "loop_phase") {
+      throw ScriptError(where + ": " + key + " must be " + scheme_names());
+    } else if (answer.kind == Kind::Subdivide || answer.kind == Kind::SubdividePhase ||
+               answer.kind == Kind::Triangulate) {
       if (lua_type(L, -1) != LUA_TBOOLEAN || !lua_toboolean(L, -1)) {
         throw ScriptError(where + ": write " + key + " = true");
       }
-      if (answer.kind == Kind::Subdivide) answer.value = "loop";
+      if (answer.kind != Kind::Triangulate) answer.value = "loop";
     } else if (answer.kind == Kind::Value) {
       answer.value = value_text(L, where);
     } else if (answer.kind == Kind::CurveT) {
@@ -122,7 +129,7 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
 
 bool ScriptedAnswer::is_edit() const {
   return kind == Kind::Flip || kind == Kind::Split || kind == Kind::Collapse || kind == Kind::Subdivide ||
-         kind == Kind::LoopPhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired || kind == Kind::CurveT;
+         kind == Kind::SubdividePhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired || kind == Kind::CurveT;
 }
 
 ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits) {

@@ -12,8 +12,11 @@
 // Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
 // the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
 // {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
-// {loop_phase = true}, {triangulate = true} (Edit > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
-// repaired copy of that file, a path from the lesson's folder)), the answers to questions ({choose = "h4"} for choose{}; a click answers pick{};
+// {subdivide_phase = "loop" | "catmull-clark" | "linear"} (the scheme's next phase; {loop_phase = true} is Loop's, as
+// Shift+L), {triangulate = true} (Subdivide > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
+// repaired copy of that file, a path from the lesson's folder)); each of these menu commands also tells the lesson
+// its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
+// ({choose = "h4"} for choose{}; a click answers pick{};
 // {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), and {curve_t = 0.25} (the curve view's t,
 // as its slider sets it).
 //
@@ -43,15 +46,16 @@ namespace meshedit {
 
 struct ScriptedAnswer {
   enum class Kind {
-    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, LoopPhase, Triangulate, OpenRepaired, Choose,
-    Value, CurveT, YourTurn
+    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, SubdividePhase, Triangulate, OpenRepaired,
+    Choose, Value, CurveT, YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...
-  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right"; subdivide's scheme
+  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right"; the scheme of
+                      // subdivide and subdivide_phase ("loop" for loop_phase)
   std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
 
-  bool is_edit() const;  // an edit of the scene (flip ... loop_phase, curve_t): always used, never "not awaited"
+  bool is_edit() const;  // an edit of the scene (flip ... subdivide_phase, curve_t): always used, never "not awaited"
 };
 using ScriptedAnswerList = std::deque<ScriptedAnswer>;
 

@@ -82,6 +82,7 @@ void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
 std::string default_hint(const LessonWait& wait) {
   switch (wait.kind) {
     case LessonWait::Kind::Key: return "Press " + wait.name;
+    case LessonWait::Kind::Command: return std::string("Run ") + find_lesson_command(wait.name)->how;
     case LessonWait::Kind::Click: return "Click " + wait.describe().substr(std::strlen("a click on "));
     case LessonWait::Kind::Selection: return "Select " + wait.describe().substr(std::strlen("the selection of "));
     case LessonWait::Kind::Button: return "Press " + wait.name;
@@ -89,17 +90,17 @@ std::string default_hint(const LessonWait& wait) {
   }
 }
 
-// Parses wait_for's table at `index` (exactly one of key, click, selection, condition, button; an optional
+// Parses wait_for's table at `index` (exactly one of key, command, click, selection, condition, button; an optional
 // hint) into a LessonWait, with `where` set to the lesson line.
 LessonWait parse_wait(lua_State* L, int index) {
   if (!lua_istable(L, index)) {
-    raise(L, "wait_for: expected a table like {key=\"F\"}, {click=\"vertex\"}, {selection=\"e7\"}, "
-             "{condition=function() ... end} or {button=\"Continue\"}, got " + type_name(L, index));
+    raise(L, "wait_for: expected a table like {key=\"F\"}, {command=\"catmull-clark-phase\"}, {click=\"vertex\"}, "
+             "{selection=\"e7\"}, {condition=function() ... end} or {button=\"Continue\"}, got " + type_name(L, index));
   }
-  check_fields(L, index, "wait_for", {"key", "click", "selection", "condition", "button", "hint"});
+  check_fields(L, index, "wait_for", {"key", "command", "click", "selection", "condition", "button", "hint"});
   LessonWait wait;
   int kinds = 0;
-  for (const char* field : {"key", "click", "selection", "condition", "button"}) {
+  for (const char* field : {"key", "command", "click", "selection", "condition", "button"}) {
     lua_getfield(L, index, field);
     const int value = lua_gettop(L);
     if (!lua_isnil(L, value)) {
@@ -111,6 +112,14 @@ LessonWait parse_wait(lua_State* L, int index) {
         }
         wait.kind = name == "key" ? LessonWait::Kind::Key : LessonWait::Kind::Button;
         wait.name = lua_tostring(L, value);
+      } else if (name == "command") {
+        const char* command = lua_type(L, value) == LUA_TSTRING ? lua_tostring(L, value) : nullptr;
+        if (!command || !find_lesson_command(command)) {
+          raise(L, "wait_for: command must be one of " + lesson_command_names() + ", got " +
+                       (command ? "'" + std::string(command) + "'" : "a " + type_name(L, value)));
+        }
+        wait.kind = LessonWait::Kind::Command;
+        wait.name = command;
       } else if (name == "condition") {
         if (!lua_isfunction(L, value)) raise(L, "wait_for: condition must be a function, got " + type_name(L, value));
         wait.kind = LessonWait::Kind::Condition;
@@ -122,8 +131,8 @@ LessonWait parse_wait(lua_State* L, int index) {
     lua_pop(L, 1);
   }
   if (kinds != 1) {
-    raise(L, kinds == 0 ? "wait_for: say what to wait for: key, click, selection, condition or button"
-                        : "wait_for: wait for one thing at a time (key, click, selection, condition or button)");
+    raise(L, kinds == 0 ? "wait_for: say what to wait for: key, command, click, selection, condition or button"
+                        : "wait_for: wait for one thing at a time (key, command, click, selection, condition or button)");
   }
   lua_getfield(L, index, "hint");
   if (!lua_isnil(L, -1)) {

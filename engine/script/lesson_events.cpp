@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cctype>
 #include <cstdio>
+#include <iterator>
 
 namespace meshedit {
 namespace {
@@ -38,8 +39,26 @@ bool same_key(const std::string& a, const std::string& b) {
   return true;
 }
 
+const LessonCommand* find_lesson_command(std::string_view name) {
+  for (const LessonCommand& command : kLessonCommands) {
+    if (name == command.name) return &command;
+  }
+  return nullptr;
+}
+
+std::string lesson_command_names() {
+  std::string names;
+  const size_t count = std::size(kLessonCommands);
+  for (size_t i = 0; i < count; ++i) {
+    names += i == 0 ? "" : i + 1 == count ? " or " : ", ";
+    names += kLessonCommands[i].name;
+  }
+  return names;
+}
+
 bool LessonWait::matches(const LessonEvent& event) const {
   switch (kind) {
+    case Kind::Command: return event.kind == LessonEvent::Kind::Command && event.name == name;
     case Kind::Key: return event.kind == LessonEvent::Kind::Key && same_key(event.name, name);
     case Kind::Button: return event.kind == LessonEvent::Kind::Button && event.name == name;
     case Kind::Click: return event.kind == LessonEvent::Kind::Click && element_matches(*this, event.element);
@@ -61,6 +80,10 @@ std::string LessonWait::describe() const {
   switch (kind) {
     case Kind::None: return "";
     case Kind::Key: return "key " + name;
+    case Kind::Command: {
+      const LessonCommand* command = find_lesson_command(name);
+      return "the command " + name + (command ? std::string(" (") + command->how + ")" : std::string());
+    }
     case Kind::Click: return "a click on " + element_words(*this);
     case Kind::Selection: return "the selection of " + element_words(*this);
     case Kind::Condition: return "a condition";

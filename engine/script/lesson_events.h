@@ -13,12 +13,15 @@
 //   `feedback` saying what is wrong.
 // - A question's hint is held back until the student has tried once (hint_shown); a wait_for's hint is the
 //   instruction itself ("Press F") and shows at once.
+// - A command wait is met by a Command event of the same name: the window sends one whenever the student runs that
+//   command, from its menu or its key (a key sends its Key event too), and headless answers stand for them.
 // - A your_turn wait (lesson_your_turn.h) takes no event: the runner runs the student's file again when its stamp
 //   (watched_stamp, read at most twice a second) changes. `name` is the file's name, `feedback` the last diagnosis.
 #pragma once
 
 #include <optional>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include "core/ids.h"
@@ -26,10 +29,31 @@
 
 namespace meshedit {
 
+// The window's commands a lesson can wait for with wait_for{command = NAME}, and where the student finds each.
+struct LessonCommand {
+  const char* name;  // "catmull-clark-phase"
+  const char* how;   // "Subdivide > Catmull-Clark, the next phase": the wait's default hint follows "Run "
+};
+inline constexpr LessonCommand kLessonCommands[] = {
+    {"loop", "Subdivide > Loop subdivision (L)"},
+    {"loop-phase", "Subdivide > Loop, the next phase (Shift+L)"},
+    {"catmull-clark", "Subdivide > Catmull-Clark subdivision"},
+    {"catmull-clark-phase", "Subdivide > Catmull-Clark, the next phase"},
+    {"linear", "Subdivide > Linear subdivision"},
+    {"linear-phase", "Subdivide > Linear, the next phase"},
+    {"triangulate", "Edit > Triangulate"},
+    {"open-repaired", "File > Open a repaired copy"},
+};
+// The command of that name, or nullptr.
+const LessonCommand* find_lesson_command(std::string_view name);
+// "loop, loop-phase, ... or open-repaired": for the message that refuses another name.
+std::string lesson_command_names();
+
 struct LessonEvent {
-  enum class Kind { Key, Click, Selection, Button, Choice, Value };
+  enum class Kind { Key, Click, Selection, Button, Choice, Value, Command };
   Kind kind = Kind::Key;
-  std::string name;     // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed
+  std::string name;     // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed,
+                        // the command (a kLessonCommands name)
   ElementRef element;   // Click and Selection
 
   static LessonEvent key(std::string name) { return {Kind::Key, std::move(name), {}}; }
@@ -38,12 +62,15 @@ struct LessonEvent {
   static LessonEvent button(std::string label) { return {Kind::Button, std::move(label), {}}; }
   static LessonEvent choice(std::string option) { return {Kind::Choice, std::move(option), {}}; }
   static LessonEvent value(std::string text) { return {Kind::Value, std::move(text), {}}; }
+  static LessonEvent command(std::string name) { return {Kind::Command, std::move(name), {}}; }
 };
 
 struct LessonWait {
-  enum class Kind { None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer, YourTurn };
+  enum class Kind {
+    None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer, YourTurn, Command
+  };
   Kind kind = Kind::None;
-  std::string name;                         // Key: the key; Button: the label
+  std::string name;                         // Key: the key; Button: the label; Command: the command's name
   std::optional<ElementKind> element_kind;  // Click/Selection on any element of this kind
   ElementRef element;                       // Click/Selection on exactly this element (when valid)
   double seconds = 0.0, elapsed = 0.0;      // Animation: its length and how far it got
@@ -71,7 +98,8 @@ struct LessonWait {
   bool matches(const LessonEvent& event) const;
   // Whether the selection being `element` meets this wait (Selection waits only).
   bool selection_matches(ElementRef element) const;
-  // "key F", "a click on a vertex", "a click on e7", "the selection of an edge", "the selection of e7",
+  // "key F", "the command linear (Subdivide > Linear subdivision)", "a click on a vertex", "a click on e7", "the
+  // selection of an edge", "the selection of e7",
   // "a condition", "the Continue button", "an animation (2 s)", "a choice (h1, h2, h4) in 'Which...?'", "a click
   // answering 'Click...'", "a number answering 'What...?'", "a point answering 'Where...?'", "the student's flip.lua
   // to give the reference's answer"; "" for None.

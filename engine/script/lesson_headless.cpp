@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cctype>
+#include <cstring>
 #include <deque>
 #include <fstream>
 #include <iterator>
@@ -19,6 +20,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/mesh_repair.h"
+#include "core/subdivision_phases.h"
 #include "core/triangulate.h"
 #include "io/mesh_file.h"
 #include "script/headless_host.h"
@@ -376,9 +378,37 @@ class HeadlessDriver {
     return "";
   }
 
-  // The edits the window's keys make, applied to the mesh on screen.
+  // The edits the window's keys and menu commands make, applied to the mesh on screen; a menu command then tells the
+  // lesson its name, as the window does.
   std::string edit(const Answer& answer) {
-    if (answer.kind == Answer::Kind::OpenRepaired) return open_repaired(answer);
+    std::string failure = answer.kind == Answer::Kind::OpenRepaired ? open_repaired(answer) : edit_mesh(answer);
+    if (failure.empty()) {
+      if (const char* command = command_of(answer)) runner_.deliver(LessonEvent::command(command));
+    }
+    return failure;
+  }
+
+  // The kLessonCommands name of the menu command an edit answer stands for, or nullptr (flip, split, collapse).
+  static const char* command_of(const Answer& answer) {
+    switch (answer.kind) {
+      case Answer::Kind::Subdivide:
+      case Answer::Kind::SubdividePhase: {
+        static const std::string kNames[][2] = {{"loop", "loop-phase"},
+                                                {"catmull-clark", "catmull-clark-phase"},
+                                                {"linear", "linear-phase"}};
+        const bool phase = answer.kind == Answer::Kind::SubdividePhase;
+        for (const auto& names : kNames) {
+          if (names[0] == answer.value) return names[phase ? 1 : 0].c_str();
+        }
+        return nullptr;
+      }
+      case Answer::Kind::Triangulate: return "triangulate";
+      case Answer::Kind::OpenRepaired: return "open-repaired";
+      default: return nullptr;
+    }
+  }
+
+  std::string edit_mesh(const Answer& answer) {
     std::shared_ptr<HalfedgeMesh> mesh = host_.current_mesh();
     if (!mesh) return "answer " + answer.field + ": no mesh on screen";
     Check check;
@@ -390,8 +420,8 @@ class HeadlessDriver {
     } else if (answer.kind == Answer::Kind::Triangulate) {  // Edit > Triangulate
       out_ << "  > triangulate";
       check = triangulate_mesh(*mesh).check;
-    } else if (answer.kind == Answer::Kind::LoopPhase) {
-      check = loop_phase(*mesh);
+    } else if (answer.kind == Answer::Kind::SubdividePhase) {
+      return subdivide_phase(answer, std::move(mesh));
     } else {
       const std::optional<ElementRef> element = parse_element(answer.value);
       if (!element || element->kind != ElementKind::Edge) {
@@ -403,47 +433,39 @@ class HeadlessDriver {
       else if (answer.kind == Answer::Kind::Split) check = split(*mesh, e).check;
       else check = collapse(*mesh, e).check;
     }
-    if (!check.ok) {
-      out_ << '\n';
-      return "answer " + answer.field + (answer.value.empty() ? "" : " " + answer.value) + " refused: " + check.reason;
-    }
+    if (!check.ok) return refused(answer, check);
     host_.set_current_mesh(mesh);
-    if (answer.kind == Answer::Kind::LoopPhase && loop_.next_phase > 1) loop_.left = std::move(mesh);
     return "";
   }
 
-  // Shift+L: the next Loop phase on `mesh` (a copy of the screen mesh), as the window's loop_subdivide_step.
-  Check loop_phase(HalfedgeMesh& mesh) {
-    if (loop_.next_phase > 1 && (!loop_.left || host_.screen_mesh() != loop_.left.get())) {
-      out_ << "  (the mesh changed after Loop phase " << loop_.next_phase - 1 << "; starting again)\n";
-      loop_ = LoopPhases{};
-    }
-    const int phase = loop_.next_phase;
-    static const char* const kPhaseNames[] = {"", "compute new positions", "split every original edge",
-                                              "flip new edges joining an old and a new vertex",
-                                              "move every vertex to its new position"};
-    out_ << "  > loop phase " << phase << "/4: " << kPhaseNames[phase];
-    if (phase == 1) {
-      OpResult<LoopState> state = loop_compute_positions(mesh, LoopWeights::Course);
-      if (!state.ok()) return state.check;
-      loop_.state = std::move(state.value);
-    } else if (phase == 2) {
-      loop_split_edges(mesh, loop_.state);
-    } else if (phase == 3) {
-      loop_flip_edges(mesh, loop_.state);
-    } else {
-      loop_commit_positions(mesh, loop_.state);
-    }
-    loop_.next_phase = phase == 4 ? 1 : phase + 1;
-    if (phase == 4) loop_.state = LoopState{};
-    return Check::yes();
+  std::string refused(const Answer& answer, const Check& check) {
+    out_ << '\n';
+    return "answer " + answer.field + (answer.value.empty() ? "" : " " + answer.value) + " refused: " + check.reason;
   }
 
-  // Where Shift+L is in Loop subdivision: the next phase, what phase 1 computed, and the screen mesh the last
-  // phase left (kept alive, so a new mesh at the same address cannot pass for it).
-  struct LoopPhases {
-    int next_phase = 1;
-    LoopState state;
+  // Shift+L or a Subdivide menu's "next phase": the scheme's next phase on `mesh` (a copy of the screen mesh), as the
+  // window's steppers run it. The phases go on only while the screen shows the mesh the last phase left.
+  std::string subdivide_phase(const Answer& answer, std::shared_ptr<HalfedgeMesh> mesh) {
+    const SubdivisionScheme scheme = *scheme_named(answer.value);
+    Stepper& stepper = steppers_[size_t(scheme)];
+    if (stepper.phases.computed() && (!stepper.left || host_.screen_mesh() != stepper.left.get())) {
+      out_ << "  (the mesh changed after " << scheme_title(scheme) << " phase " << stepper.phases.next_phase() - 1
+           << "; starting again)\n";
+      stepper.phases.restart();
+    }
+    const std::string& label = stepper.phases.next_label();
+    out_ << "  > " << scheme_name(scheme) << " phase" << label.substr(std::strlen(scheme_title(scheme)));
+    if (const Check check = stepper.phases.run_next(*mesh); !check) return refused(answer, check);
+    host_.set_current_mesh(mesh);
+    stepper.left = stepper.phases.computed() ? std::move(mesh) : nullptr;
+    return "";
+  }
+
+  // One scheme's phases as the window steps them, and the screen mesh the last phase left (kept alive, so a new
+  // mesh at the same address cannot pass for it).
+  struct Stepper {
+    explicit Stepper(SubdivisionScheme scheme) : phases(scheme) {}
+    SubdivisionPhases phases;
     std::shared_ptr<HalfedgeMesh> left;
   };
 
@@ -462,7 +484,8 @@ class HeadlessDriver {
   HeadlessHost host_;
   LessonRunner runner_;
   std::string step_name_;
-  LoopPhases loop_;
+  Stepper steppers_[3] = {Stepper(SubdivisionScheme::Loop), Stepper(SubdivisionScheme::CatmullClark),
+                          Stepper(SubdivisionScheme::Linear)};  // by SubdivisionScheme
   std::filesystem::path lesson_folder_;  // where open_repaired's paths start
   StepShown shown_;
 };
