@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <unordered_set>
 
 #include <glm/geometric.hpp>
 #include <glm/vec2.hpp>
@@ -61,6 +62,11 @@ glm::dvec3 newell_normal(std::span<const glm::dvec3> corners) {
 }
 
 std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, bool* used_fan) {
+  return triangulate_polygon(corners, nullptr, used_fan);
+}
+
+std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, const DiagonalAllowed& allowed,
+                                          bool* used_fan) {
   if (used_fan) *used_fan = false;
   std::vector<uint32_t> triangles;
   const size_t n = corners.size();
@@ -88,14 +94,19 @@ std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, b
   };
   while (left.size() > 3) {
     const size_t m = left.size();
-    size_t best = m;
-    double best_shape = -1.0;
+    // The best-shaped ear whose diagonal is allowed; failing that, the best-shaped ear.
+    size_t best = m, best_allowed = m;
+    double best_shape = -1.0, best_allowed_shape = -1.0;
     for (size_t k = 0; k < m; ++k) {
       if (!is_ear(k)) continue;
-      const double s = shape(p[left[(k + m - 1) % m]], p[left[k]], p[left[(k + 1) % m]]);
+      const uint32_t a = left[(k + m - 1) % m], c = left[(k + 1) % m];
+      const double s = shape(p[a], p[left[k]], p[c]);
       if (s > best_shape) best = k, best_shape = s;
-      if (m > kBestEarLimit) break;
+      const bool ok = !allowed || allowed(a, c);
+      if (ok && s > best_allowed_shape) best_allowed = k, best_allowed_shape = s;
+      if (m > kBestEarLimit && ok) break;
     }
+    if (best_allowed != m) best = best_allowed;
     if (best == m) {  // no ear: cut what is left as a fan from its first corner
       if (used_fan) *used_fan = true;
       for (size_t k = 1; k + 1 < m; ++k) triangles.insert(triangles.end(), {left[0], left[k], left[k + 1]});
@@ -109,6 +120,14 @@ std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, b
 }
 
 PolygonMesh triangulate(const PolygonMesh& polygons, TriangulationReport* report) {
+  // Every edge the mesh has, and each diagonal once placed: a diagonal along one of them would give that edge more
+  // than two faces (two quads sharing three corners, cut along the same diagonal, make one triangle twice).
+  const auto key = [](uint32_t a, uint32_t b) { return (uint64_t(std::min(a, b)) << 32) | std::max(a, b); };
+  std::unordered_set<uint64_t> edges;
+  for (size_t f = 0; f < polygons.num_faces(); ++f) {
+    const std::span<const uint32_t> face = polygons.face(f);
+    for (size_t i = 0; i < face.size(); ++i) edges.insert(key(face[i], face[(i + 1) % face.size()]));
+  }
   PolygonMesh out;
   out.positions = polygons.positions;
   out.indices.reserve(polygons.indices.size() * 3 / 2);
@@ -126,9 +145,12 @@ PolygonMesh triangulate(const PolygonMesh& polygons, TriangulationReport* report
     corners.clear();
     for (uint32_t i : face) corners.push_back(polygons.positions[i]);
     bool fan = false;
-    const std::vector<uint32_t> triangles = triangulate_polygon(corners, &fan);
+    const std::vector<uint32_t> triangles = triangulate_polygon(
+        corners, [&](uint32_t a, uint32_t c) { return !edges.contains(key(face[a], face[c])); }, &fan);
     for (size_t t = 0; t < triangles.size(); t += 3) {
-      out.add_face({face[triangles[t]], face[triangles[t + 1]], face[triangles[t + 2]]});
+      const uint32_t a = face[triangles[t]], b = face[triangles[t + 1]], c = face[triangles[t + 2]];
+      out.add_face({a, b, c});
+      edges.insert(key(a, b)), edges.insert(key(b, c)), edges.insert(key(c, a));
     }
     ++counts.polygons_split;
     counts.triangles_made += triangles.size() / 3;

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <span>
 #include <vector>
 
@@ -34,12 +35,19 @@ struct TriangulationReport {
 // n - 2 triangles. A polygon of fewer than 3 corners gives none. `used_fan` (optional) says whether the fan
 // fallback was needed.
 std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, bool* used_fan = nullptr);
+// The same, cutting along a diagonal from corner a to corner c only where allowed(a, c) says so, as long as some ear
+// allows it (when none does, the best-shaped ear is cut all the same).
+using DiagonalAllowed = std::function<bool(uint32_t a, uint32_t c)>;
+std::vector<uint32_t> triangulate_polygon(std::span<const glm::dvec3> corners, const DiagonalAllowed& allowed,
+                                          bool* used_fan = nullptr);
 
 // The Newell normal of a polygon (not normalized; its length is twice the polygon's area when planar).
 glm::dvec3 newell_normal(std::span<const glm::dvec3> corners);
 
 // `polygons` with every face of more than three corners replaced by its triangles (faces of fewer than three
-// corners, which are not polygons, are kept as they are for the builder to report).
+// corners, which are not polygons, are kept as they are for the builder to report). No diagonal runs along an edge
+// the mesh already has or another polygon's diagonal, where some ear allows it: two quads that share three corners
+// are cut along different diagonals, so no triangle is made twice.
 PolygonMesh triangulate(const PolygonMesh& polygons, TriangulationReport* report = nullptr);
 
 // Triangulates every face of `mesh`: the mesh becomes the triangles of to_polygon_mesh(mesh) rebuilt (live vertices

@@ -217,6 +217,24 @@ TEST(Triangulate, BumpyQuadTorusBuildsValidatesAndKeepsNormals) {
   EXPECT_TRUE(loop_subdivide(mesh).ok);
 }
 
+// Two quads that share three corners (Suzanne, as Blender exports her, has such pairs): each may only be cut along a
+// diagonal the other has not used, or the triangle of the three shared corners would be made twice.
+TEST(Triangulate, QuadsSharingThreeCornersAreCutAlongDifferentDiagonals) {
+  PolygonMesh polygons;
+  polygons.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.2}, {1.1, 1.1, -0.3}};
+  polygons.add_face({0, 1, 2, 3});
+  polygons.add_face({2, 1, 0, 4});
+  const PolygonMesh triangles = triangulate(polygons);
+  ASSERT_EQ(triangles.num_faces(), 4u);
+  std::set<std::set<uint32_t>> seen;
+  for (size_t f = 0; f < triangles.num_faces(); ++f) {
+    const std::span<const uint32_t> t = triangles.face(f);
+    EXPECT_TRUE(seen.insert({t[0], t[1], t[2]}).second) << "triangle " << f << " repeats another";
+  }
+  const HalfedgeMesh mesh = build_halfedge_mesh(triangles);
+  EXPECT_TRUE(validate(mesh).ok());
+}
+
 TEST(Triangulate, HalfedgeMeshOfQuadsIsReplacedByTriangles) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_cube_quads());
   const Check refused = can_loop_subdivide(mesh);
