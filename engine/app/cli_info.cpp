@@ -55,6 +55,13 @@ nlohmann::json mesh_json(const HalfedgeMesh& mesh, size_t unused_vertices) {
           {"problems", problems}};
 }
 
+// The vertices a glTF or PLY file repeats at one position, joined on reading (io/mesh_file.h).
+void print_joined(const nlohmann::json& m, std::ostream& out) {
+  if (!m.contains("joined_vertices")) return;
+  out << "  joined vertices       " << m["joined_vertices"]
+      << " (repeated at one position in the file, for normals, texture coordinates or colours)\n";
+}
+
 void print_mesh(const nlohmann::json& m, std::ostream& out, const std::string& indent) {
   auto line = [&](const std::string& label, const std::string& value) {
     out << indent << label << std::string(label.size() < 22 ? 22 - label.size() : 1, ' ') << value << "\n";
@@ -112,6 +119,7 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
     }
     case FileKind::Mesh: {
       result["kind"] = "mesh";
+      if (file.joined_vertices > 0) result["joined_vertices"] = file.joined_vertices;
       const RepairReport repair = repair_polygons(file.mesh).report;
       if (!repair.empty()) result["repair"] = repair_json(repair);
       try {
@@ -121,6 +129,7 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
         if (json) out << result.dump(2) << "\n";
         if (!json && result.contains("repair")) {
           out << path.string() << ": mesh that is not a manifold\n";
+          print_joined(result, out);
           print_repair(result["repair"], out);
         }
         throw;
@@ -146,6 +155,7 @@ int run_info(const std::vector<std::string>& arguments, std::ostream& out) {
     }
   } else {
     print_mesh(result, out, "  ");
+    print_joined(result, out);
     if (result.contains("repair")) print_repair(result["repair"], out);
   }
   return 0;

@@ -153,6 +153,10 @@ bool EditorApp::open(const std::filesystem::path& path) {
     std::string name = path.string();
     std::deque<std::string> recent = with_recent(recent_, path.string());
     std::string text = "opened " + path.string();
+    if (file.joined_vertices > 0) {
+      text += " (" + std::to_string(file.joined_vertices) + " vertices the file repeats at one position, for its "
+              "normals or texture coordinates, joined)";
+    }
     // Nothing from here on can fail: the window switches to the file whole.
     if (file.kind != FileKind::Curve) {  // a curve is drawn in its plane: the mesh view keeps its axis
       file_up_axis_ = file.up_axis;
@@ -214,11 +218,12 @@ bool EditorApp::open_repaired() {
     settings_.layout.right_open = true;
     repairable_path_.clear();
     set_message(doc_, Severity::Info, std::move(text));
-    return true;
   } catch (const std::exception& e) {
     report_exception(doc_, e);
     return false;
   }
+  tell_lesson_command("open-repaired");  // a lesson may wait for it; the copy is open whatever the lesson does
+  return true;
 }
 
 void EditorApp::open_dropped(const std::vector<std::string>& paths) {

@@ -14,6 +14,7 @@
 #include "io/obj_io.h"
 #include "io/off_io.h"
 #include "io/ply_io.h"
+#include "io/position_welder.h"
 #include "io/stl_io.h"
 
 namespace meshedit {
@@ -62,8 +63,10 @@ LoadedFile load_file(const std::filesystem::path& path) {
     loaded.up_axis = collada_up_axis(dae.asset);
   } else if (ext == ".gltf" || ext == ".glb") {
     loaded.mesh = read_gltf(path);
+    loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
   } else if (ext == ".ply") {
     loaded.mesh = read_ply(path);
+    loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
   } else if (ext == ".stl") {
     loaded.mesh = read_stl(path);
   } else if (ext == ".off") {

@@ -4,7 +4,8 @@
 // Every failure is a FileError naming the file and the place; nothing here exits or aborts, whatever
 // the bytes are. Readers for one format are in their own headers (obj_io.h, dae_reader.h, ply_io.h, ...),
 // each with a parse_* function over the bytes in memory that the fuzz tests call. A loaded file carries the axis to
-// show up (file_up_axis.h): COLLADA's from the file, every other format's from kFormatUpAxes.
+// show up (file_up_axis.h): COLLADA's from the file, every other format's from kFormatUpAxes. glTF and PLY vertices
+// that share a position are joined (LoadedFile::joined_vertices says how many), as STL's corners are.
 #pragma once
 
 #include <filesystem>
@@ -25,6 +26,9 @@ struct LoadedFile {
   std::vector<BezierPatch> patches;   // kind == Patches
   BezierCurve curve;                  // kind == Curve
   FileUpAxis up_axis;                 // the axis to show up; Z for a curve, which is drawn in its plane
+  // glTF and PLY: the vertices the file repeats at one position (a modeller splits them where a normal, a texture
+  // coordinate or a colour changes) that were joined into one (position_welder.h); 0 for the other formats.
+  size_t joined_vertices = 0;
 };
 
 // The kind a path's extension promises, or a FileError for an extension we do not read.

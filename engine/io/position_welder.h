@@ -1,11 +1,14 @@
 // PositionWelder: one vertex per distinct position, in order of first appearance, for formats that
 // store each triangle's corners separately (STL). Positions compare exactly, bit for bit, except that
-// +0 and -0 are the same coordinate.
+// +0 and -0 are the same coordinate. weld_repeated_positions applies the same rule to a mesh already read, for
+// formats whose vertices are a renderer's (glTF, PLY from a modeller): there a vertex is repeated wherever a normal,
+// a texture coordinate or a colour changes, and MeshEdit keeps positions only.
 #pragma once
 
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
+#include <vector>
 
 #include "core/polygon_mesh.h"
 
@@ -47,5 +50,22 @@ class PositionWelder {
   PolygonMesh& mesh_;
   std::unordered_map<Key, uint32_t, KeyHash> index_;
 };
+
+// Joins the vertices of `mesh` that share a position, keeping the first of each (the rest renumbered in order of first
+// appearance) and pointing the faces' corners at it; a corner out of range stays out of range, for the builder to
+// name. Returns how many vertices were joined; with none, the mesh is untouched.
+inline size_t weld_repeated_positions(PolygonMesh& mesh) {
+  PolygonMesh welded;
+  PositionWelder welder(welded);
+  std::vector<uint32_t> joined_to(mesh.positions.size());
+  for (size_t i = 0; i < mesh.positions.size(); ++i) joined_to[i] = welder.vertex_at(mesh.positions[i]);
+  const size_t joined = mesh.positions.size() - welded.positions.size();
+  if (joined == 0) return 0;
+  for (uint32_t& corner : mesh.indices) {
+    if (corner < joined_to.size()) corner = joined_to[corner];
+  }
+  mesh.positions = std::move(welded.positions);
+  return joined;
+}
 
 }  // namespace meshedit
