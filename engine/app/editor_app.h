@@ -45,6 +45,7 @@
 #include <glm/vec2.hpp>
 
 #include "app/edit_animator.h"
+#include "app/key_bindings.h"
 #include "app/repair_marks.h"
 #include "app/up_axis_choice.h"
 #include "app/view_quality.h"
@@ -159,6 +160,10 @@ class EditorApp {
 
   // The key handlers (GLFW key codes); return whether the key did something.
   bool handle_key(int key, KeyMods mods);
+  // A menu command the student ran (or its key), for a lesson that waits for it (lesson_events.h's kLessonCommands).
+  void tell_lesson_command(const char* name);
+  // Subdivide > Loop (as L, Shift+L), Catmull-Clark or Linear, whole or its next phase; tells the lesson when it ran.
+  Check run_subdivide_command(SubdivisionScheme scheme, bool one_phase);
   // A left click at pixel (x, y) of the view (framebuffer pixels, top-left origin): selects what is under it (or
   // clears the selection).
   void click(int x, int y);
@@ -271,10 +276,13 @@ class EditorApp {
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
+  bool run_key_command(KeyCommand command);  // what a row of app/key_bindings.h does; whether it did something
   void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
   void draw_edit_animation();  // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
+  // L or Shift+L (the course's weights or Loop's, as the Subdivide menu has them); tells a lesson the command.
+  Check run_loop(bool one_phase);
   void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
   void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
 
@@ -319,7 +327,9 @@ class EditorApp {
   CurveEditorState curve_;
   PatchViewState patches_;
   LoopWeights loop_weights_ = LoopWeights::Course;
-  CatmullClarkStepper catmull_clark_stepper_;  // Subdivide > Catmull-Clark one phase at a time
+  // Subdivide > Catmull-Clark / Linear one phase at a time.
+  SubdivisionStepper catmull_clark_stepper_{SubdivisionScheme::CatmullClark};
+  SubdivisionStepper linear_stepper_{SubdivisionScheme::Linear};
   // The up axis of the file shown (nullopt: a mesh no file gave, Z-up) and View > Up axis's choice.
   std::optional<FileUpAxis> file_up_axis_;
   UpAxisChoice up_axis_choice_ = UpAxisChoice::FromFile;

@@ -1,17 +1,12 @@
-// Keys and mouse of the window (see editor_app.h). The key map keeps the course viewers' letters:
-//   mesh view   F flip, S split, C collapse, L Loop subdivision (Shift+L: one phase), W wireframe,
-//               Q flat/smooth shading, I inspector, Space reset view, Ctrl+Z undo, Ctrl+Y redo,
-//               N next, T twin, V vertex, E edge, F face (on a halfedge), H halfedge
-//   curve view  E one more de Casteljau level, C the whole curve, M "mine" (levels from scripts/student/curve.lua)
-//   patch view  M "mine" (the probe point from scripts/student/patch.lua)
-//   everywhere  P screenshot, Ctrl+O open, Ctrl+Q quit, F1 help, Esc clears the selection, [ and ] fold the left
-//               and right columns, Ctrl+= Ctrl+- Ctrl+0 text size (bigger, smaller, default), ` console, X exercises
+// Keys and mouse of the window (see editor_app.h). Which key does what is app/key_bindings.h's table, which keeps
+// the course viewers' letters; here each command is carried out.
 #include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include <chrono>
 
 #include "app/editor_app.h"
+#include "app/key_bindings.h"
 #include "render/labels.h"
 #include "ui/document_actions.h"
 
@@ -34,95 +29,44 @@ bool EditorApp::handle_key(int key, KeyMods mods) {
 }
 
 bool EditorApp::apply_key(int key, KeyMods mods) {
+  const KeyView view = mode_ == ViewMode::Mesh ? KeyView::Mesh : mode_ == ViewMode::Curve ? KeyView::Curve
+                                                                                           : KeyView::Patches;
+  const KeyBinding* binding = find_key_binding(key, mods.ctrl, mods.shift, view);
+  if (!binding) return false;
   // An edit or an undo in the middle of a replay would leave a half-replayed state in the history.
-  for (int edit_key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_Z, GLFW_KEY_Y}) {
-    if (key == edit_key) exercises_.finish_replay(doc_);
-  }
-  if (key == GLFW_KEY_X && !mods.ctrl) {
-    if (exercise_panel_.open) {
-      exercise_panel_.open = false;
-    } else {
-      bring_exercises_tab_forward();
-    }
-    return true;
-  }
-  // Keys that work in every view.
-  if (mods.ctrl && key == GLFW_KEY_Q) {
-    quit_requested_ = true;
-    return true;
-  }
-  if (mods.ctrl && (key == GLFW_KEY_EQUAL || key == GLFW_KEY_KP_ADD)) {
-    change_font_size(+1);
-    return true;
-  }
-  if (mods.ctrl && (key == GLFW_KEY_MINUS || key == GLFW_KEY_KP_SUBTRACT)) {
-    change_font_size(-1);
-    return true;
-  }
-  if (mods.ctrl && (key == GLFW_KEY_0 || key == GLFW_KEY_KP_0)) {
-    change_font_size(0);
-    return true;
-  }
-  if (key == GLFW_KEY_LEFT_BRACKET) {
-    settings_.layout.left_open = !settings_.layout.left_open;
-    return true;
-  }
-  if (key == GLFW_KEY_RIGHT_BRACKET) {
-    settings_.layout.right_open = !settings_.layout.right_open;
-    return true;
-  }
-  if (mods.ctrl && key == GLFW_KEY_O) {
-    show_open_panel_ = true;
-    return true;
-  }
-  if (key == GLFW_KEY_F1) {
-    show_help_ = !show_help_;
-    return true;
-  }
-  if (key == GLFW_KEY_P && !mods.ctrl) {
-    request_screenshot(timestamped_screenshot_name());
-    return true;
-  }
-  if (key == GLFW_KEY_SPACE) {
-    reset_view();
-    return true;
-  }
-  if (key == GLFW_KEY_GRAVE_ACCENT) {
-    console_panel_.open = !console_panel_.open;
-    console_panel_.focus_input = console_panel_.open;
-    return true;
-  }
+  if (binding->edits) exercises_.finish_replay(doc_);
+  return run_key_command(binding->command);
+}
 
-  if (mode_ == ViewMode::Curve) {
-    if (key == GLFW_KEY_E) step_level(curve_);
-    else if (key == GLFW_KEY_C) toggle_curve(curve_);
-    else if (key == GLFW_KEY_M) bezier_mine_.set_curve_on(!bezier_mine_.curve_on());
-    else return false;
-    return true;
-  }
-  if (mode_ == ViewMode::Patches && key == GLFW_KEY_M) {
-    bezier_mine_.set_patch_on(!bezier_mine_.patch_on());
-    return true;
-  }
-  if (key == GLFW_KEY_W) {
-    view_options_.wireframe = !view_options_.wireframe;
-    return true;
-  }
-  if (key == GLFW_KEY_Q) {
-    view_options_.smooth_shading = !view_options_.smooth_shading;
-    return true;
-  }
-  if (mode_ != ViewMode::Mesh) return false;
-
-  if (mods.ctrl) {
-    if (key == GLFW_KEY_Z && !mods.shift) return undo_edit(doc_, selection_);
-    if (key == GLFW_KEY_Y || (key == GLFW_KEY_Z && mods.shift)) return redo_edit(doc_, selection_);
-    return false;
-  }
-  const ElementKind selected_kind = selection_.selected.kind;
-  const bool on_halfedge = selection_.selected.valid() && selected_kind == ElementKind::Halfedge;
-  switch (key) {
-    case GLFW_KEY_I:
+bool EditorApp::run_key_command(KeyCommand command) {
+  switch (command) {
+    case KeyCommand::ToggleExercises:
+      if (exercise_panel_.open) exercise_panel_.open = false;
+      else bring_exercises_tab_forward();
+      return true;
+    case KeyCommand::Quit: quit_requested_ = true; return true;
+    case KeyCommand::BiggerText: change_font_size(+1); return true;
+    case KeyCommand::SmallerText: change_font_size(-1); return true;
+    case KeyCommand::DefaultText: change_font_size(0); return true;
+    case KeyCommand::FoldLeft: settings_.layout.left_open = !settings_.layout.left_open; return true;
+    case KeyCommand::FoldRight: settings_.layout.right_open = !settings_.layout.right_open; return true;
+    case KeyCommand::Open: show_open_panel_ = true; return true;
+    case KeyCommand::Help: show_help_ = !show_help_; return true;
+    case KeyCommand::Screenshot: request_screenshot(timestamped_screenshot_name()); return true;
+    case KeyCommand::ResetView: reset_view(); return true;
+    case KeyCommand::Console:
+      console_panel_.open = !console_panel_.open;
+      console_panel_.focus_input = console_panel_.open;
+      return true;
+    case KeyCommand::Wireframe: view_options_.wireframe = !view_options_.wireframe; return true;
+    case KeyCommand::Shading: view_options_.smooth_shading = !view_options_.smooth_shading; return true;
+    case KeyCommand::CurveStep: step_level(curve_); return true;
+    case KeyCommand::CurveToggle: toggle_curve(curve_); return true;
+    case KeyCommand::CurveMine: bezier_mine_.set_curve_on(!bezier_mine_.curve_on()); return true;
+    case KeyCommand::PatchMine: bezier_mine_.set_patch_on(!bezier_mine_.patch_on()); return true;
+    case KeyCommand::Undo: return undo_edit(doc_, selection_);
+    case KeyCommand::Redo: return redo_edit(doc_, selection_);
+    case KeyCommand::Inspector:
       inspector_.open = !inspector_.open;
       if (inspector_.open) {
         select_tab_ = RightTab::Inspector;
@@ -131,25 +75,25 @@ bool EditorApp::apply_key(int key, KeyMods mods) {
         column_open = true;
       }
       return true;
-    case GLFW_KEY_ESCAPE: selection_.selected = {}; return true;
-    case GLFW_KEY_S: split_selected(doc_, selection_); return true;  // outcome goes to the status line
-    case GLFW_KEY_C: collapse_selected(doc_, selection_); return true;
-    case GLFW_KEY_L:
-      if (mods.shift) loop_subdivide_step(doc_, selection_, loop_weights_);
-      else loop_subdivide_all(doc_, selection_, loop_weights_);
-      return true;
-    case GLFW_KEY_F:
+    case KeyCommand::ClearSelection: selection_.selected = {}; return true;
+    case KeyCommand::FlipOrFace:
       // On a halfedge F walks to its face; on an edge (the course's use) it flips.
-      if (on_halfedge) return navigate_selection(doc_, selection_, NavStep::Face);
+      if (selection_.selected.valid() && selection_.selected.kind == ElementKind::Halfedge) {
+        return navigate_selection(doc_, selection_, NavStep::Face);
+      }
       flip_selected(doc_, selection_);
       return true;
-    case GLFW_KEY_N: return navigate_selection(doc_, selection_, NavStep::Next);
-    case GLFW_KEY_T: return navigate_selection(doc_, selection_, NavStep::Twin);
-    case GLFW_KEY_V: return navigate_selection(doc_, selection_, NavStep::Vertex);
-    case GLFW_KEY_E: return navigate_selection(doc_, selection_, NavStep::Edge);
-    case GLFW_KEY_H: return navigate_selection(doc_, selection_, NavStep::Halfedge);
-    default: return false;
+    case KeyCommand::Split: split_selected(doc_, selection_); return true;  // the outcome goes to the status line
+    case KeyCommand::Collapse: collapse_selected(doc_, selection_); return true;
+    case KeyCommand::Loop: run_loop(false); return true;
+    case KeyCommand::LoopPhase: run_loop(true); return true;
+    case KeyCommand::Next: return navigate_selection(doc_, selection_, NavStep::Next);
+    case KeyCommand::Twin: return navigate_selection(doc_, selection_, NavStep::Twin);
+    case KeyCommand::Vertex: return navigate_selection(doc_, selection_, NavStep::Vertex);
+    case KeyCommand::Edge: return navigate_selection(doc_, selection_, NavStep::Edge);
+    case KeyCommand::Halfedge: return navigate_selection(doc_, selection_, NavStep::Halfedge);
   }
+  return false;
 }
 
 std::optional<ScreenPoint> EditorApp::element_pixel(ElementRef element) const {
@@ -184,11 +128,7 @@ void EditorApp::read_mouse_and_keys() {
   ImGuiIO& io = ImGui::GetIO();
   if (!io.WantCaptureKeyboard) {
     const KeyMods mods{io.KeyCtrl, io.KeyShift};
-    for (int key : {GLFW_KEY_F, GLFW_KEY_S, GLFW_KEY_C, GLFW_KEY_L, GLFW_KEY_N, GLFW_KEY_T, GLFW_KEY_V, GLFW_KEY_E,
-                    GLFW_KEY_H, GLFW_KEY_W, GLFW_KEY_Q, GLFW_KEY_I, GLFW_KEY_P, GLFW_KEY_O, GLFW_KEY_Z, GLFW_KEY_Y,
-                    GLFW_KEY_SPACE, GLFW_KEY_ESCAPE, GLFW_KEY_F1, GLFW_KEY_GRAVE_ACCENT, GLFW_KEY_X, GLFW_KEY_M,
-                    GLFW_KEY_LEFT_BRACKET, GLFW_KEY_RIGHT_BRACKET, GLFW_KEY_EQUAL, GLFW_KEY_MINUS, GLFW_KEY_0,
-                    GLFW_KEY_KP_ADD, GLFW_KEY_KP_SUBTRACT, GLFW_KEY_KP_0}) {
+    for (int key : bound_keys()) {
       if (ImGui::IsKeyPressed(key, false)) handle_key(key, mods);
     }
   }

@@ -121,6 +121,10 @@ void EditorApp::tell_lesson_key(int key, KeyMods mods) {
   if (!name.empty()) lesson_->deliver(LessonEvent::key(name));
 }
 
+void EditorApp::tell_lesson_command(const char* name) {
+  if (lesson_->loaded()) lesson_->deliver(LessonEvent::command(name));
+}
+
 void EditorApp::take_lesson_request() {
   if (!lesson_panel_.requested) return;
   const std::filesystem::path requested = *lesson_panel_.requested;

@@ -9,6 +9,7 @@
 #include <utility>
 
 #include "app/editor_app.h"
+#include "app/key_bindings.h"
 #include "app/mesh_loading.h"
 #include "ui/document_actions.h"
 #include "ui/subdivision_actions.h"
@@ -30,10 +31,33 @@ bool input_path(const char* label, std::string& text) {
 
 }  // namespace
 
+Check EditorApp::run_loop(bool one_phase) {
+  const Check check = one_phase ? loop_subdivide_step(doc_, selection_, loop_weights_)
+                                : loop_subdivide_all(doc_, selection_, loop_weights_);
+  if (check) tell_lesson_command(one_phase ? "loop-phase" : "loop");
+  return check;
+}
+
+Check EditorApp::run_subdivide_command(SubdivisionScheme scheme, bool one_phase) {
+  exercises_.finish_replay(doc_);
+  if (scheme == SubdivisionScheme::Loop) {  // as L and Shift+L, which a lesson may wait for as keys too
+    const Check check = run_loop(one_phase);
+    tell_lesson_key(GLFW_KEY_L, {false, one_phase});
+    return check;
+  }
+  const bool catmull_clark = scheme == SubdivisionScheme::CatmullClark;
+  Check check;
+  if (one_phase) check = subdivision_step(doc_, selection_, catmull_clark ? catmull_clark_stepper_ : linear_stepper_);
+  else check = catmull_clark ? catmull_clark_all(doc_, selection_) : linear_subdivide_all(doc_, selection_);
+  if (check) tell_lesson_command(one_phase ? (catmull_clark ? "catmull-clark-phase" : "linear-phase")
+                                           : (catmull_clark ? "catmull-clark" : "linear"));
+  return check;
+}
+
 void EditorApp::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open...", "Ctrl+O")) show_open_panel_ = true;
+    if (ImGui::MenuItem("Open...", shortcut_of(KeyCommand::Open))) show_open_panel_ = true;
     if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
       for (const std::string& path : std::deque<std::string>(recent_)) {
         if (ImGui::MenuItem(path.c_str())) open(path);
@@ -42,68 +66,71 @@ void EditorApp::draw_menu_bar() {
     }
     if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
     if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
-    if (ImGui::MenuItem("Screenshot", "P")) request_screenshot("meshedit-screenshot.png");
+    if (ImGui::MenuItem("Screenshot", shortcut_of(KeyCommand::Screenshot))) request_screenshot("meshedit-screenshot.png");
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", "Ctrl+Q")) quit_requested_ = true;
+    if (ImGui::MenuItem("Quit", shortcut_of(KeyCommand::Quit))) quit_requested_ = true;
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
     // Menu items go through the key handler, so they do exactly what the keys do (a running replay is
     // finished first, a lesson waiting for F hears about it).
-    if (ImGui::MenuItem("Undo", "Ctrl+Z", false, doc_.history.can_undo())) handle_key(GLFW_KEY_Z, {true, false});
-    if (ImGui::MenuItem("Redo", "Ctrl+Y", false, doc_.history.can_redo())) handle_key(GLFW_KEY_Y, {true, false});
+    if (ImGui::MenuItem("Undo", shortcut_of(KeyCommand::Undo), false, doc_.history.can_undo())) {
+      handle_key(GLFW_KEY_Z, {true, false});
+    }
+    if (ImGui::MenuItem("Redo", shortcut_of(KeyCommand::Redo), false, doc_.history.can_redo())) {
+      handle_key(GLFW_KEY_Y, {true, false});
+    }
     ImGui::Separator();
-    if (ImGui::MenuItem("Flip edge", "F")) {  // F on a halfedge walks to its face; the menu item always flips
+    if (ImGui::MenuItem("Flip edge", shortcut_of(KeyCommand::FlipOrFace))) {  // F on a halfedge walks to its face; the menu item always flips
       exercises_.finish_replay(doc_);
       flip_selected(doc_, selection_);
     }
-    if (ImGui::MenuItem("Split edge", "S")) handle_key(GLFW_KEY_S, {});
-    if (ImGui::MenuItem("Collapse edge", "C")) handle_key(GLFW_KEY_C, {});
+    if (ImGui::MenuItem("Split edge", shortcut_of(KeyCommand::Split))) handle_key(GLFW_KEY_S, {});
+    if (ImGui::MenuItem("Collapse edge", shortcut_of(KeyCommand::Collapse))) handle_key(GLFW_KEY_C, {});
+    ImGui::Separator();
+    if (ImGui::MenuItem("Triangulate")) {  // every face of more than three corners
+      exercises_.finish_replay(doc_);
+      if (triangulate_all(doc_, selection_)) tell_lesson_command("triangulate");
+    }
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) {
-    if (ImGui::MenuItem("Loop subdivision", "L")) handle_key(GLFW_KEY_L, {});
-    if (ImGui::MenuItem("Triangulate")) {
-      exercises_.finish_replay(doc_);
-      triangulate_all(doc_, selection_);
-    }
+    if (ImGui::MenuItem("Loop subdivision", shortcut_of(KeyCommand::Loop))) run_subdivide_command(SubdivisionScheme::Loop, false);
     char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
     std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
-    if (ImGui::MenuItem(phase, "Shift+L")) handle_key(GLFW_KEY_L, {false, true});
+    if (ImGui::MenuItem(phase, shortcut_of(KeyCommand::LoopPhase))) run_subdivide_command(SubdivisionScheme::Loop, true);
     bool loop_beta = loop_weights_ == LoopWeights::Loop;
     if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
       loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Catmull-Clark subdivision")) {  // any polygons; every face becomes quads
-      exercises_.finish_replay(doc_);
-      catmull_clark_all(doc_, selection_);
+    if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(SubdivisionScheme::CatmullClark, false);
+    if (ImGui::MenuItem(next_phase_label(doc_, catmull_clark_stepper_).c_str())) {
+      run_subdivide_command(SubdivisionScheme::CatmullClark, true);
     }
-    if (ImGui::MenuItem(next_catmull_clark_phase_label(doc_, catmull_clark_stepper_).c_str())) {
-      exercises_.finish_replay(doc_);
-      catmull_clark_step(doc_, selection_, catmull_clark_stepper_);
-    }
-    if (ImGui::MenuItem("Linear subdivision")) {  // triangles in four at midpoints, other faces quads; nothing moves
-      exercises_.finish_replay(doc_);
-      linear_subdivide_all(doc_, selection_);
+    if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(SubdivisionScheme::Linear, false);
+    if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) {
+      run_subdivide_command(SubdivisionScheme::Linear, true);
     }
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    ImGui::MenuItem("Wireframe", "W", &view_options_.wireframe);
-    ImGui::MenuItem("Smooth shading", "Q", &view_options_.smooth_shading);
+    ImGui::MenuItem("Wireframe", shortcut_of(KeyCommand::Wireframe), &view_options_.wireframe);
+    ImGui::MenuItem("Smooth shading", shortcut_of(KeyCommand::Shading), &view_options_.smooth_shading);
     ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
     ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
     ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
     ImGui::MenuItem("Id labels", nullptr, &show_labels_);
     ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
     ImGui::Separator();
-    ImGui::MenuItem("Left column (lesson)", "[", &settings_.layout.left_open);
-    ImGui::MenuItem("Right column (tables)", "]", &settings_.layout.right_open);
-    if (ImGui::MenuItem("Inspector", "I", inspector_.open)) handle_key(GLFW_KEY_I, {});
+    ImGui::MenuItem("Left column (lesson)", shortcut_of(KeyCommand::FoldLeft), &settings_.layout.left_open);
+    ImGui::MenuItem("Right column (tables)", shortcut_of(KeyCommand::FoldRight), &settings_.layout.right_open);
+    if (ImGui::MenuItem("Inspector", shortcut_of(KeyCommand::Inspector), inspector_.open)) handle_key(GLFW_KEY_I, {});
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-    if (ImGui::MenuItem("Exercises: mine vs reference", "X", exercise_panel_.open)) handle_key(GLFW_KEY_X, {});
-    if (ImGui::MenuItem("Lua console", "`", &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
+    if (ImGui::MenuItem("Exercises: mine vs reference", shortcut_of(KeyCommand::ToggleExercises), exercise_panel_.open)) {
+      handle_key(GLFW_KEY_X, {});
+    }
+    if (ImGui::MenuItem("Lua console", shortcut_of(KeyCommand::Console), &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
     if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
       const std::pair<const char*, UpAxisChoice> choices[] = {
           {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
@@ -113,9 +140,9 @@ void EditorApp::draw_menu_bar() {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Bigger text", "Ctrl+=")) change_font_size(+1);
-    if (ImGui::MenuItem("Smaller text", "Ctrl+-")) change_font_size(-1);
-    if (ImGui::MenuItem("Default text size", "Ctrl+0")) change_font_size(0);
+    if (ImGui::MenuItem("Bigger text", shortcut_of(KeyCommand::BiggerText))) change_font_size(+1);
+    if (ImGui::MenuItem("Smaller text", shortcut_of(KeyCommand::SmallerText))) change_font_size(-1);
+    if (ImGui::MenuItem("Default text size", shortcut_of(KeyCommand::DefaultText))) change_font_size(0);
     if (ImGui::BeginMenu("Theme")) {
       constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
       for (const auto& [name, theme] : kThemes) {
@@ -124,11 +151,11 @@ void EditorApp::draw_menu_bar() {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Reset view", "Space")) reset_view();
+    if (ImGui::MenuItem("Reset view", shortcut_of(KeyCommand::ResetView))) reset_view();
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Keys", "F1")) show_help_ = true;
+    if (ImGui::MenuItem("Keys", shortcut_of(KeyCommand::Help))) show_help_ = true;
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();
@@ -208,41 +235,31 @@ void EditorApp::draw_open_panel() {
 void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
-  {
-    const char* rows[][2] = {
-        {"click", "select the vertex, edge, halfedge or face under the cursor"},
-        {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
-        {"F", "flip the selected edge (on a halfedge: go to its face)"},
-        {"S", "split the selected edge"},
-        {"C", "collapse the selected edge (curve view: show the curve)"},
-        {"L / Shift+L", "Loop subdivision / one phase of it"},
-        {"N T V E H", "next, twin, vertex, edge, halfedge of the selection"},
-        {"Ctrl+Z / Ctrl+Y", "undo / redo"},
-        {"W / Q", "wireframe / flat or smooth shading"},
-        {"I", "inspector"},
-        {"E", "curve view: one more de Casteljau level"},
-        {"M", "curve view: levels from your evaluate_step; patch view: the probe from your evaluate "
-              "(scripts/student, checked against the reference)"},
-        {"Space", "reset the view"},
-        {"X", "exercises: run your flip/split/upsample/normals (scripts/student) or the reference; replay writes"},
-        {"` (backquote)", "Lua console: `mesh` is the mesh shown, `selected` the selection; Up/Down for history"},
-        {"P", "screenshot (PNG in the current folder)"},
-        {"Ctrl+O", "open a file (or drop one on the window)"},
-        {"Ctrl+Q", "quit (the window's size and columns are remembered)"},
-        {"[  ]", "fold or unfold the left column (lesson) and the right column (tables)"},
-        {"Ctrl+=  Ctrl+-  Ctrl+0", "bigger, smaller, default text"},
-        {"Esc", "clear the selection"},
-        {"Ctrl+Shift+Z", "redo (as Ctrl+Y)"},
+  // The mouse, then the key table (app/key_bindings.h) under a heading per view, a command's other keys beside it.
+  const char* const kMouse[][2] = {
+      {"click", "select the vertex, edge, halfedge or face under the cursor"},
+      {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
+  };
+  const std::pair<KeyView, const char*> kHeadings[] = {
+      {KeyView::Mesh, "Mesh view"}, {KeyView::Curve, "Curve view"}, {KeyView::Patches, "Patch view"},
+      {KeyView::Everywhere, "Every view"}};
+  if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
+    const auto row = [](const char* keys, const char* text) {
+      ImGui::TableNextColumn();
+      ImGui::TextUnformatted(keys);
+      ImGui::TableNextColumn();
+      ImGui::TextWrapped("%s", text);
     };
-    if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
-      for (const auto& row : rows) {
-        ImGui::TableNextColumn();
-        ImGui::TextUnformatted(row[0]);
-        ImGui::TableNextColumn();
-        ImGui::TextWrapped("%s", row[1]);
+    for (const auto& [keys, text] : kMouse) row(keys, text);
+    for (const auto& [view, heading] : kHeadings) {
+      ImGui::TableNextColumn();
+      ImGui::TextDisabled("%s", heading);
+      ImGui::TableNextColumn();
+      for (const KeyBinding& b : key_bindings()) {
+        if (b.view == view && b.help) row(b.keys, b.help);
       }
-      ImGui::EndTable();
     }
+    ImGui::EndTable();
   }
   end_dialog(show_help_);
 }
