@@ -35,8 +35,6 @@ class ActionPlayer {
  private:
   void fail(const ScriptedAction& a, std::string_view why);
   bool run(EditorApp& app, const ScriptedAction& a);
-  void expect_up_axis(EditorApp& app, const ScriptedAction& a);
-  void expect_field(EditorApp& app, const ScriptedAction& a);
 
   std::vector<ScriptedAction> actions_;
   std::ostream& log_;

@@ -1,0 +1,465 @@
+// The scripted actions' verbs and their handlers (see action_verbs.h).
+//
+// Sections: keys | the verbs' handlers (view, files and edits; lessons; exercises; checks) | the table
+#include "app/action_verbs.h"
+
+#include <GLFW/glfw3.h>
+
+#include <algorithm>
+#include <cctype>
+#include <iterator>
+#include <optional>
+#include <stdexcept>
+
+#include "app/editor_app.h"
+#include "app/layout_report.h"
+#include "io/file_access.h"
+#include "ui/document_actions.h"
+
+namespace meshedit {
+namespace {
+
+using Action = ScriptedAction;
+
+std::string rest_of_line(const Action& a) {
+  std::string line;
+  for (const auto& w : a.args) line += (line.empty() ? "" : " ") + w;
+  return line;
+}
+
+// "" when `got` contains the action's text, else `what` followed by the text found.
+std::string expect_contains(const Action& a, const std::string& got, const std::string& what) {
+  return got.find(rest_of_line(a)) == std::string::npos ? what + " '" + got + "'" : "";
+}
+
+ElementRef element_argument(const std::string& text) {
+  const auto element = parse_element(text);
+  if (!element) throw std::runtime_error("not an element id: '" + text + "'");
+  return *element;
+}
+
+// ---- keys ----------------------------------------------------------------------------------------------------
+
+// Keys named by a word or their character, besides the letters.
+struct NamedKey {
+  const char* name;
+  int key;
+};
+constexpr NamedKey kNamedKeys[] = {
+    {"space", GLFW_KEY_SPACE},  {"escape", GLFW_KEY_ESCAPE}, {"grave", GLFW_KEY_GRAVE_ACCENT},
+    {"equal", GLFW_KEY_EQUAL},  {"=", GLFW_KEY_EQUAL},       {"minus", GLFW_KEY_MINUS},
+    {"-", GLFW_KEY_MINUS},      {"0", GLFW_KEY_0},           {"[", GLFW_KEY_LEFT_BRACKET},
+    {"]", GLFW_KEY_RIGHT_BRACKET},
+};
+
+KeyMods parse_key(std::string text, int& key) {
+  KeyMods mods;
+  for (;;) {
+    if (text.rfind("ctrl+", 0) == 0) { mods.ctrl = true; text = text.substr(5); continue; }
+    if (text.rfind("shift+", 0) == 0) { mods.shift = true; text = text.substr(6); continue; }
+    break;
+  }
+  if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
+    key = GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(text[0])) - 'A');
+  } else if (const auto named = std::find_if(std::begin(kNamedKeys), std::end(kNamedKeys),
+                                             [&](const NamedKey& k) { return text == k.name; });
+             named != std::end(kNamedKeys)) {
+    key = named->key;
+  } else {
+    throw std::runtime_error("unknown key '" + text + "'");
+  }
+  return mods;
+}
+
+// ---- view, files and edits -------------------------------------------------------------------------------------
+
+std::string press_key(EditorApp& app, const Action& a) {
+  int key = 0;
+  const KeyMods mods = parse_key(a.args[0], key);
+  app.handle_key(key, mods);
+  return "";
+}
+
+std::string select(EditorApp& app, const Action& a) {
+  if (!select_element(app.document(), app.selection(), element_argument(a.args[0]))) {
+    throw std::runtime_error(a.args[0] + " is not live");
+  }
+  return "";
+}
+
+std::string click(EditorApp& app, const Action& a) {
+  app.click(std::stoi(a.args[0]), std::stoi(a.args[1]));
+  return "";
+}
+
+std::string hover(EditorApp& app, const Action& a) {
+  app.hover(std::stoi(a.args[0]), std::stoi(a.args[1]));
+  return "";
+}
+
+std::string click_on(EditorApp& app, const Action& a) {
+  const std::optional<ScreenPoint> at = app.element_pixel(element_argument(a.args[0]));
+  if (!at) throw std::runtime_error(a.args[0] + " is not on screen");
+  app.click(int(at->pixel.x), int(at->pixel.y));
+  return "";
+}
+
+std::string window_size(EditorApp& app, const Action& a) {
+  const int width = std::stoi(a.args[0]), height = std::stoi(a.args[1]);
+  if (width < 1 || height < 1 || width > 16384 || height > 16384) throw std::runtime_error("no window of that size");
+  app.request_window_size(width, height);
+  return "";
+}
+
+std::string write_layout(EditorApp& app, const Action& a) {
+  write_file(a.args[0], layout_json(app));
+  return "";
+}
+
+// What the status line says about an action that did not happen, thrown.
+void throw_message(EditorApp& app) { throw std::runtime_error(app.document().message.text); }
+
+std::string open(EditorApp& app, const Action& a) {
+  if (!app.open(a.args[0])) throw_message(app);
+  return "";
+}
+
+std::string open_repaired(EditorApp& app, const Action&) {
+  if (!app.open_repaired()) throw_message(app);
+  return "";
+}
+
+std::string save(EditorApp& app, const Action& a) {
+  if (!app.save(a.args[0])) throw_message(app);
+  return "";
+}
+
+std::string repair_row(EditorApp& app, const Action& a) {
+  const int row = std::stoi(a.args[0]);
+  if (row < 1) throw std::runtime_error("repair-row counts from 1");
+  if (!app.click_repair_row(size_t(row - 1))) throw_message(app);
+  return "";
+}
+
+std::string triangulate(EditorApp& app, const Action&) {
+  if (!triangulate_all(app.document(), app.selection()).ok) throw_message(app);
+  app.tell_lesson_command("triangulate");
+  return "";
+}
+
+template <bool OnePhase>
+std::string subdivide(EditorApp& app, const Action& a) {
+  const std::optional<SubdivisionScheme> scheme = scheme_named(a.args[0]);
+  if (!scheme) throw std::runtime_error(a.verb + " takes " + scheme_names());
+  if (const Check check = app.run_subdivide_command(*scheme, OnePhase); !check) throw std::runtime_error(check.reason);
+  return "";
+}
+
+std::string orbit(EditorApp& app, const Action& a) {
+  app.camera().orbit(std::stod(a.args[0]), std::stod(a.args[1]));
+  return "";
+}
+
+std::string up_axis(EditorApp& app, const Action& a) {
+  const std::string& which = a.args[0];
+  if (which == "from-file") app.choose_up_axis(UpAxisChoice::FromFile);
+  else if (which == "y") app.choose_up_axis(UpAxisChoice::Y);
+  else if (which == "z") app.choose_up_axis(UpAxisChoice::Z);
+  else throw std::runtime_error("up-axis takes from-file, y or z");
+  return "";
+}
+
+std::string animate_edits(EditorApp& app, const Action& a) {
+  if (a.args[0] != "on" && a.args[0] != "off") throw std::runtime_error("animate-edits takes on or off");
+  app.set_edit_animation_policy(a.args[0] == "on" ? EditorApp::EditAnimationPolicy::Always
+                                                  : EditorApp::EditAnimationPolicy::Never);
+  return "";
+}
+
+std::string screenshot(EditorApp& app, const Action& a) {
+  app.request_screenshot(a.args[0]);
+  return "";
+}
+
+std::string console(EditorApp& app, const Action& a) {
+  app.run_console(rest_of_line(a));
+  return "";
+}
+
+std::string curve_t(EditorApp& app, const Action& a) {
+  if (app.mode() != ViewMode::Curve) throw std::runtime_error("the curve view is not on screen");
+  set_t(app.curve_editor(), std::stod(a.args[0]));
+  return "";
+}
+
+// ---- lessons ---------------------------------------------------------------------------------------------------
+
+std::string lesson_next(EditorApp& app, const Action&) {
+  app.lesson().next();
+  return "";
+}
+
+std::string lesson_back(EditorApp& app, const Action&) {
+  app.lesson().back();
+  return "";
+}
+
+std::string lesson_button(EditorApp& app, const Action& a) {
+  return app.lesson().deliver(LessonEvent::button(rest_of_line(a))) ? "" : "the lesson is not waiting for it";
+}
+
+template <bool Choose>
+std::string lesson_reply(EditorApp& app, const Action& a) {
+  const std::string text = rest_of_line(a);
+  if (app.lesson().deliver(Choose ? LessonEvent::choice(text) : LessonEvent::value(text))) return "";
+  return "the lesson is not asking for it (it waits for " + app.lesson().waiting_for().describe() + ")";
+}
+
+std::string lesson_show_mine(EditorApp& app, const Action&) { return app.show_your_turn_mine().reason; }
+
+template <bool Hint>
+std::string expect_lesson_feedback(EditorApp& app, const Action& a) {
+  const LessonWait& wait = app.lesson().waiting_for();
+  const std::string got = Hint ? (wait.hint_shown() ? wait.hint : std::string()) : wait.feedback;
+  if (!wait.is_question() && wait.kind != LessonWait::Kind::YourTurn) {
+    return "the lesson asks no question (it waits for " + wait.describe() + ")";
+  }
+  if (got.empty() || got.find(rest_of_line(a)) == std::string::npos) {
+    return std::string(Hint ? "the hint shown is '" : "the feedback is '") + got + "'";
+  }
+  return "";
+}
+
+std::string expect_lesson_step(EditorApp& app, const Action& a) {
+  const LessonRunner& lesson = app.lesson();
+  static const char* const states[] = {"empty", "waiting", "finished", "failed"};
+  const std::string got = std::to_string(lesson.current_step() + 1) + " " + states[int(lesson.step_state())];
+  return got == a.args[0] + " " + a.args[1] ? "" : "lesson is at step " + got + " (" + lesson.error() + ")";
+}
+
+std::string expect_lesson_said(EditorApp& app, const Action& a) {
+  for (const std::string& block : app.lesson().said()) {
+    if (block.find(rest_of_line(a)) != std::string::npos) return "";
+  }
+  return "the current step did not say it";
+}
+
+std::string expect_lesson_live(EditorApp& app, const Action& a) {
+  std::string texts;
+  for (const LessonLive& live : app.lesson().lives()) {
+    const std::string& shown = live.error.empty() ? live.text : live.error;
+    if (shown.find(rest_of_line(a)) != std::string::npos) return "";
+    texts += (texts.empty() ? "'" : ", '") + shown + "'";
+  }
+  return "the live texts are " + (texts.empty() ? std::string("none") : texts);
+}
+
+// ---- exercises -------------------------------------------------------------------------------------------------
+
+std::string exercise(EditorApp& app, const Action& a) {
+  const auto which = find_exercise(a.args[0]);
+  if (which == Exercise::CurveStep || which == Exercise::PatchEvaluate) {
+    app.bezier_mine().set_folder(a.args[1]);
+  } else if (!which || !app.exercises().set_exercise(*which)) {
+    throw std::runtime_error("no exercise " + a.args[0]);
+  } else {
+    app.exercises().set_folder(a.args[1]);
+  }
+  return "";
+}
+
+template <bool Mine>
+std::string run_exercise(EditorApp& app, const Action&) {
+  ExerciseSession& session = app.exercises();
+  return (Mine ? session.run_mine(app.document(), app.selection())
+               : session.run_reference(app.document(), app.selection()))
+      .reason;
+}
+
+std::string replay_start(EditorApp& app, const Action&) { return app.exercises().start_replay(app.document()).reason; }
+
+std::string replay_step(EditorApp& app, const Action& a) {
+  return app.exercises().replay_step(app.document(), std::stoul(a.args[0])).reason;
+}
+
+std::string replay_finish(EditorApp& app, const Action&) {
+  app.exercises().finish_replay(app.document());
+  return "";
+}
+
+std::string expect_exercise_run(EditorApp& app, const Action& a) {
+  const std::optional<ExerciseRun>& run = app.exercises().last_run();
+  const std::string got = run ? run->label + " (" + run->input.describe(run->exercise) + "): " +
+                                    (run->mine ? run->report.summary() : "the reference alone")
+                              : std::string("none");
+  return expect_contains(a, got, "the Exercises tab's last run is");
+}
+
+std::string expect_mine(EditorApp& app, const Action& a) {
+  const BezierMine& mine = app.bezier_mine();
+  const bool curve = app.mode() == ViewMode::Curve;
+  if (!(curve ? mine.curve_on() : app.mode() == ViewMode::Patches && mine.patch_on())) {
+    return "no \"mine\" switch is on in the view on screen";
+  }
+  return expect_contains(a, curve ? mine.curve().message : mine.patch().message, "the mine line is");
+}
+
+// ---- checks ----------------------------------------------------------------------------------------------------
+
+std::string expect_selected(EditorApp& app, const Action& a) {
+  const std::string got = format_id(app.selection().selected);
+  return got == a.args[0] ? "" : "selected " + got + ", expected " + a.args[0];
+}
+
+std::string expect_field(EditorApp& app, const Action& a) {
+  const HalfedgeMesh& m = app.document().mesh;
+  const ElementRef element = element_argument(a.args[0]);
+  if (!m.alive(element)) throw std::runtime_error(a.args[0] + " is not a live element");
+  const std::string& field = a.args[1];
+  std::string got = "?";
+  if (element.kind == ElementKind::Halfedge) {
+    const HalfedgeId h(element.index);
+    if (field == "next") got = format_id(m.next(h));
+    if (field == "twin") got = format_id(m.twin(h));
+    if (field == "vertex") got = format_id(m.vertex(h));
+    if (field == "edge") got = format_id(m.edge(h));
+    if (field == "face") got = format_id(m.face(h));
+  } else if (field == "halfedge") {
+    switch (element.kind) {
+      case ElementKind::Vertex: got = format_id(m.halfedge(VertexId(element.index))); break;
+      case ElementKind::Edge: got = format_id(m.halfedge(EdgeId(element.index))); break;
+      default: got = format_id(m.halfedge(element.face_id())); break;
+    }
+  }
+  return got == a.args[2] ? "" : a.args[0] + "." + field + " is " + got + ", expected " + a.args[2];
+}
+
+std::string expect_changed(EditorApp& app, const Action& a) {
+  const auto element = parse_element(a.args[0]);
+  const auto field = parse_field(a.args[1]);
+  if (!element || !field) throw std::runtime_error("expect-changed takes an element and a field name");
+  if (app.document().last.index.contains(*element, *field)) return "";
+  return a.args[0] + "." + a.args[1] + " is not among the cells the last operation changed";
+}
+
+std::string expect_message(EditorApp& app, const Action& a) {
+  return expect_contains(a, app.document().message.text, "status line is");
+}
+
+std::string expect_valid(EditorApp& app, const Action&) {
+  const ValidationReport& report = cached_validation(app.document());
+  return report.ok() ? "" : report.summary();
+}
+
+std::string expect_console(EditorApp& app, const Action& a) {
+  const auto& entries = app.console().entries();
+  return expect_contains(a, entries.empty() ? "" : entries.back().text, "the console's last line is");
+}
+
+std::string expect_up_axis(EditorApp& app, const Action& a) {
+  const std::string& wanted = a.args[0];
+  if (wanted != "X" && wanted != "Y" && wanted != "Z") throw std::runtime_error("expect-up-axis takes X, Y or Z first");
+  const std::string got(up_axis_name(app.camera().up_axis()));
+  const std::string status(app.status_up_axis());
+  if (got != wanted + " up") return "the camera is " + got + " (status bar: '" + status + "')";
+  std::string text;
+  for (size_t i = 1; i < a.args.size(); ++i) text += (text.empty() ? "" : " ") + a.args[i];
+  return status.find(text) == std::string::npos ? "the status bar says '" + status + "'" : "";
+}
+
+std::string expect_gpu_update(EditorApp& app, const Action& a) {
+  if (a.args[0] != "patch" && a.args[0] != "rebuild") throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+  const RenderStats& stats = app.mesh_render_stats();
+  const std::string got = stats.last_update_patch ? "patch" : "rebuild";
+  const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
+  return got == a.args[0] ? "" : "the last update was a " + got + why;
+}
+
+// ---- the table -------------------------------------------------------------------------------------------------
+
+// Every verb, its words after it, what it does, and its handler; the usage texts are the verbs' documentation.
+const ActionVerb kVerbs[] = {
+    {"frames", 1, "frames N   the next N frames pass with no action", nullptr},
+    {"quit", 0, "quit   closes the window (the script's end does too)", nullptr},
+    {"key", 1, "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "
+               "0, [ or ], with ctrl+ and shift+)", press_key},
+    {"select", 1, "select h12   selects the element, as a click on it does", select},
+    {"click", 2, "click X Y   a click at view pixels (framebuffer pixels from the view's top-left corner, as picking "
+                 "counts them)", click},
+    {"hover", 2, "hover X Y   the mouse rests at view pixels", hover},
+    {"click-on", 1, "click-on h12   a click where the element's label anchor is on screen (a vertex's position, an "
+                    "edge's midpoint, a face's centre, a halfedge's arrow); fails when it is not in the view", click_on},
+    {"window-size", 2, "window-size W H   asks the window system to resize the window before the next frame",
+     window_size},
+    {"layout-json", 1, "layout-json PATH   writes the window's layout as JSON (app/layout_report.h)", write_layout},
+    {"open", 1, "open PATH   File > Open", open},
+    {"open-repaired", 0, "open-repaired   File > Open a repaired copy of the mesh file `open` last refused",
+     open_repaired},
+    {"save", 1, "save PATH   File > Save as", save},
+    {"screenshot", 1, "screenshot PATH   a PNG of the next frame", screenshot},
+    {"repair-row", 1, "repair-row K   clicks the Repairs tab's K-th change (1 the first): selects its first spot; fails "
+                      "when there is no such row, it has no spot, or the spots are stale", repair_row},
+    {"triangulate", 0, "triangulate   Edit > Triangulate", triangulate},
+    {"subdivide", 1, "subdivide loop|catmull-clark|linear   the Subdivide menu's item for the scheme", subdivide<false>},
+    {"subdivide-phase", 1, "subdivide-phase loop|catmull-clark|linear   the Subdivide menu's \"next phase\" item",
+     subdivide<true>},
+    {"orbit", 2, "orbit DX DY   the camera turns as a drag of DX, DY pixels would turn it", orbit},
+    {"up-axis", 1, "up-axis from-file|y|z   View > Up axis: the file's, or Y or Z up; refits the view", up_axis},
+    {"animate-edits", 1, "animate-edits on|off   flip, split, collapse and their undo and redo play for a quarter "
+                         "second, whatever the settings say; a scripted run starts with them off", animate_edits},
+    {"console", -1, "console LUA CODE...   runs the code in the Lua console", console},
+    {"curve-t", 1, "curve-t T   the curve view's t, as its slider sets it", curve_t},
+    {"lesson-next", 0, "lesson-next   the lesson's Next", lesson_next},
+    {"lesson-back", 0, "lesson-back   the lesson's Back", lesson_back},
+    {"lesson-button", -1, "lesson-button LABEL...   presses a button the step shows", lesson_button},
+    {"lesson-choose", -1, "lesson-choose OPTION...   presses that option of the choose{} the step asks",
+     lesson_reply<true>},
+    {"lesson-answer", -1, "lesson-answer TEXT...   types TEXT into the answer{} box and presses Check (a pick{} is "
+                          "answered by click-on)", lesson_reply<false>},
+    {"lesson-show-mine", 0, "lesson-show-mine   presses the your_turn's \"Show mine vs reference\"; fails when the "
+                            "step waits on no wrong your_turn", lesson_show_mine},
+    {"exercise", 2, "exercise flip|split|...|curve|patch FOLDER   the exercise and the folder its student files are "
+                    "read from (curve and patch: where the views' \"mine\", key M, reads them)", exercise},
+    {"run-mine", 0, "run-mine   the Exercises tab's Run mine", run_exercise<true>},
+    {"run-reference", 0, "run-reference   the Exercises tab's Run the reference", run_exercise<false>},
+    {"replay-start", 0, "replay-start   starts the replay of the last run's writes", replay_start},
+    {"replay-step", 1, "replay-step K   the replay at write K", replay_step},
+    {"replay-finish", 0, "replay-finish   ends the replay", replay_finish},
+    {"expect-selected", 1, "expect-selected h12   the selection is that element", expect_selected},
+    {"expect-field", 3, "expect-field h0 next h3   the field of a live element holds that value", expect_field},
+    {"expect-changed", 2, "expect-changed h0 next   the last operation changed that cell", expect_changed},
+    {"expect-message", -1, "expect-message TEXT...   the status line contains TEXT", expect_message},
+    {"expect-valid", 0, "expect-valid   the mesh passes validate()", expect_valid},
+    {"expect-console", -1, "expect-console TEXT...   the console's last line contains TEXT", expect_console},
+    {"expect-up-axis", -1, "expect-up-axis X|Y|Z [TEXT...]   the camera's up axis, and the status bar's up-axis words "
+                           "contain TEXT", expect_up_axis},
+    {"expect-gpu-update", 1, "expect-gpu-update patch|rebuild   how the mesh view's last geometry update went (the "
+                             "slots an edit touched rewritten in place, or everything rebuilt); made by the next "
+                             "frame, which the check waits for", expect_gpu_update},
+    {"expect-lesson-step", 2, "expect-lesson-step 3 waiting|finished|failed   the lesson's step and its state",
+     expect_lesson_step},
+    {"expect-lesson-said", -1, "expect-lesson-said TEXT...   the current step said TEXT", expect_lesson_said},
+    {"expect-lesson-feedback", -1, "expect-lesson-feedback TEXT...   the feedback on the last wrong answer to the "
+                                   "question asked, or the diagnosis of the your_turn waited on, contains TEXT",
+     expect_lesson_feedback<false>},
+    {"expect-lesson-hint", -1, "expect-lesson-hint TEXT...   the question's hint is shown, and contains TEXT",
+     expect_lesson_feedback<true>},
+    {"expect-lesson-live", -1, "expect-lesson-live TEXT...   a live() text of the step contains TEXT, as the last "
+                               "frame evaluated it", expect_lesson_live},
+    {"expect-exercise-run", -1, "expect-exercise-run TEXT...   the Exercises tab's last run, as \"LABEL (INPUT): "
+                                "SUMMARY\", contains TEXT", expect_exercise_run},
+    {"expect-mine", -1, "expect-mine TEXT...   the \"mine\" line of the curve or patch view on screen contains TEXT; "
+                        "computed when a frame draws the view, so the check waits for the frame after the action "
+                        "before it", expect_mine},
+};
+
+}  // namespace
+
+std::span<const ActionVerb> action_verbs() { return kVerbs; }
+
+const ActionVerb* find_action_verb(const std::string& name) {
+  const auto* found = std::find_if(std::begin(kVerbs), std::end(kVerbs), [&](const ActionVerb& v) { return name == v.name; });
+  return found == std::end(kVerbs) ? nullptr : found;
+}
+
+}  // namespace meshedit
