@@ -13,11 +13,10 @@
 // could not grade (the suite does not load, a folder is missing, a file cannot be written), 2 bad arguments.
 // Without a display or GL; nothing but the result files is written; student code runs only in child
 // processes (engine/grade).
-#include "app/cli_grade.h"
+#include "app/cli_commands.h"
 
 #include <iostream>
 
-#include "app/cli_commands.h"
 #include "core/parallel_for.h"
 #include "core/value_format.h"
 #include "grade/class_grading.h"

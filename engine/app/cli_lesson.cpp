@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "app/cli_commands.h"
-#include "app/cli_lesson.h"
 #include "script/lesson_headless.h"
 #include "script/scripted_exercise.h"
 #include "script/lua_runtime.h"
