@@ -2,9 +2,10 @@
 -- point, an edge point and where a corner goes by the vertex rule (F + 2R + (n - 3) P) / n, then the counts
 -- after one level, what the rule makes of triangles (a tetrahedron), the boundary rules on a grid of quads, and
 -- how linear subdivision differs (nothing moves). Every step asks before it tells; each likely wrong answer is
--- named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() on a copy
--- (engine/core/catmull_clark.h), positions read back. The window's Subdivide menu (Catmull-Clark, one phase at a
--- time, Linear) is not an event a lesson can wait for, so the lesson subdivides in its own Lua and asks first.
+-- named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() and
+-- mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
+-- runs the window's Subdivide menu twice: the whole level, and then its three phases one at a time, each checked
+-- against the lesson's own phases.
 -- CI runs it headless (tests/script/lessons_b_test.cpp):
 --   meshedit lesson lessons/7_catmull_clark.lua --headless --answers tests/script/lessons/7_catmull_clark_answers.lua
 -- Invariants: every step builds its meshes afresh (Back runs a step again); the core numbers a level's new
@@ -318,6 +319,87 @@ step("Counting after one level", function()
   say("Your level: " .. counts(yours) .. ", all " .. face_kinds(yours) .. ". Every new quad joins an old "
     .. "vertex, an edge point, a face point and the next edge point, so the " .. sides .. " corners of the old faces "
     .. "give " .. after:num_faces() .. " quads and E' = 2E + " .. sides .. " = " .. after:num_edges() .. " edges.")
+end)
+
+-- Whether `mesh` (the mesh on screen) is `expected`: the same counts and every vertex at the same place by id (the
+-- window's phases and the lesson's are the core's, so a vertex keeps its id in both).
+local function same_mesh(mesh, expected)
+  if not mesh or mesh:num_vertices() ~= expected:num_vertices() or mesh:num_faces() ~= expected:num_faces()
+    or mesh:num_edges() ~= expected:num_edges() then
+    return false
+  end
+  for v in expected:vertices() do
+    local ok, same = pcall(function() return near(mesh:vertex(v.id).position, v.position, 1e-9) end)
+    if not ok or not same then return false end
+  end
+  return true
+end
+
+step("The app's phases", function()
+  local cube = quad_cube()
+  show(cube)
+  camera "fit"
+  view { halfedges = false, labels = true }
+  local e = edge_between(cube, 0, 1)
+  local a, b = cube:vertex(0).position, cube:vertex(1).position
+  highlight(e, "yellow")
+  say [[
+The **Subdivide** menu also runs Catmull-Clark **one phase at a time**, as Shift+L does for Loop:
+1. **compute** every face, edge and vertex point from the cube as it is; nothing changes yet;
+2. **split** every face into quads: new vertices at the edges' midpoints and the faces' centroids, nothing moves;
+3. **move** every vertex to its point.]]
+  local midpoint = "At the edge's midpoint " .. point((a + b) / 2)
+  local edge_point_option = "At its edge point " .. point(edge_point(cube, e))
+  local corner = "On v0, until phase 3 moves it"
+  choose {
+    "After phase 2, where is the new vertex on the yellow edge " .. tostring(e) .. "?",
+    options = { edge_point_option, midpoint, corner },
+    answer = midpoint,
+    feedback = {
+      [edge_point_option] = "Phase 2 only changes the connectivity. The edge point is where phase 3 moves it to.",
+      [corner] = "A new vertex is made on its edge, between v0 and v1, never on top of a corner.",
+      [midpoint] = "Yes: phase 2 places it halfway, so the shape has not changed yet. Linear subdivision stops "
+        .. "there.",
+    },
+    hint = "Phase 2 splits faces; which phase moves vertices?",
+  }
+  local expected = cube:copy()
+  local phases = expected:subdivision_phases("catmull-clark")
+  local new_vertex = cube:num_vertices() + e.id  -- the core numbers edge points after the old vertices
+  local computed
+  say "Now run **Subdivide > Catmull-Clark** one phase at a time, three times; the menu item names the next phase."
+  local phase = 1
+  while phase <= 3 do
+    wait_for { command = "catmull-clark-phase", hint = "Subdivide > " .. phases.next_label }
+    assert(phases:step())
+    if phase == 1 then computed = phases:points() end
+    local mesh = current_mesh()
+    if not same_mesh(mesh, expected) then
+      expected = quad_cube()
+      phases = expected:subdivision_phases("catmull-clark")
+      show(quad_cube())
+      highlight(e, "yellow")
+      say("That is not the cube after phase " .. phase .. " (did another command change the mesh?). Here is a "
+        .. "fresh cube: from phase 1 again.")
+      phase = 1
+    else
+      if phase == 1 then
+        say("**Phase 1** computed " .. cube:num_faces() .. " face points, " .. cube:num_edges() .. " edge points and "
+          .. cube:num_vertices() .. " vertex points, and nothing moved: the edge point of " .. tostring(e) .. " is "
+          .. point(computed.edges[e.id]) .. ", the vertex point of v0 " .. point(computed.vertices[0]) .. ".")
+      elseif phase == 2 then
+        label("v" .. new_vertex, "new on " .. tostring(e))
+        say("**Phase 2** split the " .. cube:num_faces() .. " faces into " .. mesh:num_faces() .. " quads. The new "
+          .. "vertex v" .. new_vertex .. " sits at " .. point(mesh:vertex(new_vertex).position) .. ", the midpoint, "
+          .. "and v0 is still at " .. point(mesh:vertex(0).position) .. ".")
+      else
+        say("**Phase 3** moved every vertex to its point: v" .. new_vertex .. " to "
+          .. point(mesh:vertex(new_vertex).position) .. ", the edge point, and v0 to "
+          .. point(mesh:vertex(0).position) .. ", its vertex point. One level done: " .. counts(mesh) .. ".")
+      end
+      phase = phase + 1
+    end
+  end
 end)
 
 step("Triangles become quads", function()

@@ -1,9 +1,9 @@
 // Lessons in the real window under Xvfb: `meshedit lessons/welcome.lua` opens the lesson panel on its first
 // step; keys, a click on a vertex and Next reach the lesson through the same handlers a student uses, the
 // lesson's highlight and label are drawn, and a broken lesson shows its file:line without taking the window.
-// Lesson 6's "The app's phases: Shift+L" step follows the app's own Loop phases, one Shift+L at a time. The asking
-// demo's questions are answered wrong, then right, through the panel's actions and clicks in the view, with the feedback, the
-// answers, the arrows and the live text on screen.
+// Lesson 6's "The app's phases: Shift+L" step follows the app's own Loop phases, one Shift+L at a time, and lesson 7's
+// the Subdivide menu's Catmull-Clark phases. The asking demo's questions are answered wrong, then right, through the
+// panel's actions and clicks in the view, with the feedback, the answers, the arrows and the live text on screen.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -102,6 +102,40 @@ TEST(WindowLesson, LessonSixFollowsTheAppsLoopPhasesKeyByKey) {
           << "quit\n";
   const WindowRun run =
       run_window(x.display(), testing::source_dir() / "lessons" / "6_loop_subdivision.lua", actions.str(), dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
+// Lesson 7's "The app's phases" waits for the Subdivide menu's Catmull-Clark phases, one command at a time; a whole
+// subdivision between two phases makes the lesson start again on a fresh cube.
+TEST(WindowLesson, LessonSevenFollowsTheMenusCatmullClarkPhases) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  std::ostringstream actions;
+  actions << "frames 2\n";
+  for (int i = 0; i < 4; ++i) actions << "lesson-next\n";
+  actions << "frames 1\n"
+          << "expect-lesson-step 5 waiting\n"
+          << "lesson-choose At the edge's midpoint (0, -0.5, -0.5)\n"
+          << "frames 1\n"
+          << "subdivide-phase catmull-clark\n"
+          << "expect-message Catmull-Clark 1/3\n"
+          << "expect-lesson-said **Phase 1** computed 6 face points, 12 edge points and 8 vertex points\n"
+          << "subdivide catmull-clark\n"  // the whole level instead of phase 2
+          << "subdivide-phase catmull-clark\n"
+          << "expect-lesson-said That is not the cube after phase 2\n"
+          << "frames 1\n"
+          << "subdivide-phase catmull-clark\n"
+          << "subdivide-phase catmull-clark\n"
+          << "expect-lesson-said **Phase 2** split the 6 faces into 24 quads. The new vertex v11 sits at "
+             "(0, -0.5, -0.5)\n"
+          << "subdivide-phase catmull-clark\n"
+          << "expect-valid\n"
+          << "expect-lesson-step 5 finished\n"
+          << "expect-lesson-said One level done: 26 vertices, 48 edges, 24 faces.\n"
+          << "quit\n";
+  const WindowRun run =
+      run_window(x.display(), testing::source_dir() / "lessons" / "7_catmull_clark.lua", actions.str(), dir);
   EXPECT_EQ(run.status, 0) << run.output;
 }
 
