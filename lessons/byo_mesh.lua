@@ -276,30 +276,46 @@ repaired copy**.]])
     .. report_text(report) .. "\n\nClick its rows: each one selects its spot on the patch.")
 end)
 
+-- Suzanne, Blender's test character, as Blender 3.4 exports her to .obj with its default settings (assets/README.md):
+-- quads and triangles, and a hole at each eye.
+local SUZANNE = "../assets/suzanne.obj"
+
+-- How many faces of `mesh` have `sides` sides.
+local function faces_with(mesh, sides)
+  local n = 0
+  for f in mesh:faces() do if f:degree() == sides then n = n + 1 end end
+  return n
+end
+
 step("Triangulate the quads", function()
-  local quads = quad_cube()
-  show(quads)
+  local suzanne = meshedit.load(lesson_file(SUZANNE))
+  show(suzanne)
   camera "fit"
-  view { labels = false }
-  say("A Blender export keeps Blender's quads unless you triangulate. On screen: a cube of " .. quads:num_faces()
-    .. " quads, like one. Press **L** to try Loop subdivision on it.")
+  view { labels = false, halfedges = false }
+  local quads, triangles_before = faces_with(suzanne, 4), faces_with(suzanne, 3)
+  say("A Blender export keeps Blender's quads unless you triangulate. On screen: **Suzanne**, Blender's test "
+    .. "character, exported to .obj as Blender does by default (assets/suzanne.obj): " .. counts(suzanne) .. ", "
+    .. quads .. " of the faces quads and " .. triangles_before .. " triangles. Press **L** to try Loop "
+    .. "subdivision on her.")
   wait_for { key = "L", hint = "Press L" }
-  local loop_ok, why = quads:copy():loop_subdivide()
+  local loop_ok, why = suzanne:copy():loop_subdivide()
   assert(not loop_ok, "Loop subdivision was meant to refuse quads")
-  say("Loop subdivision refuses it, and the status bar says why: " .. why .. ".")
-  local triangles = quads:copy()
+  say("Loop subdivision refuses her, and the status bar says why: " .. why .. ".")
+  local triangles = suzanne:copy()
   local split = triangles:triangulate()
   answer {
-    "How many faces does the cube have after Edit > Triangulate?",
+    "How many faces will she have after Edit > Triangulate?",
     number = triangles:num_faces(),
     feedback = function(value)
-      if value == quads:num_faces() then return "That is the number of quads. Each one is cut into triangles." end
-      if value == 4 * quads:num_faces() then
-        return "Four per quad is a cut through the centre; triangulation adds no vertex, so a quad makes n - 2."
+      if value == suzanne:num_faces() then return "That is the number of faces now. Each quad is cut in two." end
+      if value == 4 * quads + triangles_before then
+        return "Four per quad is a cut through the centre; triangulation adds no vertex, so a quad makes n - 2 = 2."
       end
+      if value == 2 * suzanne:num_faces() then return "The " .. triangles_before .. " triangles stay as they are." end
     end,
+    hint = "A face of n corners becomes n - 2 triangles.",
   }
-  say "Now do it: **Edit > Triangulate** on the cube on screen."
+  say "Now do it: **Edit > Triangulate** on the mesh on screen."
   local yours = wait_for {
     hint = "Edit > Triangulate",
     condition = function()
@@ -307,7 +323,7 @@ step("Triangulate the quads", function()
       return m and m:num_faces() == triangles:num_faces() and m:validate() and m
     end,
   }
-  say("Triangulate split " .. split .. " faces: " .. counts(quads) .. " before, " .. counts(yours)
+  say("Triangulate split " .. split .. " faces: " .. counts(suzanne) .. " before, " .. counts(yours)
     .. " after. No vertex was added or moved. In Lua it is mesh:triangulate(); on the shell, "
     .. "`meshedit triangulate IN -o OUT`.")
 end)
@@ -315,7 +331,7 @@ end)
 step("Subdivide it", function()
   local mesh = current_mesh()
   if not mesh then
-    local triangles = quad_cube()
+    local triangles = meshedit.load(lesson_file(SUZANNE))
     triangles:triangulate()
     show(triangles)
     mesh = current_mesh()

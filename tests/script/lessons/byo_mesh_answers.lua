@@ -1,5 +1,6 @@
 -- Scripted answers for lessons/byo_mesh.lua: every question is answered wrong once (the feedback must name that
--- mistake), then right; L on the quad cube is refused, and L subdivides the triangulated cube the lesson leaves on screen.
+-- mistake), then right; L on Suzanne (assets/suzanne.obj, quads and triangles) is refused, and L subdivides her once
+-- triangulated.
 return {
   ["Which way is up"] = {
     { choose = "Z up", feedback = "3D printing" }, { choose = "Y up" },
@@ -18,7 +19,8 @@ return {
   },
   ["Open a scan with defects"] = { { answer = 26, feedback = "same triangle twice" }, { answer = 25 },
     { open_repaired = "../assets/scan_with_defects.ply" } },
-  ["Triangulate the quads"] = { { key = "L" }, { answer = 6, feedback = "number of quads" }, { answer = 24, feedback = "n - 2" },
-    { answer = 12 }, { triangulate = true } },
-  ["Subdivide it"] = { { subdivide = true }, { answer = 48, feedback = "Loop's count" }, { answer = 36 } },
+  ["Triangulate the quads"] = { { key = "L" }, { answer = 500, feedback = "Each quad is cut in two" },
+    { answer = 1904, feedback = "n - 2" }, { answer = 1000, feedback = "stay as they are" }, { answer = 968 },
+    { triangulate = true } },
+  ["Subdivide it"] = { { subdivide = true }, { answer = 3872, feedback = "Loop's count" }, { answer = 2904 } },
 }
