@@ -3,12 +3,12 @@
 // pages to a bigger mapping (mremap), not by copying its bytes.
 //
 // Why: a subdivided mesh of millions of faces is hundreds of megabytes written once. On the machines MeshEdit runs
-// on, faulting in fresh 4 KiB pages costs about as much as the subdivision itself (~2 us a page, measured in
-// ../shared/research/perf_anchors.md); transparent huge pages fault 512 times fewer pages. Where THP is off or
-// refused, the mapping is ordinary memory and nothing else changes. MESHEDIT_NO_HUGEPAGES=1 in the environment
-// skips the madvise, to measure what huge pages buy (peer_bench, 100k x 3 Loop: about 1.7x cold here). Growing in
-// place matters for the first edit that appends to an exactly sized array (the first split after opening a mesh
-// or after Loop subdivision): copying 60 MB of halfedges into fresh memory took ~100 ms at 1M faces.
+// on, faulting in fresh 4 KiB pages costs about as much as the subdivision itself (~2 us a page); transparent huge
+// pages fault 512 times fewer pages. Where THP is off or refused, the mapping is ordinary memory and nothing else
+// changes. MESHEDIT_NO_HUGEPAGES=1 in the environment skips the madvise, to measure what huge pages buy (peer_bench
+// --cold, 100k faces x 3 levels of Loop: about 1.7x). Growing in place matters for the first edit that appends to
+// an exactly sized array (the first split after opening a mesh or after Loop subdivision): at 1M faces that array
+// holds 60 MB of halfedges, which a copy into fresh memory would have to fault in and write.
 //
 // Invariants: the size of a block alone decides where it came from (is_mapped), so allocate, release and regrow
 // agree on it; a mapping ends at the last small page the block needs; every function either does all it says or

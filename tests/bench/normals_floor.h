@@ -1,7 +1,7 @@
 // What area-weighted vertex normals could cost on a mesh with no half-edge chase at all: a bare index buffer (three
 // corner ids per face, made outside the timing) scattered into per-vertex sums, once with the mesh's own vertex ids
 // and once with the vertices renumbered in first-touch order (what a cache-ordered, renumbered Loop output would
-// give). mesh_bench prints both beside the core's vertex_normals, as the floor issue 6's normals row runs into:
+// give). mesh_bench prints both beside the core's vertex_normals, as the floor peer_bench's normals row runs into:
 // the first needs a derived 12 B/face buffer, the second also new ids, which the stable-id design rules out.
 #pragma once
 

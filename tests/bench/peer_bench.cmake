@@ -1,4 +1,4 @@
-# peer_bench: MeshEdit against OpenMesh and CGAL (issue 6), included by tests/CMakeLists.txt. Both peers
+# peer_bench: MeshEdit against OpenMesh and CGAL, included by tests/CMakeLists.txt. Both peers
 # are optional and used by this program only: each is compiled in when found (scripts/setup_bench.sh
 # installs Debian's libopenmesh-dev and libcgal-dev), and the program builds, runs and passes its smoke
 # test with ours alone otherwise (or with -DMESHEDIT_BENCH_PEERS=OFF).

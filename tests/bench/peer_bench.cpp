@@ -1,4 +1,4 @@
-// peer_bench: MeshEdit against OpenMesh and CGAL on the same generated input (issue 6). For each
+// peer_bench: MeshEdit against OpenMesh and CGAL on the same generated input. For each
 // contender: build a half-edge mesh from indexed triangles, Loop subdivision with Loop's weights (closed
 // torus, and the torus with holes), area-weighted vertex normals, memory at rest; then Catmull-Clark against
 // OpenMesh (peer_catmull_clark.h). Every contender's subdivided mesh (counts, every position, boundary flags,
@@ -346,7 +346,7 @@ int main(int argc, char** argv) {
   if (ours_threads_subdivide || ours_threads_normals) {
     for (const TableRow& row : rows) {
       if (std::isnan(row.ours_threads)) continue;
-      std::printf("ours with %d threads over one, %s: %.2fx (issue 6 target >= 1.6x at 1M faces or more: %s)\n",
+      std::printf("ours with %d threads over one, %s: %.2fx (target >= 1.6x at 1M faces or more: %s)\n",
                   o.threads, row.label.substr(0, row.label.rfind(" (")).c_str(), row.ours / row.ours_threads,
                   row.ours / row.ours_threads >= 1.6 ? "met" : "NOT met");
     }

@@ -1,5 +1,5 @@
 // The one table peer_bench prints: a row per measurement, ours against OpenMesh and CGAL, the ratios
-// peer/ours and whether the target ratio of issue 6 is met.
+// peer/ours and whether each row's target ratio is met.
 #pragma once
 
 #include <cmath>

@@ -1,7 +1,7 @@
 // Every hostile submission in tests/grading/hostile/ (a correct flip.lua plus one hostile split.lua) graded
 // with hostile_suite.lua: the two tests that do not call split_edge keep their full points, whatever the file
 // did when it loaded or while it ran; the split test scores 0, ends the way the attack forces it to, and its
-// output says what happened. Each case below is one attack from issue 5's list.
+// output says what happened. Each case below is one attack a submission can make on the grader.
 #include <gtest/gtest.h>
 
 #include <filesystem>

@@ -1,7 +1,7 @@
 // "Mine vs reference": the catalogue; the templates in scripts/student are reported as different with a
 // message saying what is missing; every solution in tests/script/solutions is identical to the reference on
 // several inputs (cube, icosahedron, a grid with boundary, the teapot tessellated, several t and (u, v));
-// buggy variants of the solutions (issue 5's real mistakes) are caught with messages that name the mistake;
+// buggy variants of the solutions (mistakes students really make) are caught with messages that name the mistake;
 // loading, errors, limits, printing and the edit recording behave as exercises.h says.
 #include <gtest/gtest.h>
 

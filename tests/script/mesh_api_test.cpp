@@ -1,4 +1,4 @@
-// The mesh API of issue 4 beyond reading: from_polygons, element creation and deletion, mesh:element("h37"),
+// The mesh API beyond reading: from_polygons, element creation and deletion, mesh:element("h37"),
 // tables(), vec3 positions, the handle walks, and every error message they raise.
 #include <gtest/gtest.h>
 
