@@ -13,7 +13,7 @@
 // the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
 // {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
 // {subdivide_phase = "loop" | "catmull-clark" | "linear"} (the scheme's next phase; {loop_phase = true} is Loop's, as
-// Shift+L), {triangulate = true} (Subdivide > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
+// Shift+L), {triangulate = true} (Edit > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
 // repaired copy of that file, a path from the lesson's folder)); each of these menu commands also tells the lesson
 // its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
 // ({choose = "h4"} for choose{}; a click answers pick{};
