@@ -82,15 +82,15 @@ TEST(FilesFromTools, BlendersSuzanneObjOpensAsExportedAndSubdivides) {
   expect_subdivides(suzanne.mesh);
 }
 
-// Blender's PLY and glTF repeat a vertex wherever its texture coordinate or normal changes, and STL stores corners:
-// read, each vertex is joined to the others at its position, which also joins two of the eyes' rim vertices to the
-// head's (the OBJ keeps them apart at the same place), making two bow-ties that one repair splits again. What opens is
-// the OBJ's Suzanne: the same positions (the .obj's are rounded to six decimals), boundaries and counts.
-TEST(FilesFromTools, BlendersPlyStlAndGlbOfSuzanneOpenRepairedAsTheObjsSuzanne) {
+// Blender's PLY repeats a vertex wherever its texture coordinate changes, and STL stores corners: read, each vertex
+// is joined to the others at its position, which also joins two of the eyes' rim vertices to the head's (the OBJ
+// keeps them apart at the same place), making two bow-ties that one repair splits again. What opens is the OBJ's
+// Suzanne: the same positions (the .obj's are rounded to six decimals), boundaries and counts.
+TEST(FilesFromTools, BlendersPlyAndStlOfSuzanneOpenRepairedAsTheObjsSuzanne) {
   const HalfedgeMesh obj = build_halfedge_mesh(load_mesh(testing::source_dir() / "assets" / "suzanne.obj"));
   // The vertices each file holds, and those left once joined (STL's corners are joined by its reader).
-  const std::pair<const char*, std::pair<size_t, size_t>> files[] = {
-      {"suzanne.ply", {556, 505}}, {"suzanne.stl", {505, 505}}, {"suzanne_subsurf.glb", {1966, 505}}};
+  const std::pair<const char*, std::pair<size_t, size_t>> files[] = {{"suzanne.ply", {556, 505}},
+                                                                     {"suzanne.stl", {505, 505}}};
   for (const auto& [name, vertices] : files) {
     SCOPED_TRACE(name);
     const LoadedFile file = load_file(from_tools(name));
@@ -110,6 +110,20 @@ TEST(FilesFromTools, BlendersPlyStlAndGlbOfSuzanneOpenRepairedAsTheObjsSuzanne) 
     }
     expect_subdivides(opened.mesh);
   }
+}
+
+// Blender's glTF of a flat-shaded mesh repeats every vertex for each face around it (7872 vertices for 3936
+// triangles); joined by position, the subdivided Suzanne is one surface again (her eyes apart), with no repair.
+TEST(FilesFromTools, BlendersGltfOfASubdividedSuzanneOpensJoinedIntoOneSurface) {
+  const LoadedFile file = load_file(from_tools("suzanne_subsurf.glb"));
+  EXPECT_EQ(file.joined_vertices, 5860u);
+  const Opened opened = open_as_the_window_does(from_tools("suzanne_subsurf.glb"));
+  EXPECT_FALSE(opened.repaired) << opened.refusal;
+  EXPECT_EQ(opened.mesh.num_vertices(), 2012u);
+  EXPECT_EQ(opened.mesh.num_faces(), 3936u);
+  EXPECT_EQ(opened.mesh.num_boundaries(), 4u);  // as the .obj's: each eye's rim and the head's hole for it
+  EXPECT_TRUE(validate(opened.mesh).ok());
+  expect_subdivides(opened.mesh);
 }
 
 TEST(FilesFromTools, AScanWithAHoleAndABowTieOpensRepairedAndSubdivides) {

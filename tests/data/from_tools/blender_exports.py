@@ -1,7 +1,7 @@
 # Writes this folder's Blender files with Blender's own exporters (run by make_files.sh; Blender 3.4):
 #   suzanne.obj (moved to assets/), suzanne.ply (binary), suzanne.stl (binary): Blender's test character, quads
 #     and triangles, with the exporters' default settings;
-#   suzanne_subsurf.glb: the same with one level of Subdivision Surface, as glTF;
+#   suzanne_subsurf.glb: the same with one level of Subdivision Surface applied on export, as glTF;
 #   scan_sphere.ply (ASCII): a sphere with a hole at its north cap and a bow-tie on its equator (of the four faces
 #     around a vertex, two opposite ones kept), the defects of a scan.
 import os
@@ -23,7 +23,8 @@ bpy.ops.wm.obj_export(filepath=os.path.join(out, "suzanne.obj"), export_material
 bpy.ops.export_mesh.ply(filepath=os.path.join(out, "suzanne.ply"))
 bpy.ops.export_mesh.stl(filepath=os.path.join(out, "suzanne.stl"), use_selection=True)
 bpy.context.active_object.modifiers.new("subsurf", "SUBSURF").levels = 1
-bpy.ops.export_scene.gltf(filepath=os.path.join(out, "suzanne_subsurf.glb"), export_format="GLB")
+bpy.ops.export_scene.gltf(filepath=os.path.join(out, "suzanne_subsurf.glb"), export_format="GLB",
+                          export_apply=True)
 
 fresh()
 bpy.ops.mesh.primitive_uv_sphere_add(segments=16, ring_count=10)
