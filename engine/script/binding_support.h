@@ -109,8 +109,8 @@ RecordedEdit operation_edit(const char* name, ElementRef element, ElementRef res
 // The method groups of the mesh metatable, each adding its functions to the table on top of the stack.
 void add_edit_methods(lua_State* L);       // edit_bindings.cpp: new_*, delete, record
 void add_operation_methods(lua_State* L);  // operation_bindings.cpp: flip, split, collapse, loop_subdivide
-void add_subdivision_methods(lua_State* L);  // subdivision_bindings.cpp: catmull_clark, linear_subdivide
-void add_subdivision_phase_methods(lua_State* L);  // subdivision_phase_bindings.cpp: subdivision_phases
+// subdivision_bindings.cpp: catmull_clark, linear_subdivide, subdivision_phases
+void add_subdivision_methods(lua_State* L);
 // mesh:flip(e) and mesh:split(e) as C functions of (mesh, e), recorded and journaled like every change a script makes
 // (the reference flip_edge and split_edge are these).
 int mesh_flip(lua_State* L);

@@ -222,7 +222,6 @@ void open_mesh_metatable(lua_State* L) {
   add_edit_methods(L);
   add_operation_methods(L);
   add_subdivision_methods(L);
-  add_subdivision_phase_methods(L);
   add_history_methods(L);
   add_table_methods(L);
   lua_setfield(L, -2, "__index");

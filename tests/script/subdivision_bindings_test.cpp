@@ -53,7 +53,7 @@ TEST(SubdivisionBindings, RefusalsSayWhyAndChangeNothing) {
   // 1,050,000 triangles: linear subdivision would make 4,200,000, past the cap of 4,194,304; Catmull-Clark makes
   // 3 quads of each, 3,150,000, under it.
   EXPECT_EQ(s.run("local g = meshedit.grid(1000, 525) return g:linear_subdivide()"),
-            (Strings{"nil", "linear subdivision would make 4200000 faces; scripts may make at most 4194304"}));
+            (Strings{"nil", "Linear subdivision would make 4200000 faces; scripts may make at most 4194304"}));
 }
 
 }  // namespace
