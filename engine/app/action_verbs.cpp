@@ -368,7 +368,9 @@ std::string expect_up_axis(EditorApp& app, const Action& a) {
 }
 
 std::string expect_gpu_update(EditorApp& app, const Action& a) {
-  if (a.args[0] != "patch" && a.args[0] != "rebuild") throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+  if (a.args[0] != "patch" && a.args[0] != "rebuild") {
+    throw std::runtime_error("expect-gpu-update takes patch or rebuild");
+  }
   const RenderStats& stats = app.mesh_render_stats();
   const std::string got = stats.last_update_patch ? "patch" : "rebuild";
   const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
@@ -387,8 +389,10 @@ const ActionVerb kVerbs[] = {
     {"click", 2, "click X Y   a click at view pixels (framebuffer pixels from the view's top-left corner, as picking "
                  "counts them)", click},
     {"hover", 2, "hover X Y   the mouse rests at view pixels", hover},
-    {"click-on", 1, "click-on h12   a click where the element's label anchor is on screen (a vertex's position, an "
-                    "edge's midpoint, a face's centre, a halfedge's arrow); fails when it is not in the view", click_on},
+    {"click-on", 1,
+     "click-on h12   a click where the element's label anchor is on screen (a vertex's position, an edge's midpoint, "
+     "a face's centre, a halfedge's arrow); fails when it is not in the view",
+     click_on},
     {"window-size", 2, "window-size W H   asks the window system to resize the window before the next frame",
      window_size},
     {"layout-json", 1, "layout-json PATH   writes the window's layout as JSON (app/layout_report.h)", write_layout},
@@ -397,10 +401,13 @@ const ActionVerb kVerbs[] = {
      open_repaired},
     {"save", 1, "save PATH   File > Save as", save},
     {"screenshot", 1, "screenshot PATH   a PNG of the next frame", screenshot},
-    {"repair-row", 1, "repair-row K   clicks the Repairs tab's K-th change (1 the first): selects its first spot; fails "
-                      "when there is no such row, it has no spot, or the spots are stale", repair_row},
+    {"repair-row", 1,
+     "repair-row K   clicks the Repairs tab's K-th change (1 the first): selects its first spot; fails when there is "
+     "no such row, it has no spot, or the spots are stale",
+     repair_row},
     {"triangulate", 0, "triangulate   Edit > Triangulate", triangulate},
-    {"subdivide", 1, "subdivide loop|catmull-clark|linear   the Subdivide menu's item for the scheme", subdivide<false>},
+    {"subdivide", 1, "subdivide loop|catmull-clark|linear   the Subdivide menu's item for the scheme",
+     subdivide<false>},
     {"subdivide-phase", 1, "subdivide-phase loop|catmull-clark|linear   the Subdivide menu's \"next phase\" item",
      subdivide<true>},
     {"orbit", 2, "orbit DX DY   the camera turns as a drag of DX, DY pixels would turn it", orbit},
@@ -458,7 +465,8 @@ const ActionVerb kVerbs[] = {
 std::span<const ActionVerb> action_verbs() { return kVerbs; }
 
 const ActionVerb* find_action_verb(const std::string& name) {
-  const auto* found = std::find_if(std::begin(kVerbs), std::end(kVerbs), [&](const ActionVerb& v) { return name == v.name; });
+  const auto* found =
+      std::find_if(std::begin(kVerbs), std::end(kVerbs), [&](const ActionVerb& v) { return name == v.name; });
   return found == std::end(kVerbs) ? nullptr : found;
 }
 

@@ -277,6 +277,7 @@ class EditorApp {
   std::unique_ptr<LessonRunner> make_lesson_runner();
   bool apply_key(int key, KeyMods mods);
   bool run_key_command(KeyCommand command);  // what a row of app/key_bindings.h does; whether it did something
+  void press(KeyCommand command);            // handle_key with the command's key: what a menu item for it does
   void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
   void draw_edit_animation();  // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);

@@ -54,10 +54,26 @@ Check EditorApp::run_subdivide_command(SubdivisionScheme scheme, bool one_phase)
   return check;
 }
 
+void EditorApp::press(KeyCommand command) {
+  for (const KeyBinding& b : key_bindings()) {
+    if (b.command == command && b.help) {
+      handle_key(b.key, {b.ctrl, b.shift});
+      return;
+    }
+  }
+}
+
 void EditorApp::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
+  // An item for a key's command shows the key and does what pressing it does (a running replay is finished first, a
+  // lesson waiting for the key hears about it).
+  const auto key_item = [this](const char* label, KeyCommand command, bool enabled = true, bool checked = false) {
+    if (ImGui::MenuItem(label, shortcut_of(command), checked, enabled)) press(command);
+  };
+  using K = KeyCommand;
+  using S = SubdivisionScheme;
   if (ImGui::BeginMenu("File")) {
-    if (ImGui::MenuItem("Open...", shortcut_of(KeyCommand::Open))) show_open_panel_ = true;
+    key_item("Open...", K::Open);
     if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
       for (const std::string& path : std::deque<std::string>(recent_)) {
         if (ImGui::MenuItem(path.c_str())) open(path);
@@ -66,27 +82,21 @@ void EditorApp::draw_menu_bar() {
     }
     if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
     if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
-    if (ImGui::MenuItem("Screenshot", shortcut_of(KeyCommand::Screenshot))) request_screenshot("meshedit-screenshot.png");
+    if (ImGui::MenuItem("Screenshot", shortcut_of(K::Screenshot))) request_screenshot("meshedit-screenshot.png");
     ImGui::Separator();
-    if (ImGui::MenuItem("Quit", shortcut_of(KeyCommand::Quit))) quit_requested_ = true;
+    key_item("Quit", K::Quit);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
-    // Menu items go through the key handler, so they do exactly what the keys do (a running replay is
-    // finished first, a lesson waiting for F hears about it).
-    if (ImGui::MenuItem("Undo", shortcut_of(KeyCommand::Undo), false, doc_.history.can_undo())) {
-      handle_key(GLFW_KEY_Z, {true, false});
-    }
-    if (ImGui::MenuItem("Redo", shortcut_of(KeyCommand::Redo), false, doc_.history.can_redo())) {
-      handle_key(GLFW_KEY_Y, {true, false});
-    }
+    key_item("Undo", K::Undo, doc_.history.can_undo());
+    key_item("Redo", K::Redo, doc_.history.can_redo());
     ImGui::Separator();
-    if (ImGui::MenuItem("Flip edge", shortcut_of(KeyCommand::FlipOrFace))) {  // F on a halfedge walks to its face; the menu item always flips
+    if (ImGui::MenuItem("Flip edge", shortcut_of(K::FlipOrFace))) {  // F on a halfedge walks to its face; this flips
       exercises_.finish_replay(doc_);
       flip_selected(doc_, selection_);
     }
-    if (ImGui::MenuItem("Split edge", shortcut_of(KeyCommand::Split))) handle_key(GLFW_KEY_S, {});
-    if (ImGui::MenuItem("Collapse edge", shortcut_of(KeyCommand::Collapse))) handle_key(GLFW_KEY_C, {});
+    key_item("Split edge", K::Split);
+    key_item("Collapse edge", K::Collapse);
     ImGui::Separator();
     if (ImGui::MenuItem("Triangulate")) {  // every face of more than three corners
       exercises_.finish_replay(doc_);
@@ -95,42 +105,38 @@ void EditorApp::draw_menu_bar() {
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) {
-    if (ImGui::MenuItem("Loop subdivision", shortcut_of(KeyCommand::Loop))) run_subdivide_command(SubdivisionScheme::Loop, false);
+    if (ImGui::MenuItem("Loop subdivision", shortcut_of(K::Loop))) run_subdivide_command(S::Loop, false);
     char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
     std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
-    if (ImGui::MenuItem(phase, shortcut_of(KeyCommand::LoopPhase))) run_subdivide_command(SubdivisionScheme::Loop, true);
+    if (ImGui::MenuItem(phase, shortcut_of(K::LoopPhase))) run_subdivide_command(S::Loop, true);
     bool loop_beta = loop_weights_ == LoopWeights::Loop;
     if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
       loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(SubdivisionScheme::CatmullClark, false);
+    if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(S::CatmullClark, false);
     if (ImGui::MenuItem(next_phase_label(doc_, catmull_clark_stepper_).c_str())) {
-      run_subdivide_command(SubdivisionScheme::CatmullClark, true);
+      run_subdivide_command(S::CatmullClark, true);
     }
-    if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(SubdivisionScheme::Linear, false);
-    if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) {
-      run_subdivide_command(SubdivisionScheme::Linear, true);
-    }
+    if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(S::Linear, false);
+    if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) run_subdivide_command(S::Linear, true);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("View")) {
-    ImGui::MenuItem("Wireframe", shortcut_of(KeyCommand::Wireframe), &view_options_.wireframe);
-    ImGui::MenuItem("Smooth shading", shortcut_of(KeyCommand::Shading), &view_options_.smooth_shading);
+    ImGui::MenuItem("Wireframe", shortcut_of(K::Wireframe), &view_options_.wireframe);
+    ImGui::MenuItem("Smooth shading", shortcut_of(K::Shading), &view_options_.smooth_shading);
     ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
     ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
     ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
     ImGui::MenuItem("Id labels", nullptr, &show_labels_);
     ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
     ImGui::Separator();
-    ImGui::MenuItem("Left column (lesson)", shortcut_of(KeyCommand::FoldLeft), &settings_.layout.left_open);
-    ImGui::MenuItem("Right column (tables)", shortcut_of(KeyCommand::FoldRight), &settings_.layout.right_open);
-    if (ImGui::MenuItem("Inspector", shortcut_of(KeyCommand::Inspector), inspector_.open)) handle_key(GLFW_KEY_I, {});
+    ImGui::MenuItem("Left column (lesson)", shortcut_of(K::FoldLeft), &settings_.layout.left_open);
+    ImGui::MenuItem("Right column (tables)", shortcut_of(K::FoldRight), &settings_.layout.right_open);
+    key_item("Inspector", K::Inspector, true, inspector_.open);
     ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-    if (ImGui::MenuItem("Exercises: mine vs reference", shortcut_of(KeyCommand::ToggleExercises), exercise_panel_.open)) {
-      handle_key(GLFW_KEY_X, {});
-    }
-    if (ImGui::MenuItem("Lua console", shortcut_of(KeyCommand::Console), &console_panel_.open)) console_panel_.focus_input = console_panel_.open;
+    key_item("Exercises: mine vs reference", K::ToggleExercises, true, exercise_panel_.open);
+    key_item("Lua console", K::Console, true, console_panel_.open);
     if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
       const std::pair<const char*, UpAxisChoice> choices[] = {
           {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
@@ -140,9 +146,9 @@ void EditorApp::draw_menu_bar() {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Bigger text", shortcut_of(KeyCommand::BiggerText))) change_font_size(+1);
-    if (ImGui::MenuItem("Smaller text", shortcut_of(KeyCommand::SmallerText))) change_font_size(-1);
-    if (ImGui::MenuItem("Default text size", shortcut_of(KeyCommand::DefaultText))) change_font_size(0);
+    key_item("Bigger text", K::BiggerText);
+    key_item("Smaller text", K::SmallerText);
+    key_item("Default text size", K::DefaultText);
     if (ImGui::BeginMenu("Theme")) {
       constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
       for (const auto& [name, theme] : kThemes) {
@@ -151,11 +157,11 @@ void EditorApp::draw_menu_bar() {
       ImGui::EndMenu();
     }
     ImGui::Separator();
-    if (ImGui::MenuItem("Reset view", shortcut_of(KeyCommand::ResetView))) reset_view();
+    key_item("Reset view", K::ResetView);
     ImGui::EndMenu();
   }
   if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Keys", shortcut_of(KeyCommand::Help))) show_help_ = true;
+    if (ImGui::MenuItem("Keys", shortcut_of(K::Help))) show_help_ = true;
     ImGui::EndMenu();
   }
   ImGui::EndMainMenuBar();

@@ -15,8 +15,9 @@ using V = KeyView;
 
 // Grouped as the Keys dialog shows them: the mesh view, the curve and patch views, then every view.
 constexpr KeyBinding kKeyBindings[] = {
-    // command         key                    ctrl   shift  view       edits  keys       help
-    {C::FlipOrFace, GLFW_KEY_F, false, false, V::Mesh, true, "F", "flip the selected edge (on a halfedge: go to its face)"},
+    // command, key, Ctrl, Shift, view, edits, keys, help
+    {C::FlipOrFace, GLFW_KEY_F, false, false, V::Mesh, true, "F",
+     "flip the selected edge (on a halfedge: go to its face)"},
     {C::Split, GLFW_KEY_S, false, false, V::Mesh, true, "S", "split the selected edge"},
     {C::Collapse, GLFW_KEY_C, false, false, V::Mesh, true, "C", "collapse the selected edge"},
     {C::Loop, GLFW_KEY_L, false, false, V::Mesh, true, "L", "Loop subdivision"},

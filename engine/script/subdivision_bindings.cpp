@@ -101,7 +101,9 @@ struct PhasesBox {
   }
 };
 
-PhasesBox& check_phases(lua_State* L, int arg) { return *static_cast<PhasesBox*>(luaL_checkudata(L, arg, kPhasesType)); }
+PhasesBox& check_phases(lua_State* L, int arg) {
+  return *static_cast<PhasesBox*>(luaL_checkudata(L, arg, kPhasesType));
+}
 
 int phases_gc(lua_State* L) {
   auto* box = static_cast<PhasesBox*>(lua_touserdata(L, 1));

@@ -76,8 +76,9 @@ Check subdivision_step(MeshDocument& doc, Selection& selection, SubdivisionStepp
       set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + check.reason; });
       return check;
     }
-    set_message_noexcept(doc, Severity::Info,
-                         [&] { return restarted() + label + ": " + phases.computed_summary() + "; nothing moved yet"; });
+    set_message_noexcept(doc, Severity::Info, [&] {
+      return restarted() + label + ": " + phases.computed_summary() + "; nothing moved yet";
+    });
   } else {
     check = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return phases.run_next(mesh); });
     if (phase == 2) keep_vertices_only(selection, doc.mesh);  // every scheme refines in phase 2

@@ -35,7 +35,8 @@ TEST(SubdivisionPhaseBindings, CatmullClarkPhaseByPhaseWithItsPoints) {
                   "#pts.faces + 1, #pts.edges + 1, #pts.vertices + 1"),
             (Strings{format_position(core.face_point[2]), format_position(core.edge_point[5]),
                      format_position(core.vertex_point[7]), "6", "12", "8"}));
-  EXPECT_EQ(s.run("return p:step()"), (Strings{"2", "Catmull-Clark 2/3: split every face into quads (nothing moves yet)"}));
+  EXPECT_EQ(s.run("return p:step()"),
+            (Strings{"2", "Catmull-Clark 2/3: split every face into quads (nothing moves yet)"}));
   EXPECT_EQ(s.mesh->num_faces(), 24u);
   EXPECT_EQ(s.mesh->position(VertexId(7)), start.position(VertexId(7)));  // nothing moved yet
   EXPECT_EQ(s.run("local pts = p:points() return tostring(pts.vertices[7])"),

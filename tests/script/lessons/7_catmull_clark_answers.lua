@@ -17,7 +17,8 @@ return {
     {choose = "24 = 4F", feedback = "share their corners"}, {choose = "26 = V + E + F"},
     {answer = 6, feedback = "not kept"}, {answer = 48, feedback = "Loop's count"}, {answer = 24},
     {subdivide = "catmull-clark"} },
-  ["The app's phases"] = { {choose = "At its edge point (0, -0.375, -0.375)", feedback = "only changes the connectivity"},
+  ["The app's phases"] = {
+    {choose = "At its edge point (0, -0.375, -0.375)", feedback = "only changes the connectivity"},
     {choose = "On v0, until phase 3 moves it", feedback = "never on top of a corner"},
     {choose = "At the edge's midpoint (0, -0.5, -0.5)"},
     {subdivide_phase = "catmull-clark"}, {subdivide_phase = "catmull-clark"}, {subdivide_phase = "catmull-clark"} },
