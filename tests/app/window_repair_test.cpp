@@ -76,9 +76,9 @@ TEST(WindowRepair, ABlenderStlOpensRepairedSubdividesAndDraws) {
   ASSERT_GT(image.width, 0);
   // Suzanne, fitted to the view, is drawn lit grey over the dark background: most of the window's middle is her.
   size_t lit = 0, box = 0;
-  for (int y = image.height * 2 / 5; y < image.height * 3 / 5; ++y) {
-    for (int x = image.width * 9 / 20; x < image.width * 11 / 20; ++x, ++box) {
-      const uint8_t* p = &image.rgba[(size_t(y) * size_t(image.width) + size_t(x)) * 4];
+  for (int row = image.height * 2 / 5; row < image.height * 3 / 5; ++row) {
+    for (int column = image.width * 9 / 20; column < image.width * 11 / 20; ++column, ++box) {
+      const uint8_t* p = &image.rgba[(size_t(row) * size_t(image.width) + size_t(column)) * 4];
       lit += p[0] > 90 && p[1] > 90 && p[2] > 90;
     }
   }

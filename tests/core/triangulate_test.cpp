@@ -221,7 +221,8 @@ TEST(Triangulate, BumpyQuadTorusBuildsValidatesAndKeepsNormals) {
 // diagonal the other has not used, or the triangle of the three shared corners would be made twice.
 TEST(Triangulate, QuadsSharingThreeCornersAreCutAlongDifferentDiagonals) {
   PolygonMesh polygons;
-  polygons.positions = {{0, 0, 0}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0.2}, {1.1, 1.1, -0.3}};
+  // A fold along the path 0-1-2: two kites, one tilted up and one down, each able to take the diagonal 0-2.
+  polygons.positions = {{0, 0, 0}, {1, 1, 0}, {2, 0, 0}, {1, -1, 1}, {1, -1, -1}};
   polygons.add_face({0, 1, 2, 3});
   polygons.add_face({2, 1, 0, 4});
   const PolygonMesh triangles = triangulate(polygons);

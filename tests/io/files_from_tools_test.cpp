@@ -85,7 +85,8 @@ TEST(FilesFromTools, BlendersSuzanneObjOpensAsExportedAndSubdivides) {
 // Blender's PLY repeats a vertex wherever its texture coordinate changes, and STL stores corners: read, each vertex
 // is joined to the others at its position, which also joins two of the eyes' rim vertices to the head's (the OBJ
 // keeps them apart at the same place), making two bow-ties that one repair splits again. What opens is the OBJ's
-// Suzanne: the same positions (the .obj's are rounded to six decimals), boundaries and counts.
+// Suzanne: the same positions, boundaries and counts. Blender's PLY and STL exporters keep its own axes (Z up) where
+// its OBJ exporter turns them (Y up): Blender's (x, y, z) is the .obj's (x, z, -y), rounded there to six decimals.
 TEST(FilesFromTools, BlendersPlyAndStlOfSuzanneOpenRepairedAsTheObjsSuzanne) {
   const HalfedgeMesh obj = build_halfedge_mesh(load_mesh(testing::source_dir() / "assets" / "suzanne.obj"));
   // The vertices each file holds, and those left once joined (STL's corners are joined by its reader).
@@ -105,7 +106,10 @@ TEST(FilesFromTools, BlendersPlyAndStlOfSuzanneOpenRepairedAsTheObjsSuzanne) {
     for (VertexId v : opened.mesh.vertices()) {
       const glm::dvec3 p = opened.mesh.position(v);
       bool found = false;
-      for (VertexId w : obj.vertices()) found = found || glm::length(obj.position(w) - p) < 1e-6;
+      for (VertexId w : obj.vertices()) {
+        const glm::dvec3 q = obj.position(w);
+        found = found || glm::length(glm::dvec3(q.x, -q.z, q.y) - p) < 1e-6;
+      }
       ASSERT_TRUE(found) << "v" << v.index << " is at no vertex of the .obj";
     }
     expect_subdivides(opened.mesh);
