@@ -97,7 +97,7 @@ OpResult<CatmullClarkState> catmull_clark_compute_points(const HalfedgeMesh& mes
 }
 
 void catmull_clark_refine(HalfedgeMesh& mesh, const CatmullClarkState& state) {
-  mesh = refine_mesh(mesh, RefineRule::Quads, state.layout, midpoint_positions(mesh, state.layout));
+  mesh.replace_with(refine_mesh(mesh, RefineRule::Quads, state.layout, midpoint_positions(mesh, state.layout)));
 }
 
 void catmull_clark_commit_positions(HalfedgeMesh& mesh, const CatmullClarkState& state) {
@@ -128,7 +128,7 @@ Check catmull_clark_subdivide(HalfedgeMesh& mesh, int levels) {
   if (!check) return check;
   for (int level = 0; level < levels; ++level) {
     const CatmullClarkState state = compute_points(mesh);
-    mesh = refine_mesh(mesh, RefineRule::Quads, state.layout, final_positions(mesh, state));
+    mesh.replace_with(refine_mesh(mesh, RefineRule::Quads, state.layout, final_positions(mesh, state)));
   }
   return Check::yes();
 }

@@ -29,6 +29,7 @@
 #pragma once
 
 #include <algorithm>
+#include <utility>
 #include <cstdint>
 #include <vector>
 
@@ -234,6 +235,13 @@ class HalfedgeMesh {
   // After restoring a snapshot (undo), makes version() larger than `seen`, so no cache mistakes the
   // restored state for one it saw before.
   void bump_version_above(uint64_t seen) { version_ = std::max(version_, seen) + 1; }
+  // Becomes `replacement` as one mutation: version() ends above the one before, as after any other (a plain
+  // assignment brings the replacement's own count, which may equal a version seen before).
+  void replace_with(HalfedgeMesh&& replacement) {
+    const uint64_t seen = version_;
+    *this = std::move(replacement);
+    bump_version_above(seen);
+  }
   // Memory held by the arrays, in bytes (capacity, not size).
   size_t memory_bytes() const;
 

@@ -17,7 +17,7 @@ OpResult<LinearState> linear_compute_points(const HalfedgeMesh& mesh) {
 }
 
 void linear_refine(HalfedgeMesh& mesh, const LinearState& state) {
-  mesh = refine_mesh(mesh, RefineRule::TrianglesInFour, state.layout, state.position);
+  mesh.replace_with(refine_mesh(mesh, RefineRule::TrianglesInFour, state.layout, state.position));
 }
 
 Check linear_subdivide(HalfedgeMesh& mesh, int levels) {
@@ -26,7 +26,7 @@ Check linear_subdivide(HalfedgeMesh& mesh, int levels) {
   if (!check) return check;
   for (int level = 0; level < levels; ++level) {
     const RefineLayout layout = plan_refinement(mesh, RefineRule::TrianglesInFour);
-    mesh = refine_mesh(mesh, RefineRule::TrianglesInFour, layout, midpoint_positions(mesh, layout));
+    mesh.replace_with(refine_mesh(mesh, RefineRule::TrianglesInFour, layout, midpoint_positions(mesh, layout)));
   }
   return Check::yes();
 }

@@ -76,8 +76,17 @@ const std::string& phase_label(SubdivisionScheme scheme, int phase) {
 SubdivisionPhases::SubdivisionPhases(SubdivisionScheme scheme, LoopWeights weights)
     : scheme_(scheme), weights_(weights) {}
 
+SubdivisionPhases::Capacities SubdivisionPhases::capacities_of(const HalfedgeMesh& mesh) {
+  return {mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(), mesh.face_capacity()};
+}
+
 Check SubdivisionPhases::run_next(HalfedgeMesh& mesh) {
   const int phase = next_phase_;
+  if (phase > 1 && capacities_of(mesh) != left_) {
+    restart();
+    return Check::no(std::string("the mesh changed after ") + scheme_title(scheme_) + " phase " +
+                     std::to_string(phase - 1) + "; the phases start again at phase 1");
+  }
   if (phase == 1) {
     Check check;
     switch (scheme_) {
@@ -119,6 +128,7 @@ Check SubdivisionPhases::run_next(HalfedgeMesh& mesh) {
     restart();
   } else {
     next_phase_ = phase + 1;
+    left_ = capacities_of(mesh);
   }
   return Check::yes();
 }

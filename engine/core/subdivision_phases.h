@@ -13,13 +13,16 @@
 // - The phases in turn give the mesh the scheme's one-call subdivision gives, id for id (the core's tests hold
 //   the by-phases calls to the one-call ones).
 // - A refused phase 1 (what the scheme's can_* refuses) changes nothing and leaves the stepper at phase 1.
-// - The phases after the first trust that the mesh is the one the previous phase left: a caller whose mesh may have
-//   changed in between (an undo, another edit) calls restart() first. That check is the caller's, because only the
-//   caller knows what "the same mesh" means to it (a document's generation and version, a Lua mesh's version).
+// - The phases after the first need the mesh the previous phase left: a caller whose mesh may have changed in between
+//   (an undo, another edit) calls restart() first, as only the caller knows what "the same mesh" means to it (a
+//   document's generation and version, a Lua mesh's version). As a last guard, a later phase refuses (and restarts)
+//   a mesh whose id capacities differ from those the previous phase left, rather than read past what phase 1
+//   computed.
 // - The labels are made when the program starts: asking for one allocates nothing.
 #pragma once
 
 #include <cstddef>
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -56,7 +59,7 @@ class SubdivisionPhases {
   // Whether phase 1 has run and a later phase is still to come (the computed points are then at hand).
   bool computed() const { return next_phase_ > 1; }
 
-  // Runs the next phase on `mesh`. Phase 1 may refuse (see above); the later phases cannot.
+  // Runs the next phase on `mesh`. Phase 1 may refuse (see above); a later phase only a mesh of other capacities.
   Check run_next(HalfedgeMesh& mesh);
   // Back to phase 1, the computed points dropped.
   void restart();
@@ -76,6 +79,12 @@ class SubdivisionPhases {
     size_t vertices = 0, edges = 0, faces = 0;
   };
   MeshCounts computed_from_;  // the live elements of the mesh phase 1 read
+  struct Capacities {
+    uint32_t vertices = 0, halfedges = 0, edges = 0, faces = 0;
+    bool operator==(const Capacities&) const = default;
+  };
+  static Capacities capacities_of(const HalfedgeMesh& mesh);
+  Capacities left_;  // the id capacities of the mesh the last phase left
   LoopState loop_;
   CatmullClarkState catmull_clark_;
   LinearState linear_;

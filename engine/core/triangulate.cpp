@@ -167,7 +167,7 @@ OpResult<TriangulationReport> triangulate_mesh(HalfedgeMesh& mesh) {
   try {
     TriangulationReport report;
     HalfedgeMesh triangles = build_halfedge_mesh(triangulate(to_polygon_mesh(mesh), &report));
-    mesh = std::move(triangles);
+    mesh.replace_with(std::move(triangles));
     return {Check::yes(), report};
   } catch (const MeshError& e) {
     return {Check::no(std::string("cannot triangulate: ") + e.what()), {}};

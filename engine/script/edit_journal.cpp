@@ -59,9 +59,7 @@ std::optional<std::string> EditJournal::undo(HalfedgeMesh& mesh) {
     drop();
     throw;
   }
-  const uint64_t seen = mesh.version();
-  mesh = std::move(state);
-  mesh.bump_version_above(seen);
+  mesh.replace_with(std::move(state));
   redo_.push_back(applied_);
   applied_ = op;
   version_ = mesh.version();
@@ -79,9 +77,7 @@ std::optional<std::string> EditJournal::redo(HalfedgeMesh& mesh) {
     drop();
     throw;
   }
-  const uint64_t seen = mesh.version();
-  mesh = std::move(state);
-  mesh.bump_version_above(seen);
+  mesh.replace_with(std::move(state));
   redo_.pop_back();
   applied_ = target;
   version_ = mesh.version();

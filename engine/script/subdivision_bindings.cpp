@@ -138,9 +138,9 @@ int phases_step(lua_State* L) {
                                  std::to_string(phase - 1) + "; phases:restart() starts again at phase 1");
     }
     begin_change(L, box.mesh, true);
-    phases.run_next(*box.mesh);
+    if (const Check check = phases.run_next(*box.mesh); !check) return push_refusal(L, check.reason);
     RecordedEdit edit = operation_edit("subdivision phase", ElementRef(), ElementRef());
-    if (recorded(L, box.mesh.get())) edit.state = std::make_shared<const HalfedgeMesh>(*box.mesh);
+    edit.state = std::make_shared<const HalfedgeMesh>(*box.mesh);  // what redo and a replay put back
     end_change(L, box.mesh, std::move(edit));
     if (!phases.computed()) box.release();
   }

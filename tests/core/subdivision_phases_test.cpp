@@ -111,6 +111,24 @@ TEST(SubdivisionPhases, RestartDropsWhatPhaseOneComputed) {
   EXPECT_EQ(phases.catmull_clark_state(), nullptr);
 }
 
+// A later phase given another mesh (here one level of linear subdivision made in between, which a caller should have
+// noticed) refuses and starts again rather than read past what phase 1 computed; the whole-mesh operations move the
+// mesh's version on, so callers do notice.
+TEST(SubdivisionPhases, ALaterPhaseRefusesAnotherMesh) {
+  HalfedgeMesh mesh = build_halfedge_mesh(make_cube_quads());
+  SubdivisionPhases phases(SubdivisionScheme::CatmullClark);
+  ASSERT_TRUE(phases.run_next(mesh).ok);
+  const uint64_t seen = mesh.version();
+  ASSERT_TRUE(linear_subdivide(mesh).ok);
+  EXPECT_GT(mesh.version(), seen);
+  const HalfedgeMesh changed = mesh;
+  const Check check = phases.run_next(mesh);
+  EXPECT_FALSE(check.ok);
+  EXPECT_EQ(check.reason, "the mesh changed after Catmull-Clark phase 1; the phases start again at phase 1");
+  EXPECT_EQ(phases.next_phase(), 1);
+  EXPECT_TRUE(mesh.same_as(changed));
+}
+
 TEST(SubdivisionPhases, NamesAndLabels) {
   for (SubdivisionScheme scheme :
        {SubdivisionScheme::Loop, SubdivisionScheme::CatmullClark, SubdivisionScheme::Linear}) {

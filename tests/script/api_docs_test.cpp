@@ -58,6 +58,7 @@ const std::map<std::string, std::vector<std::string>> kSamples = {
     {"vec3", {"meshedit.vec3(1, 2, 3)"}},
     {"Curve", {"meshedit.curve({{0, 0, 0}, {1, 1, 0}, {2, 0, 0}})"}},
     {"Patch", {"P"}},
+    {"SubdivisionPhases", {"m:subdivision_phases('loop')", "m:subdivision_phases('catmull-clark')"}},
     {"meshedit", {"meshedit"}},
 };
 

@@ -549,9 +549,9 @@ step("Bad show", function() show(42) end)
 function in_own_coroutine(f) error(select(2, coroutine.resume(coroutine.create(f))), 0) end
 )lua")));
   const Strings expected = {
-      "lesson.lua:1: wait_for: say what to wait for: key, click, selection, condition or button",
-      "lesson.lua:2: wait_for: wait for one thing at a time (key, click, selection, condition or button)",
-      "lesson.lua:3: wait_for: unknown field 'keys' (fields: key, click, selection, condition, button, hint)",
+      "lesson.lua:1: wait_for: say what to wait for: key, command, click, selection, condition or button",
+      "lesson.lua:2: wait_for: wait for one thing at a time (key, command, click, selection, condition or button)",
+      "lesson.lua:3: wait_for: unknown field 'keys' (fields: key, command, click, selection, condition, button, hint)",
       "lesson.lua:4: wait_for: click must be an element kind (vertex, halfedge, edge, face, boundary), an id like "
       "\"e7\", an element or \"any\"; got 'corner'",
       "lesson.lua:5: unknown colour 'mauve' (use red, green, blue, yellow, orange, magenta, pink, cyan, purple, "

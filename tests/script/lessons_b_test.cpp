@@ -455,7 +455,7 @@ EdgeId edge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
 // back from mesh:catmull_clark() by the documented id layout), and every count, the linear mesh and the three
 // levels are the core's too.
 TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
-  const std::string text = run_headless("7_catmull_clark", 7);
+  const std::string text = run_headless("7_catmull_clark", 8);
   const HalfedgeMesh cube = build_halfedge_mesh(make_cube_quads());
   const OpResult<CatmullClarkState> state = catmull_clark_compute_points(cube);
   ASSERT_TRUE(state.ok());
@@ -496,6 +496,24 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
                                  " quads.")) << text;
   EXPECT_TRUE(contains(text, "so the 24 corners of the old faces give " + std::to_string(once.num_faces()) +
                                  " quads and E' = 2E + 24 = " + std::to_string(once.num_edges()) + " edges.")) << text;
+  // The app's phases (the answers' {subdivide_phase = "catmull-clark"}, three times): what each phase left, as the
+  // core's phases leave it.
+  HalfedgeMesh stepped = cube;
+  catmull_clark_refine(stepped, state.value);
+  const VertexId new_vertex(uint32_t(cube.num_vertices() + e.index));
+  EXPECT_EQ(stepped.position(new_vertex), midpoint);
+  EXPECT_TRUE(contains(text, "  > catmull-clark phase 1/3: compute face, edge and vertex points\n")) << text;
+  EXPECT_TRUE(contains(text, "Phase 1 computed 6 face points, 12 edge points and 8 vertex points, and nothing "
+                             "moved: the edge point of " + format_id(e) + " is " + lesson_point(edge_point) +
+                             ", the vertex point of v0 " + lesson_point(corner) + ".")) << text;
+  EXPECT_TRUE(contains(text, "Phase 2 split the 6 faces into 24 quads. The new vertex " + format_id(new_vertex) +
+                             " sits at " + lesson_point(midpoint) + ", the midpoint")) << text;
+  catmull_clark_commit_positions(stepped, state.value);
+  EXPECT_TRUE(stepped.same_as(once));
+  EXPECT_TRUE(contains(text, "Phase 3 moved every vertex to its point: " + format_id(new_vertex) + " to " +
+                             lesson_point(stepped.position(new_vertex)) + ", the edge point, and v0 to " +
+                             lesson_point(stepped.position(VertexId(0))) + ", its vertex point. One level done: " +
+                             lesson_counts(stepped) + ".")) << text;
   HalfedgeMesh tetrahedron = build_halfedge_mesh(make_tetrahedron());
   ASSERT_TRUE(catmull_clark_subdivide(tetrahedron).ok);
   for (FaceId f : tetrahedron.faces()) EXPECT_EQ(tetrahedron.degree(f), 4u) << format_id(f);
@@ -698,8 +716,8 @@ TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
     EXPECT_TRUE(contains(text, "> click f" + std::to_string(all_fixed.report.spots[i].faces[0]) + ": right")) << text;
   }
 
-  // Triangulate: Loop's refusal of the quads, and the counts before and after.
-  HalfedgeMesh quads = build_halfedge_mesh(make_cube_quads());
+  // Triangulate: Loop's refusal of Suzanne's quads (the Blender export the app ships), and the counts before and after.
+  HalfedgeMesh quads = build_halfedge_mesh(load_mesh(testing::source_dir() / "assets" / "suzanne.obj"));
   HalfedgeMesh refused = quads;
   const Check loop_quads = loop_subdivide(refused);
   ASSERT_FALSE(loop_quads.ok);
@@ -708,12 +726,12 @@ TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
   const OpResult<TriangulationReport> split = triangulate_mesh(triangles);
   ASSERT_TRUE(split.ok());
   EXPECT_TRUE(contains(text, "> answer " + std::to_string(triangles.num_faces()) + ": right")) << text;
-  // The student's Edit > Triangulate on the cube on screen (the answers' {triangulate = true}).
+  // The student's Edit > Triangulate on the mesh on screen (the answers' {triangulate = true}).
   EXPECT_TRUE(contains(text, "  > triangulate\n")) << text;
   EXPECT_TRUE(contains(text, "Triangulate split " + std::to_string(split.value.polygons_split) + " faces: " +
                                  lesson_counts(quads) + " before, " + lesson_counts(triangles) + " after.")) << text;
 
-  // Subdivide: L on the triangulated cube, then Catmull-Clark's and Linear's counts.
+  // Subdivide: L on the triangulated Suzanne, then Catmull-Clark's and Linear's counts.
   HalfedgeMesh loop = triangles;
   ASSERT_TRUE(loop_subdivide(loop).ok);
   EXPECT_TRUE(contains(text, "Loop: " + lesson_counts(loop) + ".")) << text;

@@ -79,12 +79,12 @@ TEST(SubdivisionPhaseBindings, RefusalsSayWhyAndChangeNothing) {
             (Strings{"nil", can_loop_subdivide(start).reason, "1"}));
   EXPECT_TRUE(s.mesh->same_as(start));
   // A change between phases: refused until restart().
-  EXPECT_EQ(s.run("p = m:subdivision_phases('catmull-clark') p:step() m:split(m:edge(0))\n"
+  EXPECT_EQ(s.run("p = m:subdivision_phases('catmull-clark') p:step() m:linear_subdivide()\n"
                   "return p:step()"),
             (Strings{"nil", "the mesh changed after Catmull-Clark phase 1; phases:restart() starts again at phase 1"}));
   EXPECT_EQ(s.run("p:restart() return p.next_phase, p:points(), (p:step())"), (Strings{"1", "nil", "1"}));
   EXPECT_EQ(s.error("m:subdivision_phases('cc')"),
-            "t.lua:1: bad argument #2 to 'subdivision_phases' (expected \"loop\", \"catmull-clark\" or \"linear\")");
+            "t.lua:1: bad argument #1 to 'subdivision_phases' (expected \"loop\", \"catmull-clark\" or \"linear\")");
   EXPECT_EQ(s.run("return tostring(m:subdivision_phases('linear'))"),
             Strings{"linear phases (next: Linear 1/2: compute edge midpoints and face centres)"});
 }
