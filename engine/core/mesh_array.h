@@ -1,6 +1,6 @@
 // MeshArray<T>: the storage of every per-element array of HalfedgeMesh (and of the renderer's slot arrays): a
-// vector of trivially copyable elements on big_blocks (big_blocks.h), so an array of 4 MiB or more lives on huge
-// pages and grows by moving its pages rather than copying its bytes.
+// vector of trivially copyable elements on big_blocks (big_blocks.h), so on Linux an array of 4 MiB or more lives on
+// huge pages and grows by moving its pages rather than copying its bytes (elsewhere: the C heap, page_memory.h).
 //
 // It offers the part of std::vector the mesh uses, with the same meaning, plus resize_for_overwrite(n): new
 // elements whose bytes are left unset, for a pass that writes every one of them before any is read (fresh pages are

@@ -43,8 +43,8 @@ struct Corners {
   std::pair<const uint32_t*, const uint32_t*> find(uint32_t u, uint32_t v) const {
     const uint32_t* first = out.data() + out_start[u];
     const uint32_t* last = out.data() + out_start[u + 1];
-    auto lo = std::lower_bound(first, last, v, [&](uint32_t h, uint32_t key) { return head(h) < key; });
-    auto hi = std::upper_bound(lo, last, v, [&](uint32_t key, uint32_t h) { return key < head(h); });
+    const auto* lo = std::lower_bound(first, last, v, [&](uint32_t h, uint32_t key) { return head(h) < key; });
+    const auto* hi = std::upper_bound(lo, last, v, [&](uint32_t key, uint32_t h) { return key < head(h); });
     return {lo, hi};
   }
 
@@ -124,8 +124,8 @@ Corners make_corners(const PolygonMesh& in) {
   auto [fwd_lo, fwd_hi] = c.find(u, v);
   auto [rev_lo, rev_hi] = c.find(v, u);
   std::vector<uint32_t> faces;
-  for (auto* h = fwd_lo; h != fwd_hi; ++h) faces.push_back(c.face_of[*h]);
-  for (auto* h = rev_lo; h != rev_hi; ++h) faces.push_back(c.face_of[*h]);
+  for (const auto* h = fwd_lo; h != fwd_hi; ++h) faces.push_back(c.face_of[*h]);
+  for (const auto* h = rev_lo; h != rev_hi; ++h) faces.push_back(c.face_of[*h]);
   std::sort(faces.begin(), faces.end());
   for (size_t i = 0; i < faces.size(); ++i) {
     for (size_t j = i + 1; j < faces.size(); ++j) {

@@ -27,7 +27,7 @@ struct BuildReport {
 };
 
 // Throws MeshError for input that is not a manifold surface; never changes anything else.
-HalfedgeMesh build_halfedge_mesh(const PolygonMesh& polygons, BuildReport* report = nullptr);
+HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report = nullptr);
 
 // Live vertices renumbered densely in id order, live faces in id order, each starting at its
 // face.halfedge. Throws MeshError naming the face if a face cycle does not close.

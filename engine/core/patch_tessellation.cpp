@@ -247,7 +247,7 @@ PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolut
   };
   for (size_t p = 0; p < patches.size(); ++p) {
     const size_t base = p * side * side;
-    auto id = [&](uint32_t i, uint32_t j) { return ids[base + j * side + i]; };
+    auto id = [&](uint32_t i, uint32_t j) { return ids[base + size_t(j) * side + i]; };
     for (uint32_t j = 0; j < n; ++j) {
       for (uint32_t i = 0; i < n; ++i) {
         const uint32_t a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);

@@ -23,7 +23,6 @@
 namespace meshedit {
 namespace {
 
-constexpr uint32_t kNone = kInvalidIndex;
 // Ids listed in one message, so a huge broken fan or cycle does not make a huge message.
 constexpr size_t kListCap = 8;
 
@@ -221,7 +220,11 @@ class Validator {
       const EdgeId e = m_.edge(h);
       if (m_.alive(e) && on_edge_[e.index] > 2 && lists[e.index].size() < kListCap) lists[e.index].push_back(h);
     }
-    for (const auto& [index, list] : lists) {
+    // Named variables, not structured bindings: the lambda captures them, which clang before 16 (and older Apple
+    // toolchains) refuse for bindings.
+    for (const auto& entry : lists) {
+      const uint32_t index = entry.first;
+      const std::vector<HalfedgeId>& list = entry.second;
       const EdgeId e(index);
       out_.add(Invariant::TwinEdge, e, [&] {
         return id(e) + " has " + std::to_string(on_edge_[index]) + " halfedges (" +
@@ -366,8 +369,9 @@ class Validator {
       }
       others[v.index].push_back(std::move(group));
     }
-    for (const auto& [index, groups] : others) {
-      const VertexId v(index);
+    for (const auto& entry : others) {  // not a structured binding: the lambda captures `groups` (see check_edges)
+      const std::vector<Path>& groups = entry.second;
+      const VertexId v(entry.first);
       out_.add(Invariant::VertexFan, v, [&] {
         // The first fan closed, so walking it again ends.
         Path first;

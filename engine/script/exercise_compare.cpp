@@ -463,12 +463,11 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
   }
 
   // Original vertices (they keep their ids in both) that did not move.
-  size_t originals = 0, unmoved = 0, wrong = 0;
+  size_t originals = 0, unmoved = 0;
   for (VertexId v : before.vertices()) {
     if (!mine.alive(v) || !reference.alive(v)) continue;
     ++originals;
     const bool right = close(mine.position(v), reference.position(v), tolerance);
-    wrong += right ? 0 : 1;
     if (!right && close(mine.position(v), before.position(v), tolerance)) ++unmoved;
   }
   if (unmoved > 0 && unmoved * 2 >= originals) {

@@ -96,8 +96,8 @@ struct LessonWait {
   bool hint_shown() const { return !hint.empty() && (!is_question() || tries > 0); }
   // Whether `event` is what this wait is for (never true for Condition, Animation or None).
   bool matches(const LessonEvent& event) const;
-  // Whether the selection being `element` meets this wait (Selection waits only).
-  bool selection_matches(ElementRef element) const;
+  // Whether the selection being `selected` meets this wait (Selection waits only).
+  bool selection_matches(ElementRef selected) const;
   // "key F", "the command linear (Subdivide > Linear subdivision)", "a click on a vertex", "a click on e7", "the
   // selection of an edge", "the selection of e7",
   // "a condition", "the Continue button", "an animation (2 s)", "a choice (h1, h2, h4) in 'Which...?'", "a click

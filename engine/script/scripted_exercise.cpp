@@ -82,8 +82,8 @@ struct ScriptedExerciseReader {
     x.signature_ = string_field(L, "signature", false, x.function_ + "(mesh, ...)");
     x.hint_ = string_field(L, "hint", false);
     const std::string takes = string_field(L, "takes", true);
-    const auto found = std::find_if(std::begin(kTakes), std::end(kTakes),
-                                    [&](const TakesName& t) { return takes == t.name; });
+    const auto* const found = std::find_if(std::begin(kTakes), std::end(kTakes),
+                                            [&](const TakesName& t) { return takes == t.name; });
     if (found == std::end(kTakes)) {
       raise(L, "exercise: takes must be vertex, edge, face, halfedge or mesh, got '" + takes + "'");
     }
