@@ -49,7 +49,7 @@ constexpr NamedKey kNamedKeys[] = {
     {"space", GLFW_KEY_SPACE},  {"escape", GLFW_KEY_ESCAPE}, {"grave", GLFW_KEY_GRAVE_ACCENT},
     {"equal", GLFW_KEY_EQUAL},  {"=", GLFW_KEY_EQUAL},       {"minus", GLFW_KEY_MINUS},
     {"-", GLFW_KEY_MINUS},      {"0", GLFW_KEY_0},           {"[", GLFW_KEY_LEFT_BRACKET},
-    {"]", GLFW_KEY_RIGHT_BRACKET},
+    {"]", GLFW_KEY_RIGHT_BRACKET}, {"f1", GLFW_KEY_F1},
 };
 
 KeyMods parse_key(std::string text, int& key) {
@@ -384,7 +384,7 @@ const ActionVerb kVerbs[] = {
     {"frames", 1, "frames N   the next N frames pass with no action", nullptr},
     {"quit", 0, "quit   closes the window (the script's end does too)", nullptr},
     {"key", 1, "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "
-               "0, [ or ], with ctrl+ and shift+)", press_key},
+               "0, [, ] or f1, with ctrl+ and shift+)", press_key},
     {"select", 1, "select h12   selects the element, as a click on it does", select},
     {"click", 2, "click X Y   a click at view pixels (framebuffer pixels from the view's top-left corner, as picking "
                  "counts them)", click},
