@@ -36,7 +36,9 @@ TEST(PageMemory, BlocksAreAlignedAndWritableToTheirLastByte) {
     void* p = page_memory::allocate(bytes);
     ASSERT_NE(p, nullptr);
     EXPECT_TRUE(aligned_for_scalars(p));
-    if (page_memory::starts_on_huge_pages()) EXPECT_EQ(reinterpret_cast<uintptr_t>(p) % page_memory::kHugePage, 0u);
+    if (page_memory::starts_on_huge_pages()) {
+      EXPECT_EQ(reinterpret_cast<uintptr_t>(p) % page_memory::kHugePage, 0u);
+    }
     fill(p, 0, bytes);
     EXPECT_TRUE(holds_fill(p, 0, bytes));
     page_memory::release(p, bytes);
