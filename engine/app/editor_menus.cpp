@@ -34,7 +34,7 @@ bool input_path(const char* label, std::string& text) {
 Check EditorApp::run_loop(bool one_phase) {
   const Check check = one_phase ? loop_subdivide_step(doc_, selection_, loop_weights_)
                                 : loop_subdivide_all(doc_, selection_, loop_weights_);
-  if (check) tell_lesson_command(one_phase ? "loop-phase" : "loop");
+  if (check) tell_lesson_command(subdivide_command(SubdivisionScheme::Loop, one_phase));
   return check;
 }
 
@@ -49,8 +49,7 @@ Check EditorApp::run_subdivide_command(SubdivisionScheme scheme, bool one_phase)
   Check check;
   if (one_phase) check = subdivision_step(doc_, selection_, catmull_clark ? catmull_clark_stepper_ : linear_stepper_);
   else check = catmull_clark ? catmull_clark_all(doc_, selection_) : linear_subdivide_all(doc_, selection_);
-  if (check) tell_lesson_command(one_phase ? (catmull_clark ? "catmull-clark-phase" : "linear-phase")
-                                           : (catmull_clark ? "catmull-clark" : "linear"));
+  if (check) tell_lesson_command(subdivide_command(scheme, one_phase));
   return check;
 }
 

@@ -39,6 +39,15 @@ bool same_key(const std::string& a, const std::string& b) {
   return true;
 }
 
+const char* subdivide_command(SubdivisionScheme scheme, bool one_phase) {
+  switch (scheme) {
+    case SubdivisionScheme::Loop: return one_phase ? "loop-phase" : "loop";
+    case SubdivisionScheme::CatmullClark: return one_phase ? "catmull-clark-phase" : "catmull-clark";
+    case SubdivisionScheme::Linear: return one_phase ? "linear-phase" : "linear";
+  }
+  return "";
+}
+
 const LessonCommand* find_lesson_command(std::string_view name) {
   for (const LessonCommand& command : kLessonCommands) {
     if (name == command.name) return &command;

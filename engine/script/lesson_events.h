@@ -25,6 +25,7 @@
 #include <vector>
 
 #include "core/ids.h"
+#include "core/subdivision_phases.h"
 #include "script/file_stamp.h"
 
 namespace meshedit {
@@ -44,6 +45,8 @@ inline constexpr LessonCommand kLessonCommands[] = {
     {"triangulate", "Edit > Triangulate"},
     {"open-repaired", "File > Open a repaired copy"},
 };
+// The name of the Subdivide menu's command for `scheme`, whole or its next phase ("linear", "catmull-clark-phase").
+const char* subdivide_command(SubdivisionScheme scheme, bool one_phase);
 // The command of that name, or nullptr.
 const LessonCommand* find_lesson_command(std::string_view name);
 // "loop, loop-phase, ... or open-repaired": for the message that refuses another name.

@@ -392,16 +392,8 @@ class HeadlessDriver {
   static const char* command_of(const Answer& answer) {
     switch (answer.kind) {
       case Answer::Kind::Subdivide:
-      case Answer::Kind::SubdividePhase: {
-        static const std::string kNames[][2] = {{"loop", "loop-phase"},
-                                                {"catmull-clark", "catmull-clark-phase"},
-                                                {"linear", "linear-phase"}};
-        const bool phase = answer.kind == Answer::Kind::SubdividePhase;
-        for (const auto& names : kNames) {
-          if (names[0] == answer.value) return names[phase ? 1 : 0].c_str();
-        }
-        return nullptr;
-      }
+      case Answer::Kind::SubdividePhase:
+        return subdivide_command(*scheme_named(answer.value), answer.kind == Answer::Kind::SubdividePhase);
       case Answer::Kind::Triangulate: return "triangulate";
       case Answer::Kind::OpenRepaired: return "open-repaired";
       default: return nullptr;
