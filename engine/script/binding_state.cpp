@@ -83,11 +83,6 @@ BindingState& binding_state(lua_State* L) {
   return *state;
 }
 
-MeshLimits mesh_limits(lua_State* L) {
-  const BindingState* state = find_binding_state(L);
-  return state ? state->limits : MeshLimits{};
-}
-
 void set_mesh_limits(lua_State* L, const MeshLimits& limits) {
   if (BindingState* state = find_binding_state(L)) state->limits = limits;
 }
