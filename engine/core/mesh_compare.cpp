@@ -40,8 +40,6 @@ class Collector {
   size_t cap_;
 };
 
-std::string id(ElementRef r) { return format_id(r); }
-
 std::string plural(size_t n, const char* singular, const char* many) {
   return std::to_string(n) + " " + (n == 1 ? singular : many);
 }
@@ -77,7 +75,8 @@ bool same_position(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
 void compare_pointer(Collector& out, ElementRef owner, const char* field, ElementRef yours, ElementRef reference) {
   if (yours == reference) return;
   out.add([&] {
-    return id(owner) + "." + field + " is " + id(yours) + " in yours, " + id(reference) + " in the reference";
+    return format_id(owner) + "." + field + " is " + format_id(yours) + " in yours, " + format_id(reference) +
+           " in the reference";
   });
 }
 
@@ -97,7 +96,7 @@ void compare_element(const HalfedgeMesh& y, const HalfedgeMesh& r, ElementRef e,
       compare_pointer(out, e, "halfedge", y.halfedge(v), r.halfedge(v));
       if (!same_position(y.position(v), r.position(v), tolerance)) {
         out.add([&] {
-          return id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
+          return format_id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
                  format_position(r.position(v)) + " in the reference";
         });
       }
@@ -188,16 +187,16 @@ std::string no_match(const HalfedgeMesh& from, VertexId v, const char* whose, co
                      const char* other_whose, const std::vector<VertexId>& other_partner, const char* partner_whose,
                      const char* other_name) {
   const glm::dvec3& p = from.position(v);
-  std::string s = std::string(whose) + " vertex " + id(v) + " at " + format_position(p);
+  std::string s = std::string(whose) + " vertex " + format_id(v) + " at " + format_position(p);
   if (!finite(p)) return s + " has a position that is not finite; it matches nothing";
   s += std::string(" has no match in ") + other_name;
   double distance = 0.0;
   const VertexId n = nearest(other, p, distance);
   if (!n.valid()) return s + " (which has no vertices)";
-  s += "; the nearest is " + std::string(other_whose) + " " + id(n) + " at " + format_position(other.position(n)) +
-       ", " + format_number(distance) + " away";
+  s += "; the nearest is " + std::string(other_whose) + " " + format_id(n) + " at " +
+       format_position(other.position(n)) + ", " + format_number(distance) + " away";
   if (n.index < other_partner.size() && other_partner[n.index].valid()) {
-    s += std::string(" (already matched to ") + partner_whose + " " + id(other_partner[n.index]) + ")";
+    s += std::string(" (already matched to ") + partner_whose + " " + format_id(other_partner[n.index]) + ")";
   }
   return s;
 }
@@ -216,7 +215,7 @@ Key reversed(const Key& key) { return canonical(Key(key.rbegin(), key.rend())); 
 
 std::string list(const Key& vertices) {
   std::string s;
-  for (uint32_t v : vertices) s += (s.empty() ? "" : " ") + id(VertexId(v));
+  for (uint32_t v : vertices) s += (s.empty() ? "" : " ") + format_id(VertexId(v));
   return s;
 }
 
@@ -312,7 +311,7 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
     kinds.extra->push_back(c.face);
     if (c.broken) {
       out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) +
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) +
                " cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
                "element";
       });
@@ -322,13 +321,13 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
       kinds.reversed->push_back(c.face);
       const Cycle& r = theirs[partner[i]];
       out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
-               " has the opposite orientation of reference " + kinds.noun + " " + id(r.face) + " " +
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
+               " has the opposite orientation of reference " + kinds.noun + " " + format_id(r.face) + " " +
                corners(r, "your");
       });
     } else {
       out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
                " is not in the reference";
       });
     }
@@ -339,12 +338,12 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
     kinds.missing->push_back(r.face);
     if (used[i] == 2) continue;  // reported above as the reversed partner of one of yours
     if (r.broken) {
-      out.add([&] { return std::string("reference ") + kinds.noun + " " + id(r.face) + " cannot be walked"; });
+      out.add([&] { return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " cannot be walked"; });
     } else if (r.translated.empty()) {
       ++skipped_theirs;
     } else {
       out.add([&] {
-        return std::string("reference ") + kinds.noun + " " + id(r.face) + " " + corners(r, "your") +
+        return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " " + corners(r, "your") +
                " is missing from yours";
       });
     }
@@ -386,7 +385,7 @@ EdgeEnds read_edge(const HalfedgeMesh& mesh, EdgeId e, const std::vector<VertexI
 }
 
 std::string edge_ends(const EdgeEnds& e, const char* other_whose) {
-  std::string s = "(" + id(VertexId(e.a)) + " " + id(VertexId(e.b));
+  std::string s = "(" + format_id(VertexId(e.a)) + " " + format_id(VertexId(e.b));
   Key own{e.a, e.b};
   std::sort(own.begin(), own.end());
   if (!e.translated.empty() && e.translated != own) {
@@ -419,12 +418,14 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     result.extra_edges.push_back(e.edge);
     if (e.broken) {
       out.add([&] {
-        return "your edge " + id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
+        return "your edge " + format_id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
       });
     } else if (e.translated.empty()) {
       ++skipped_mine;
     } else {
-      out.add([&] { return "your edge " + id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference"; });
+      out.add([&] {
+        return "your edge " + format_id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference";
+      });
     }
   }
   for (size_t i = 0; i < theirs.size(); ++i) {
@@ -432,11 +433,13 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     if (used[i]) continue;
     result.missing_edges.push_back(e.edge);
     if (e.broken) {
-      out.add([&] { return "reference edge " + id(e.edge) + " cannot be read"; });
+      out.add([&] { return "reference edge " + format_id(e.edge) + " cannot be read"; });
     } else if (e.translated.empty()) {
       ++skipped_theirs;
     } else {
-      out.add([&] { return "reference edge " + id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours"; });
+      out.add([&] {
+        return "reference edge " + format_id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours";
+      });
     }
   }
   if (skipped_mine + skipped_theirs > 0) {
@@ -470,9 +473,9 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
       if (in_yours && in_reference) {
         compare_element(yours, reference, e, options.position_tolerance, out);
       } else if (in_yours) {
-        out.add([&] { return "yours has " + id(e) + ", the reference does not"; });
+        out.add([&] { return "yours has " + format_id(e) + ", the reference does not"; });
       } else if (in_reference) {
-        out.add([&] { return "the reference has " + id(e) + ", yours does not"; });
+        out.add([&] { return "the reference has " + format_id(e) + ", yours does not"; });
       }
     }
   }

@@ -46,7 +46,6 @@ class Messages {
   ExerciseReport& report_;
 };
 
-std::string id(ElementRef r) { return format_id(r); }
 std::string pos(const glm::dvec3& p) { return format_position(p); }
 
 bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
@@ -205,7 +204,7 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
     std::string first;
     if (!changes.empty()) {
       const FieldChange& c = changes.front();
-      first = ": " + id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+      first = ": " + format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
     }
     out.add("vertex_normal changed the mesh" + first + " (" + std::to_string(changes.size()) +
             (changes.size() == 1 ? " change" : " changes") + "); it must only read it");
@@ -273,7 +272,9 @@ void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before
   for (HalfedgeId h : before.halfedges()) {
     if (!mine.alive(h) || !reference.alive(h)) continue;
     if (reference.next(h) == before.next(h) || mine.next(h) != before.next(h)) continue;
-    if (count++ < 3) items += (items.empty() ? "" : ", ") + id(h) + ".next is still " + id(before.next(h));
+    if (count++ < 3) {
+      items += (items.empty() ? "" : ", ") + format_id(h) + ".next is still " + format_id(before.next(h));
+    }
   }
   if (count == 0) return;
   out.add(items + (count > 3 ? " (and " + std::to_string(count - 3) + " more)" : "") + " after your " + function +
@@ -285,7 +286,7 @@ std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) 
   const std::vector<FieldChange> changes = diff(before, after);
   if (changes.empty()) return "";
   const FieldChange& c = changes.front();
-  return id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+  return format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
 }
 
 void add_comparison(const MeshComparison& c, Messages& out) {
@@ -311,7 +312,7 @@ void note_boundary_convention(ExerciseReport& report) {
   for (VertexId v : m.vertices()) {
     const HalfedgeId h = m.halfedge(v);
     if (!m.alive(h) || m.face(h).is_boundary() || !m.is_boundary(v)) continue;
-    report.notes.push_back(id(v) + " is on the boundary and its halfedge " + id(h) +
+    report.notes.push_back(format_id(v) + " is on the boundary and its halfedge " + format_id(h) +
                            " is not on the boundary loop: accepted (the course lets a vertex's halfedge be any "
                            "halfedge leaving it; MeshEdit's own operations keep a boundary vertex's on the loop)");
     return;
@@ -338,31 +339,31 @@ void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const s
 
 void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
-    return compare_refusal(input, report, "flip " + id(input.element), "flip_edge", out);
+    return compare_refusal(input, report, "flip " + format_id(input.element), "flip_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
   const EdgeId e(input.element.index);
   const Diamond q = diamond(before, e);
-  const std::string turn = id(q.a) + "-" + id(q.b) + " becomes " + id(q.d) + "-" + id(q.c);
+  const std::string turn = format_id(q.a) + "-" + format_id(q.b) + " becomes " + format_id(q.d) + "-" + format_id(q.c);
   if (mine.same_as(before)) {
     out.add("your flip_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
-            "; the reference flips " + id(e) + " (" + turn + ")");
+            "; the reference flips " + format_id(e) + " (" + turn + ")");
     report.equal = false;
     return;
   }
   add_unchanged_next(report, before, "flip_edge", out);
   add_validation(report, "flip_edge", out);
   if (report.mine.element != ElementRef(e)) {
-    out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + id(e));
+    out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + format_id(e));
   }
   for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face}) {
     for (uint32_t i = 0; i < std::max(mine.capacity(kind), before.capacity(kind)); ++i) {
       const ElementRef r(kind, i);
       if (mine.alive(r) && !before.alive(r)) {
-        out.add("your flip_edge created " + id(r) + "; a flip reuses the elements it has");
+        out.add("your flip_edge created " + format_id(r) + "; a flip reuses the elements it has");
       } else if (!mine.alive(r) && before.alive(r)) {
-        out.add("your flip_edge deleted " + id(r) + "; a flip reuses the elements it has");
+        out.add("your flip_edge deleted " + format_id(r) + "; a flip reuses the elements it has");
       }
     }
   }
@@ -372,7 +373,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
   }
   report.equal = !out.any();
   if (report.equal) {
-    note_pointer_differences(report, "a correct flip of " + id(e) + " (" + turn + ")");
+    note_pointer_differences(report, "a correct flip of " + format_id(e) + " (" + turn + ")");
     note_boundary_convention(report);
   }
 }
@@ -381,7 +382,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
 
 void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
-    return compare_refusal(input, report, "split " + id(input.element), "split_edge", out);
+    return compare_refusal(input, report, "split " + format_id(input.element), "split_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
@@ -392,7 +393,7 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
   const double tolerance = mesh_tolerance(before);
   if (mine.same_as(before)) {
     out.add("your split_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
-            "; the reference splits " + id(e) + " at its midpoint " + pos(midpoint) +
+            "; the reference splits " + format_id(e) + " at its midpoint " + pos(midpoint) +
             (before.is_boundary(e) ? " (a boundary edge: only the triangle side is split; extra credit in the course)"
                                    : ""));
     report.equal = false;
@@ -415,12 +416,13 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
         count = 4.0;
       }
       if (close(p, corners / count, tolerance)) {
-        out.add("your new vertex " + id(v) + " is at " + pos(p) + ", the average of the corners " + id(q.a) + " " +
-                id(q.b) + " " + id(q.c) + (q.d.valid() ? " " + id(q.d) : "") +
-                "; it belongs at the midpoint of " + id(q.a) + " and " + id(q.b) + ", " + pos(midpoint));
+        out.add("your new vertex " + format_id(v) + " is at " + pos(p) + ", the average of the corners " +
+                format_id(q.a) + " " + format_id(q.b) + " " + format_id(q.c) +
+                (q.d.valid() ? " " + format_id(q.d) : "") + "; it belongs at the midpoint of " + format_id(q.a) +
+                " and " + format_id(q.b) + ", " + pos(midpoint));
       } else {
-        out.add("your new vertex " + id(v) + " is at " + pos(p) + "; it belongs at the midpoint of " + id(q.a) +
-                " and " + id(q.b) + ", " + pos(midpoint));
+        out.add("your new vertex " + format_id(v) + " is at " + pos(p) + "; it belongs at the midpoint of " +
+                format_id(q.a) + " and " + format_id(q.b) + ", " + pos(midpoint));
       }
     }
     // The course: the new vertex's halfedge runs along the split edge (towards a or b).
@@ -428,16 +430,17 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
     if (mine.alive(h) && mine.alive(mine.twin(h)) && mine.alive(mine.vertex(mine.twin(h)))) {
       const glm::dvec3& to = mine.position(mine.vertex(mine.twin(h)));
       if (!close(to, before.position(q.a), tolerance) && !close(to, before.position(q.b), tolerance)) {
-        out.add(id(v) + ".halfedge is " + id(h) + ", which runs to " + id(mine.vertex(mine.twin(h))) +
-                " across a face; the new vertex's halfedge must run along the split edge (towards " + id(q.a) +
-                " or " + id(q.b) + ")");
+        out.add(format_id(v) + ".halfedge is " + format_id(h) + ", which runs to " +
+                format_id(mine.vertex(mine.twin(h))) +
+                " across a face; the new vertex's halfedge must run along the split edge (towards " + format_id(q.a) +
+                " or " + format_id(q.b) + ")");
       }
     }
   }
   if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
   report.equal = !out.any();
   if (report.equal) {
-    note_pointer_differences(report, "a correct split of " + id(e));
+    note_pointer_differences(report, "a correct split of " + format_id(e));
     note_boundary_convention(report);
   }
 }
@@ -510,7 +513,7 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
   }
   const auto ends = [&](EdgeId e) {
     const HalfedgeId h = mine.halfedge(e);
-    return id(e) + " (" + id(mine.vertex(h)) + " " + id(mine.vertex(mine.twin(h))) + ")";
+    return format_id(e) + " (" + format_id(mine.vertex(h)) + " " + format_id(mine.vertex(mine.twin(h))) + ")";
   };
   if (old_old > 0) {
     out.add(std::to_string(old_old) + " of your edges join two original vertices, e.g. " + ends(example[1]) +
@@ -603,7 +606,7 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
     report.equal = false;
     return;
   }
-  const std::string what = std::string(function) + (input.element.valid() ? " on " + id(input.element) : "");
+  const std::string what = std::string(function) + (input.element.valid() ? " on " + format_id(input.element) : "");
   if (!report.reference.refused.empty()) {
     return compare_refusal(input, report, "change the mesh in " + what, function, out);
   }
