@@ -40,10 +40,6 @@ class Collector {
   size_t cap_;
 };
 
-std::string plural(size_t n, const char* singular, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? singular : many);
-}
-
 void compare_counts(const HalfedgeMesh& yours, const HalfedgeMesh& reference, Collector& out) {
   struct Count {
     size_t yours, reference;

@@ -1,4 +1,4 @@
-// Shortest round-trip printing of doubles (see value_format.h).
+// Shortest round-trip printing of doubles, counts with their nouns (see value_format.h).
 #include "core/value_format.h"
 
 #include <charconv>
@@ -23,6 +23,10 @@ std::string format_number(double x) {
 
 std::string format_position(const glm::dvec3& p) {
   return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
+}
+
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 }  // namespace meshedit

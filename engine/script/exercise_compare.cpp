@@ -206,8 +206,8 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
       const FieldChange& c = changes.front();
       first = ": " + format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
     }
-    out.add("vertex_normal changed the mesh" + first + " (" + std::to_string(changes.size()) +
-            (changes.size() == 1 ? " change" : " changes") + "); it must only read it");
+    out.add("vertex_normal changed the mesh" + first + " (" + plural(changes.size(), "change", "changes") +
+            "); it must only read it");
   }
   report.equal = !out.any();
   report.identical = report.equal && bitwise_equal(got, want);
@@ -248,8 +248,8 @@ void add_validation(const ExerciseReport& report, const char* function, Messages
   for (size_t i = 0; i < v.violations.size(); ++i) {
     std::string message = v.violations[i].message;
     if (i == 0) {
-      message = "after your " + std::string(function) + " the mesh is not valid (" + std::to_string(v.total) +
-                (v.total == 1 ? " problem" : " problems") + "): " + message;
+      message = "after your " + std::string(function) + " the mesh is not valid (" +
+                plural(v.total, "problem", "problems") + "): " + message;
     }
     out.add(message);
   }

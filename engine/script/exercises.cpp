@@ -195,7 +195,7 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
         }
         out.points.push_back(p);
       }
-      out.returned = "a list of " + std::to_string(n) + (n == 1 ? " point" : " points");
+      out.returned = "a list of " + plural(n, "point", "points");
       return;
     }
     case Exercise::PatchEvaluate:
@@ -295,8 +295,7 @@ std::string ExerciseInput::describe(Exercise exercise) const {
            std::to_string(mesh->num_faces()) + " faces";
   };
   switch (exercise) {
-    case Exercise::CurveStep:
-      return std::to_string(points.size()) + (points.size() == 1 ? " point" : " points") + ", t = " + format_number(t);
+    case Exercise::CurveStep: return plural(points.size(), "point", "points") + ", t = " + format_number(t);
     case Exercise::PatchEvaluate: return "(u, v) = (" + format_number(u) + ", " + format_number(v) + ")";
     case Exercise::VertexNormal:
     case Exercise::FlipEdge:
@@ -564,7 +563,7 @@ ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   switch (exercise) {
     case Exercise::CurveStep:
       out.points = de_casteljau_step(std::span<const glm::dvec3>(input.points), input.t);
-      out.returned = "a list of " + std::to_string(out.points.size()) + (out.points.size() == 1 ? " point" : " points");
+      out.returned = "a list of " + plural(out.points.size(), "point", "points");
       return out;
     case Exercise::PatchEvaluate:
       out.points = {evaluate_patch(input.patch, input.u, input.v)};

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <map>
 
+#include "core/value_format.h"
+
 namespace meshedit {
 namespace {
 
@@ -192,8 +194,8 @@ UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
         if (!first_late) first_late = i;
       }
       if (late > 0) {
-        add(std::to_string(late) + (late == 1 ? " write of " : " writes of ") + upsample_phase_title(p) +
-            (late == 1 ? " comes" : " come") + " after " + upsample_phase_title(q) + " began at " +
+        add(plural(late, "write", "writes") + " of " + upsample_phase_title(p) + (late == 1 ? " comes" : " come") +
+            " after " + upsample_phase_title(q) + " began at " +
             write_text(sq.first, edits[sq.first]) + " (first: " + write_text(*first_late, edits[*first_late]) + ")");
       }
     }
@@ -201,7 +203,7 @@ UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
   if (out.other_writes > 0) {
     const auto other = std::find(out.phase_of.begin(), out.phase_of.end(), UpsamplePhase::Other);
     const size_t i = size_t(other - out.phase_of.begin());
-    add(std::to_string(out.other_writes) + (out.other_writes == 1 ? " write is" : " writes are") +
+    add(plural(out.other_writes, "write is", "writes are") +
         " not part of Loop subdivision (first: " + write_text(i, edits[i]) + ", " + describe(edits[i]) + ")");
   }
   return out;

@@ -27,13 +27,10 @@
 #include "core/parallel_for.h"
 #include "core/patch_check.h"
 #include "core/quick_check.h"
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
-
-std::string plural(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
 
 // The status line for `last` ("flip e5: 12 fields changed").
 std::string change_summary(const LastChange& last, const DocumentLimits& limits) {
