@@ -1,9 +1,10 @@
-// Printing numbers, positions, and counts for people, tests and diffs: the one place each of them is written.
+// Printing numbers, positions, counts and sizes for people, tests and diffs: the one place each of them is written.
 //
 // Invariants:
 // - A double's text is the shortest that reads back to exactly the same double (std::to_chars without a
 //   precision), so two values print alike only when they are equal: a diff never shows "0.1 -> 0.1".
 //   Special values print as "nan", "-nan", "inf", "-inf"; negative zero prints as "-0".
+// - A byte size is rounded up, so a size or a sum never reads as less than a limit it exceeds.
 #pragma once
 
 #include <cstddef>
@@ -21,5 +22,7 @@ void append_number(std::string& out, double x);
 std::string format_position(const glm::dvec3& p);
 // "1 face", "12 faces": the count and the noun that agrees with it (`one` for exactly 1, else `many`).
 std::string plural(size_t n, const char* one, const char* many);
+// "12 KB" below a megabyte (2^20 bytes), else "300 MB".
+std::string format_bytes(size_t bytes);
 
 }  // namespace meshedit

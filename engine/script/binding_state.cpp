@@ -7,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include "core/value_format.h"
 #include "script/edit_recorder.h"
 
 namespace meshedit {
@@ -18,12 +19,6 @@ const char kStateKey = 0;
 int state_gc(lua_State* L) {
   static_cast<BindingState*>(lua_touserdata(L, 1))->~BindingState();
   return 0;
-}
-
-// "12 KB" below a megabyte, else "300 MB", rounded up (so a sum never reads as less than the limit).
-std::string format_bytes(size_t bytes) {
-  if (bytes < (size_t(1) << 20)) return std::to_string((bytes + 1023) >> 10) + " KB";
-  return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20) + " MB";
 }
 
 // Appends `edit` to every recorder listening to `mesh`, with `where` found once for all of them.

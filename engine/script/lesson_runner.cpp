@@ -59,8 +59,7 @@ std::string error_text(lua_State* co, const LuaLimits& limits) {
   // leaves in place, still says where it was.
   if (message == "not enough memory") {
     const std::string where = lesson_where(co, 0);
-    message = (where.empty() ? "" : where + ": ") + "memory limit exceeded (" +
-              std::to_string(limits.memory_bytes >> 20) + " MB)";
+    message = (where.empty() ? "" : where + ": ") + memory_limit_message(limits.memory_bytes);
   }
   return message;
 }

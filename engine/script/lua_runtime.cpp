@@ -9,6 +9,7 @@
 
 #include <lua.hpp>
 
+#include "core/value_format.h"
 #include "script/exception_text.h"
 #include "script/mesh_bindings.h"
 
@@ -35,12 +36,6 @@ int to_strings(lua_State* L) {
   return n;
 }
 
-std::string megabytes(size_t bytes) {
-  std::ostringstream s;
-  s << (bytes >> 20) << " MB";
-  return s.str();
-}
-
 // Keeps only the listed fields of the table on top of the stack.
 void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
   std::vector<std::string> drop;
@@ -60,6 +55,8 @@ void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
 }
 
 }  // namespace
+
+std::string memory_limit_message(size_t bytes) { return "memory limit exceeded (" + format_bytes(bytes) + ")"; }
 
 LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   L_ = lua_newstate(&LuaRuntime::allocate, this);
@@ -129,7 +126,7 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
           "instruction budget exceeded (" + std::to_string(self->limits_.instructions) + " instructions)";
       self->kill_limit_ = ScriptError::Limit::Instructions;
     } else if (self->memory_hit_) {
-      self->kill_message_ = "memory limit exceeded (" + megabytes(self->limits_.memory_bytes) + ")";
+      self->kill_message_ = memory_limit_message(self->limits_.memory_bytes);
       self->kill_limit_ = ScriptError::Limit::Memory;
     } else if (std::chrono::steady_clock::now() > self->deadline_) {
       std::ostringstream s;
@@ -366,7 +363,7 @@ void LuaRuntime::throw_error(int base, bool end_window) {
   lua_settop(L_, base);
   // A memory error skips the message handler: give it the place and the reason it really has.
   if (memory_hit_ && !killed_ && message == "not enough memory") {
-    message = memory_hit_where_ + "memory limit exceeded (" + megabytes(limits_.memory_bytes) + ")";
+    message = memory_hit_where_ + memory_limit_message(limits_.memory_bytes);
   }
   const ScriptError::Limit limit = limit_hit();
   lua_sethook(L_, nullptr, 0, 0);

@@ -71,6 +71,9 @@ struct LuaLimits {
   double wall_seconds = 60.0;              // per run
 };
 
+// "memory limit exceeded (32 MB)": what a run stopped by the memory cap of `bytes` says, wherever it was stopped.
+std::string memory_limit_message(size_t bytes);
+
 class LuaRuntime {
  public:
   static constexpr int kHookInterval = 1000;
