@@ -52,9 +52,7 @@ const std::vector<LessonJudgement> kNoAnswers;
 const LessonJudgement kNoJudgement;
 
 std::string error_text(lua_State* co, const LuaLimits& limits) {
-  std::string message;
-  if (lua_type(co, -1) == LUA_TSTRING) message = lua_tostring(co, -1);
-  else message = std::string("(error object is a ") + luaL_typename(co, -1) + " value)";
+  std::string message = error_value_text(co, -1);
   // A memory error carries no position (Lua builds no message for it): the coroutine's stack, which an error
   // leaves in place, still says where it was.
   if (message == "not enough memory") {

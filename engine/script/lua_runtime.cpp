@@ -18,11 +18,15 @@ namespace {
 
 LuaRuntime* runtime_of(lua_State* L) { return *static_cast<LuaRuntime**>(lua_getextraspace(L)); }
 
-// Message handler: keeps strings, names the type of anything else. It never calls __tostring, so an error
-// object cannot run script code outside the limits' reach.
+// How an error value that is not a string reads (error_value_text): kNotStringBefore, its type, kNotStringAfter.
+constexpr char kNotStringBefore[] = "(error object is a ";
+constexpr char kNotStringAfter[] = " value)";
+
+// Message handler: error_value_text, made by Lua (a C++ exception must not cross into Lua). It never calls
+// __tostring, so an error object cannot run script code outside the limits' reach.
 int message_handler(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING) return 1;
-  lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  lua_pushfstring(L, "%s%s%s", kNotStringBefore, luaL_typename(L, 1), kNotStringAfter);
   return 1;
 }
 
@@ -55,6 +59,11 @@ void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
 }
 
 }  // namespace
+
+std::string error_value_text(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TSTRING) return lua_tostring(L, index);
+  return kNotStringBefore + std::string(luaL_typename(L, index)) + kNotStringAfter;
+}
 
 std::string memory_limit_message(size_t bytes) { return "memory limit exceeded (" + format_bytes(bytes) + ")"; }
 
@@ -357,9 +366,7 @@ ScriptError::Limit LuaRuntime::limit_hit() const {
 }
 
 void LuaRuntime::throw_error(int base, bool end_window) {
-  std::string message;
-  if (lua_type(L_, -1) == LUA_TSTRING) message = lua_tostring(L_, -1);
-  else message = std::string("(error object is a ") + luaL_typename(L_, -1) + " value)";
+  std::string message = error_value_text(L_, -1);
   lua_settop(L_, base);
   // A memory error skips the message handler: give it the place and the reason it really has.
   if (memory_hit_ && !killed_ && message == "not enough memory") {

@@ -71,6 +71,9 @@ struct LuaLimits {
   double wall_seconds = 60.0;              // per run
 };
 
+// The Lua error value at `index` as text: a string as it is, anything else named by its type ("(error object is a
+// table value)"). Never calls __tostring, which is script code and would run outside the limits' reach.
+std::string error_value_text(lua_State* L, int index);
 // "memory limit exceeded (32 MB)": what a run stopped by the memory cap of `bytes` says, wherever it was stopped.
 std::string memory_limit_message(size_t bytes);
 
