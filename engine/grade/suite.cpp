@@ -4,14 +4,13 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <type_traits>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "grade/expectations.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
@@ -227,11 +226,9 @@ struct SuiteApi {
     const std::filesystem::path path = s.folder_ / name;
     std::string text;
     {
-      std::ifstream in(path, std::ios::binary);
-      if (!in) return luaL_error(L, "include: cannot open %s", path.string().c_str());
-      std::ostringstream buffer;
-      buffer << in.rdbuf();
-      text = buffer.str();
+      FileBytes file = read_file_bytes(path);
+      if (!file.ok()) return luaL_error(L, "include: cannot open %s", path.string().c_str());
+      text = std::move(file.bytes);
     }
     const std::string chunk = "@" + (std::filesystem::path(s.chunk_folder_) / name).generic_string();
     if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return lua_error(L);
@@ -421,15 +418,13 @@ Suite::Suite() = default;
 Suite::~Suite() = default;
 
 std::unique_ptr<Suite> Suite::load(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw GradeError("cannot open the suite " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw GradeError("cannot open the suite " + path.string());
   std::filesystem::path folder = path.parent_path();
   if (folder.empty()) folder = ".";
   // Named by the path as given, as lua.c names scripts: "suites/curve.lua" must not read like the student's
   // curve.lua in messages.
-  return from_text(text.str(), path.generic_string(), std::filesystem::absolute(folder).lexically_normal());
+  return from_text(file.bytes, path.generic_string(), std::filesystem::absolute(folder).lexically_normal());
 }
 
 std::unique_ptr<Suite> Suite::from_text(std::string_view text, const std::string& chunk_name,

@@ -15,6 +15,7 @@
 #include <glm/matrix.hpp>
 #include <tiny_gltf.h>
 
+#include "core/file_bytes.h"
 #include "core/finite.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
@@ -78,7 +79,7 @@ std::string trimmed(std::string text) {
 tinygltf::Model load_model(std::string_view bytes, const std::string& name, const std::filesystem::path& base_dir,
                            bool binary) {
   if (bytes.empty()) throw FileError(name, "", "file is empty");
-  if (bytes.size() > kMaxFileBytes) throw FileError(name, "", "file is too large");
+  if (bytes.size() > kMaxReadFileBytes) throw FileError(name, "", "file is too large");
   FilePolicy policy{!base_dir.empty()};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&file_exists, &keep_path, &read_whole_file, &refuse_write, &policy});

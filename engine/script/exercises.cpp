@@ -11,13 +11,12 @@
 #include "script/exercises.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <new>
 #include <stdexcept>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
@@ -386,10 +385,9 @@ void StudentCode::run_protected(int closure_ref) {
 }
 
 void StudentCode::load(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + file.string());
-  // Read into the string directly: a stream's << would swallow std::bad_alloc and leave the text cut short.
-  std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  FileBytes source = read_file_bytes(file);
+  if (!source.ok()) throw ScriptError("cannot open " + file.string());
+  std::string code = std::move(source.bytes);
   if (!code.empty() && code[0] == '#') code = "--" + code;  // a shebang line, as lua.c skips it
   const std::string name = file.filename().string();
 

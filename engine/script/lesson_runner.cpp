@@ -16,11 +16,10 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <fstream>
-#include <iterator>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "script/exception_text.h"
 #include "script/lesson_api.h"
 #include "script/lesson_displays.h"
@@ -152,9 +151,9 @@ bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) 
 
 std::string LessonRunner::read_and_run(Prepared& lesson) {
   const std::filesystem::path& path = lesson.path;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "cannot open " + path.string();
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  FileBytes file = read_file_bytes(path);
+  if (!file.ok()) return "cannot open " + path.string();
+  std::string text = std::move(file.bytes);
   if (!text.empty() && text[0] == '#') text = "--" + text;  // a shebang line, as lua.c skips it
   const std::string chunk = path.filename().string();
 

@@ -3,12 +3,12 @@
 #include "script/lua_runtime.h"
 
 #include <cstring>
-#include <fstream>
 #include <new>
 #include <sstream>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "core/value_format.h"
 #include "script/exception_text.h"
 #include "script/mesh_bindings.h"
@@ -421,11 +421,9 @@ std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std
 }
 
 void LuaRuntime::run_file(const std::filesystem::path& path, const std::vector<std::string>& args) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string code = text.str();
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw ScriptError("cannot open " + path.string());
+  const std::string& code = file.bytes;
 
   lua_settop(L_, 0);
   lua_createtable(L_, static_cast<int>(args.size()), 1);
