@@ -81,11 +81,11 @@ Submission Submission::read(const fs::path& folder) {
       s.notes_.push_back("several files are called " + name + "; used " + chosen.relative);
     }
     const auto size = fs::file_size(chosen.path, ec);
-    if (ec || size > kMaxFileBytes) {
-      s.notes_.push_back(name + " is larger than " + std::to_string(kMaxFileBytes >> 10) + " KB: skipped");
+    if (ec || size > kMaxSubmittedFileBytes) {
+      s.notes_.push_back(name + " is larger than " + std::to_string(kMaxSubmittedFileBytes >> 10) + " KB: skipped");
       continue;
     }
-    FileBytes file = read_file_bytes(chosen.path, kMaxFileBytes);
+    FileBytes file = read_file_bytes(chosen.path, kMaxSubmittedFileBytes);
     if (!file.ok()) {
       s.notes_.push_back(name + " could not be read");
       continue;
