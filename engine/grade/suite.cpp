@@ -523,6 +523,7 @@ RunEnd end_for_limit(ScriptError::Limit limit, RunEnd otherwise) {
     case ScriptError::Limit::Instructions:
     case ScriptError::Limit::Time: return RunEnd::Timeout;
     case ScriptError::Limit::Memory: return RunEnd::Memory;
+    case ScriptError::Limit::Changes:
     case ScriptError::Limit::None: break;
   }
   return otherwise;

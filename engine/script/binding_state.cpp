@@ -9,6 +9,7 @@
 
 #include "core/value_format.h"
 #include "script/edit_recorder.h"
+#include "script/lua_runtime.h"
 
 namespace meshedit {
 namespace {
@@ -35,6 +36,7 @@ void notify_recorders(BindingState& state, lua_State* L, const HalfedgeMesh* mes
 void begin_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, bool operation) {
   for (const EditRecorder* recorder : state.recorders) {
     if (recorder->watches(mesh.get()) && recorder->full()) {
+      LuaRuntime::note_cap(L);
       luaL_error(L, "more than %d changes recorded; is there a loop that never ends?", int(recorder->max_edits()));
     }
   }
@@ -128,6 +130,7 @@ std::shared_ptr<HalfedgeMesh> copy_mesh(lua_State* L, const HalfedgeMesh& source
 void check_room(lua_State* L, const HalfedgeMesh& mesh, ElementKind kind, size_t count, const char* what) {
   const uint32_t cap = binding_state(L).limits.elements_per_kind;
   if (size_t(mesh.capacity(kind)) + count > cap) {
+    LuaRuntime::note_cap(L);
     luaL_error(L, "%s: the mesh already has %d %s ids; scripts may make at most %d", what, int(mesh.capacity(kind)),
                kind_name(kind), int(cap));
   }

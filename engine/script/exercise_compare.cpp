@@ -640,15 +640,11 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
   if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
 }
 
-// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish is explained from where
-// it was stopped and what it had done (upsample_runaway.h), its line first.
+// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish (a limit or a cap stopped
+// it) is explained from where it was stopped and what it had done (upsample_runaway.h), its line first.
 void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
   const std::string& error = report.mine.error;
-  const bool unfinished = error.find("instruction budget exceeded") != std::string::npos ||
-                          error.find("time limit exceeded") != std::string::npos ||
-                          error.find("memory limit exceeded") != std::string::npos ||
-                          error.find("scripts may make at most") != std::string::npos ||
-                          error.find("changes recorded") != std::string::npos;
+  const bool unfinished = report.mine.limit != ScriptError::Limit::None;
   if (unfinished && exercise == Exercise::Upsample && input.mesh) {
     out.add(explain_unfinished_upsample(error, *input.mesh, report.mine.mesh.get(), report.mine.edits));
   } else {

@@ -472,6 +472,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   } catch (const ScriptError& e) {
     out.error = e.what();
     out.out_of_memory = e.out_of_memory();
+    out.limit = e.limit();
     return out;
   }
   lua_State* L = runtime_->state();
@@ -517,6 +518,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   } catch (const ScriptError& e) {
     out.error = e.what();
     out.out_of_memory = e.out_of_memory();
+    out.limit = e.limit();
   }
   output_ = nullptr;
   if (recorder) {

@@ -107,6 +107,8 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
 
 void LuaRuntime::note_out_of_memory(lua_State* L) noexcept { runtime_of(L)->out_of_memory_ = true; }
 
+void LuaRuntime::note_cap(lua_State* L) noexcept { runtime_of(L)->cap_hit_ = true; }
+
 void LuaRuntime::note_memory_hit() {
   if (memory_hit_ || !L_) {
     memory_hit_ = true;
@@ -342,6 +344,7 @@ void LuaRuntime::start_budget() {
   kill_message_.clear();
   memory_hit_ = false;
   out_of_memory_ = false;
+  cap_hit_ = false;
   memory_hit_where_.clear();
   printed_ = 0;
   print_truncated_ = false;
@@ -362,7 +365,8 @@ int LuaRuntime::protected_call(int nargs, int nresults) {
 
 ScriptError::Limit LuaRuntime::limit_hit() const {
   if (killed_) return kill_limit_;
-  return memory_hit_ ? ScriptError::Limit::Memory : ScriptError::Limit::None;
+  if (memory_hit_) return ScriptError::Limit::Memory;
+  return cap_hit_ ? ScriptError::Limit::Changes : ScriptError::Limit::None;
 }
 
 void LuaRuntime::throw_error(int base, bool end_window) {

@@ -25,7 +25,8 @@
 // - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
 //   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
 // - Memory running out (a binding's or the host's std::bad_alloc, Lua's allocator finding none) is flagged where it
-//   is caught (ran_out_of_memory, ScriptError::out_of_memory); callers never guess it from an error's text.
+//   is caught (ran_out_of_memory, ScriptError::out_of_memory), and so is a binding's cap (note_cap,
+//   ScriptError::Limit::Changes); callers never guess either from an error's text.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
 //   of a run nor closing the state can run script code outside the hook.
 #pragma once
@@ -50,8 +51,9 @@ namespace meshedit {
 // A script failed: the Lua error message ("loop.lua:3: instruction budget exceeded (10000000 instructions)").
 class ScriptError : public std::runtime_error {
  public:
-  // Which limit stopped the script, if one did (a grader reports a timeout differently from an error).
-  enum class Limit { None, Instructions, Memory, Time };
+  // Which limit stopped the script, if one did (a grader reports a timeout differently from an error). Changes: a
+  // binding's cap on what a script may make (recorded changes, element ids), noted with LuaRuntime::note_cap.
+  enum class Limit { None, Instructions, Memory, Time, Changes };
   using std::runtime_error::runtime_error;
   ScriptError(const std::string& message, Limit limit, bool out_of_memory = false)
       : std::runtime_error(message), limit_(limit), out_of_memory_(out_of_memory) {}
@@ -131,6 +133,10 @@ class LuaRuntime {
   // What a C function calls when it turns a std::bad_alloc (or a message that could not be copied for lack of memory)
   // into a Lua error: marks the window of the runtime that owns `L` (any of its threads). Never throws.
   static void note_out_of_memory(lua_State* L) noexcept;
+  // What a binding calls before it raises the error of a cap on what a script may make (more changes than a recorder
+  // keeps, more ids than MeshLimits allow): the errors of the runtime's current window are Limit::Changes, unless
+  // one of the runtime's own limits stopped it. Never throws.
+  static void note_cap(lua_State* L) noexcept;
 
  private:
   static void* allocate(void* ud, void* ptr, size_t old_size, size_t new_size);
@@ -162,6 +168,7 @@ class LuaRuntime {
   size_t memory_used_ = 0;
   bool memory_hit_ = false;
   bool out_of_memory_ = false;  // ran_out_of_memory()
+  bool cap_hit_ = false;        // note_cap
   std::string memory_hit_where_;  // "file:line: " of the allocation that hit the cap
   uint64_t instructions_ = 0;
   bool killed_ = false;
