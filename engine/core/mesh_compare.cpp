@@ -17,6 +17,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
@@ -447,6 +448,19 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
 }
 
 }  // namespace
+
+double mesh_tolerance(const HalfedgeMesh& input) {
+  glm::dvec3 lo(0.0), hi(0.0);
+  bool first = true;
+  for (VertexId v : input.vertices()) {
+    const glm::dvec3& p = input.position(v);
+    lo = first ? p : glm::min(lo, p);
+    hi = first ? p : glm::max(hi, p);
+    first = false;
+  }
+  const double diagonal = glm::distance(lo, hi);
+  return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
+}
 
 std::string MeshComparison::summary() const {
   if (total_differences == 0) return "equal";

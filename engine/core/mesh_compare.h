@@ -67,4 +67,9 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
 MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
                               const CompareOptions& options = {});
 
+// The position tolerance for comparing what was made from `input` with the reference: 1e-9 x the bounding-box
+// diagonal of its live vertices, at least 1e-9 (and 1e-9 when the diagonal is not finite), so a unit cube and a scan
+// in millimetres are held to the same relative precision. Every check of one exercise on a mesh uses this one.
+double mesh_tolerance(const HalfedgeMesh& input);
+
 }  // namespace meshedit

@@ -60,19 +60,6 @@ double largest_coordinate(std::span<const glm::dvec3> points) {
   return std::isfinite(m) ? m : 0.0;
 }
 
-double mesh_tolerance(const HalfedgeMesh& mesh) {
-  glm::dvec3 lo(0.0), hi(0.0);
-  bool first = true;
-  for (VertexId v : mesh.vertices()) {
-    const glm::dvec3& p = mesh.position(v);
-    lo = first ? p : glm::min(lo, p);
-    hi = first ? p : glm::max(hi, p);
-    first = false;
-  }
-  const double diagonal = glm::distance(lo, hi);
-  return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
-}
-
 // ---- curve step -------------------------------------------------------------------------------------------
 
 void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
