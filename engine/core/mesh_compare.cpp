@@ -462,6 +462,12 @@ double mesh_tolerance(const HalfedgeMesh& input) {
   return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
 }
 
+double points_tolerance(std::span<const glm::dvec3> points) {
+  double largest = 0.0;
+  for (const glm::dvec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return 1e-9 * std::max(1.0, std::isfinite(largest) ? largest : 0.0);
+}
+
 std::string MeshComparison::summary() const {
   if (total_differences == 0) return "equal";
   std::string s = plural(total_differences, "difference", "differences");

@@ -5,8 +5,8 @@
 // Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
 // so a failure there reads like the window.
 //
-// Tolerances: points and normals within 1e-9 of the reference (scaled by the input's size for points),
-// meshes within 1e-9 x the bounding-box diagonal (at least 1e-9); "identical" means bit for bit and, for
+// Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
+// input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
 // meshes, pointer for pointer (compare_meshes_exact with tolerance 0).
 #include <algorithm>
 #include <cmath>
@@ -54,18 +54,12 @@ bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
 
 bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
 
-double largest_coordinate(std::span<const glm::dvec3> points) {
-  double m = 0.0;
-  for (const auto& p : points) m = std::max({m, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  return std::isfinite(m) ? m : 0.0;
-}
-
 // ---- curve step -------------------------------------------------------------------------------------------
 
 void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const auto& got = report.mine.points;
   const auto& want = report.reference.points;
-  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.points));
+  const double tolerance = points_tolerance(input.points);
   const size_t common = std::min(got.size(), want.size());
   bool prefix_matches = true;
   for (size_t i = 0; i < common; ++i) prefix_matches = prefix_matches && close(got[i], want[i], tolerance);
@@ -122,7 +116,7 @@ void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages&
 void compare_patch(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const glm::dvec3 got = report.mine.points[0];
   const glm::dvec3 want = report.reference.points[0];
-  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.patch.points));
+  const double tolerance = points_tolerance(input.patch.points);
   const double d = glm::distance(got, want);
   if (!(d <= tolerance)) {
     const glm::dvec3 transposed = evaluate_patch(input.patch, input.v, input.u);
