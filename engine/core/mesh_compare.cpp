@@ -261,50 +261,54 @@ struct CycleKinds {
   std::vector<FaceId>* reversed;  // null for boundary loops: a loop runs the way its faces say
 };
 
-void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bool boundaries,
-                    const std::vector<VertexId>& to_reference, const std::vector<VertexId>& to_yours,
-                    const CycleKinds& kinds, Collector& out) {
-  const auto range = [&](const HalfedgeMesh& m) { return boundaries ? m.boundaries() : m.faces(); };
-  std::vector<Cycle> mine, theirs;
-  for (FaceId f : range(yours)) mine.push_back(read_cycle(yours, f, to_reference));
-  for (FaceId f : range(reference)) theirs.push_back(read_cycle(reference, f, to_yours));
+// How a cycle matched one of the other mesh: not at all, as it is, or with the opposite orientation.
+enum class Match : uint8_t { None, Same, Reversed };
 
-  // Reference cycles by canonical key; each entry is used at most once.
+struct CycleMatching {
+  std::vector<Match> yours;     // per cycle of yours
+  std::vector<size_t> partner;  // per cycle of yours: the reference cycle it matched
+  std::vector<Match> theirs;    // per reference cycle
+};
+
+// Yours matched to the reference's: a cycle takes one with the same canonical key, then (when `try_reversed`) one
+// with the reversed key. Each reference cycle is used at most once, the lowest id first.
+CycleMatching match_cycles(const std::vector<Cycle>& mine, const std::vector<Cycle>& theirs, bool try_reversed) {
   std::map<Key, std::vector<size_t>> by_key;
   for (size_t i = theirs.size(); i-- > 0;) {  // reversed so pop_back hands out the lowest id first
     if (!theirs[i].broken && !theirs[i].translated.empty()) {
       by_key[canonical(theirs[i].vertices)].push_back(i);
     }
   }
-  std::vector<uint8_t> used(theirs.size(), 0);  // 1 matched, 2 matched reversed
-  std::vector<int> state(mine.size(), 0);        // 0 unmatched, 1 matched, 2 reversed
-  std::vector<size_t> partner(mine.size(), 0);
-  const auto take = [&](const Key& key, size_t& index, uint8_t how) {
+  CycleMatching m{std::vector<Match>(mine.size(), Match::None), std::vector<size_t>(mine.size(), 0),
+                  std::vector<Match>(theirs.size(), Match::None)};
+  const auto take = [&](const Key& key, size_t i, Match how) {
     auto it = by_key.find(key);
-    if (it == by_key.end() || it->second.empty()) return false;
-    index = it->second.back();
+    if (it == by_key.end() || it->second.empty()) return;
+    m.partner[i] = it->second.back();
     it->second.pop_back();
-    used[index] = how;
-    return true;
+    m.theirs[m.partner[i]] = how;
+    m.yours[i] = how;
   };
+  const auto comparable = [&](size_t i) { return !mine[i].broken && !mine[i].translated.empty(); };
   for (size_t i = 0; i < mine.size(); ++i) {
-    if (!mine[i].broken && !mine[i].translated.empty() && take(canonical(mine[i].translated), partner[i], 1)) {
-      state[i] = 1;
-    }
+    if (comparable(i)) take(canonical(mine[i].translated), i, Match::Same);
   }
-  if (kinds.reversed) {
+  if (try_reversed) {
     for (size_t i = 0; i < mine.size(); ++i) {
-      if (state[i] == 0 && !mine[i].broken && !mine[i].translated.empty() &&
-          take(reversed(mine[i].translated), partner[i], 2)) {
-        state[i] = 2;
-      }
+      if (m.yours[i] == Match::None && comparable(i)) take(reversed(mine[i].translated), i, Match::Reversed);
     }
   }
+  return m;
+}
 
-  size_t skipped_mine = 0, skipped_theirs = 0;
+// What is wrong with each of your cycles that has no same-orientation match; returns how many of them were not
+// compared (a corner without a match).
+size_t report_your_cycles(const std::vector<Cycle>& mine, const std::vector<Cycle>& theirs, const CycleMatching& m,
+                          const CycleKinds& kinds, Collector& out) {
+  size_t skipped = 0;
   for (size_t i = 0; i < mine.size(); ++i) {
     const Cycle& c = mine[i];
-    if (state[i] == 1) continue;
+    if (m.yours[i] == Match::Same) continue;
     kinds.extra->push_back(c.face);
     if (c.broken) {
       out.add([&] {
@@ -313,10 +317,10 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
                "element";
       });
     } else if (c.translated.empty()) {
-      ++skipped_mine;
-    } else if (state[i] == 2) {
+      ++skipped;
+    } else if (m.yours[i] == Match::Reversed) {
       kinds.reversed->push_back(c.face);
-      const Cycle& r = theirs[partner[i]];
+      const Cycle& r = theirs[m.partner[i]];
       out.add([&] {
         return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
                " has the opposite orientation of reference " + kinds.noun + " " + format_id(r.face) + " " +
@@ -329,15 +333,22 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
       });
     }
   }
+  return skipped;
+}
+
+// The same for the reference's cycles none of yours matched; a reversed partner was told with yours.
+size_t report_reference_cycles(const std::vector<Cycle>& theirs, const CycleMatching& m, const CycleKinds& kinds,
+                               Collector& out) {
+  size_t skipped = 0;
   for (size_t i = 0; i < theirs.size(); ++i) {
     const Cycle& r = theirs[i];
-    if (used[i] == 1) continue;
+    if (m.theirs[i] == Match::Same) continue;
     kinds.missing->push_back(r.face);
-    if (used[i] == 2) continue;  // reported above as the reversed partner of one of yours
+    if (m.theirs[i] == Match::Reversed) continue;
     if (r.broken) {
       out.add([&] { return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " cannot be walked"; });
     } else if (r.translated.empty()) {
-      ++skipped_theirs;
+      ++skipped;
     } else {
       out.add([&] {
         return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " " + corners(r, "your") +
@@ -345,6 +356,19 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
       });
     }
   }
+  return skipped;
+}
+
+void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bool boundaries,
+                    const std::vector<VertexId>& to_reference, const std::vector<VertexId>& to_yours,
+                    const CycleKinds& kinds, Collector& out) {
+  const auto range = [&](const HalfedgeMesh& m) { return boundaries ? m.boundaries() : m.faces(); };
+  std::vector<Cycle> mine, theirs;
+  for (FaceId f : range(yours)) mine.push_back(read_cycle(yours, f, to_reference));
+  for (FaceId f : range(reference)) theirs.push_back(read_cycle(reference, f, to_yours));
+  const CycleMatching matching = match_cycles(mine, theirs, kinds.reversed != nullptr);
+  const size_t skipped_mine = report_your_cycles(mine, theirs, matching, kinds, out);
+  const size_t skipped_theirs = report_reference_cycles(theirs, matching, kinds, out);
   if (skipped_mine + skipped_theirs > 0) {
     out.add([&] {
       return std::to_string(skipped_mine) + " of your " + kinds.noun + "s and " + std::to_string(skipped_theirs) +
