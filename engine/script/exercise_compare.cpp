@@ -428,14 +428,8 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
 
 // ---- upsample ---------------------------------------------------------------------------------------------
 
-// Likely mistakes, from where your vertices are and which edges you have that the reference does not.
-void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
-                       double tolerance, Messages& out) {
-  const HalfedgeMesh& before = *input.mesh;
-  const HalfedgeMesh& mine = *report.mine.mesh;
-  const HalfedgeMesh& reference = *report.reference.mesh;
-
-  // Zero weights put vertices at the origin.
+// Zero weights put vertices at the origin. Returns how many of yours are there.
+size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, Messages& out) {
   size_t at_origin = 0, reference_at_origin = 0;
   for (VertexId v : mine.vertices()) at_origin += close(mine.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   for (VertexId v : reference.vertices()) {
@@ -445,8 +439,12 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
     out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
             "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
   }
+  return at_origin;
+}
 
-  // Original vertices (they keep their ids in both) that did not move.
+// Original vertices (they keep their ids in both) that did not move.
+void diagnose_unmoved_originals(const HalfedgeMesh& before, const HalfedgeMesh& mine, const HalfedgeMesh& reference,
+                                double tolerance, Messages& out) {
   size_t originals = 0, unmoved = 0;
   for (VertexId v : before.vertices()) {
     if (!mine.alive(v) || !reference.alive(v)) continue;
@@ -459,12 +457,11 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
             " original vertices kept their old positions: step 5 must move them to the positions of step 1, "
             "(1 - n u) p + u (sum of the neighbours)");
   }
+}
 
-  // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
-  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
-  for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
-
-  // Coinciding vertices: positions written to the wrong vertices make the mesh collapse.
+// Coinciding vertices: positions written to the wrong vertices make the mesh collapse (unless zero weights put them
+// all at the origin, told first).
+void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Messages& out) {
   std::vector<glm::dvec3> positions;
   for (VertexId v : mine.vertices()) positions.push_back(mine.position(v));
   std::sort(positions.begin(), positions.end(), [](const glm::dvec3& a, const glm::dvec3& b) {
@@ -476,40 +473,62 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
     out.add(std::to_string(shared) + " of your vertices sit exactly on another one: were new positions written to "
             "the wrong vertices? Keep them in a table indexed by v.id and move each vertex to its own");
   }
+}
 
-  // With every vertex matched, classify the edges yours has and the reference does not.
+// With every vertex matched, the edges yours has and the reference does not, by the age of their ends: each kind is
+// a different wrong flip.
+void diagnose_extra_edges(const HalfedgeMesh& before, const HalfedgeMesh& mine, const MeshComparison& c,
+                          Messages& out) {
   if (!c.unmatched_vertices.empty() || !c.unmatched_reference.empty() || c.extra_edges.empty()) return;
+  enum Ends { kOldAndNew, kBothOld, kBothNew, kEndsKinds };
   const uint32_t old_capacity = before.vertex_capacity();
-  size_t old_new = 0, old_old = 0, new_new = 0;
-  EdgeId example[3];
+  size_t count[kEndsKinds] = {};
+  EdgeId example[kEndsKinds];
   for (EdgeId e : c.extra_edges) {
     const HalfedgeId h = mine.halfedge(e);
     if (!mine.alive(h) || !mine.alive(mine.twin(h))) continue;
     const uint32_t x = mine.vertex(h).index, y = mine.vertex(mine.twin(h)).index;
     if (x >= c.vertex_map.size() || y >= c.vertex_map.size()) continue;
     const bool x_old = c.vertex_map[x].index < old_capacity, y_old = c.vertex_map[y].index < old_capacity;
-    const int kind = x_old && y_old ? 1 : (!x_old && !y_old ? 2 : 0);
-    size_t& count = kind == 0 ? old_new : kind == 1 ? old_old : new_new;
-    if (count++ == 0) example[kind] = e;
+    const Ends kind = x_old && y_old ? kBothOld : (!x_old && !y_old ? kBothNew : kOldAndNew);
+    if (count[kind]++ == 0) example[kind] = e;
   }
   const auto ends = [&](EdgeId e) {
     const HalfedgeId h = mine.halfedge(e);
     return format_id(e) + " (" + format_id(mine.vertex(h)) + " " + format_id(mine.vertex(mine.twin(h))) + ")";
   };
-  if (old_old > 0) {
-    out.add(std::to_string(old_old) + " of your edges join two original vertices, e.g. " + ends(example[1]) +
+  if (count[kBothOld] > 0) {
+    out.add(std::to_string(count[kBothOld]) + " of your edges join two original vertices, e.g. " +
+            ends(example[kBothOld]) +
             ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end "
             "(check both ends)");
   }
-  if (new_new > 0) {
-    out.add(std::to_string(new_new) + " of your edges join two new vertices where the reference has none, e.g. " +
-            ends(example[2]) + ": an edge that was not new (a half of a split edge) was flipped");
+  if (count[kBothNew] > 0) {
+    const std::string what = " of your edges join two new vertices where the reference has none, e.g. ";
+    out.add(std::to_string(count[kBothNew]) + what + ends(example[kBothNew]) +
+            ": an edge that was not new (a half of a split edge) was flipped");
   }
-  if (old_new > 0) {
-    out.add(std::to_string(old_new) + " of your edges join an original and a new vertex where the reference has "
-            "none, e.g. " + ends(example[0]) + ": every new edge (one that cuts across an old face) that joins an "
-            "old and a new vertex must be flipped, once");
+  if (count[kOldAndNew] > 0) {
+    const std::string what = " of your edges join an original and a new vertex where the reference has none, e.g. ";
+    out.add(std::to_string(count[kOldAndNew]) + what + ends(example[kOldAndNew]) +
+            ": every new edge (one that cuts across an old face) that joins an old and a new vertex must be flipped, "
+            "once");
   }
+}
+
+// Likely mistakes, from where your vertices are and which edges you have that the reference does not.
+void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
+                       double tolerance, Messages& out) {
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, out);
+  diagnose_unmoved_originals(before, mine, reference, tolerance, out);
+  // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
+  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+  for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
+  diagnose_coinciding_vertices(mine, at_origin, out);
+  diagnose_extra_edges(before, mine, c, out);
 }
 
 void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
