@@ -6,6 +6,14 @@
 // of canonical keys (a cycle rotated to start at its smallest id keeps its orientation; an edge is its
 // sorted pair). Messages past the cap are counted but never formatted: nearest-vertex searches for
 // messages are brute force and run at most max_differences times.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   shared                               Collector (counts all, formats under the cap), compare_counts, same_position
+//   exact                                compare_pointer, compare_element: pointer for pointer
+//   up to renumbering: vertices          VertexGrid (the hash grid), nearest, no_match (the message)
+//   up to renumbering: cycles and edges  read_cycle, match_cycles and their reports, compare_cycles, compare_edges
+//   public functions                     mesh_tolerance, points_tolerance, summary, compare_meshes_exact,
+//                                        compare_meshes
 #include "core/mesh_compare.h"
 
 #include <algorithm>
@@ -25,6 +33,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- shared ----------------------------------------------------------------------------------------
 
 // Counts every difference, formats only those under the cap.
 class Collector {
@@ -472,6 +482,8 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
 }
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 double mesh_tolerance(const HalfedgeMesh& input) {
   glm::dvec3 lo(0.0), hi(0.0);

@@ -10,6 +10,20 @@
 //   more memory than the cap, and messages past the cap are never even formatted.
 // - One cause, one report where possible: a walk that meets a dead pointer stops silently, since the
 //   DeadReference check already names that pointer.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   messages            bad_target, id_list, Path, Collector (the bounded heap of the smallest keys)
+//   Validator           run: the checks below, in the order of Invariant
+//   DeadReference       check_references, and who refers to whom
+//   TwinOfTwin          check_twins
+//   TwinEdge            check_edges
+//   FaceCycle           check_faces, walk_face
+//   NextNotPermutation  check_next_permutation
+//   VertexHalfedge      check_vertex_halfedges
+//   VertexFan           check_fans, walk_fan (and the all-boundary orphan)
+//   Orphan              check_orphans
+//   NonFinitePosition   check_positions
+//   public functions    invariant_name, ValidationReport::summary, validate
 #include "core/validate.h"
 
 #include <algorithm>
@@ -22,6 +36,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- messages --------------------------------------------------------------------------------------
 
 // Ids listed in one message, so a huge broken fan or cycle does not make a huge message.
 constexpr size_t kListCap = 8;
@@ -110,6 +126,8 @@ class Collector {
   size_t total_ = 0;
   std::vector<Entry> heap_;  // max-heap on key: the front is the first to drop
 };
+
+// ---- Validator -------------------------------------------------------------------------------------
 
 class Validator {
  public:
@@ -502,6 +520,8 @@ class Validator {
 };
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 const char* invariant_name(Invariant invariant) {
   switch (invariant) {

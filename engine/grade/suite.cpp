@@ -1,5 +1,13 @@
 // Suite: loading a suite file (the suite{} and test{} declarations) and running one test in this process
 // (see suite.h).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   fields                      Fields (what suite{} and test{} declare), limits_for, Declarations, Context
+//   reading declarations        SuiteApi: string_list, number_field, read_fields and its parts
+//   the suite file's functions  suite{}, test{}, include(), exercise{}, fixture()
+//   the student table           student.f(...), student:has, student:output, push_student_table
+//   loading                     Suite::load, from_text, finish_loading, files_for
+//   running a test              end_for_limit, Suite::run_test_here
 #include "grade/suite.h"
 
 #include <algorithm>
@@ -23,6 +31,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- fields ----------------------------------------------------------------------------------------
 
 constexpr double kMaxTimeLimit = 600.0;
 constexpr double kDefaultTimeLimit = 10.0;
@@ -87,6 +97,8 @@ end
 
 // The C functions of the suite's Lua API (friends of Suite).
 struct SuiteApi {
+  // ---- reading declarations ------------------------------------------------------------------------
+
   static Suite& suite_of(lua_State* L) { return *static_cast<Suite*>(lua_touserdata(L, lua_upvalueindex(1))); }
 
   static std::vector<std::string> string_list(lua_State* L, int index, const char* field) {
@@ -226,6 +238,8 @@ struct SuiteApi {
     lua_pop(L, 1);
   }
 
+  // ---- the suite file's functions ------------------------------------------------------------------
+
   static int declare_suite(lua_State* L) {
     Suite& s = suite_of(L);
     if (!s.declarations_) return luaL_error(L, "suite{} can only be called while the suite file loads");
@@ -349,6 +363,8 @@ struct SuiteApi {
     return 3;
   }
 
+  // ---- the student table ---------------------------------------------------------------------------
+
   static Suite::Context& context(lua_State* L) {
     Suite& s = suite_of(L);
     if (!s.current_ || !s.current_->student) luaL_error(L, "student can only be used while a test runs");
@@ -439,6 +455,8 @@ struct SuiteApi {
     lua_setmetatable(L, -2);
   }
 };
+
+// ---- loading ---------------------------------------------------------------------------------------
 
 Suite::Suite() = default;
 Suite::~Suite() = default;
@@ -543,6 +561,8 @@ std::vector<std::string> Suite::named_files() const {
 }
 
 namespace {
+
+// ---- running a test --------------------------------------------------------------------------------
 
 RunEnd end_for_limit(ScriptError::Limit limit, RunEnd otherwise) {
   switch (limit) {

@@ -1,6 +1,16 @@
 // COLLADA reading (see dae_reader.h). Every number, count and index is checked before it is used; the
 // XML depth is bounded by tinyxml2 (TINYXML2_MAX_ELEMENT_DEPTH) and scene nodes are walked with an
 // explicit stack, so no input can exhaust the C++ stack.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   XML helpers               local_name, child, children; NodeTransform and Instance (a placed <geometry>)
+//   the reader                DaeReader::read: the asset, the scene or every geometry, the meshes appended
+//   asset and checked values  read_asset, attributes and numbers checked with their line (fail)
+//   geometry                  read_geometry, read_positions (<vertices>, <source>, <accessor>)
+//   primitives                read_primitive: <triangles>, <polylist>, <polygons>, <trifans>, <tristrips>
+//   corners                   vertex_of, reserve_corners, add_polygons, add_corner_triangles
+//   scene                     chosen_scene, compose (node transforms, walked with a stack), transformed, append
+//   entry points              parse_dae_file, read_dae_file, parse_dae, read_dae
 #include "io/dae_reader.h"
 
 #include <algorithm>
@@ -27,6 +37,8 @@ namespace meshedit {
 namespace {
 
 using tinyxml2::XMLElement;
+
+// ---- XML helpers -----------------------------------------------------------------------------------
 
 // Element name without a namespace prefix ("collada:mesh" -> "mesh").
 std::string_view local_name(const XMLElement* e) {
@@ -67,6 +79,8 @@ struct Instance {
   NodeTransform transform;
   const XMLElement* element = nullptr;  // the <instance_geometry>
 };
+
+// ---- the reader ------------------------------------------------------------------------------------
 
 class DaeReader {
  public:
@@ -116,6 +130,8 @@ class DaeReader {
   }
 
  private:
+  // ---- asset and checked values --------------------------------------------------------------------
+
   // <asset>'s <up_axis> and first <contributor>/<authoring_tool>; `asset` may be null (then COLLADA's defaults).
   DaeAsset read_asset(const XMLElement* asset) const {
     DaeAsset out;
@@ -297,6 +313,8 @@ class DaeReader {
     return positions;
   }
 
+  // ---- primitives ----------------------------------------------------------------------------------
+
   // How a primitive's <p> lists its corners (`stride` indices per corner, the vertex index at `vertex_offset`), and
   // how many polygons, fans or strips it says it holds.
   struct PrimitiveLayout {
@@ -439,6 +457,8 @@ class DaeReader {
     }
     return triangle_corners;
   }
+
+  // ---- corners -------------------------------------------------------------------------------------
 
   // The vertex index of corner `c`, checked against the positions.
   uint32_t vertex_of(const XMLElement* p, const std::vector<uint32_t>& indices, uint64_t stride, uint64_t offset,
@@ -613,6 +633,8 @@ class DaeReader {
 };
 
 }  // namespace
+
+// ---- entry points ----------------------------------------------------------------------------------
 
 DaeFile parse_dae_file(std::string_view text, const std::string& name) { return DaeReader(text, name).read(); }
 

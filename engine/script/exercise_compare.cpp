@@ -8,6 +8,18 @@
 // Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
 // input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
 // meshes, pointer for pointer (compare_meshes_exact with tolerance 0).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   messages                       Messages (the capped list a verdict fills), bitwise_equal, close
+//   curve step                     compare_curve: a dropped last point, swapped weights
+//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (unweighted normals)
+//   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
+//   flip                           compare_flip
+//   split                          compare_split: where the new vertex is, which pointers were forgotten
+//   upsample                       diagnose_upsample and its diagnoses, compare_upsample
+//   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
+//   runs that failed               add_run_failure: an error or a limit, with its hint
+//   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -29,6 +41,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- messages --------------------------------------------------------------------------------------
 
 // Keeps the first kMaxMessages messages and counts all.
 class Messages {
@@ -640,6 +654,8 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
   if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
 }
 
+// ---- runs that failed ------------------------------------------------------------------------------
+
 // A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish (a limit or a cap stopped
 // it) is explained from where it was stopped and what it had done (upsample_runaway.h), its line first.
 void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
@@ -655,6 +671,8 @@ void add_run_failure(Exercise exercise, const ExerciseInput& input, const Exerci
 }
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 std::string unfinished_run_hint(Exercise exercise) {
   switch (exercise) {

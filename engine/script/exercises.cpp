@@ -8,6 +8,13 @@
 // called by a one-line chunk through run_string (so the instruction budget, memory cap and deadline apply),
 // and removed again. Everything C++ reads back is read raw (no metamethod of the student's runs outside the
 // limits).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                         kExercises, the Lua helpers (kHelpers), describe_value, check_input
+//   returned values                 read_returned_value: what a student function returned, checked for its shape
+//   catalogue and inputs            exercise_info, find_exercise, the ExerciseInput makers and describe
+//   student code                    StudentCode: load, the exercise API, run (under the limits, recorded)
+//   running mine and the reference  load_student_file, run_mine, run_reference
 #include "script/exercises.h"
 
 #include <algorithm>
@@ -34,6 +41,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 constexpr ExerciseInfo kExercises[] = {
     {Exercise::CurveStep, "curve", "curve.lua", "evaluate_step", "evaluate_step(points, t) -> list of n - 1 vec3",
@@ -165,6 +174,8 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
 }
 
 }  // namespace
+
+// ---- returned values -------------------------------------------------------------------------------
 
 void read_returned_value(lua_State* L, int index, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh,
                          ExerciseOutcome& out) {
@@ -541,6 +552,8 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   if (out.mesh) out.validation = validate(*out.mesh);
   return out;
 }
+
+// ---- running mine and the reference ----------------------------------------------------------------
 
 std::unique_ptr<StudentCode> load_student_file(const std::filesystem::path& file, LuaLimits limits) {
   auto code = std::make_unique<StudentCode>(limits);

@@ -11,6 +11,15 @@
 // message that could not be made) and turn it into the step's error with exception_text, which cannot fail. Whether an
 // error is memory running out travels with it as a flag (exception_text's, the runtime's ran_out_of_memory for a
 // step's own Lua error), never read back from the text.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                        BusyScope, the empty defaults, error_text
+//   limits and settings            default_limits, live_limits, set_student_folder, set_student_limits
+//   loading                        load, reload, prepare, read_and_run, take
+//   moving between steps           next, back, restart_step, go_to, fail
+//   running a step                 start_step, resume, trampoline, protected_call
+//   waits, live values and events  update, advance_wait, refresh_live, deliver
+//   what the panel reads           title, summary, step_titles, your_turns and the other getters
 #include "script/lesson_runner.h"
 
 #include <algorithm>
@@ -27,6 +36,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 // Sets the runner's busy flag for its lifetime: a script's calls back into the runner are refused meanwhile, and an
 // exception (even one thrown while its message is copied, out of memory) cannot leave the runner busy for good.
@@ -62,6 +73,8 @@ std::string error_text(lua_State* co, const LuaLimits& limits) {
 }
 
 }  // namespace
+
+// ---- limits and settings ---------------------------------------------------------------------------
 
 LuaLimits LessonRunner::default_limits() {
   LuaLimits limits;
@@ -100,6 +113,8 @@ LessonRunner::Prepared::Prepared(Prepared&&) noexcept = default;
 LessonRunner::Prepared& LessonRunner::Prepared::operator=(Prepared&&) noexcept = default;
 
 const std::string& LessonRunner::Prepared::title() const { return script ? script->title : kEmptyText; }
+
+// ---- loading ---------------------------------------------------------------------------------------
 
 bool LessonRunner::load(const std::filesystem::path& path) {
   Prepared lesson;
@@ -192,6 +207,8 @@ void LessonRunner::take(Prepared&& lesson, size_t index) noexcept {
   start_step(std::min(index, script_->steps.size() - 1));
 }
 
+// ---- moving between steps --------------------------------------------------------------------------
+
 void LessonRunner::next() {
   if (!script_ || busy_) return;
   if (index_ + 1 < script_->steps.size()) start_step(index_ + 1);
@@ -229,6 +246,8 @@ void LessonRunner::fail_with(const std::exception& error) noexcept {
   std::string message = exception_text(error, out_of_memory);
   fail(message, out_of_memory);
 }
+
+// ---- running a step --------------------------------------------------------------------------------
 
 void LessonRunner::start_step(size_t index) noexcept try {
   index_ = index;
@@ -347,6 +366,8 @@ std::string LessonRunner::protected_call(bool& out_of_memory, const std::functio
   return failure;
 }
 
+// ---- waits, live values and events -----------------------------------------------------------------
+
 void LessonRunner::update(double dt) noexcept {
   advance_wait(dt);
   refresh_live();
@@ -446,6 +467,8 @@ bool LessonRunner::deliver(const LessonEvent& event) {
   }
   return true;
 }
+
+// ---- what the panel reads --------------------------------------------------------------------------
 
 const std::string& LessonRunner::title() const { return script_ ? script_->title : kEmptyText; }
 

@@ -1,6 +1,17 @@
 // The curve view's state changes (pure) and its ImGui window (ImDrawList only, no GL).
 // The drawing code never changes the state except through the functions declared in curve_editor.h,
 // so what the tests prove about those functions is what the window does.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers          finite, point_count, clamped_levels, closest_parameter
+//   view transform   curve_to_screen, screen_to_curve, fit_region, view_for
+//   state            the pure state changes: step_level, set_t, add_point, remove_point, drag_point, hit_test
+//   what is drawn    all_levels, shown_levels, split_halves, sample_curve
+//   mouse            handle_canvas_input
+//   ImGui            colours, "mine" levels, draw_mismatch
+//   the canvas       draw_canvas and its parts
+//   the level table  table_text_row, draw_mine_rows, draw_level_table
+//   windows          draw_curve_controls, draw_curve_canvas, draw_curve_levels, draw_curve_editor
 #include "ui/curve_editor.h"
 
 #include <algorithm>
@@ -20,6 +31,8 @@
 namespace meshedit {
 
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -338,6 +351,8 @@ void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels&
   dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), ghost_colour(), "reference");
 }
 
+// ---- the canvas ------------------------------------------------------------------------------------
+
 // The canvas; `mine` is the student's levels when the switch is on (else null).
 // The mouse over the canvas (the invisible button just drawn), handed to handle_canvas_input.
 void read_canvas_input(CurveEditorState& state) {
@@ -447,6 +462,8 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   dl->PopClipRect();
 }
 
+// ---- the level table -------------------------------------------------------------------------------
+
 void table_text_row(const char* name, ImU32 colour, const std::string& text) {
   const ImVec4 c = ImGui::ColorConvertU32ToFloat4(colour);
   ImGui::TableNextRow();
@@ -524,6 +541,8 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
 }
 
 }  // namespace
+
+// ---- windows ---------------------------------------------------------------------------------------
 
 void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
   const int n = point_count(state);
