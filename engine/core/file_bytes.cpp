@@ -1,4 +1,4 @@
-// Whole-file reading under a size cap (see file_bytes.h).
+// Whole-file reading under a size cap, and whole-file writing (see file_bytes.h).
 #include "core/file_bytes.h"
 
 #include <cerrno>
@@ -50,6 +50,31 @@ FileBytes read_file_bytes(const std::filesystem::path& path, size_t max_bytes) {
   }
   if (std::ferror(file.get())) return failed("cannot read: " + os_reason(errno));
   return out;
+}
+
+std::string write_file_bytes(const std::filesystem::path& path, std::string_view bytes) {
+  std::filesystem::path temp = path;
+  temp += ".meshedit-tmp";
+  {
+    errno = 0;
+    FilePtr file(std::fopen(temp.c_str(), "wb"));
+    if (!file) return "cannot write: " + os_reason(errno);
+    const bool wrote = std::fwrite(bytes.data(), 1, bytes.size(), file.get()) == bytes.size();
+    const int write_errno = errno;
+    const bool closed = std::fclose(file.release()) == 0;
+    if (!wrote || !closed) {
+      const int reason = wrote ? errno : write_errno;
+      std::remove(temp.c_str());
+      return "cannot write: " + os_reason(reason);
+    }
+  }
+  std::error_code ec;
+  std::filesystem::rename(temp, path, ec);
+  if (ec) {
+    std::remove(temp.c_str());
+    return "cannot write: " + ec.message();
+  }
+  return {};
 }
 
 }  // namespace meshedit

@@ -1,11 +1,14 @@
-// Reading a whole file into memory under a size cap: the one reader behind io's read_file and every other file
-// MeshEdit reads (shaders, images, fonts, scripts, lessons, suites, results, action scripts). It lives in core, the
-// module every other one depends on, so render reads through it too.
+// Reading a whole file into memory under a size cap, and replacing a file's contents whole: the one reader behind io's
+// read_file and every other file MeshEdit reads (shaders, images, fonts, scripts, lessons, suites, results, action
+// scripts), and the writer behind io's write_file. They live in core, the module every other one depends on, so
+// render reads through them too.
 //
 // Invariants:
 // - Only regular files are opened: a directory, a FIFO or a device (/dev/zero would never end) is refused first.
 // - No more than `max_bytes` are ever held: the file is read in chunks whatever size the file system reports, since
 //   the file may change while it is read.
+// - A write goes to a temporary file beside the target, renamed over the target once complete, so a failed save never
+//   leaves a half-written file where the old one was.
 // - A failure is a reason in words (FileBytes::error, "cannot open: No such file or directory"), never an
 //   exception; only std::bad_alloc escapes.
 #pragma once
@@ -13,6 +16,7 @@
 #include <cstddef>
 #include <filesystem>
 #include <string>
+#include <string_view>
 
 namespace meshedit {
 
@@ -27,5 +31,9 @@ struct FileBytes {
 };
 
 FileBytes read_file_bytes(const std::filesystem::path& path, size_t max_bytes = kMaxReadFileBytes);
+
+// Replaces the file's contents with `bytes`; "" when it did, else why not, without the file's name ("cannot write:
+// Permission denied").
+std::string write_file_bytes(const std::filesystem::path& path, std::string_view bytes);
 
 }  // namespace meshedit
