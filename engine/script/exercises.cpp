@@ -23,7 +23,6 @@
 
 #include <lua.hpp>
 
-#include "core/file_bytes.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
@@ -396,10 +395,8 @@ void StudentCode::run_protected(int closure_ref) {
 }
 
 void StudentCode::load(const std::filesystem::path& file) {
-  FileBytes source = read_file_bytes(file);
-  if (!source.ok()) throw ScriptError("cannot open " + file.string());
-  std::string code = std::move(source.bytes);
-  if (!code.empty() && code[0] == '#') code = "--" + code;  // a shebang line, as lua.c skips it
+  const std::optional<std::string> code = read_lua_file(file);
+  if (!code) throw ScriptError("cannot open " + file.string());
   const std::string name = file.filename().string();
 
   lua_State* L = runtime_->state();
@@ -408,7 +405,7 @@ void StudentCode::load(const std::filesystem::path& file) {
   const int out = lua_gettop(L);
   lua_rawgeti(L, LUA_REGISTRYINDEX, helpers_ref_);
   lua_getfield(L, -1, "loader");
-  lua_pushlstring(L, code.data(), code.size());
+  lua_pushlstring(L, code->data(), code->size());
   lua_pushstring(L, ("@" + name).c_str());
   lua_pushvalue(L, out);
   if (lua_pcall(L, 3, 1, 0) != LUA_OK) {

@@ -28,7 +28,6 @@
 
 #include <lua.hpp>
 
-#include "core/file_bytes.h"
 #include "script/exception_text.h"
 #include "script/lesson_api.h"
 #include "script/lesson_displays.h"
@@ -166,10 +165,8 @@ bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) 
 
 std::string LessonRunner::read_and_run(Prepared& lesson) {
   const std::filesystem::path& path = lesson.path;
-  FileBytes file = read_file_bytes(path);
-  if (!file.ok()) return "cannot open " + path.string();
-  std::string text = std::move(file.bytes);
-  if (!text.empty() && text[0] == '#') text = "--" + text;  // a shebang line, as lua.c skips it
+  const std::optional<std::string> text = read_lua_file(path);
+  if (!text) return "cannot open " + path.string();
   const std::string chunk = path.filename().string();
 
   lesson.script = std::make_unique<LessonScript>();
@@ -185,7 +182,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
       if (print_) print_(line);
     });
     open_lesson_api(*lesson.runtime, script);
-    lesson.runtime->load(text, chunk);
+    lesson.runtime->load(*text, chunk);
     lesson.runtime->start_budget();
     lesson.runtime->call(0, 0);
   }

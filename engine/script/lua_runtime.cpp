@@ -67,6 +67,13 @@ std::string error_value_text(lua_State* L, int index) {
 
 std::string memory_limit_message(size_t bytes) { return "memory limit exceeded (" + format_bytes(bytes) + ")"; }
 
+std::optional<std::string> read_lua_file(const std::filesystem::path& path) {
+  FileBytes file = read_file_bytes(path);
+  if (!file.ok()) return std::nullopt;
+  if (file.bytes.starts_with('#')) file.bytes.insert(0, "--");
+  return std::move(file.bytes);
+}
+
 LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   L_ = lua_newstate(&LuaRuntime::allocate, this);
   if (!L_) throw std::bad_alloc();  // memory ran out, as for any other allocation the caller makes

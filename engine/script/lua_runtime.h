@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -78,6 +79,9 @@ struct LuaLimits {
 std::string error_value_text(lua_State* L, int index);
 // "memory limit exceeded (32 MB)": what a run stopped by the memory cap of `bytes` says, wherever it was stopped.
 std::string memory_limit_message(size_t bytes);
+// A Lua file's text as lua.c reads it (a first line starting with '#', a shebang, made a comment), or nullopt when it
+// cannot be read (core/file_bytes.h: not a regular file, or too large).
+std::optional<std::string> read_lua_file(const std::filesystem::path& path);
 
 class LuaRuntime {
  public:
