@@ -103,8 +103,6 @@ class EditorApp {
   bool click_repair_row(size_t row);
   const RepairMarks& repair_marks() const { return repairs_; }
   bool repair_spots_current() const;  // the spots are the shown mesh's: highlighted, and the rows select
-  // The file open_repaired() would repair ("" when the last file open() tried opened, or failed otherwise).
-  const std::string& repairable_file() const { return repairable_path_; }
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
   // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);

@@ -107,7 +107,6 @@ GlfwWindow::~GlfwWindow() {
 void GlfwWindow::note_input(GLFWwindow* w) { static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->input_seen_ = true; }
 
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
-void GlfwWindow::request_close() { glfwSetWindowShouldClose(window_, GLFW_TRUE); }
 
 void GlfwWindow::begin_frame() {
   // ImGui needs a couple of frames after an input to settle hover states and animations. X delivers

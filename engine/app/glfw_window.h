@@ -30,7 +30,6 @@ class GlfwWindow {
   GlfwWindow& operator=(const GlfwWindow&) = delete;
 
   bool should_close() const;
-  void request_close();
   // Waits for input when the last frames were idle (see set_lazy), polls events, starts an ImGui frame.
   void begin_frame();
   // How long the last begin_frame() waited for input, in milliseconds (0 when it only polled).

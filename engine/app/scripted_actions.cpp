@@ -1,11 +1,11 @@
 // Parsing of scripted GUI actions (see scripted_actions.h).
 #include "app/scripted_actions.h"
 
-#include <fstream>
 #include <sstream>
 #include <stdexcept>
 
 #include "app/action_verbs.h"
+#include "core/file_bytes.h"
 
 namespace meshedit {
 
@@ -32,11 +32,9 @@ std::vector<ScriptedAction> parse_actions(const std::string& text, const std::st
 }
 
 std::vector<ScriptedAction> read_actions(const std::string& path) {
-  std::ifstream in(path);
-  if (!in) throw std::runtime_error(path + ": cannot open the action script");
-  std::stringstream text;
-  text << in.rdbuf();
-  return parse_actions(text.str(), path);
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw std::runtime_error(path + ": cannot open the action script");
+  return parse_actions(file.bytes, path);
 }
 
 }  // namespace meshedit

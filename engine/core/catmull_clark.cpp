@@ -11,6 +11,7 @@
 
 #include "core/catmull_clark_rules.h"
 #include "core/mesh_error.h"
+#include "core/vertex_ring.h"
 
 namespace meshedit {
 
@@ -51,24 +52,14 @@ CatmullClarkState compute_points(const HalfedgeMesh& mesh) {
   for (VertexId v : mesh.vertices()) {
     const glm::dvec3& p = mesh.position(v);
     glm::dvec3 face_sum(0.0), midpoint_sum(0.0);
-    uint32_t valence = 0;
-    glm::dvec3 rim[2];
-    uint32_t rim_count = 0;
-    mesh.for_each_outgoing(v, [&](HalfedgeId h) {
-      const HalfedgeId t = mesh.twin(h);
-      const glm::dvec3& q = mesh.position(mesh.vertex(t));
+    const VertexRing ring = vertex_ring(mesh, v, [&](HalfedgeId h, const glm::dvec3& q) {
       midpoint_sum += 0.5 * (p + q);
-      ++valence;
       if (!mesh.face(h).is_boundary()) face_sum += state.face_point[mesh.face(h).slot()];
-      if (mesh.face(h).is_boundary() || mesh.face(t).is_boundary()) {
-        if (rim_count < 2) rim[rim_count] = q;
-        ++rim_count;
-      }
     });
-    if (rim_count == 0) {
-      state.vertex_point[v.index] = rules::interior_vertex(p, face_sum, midpoint_sum, valence);
-    } else if (rim_count == 2) {
-      state.vertex_point[v.index] = rules::boundary_vertex(p, rim[0], rim[1]);
+    if (ring.rim_count == 0) {
+      state.vertex_point[v.index] = rules::interior_vertex(p, face_sum, midpoint_sum, ring.valence);
+    } else if (ring.rim_count == 2) {
+      state.vertex_point[v.index] = rules::boundary_vertex(p, mesh.position(ring.rim[0]), mesh.position(ring.rim[1]));
     }
     // Any other count is not reachable on a mesh validate() accepts (one boundary loop per vertex means
     // exactly two boundary edges); the vertex then keeps its position.

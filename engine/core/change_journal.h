@@ -65,7 +65,6 @@ class ChangeJournal {
   const std::vector<Entry>& log() const { return log_; }
   const MeshShape& shape_before() const { return shape_before_; }
   uint64_t version_before() const { return version_before_; }
-  uint64_t proven_version_before() const { return proven_before_; }
 
   // Detaches and puts the mesh back exactly as it was when the journal was attached. Returns false, leaving the mesh
   // as the edit left it, when state_before_lost().

@@ -19,8 +19,6 @@
 
 namespace meshedit {
 
-using ops_detail::id;
-
 namespace {
 
 // What can_collapse learns about one endpoint by walking its fan.
@@ -56,7 +54,7 @@ Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1,
   });
   if (!closed) return ops_detail::broken_fan(mesh.vertex(start), start, needed_for);
   if (broken_face.valid()) {
-    return Check::no("the next-cycle of " + id(broken_face) + " (beside " + id(mesh.vertex(start)) +
+    return Check::no("the next-cycle of " + format_id(broken_face) + " (beside " + format_id(mesh.vertex(start)) +
                      ") does not close; " + needed_for);
   }
   std::sort(out.neighbours.begin(), out.neighbours.end());
@@ -69,8 +67,8 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
   ops_detail::EdgeHalves halves;
   if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
   if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
-    return Check::no(id(e) + " has boundary loops on both sides (" + id(mesh.face(halves.h0)) + " and " +
-                     id(mesh.face(halves.h1)) + "); there is no face to collapse");
+    return Check::no(format_id(e) + " has boundary loops on both sides (" + format_id(mesh.face(halves.h0)) + " and " +
+                     format_id(mesh.face(halves.h1)) + "); there is no face to collapse");
   }
   const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
   const bool interior = !mesh.face(h1).is_boundary();
@@ -88,17 +86,17 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
   const VertexId c = mesh.vertex(h3);
   const VertexId d = interior ? mesh.vertex(mesh.next(mesh.next(h1))) : VertexId();
   if (interior && c == d) {
-    return Check::no(id(f0) + " and " + id(f1) + " have the same corners; collapsing " + id(e) +
+    return Check::no(format_id(f0) + " and " + format_id(f1) + " have the same corners; collapsing " + format_id(e) +
                      " would leave nothing between them");
   }
 
-  const std::string needs = "collapsing " + id(e) + " needs the faces around it";
+  const std::string needs = "collapsing " + format_id(e) + " needs the faces around it";
   EndpointFan fan_a, fan_b;
   if (Check fan = read_fan(mesh, h0, f0, f1, b, c, d, needs, fan_a); !fan) return fan;
   if (Check fan = read_fan(mesh, h1, f0, f1, a, c, d, needs, fan_b); !fan) return fan;
 
   if (interior && fan_a.on_boundary && fan_b.on_boundary) {
-    return Check::no(id(a) + " and " + id(b) + " are both on the boundary but " + id(e) +
+    return Check::no(format_id(a) + " and " + format_id(b) + " are both on the boundary but " + format_id(e) +
                      " is not; collapsing it would pinch the surface at the merged vertex");
   }
   std::vector<VertexId> common;
@@ -106,24 +104,25 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
                         fan_b.neighbours.end(), std::back_inserter(common));
   for (VertexId v : common) {
     if (v == c || v == d) continue;
-    const std::string opposite = interior ? id(c) + " and " + id(d) : id(c);
-    return Check::no(id(a) + " and " + id(b) + " are both joined to " + id(v) + " (besides " + opposite +
-                     "); collapsing " + id(e) + " would join the merged vertex to " + id(v) + " twice");
+    const std::string opposite = interior ? format_id(c) + " and " + format_id(d) : format_id(c);
+    return Check::no(format_id(a) + " and " + format_id(b) + " are both joined to " + format_id(v) + " (besides " +
+                     opposite + "); collapsing " + format_id(e) + " would join the merged vertex to " + format_id(v) +
+                     " twice");
   }
   for (const EndpointFan* fan : {&fan_a, &fan_b}) {
     if (fan->face_with_other.valid()) {
-      return Check::no(id(fan->face_with_other) + " has both " + id(a) + " and " + id(b) + " as corners; collapsing " +
-                       id(e) + " would make it use the merged vertex twice");
+      return Check::no(format_id(fan->face_with_other) + " has both " + format_id(a) + " and " + format_id(b) +
+                       " as corners; collapsing " + format_id(e) + " would make it use the merged vertex twice");
     }
   }
   if (interior && fan_a.face_with_cd.valid() && fan_b.face_with_cd.valid()) {
-    return Check::no("collapsing " + id(e) + " would fold " + id(fan_a.face_with_cd) + " onto " +
-                     id(fan_b.face_with_cd) + " (both would join the merged vertex, " + id(c) + " and " + id(d) +
-                     "): a closed surface needs at least 4 vertices");
+    return Check::no("collapsing " + format_id(e) + " would fold " + format_id(fan_a.face_with_cd) + " onto " +
+                     format_id(fan_b.face_with_cd) + " (both would join the merged vertex, " + format_id(c) + " and " +
+                     format_id(d) + "): a closed surface needs at least 4 vertices");
   }
   if (!interior && mesh.face(mesh.twin(h2)).is_boundary() && mesh.face(mesh.twin(h3)).is_boundary()) {
-    return Check::no(id(f0) + " is a lone triangle (all its edges are on the boundary); collapsing " + id(e) +
-                     " would leave no face");
+    return Check::no(format_id(f0) + " is a lone triangle (all its edges are on the boundary); collapsing " +
+                     format_id(e) + " would leave no face");
   }
   return Check::yes();
 }

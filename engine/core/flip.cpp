@@ -8,15 +8,14 @@
 
 namespace meshedit {
 
-using ops_detail::id;
-
 Check can_flip(const HalfedgeMesh& mesh, EdgeId e) {
   ops_detail::EdgeHalves halves;
   if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
   const HalfedgeId h0 = halves.h0, h1 = halves.h1;
   for (HalfedgeId h : {h0, h1}) {
     if (mesh.face(h).is_boundary()) {
-      return Check::no(id(e) + " is on the boundary (" + id(mesh.face(h)) + "); only interior edges can be flipped");
+      return Check::no(format_id(e) + " is on the boundary (" + format_id(mesh.face(h)) +
+                       "); only interior edges can be flipped");
     }
   }
   constexpr const char* kPurpose = "only edges between two triangles can be flipped";
@@ -28,18 +27,20 @@ Check can_flip(const HalfedgeMesh& mesh, EdgeId e) {
   const HalfedgeId h5 = mesh.next(mesh.next(h1));
   const VertexId c = mesh.vertex(h3), d = mesh.vertex(h5);
   if (c == d) {
-    return Check::no(id(mesh.face(h0)) + " and " + id(mesh.face(h1)) + " have the same corners; flipping " + id(e) +
-                     " would join " + id(c) + " to itself");
+    return Check::no(format_id(mesh.face(h0)) + " and " + format_id(mesh.face(h1)) +
+                     " have the same corners; flipping " + format_id(e) + " would join " + format_id(c) + " to itself");
   }
   // The flip would create c-d; if c already has a neighbour d, the mesh would hold two c-d edges.
   EdgeId existing;
   const bool closed = ops_detail::walk_fan(mesh, h3, [&](HalfedgeId o) {
     if (mesh.vertex(mesh.twin(o)) == d) existing = mesh.edge(o);
   });
-  if (!closed) return ops_detail::broken_fan(c, h3, "flipping " + id(e) + " needs " + id(c) + "'s neighbours");
+  if (!closed) {
+    return ops_detail::broken_fan(c, h3, "flipping " + format_id(e) + " needs " + format_id(c) + "'s neighbours");
+  }
   if (existing.valid()) {
-    return Check::no("flipping " + id(e) + " would join " + id(c) + " and " + id(d) + ", which are already joined by " +
-                     id(existing));
+    return Check::no("flipping " + format_id(e) + " would join " + format_id(c) + " and " + format_id(d) +
+                     ", which are already joined by " + format_id(existing));
   }
   return Check::yes();
 }

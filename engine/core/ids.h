@@ -19,6 +19,8 @@ namespace meshedit {
 inline constexpr uint32_t kInvalidIndex = 0xFFFFFFFFu;
 
 enum class ElementKind : uint8_t { Vertex, Halfedge, Edge, Face, Boundary };
+// How many kinds there are: the size of every array indexed by ElementKind. Boundary stays the last kind.
+inline constexpr int kElementKindCount = static_cast<int>(ElementKind::Boundary) + 1;
 
 // Singular lower-case noun for messages: "vertex", "halfedge", "edge", "face", "boundary".
 const char* kind_name(ElementKind kind);

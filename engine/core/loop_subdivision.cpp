@@ -16,6 +16,7 @@
 #include "core/quick_check.h"
 #include "core/triangulate.h"
 #include "core/validate.h"
+#include "core/vertex_ring.h"
 
 namespace meshedit {
 
@@ -72,27 +73,13 @@ OpResult<LoopState> loop_compute_positions(const HalfedgeMesh& mesh, LoopWeights
   ValenceWeights weight(weights);
   for (VertexId v : mesh.vertices()) {
     const glm::dvec3& p = mesh.position(v);
-    glm::dvec3 neighbour_sum(0.0);
-    uint32_t valence = 0;
-    // The other ends of v's boundary edges (an edge is on the boundary when either side is a loop).
-    glm::dvec3 rim[2];
-    uint32_t rim_count = 0;
-    mesh.for_each_outgoing(v, [&](HalfedgeId h) {
-      const HalfedgeId t = mesh.twin(h);
-      const glm::dvec3& q = mesh.position(mesh.vertex(t));
-      neighbour_sum += q;
-      ++valence;
-      if (mesh.face(h).is_boundary() || mesh.face(t).is_boundary()) {
-        if (rim_count < 2) rim[rim_count] = q;
-        ++rim_count;
-      }
-    });
+    const VertexRing ring = vertex_ring(mesh, v);
     glm::dvec3& out = state.vertex_position[v.index];
-    if (rim_count == 0) {
-      const double u = weight(valence);
-      out = loop_rules::interior_vertex(p, neighbour_sum, valence, u);
-    } else if (rim_count == 2) {
-      out = loop_rules::boundary_vertex(p, rim[0], rim[1]);
+    if (ring.rim_count == 0) {
+      const double u = weight(ring.valence);
+      out = loop_rules::interior_vertex(p, ring.neighbour_sum, ring.valence, u);
+    } else if (ring.rim_count == 2) {
+      out = loop_rules::boundary_vertex(p, mesh.position(ring.rim[0]), mesh.position(ring.rim[1]));
     } else {
       // Not reachable on a mesh validate() accepts (one boundary loop per vertex means exactly two
       // boundary edges); keeping the vertex is the least surprising answer.

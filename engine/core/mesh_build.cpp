@@ -146,6 +146,99 @@ Corners make_corners(const PolygonMesh& in) {
                   VertexId(u));
 }
 
+// Each interior halfedge's twin (the halfedge running the other way between the same vertices), kNone where there
+// is none. Refuses an edge shared by more than two faces or walked the same way twice.
+std::vector<uint32_t> match_twins(const PolygonMesh& in, const Corners& c) {
+  std::vector<uint32_t> twin(in.indices.size(), kNone);
+  for (uint32_t h = 0; h < in.indices.size(); ++h) {
+    const uint32_t u = c.tail(h), v = c.head(h);
+    auto [fwd_lo, fwd_hi] = c.find(u, v);
+    auto [rev_lo, rev_hi] = c.find(v, u);
+    const auto forward = fwd_hi - fwd_lo, reverse = rev_hi - rev_lo;
+    if (forward > 1 || reverse > 1) refuse_edge(c, u, v);
+    if (reverse == 1) twin[h] = *rev_lo;
+  }
+  return twin;
+}
+
+// Two faces glued along an edge with the same vertex set are one face repeated (a "pillow").
+void refuse_pillows(const PolygonMesh& in, const Corners& c, const std::vector<uint32_t>& twin) {
+  for (uint32_t h = 0; h < in.indices.size(); ++h) {
+    const uint32_t t = twin[h];
+    if (t == kNone || t < h) continue;
+    const uint32_t f = c.face_of[h], g = c.face_of[t];
+    if (in.face(f).size() != in.face(g).size()) continue;
+    const bool same =
+        in.face(f).size() == 3 ? c.head(c.next[h]) == c.head(c.next[t]) : c.sorted_face(f) == c.sorted_face(g);
+    if (same) {
+      throw MeshError("face " + std::to_string(std::max(f, g)) + " repeats face " + std::to_string(std::min(f, g)) +
+                      " (same vertices, opposite orientation)");
+    }
+  }
+}
+
+// Per vertex, the halfedge without a twin that arrives there (kNone: none): boundary loops allow at most one.
+std::vector<uint32_t> open_incoming_halfedges(const PolygonMesh& in, const Corners& c,
+                                              const std::vector<uint32_t>& twin) {
+  std::vector<uint32_t> open_incoming(in.num_vertices(), kNone);
+  for (uint32_t h = 0; h < in.indices.size(); ++h) {
+    if (twin[h] != kNone) continue;
+    const uint32_t v = c.head(h);
+    if (open_incoming[v] != kNone) {
+      const uint32_t f = c.face_of[open_incoming[v]], g = c.face_of[h];
+      throw MeshError("vertex " + std::to_string(v) + " is a bow-tie: faces " + std::to_string(f) + " and " +
+                          std::to_string(g) + " touch only at this vertex, on two different holes",
+                      VertexId(v));
+    }
+    open_incoming[v] = h;
+  }
+  return open_incoming;
+}
+
+// The interior halfedges and the faces, straight from the corners; the boundary halfedges' slots stay for
+// finish_build.
+void fill_interior(const PolygonMesh& in, const Corners& c, const std::vector<uint32_t>& twin, size_t num_halfedges,
+                   HalfedgeMesh& mesh) {
+  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
+  m.h.resize(num_halfedges);
+  m.h_alive.assign(num_halfedges, true);
+  for (uint32_t h = 0; h < in.indices.size(); ++h) {
+    m.h[h].next = HalfedgeId(c.next[h]);
+    m.h[h].twin = HalfedgeId(twin[h]);
+    m.h[h].vertex = VertexId(c.tail(h));
+    m.h[h].face = FaceId::face(c.face_of[h]);
+  }
+  m.f_halfedge.resize(in.num_faces());
+  m.f_alive.assign(in.num_faces(), true);
+  for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge[f] = HalfedgeId(in.face_offsets[f]);
+}
+
+// A vertex whose fan does not reach all its halfedges joins several surfaces (a bow-tie).
+void refuse_split_fans(const PolygonMesh& in, const Corners& c, const std::vector<uint32_t>& open_incoming,
+                       const HalfedgeMesh& mesh) {
+  for (uint32_t v = 0; v < in.num_vertices(); ++v) {
+    if (!mesh.alive(VertexId(v))) continue;
+    const uint32_t outgoing = c.out_start[v + 1] - c.out_start[v] + (open_incoming[v] != kNone ? 1 : 0);
+    uint32_t walked = 0;
+    mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId) { ++walked; });
+    if (walked == outgoing) continue;
+    std::vector<uint32_t> fan;  // only on the error path: which faces the fan reached
+    mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
+      if (!mesh.face(h).is_boundary()) fan.push_back(mesh.face(h).slot());
+    });
+    std::vector<uint32_t> others;
+    for (uint32_t i = c.out_start[v]; i < c.out_start[v + 1]; ++i) {
+      const uint32_t f = c.face_of[c.out[i]];
+      if (std::find(fan.begin(), fan.end(), f) == fan.end()) others.push_back(f);
+    }
+    std::sort(fan.begin(), fan.end());
+    std::sort(others.begin(), others.end());
+    throw MeshError("vertex " + std::to_string(v) + " is a bow-tie: its faces form separate fans (faces " +
+                        face_list(fan) + " on one, faces " + face_list(others) + " on another)",
+                    VertexId(v));
+  }
+}
+
 }  // namespace
 
 namespace build_detail {
@@ -213,92 +306,19 @@ size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
 
 HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   check_sizes(in);
-  const size_t num_interior = in.indices.size();
   check_faces(in);
   const Corners c = make_corners(in);
-
-  // Twins among interior halfedges, and the refusals that show up while matching.
-  std::vector<uint32_t> twin(num_interior, kNone);
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    const uint32_t u = c.tail(h), v = c.head(h);
-    auto [fwd_lo, fwd_hi] = c.find(u, v);
-    auto [rev_lo, rev_hi] = c.find(v, u);
-    const auto forward = fwd_hi - fwd_lo, reverse = rev_hi - rev_lo;
-    if (forward > 1 || reverse > 1) refuse_edge(c, u, v);
-    if (reverse == 1) twin[h] = *rev_lo;
-  }
-  // Two faces glued along an edge with the same vertex set are one face repeated (a "pillow").
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    const uint32_t t = twin[h];
-    if (t == kNone || t < h) continue;
-    const uint32_t f = c.face_of[h], g = c.face_of[t];
-    if (in.face(f).size() != in.face(g).size()) continue;
-    const bool same = in.face(f).size() == 3 ? c.head(c.next[h]) == c.head(c.next[t])
-                                             : c.sorted_face(f) == c.sorted_face(g);
-    if (same) {
-      throw MeshError("face " + std::to_string(std::max(f, g)) + " repeats face " + std::to_string(std::min(f, g)) +
-                      " (same vertices, opposite orientation)");
-    }
-  }
-
-  // Boundary loops: at most one unmatched halfedge may arrive at each vertex.
-  std::vector<uint32_t> open_incoming(in.num_vertices(), kNone);
-  size_t num_boundary = 0;
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    if (twin[h] != kNone) continue;
-    ++num_boundary;
-    const uint32_t v = c.head(h);
-    if (open_incoming[v] != kNone) {
-      const uint32_t f = c.face_of[open_incoming[v]], g = c.face_of[h];
-      throw MeshError("vertex " + std::to_string(v) + " is a bow-tie: faces " + std::to_string(f) + " and " +
-                          std::to_string(g) + " touch only at this vertex, on two different holes",
-                      VertexId(v));
-    }
-    open_incoming[v] = h;
-  }
-  const size_t num_halfedges = num_interior + num_boundary;
+  const std::vector<uint32_t> twin = match_twins(in, c);
+  refuse_pillows(in, c, twin);
+  const std::vector<uint32_t> open_incoming = open_incoming_halfedges(in, c, twin);
+  const size_t num_boundary = size_t(std::count(twin.begin(), twin.end(), kNone));
+  const size_t num_halfedges = in.indices.size() + num_boundary;
   if (num_halfedges >= kNone / 2) throw MeshError("mesh too large for 32-bit halfedge ids");
 
   HalfedgeMesh mesh;
-  MeshStorage::Arrays m = MeshStorage::arrays(mesh);
-  m.h.resize(num_halfedges);
-  m.h_alive.assign(num_halfedges, true);
-  for (uint32_t h = 0; h < num_interior; ++h) {
-    m.h[h].next = HalfedgeId(c.next[h]);
-    m.h[h].twin = HalfedgeId(twin[h]);
-    m.h[h].vertex = VertexId(c.tail(h));
-    m.h[h].face = FaceId::face(c.face_of[h]);
-  }
-  m.f_halfedge.resize(in.num_faces());
-  m.f_alive.assign(in.num_faces(), true);
-  for (uint32_t f = 0; f < in.num_faces(); ++f) m.f_halfedge[f] = HalfedgeId(in.face_offsets[f]);
-
+  fill_interior(in, c, twin, num_halfedges, mesh);
   const size_t unused = finish_build(in, twin, open_incoming, mesh);
-
-  // A vertex whose fan does not reach all its halfedges joins several surfaces (a bow-tie).
-  for (uint32_t v = 0; v < in.num_vertices(); ++v) {
-    if (!m.v_alive[v]) continue;
-    const uint32_t outgoing = c.out_start[v + 1] - c.out_start[v] + (open_incoming[v] != kNone ? 1 : 0);
-    uint32_t walked = 0;
-    mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId) { ++walked; });
-    if (walked != outgoing) {
-      std::vector<uint32_t> fan;  // only on the error path: which faces the fan reached
-      mesh.for_each_outgoing(VertexId(v), [&](HalfedgeId h) {
-        if (!mesh.face(h).is_boundary()) fan.push_back(mesh.face(h).slot());
-      });
-      std::vector<uint32_t> others;
-      for (uint32_t i = c.out_start[v]; i < c.out_start[v + 1]; ++i) {
-        const uint32_t f = c.face_of[c.out[i]];
-        if (std::find(fan.begin(), fan.end(), f) == fan.end()) others.push_back(f);
-      }
-      std::sort(fan.begin(), fan.end());
-      std::sort(others.begin(), others.end());
-      throw MeshError("vertex " + std::to_string(v) + " is a bow-tie: its faces form separate fans (faces " +
-                          face_list(fan) + " on one, faces " + face_list(others) + " on another)",
-                      VertexId(v));
-    }
-  }
-
+  refuse_split_fans(in, c, open_incoming, mesh);
   if (report) report->unused_vertices = unused;
   return mesh;
 }

@@ -6,6 +6,14 @@
 // of canonical keys (a cycle rotated to start at its smallest id keeps its orientation; an edge is its
 // sorted pair). Messages past the cap are counted but never formatted: nearest-vertex searches for
 // messages are brute force and run at most max_differences times.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   shared                               Collector (counts all, formats under the cap), compare_counts, same_position
+//   exact                                compare_pointer, compare_element: pointer for pointer
+//   up to renumbering: vertices          VertexGrid (the hash grid), nearest, no_match (the message)
+//   up to renumbering: cycles and edges  read_cycle, match_cycles and their reports, compare_cycles, compare_edges
+//   public functions                     mesh_tolerance, points_tolerance, summary, compare_meshes_exact,
+//                                        compare_meshes
 #include "core/mesh_compare.h"
 
 #include <algorithm>
@@ -17,6 +25,7 @@
 #include <unordered_map>
 #include <utility>
 
+#include <glm/common.hpp>
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
@@ -24,6 +33,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- shared ----------------------------------------------------------------------------------------
 
 // Counts every difference, formats only those under the cap.
 class Collector {
@@ -39,12 +50,6 @@ class Collector {
   MeshComparison& out_;
   size_t cap_;
 };
-
-std::string id(ElementRef r) { return format_id(r); }
-
-std::string plural(size_t n, const char* singular, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? singular : many);
-}
 
 void compare_counts(const HalfedgeMesh& yours, const HalfedgeMesh& reference, Collector& out) {
   struct Count {
@@ -77,7 +82,8 @@ bool same_position(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
 void compare_pointer(Collector& out, ElementRef owner, const char* field, ElementRef yours, ElementRef reference) {
   if (yours == reference) return;
   out.add([&] {
-    return id(owner) + "." + field + " is " + id(yours) + " in yours, " + id(reference) + " in the reference";
+    return format_id(owner) + "." + field + " is " + format_id(yours) + " in yours, " + format_id(reference) +
+           " in the reference";
   });
 }
 
@@ -97,7 +103,7 @@ void compare_element(const HalfedgeMesh& y, const HalfedgeMesh& r, ElementRef e,
       compare_pointer(out, e, "halfedge", y.halfedge(v), r.halfedge(v));
       if (!same_position(y.position(v), r.position(v), tolerance)) {
         out.add([&] {
-          return id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
+          return format_id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
                  format_position(r.position(v)) + " in the reference";
         });
       }
@@ -188,16 +194,16 @@ std::string no_match(const HalfedgeMesh& from, VertexId v, const char* whose, co
                      const char* other_whose, const std::vector<VertexId>& other_partner, const char* partner_whose,
                      const char* other_name) {
   const glm::dvec3& p = from.position(v);
-  std::string s = std::string(whose) + " vertex " + id(v) + " at " + format_position(p);
+  std::string s = std::string(whose) + " vertex " + format_id(v) + " at " + format_position(p);
   if (!finite(p)) return s + " has a position that is not finite; it matches nothing";
   s += std::string(" has no match in ") + other_name;
   double distance = 0.0;
   const VertexId n = nearest(other, p, distance);
   if (!n.valid()) return s + " (which has no vertices)";
-  s += "; the nearest is " + std::string(other_whose) + " " + id(n) + " at " + format_position(other.position(n)) +
-       ", " + format_number(distance) + " away";
+  s += "; the nearest is " + std::string(other_whose) + " " + format_id(n) + " at " +
+       format_position(other.position(n)) + ", " + format_number(distance) + " away";
   if (n.index < other_partner.size() && other_partner[n.index].valid()) {
-    s += std::string(" (already matched to ") + partner_whose + " " + id(other_partner[n.index]) + ")";
+    s += std::string(" (already matched to ") + partner_whose + " " + format_id(other_partner[n.index]) + ")";
   }
   return s;
 }
@@ -216,7 +222,7 @@ Key reversed(const Key& key) { return canonical(Key(key.rbegin(), key.rend())); 
 
 std::string list(const Key& vertices) {
   std::string s;
-  for (uint32_t v : vertices) s += (s.empty() ? "" : " ") + id(VertexId(v));
+  for (uint32_t v : vertices) s += (s.empty() ? "" : " ") + format_id(VertexId(v));
   return s;
 }
 
@@ -265,6 +271,104 @@ struct CycleKinds {
   std::vector<FaceId>* reversed;  // null for boundary loops: a loop runs the way its faces say
 };
 
+// How a cycle matched one of the other mesh: not at all, as it is, or with the opposite orientation.
+enum class Match : uint8_t { None, Same, Reversed };
+
+struct CycleMatching {
+  std::vector<Match> yours;     // per cycle of yours
+  std::vector<size_t> partner;  // per cycle of yours: the reference cycle it matched
+  std::vector<Match> theirs;    // per reference cycle
+};
+
+// Yours matched to the reference's: a cycle takes one with the same canonical key, then (when `try_reversed`) one
+// with the reversed key. Each reference cycle is used at most once, the lowest id first.
+CycleMatching match_cycles(const std::vector<Cycle>& mine, const std::vector<Cycle>& theirs, bool try_reversed) {
+  std::map<Key, std::vector<size_t>> by_key;
+  for (size_t i = theirs.size(); i-- > 0;) {  // reversed so pop_back hands out the lowest id first
+    if (!theirs[i].broken && !theirs[i].translated.empty()) {
+      by_key[canonical(theirs[i].vertices)].push_back(i);
+    }
+  }
+  CycleMatching m{std::vector<Match>(mine.size(), Match::None), std::vector<size_t>(mine.size(), 0),
+                  std::vector<Match>(theirs.size(), Match::None)};
+  const auto take = [&](const Key& key, size_t i, Match how) {
+    auto it = by_key.find(key);
+    if (it == by_key.end() || it->second.empty()) return;
+    m.partner[i] = it->second.back();
+    it->second.pop_back();
+    m.theirs[m.partner[i]] = how;
+    m.yours[i] = how;
+  };
+  const auto comparable = [&](size_t i) { return !mine[i].broken && !mine[i].translated.empty(); };
+  for (size_t i = 0; i < mine.size(); ++i) {
+    if (comparable(i)) take(canonical(mine[i].translated), i, Match::Same);
+  }
+  if (try_reversed) {
+    for (size_t i = 0; i < mine.size(); ++i) {
+      if (m.yours[i] == Match::None && comparable(i)) take(reversed(mine[i].translated), i, Match::Reversed);
+    }
+  }
+  return m;
+}
+
+// What is wrong with each of your cycles that has no same-orientation match; returns how many of them were not
+// compared (a corner without a match).
+size_t report_your_cycles(const std::vector<Cycle>& mine, const std::vector<Cycle>& theirs, const CycleMatching& m,
+                          const CycleKinds& kinds, Collector& out) {
+  size_t skipped = 0;
+  for (size_t i = 0; i < mine.size(); ++i) {
+    const Cycle& c = mine[i];
+    if (m.yours[i] == Match::Same) continue;
+    kinds.extra->push_back(c.face);
+    if (c.broken) {
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) +
+               " cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
+               "element";
+      });
+    } else if (c.translated.empty()) {
+      ++skipped;
+    } else if (m.yours[i] == Match::Reversed) {
+      kinds.reversed->push_back(c.face);
+      const Cycle& r = theirs[m.partner[i]];
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
+               " has the opposite orientation of reference " + kinds.noun + " " + format_id(r.face) + " " +
+               corners(r, "your");
+      });
+    } else {
+      out.add([&] {
+        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
+               " is not in the reference";
+      });
+    }
+  }
+  return skipped;
+}
+
+// The same for the reference's cycles none of yours matched; a reversed partner was told with yours.
+size_t report_reference_cycles(const std::vector<Cycle>& theirs, const CycleMatching& m, const CycleKinds& kinds,
+                               Collector& out) {
+  size_t skipped = 0;
+  for (size_t i = 0; i < theirs.size(); ++i) {
+    const Cycle& r = theirs[i];
+    if (m.theirs[i] == Match::Same) continue;
+    kinds.missing->push_back(r.face);
+    if (m.theirs[i] == Match::Reversed) continue;
+    if (r.broken) {
+      out.add([&] { return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " cannot be walked"; });
+    } else if (r.translated.empty()) {
+      ++skipped;
+    } else {
+      out.add([&] {
+        return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " " + corners(r, "your") +
+               " is missing from yours";
+      });
+    }
+  }
+  return skipped;
+}
+
 void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bool boundaries,
                     const std::vector<VertexId>& to_reference, const std::vector<VertexId>& to_yours,
                     const CycleKinds& kinds, Collector& out) {
@@ -272,83 +376,9 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
   std::vector<Cycle> mine, theirs;
   for (FaceId f : range(yours)) mine.push_back(read_cycle(yours, f, to_reference));
   for (FaceId f : range(reference)) theirs.push_back(read_cycle(reference, f, to_yours));
-
-  // Reference cycles by canonical key; each entry is used at most once.
-  std::map<Key, std::vector<size_t>> by_key;
-  for (size_t i = theirs.size(); i-- > 0;) {  // reversed so pop_back hands out the lowest id first
-    if (!theirs[i].broken && !theirs[i].translated.empty()) {
-      by_key[canonical(theirs[i].vertices)].push_back(i);
-    }
-  }
-  std::vector<uint8_t> used(theirs.size(), 0);  // 1 matched, 2 matched reversed
-  std::vector<int> state(mine.size(), 0);        // 0 unmatched, 1 matched, 2 reversed
-  std::vector<size_t> partner(mine.size(), 0);
-  const auto take = [&](const Key& key, size_t& index, uint8_t how) {
-    auto it = by_key.find(key);
-    if (it == by_key.end() || it->second.empty()) return false;
-    index = it->second.back();
-    it->second.pop_back();
-    used[index] = how;
-    return true;
-  };
-  for (size_t i = 0; i < mine.size(); ++i) {
-    if (!mine[i].broken && !mine[i].translated.empty() && take(canonical(mine[i].translated), partner[i], 1)) {
-      state[i] = 1;
-    }
-  }
-  if (kinds.reversed) {
-    for (size_t i = 0; i < mine.size(); ++i) {
-      if (state[i] == 0 && !mine[i].broken && !mine[i].translated.empty() &&
-          take(reversed(mine[i].translated), partner[i], 2)) {
-        state[i] = 2;
-      }
-    }
-  }
-
-  size_t skipped_mine = 0, skipped_theirs = 0;
-  for (size_t i = 0; i < mine.size(); ++i) {
-    const Cycle& c = mine[i];
-    if (state[i] == 1) continue;
-    kinds.extra->push_back(c.face);
-    if (c.broken) {
-      out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) +
-               " cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
-               "element";
-      });
-    } else if (c.translated.empty()) {
-      ++skipped_mine;
-    } else if (state[i] == 2) {
-      kinds.reversed->push_back(c.face);
-      const Cycle& r = theirs[partner[i]];
-      out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
-               " has the opposite orientation of reference " + kinds.noun + " " + id(r.face) + " " +
-               corners(r, "your");
-      });
-    } else {
-      out.add([&] {
-        return std::string("your ") + kinds.noun + " " + id(c.face) + " " + corners(c, "reference") +
-               " is not in the reference";
-      });
-    }
-  }
-  for (size_t i = 0; i < theirs.size(); ++i) {
-    const Cycle& r = theirs[i];
-    if (used[i] == 1) continue;
-    kinds.missing->push_back(r.face);
-    if (used[i] == 2) continue;  // reported above as the reversed partner of one of yours
-    if (r.broken) {
-      out.add([&] { return std::string("reference ") + kinds.noun + " " + id(r.face) + " cannot be walked"; });
-    } else if (r.translated.empty()) {
-      ++skipped_theirs;
-    } else {
-      out.add([&] {
-        return std::string("reference ") + kinds.noun + " " + id(r.face) + " " + corners(r, "your") +
-               " is missing from yours";
-      });
-    }
-  }
+  const CycleMatching matching = match_cycles(mine, theirs, kinds.reversed != nullptr);
+  const size_t skipped_mine = report_your_cycles(mine, theirs, matching, kinds, out);
+  const size_t skipped_theirs = report_reference_cycles(theirs, matching, kinds, out);
   if (skipped_mine + skipped_theirs > 0) {
     out.add([&] {
       return std::to_string(skipped_mine) + " of your " + kinds.noun + "s and " + std::to_string(skipped_theirs) +
@@ -386,7 +416,7 @@ EdgeEnds read_edge(const HalfedgeMesh& mesh, EdgeId e, const std::vector<VertexI
 }
 
 std::string edge_ends(const EdgeEnds& e, const char* other_whose) {
-  std::string s = "(" + id(VertexId(e.a)) + " " + id(VertexId(e.b));
+  std::string s = "(" + format_id(VertexId(e.a)) + " " + format_id(VertexId(e.b));
   Key own{e.a, e.b};
   std::sort(own.begin(), own.end());
   if (!e.translated.empty() && e.translated != own) {
@@ -419,12 +449,14 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     result.extra_edges.push_back(e.edge);
     if (e.broken) {
       out.add([&] {
-        return "your edge " + id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
+        return "your edge " + format_id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
       });
     } else if (e.translated.empty()) {
       ++skipped_mine;
     } else {
-      out.add([&] { return "your edge " + id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference"; });
+      out.add([&] {
+        return "your edge " + format_id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference";
+      });
     }
   }
   for (size_t i = 0; i < theirs.size(); ++i) {
@@ -432,11 +464,13 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     if (used[i]) continue;
     result.missing_edges.push_back(e.edge);
     if (e.broken) {
-      out.add([&] { return "reference edge " + id(e.edge) + " cannot be read"; });
+      out.add([&] { return "reference edge " + format_id(e.edge) + " cannot be read"; });
     } else if (e.translated.empty()) {
       ++skipped_theirs;
     } else {
-      out.add([&] { return "reference edge " + id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours"; });
+      out.add([&] {
+        return "reference edge " + format_id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours";
+      });
     }
   }
   if (skipped_mine + skipped_theirs > 0) {
@@ -448,6 +482,27 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
 }
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
+
+double mesh_tolerance(const HalfedgeMesh& input) {
+  glm::dvec3 lo(0.0), hi(0.0);
+  bool first = true;
+  for (VertexId v : input.vertices()) {
+    const glm::dvec3& p = input.position(v);
+    lo = first ? p : glm::min(lo, p);
+    hi = first ? p : glm::max(hi, p);
+    first = false;
+  }
+  const double diagonal = glm::distance(lo, hi);
+  return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
+}
+
+double points_tolerance(std::span<const glm::dvec3> points) {
+  double largest = 0.0;
+  for (const glm::dvec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
+  return 1e-9 * std::max(1.0, std::isfinite(largest) ? largest : 0.0);
+}
 
 std::string MeshComparison::summary() const {
   if (total_differences == 0) return "equal";
@@ -470,9 +525,9 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
       if (in_yours && in_reference) {
         compare_element(yours, reference, e, options.position_tolerance, out);
       } else if (in_yours) {
-        out.add([&] { return "yours has " + id(e) + ", the reference does not"; });
+        out.add([&] { return "yours has " + format_id(e) + ", the reference does not"; });
       } else if (in_reference) {
-        out.add([&] { return "the reference has " + id(e) + ", yours does not"; });
+        out.add([&] { return "the reference has " + format_id(e) + ", yours does not"; });
       }
     }
   }

@@ -25,8 +25,11 @@
 #pragma once
 
 #include <cstddef>
+#include <span>
 #include <string>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "core/halfedge_mesh.h"
 
@@ -66,5 +69,13 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
 // Up to renumbering (see above).
 MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
                               const CompareOptions& options = {});
+
+// The position tolerance for comparing what was made from `input` with the reference: 1e-9 x the bounding-box
+// diagonal of its live vertices, at least 1e-9 (and 1e-9 when the diagonal is not finite), so a unit cube and a scan
+// in millimetres are held to the same relative precision. Every check of one exercise on a mesh uses this one.
+double mesh_tolerance(const HalfedgeMesh& input);
+// The same for a list of points (a curve step's, a patch's): 1e-9 x their largest coordinate, at least 1e-9 (and 1e-9
+// when it is not finite).
+double points_tolerance(std::span<const glm::dvec3> points);
 
 }  // namespace meshedit

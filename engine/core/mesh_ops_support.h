@@ -17,8 +17,6 @@
 
 namespace meshedit::ops_detail {
 
-inline std::string id(ElementRef r) { return format_id(r); }
-
 // The two halfedges of an edge, named as in mesh_ops.h: h0 runs a -> b, h1 = h0.twin runs b -> a.
 struct EdgeHalves {
   HalfedgeId h0, h1;

@@ -1,6 +1,16 @@
 // The repair steps of mesh_repair.h on a working copy of the polygons: faces are dropped by flag (so a face's index
 // stays its original number), vertices are only appended (so an original vertex keeps its number) until step 6
 // renumbers both. Messages that name new vertices, and every change's spots, are made after that renumbering.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   working copy                          EdgeUse, Renumbering, Work (the polygons being repaired), edge_uses,
+//                                         for_each_edge
+//   steps 1 and 2: dropped faces          drop_bad_faces, drop_repeated_faces
+//   step 3: edges of three or more faces  detach_extra_faces
+//   step 4: orientation                   orient_components
+//   step 5: bow-ties                      split_bowties
+//   step 6 and the output                 finish: the final numbers, the repaired polygons
+//   repair_polygons                       the steps in order
 #include "core/mesh_repair.h"
 
 #include <algorithm>
@@ -14,6 +24,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- working copy ----------------------------------------------------------------------------------
 
 constexpr uint32_t kNone = UINT32_MAX;
 
@@ -134,6 +146,8 @@ bool goes_up(const Work& w, const EdgeUse& u) {
   return w.at(u.face, u.corner) < w.at(u.face, (u.corner + 1) % w.size(u.face));
 }
 
+// ---- steps 1 and 2: dropped faces ------------------------------------------------------------------
+
 void drop_bad_faces(Work& w) {
   std::vector<uint32_t> sorted;
   std::vector<glm::dvec3> corners;
@@ -223,6 +237,8 @@ void drop_repeated_faces(Work& w) {
   }
 }
 
+// ---- step 3: edges of three or more faces ----------------------------------------------------------
+
 // Returns whether any face was detached (so `uses` no longer describes the faces).
 bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
   const size_t before = w.report.detached_faces;
@@ -266,6 +282,8 @@ bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
   });
   return w.report.detached_faces != before;
 }
+
+// ---- step 4: orientation ---------------------------------------------------------------------------
 
 // `uses` must describe the faces as they are; reversing faces leaves their undirected edges as they were.
 void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
@@ -336,6 +354,8 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
           spots_of({}, sorted_copy(reversed_faces)));
   }
 }
+
+// ---- step 5: bow-ties ------------------------------------------------------------------------------
 
 uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
   while (parent[x] != x) x = parent[x] = parent[parent[x]];
@@ -413,6 +433,8 @@ void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
   }
 }
 
+// ---- step 6 and the output -------------------------------------------------------------------------
+
 // Step 6 and the output: the final numbers of used vertices and of kept faces, and the repaired polygons.
 PolygonMesh finish(Work& w, Renumbering& numbers) {
   FinalNumbers& final = numbers.vertices;
@@ -450,6 +472,8 @@ PolygonMesh finish(Work& w, Renumbering& numbers) {
 }
 
 }  // namespace
+
+// ---- repair_polygons -------------------------------------------------------------------------------
 
 RepairResult repair_polygons(const PolygonMesh& polygons) {
   Work w;

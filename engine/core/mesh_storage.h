@@ -106,7 +106,8 @@ struct MeshStorage {
   static void set_journal(HalfedgeMesh& m, ChangeJournal* journal) { m.journal_.journal_ = journal; }
   // Sets every array of each kind to these slot counts (kinds in ElementKind order): new slots are dead with
   // invalid pointers and position (0,0,0); slots past the count are dropped. Live counts are set as given.
-  static void set_slots(HalfedgeMesh& m, const uint32_t (&capacity)[5], const size_t (&live)[5]) {
+  static void set_slots(HalfedgeMesh& m, const uint32_t (&capacity)[kElementKindCount],
+                        const size_t (&live)[kElementKindCount]) {
     m.journal_.before_bulk_write();
     m.v_halfedge_.resize(capacity[0]);
     m.v_position_.resize(capacity[0]);
@@ -128,15 +129,16 @@ struct MeshStorage {
   // Makes room for set_slots(m, capacity, live) and for then writing any values into those slots (dead flags
   // included), so that neither allocates. Changes no value, so a journal is not told; out of memory, throws
   // std::bad_alloc with the mesh as it was.
-  static void reserve_slots(HalfedgeMesh& m, const uint32_t (&capacity)[5], const size_t (&live)[5]) {
+  static void reserve_slots(HalfedgeMesh& m, const uint32_t (&capacity)[kElementKindCount],
+                            const size_t (&live)[kElementKindCount]) {
     m.v_halfedge_.reserve(capacity[0]);
     m.v_position_.reserve(capacity[0]);
     m.h_.reserve(capacity[1]);
     m.e_halfedge_.reserve(capacity[2]);
     m.f_halfedge_.reserve(capacity[3]);
     m.b_halfedge_.reserve(capacity[4]);
-    AliveFlags* alive[5] = {&m.v_alive_, &m.h_alive_, &m.e_alive_, &m.f_alive_, &m.b_alive_};
-    for (int k = 0; k < 5; ++k) {
+    AliveFlags* alive[kElementKindCount] = {&m.v_alive_, &m.h_alive_, &m.e_alive_, &m.f_alive_, &m.b_alive_};
+    for (int k = 0; k < kElementKindCount; ++k) {
       // Dead bits are needed when the kind grows (new slots start dead) or when the new state has dead slots.
       if (capacity[k] > alive[k]->size() || live[k] < capacity[k]) alive[k]->reserve_bits(capacity[k]);
     }

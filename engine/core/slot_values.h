@@ -16,8 +16,6 @@
 
 namespace meshedit {
 
-inline constexpr int kElementKindCount = 5;  // Vertex, Halfedge, Edge, Face, Boundary (ElementKind order)
-
 struct SlotValues {
   HalfedgeRecord record;      // halfedges: next, twin, vertex, edge, face
   glm::dvec3 position{0.0};   // vertices

@@ -10,14 +10,12 @@
 
 namespace meshedit {
 
-using ops_detail::id;
-
 Check can_split(const HalfedgeMesh& mesh, EdgeId e) {
   ops_detail::EdgeHalves halves;
   if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
   if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
-    return Check::no(id(e) + " has boundary loops on both sides (" + id(mesh.face(halves.h0)) + " and " +
-                     id(mesh.face(halves.h1)) + "); there is no face to split");
+    return Check::no(format_id(e) + " has boundary loops on both sides (" + format_id(mesh.face(halves.h0)) + " and " +
+                     format_id(mesh.face(halves.h1)) + "); there is no face to split");
   }
   const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
   constexpr const char* kPurpose = "only edges of triangles can be split";
@@ -28,8 +26,9 @@ Check can_split(const HalfedgeMesh& mesh, EdgeId e) {
   const VertexId c = mesh.vertex(mesh.next(mesh.next(h0)));
   const VertexId d = mesh.vertex(mesh.next(mesh.next(h1)));
   if (c == d) {
-    return Check::no(id(mesh.face(h0)) + " and " + id(mesh.face(h1)) + " have the same corners; splitting " + id(e) +
-                     " would join the new vertex to " + id(c) + " twice");
+    return Check::no(format_id(mesh.face(h0)) + " and " + format_id(mesh.face(h1)) +
+                     " have the same corners; splitting " + format_id(e) + " would join the new vertex to " +
+                     format_id(c) + " twice");
   }
   return Check::yes();
 }

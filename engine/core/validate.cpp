@@ -10,6 +10,20 @@
 //   more memory than the cap, and messages past the cap are never even formatted.
 // - One cause, one report where possible: a walk that meets a dead pointer stops silently, since the
 //   DeadReference check already names that pointer.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   messages            bad_target, id_list, Path, Collector (the bounded heap of the smallest keys)
+//   Validator           run: the checks below, in the order of Invariant
+//   DeadReference       check_references, and who refers to whom
+//   TwinOfTwin          check_twins
+//   TwinEdge            check_edges
+//   FaceCycle           check_faces, walk_face
+//   NextNotPermutation  check_next_permutation
+//   VertexHalfedge      check_vertex_halfedges
+//   VertexFan           check_fans, walk_fan (and the all-boundary orphan)
+//   Orphan              check_orphans
+//   NonFinitePosition   check_positions
+//   public functions    invariant_name, ValidationReport::summary, validate
 #include "core/validate.h"
 
 #include <algorithm>
@@ -23,10 +37,10 @@
 namespace meshedit {
 namespace {
 
+// ---- messages --------------------------------------------------------------------------------------
+
 // Ids listed in one message, so a huge broken fan or cycle does not make a huge message.
 constexpr size_t kListCap = 8;
-
-std::string id(ElementRef r) { return format_id(r); }
 
 // Describes a reference that failed alive(): "- (none)", "h99, past the end (48 halfedge slots)",
 // "h7, which is dead".
@@ -34,9 +48,9 @@ std::string bad_target(const HalfedgeMesh& m, ElementRef r) {
   if (!r.valid()) return "- (none)";
   const uint32_t slots = m.capacity(r.kind);
   if (r.index >= slots) {
-    return id(r) + ", past the end (" + std::to_string(slots) + " " + kind_name(r.kind) + " slots)";
+    return format_id(r) + ", past the end (" + std::to_string(slots) + " " + kind_name(r.kind) + " slots)";
   }
-  return id(r) + ", which is dead";
+  return format_id(r) + ", which is dead";
 }
 
 // "h3 h9 h20", or "h3 h9 ... (40 more)" past kListCap.
@@ -44,7 +58,7 @@ std::string id_list(const std::vector<HalfedgeId>& ids, size_t total) {
   std::string s;
   for (size_t i = 0; i < ids.size() && i < kListCap; ++i) {
     if (i > 0) s += ' ';
-    s += id(ids[i]);
+    s += format_id(ids[i]);
   }
   if (total > kListCap) s += " ... (" + std::to_string(total - kListCap) + " more)";
   return s;
@@ -113,6 +127,8 @@ class Collector {
   std::vector<Entry> heap_;  // max-heap on key: the front is the first to drop
 };
 
+// ---- Validator -------------------------------------------------------------------------------------
+
 class Validator {
  public:
   Validator(const HalfedgeMesh& mesh, size_t cap) : m_(mesh), out_(cap) {}
@@ -148,9 +164,8 @@ class Validator {
     in_face_.assign(size_t(m_.face_capacity()) + m_.boundary_capacity(), 0);
 
     auto dead = [&](ElementRef owner, const char* field, ElementRef target) {
-      out_.add(Invariant::DeadReference, owner, [&] {
-        return id(owner) + "." + field + " is " + bad_target(m_, target);
-      });
+      out_.add(Invariant::DeadReference, owner,
+               [&] { return format_id(owner) + "." + field + " is " + bad_target(m_, target); });
     };
     for (HalfedgeId h : m_.halfedges()) {
       const HalfedgeId n = m_.next(h), t = m_.twin(h);
@@ -180,11 +195,11 @@ class Validator {
       const HalfedgeId t = m_.twin(h);
       if (!m_.alive(t)) continue;
       if (t == h) {
-        out_.add(Invariant::TwinOfTwin, h, [&] { return id(h) + ".twin is " + id(h) + " itself"; });
+        out_.add(Invariant::TwinOfTwin, h, [&] { return format_id(h) + ".twin is " + format_id(h) + " itself"; });
       } else if (m_.twin(t) != h) {
         out_.add(Invariant::TwinOfTwin, h, [&] {
-          return id(h) + ".twin is " + id(t) + ", but " + id(t) + ".twin is " + id(m_.twin(t)) + " (should be " +
-                 id(h) + ")";
+          return format_id(h) + ".twin is " + format_id(t) + ", but " + format_id(t) + ".twin is " +
+                 format_id(m_.twin(t)) + " (should be " + format_id(h) + ")";
         });
       }
     }
@@ -199,8 +214,8 @@ class Validator {
       if (!m_.alive(t) || t == h || m_.twin(t) != h || t < h) continue;  // unpaired twins: TwinOfTwin
       if (m_.edge(h) != m_.edge(t)) {
         out_.add(Invariant::TwinEdge, h, [&] {
-          return id(h) + " and its twin " + id(t) + " lie on different edges (" + id(m_.edge(h)) + " and " +
-                 id(m_.edge(t)) + ")";
+          return format_id(h) + " and its twin " + format_id(t) + " lie on different edges (" + format_id(m_.edge(h)) +
+                 " and " + format_id(m_.edge(t)) + ")";
         });
       }
     }
@@ -208,7 +223,8 @@ class Validator {
       const HalfedgeId s = m_.halfedge(e);
       if (m_.alive(s) && m_.edge(s) != e) {
         out_.add(Invariant::TwinEdge, e, [&] {
-          return id(e) + ".halfedge is " + id(s) + ", but " + id(s) + ".edge is " + id(m_.edge(s));
+          return format_id(e) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + ".edge is " +
+                 format_id(m_.edge(s));
         });
       }
     }
@@ -227,7 +243,7 @@ class Validator {
       const std::vector<HalfedgeId>& list = entry.second;
       const EdgeId e(index);
       out_.add(Invariant::TwinEdge, e, [&] {
-        return id(e) + " has " + std::to_string(on_edge_[index]) + " halfedges (" +
+        return format_id(e) + " has " + std::to_string(on_edge_[index]) + " halfedges (" +
                id_list(list, on_edge_[index]) + "); an edge has exactly two";
       });
     }
@@ -250,11 +266,13 @@ class Validator {
       if (owner.valid()) {
         if (!face_closed_[face_slot(owner)]) continue;
         out_.add(Invariant::FaceCycle, h, [&] {
-          return id(h) + ".face is " + id(f) + ", but " + id(h) + " is in " + id(owner) + "'s next-cycle";
+          return format_id(h) + ".face is " + format_id(f) + ", but " + format_id(h) + " is in " + format_id(owner) +
+                 "'s next-cycle";
         });
       } else if (face_closed_[face_slot(f)]) {
         out_.add(Invariant::FaceCycle, h, [&] {
-          return id(h) + ".face is " + id(f) + ", but " + id(h) + " is not in " + id(f) + "'s next-cycle";
+          return format_id(h) + ".face is " + format_id(f) + ", but " + format_id(h) + " is not in " + format_id(f) +
+                 "'s next-cycle";
         });
       }
     }
@@ -265,7 +283,8 @@ class Validator {
     if (!m_.alive(s)) return;  // DeadReference
     if (m_.face(s) != f) {
       out_.add(Invariant::FaceCycle, f, [&] {
-        return id(f) + ".halfedge is " + id(s) + ", but " + id(s) + ".face is " + id(m_.face(s));
+        return format_id(f) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + ".face is " +
+               format_id(m_.face(s));
       });
       return;
     }
@@ -277,15 +296,15 @@ class Validator {
       if (owner == f) {
         if (h == s) break;  // closed
         out_.add(Invariant::FaceCycle, f, [&] {
-          return id(f) + "'s next-cycle does not close: " + path.str() + " then comes back to " + id(h) +
-                 ", never to " + id(f) + ".halfedge " + id(s);
+          return format_id(f) + "'s next-cycle does not close: " + path.str() + " then comes back to " + format_id(h) +
+                 ", never to " + format_id(f) + ".halfedge " + format_id(s);
         });
         return;
       }
       if (owner.valid()) {
         out_.add(Invariant::FaceCycle, f, [&] {
-          return id(f) + "'s next-cycle does not close: " + (path.length == 0 ? "" : path.str() + " then ") +
-                 "it reaches " + id(h) + ", which is in " + id(owner) + "'s next-cycle";
+          return format_id(f) + "'s next-cycle does not close: " + (path.length == 0 ? "" : path.str() + " then ") +
+                 "it reaches " + format_id(h) + ", which is in " + format_id(owner) + "'s next-cycle";
         });
         return;
       }
@@ -298,7 +317,7 @@ class Validator {
     face_closed_[face_slot(f)] = 1;
     if (path.length < 3) {
       out_.add(Invariant::FaceCycle, f, [&] {
-        return id(f) + "'s next-cycle has only " + std::to_string(path.length) + " halfedge" +
+        return format_id(f) + "'s next-cycle has only " + std::to_string(path.length) + " halfedge" +
                (path.length == 1 ? "" : "s") + " (" + path.str() + "); a " +
                (f.is_boundary() ? "boundary loop" : "face") + " needs at least 3";
       });
@@ -323,8 +342,8 @@ class Validator {
       const uint32_t count = next_count_[h.index];
       if (count == 1) continue;
       out_.add(Invariant::NextNotPermutation, h, [&] {
-        if (count == 0) return "no live halfedge has " + id(h) + " as its next";
-        return id(h) + " is the next of " + std::to_string(count) + " halfedges (" +
+        if (count == 0) return "no live halfedge has " + format_id(h) + " as its next";
+        return format_id(h) + " is the next of " + std::to_string(count) + " halfedges (" +
                id_list(shared[h.index], count) + ")";
       });
     }
@@ -336,7 +355,8 @@ class Validator {
       const HalfedgeId s = m_.halfedge(v);
       if (m_.alive(s) && m_.vertex(s) != v) {
         out_.add(Invariant::VertexHalfedge, v, [&] {
-          return id(v) + ".halfedge is " + id(s) + ", but " + id(s) + " leaves " + id(m_.vertex(s));
+          return format_id(v) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + " leaves " +
+                 format_id(m_.vertex(s));
         });
       }
     }
@@ -382,7 +402,7 @@ class Validator {
           g = m_.next(m_.twin(g));
         } while (g != start);
         const size_t count = groups.size() + 1;
-        std::string s = id(v) + " has " + (count == 2 ? std::string("two") : std::to_string(count)) +
+        std::string s = format_id(v) + " has " + (count == 2 ? std::string("two") : std::to_string(count)) +
                         " separate fans (hourglass): " + first.str();
         for (const Path& group : groups) s += " | " + group.str();
         return s;
@@ -404,8 +424,8 @@ class Validator {
       if (fan_owner_[h.index] == v) {
         if (h == s) break;
         out_.add(Invariant::VertexFan, v, [&] {
-          return id(v) + "'s fan does not close: " + path.str() + " then comes back to " + id(h) + ", never to " +
-                 id(v) + ".halfedge " + id(s);
+          return format_id(v) + "'s fan does not close: " + path.str() + " then comes back to " + format_id(h) +
+                 ", never to " + format_id(v) + ".halfedge " + format_id(s);
         });
         return false;
       }
@@ -423,8 +443,8 @@ class Validator {
       if (!m_.alive(n)) return false;  // DeadReference
       if (m_.vertex(n) != v) {
         out_.add(Invariant::VertexFan, v, [&] {
-          return id(v) + "'s fan does not close: " + id(h) + ".twin is " + id(t) + ", whose next " + id(n) +
-                 " leaves " + id(m_.vertex(n)) + ", not " + id(v);
+          return format_id(v) + "'s fan does not close: " + format_id(h) + ".twin is " + format_id(t) +
+                 ", whose next " + format_id(n) + " leaves " + format_id(m_.vertex(n)) + ", not " + format_id(v);
         });
         return false;
       }
@@ -432,17 +452,16 @@ class Validator {
     }
     if (boundary.size() > 1) {
       out_.add(Invariant::VertexFan, v, [&] {
-        std::string message = id(v) + " is on the boundary more than once:";
+        std::string message = format_id(v) + " is on the boundary more than once:";
         for (size_t i = 0; i < boundary.size() && i < kListCap; ++i) {
-          message += " " + id(boundary[i]) + " (" + id(m_.face(boundary[i])) + ")";
+          message += " " + format_id(boundary[i]) + " (" + format_id(m_.face(boundary[i])) + ")";
         }
         return message + "; at most one boundary halfedge may leave a vertex";
       });
     }
     if (!has_face) {
-      out_.add(Invariant::Orphan, v, [&] {
-        return id(v) + " is orphaned: every face around it is a boundary loop";
-      });
+      out_.add(Invariant::Orphan, v,
+               [&] { return format_id(v) + " is orphaned: every face around it is a boundary loop"; });
     }
     return true;
   }
@@ -451,12 +470,12 @@ class Validator {
   void check_orphans() {
     for (VertexId v : m_.vertices()) {
       if (leaving_[v.index] == 0) {
-        out_.add(Invariant::Orphan, v, [&] { return id(v) + " is orphaned: no live halfedge leaves it"; });
+        out_.add(Invariant::Orphan, v, [&] { return format_id(v) + " is orphaned: no live halfedge leaves it"; });
       }
     }
     for (EdgeId e : m_.edges()) {
       if (on_edge_[e.index] == 0) {
-        out_.add(Invariant::Orphan, e, [&] { return id(e) + " is orphaned: no live halfedge lies on it"; });
+        out_.add(Invariant::Orphan, e, [&] { return format_id(e) + " is orphaned: no live halfedge lies on it"; });
         continue;
       }
       const HalfedgeId s = m_.halfedge(e);
@@ -465,14 +484,14 @@ class Validator {
       if (!m_.alive(t) || t == s || m_.twin(t) != s) continue;
       if (m_.face(s).is_boundary() && m_.face(t).is_boundary()) {
         out_.add(Invariant::Orphan, e, [&] {
-          return id(e) + " is orphaned: both its sides are boundary loops (" + id(m_.face(s)) + " and " +
-                 id(m_.face(t)) + ")";
+          return format_id(e) + " is orphaned: both its sides are boundary loops (" + format_id(m_.face(s)) + " and " +
+                 format_id(m_.face(t)) + ")";
         });
       }
     }
     for_each_face_and_boundary([&](FaceId f) {
       if (in_face_[face_slot(f)] == 0) {
-        out_.add(Invariant::Orphan, f, [&] { return id(f) + " is orphaned: no live halfedge lies in it"; });
+        out_.add(Invariant::Orphan, f, [&] { return format_id(f) + " is orphaned: no live halfedge lies in it"; });
       }
     });
   }
@@ -482,7 +501,7 @@ class Validator {
     for (VertexId v : m_.vertices()) {
       const glm::dvec3& p = m_.position(v);
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        out_.add(Invariant::NonFinitePosition, v, [&] { return id(v) + ".position is " + format_position(p); });
+        out_.add(Invariant::NonFinitePosition, v, [&] { return format_id(v) + ".position is " + format_position(p); });
       }
     }
   }
@@ -501,6 +520,8 @@ class Validator {
 };
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 const char* invariant_name(Invariant invariant) {
   switch (invariant) {

@@ -1,4 +1,4 @@
-// Shortest round-trip printing of doubles (see value_format.h).
+// Shortest round-trip printing of doubles, counts with their nouns, byte sizes (see value_format.h).
 #include "core/value_format.h"
 
 #include <charconv>
@@ -23,6 +23,16 @@ std::string format_number(double x) {
 
 std::string format_position(const glm::dvec3& p) {
   return "(" + format_number(p.x) + ", " + format_number(p.y) + ", " + format_number(p.z) + ")";
+}
+
+std::string plural(size_t n, const char* one, const char* many) {
+  return std::to_string(n) + " " + (n == 1 ? one : many);
+}
+
+std::string format_bytes(size_t bytes) {
+  constexpr size_t kKilobyte = size_t(1) << 10, kMegabyte = size_t(1) << 20;
+  if (bytes < kMegabyte) return std::to_string((bytes + kKilobyte - 1) / kKilobyte) + " KB";
+  return std::to_string((bytes + kMegabyte - 1) / kMegabyte) + " MB";
 }
 
 }  // namespace meshedit

@@ -109,42 +109,28 @@ struct Stream {
   bool open = true;
 };
 
-}  // namespace
+using Pipes = int[3][2];  // the child's stdout, stderr and report: [read end, write end] each
 
-ChildResult run_in_child(const ChildLimits& limits, const std::function<std::string()>& body) {
-  int pipes[3][2];
+void close_pipes(Pipes& pipes, int count) {
+  for (int i = 0; i < count; ++i) {
+    close(pipes[i][0]);
+    close(pipes[i][1]);
+  }
+}
+
+void make_pipes(Pipes& pipes) {
   for (int i = 0; i < 3; ++i) {
     if (pipe2(pipes[i], O_CLOEXEC) != 0) {
-      for (int j = 0; j < i; ++j) {
-        close(pipes[j][0]);
-        close(pipes[j][1]);
-      }
+      close_pipes(pipes, i);
       throw GradeError(std::string("cannot make a pipe for a test: ") + std::strerror(errno));
     }
   }
-  const pid_t parent = getpid();
-  const auto start = std::chrono::steady_clock::now();
-  const pid_t pid = fork();
-  if (pid < 0) {
-    for (auto& p : pipes) {
-      close(p[0]);
-      close(p[1]);
-    }
-    throw GradeError(std::string("cannot start a process for a test: ") + std::strerror(errno));
-  }
-  if (pid == 0) {
-    // dup2 clears O_CLOEXEC on the copies; the originals close at _exit anyway.
-    child_main(limits, parent, pipes[0][1], pipes[1][1], pipes[2][1], body);
-  }
-  for (auto& p : pipes) close(p[1]);
+}
 
-  ChildResult result;
-  std::string report;
-  Stream streams[3] = {{pipes[0][0], &result.out, limits.output_bytes},
-                       {pipes[1][0], &result.err, limits.output_bytes},
-                       {pipes[2][0], &report, limits.report_bytes + 4096}};
-  const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                                    std::chrono::duration<double>(limits.wall_seconds));
+// Reads the streams (each up to its cap) until every one is closed; kills the child at the deadline, and stops
+// waiting for a pipe that stays open after the kill.
+void read_until_closed(pid_t pid, Stream (&streams)[3], std::chrono::steady_clock::time_point deadline,
+                       ChildResult& result) {
   char buffer[65536];
   for (;;) {
     pollfd fds[3];
@@ -183,13 +169,11 @@ ChildResult run_in_child(const ChildLimits& limits, const std::function<std::str
     }
     if (ready == 0 && result.timed_out) break;  // killed, yet a pipe stays open: stop waiting for it
   }
-  for (auto& s : streams) close(s.fd);
-  int status = 0;
-  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
-  }
-  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
-  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+}
+
+// The report pipe's text without its first byte (child_main's header), the filter's problem taken from it; kept as
+// the result's report only when the child ended well and it fits.
+void take_report(std::string& report, const ChildLimits& limits, ChildResult& result) {
   if (!report.empty() && static_cast<unsigned char>(report[0]) == kFilterFailed) {
     const size_t end = report.find('\n');
     result.filter_problem = report.substr(1, end == std::string::npos ? std::string::npos : end - 1);
@@ -199,6 +183,42 @@ ChildResult run_in_child(const ChildLimits& limits, const std::function<std::str
   }
   result.report_complete = result.exit_code == 0 && !result.timed_out && report.size() <= limits.report_bytes;
   if (result.report_complete) result.report = std::move(report);
+}
+
+}  // namespace
+
+ChildResult run_in_child(const ChildLimits& limits, const std::function<std::string()>& body) {
+  Pipes pipes;
+  make_pipes(pipes);
+  const pid_t parent = getpid();
+  const auto start = std::chrono::steady_clock::now();
+  const pid_t pid = fork();
+  if (pid < 0) {
+    close_pipes(pipes, 3);
+    throw GradeError(std::string("cannot start a process for a test: ") + std::strerror(errno));
+  }
+  if (pid == 0) {
+    // dup2 clears O_CLOEXEC on the copies; the originals close at _exit anyway.
+    child_main(limits, parent, pipes[0][1], pipes[1][1], pipes[2][1], body);
+  }
+  for (auto& p : pipes) close(p[1]);
+
+  ChildResult result;
+  std::string report;
+  Stream streams[3] = {{pipes[0][0], &result.out, limits.output_bytes},
+                       {pipes[1][0], &result.err, limits.output_bytes},
+                       {pipes[2][0], &report, limits.report_bytes + 4096}};
+  const auto deadline = start + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                    std::chrono::duration<double>(limits.wall_seconds));
+  read_until_closed(pid, streams, deadline, result);
+  for (auto& s : streams) close(s.fd);
+  int status = 0;
+  while (waitpid(pid, &status, 0) < 0 && errno == EINTR) {
+  }
+  result.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  if (WIFEXITED(status)) result.exit_code = WEXITSTATUS(status);
+  if (WIFSIGNALED(status)) result.signal = WTERMSIG(status);
+  take_report(report, limits, result);
   return result;
 }
 

@@ -11,6 +11,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/file_bytes.h"
 #include "core/value_format.h"
 #include "grade/results_writers.h"
 
@@ -41,16 +42,15 @@ int work(Suite& suite, const ClassEntry& entry, const GradeOptions& options) {
 }
 
 void read_back(ClassEntry& entry, int status) {
-  std::ifstream in(entry.results);
-  if (!in) {
-    std::ifstream reason(entry.results.string() + ".error");
-    std::string text;
-    std::getline(reason, text);
+  const FileBytes results = read_file_bytes(entry.results);
+  if (!results.ok()) {
+    const FileBytes reason = read_file_bytes(entry.results.string() + ".error");
+    const std::string text = reason.bytes.substr(0, reason.bytes.find('\n'));
     entry.problem = !text.empty() ? text : "the grading process ended with status " + std::to_string(status);
     return;
   }
   try {
-    const nlohmann::json j = nlohmann::json::parse(in);
+    const nlohmann::json j = nlohmann::json::parse(results.bytes);
     entry.score = j.at("score").get<double>();
     entry.max_score = j.at("max_score").get<double>();
     for (const auto& t : j.at("tests")) (t.at("status") == "passed" ? entry.passed : entry.failed) += 1;

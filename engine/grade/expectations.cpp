@@ -148,87 +148,95 @@ std::string describe_value(lua_State* L, int index) {
 
 namespace {
 
+// The place a difference is at, before its message: "[2].position: ", or "" at the top.
+std::string place(const std::string& path) { return path.empty() ? "" : path + ": "; }
+
+std::optional<std::string> difference(lua_State* L, int a, int b, const std::string& path, int depth);
+
+// "expected X, got Y" for actual (a) and expected (b).
+std::string mismatch(lua_State* L, int a, int b, const std::string& path) {
+  return place(path) + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
+}
+
+// Handles are equal when they name the same element of the same mesh, meshes when they are the same mesh.
+std::optional<std::string> userdata_difference(lua_State* L, int a, int b, const std::string& path) {
+  const Handle* ha = test_handle(L, a);
+  const Handle* hb = test_handle(L, b);
+  if (ha || hb) {
+    if (!ha || !hb || ha->mesh() != hb->mesh() || ha->ref() != hb->ref()) return mismatch(L, a, b, path);
+    return std::nullopt;
+  }
+  auto ma = to_mesh(L, a);
+  auto mb = to_mesh(L, b);
+  if (ma || mb) {
+    if (ma != mb) return place(path) + "expected the same mesh, got another one";
+    return std::nullopt;
+  }
+  if (!lua_rawequal(L, a, b)) return mismatch(L, a, b, path);
+  return std::nullopt;
+}
+
+// How the key below the top value reads after a path: ".name", "[3]", "[true]".
+std::string key_text(lua_State* L) {
+  if (lua_type(L, -3) == LUA_TSTRING) return std::string(".") + lua_tostring(L, -3);
+  if (lua_type(L, -3) == LUA_TNUMBER) return "[" + describe_number(L, -3) + "]";
+  return "[" + describe_value(L, -3) + "]";
+}
+
+// Points compare as points, lists by length first; then every key of expected must be in actual with an equal
+// value, and actual must have no key expected lacks.
+std::optional<std::string> table_difference(lua_State* L, int a, int b, const std::string& path, int depth) {
+  auto pa = raw_point(L, a);
+  auto pb = raw_point(L, b);
+  if (pa && pb) {
+    if (*pa != *pb) return mismatch(L, a, b, path);
+    return std::nullopt;
+  }
+  if (lua_rawequal(L, a, b)) return std::nullopt;
+  const lua_Integer na = static_cast<lua_Integer>(lua_rawlen(L, a));
+  const lua_Integer nb = static_cast<lua_Integer>(lua_rawlen(L, b));
+  if (na != nb && nb > 0) return place(path) + "expected " + count_items(nb) + ", got " + std::to_string(na);
+  luaL_checkstack(L, 6, "comparing tables");
+  lua_pushnil(L);
+  while (lua_next(L, b) != 0) {
+    lua_pushvalue(L, -2);
+    lua_rawget(L, a);
+    auto d = difference(L, -1, -2, path + key_text(L), depth + 1);
+    lua_pop(L, 2);
+    if (d) {
+      lua_pop(L, 1);
+      return d;
+    }
+  }
+  lua_pushnil(L);
+  while (lua_next(L, a) != 0) {
+    lua_pushvalue(L, -2);
+    const bool missing = lua_rawget(L, b) == LUA_TNIL;
+    lua_pop(L, 1);
+    if (missing) {
+      const std::string key = describe_value(L, -2);
+      lua_pop(L, 2);
+      return place(path) + "unexpected key " + key;
+    }
+    lua_pop(L, 1);
+  }
+  return std::nullopt;
+}
+
 // The first difference between actual (a) and expected (b), or nullopt when they are equal.
 std::optional<std::string> difference(lua_State* L, int a, int b, const std::string& path, int depth) {
   a = lua_absindex(L, a);
   b = lua_absindex(L, b);
-  const auto mismatch = [&] {
-    return (path.empty() ? "" : path + ": ") + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
-  };
   const int ta = lua_type(L, a);
   const int tb = lua_type(L, b);
-  if (ta != tb) return mismatch();
-  if (depth > 32) return (path.empty() ? "" : path + ": ") + "tables nested too deep to compare";
+  if (ta != tb) return mismatch(L, a, b, path);
+  if (depth > 32) return place(path) + "tables nested too deep to compare";
   switch (ta) {
     case LUA_TNIL: return std::nullopt;
-    case LUA_TNUMBER:
-    case LUA_TBOOLEAN:
-    case LUA_TSTRING:
-      if (!lua_rawequal(L, a, b)) return mismatch();
-      return std::nullopt;
-    case LUA_TUSERDATA: {
-      const Handle* ha = test_handle(L, a);
-      const Handle* hb = test_handle(L, b);
-      if (ha || hb) {
-        if (!ha || !hb || ha->mesh() != hb->mesh() || ha->ref() != hb->ref()) return mismatch();
-        return std::nullopt;
-      }
-      auto ma = to_mesh(L, a);
-      auto mb = to_mesh(L, b);
-      if (ma || mb) {
-        if (ma != mb) return (path.empty() ? "" : path + ": ") + "expected the same mesh, got another one";
-        return std::nullopt;
-      }
-      if (!lua_rawequal(L, a, b)) return mismatch();
-      return std::nullopt;
-    }
-    case LUA_TTABLE: {
-      auto pa = raw_point(L, a);
-      auto pb = raw_point(L, b);
-      if (pa && pb) {
-        if (*pa != *pb) return mismatch();
-        return std::nullopt;
-      }
-      if (lua_rawequal(L, a, b)) return std::nullopt;
-      const lua_Integer na = static_cast<lua_Integer>(lua_rawlen(L, a));
-      const lua_Integer nb = static_cast<lua_Integer>(lua_rawlen(L, b));
-      if (na != nb && nb > 0) {
-        return (path.empty() ? "" : path + ": ") + "expected " + count_items(nb) + ", got " + std::to_string(na);
-      }
-      luaL_checkstack(L, 6, "comparing tables");
-      // Every key of expected must be in actual with an equal value...
-      lua_pushnil(L);
-      while (lua_next(L, b) != 0) {
-        lua_pushvalue(L, -2);
-        lua_rawget(L, a);
-        std::string key;
-        if (lua_type(L, -3) == LUA_TSTRING) key = std::string(".") + lua_tostring(L, -3);
-        else if (lua_type(L, -3) == LUA_TNUMBER) key = "[" + describe_number(L, -3) + "]";
-        else key = "[" + describe_value(L, -3) + "]";
-        auto d = difference(L, -1, -2, path + key, depth + 1);
-        lua_pop(L, 2);
-        if (d) {
-          lua_pop(L, 1);
-          return d;
-        }
-      }
-      // ...and actual must have no key expected lacks.
-      lua_pushnil(L);
-      while (lua_next(L, a) != 0) {
-        lua_pushvalue(L, -2);
-        const bool missing = lua_rawget(L, b) == LUA_TNIL;
-        lua_pop(L, 1);
-        if (missing) {
-          const std::string key = describe_value(L, -2);
-          lua_pop(L, 2);
-          return (path.empty() ? "" : path + ": ") + "unexpected key " + key;
-        }
-        lua_pop(L, 1);
-      }
-      return std::nullopt;
-    }
-    default:
-      if (!lua_rawequal(L, a, b)) return mismatch();
+    case LUA_TUSERDATA: return userdata_difference(L, a, b, path);
+    case LUA_TTABLE: return table_difference(L, a, b, path, depth);
+    default:  // numbers, booleans, strings, functions, threads
+      if (!lua_rawequal(L, a, b)) return mismatch(L, a, b, path);
       return std::nullopt;
   }
 }
@@ -237,7 +245,7 @@ std::optional<std::string> near_difference(lua_State* L, int a, int b, double to
                                            int depth) {
   a = lua_absindex(L, a);
   b = lua_absindex(L, b);
-  const std::string where = path.empty() ? "" : path + ": ";
+  const std::string where = place(path);
   std::ostringstream tol;
   tol << " (tolerance " << tolerance << ")";
   if (lua_type(L, b) == LUA_TNUMBER) {

@@ -10,6 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
+#include "core/value_format.h"
 #include "grade/child_process.h"
 #include "script/exercises.h"
 
@@ -25,10 +26,6 @@ RunEnd end_from_name(const std::string& name) {
     if (name == run_end_name(e)) return e;
   }
   throw GradeError("unknown end '" + name + "' in a test report");
-}
-
-std::string plural(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 // The window's hint for a run that did not finish (exercises.h), when the test loads one exercise's file.

@@ -2,10 +2,10 @@
 #include "grade/submission.h"
 
 #include <algorithm>
-#include <fstream>
 #include <map>
-#include <sstream>
 #include <system_error>
+
+#include "core/file_bytes.h"
 
 namespace meshedit {
 namespace {
@@ -81,18 +81,16 @@ Submission Submission::read(const fs::path& folder) {
       s.notes_.push_back("several files are called " + name + "; used " + chosen.relative);
     }
     const auto size = fs::file_size(chosen.path, ec);
-    if (ec || size > kMaxFileBytes) {
-      s.notes_.push_back(name + " is larger than " + std::to_string(kMaxFileBytes >> 10) + " KB: skipped");
+    if (ec || size > kMaxSubmittedFileBytes) {
+      s.notes_.push_back(name + " is larger than " + std::to_string(kMaxSubmittedFileBytes >> 10) + " KB: skipped");
       continue;
     }
-    std::ifstream in(chosen.path, std::ios::binary);
-    if (!in) {
+    FileBytes file = read_file_bytes(chosen.path, kMaxSubmittedFileBytes);
+    if (!file.ok()) {
       s.notes_.push_back(name + " could not be read");
       continue;
     }
-    std::ostringstream text;
-    text << in.rdbuf();
-    s.files_.push_back({name, chosen.relative, text.str().substr(0, kMaxFileBytes)});
+    s.files_.push_back({name, chosen.relative, std::move(file.bytes)});
   }
   return s;
 }

@@ -7,7 +7,7 @@
 // - A file is known by its base name ("flip.lua"). Files at the top of the folder win; a file found only in
 //   a subfolder (students often zip their folder) is used too, and the notes say where it was found. Hidden
 //   folders and __MACOSX are skipped; the search stops 4 folders deep.
-// - Sizes are capped (kMaxFileBytes each, kMaxFiles files); what is skipped is named in the notes.
+// - Sizes are capped (kMaxSubmittedFileBytes each, kMaxFiles files); what is skipped is named in the notes.
 #pragma once
 
 #include <cstddef>
@@ -33,7 +33,7 @@ struct SubmissionFile {
 
 class Submission {
  public:
-  static constexpr size_t kMaxFileBytes = size_t(1) << 20;
+  static constexpr size_t kMaxSubmittedFileBytes = size_t(1) << 20;  // each .lua file; a larger one is skipped
   static constexpr size_t kMaxFiles = 200;
 
   // Reads every .lua file of `folder`. Throws GradeError when the folder does not exist or cannot be listed.

@@ -1,17 +1,24 @@
 // Suite: loading a suite file (the suite{} and test{} declarations) and running one test in this process
 // (see suite.h).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   fields                      Fields (what suite{} and test{} declare), limits_for, Declarations, Context
+//   reading declarations        SuiteApi: string_list, number_field, read_fields and its parts
+//   the suite file's functions  suite{}, test{}, include(), exercise{}, fixture()
+//   the student table           student.f(...), student:has, student:output, push_student_table
+//   loading                     Suite::load, from_text, finish_loading, files_for
+//   running a test              end_for_limit, Suite::run_test_here
 #include "grade/suite.h"
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <type_traits>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "grade/expectations.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
@@ -24,6 +31,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- fields ----------------------------------------------------------------------------------------
 
 constexpr double kMaxTimeLimit = 600.0;
 constexpr double kDefaultTimeLimit = 10.0;
@@ -88,6 +97,8 @@ end
 
 // The C functions of the suite's Lua API (friends of Suite).
 struct SuiteApi {
+  // ---- reading declarations ------------------------------------------------------------------------
+
   static Suite& suite_of(lua_State* L) { return *static_cast<Suite*>(lua_touserdata(L, lua_upvalueindex(1))); }
 
   static std::vector<std::string> string_list(lua_State* L, int index, const char* field) {
@@ -110,9 +121,37 @@ struct SuiteApi {
     return x;
   }
 
-  // Reads the declaration table at argument 1 into `f`; `test` says which fields are allowed.
+  // "a, b, c".
+  template <class Names>
+  static std::string comma_list(const Names& names) {
+    std::string out;
+    for (const auto& n : names) out += (out.empty() ? "" : ", ") + std::string(n);
+    return out;
+  }
+
+  static bool boolean_field(lua_State* L, int index, const char* field) {
+    if (!lua_isboolean(L, index)) luaL_error(L, "field '%s' must be true or false", field);
+    return lua_toboolean(L, index);
+  }
+
+  // Reads the declaration table at argument 1 into `f`; `test` says which fields are allowed. Fields are read in a
+  // fixed order, so a table with several wrong fields is refused for the same one each time.
   static void read_fields(lua_State* L, Fields& f, bool test) {
     luaL_checktype(L, 1, LUA_TTABLE);
+    refuse_unknown_fields(L, test);
+    if (get_field(L, "name")) {
+      if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "field 'name' must be a string");
+      f.name = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);
+    if (test) read_test_fields(L, f);
+    read_run_fields(L, f, test);
+    read_name_lists(L, f);
+  }
+
+  static bool get_field(lua_State* L, const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; }
+
+  static void refuse_unknown_fields(lua_State* L, bool test) {
     static const std::set<std::string> suite_fields = {"name",      "files",     "time_limit", "memory_mb", "visibility",
                                                        "reference", "allow_api", "partial",    "output_kb"};
     static const std::set<std::string> test_fields = {"name",  "points",    "number",    "visibility", "time_limit",
@@ -123,83 +162,83 @@ struct SuiteApi {
     while (lua_next(L, 1) != 0) {
       lua_pop(L, 1);
       if (lua_type(L, -1) != LUA_TSTRING || !allowed.count(lua_tostring(L, -1))) {
-        std::string names;
-        for (const auto& n : allowed) names += (names.empty() ? "" : ", ") + n;
         const std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, -1);
-        luaL_error(L, "%s: unknown field '%s' (fields: %s)", test ? "test" : "suite", key.c_str(), names.c_str());
+        luaL_error(L, "%s: unknown field '%s' (fields: %s)", test ? "test" : "suite", key.c_str(),
+                   comma_list(allowed).c_str());
       }
     }
-    const auto get = [&](const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; };
-    if (get("name")) {
-      if (lua_type(L, -1) != LUA_TSTRING) luaL_error(L, "field 'name' must be a string");
-      f.name = lua_tostring(L, -1);
+  }
+
+  // What only a test declares: its number, points, tags, extra credit and run function (name required).
+  static void read_test_fields(lua_State* L, Fields& f) {
+    if (!f.name || f.name->empty()) luaL_error(L, "test: field 'name' is required");
+    if (get_field(L, "number")) {
+      if (lua_type(L, -1) != LUA_TSTRING && lua_type(L, -1) != LUA_TNUMBER) {
+        luaL_error(L, "field 'number' must be a string");
+      }
+      f.number = lua_tostring(L, -1);
     }
     lua_pop(L, 1);
-    if (test) {
-      if (!f.name || f.name->empty()) luaL_error(L, "test: field 'name' is required");
-      if (get("number")) {
-        if (lua_type(L, -1) != LUA_TSTRING && lua_type(L, -1) != LUA_TNUMBER) luaL_error(L, "field 'number' must be a string");
-        f.number = lua_tostring(L, -1);
-      }
-      lua_pop(L, 1);
-      if (get("points")) f.points = number_field(L, -1, "points", 0.0, 1e6);
-      lua_pop(L, 1);
-      if (get("tags")) f.tags = string_list(L, lua_gettop(L), "tags");
-      lua_pop(L, 1);
-      if (get("extra_credit")) {
-        if (!lua_isboolean(L, -1)) luaL_error(L, "field 'extra_credit' must be true or false");
-        f.extra_credit = lua_toboolean(L, -1);
-      }
-      lua_pop(L, 1);
-      if (lua_getfield(L, 1, "run") != LUA_TFUNCTION) {
-        luaL_error(L, "test '%s': field 'run' must be a function(student, expect)", f.name->c_str());
-      }
-      f.run_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+    if (get_field(L, "points")) f.points = number_field(L, -1, "points", 0.0, 1e6);
+    lua_pop(L, 1);
+    if (get_field(L, "tags")) f.tags = string_list(L, lua_gettop(L), "tags");
+    lua_pop(L, 1);
+    if (get_field(L, "extra_credit")) f.extra_credit = boolean_field(L, -1, "extra_credit");
+    lua_pop(L, 1);
+    if (lua_getfield(L, 1, "run") != LUA_TFUNCTION) {
+      luaL_error(L, "test '%s': field 'run' must be a function(student, expect)", f.name->c_str());
     }
-    if (get("visibility")) {
+    f.run_ref = luaL_ref(L, LUA_REGISTRYINDEX);
+  }
+
+  // How a test runs and is shown: visibility, time and memory limits, output cap (suites only), partial credit.
+  static void read_run_fields(lua_State* L, Fields& f, bool test) {
+    if (get_field(L, "visibility")) {
       if (lua_type(L, -1) != LUA_TSTRING || !kVisibilities.count(lua_tostring(L, -1))) {
         luaL_error(L, "field 'visibility' must be visible, hidden, after_due_date or after_published");
       }
       f.visibility = lua_tostring(L, -1);
     }
     lua_pop(L, 1);
-    if (get("time_limit")) f.time_limit = number_field(L, -1, "time_limit", 0.01, kMaxTimeLimit);
+    if (get_field(L, "time_limit")) f.time_limit = number_field(L, -1, "time_limit", 0.01, kMaxTimeLimit);
     lua_pop(L, 1);
-    if (get("memory_mb")) f.memory_mb = number_field(L, -1, "memory_mb", 4, 8192);
+    if (get_field(L, "memory_mb")) f.memory_mb = number_field(L, -1, "memory_mb", 4, 8192);
     lua_pop(L, 1);
-    if (!test && get("output_kb")) f.output_kb = number_field(L, -1, "output_kb", 1, 1024);
-    if (!test) lua_pop(L, 1);
-    if (get("partial")) {
-      if (!lua_isboolean(L, -1)) luaL_error(L, "field 'partial' must be true or false");
-      f.partial = lua_toboolean(L, -1);
+    if (!test) {
+      if (get_field(L, "output_kb")) f.output_kb = number_field(L, -1, "output_kb", 1, 1024);
+      lua_pop(L, 1);
     }
+    if (get_field(L, "partial")) f.partial = boolean_field(L, -1, "partial");
     lua_pop(L, 1);
-    if (get("files")) f.files = string_list(L, lua_gettop(L), "files");
+  }
+
+  // The student files a test loads, the reference functions it installs and the hidden API it allows.
+  static void read_name_lists(lua_State* L, Fields& f) {
+    if (get_field(L, "files")) f.files = string_list(L, lua_gettop(L), "files");
     lua_pop(L, 1);
-    if (get("reference")) {
+    if (get_field(L, "reference")) {
       f.reference = string_list(L, lua_gettop(L), "reference");
       for (const auto& r : *f.reference) {
         if (!is_reference_function(r)) {
-          std::string names;
-          for (const auto& n : reference_function_names()) names += (names.empty() ? "" : ", ") + n;
-          luaL_error(L, "unknown reference function '%s' (there are: %s)", r.c_str(), names.c_str());
+          luaL_error(L, "unknown reference function '%s' (there are: %s)", r.c_str(),
+                     comma_list(reference_function_names()).c_str());
         }
       }
     }
     lua_pop(L, 1);
-    if (get("allow_api")) {
+    if (get_field(L, "allow_api")) {
       f.allow_api = string_list(L, lua_gettop(L), "allow_api");
       const auto& names = hideable_api_names();
       for (const auto& a : *f.allow_api) {
         if (std::find(names.begin(), names.end(), a) == names.end()) {
-          std::string all;
-          for (const auto& n : names) all += (all.empty() ? "" : ", ") + n;
-          luaL_error(L, "allow_api: unknown entry '%s' (there are: %s)", a.c_str(), all.c_str());
+          luaL_error(L, "allow_api: unknown entry '%s' (there are: %s)", a.c_str(), comma_list(names).c_str());
         }
       }
     }
     lua_pop(L, 1);
   }
+
+  // ---- the suite file's functions ------------------------------------------------------------------
 
   static int declare_suite(lua_State* L) {
     Suite& s = suite_of(L);
@@ -227,11 +266,9 @@ struct SuiteApi {
     const std::filesystem::path path = s.folder_ / name;
     std::string text;
     {
-      std::ifstream in(path, std::ios::binary);
-      if (!in) return luaL_error(L, "include: cannot open %s", path.string().c_str());
-      std::ostringstream buffer;
-      buffer << in.rdbuf();
-      text = buffer.str();
+      FileBytes file = read_file_bytes(path);
+      if (!file.ok()) return luaL_error(L, "include: cannot open %s", path.string().c_str());
+      text = std::move(file.bytes);
     }
     const std::string chunk = "@" + (std::filesystem::path(s.chunk_folder_) / name).generic_string();
     if (luaL_loadbufferx(L, text.data(), text.size(), chunk.c_str(), "t") != LUA_OK) return lua_error(L);
@@ -326,6 +363,8 @@ struct SuiteApi {
     return 3;
   }
 
+  // ---- the student table ---------------------------------------------------------------------------
+
   static Suite::Context& context(lua_State* L) {
     Suite& s = suite_of(L);
     if (!s.current_ || !s.current_->student) luaL_error(L, "student can only be used while a test runs");
@@ -417,19 +456,19 @@ struct SuiteApi {
   }
 };
 
+// ---- loading ---------------------------------------------------------------------------------------
+
 Suite::Suite() = default;
 Suite::~Suite() = default;
 
 std::unique_ptr<Suite> Suite::load(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw GradeError("cannot open the suite " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw GradeError("cannot open the suite " + path.string());
   std::filesystem::path folder = path.parent_path();
   if (folder.empty()) folder = ".";
   // Named by the path as given, as lua.c names scripts: "suites/curve.lua" must not read like the student's
   // curve.lua in messages.
-  return from_text(text.str(), path.generic_string(), std::filesystem::absolute(folder).lexically_normal());
+  return from_text(file.bytes, path.generic_string(), std::filesystem::absolute(folder).lexically_normal());
 }
 
 std::unique_ptr<Suite> Suite::from_text(std::string_view text, const std::string& chunk_name,
@@ -523,11 +562,14 @@ std::vector<std::string> Suite::named_files() const {
 
 namespace {
 
+// ---- running a test --------------------------------------------------------------------------------
+
 RunEnd end_for_limit(ScriptError::Limit limit, RunEnd otherwise) {
   switch (limit) {
     case ScriptError::Limit::Instructions:
     case ScriptError::Limit::Time: return RunEnd::Timeout;
     case ScriptError::Limit::Memory: return RunEnd::Memory;
+    case ScriptError::Limit::Changes:
     case ScriptError::Limit::None: break;
   }
   return otherwise;

@@ -71,8 +71,4 @@ std::string format_bez(const std::vector<BezierPatch>& patches, const std::strin
   return out;
 }
 
-void write_bez(const std::filesystem::path& path, const std::vector<BezierPatch>& patches) {
-  write_file(path, format_bez(patches, path.string()));
-}
-
 }  // namespace meshedit

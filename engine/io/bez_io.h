@@ -22,6 +22,5 @@ std::vector<BezierPatch> read_bez(const std::filesystem::path& path);
 // Text that parse_bez reads back to the same points, bit for bit; one patch row per line. Throws
 // FileError for an empty list or a non-finite coordinate.
 std::string format_bez(const std::vector<BezierPatch>& patches, const std::string& name);
-void write_bez(const std::filesystem::path& path, const std::vector<BezierPatch>& patches);
 
 }  // namespace meshedit

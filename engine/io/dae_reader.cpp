@@ -1,11 +1,23 @@
 // COLLADA reading (see dae_reader.h). Every number, count and index is checked before it is used; the
 // XML depth is bounded by tinyxml2 (TINYXML2_MAX_ELEMENT_DEPTH) and scene nodes are walked with an
 // explicit stack, so no input can exhaust the C++ stack.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   XML helpers               local_name, child, children; NodeTransform and Instance (a placed <geometry>)
+//   the reader                DaeReader::read: the asset, the scene or every geometry, the meshes appended
+//   asset and checked values  read_asset, attributes and numbers checked with their line (fail)
+//   geometry                  read_geometry, read_positions (<vertices>, <source>, <accessor>)
+//   primitives                read_primitive: <triangles>, <polylist>, <polygons>, <trifans>, <tristrips>
+//   corners                   vertex_of, reserve_corners, add_polygons, add_corner_triangles
+//   scene                     chosen_scene, compose (node transforms, walked with a stack), transformed, append
+//   entry points              parse_dae_file, read_dae_file, parse_dae, read_dae
 #include "io/dae_reader.h"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <optional>
+#include <string>
 #include <unordered_map>
 #include <utility>
 #include <vector>
@@ -25,6 +37,8 @@ namespace meshedit {
 namespace {
 
 using tinyxml2::XMLElement;
+
+// ---- XML helpers -----------------------------------------------------------------------------------
 
 // Element name without a namespace prefix ("collada:mesh" -> "mesh").
 std::string_view local_name(const XMLElement* e) {
@@ -65,6 +79,8 @@ struct Instance {
   NodeTransform transform;
   const XMLElement* element = nullptr;  // the <instance_geometry>
 };
+
+// ---- the reader ------------------------------------------------------------------------------------
 
 class DaeReader {
  public:
@@ -114,6 +130,8 @@ class DaeReader {
   }
 
  private:
+  // ---- asset and checked values --------------------------------------------------------------------
+
   // <asset>'s <up_axis> and first <contributor>/<authoring_tool>; `asset` may be null (then COLLADA's defaults).
   DaeAsset read_asset(const XMLElement* asset) const {
     DaeAsset out;
@@ -295,111 +313,152 @@ class DaeReader {
     return positions;
   }
 
-  void read_primitive(const XMLElement* primitive, const std::string& vertices_url, PolygonMesh& mesh) const {
-    const std::string kind(local_name(primitive));
+  // ---- primitives ----------------------------------------------------------------------------------
+
+  // How a primitive's <p> lists its corners (`stride` indices per corner, the vertex index at `vertex_offset`), and
+  // how many polygons, fans or strips it says it holds.
+  struct PrimitiveLayout {
+    std::string kind;  // "triangles", "polylist", "polygons", "trifans" or "tristrips"
     uint64_t stride = 1;
-    const XMLElement* vertex_input = nullptr;
     uint64_t vertex_offset = 0;
+    std::optional<uint64_t> declared_count;  // the count attribute, when there is one
+  };
+
+  PrimitiveLayout read_layout(const XMLElement* primitive, const std::string& vertices_url) const {
+    PrimitiveLayout layout{std::string(local_name(primitive))};
+    const XMLElement* vertex_input = nullptr;
     for (const XMLElement* input : children(primitive, "input")) {
       const std::string semantic = required_attribute(input, "semantic");
       if (input->Attribute("offset") == nullptr) fail(input, "<input semantic=" + quote(semantic) + "> has no offset");
       const uint64_t offset = count_attribute(input, "offset", 0, 1u << 16);
-      stride = std::max(stride, offset + 1);
+      layout.stride = std::max(layout.stride, offset + 1);
       if (semantic == "VERTEX" && vertex_input == nullptr) {
         vertex_input = input;
-        vertex_offset = offset;
+        layout.vertex_offset = offset;
       }
     }
-    if (vertex_input == nullptr) fail(primitive, "<" + kind + "> has no <input semantic=\"VERTEX\">");
+    if (vertex_input == nullptr) fail(primitive, "<" + layout.kind + "> has no <input semantic=\"VERTEX\">");
     const std::string url = required_attribute(vertex_input, "source");
     if (url != vertices_url) {
       fail(vertex_input, "<input semantic=\"VERTEX\"> refers to " + quote(url) +
                              ", but the <vertices> of this mesh is " + quote(vertices_url));
     }
-
-    const std::vector<const XMLElement*> ps = children(primitive, "p");
-    const bool has_count = primitive->Attribute("count") != nullptr;
     const uint64_t declared = count_attribute(primitive, "count", 0, 0xFFFFFFFFu);
-    auto check_count = [&](uint64_t found, const char* noun) {
-      if (has_count && declared != found) {
-        fail(primitive, "<" + kind + " count=\"" + std::to_string(declared) + "\"> but it holds " +
-                              std::to_string(found) + " " + noun);
-      }
-    };
+    if (primitive->Attribute("count") != nullptr) layout.declared_count = declared;
+    return layout;
+  }
 
-    if (kind == "triangles" || kind == "polylist") {
-      if (ps.size() > 1) fail(ps[1], "<" + kind + "> has more than one <p>");
-      const XMLElement* p = ps.empty() ? nullptr : ps[0];
-      const std::vector<uint32_t> indices = p ? read_indices(p) : std::vector<uint32_t>{};
-      if (indices.size() % stride != 0) {
-        fail(p, "<p> of <" + kind + "> has " + std::to_string(indices.size()) + " indices, expected a multiple of " +
-                    std::to_string(stride));
-      }
-      const uint64_t corners = indices.size() / stride;
-      std::vector<uint32_t> sizes;
-      if (kind == "triangles") {
-        if (corners % 3 != 0) {
-          fail(p, "<p> of <triangles> holds " + std::to_string(corners) + " corners, expected a multiple of 3");
-        }
-        sizes.assign(corners / 3, 3);
-        check_count(sizes.size(), "triangles");
-      } else {
-        const XMLElement* vcount = child(primitive, "vcount");
-        if (vcount == nullptr) {
-          if (corners > 0) fail(primitive, "<polylist> has no <vcount>");
-        } else {
-          sizes = read_indices(vcount);
-        }
-        uint64_t sum = 0;
-        for (size_t i = 0; i < sizes.size(); ++i) {
-          if (sizes[i] < 3) {
-            fail(line_of_number(vcount, i), "<vcount> gives polygon " + std::to_string(i) + " " +
-                                                std::to_string(sizes[i]) + " corners; at least 3 are needed");
-          }
-          sum += sizes[i];
-        }
-        if (sum != corners) {
-          fail(p ? p : primitive, "<p> of <polylist> holds " + std::to_string(corners) +
-                                      " corners, but <vcount> adds up to " + std::to_string(sum));
-        }
-        check_count(sizes.size(), "polygons");
-      }
-      add_polygons(p, indices, stride, vertex_offset, sizes, mesh);
-      return;
+  // Refuses a primitive whose count attribute, when it has one, is not the number of `noun` it holds.
+  void check_count(const XMLElement* primitive, const PrimitiveLayout& layout, uint64_t found, const char* noun) const {
+    if (layout.declared_count && *layout.declared_count != found) {
+      fail(primitive, "<" + layout.kind + " count=\"" + std::to_string(*layout.declared_count) + "\"> but it holds " +
+                          std::to_string(found) + " " + noun);
     }
+  }
 
-    // <polygons>, <trifans>, <tristrips>: one polygon, fan or strip per <p>.
+  // The corners a <p> holds: its indices, `stride` per corner.
+  uint64_t corner_count(const XMLElement* p, const PrimitiveLayout& layout,
+                        const std::vector<uint32_t>& indices) const {
+    if (indices.size() % layout.stride != 0) {
+      fail(p, "<p> of <" + layout.kind + "> has " + std::to_string(indices.size()) +
+                  " indices, expected a multiple of " + std::to_string(layout.stride));
+    }
+    return indices.size() / layout.stride;
+  }
+
+  void read_primitive(const XMLElement* primitive, const std::string& vertices_url, PolygonMesh& mesh) const {
+    const PrimitiveLayout layout = read_layout(primitive, vertices_url);
+    if (layout.kind == "triangles" || layout.kind == "polylist") {
+      read_one_p(primitive, layout, mesh);
+    } else {
+      read_p_each(primitive, layout, mesh);
+    }
+  }
+
+  // <triangles>, <polylist>: every polygon in one <p>, their sizes 3 or given by <vcount>.
+  void read_one_p(const XMLElement* primitive, const PrimitiveLayout& layout, PolygonMesh& mesh) const {
+    const std::vector<const XMLElement*> ps = children(primitive, "p");
+    if (ps.size() > 1) fail(ps[1], "<" + layout.kind + "> has more than one <p>");
+    const XMLElement* p = ps.empty() ? nullptr : ps[0];
+    const std::vector<uint32_t> indices = p ? read_indices(p) : std::vector<uint32_t>{};
+    const uint64_t corners = corner_count(p, layout, indices);
+    std::vector<uint32_t> sizes;
+    if (layout.kind == "triangles") {
+      if (corners % 3 != 0) {
+        fail(p, "<p> of <triangles> holds " + std::to_string(corners) + " corners, expected a multiple of 3");
+      }
+      sizes.assign(corners / 3, 3);
+      check_count(primitive, layout, sizes.size(), "triangles");
+    } else {
+      sizes = polylist_sizes(primitive, p, corners);
+      check_count(primitive, layout, sizes.size(), "polygons");
+    }
+    add_polygons(p, indices, layout.stride, layout.vertex_offset, sizes, mesh);
+  }
+
+  // The polygon sizes of a <polylist> (its <vcount>), checked to add up to the `corners` of its <p>.
+  std::vector<uint32_t> polylist_sizes(const XMLElement* primitive, const XMLElement* p, uint64_t corners) const {
+    std::vector<uint32_t> sizes;
+    const XMLElement* vcount = child(primitive, "vcount");
+    if (vcount == nullptr) {
+      if (corners > 0) fail(primitive, "<polylist> has no <vcount>");
+    } else {
+      sizes = read_indices(vcount);
+    }
+    uint64_t sum = 0;
+    for (size_t i = 0; i < sizes.size(); ++i) {
+      if (sizes[i] < 3) {
+        fail(line_of_number(vcount, i), "<vcount> gives polygon " + std::to_string(i) + " " + std::to_string(sizes[i]) +
+                                            " corners; at least 3 are needed");
+      }
+      sum += sizes[i];
+    }
+    if (sum != corners) {
+      fail(p ? p : primitive, "<p> of <polylist> holds " + std::to_string(corners) +
+                                  " corners, but <vcount> adds up to " + std::to_string(sum));
+    }
+    return sizes;
+  }
+
+  // <polygons>, <trifans>, <tristrips>: one polygon, fan or strip per <p>.
+  void read_p_each(const XMLElement* primitive, const PrimitiveLayout& layout, PolygonMesh& mesh) const {
+    const std::vector<const XMLElement*> ps = children(primitive, "p");
     if (const XMLElement* ph = child(primitive, "ph")) fail(ph, "polygons with holes (<ph>) are not supported");
     for (const XMLElement* p : ps) {
       const std::vector<uint32_t> indices = read_indices(p);
-      if (indices.size() % stride != 0) {
-        fail(p, "<p> of <" + kind + "> has " + std::to_string(indices.size()) + " indices, expected a multiple of " +
-                    std::to_string(stride));
-      }
-      const uint64_t corners = indices.size() / stride;
+      const uint64_t corners = corner_count(p, layout, indices);
       if (corners < 3) {
-        fail(p, "<p> of <" + kind + "> has " + std::to_string(corners) + " corners; at least 3 are needed");
+        fail(p, "<p> of <" + layout.kind + "> has " + std::to_string(corners) + " corners; at least 3 are needed");
       }
-      if (kind == "polygons") {
-        add_polygons(p, indices, stride, vertex_offset, {static_cast<uint32_t>(corners)}, mesh);
+      if (layout.kind == "polygons") {
+        add_polygons(p, indices, layout.stride, layout.vertex_offset, {static_cast<uint32_t>(corners)}, mesh);
       } else {
-        // Fans and strips become triangles; a strip's degenerate stitching triangles are dropped.
-        std::vector<uint32_t> triangle_corners;
-        for (uint64_t i = 0; i + 2 < corners; ++i) {
-          uint64_t a = i, b = i + 1, c = i + 2;
-          if (kind == "trifans") {
-            a = 0;
-          } else if (i % 2 == 1) {
-            std::swap(a, b);  // odd strip triangles keep the strip's winding
-          }
-          triangle_corners.insert(triangle_corners.end(),
-                                  {static_cast<uint32_t>(a), static_cast<uint32_t>(b), static_cast<uint32_t>(c)});
-        }
-        add_corner_triangles(p, indices, stride, vertex_offset, triangle_corners, kind == "tristrips", mesh);
+        add_corner_triangles(p, indices, layout.stride, layout.vertex_offset,
+                             fan_or_strip_triangles(layout.kind, corners), layout.kind == "tristrips", mesh);
       }
     }
-    check_count(ps.size(), kind == "polygons" ? "polygons" : kind == "trifans" ? "fans" : "strips");
+    const char* noun = layout.kind == "polygons" ? "polygons" : layout.kind == "trifans" ? "fans" : "strips";
+    check_count(primitive, layout, ps.size(), noun);
   }
+
+  // The corners of the triangles a fan or a strip of `corners` corners makes, three by three; a strip's odd triangles
+  // keep the strip's winding.
+  static std::vector<uint32_t> fan_or_strip_triangles(const std::string& kind, uint64_t corners) {
+    std::vector<uint32_t> triangle_corners;
+    for (uint64_t i = 0; i + 2 < corners; ++i) {
+      uint64_t a = i, b = i + 1, c = i + 2;
+      if (kind == "trifans") {
+        a = 0;
+      } else if (i % 2 == 1) {
+        std::swap(a, b);
+      }
+      triangle_corners.insert(triangle_corners.end(),
+                              {static_cast<uint32_t>(a), static_cast<uint32_t>(b), static_cast<uint32_t>(c)});
+    }
+    return triangle_corners;
+  }
+
+  // ---- corners -------------------------------------------------------------------------------------
 
   // The vertex index of corner `c`, checked against the positions.
   uint32_t vertex_of(const XMLElement* p, const std::vector<uint32_t>& indices, uint64_t stride, uint64_t offset,
@@ -574,6 +633,8 @@ class DaeReader {
 };
 
 }  // namespace
+
+// ---- entry points ----------------------------------------------------------------------------------
 
 DaeFile parse_dae_file(std::string_view text, const std::string& name) { return DaeReader(text, name).read(); }
 

@@ -1,6 +1,15 @@
 // glTF reading (see gltf_io.h). tinygltf parses the JSON and the buffers; everything it hands over is
 // distrusted: indices into model arrays, offsets, lengths, strides and counts are all checked here,
 // with 64-bit arithmetic, before a single byte of a buffer is read.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   loading through tinygltf         the file callbacks (FilePolicy, read_whole_file, refuse_write, skip_image),
+//                                    load_model
+//   turning the model into polygons  component_size, read_unsigned; GltfMeshBuilder::build
+//   nodes                            walk_nodes, local_transform
+//   meshes                           add_mesh: each primitive's triangles, placed by its node
+//   accessors                        accessor, view_bytes, locate, apply_sparse, read_positions, read_indices
+//   entry points                     parse_gltf, parse_glb, read_gltf
 #include <cmath>
 #include <cstdint>
 #include <cstring>
@@ -15,6 +24,7 @@
 #include <glm/matrix.hpp>
 #include <tiny_gltf.h>
 
+#include "core/file_bytes.h"
 #include "core/finite.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
@@ -78,7 +88,7 @@ std::string trimmed(std::string text) {
 tinygltf::Model load_model(std::string_view bytes, const std::string& name, const std::filesystem::path& base_dir,
                            bool binary) {
   if (bytes.empty()) throw FileError(name, "", "file is empty");
-  if (bytes.size() > kMaxFileBytes) throw FileError(name, "", "file is too large");
+  if (bytes.size() > kMaxReadFileBytes) throw FileError(name, "", "file is too large");
   FilePolicy policy{!base_dir.empty()};
   tinygltf::TinyGLTF loader;
   loader.SetFsCallbacks({&file_exists, &keep_path, &read_whole_file, &refuse_write, &policy});
@@ -451,6 +461,8 @@ class GltfMeshBuilder {
 bool starts_with_glb_magic(std::string_view bytes) { return bytes.size() >= 4 && bytes.substr(0, 4) == "glTF"; }
 
 }  // namespace
+
+// ---- entry points ----------------------------------------------------------------------------------
 
 PolygonMesh parse_gltf(std::string_view json, const std::string& name, const std::filesystem::path& base_dir) {
   return GltfMeshBuilder(load_model(json, name, base_dir, false), name).build();

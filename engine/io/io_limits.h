@@ -10,8 +10,8 @@
 
 namespace meshedit {
 
-// A teaching editor has no use for more; at these sizes the mesh alone is ~0.5 GB.
-inline constexpr size_t kMaxFileBytes = size_t(1) << 30;  // 1 GiB
+// A teaching editor has no use for more; at these sizes the mesh alone is ~0.5 GB. (Files themselves are capped at
+// kMaxReadFileBytes, core/file_bytes.h.)
 inline constexpr size_t kMaxVertices = size_t(1) << 24;   // 16.7 million
 inline constexpr size_t kMaxCorners = size_t(1) << 26;    // polygon corners over all faces (indices)
 

@@ -75,7 +75,7 @@ double OrbitCamera::fit_distance() const {
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, up_vector()));
   const glm::dvec3 up = glm::cross(right, forward);
-  const double slope = std::tan(radians(fov_degrees_) * 0.5) / kFitMargin;
+  const double slope = std::tan(radians(kFovDegrees) * 0.5) / kFitMargin;
   double distance = 0.0;
   for (int i = 0; i < 8; ++i) {
     const glm::dvec3 corner((i & 1) ? fit_box_.max.x : fit_box_.min.x, (i & 2) ? fit_box_.max.y : fit_box_.min.y,
@@ -124,11 +124,6 @@ void OrbitCamera::zoom(double steps) {
   distance_ = std::clamp(distance_ * std::pow(kZoomPerStep, steps), fitted_distance_ / 100.0, fitted_distance_ * 20.0);
 }
 
-void OrbitCamera::set_fov_degrees(double fov) {
-  fov_degrees_ = std::clamp(fov, 5.0, 120.0);
-  fitted_distance_ = fit_distance();
-}
-
 void OrbitCamera::set_up_axis(UpAxis axis) {
   up_axis_ = axis;
   fitted_distance_ = fit_distance();
@@ -167,7 +162,7 @@ double OrbitCamera::near_plane() const {
 glm::dmat4 OrbitCamera::view() const { return glm::lookAt(eye(), target_, up_vector()); }
 
 double OrbitCamera::fov_y_radians(double aspect) const {
-  const double fov = radians(fov_degrees_);
+  const double fov = radians(kFovDegrees);
   if (aspect >= 1.0 || !(aspect > 0.0)) return fov;
   return 2.0 * std::atan(std::tan(fov * 0.5) / aspect);
 }

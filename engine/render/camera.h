@@ -61,7 +61,7 @@ class OrbitCamera {
  public:
   static constexpr double kDefaultYawDegrees = 30.0;
   static constexpr double kDefaultPitchDegrees = 20.0;
-  static constexpr double kDefaultFovDegrees = 35.0;  // of the narrower viewport side
+  static constexpr double kFovDegrees = 35.0;         // of the narrower viewport side
   static constexpr double kRadiansPerPixel = 0.01;    // orbit speed
   static constexpr double kZoomPerStep = 0.85;        // distance factor per scroll step
 
@@ -87,13 +87,10 @@ class OrbitCamera {
   void set_distance(double distance);
   void set_target(const glm::dvec3& target);
 
-  // Changing the field of view changes what reset() returns to, not the current view. Changing the up axis keeps
-  // the target, distance and angles, now taken about the new axis, and changes what reset() returns to; fit() after
-  // it for the new axis's fitted view (the window does).
+  // Changing the up axis keeps the target, distance and angles, now taken about the new axis, and changes what
+  // reset() returns to; fit() after it for the new axis's fitted view (the window does).
   void set_up_axis(UpAxis axis);
   UpAxis up_axis() const { return up_axis_; }
-  void set_fov_degrees(double degrees);
-  double fov_degrees() const { return fov_degrees_; }
 
   glm::dvec3 target() const { return target_; }
   double distance() const { return distance_; }
@@ -124,7 +121,6 @@ class OrbitCamera {
   double fit_distance() const;
 
   UpAxis up_axis_ = UpAxis::Z;
-  double fov_degrees_ = kDefaultFovDegrees;
   glm::dvec3 target_{0.0};
   double distance_ = 4.0;
   double yaw_ = 0.0;    // radians

@@ -38,7 +38,6 @@ class GpuMesh {
   // face slot), then the packed later triangles of polygons (the face from u_extra_faces by gl_PrimitiveID), setting
   // the program's `u_extra` uniform (at `extra_location`) to tell them apart. Binds u_extra_faces to `unit`.
   void draw_triangles(GLint extra_location, GLuint unit) const;
-  size_t triangle_slots() const { return face_count_; }
 
   BufferTexture face_normals{GL_RGBA32F};
   SegmentBatch edges, boundary_edges, arrows;

@@ -3,12 +3,12 @@
 #include "render/image_file.h"
 
 #include <fstream>
-#include <iterator>
 #include <string>
 
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "core/file_bytes.h"
 #include "render/render_error.h"
 
 namespace meshedit {
@@ -38,11 +38,11 @@ void write_png(const std::filesystem::path& path, int width, int height, const s
 }
 
 Image read_png(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw RenderError("cannot read " + path.string() + ": no such file or not readable");
-  const std::vector<uint8_t> bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw RenderError("cannot read " + path.string() + ": no such file or not readable");
   int width = 0, height = 0, channels = 0;
-  stbi_uc* pixels = stbi_load_from_memory(bytes.data(), int(bytes.size()), &width, &height, &channels, 4);
+  stbi_uc* pixels = stbi_load_from_memory(reinterpret_cast<const stbi_uc*>(file.bytes.data()), int(file.bytes.size()),
+                                          &width, &height, &channels, 4);
   if (pixels == nullptr) {
     const char* reason = stbi_failure_reason();
     throw RenderError("cannot read " + path.string() + ": " + (reason ? reason : "not an image"));

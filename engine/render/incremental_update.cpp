@@ -47,17 +47,56 @@ void consider(uint32_t candidate, std::vector<uint32_t>& found, Test&& test) {
   if (std::find(found.begin(), found.end(), candidate) == found.end()) found.push_back(candidate);
 }
 
+// The changed elements of each kind, sorted, each once. Boundary loops are left out: nothing drawn reads them.
+struct ChangedIds {
+  std::vector<uint32_t> vertices, halfedges, edges, faces;
+};
+
+ChangedIds sorted_changes(std::span<const ElementRef> changed) {
+  ChangedIds ids;
+  for (const ElementRef& ref : changed) {
+    if (!ref.valid()) continue;
+    switch (ref.kind) {
+      case ElementKind::Vertex: ids.vertices.push_back(ref.index); break;
+      case ElementKind::Halfedge: ids.halfedges.push_back(ref.index); break;
+      case ElementKind::Edge: ids.edges.push_back(ref.index); break;
+      case ElementKind::Face: ids.faces.push_back(ref.index); break;
+      case ElementKind::Boundary: break;
+    }
+  }
+  for (auto* list : {&ids.vertices, &ids.halfedges, &ids.edges, &ids.faces}) sort_unique(*list);
+  return ids;
+}
+
+// plan_update's work, one step per kind of slot (see plan() for their order). A step that cannot certify what it
+// found fails with the reason in `why`, and the update is a full rebuild.
 template <class Before>
 struct Planner {
   const Before& before;
   const HalfedgeMesh& after;
   SlotState& state;
   std::string& why;
-  std::vector<HalfedgeId> walk;  // scratch
+  bool arrows;  // the patch rewrites the arrows too
+
+  // Dirty slots, by kind. Faces and edges are found from `before`'s pointers and counts (what did not change reads
+  // the same in both states); vertices and arrows from the faces drawn.
+  std::vector<uint32_t> dirty_faces, dirty_edges, dirty_vertices, dirty_arrows;
+  std::vector<uint32_t> leaving_changed;               // the halfedges leaving a changed vertex in `before`
+  std::unordered_map<uint32_t, FaceDraw> drawn_after;  // faces drawn in `after`, by slot
+  SlotPatch patch;
+  std::vector<HalfedgeId> walk;      // scratch: the cycle of the face drawn last
+  std::vector<HalfedgeId> fan_walk;  // scratch: the fan walked last
 
   bool fail(std::string reason) {
     why = std::move(reason);
     return false;
+  }
+
+  // The halfedges leaving v in `mesh`, into fan_walk (certified by the outgoing counts of `state`).
+  template <class Mesh>
+  bool walk_fan(const Mesh& mesh, uint32_t v) {
+    return fan(mesh, VertexId(v), state.references.outgoing[v], fan_walk) ||
+           fail("the fan of " + format_id(VertexId(v)) + " does not hold every halfedge leaving it");
   }
 
   // The halfedges y of `before` with twin(y) == t (certified by the twin counts of `before`), into `out`.
@@ -67,7 +106,7 @@ struct Planner {
     if (t < before.halfedge_capacity()) consider(before.twin(HalfedgeId(t)).index, out, test);
     if (t < after.halfedge_capacity()) consider(after.twin(HalfedgeId(t)).index, out, test);
     const uint32_t expected = t < state.references.twin_refs.size() ? state.references.twin_refs[t] : 0;
-    return out.size() == expected || fail("h" + std::to_string(t) + " is the twin of halfedges not found");
+    return out.size() == expected || fail(format_id(HalfedgeId(t)) + " is the twin of halfedges not found");
   }
 
   // The edges e of `before` with halfedge(e) == h (certified by the edge counts of `before`), appended to `out`.
@@ -83,7 +122,7 @@ struct Planner {
     candidates_in(before);
     candidates_in(after);
     const uint32_t expected = h < state.references.edge_refs.size() ? state.references.edge_refs[h] : 0;
-    if (found.size() != expected) return fail("h" + std::to_string(h) + " is the halfedge of edges not found");
+    if (found.size() != expected) return fail(format_id(HalfedgeId(h)) + " is the halfedge of edges not found");
     out.insert(out.end(), found.begin(), found.end());
     return true;
   }
@@ -94,15 +133,207 @@ struct Planner {
     walk.clear();
     if (f >= mesh.face_capacity()) return true;
     draw_face(mesh, FaceId::face(f), d, walk, nullptr, kMaxWalk);
-    if (d.walk == FaceWalk::TooLong) return fail("f" + std::to_string(f) + " is longer than the walk limit");
+    if (d.walk == FaceWalk::TooLong) return fail(format_id(FaceId::face(f)) + " is longer than the walk limit");
     return true;
+  }
+
+  // Dirty faces: the changed ones, those a changed halfedge lies in (in either state), and those around a changed
+  // vertex in `before` (a new vertex: whatever leaves it in `after` is new or changed).
+  bool find_dirty_faces(const ChangedIds& changed) {
+    dirty_faces = changed.faces;
+    const auto add_face = [&](FaceId f) {
+      if (f.valid() && !f.is_boundary()) dirty_faces.push_back(f.slot());
+    };
+    for (uint32_t h : changed.halfedges) {
+      if (h < before.halfedge_capacity()) add_face(before.face(HalfedgeId(h)));
+      if (h < after.halfedge_capacity()) add_face(after.face(HalfedgeId(h)));
+    }
+    for (uint32_t u : changed.vertices) {
+      if (u >= before.vertex_capacity()) continue;
+      if (!walk_fan(before, u)) return false;
+      for (HalfedgeId x : fan_walk) {
+        add_face(before.face(x));
+        leaving_changed.push_back(x.index);
+      }
+    }
+    sort_unique(dirty_faces);
+    return true;
+  }
+
+  // Dirty edges: edges read their halfedge h and twin(h), so those of the changed halfedges and of the halfedges
+  // ending at a changed vertex, and those of their twins (a new halfedge: the edges and twins pointing at it changed
+  // too).
+  bool find_dirty_edges(const ChangedIds& changed) {
+    dirty_edges = changed.edges;
+    std::vector<uint32_t> reach = changed.halfedges, twins;
+    reach.insert(reach.end(), leaving_changed.begin(), leaving_changed.end());
+    sort_unique(reach);
+    for (uint32_t h : reach) {
+      if (h >= before.halfedge_capacity()) continue;
+      if (!edges_of(h, dirty_edges) || !twins_of(h, twins)) return false;
+      for (uint32_t y : twins) {
+        if (!edges_of(y, dirty_edges)) return false;
+      }
+    }
+    sort_unique(dirty_edges);
+    return true;
+  }
+
+  // Faces: triangles and flat normals; their corners' smooth normals and their halfedges' arrows become dirty.
+  bool redraw_faces(const ChangedIds& changed) {
+    dirty_vertices = changed.vertices;
+    FaceDraw old_draw;
+    for (uint32_t f : dirty_faces) {
+      if (!redraw_face(f, old_draw)) return false;
+    }
+    return true;
+  }
+
+  bool redraw_face(uint32_t f, FaceDraw& old_draw) {
+    FaceDraw& new_draw = drawn_after[f];
+    if (!draw(before, f, old_draw)) return false;
+    mark_walked_arrows();
+    if (!draw(after, f, new_draw)) return false;
+    mark_walked_arrows();
+    dirty_vertices.insert(dirty_vertices.end(), old_draw.corners.begin(), old_draw.corners.end());
+    dirty_vertices.insert(dirty_vertices.end(), new_draw.corners.begin(), new_draw.corners.end());
+    SlotCounts& counts = state.counts;
+    if (before.alive(FaceId::face(f))) {
+      if (old_draw.drawn()) counts.triangles -= old_draw.triangle_count();
+      else --counts.skipped_faces;
+    }
+    if (after.alive(FaceId::face(f))) {
+      if (new_draw.drawn()) counts.triangles += new_draw.triangle_count();
+      else ++counts.skipped_faces;
+    }
+    if (!rewrite_later_triangles(f, old_draw, new_draw)) return false;
+    if (f >= after.face_capacity()) return true;
+    FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw.term)};
+    if (new_draw.drawn()) fp.triangle = {new_draw.corners[0], new_draw.corners[1], new_draw.corners[2]};
+    patch.faces.push_back(fp);
+    return true;
+  }
+
+  // The arrows of the face just drawn (its cycle, in `walk`) are dirty, when the patch rewrites arrows.
+  void mark_walked_arrows() {
+    if (!arrows) return;
+    for (HalfedgeId h : walk) dirty_arrows.push_back(h.index);
+  }
+
+  // A polygon keeps its packed later triangles where they are only if it has as many as before.
+  bool rewrite_later_triangles(uint32_t f, const FaceDraw& old_draw, const FaceDraw& new_draw) {
+    const size_t extra = new_draw.triangle_count() > 0 ? new_draw.triangle_count() - 1 : 0;
+    const size_t old_extra = old_draw.triangle_count() > 0 ? old_draw.triangle_count() - 1 : 0;
+    if (extra != old_extra) return fail(format_id(FaceId::face(f)) + " has another number of triangles");
+    for (size_t i = 0; i < extra; ++i) {
+      const std::vector<uint32_t>& c = new_draw.corners;
+      patch.extra_triangles.push_back({state.extra_first[f] + uint32_t(i), {c[0], c[i + 2], c[i + 3]}});
+    }
+    return true;
+  }
+
+  // Points (and positions) of the changed vertices.
+  void rewrite_points(const ChangedIds& changed) {
+    for (uint32_t v : changed.vertices) {
+      if (v < before.vertex_capacity() && slot_point(before, VertexId(v)).vertex != kInvalidIndex) {
+        --state.counts.vertices;
+      }
+      if (v >= after.vertex_capacity()) continue;
+      const VertexPoint point = slot_point(after, VertexId(v));
+      if (point.vertex != kInvalidIndex) {
+        ++state.counts.vertices;
+        state.bounds.add(after.position(VertexId(v)));
+      }
+      patch.points.emplace_back(v, point);
+    }
+  }
+
+  // Smooth normals of the dirty vertices.
+  bool rewrite_smooth_normals() {
+    sort_unique(dirty_vertices);
+    std::vector<CornerFace> corner_faces;
+    for (uint32_t v : dirty_vertices) {
+      if (v >= after.vertex_capacity()) continue;
+      glm::vec3 normal(0.0f);
+      if (!smooth_normal_in_after(v, corner_faces, normal)) return false;
+      patch.normals.emplace_back(v, normal);
+    }
+    return true;
+  }
+
+  // v's smooth normal from the drawn faces around it, found from its fan in `after`; 0 for a dead or non-finite v.
+  bool smooth_normal_in_after(uint32_t v, std::vector<CornerFace>& corner_faces, glm::vec3& normal) {
+    if (!after.alive(VertexId(v)) || !finite(after.position(VertexId(v)))) return true;
+    if (!walk_fan(after, v)) return false;
+    corner_faces.clear();
+    for (HalfedgeId x : fan_walk) {
+      const FaceId g = after.face(x);
+      if (!g.valid() || g.is_boundary() || g.slot() >= after.face_capacity()) continue;
+      auto [it, inserted] = drawn_after.try_emplace(g.slot());
+      if (inserted && !draw(after, g.slot(), it->second)) return false;
+      if (it->second.drawn()) corner_faces.push_back({g.slot(), &it->second});
+    }
+    normal = smooth_normal(v, corner_faces);
+    return true;
+  }
+
+  // Edges, and the boundary list when a boundary edge is among them (before or after).
+  void rewrite_edges() {
+    for (uint32_t e : dirty_edges) rewrite_edge(e);
+    if (patch.boundary_changed) {
+      patch.boundary_edges = state.boundary_edges;
+      for (uint32_t e : patch.boundary_edges) patch.boundary_segments.push_back(slot_edge(after, EdgeId(e)));
+    }
+  }
+
+  void rewrite_edge(uint32_t e) {
+    SlotCounts& counts = state.counts;
+    const EdgeSegment old_segment = e < before.edge_capacity() ? slot_edge(before, EdgeId(e)) : kHiddenSegment;
+    const EdgeSegment segment = e < after.edge_capacity() ? slot_edge(after, EdgeId(e)) : kHiddenSegment;
+    if (before.alive(EdgeId(e))) --(hidden(old_segment) ? counts.skipped_edges : counts.edges);
+    if (after.alive(EdgeId(e))) ++(hidden(segment) ? counts.skipped_edges : counts.edges);  // live: drawn or skipped
+    const bool was = !hidden(old_segment) && (old_segment.flags & kEdgeBoundaryFlag);
+    const bool is = !hidden(segment) && (segment.flags & kEdgeBoundaryFlag);
+    if (was || is) patch.boundary_changed = true;
+    if (was && !is) std::erase(state.boundary_edges, e);
+    if (is && !was) {
+      std::vector<uint32_t>& list = state.boundary_edges;
+      list.insert(std::lower_bound(list.begin(), list.end(), e), e);
+    }
+    if (e < after.edge_capacity()) patch.edges.emplace_back(e, segment);
+  }
+
+  // Arrows of the changed halfedges and of the halfedges of the faces drawn.
+  void rewrite_arrows(const ChangedIds& changed) {
+    dirty_arrows.insert(dirty_arrows.end(), changed.halfedges.begin(), changed.halfedges.end());
+    sort_unique(dirty_arrows);
+    for (uint32_t h : dirty_arrows) {
+      if (h < after.halfedge_capacity()) patch.arrows.emplace_back(h, slot_arrow(after, HalfedgeId(h)));
+    }
   }
 };
 
 // plan_update for either kind of `before` (a copy of the mesh, or the state read through the edit's patch).
 template <class Before>
 std::optional<SlotPatch> plan(const Before& before, const HalfedgeMesh& after, std::span<const ElementRef> changed,
-                              SlotState& state, bool arrows, std::string& why);
+                              SlotState& state, bool arrows, std::string& why) {
+  Planner<Before> p{before, after, state, why, arrows};
+  const ChangedIds ids = sorted_changes(changed);
+  if (!p.find_dirty_faces(ids) || !p.find_dirty_edges(ids)) return std::nullopt;
+  state.references.apply(before, after, ids.halfedges, ids.edges);
+  p.patch.vertex_capacity = after.vertex_capacity();
+  p.patch.halfedge_capacity = after.halfedge_capacity();
+  p.patch.edge_capacity = after.edge_capacity();
+  p.patch.face_capacity = after.face_capacity();
+  if (!p.redraw_faces(ids)) return std::nullopt;
+  p.rewrite_points(ids);
+  if (!p.rewrite_smooth_normals()) return std::nullopt;
+  p.rewrite_edges();
+  if (arrows) p.rewrite_arrows(ids);
+  p.patch.counts = state.counts;
+  p.patch.bounds = state.bounds;
+  return std::move(p.patch);
+}
 
 }  // namespace
 
@@ -130,172 +361,6 @@ std::optional<SlotPatch> plan_update(const StateBefore& before, const HalfedgeMe
                                      std::string& why) {
   return plan(before, after, changed, state, arrows, why);
 }
-
-namespace {
-
-template <class Before>
-std::optional<SlotPatch> plan(const Before& before, const HalfedgeMesh& after, std::span<const ElementRef> changed,
-                              SlotState& state, bool arrows, std::string& why) {
-  Planner<Before> p{before, after, state, why, {}};
-  std::vector<uint32_t> cv, ch, ce, cf;
-  for (const ElementRef& ref : changed) {
-    if (!ref.valid()) continue;
-    switch (ref.kind) {
-      case ElementKind::Vertex: cv.push_back(ref.index); break;
-      case ElementKind::Halfedge: ch.push_back(ref.index); break;
-      case ElementKind::Edge: ce.push_back(ref.index); break;
-      case ElementKind::Face: cf.push_back(ref.index); break;
-      case ElementKind::Boundary: break;
-    }
-  }
-  for (auto* ids : {&cv, &ch, &ce, &cf}) sort_unique(*ids);
-
-  // Dirty faces and edges, from `before`'s pointers and counts (what did not change reads the same in both states).
-  std::vector<uint32_t> df = cf, de = ce, around;  // around: halfedges leaving a changed vertex in `before`
-  const auto add_face = [&](FaceId f) {
-    if (f.valid() && !f.is_boundary()) df.push_back(f.slot());
-  };
-  for (uint32_t h : ch) {
-    if (h < before.halfedge_capacity()) add_face(before.face(HalfedgeId(h)));
-    if (h < after.halfedge_capacity()) add_face(after.face(HalfedgeId(h)));
-  }
-  std::vector<HalfedgeId> out;
-  for (uint32_t u : cv) {
-    if (u >= before.vertex_capacity()) continue;  // new: whatever leaves it in `after` is new or changed
-    if (!fan(before, VertexId(u), state.references.outgoing[u], out)) {
-      return p.fail("the fan of v" + std::to_string(u) + " does not hold every halfedge leaving it"), std::nullopt;
-    }
-    for (HalfedgeId x : out) {
-      add_face(before.face(x));
-      around.push_back(x.index);
-    }
-  }
-  // Edges read their halfedge h and twin(h): those of the changed halfedges, and those ending at a changed vertex.
-  std::vector<uint32_t> reach = ch, twins;
-  reach.insert(reach.end(), around.begin(), around.end());
-  sort_unique(reach);
-  for (uint32_t h : reach) {
-    if (h >= before.halfedge_capacity()) continue;  // new: the edges and twins pointing at it changed too
-    if (!p.edges_of(h, de) || !p.twins_of(h, twins)) return std::nullopt;
-    for (uint32_t y : twins) {
-      if (!p.edges_of(y, de)) return std::nullopt;
-    }
-  }
-  sort_unique(df);
-  sort_unique(de);
-
-  state.references.apply(before, after, ch, ce);
-
-  SlotPatch patch;
-  patch.vertex_capacity = after.vertex_capacity();
-  patch.halfedge_capacity = after.halfedge_capacity();
-  patch.edge_capacity = after.edge_capacity();
-  patch.face_capacity = after.face_capacity();
-  SlotCounts& counts = state.counts;
-
-  // Faces: triangles and flat normals; their corners' smooth normals and their halfedges' arrows become dirty.
-  std::unordered_map<uint32_t, FaceDraw> drawn_after;
-  std::vector<uint32_t> dv = cv, dh;
-  FaceDraw old_draw;
-  for (uint32_t f : df) {
-    FaceDraw& new_draw = drawn_after[f];
-    if (!p.draw(before, f, old_draw)) return std::nullopt;
-    if (arrows) for (HalfedgeId h : p.walk) dh.push_back(h.index);
-    if (!p.draw(after, f, new_draw)) return std::nullopt;
-    if (arrows) for (HalfedgeId h : p.walk) dh.push_back(h.index);
-    dv.insert(dv.end(), old_draw.corners.begin(), old_draw.corners.end());
-    dv.insert(dv.end(), new_draw.corners.begin(), new_draw.corners.end());
-    if (before.alive(FaceId::face(f))) {
-      if (old_draw.drawn()) counts.triangles -= old_draw.triangle_count();
-      else --counts.skipped_faces;
-    }
-    if (after.alive(FaceId::face(f))) {
-      if (new_draw.drawn()) counts.triangles += new_draw.triangle_count();
-      else ++counts.skipped_faces;
-    }
-    // A polygon keeps its packed later triangles where they are only if it has as many as before.
-    const size_t extra = new_draw.triangle_count() > 0 ? new_draw.triangle_count() - 1 : 0;
-    const size_t old_extra = old_draw.triangle_count() > 0 ? old_draw.triangle_count() - 1 : 0;
-    if (extra != old_extra) return p.fail("f" + std::to_string(f) + " has another number of triangles"), std::nullopt;
-    for (size_t i = 0; i < extra; ++i) {
-      const std::vector<uint32_t>& c = new_draw.corners;
-      patch.extra_triangles.push_back({state.extra_first[f] + uint32_t(i), {c[0], c[i + 2], c[i + 3]}});
-    }
-    if (f >= after.face_capacity()) continue;
-    FacePatch fp{f, {0, 0, 0}, flat_normal(new_draw.term)};
-    if (new_draw.drawn()) fp.triangle = {new_draw.corners[0], new_draw.corners[1], new_draw.corners[2]};
-    patch.faces.push_back(fp);
-  }
-
-  // Points (and positions) of the changed vertices.
-  for (uint32_t v : cv) {
-    if (v < before.vertex_capacity() && slot_point(before, VertexId(v)).vertex != kInvalidIndex) --counts.vertices;
-    if (v >= after.vertex_capacity()) continue;
-    const VertexPoint point = slot_point(after, VertexId(v));
-    if (point.vertex != kInvalidIndex) {
-      ++counts.vertices;
-      state.bounds.add(after.position(VertexId(v)));
-    }
-    patch.points.emplace_back(v, point);
-  }
-
-  // Smooth normals: the drawn faces around each dirty vertex, found from its fan in `after`.
-  sort_unique(dv);
-  std::vector<CornerFace> corner_faces;
-  for (uint32_t v : dv) {
-    if (v >= after.vertex_capacity()) continue;
-    glm::vec3 normal(0.0f);
-    if (after.alive(VertexId(v)) && finite(after.position(VertexId(v)))) {
-      if (!fan(after, VertexId(v), state.references.outgoing[v], out)) {
-        return p.fail("the fan of v" + std::to_string(v) + " does not hold every halfedge leaving it"), std::nullopt;
-      }
-      corner_faces.clear();
-      for (HalfedgeId x : out) {
-        const FaceId g = after.face(x);
-        if (!g.valid() || g.is_boundary() || g.slot() >= after.face_capacity()) continue;
-        auto [it, inserted] = drawn_after.try_emplace(g.slot());
-        if (inserted && !p.draw(after, g.slot(), it->second)) return std::nullopt;
-        if (it->second.drawn()) corner_faces.push_back({g.slot(), &it->second});
-      }
-      normal = smooth_normal(v, corner_faces);
-    }
-    patch.normals.emplace_back(v, normal);
-  }
-
-  // Edges, and the boundary list when a boundary edge is among them (before or after).
-  for (uint32_t e : de) {
-    const EdgeSegment old_segment = e < before.edge_capacity() ? slot_edge(before, EdgeId(e)) : kHiddenSegment;
-    const EdgeSegment segment = e < after.edge_capacity() ? slot_edge(after, EdgeId(e)) : kHiddenSegment;
-    if (before.alive(EdgeId(e))) --(hidden(old_segment) ? counts.skipped_edges : counts.edges);
-    if (after.alive(EdgeId(e))) ++(hidden(segment) ? counts.skipped_edges : counts.edges);  // live: drawn or skipped
-    const bool was = !hidden(old_segment) && (old_segment.flags & kEdgeBoundaryFlag);
-    const bool is = !hidden(segment) && (segment.flags & kEdgeBoundaryFlag);
-    if (was || is) patch.boundary_changed = true;
-    if (was && !is) std::erase(state.boundary_edges, e);
-    if (is && !was) {
-      std::vector<uint32_t>& list = state.boundary_edges;
-      list.insert(std::lower_bound(list.begin(), list.end(), e), e);
-    }
-    if (e < after.edge_capacity()) patch.edges.emplace_back(e, segment);
-  }
-  if (patch.boundary_changed) {
-    patch.boundary_edges = state.boundary_edges;
-    for (uint32_t e : patch.boundary_edges) patch.boundary_segments.push_back(slot_edge(after, EdgeId(e)));
-  }
-
-  if (arrows) {
-    dh.insert(dh.end(), ch.begin(), ch.end());
-    sort_unique(dh);
-    for (uint32_t h : dh) {
-      if (h < after.halfedge_capacity()) patch.arrows.emplace_back(h, slot_arrow(after, HalfedgeId(h)));
-    }
-  }
-  patch.counts = counts;
-  patch.bounds = state.bounds;
-  return patch;
-}
-
-}  // namespace
 
 void apply_patch(SlotGeometry& g, std::vector<EdgeSegment>* arrows, const SlotPatch& patch) {
   g.positions.resize(patch.vertex_capacity, glm::vec3(0.0f));

@@ -103,10 +103,6 @@ FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<Halfedg
   return walk(mesh, f, cycle, visited, max_steps);
 }
 
-glm::dvec3 face_cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle) {
-  return cycle_centre(mesh, cycle);
-}
-
 void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
                       std::vector<HalfedgeArrow>& out) {
   add_arrows(mesh, cycle, out);

@@ -86,9 +86,7 @@ FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<Halfedg
 // The same in the state before an edit, read through its patch (the renderer's in-place update).
 FaceWalk walk_face_cycle(const StateBefore& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
                          std::vector<uint8_t>* visited, uint32_t max_steps);
-// The mean of a closed cycle's corners (where its arrows lean to), and the arrows of a closed cycle, appended
-// in cycle order: what build_halfedge_arrows makes for that face.
-glm::dvec3 face_cycle_centre(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle);
+// The arrows of a closed cycle, appended in cycle order: what build_halfedge_arrows makes for that face.
 void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
                       std::vector<HalfedgeArrow>& out);
 // Arrows of every halfedge of every drawable face, face by face in id order, each cycle from the face's

@@ -11,6 +11,14 @@
 // byte per element in a buffer texture per kind, rewritten where the list changed. Elements that are highlighted
 // but whose full pass is off (no wireframe, no vertices, no arrows) are drawn again from small batches built from
 // the mesh for just those elements.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers              KindSlot (the kinds with a "changed" texture), ItemLists, MeshKey, PickKey, draw_triangles
+//   Impl                 what the renderer keeps: the GPU mesh, the highlight textures, the pick target
+//   uploads and patches  upload (a full build), patch (incremental_update.h), uploaded_state
+//   highlights           refresh_changed, refresh_focus, ensure_arrows, count_gpu_bytes
+//   drawing              draw_faces, draw_lines_and_points; the pick pass: pick_key_for, draw_ids, ensure_pick_target
+//   MeshRenderer         the public functions: update, draw, pick, read_gpu_buffers
 #include "render/mesh_renderer.h"
 
 #include <algorithm>
@@ -37,6 +45,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 constexpr uint32_t kNoElement = 0xFFFFFFFFu;
 
@@ -162,6 +172,8 @@ void set_colour(const ShaderProgram& program, const char* name, const glm::vec4&
 
 }  // namespace
 
+// ---- Impl ------------------------------------------------------------------------------------------
+
 struct MeshRenderer::Impl {
   explicit Impl(const ShaderLibrary& shaders)
       : face(shaders.program("face.vert", "face.frag")),
@@ -240,6 +252,8 @@ struct MeshRenderer::Impl {
   RenderStats stats;
   RenderStyle style;
 };
+
+// ---- uploads and patches ---------------------------------------------------------------------------
 
 void MeshRenderer::Impl::refuse_if_too_large(size_t texels) {
   if (texels <= buffer_texel_cap()) return;
@@ -323,6 +337,8 @@ bool MeshRenderer::Impl::patch_from(const Before& before, uint64_t before_versio
   stats.last_update_slots = p->slots();
   return true;
 }
+
+// ---- highlights ------------------------------------------------------------------------------------
 
 void MeshRenderer::Impl::refresh_changed(std::span<const ElementRef> list, uint64_t key) {
   const bool same_list = key != 0 ? key == changed_key : std::equal(list.begin(), list.end(), changed_list.begin(),
@@ -418,6 +434,8 @@ void MeshRenderer::Impl::count_gpu_bytes() {
   total += changed_points.bytes();
   stats.gpu_bytes = total;
 }
+
+// ---- drawing ---------------------------------------------------------------------------------------
 
 PickKey MeshRenderer::Impl::pick_key_for(const OrbitCamera& camera, Viewport viewport) const {
   PickKey key;
@@ -586,6 +604,8 @@ void MeshRenderer::Impl::ensure_pick_target(Viewport viewport) {
   pick_size = viewport;
   pick_valid = false;
 }
+
+// ---- MeshRenderer ----------------------------------------------------------------------------------
 
 MeshRenderer::MeshRenderer(const ShaderLibrary& shaders) : impl_(std::make_unique<Impl>(shaders)) {}
 

@@ -3,12 +3,11 @@
 
 #include <algorithm>
 #include <cstdlib>
-#include <fstream>
-#include <sstream>
 #include <utility>
 
 #include <epoxy/gl.h>
 
+#include "core/file_bytes.h"
 #include "render/render_error.h"
 
 namespace meshedit {
@@ -105,11 +104,9 @@ std::filesystem::path ShaderLibrary::find(std::string_view name) const {
 
 std::string ShaderLibrary::read(std::string_view name) const {
   const auto path = find(name);
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (!in && !in.eof()) throw RenderError("cannot read shader " + path.string());
-  return text.str();
+  FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw RenderError("cannot read shader " + path.string());
+  return std::move(file.bytes);
 }
 
 ShaderProgram ShaderLibrary::program(std::string_view vertex_file, std::string_view fragment_file) const {

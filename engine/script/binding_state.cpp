@@ -7,7 +7,9 @@
 
 #include <lua.hpp>
 
+#include "core/value_format.h"
 #include "script/edit_recorder.h"
+#include "script/lua_runtime.h"
 
 namespace meshedit {
 namespace {
@@ -18,12 +20,6 @@ const char kStateKey = 0;
 int state_gc(lua_State* L) {
   static_cast<BindingState*>(lua_touserdata(L, 1))->~BindingState();
   return 0;
-}
-
-// "12 KB" below a megabyte, else "300 MB", rounded up (so a sum never reads as less than the limit).
-std::string format_bytes(size_t bytes) {
-  if (bytes < (size_t(1) << 20)) return std::to_string((bytes + 1023) >> 10) + " KB";
-  return std::to_string((bytes + (size_t(1) << 20) - 1) >> 20) + " MB";
 }
 
 // Appends `edit` to every recorder listening to `mesh`, with `where` found once for all of them.
@@ -40,6 +36,7 @@ void notify_recorders(BindingState& state, lua_State* L, const HalfedgeMesh* mes
 void begin_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, bool operation) {
   for (const EditRecorder* recorder : state.recorders) {
     if (recorder->watches(mesh.get()) && recorder->full()) {
+      LuaRuntime::note_cap(L);
       luaL_error(L, "more than %d changes recorded; is there a loop that never ends?", int(recorder->max_edits()));
     }
   }
@@ -81,11 +78,6 @@ BindingState& binding_state(lua_State* L) {
   BindingState* state = find_binding_state(L);
   if (!state) luaL_error(L, "the meshedit module is not open in this Lua state");
   return *state;
-}
-
-MeshLimits mesh_limits(lua_State* L) {
-  const BindingState* state = find_binding_state(L);
-  return state ? state->limits : MeshLimits{};
 }
 
 void set_mesh_limits(lua_State* L, const MeshLimits& limits) {
@@ -138,6 +130,7 @@ std::shared_ptr<HalfedgeMesh> copy_mesh(lua_State* L, const HalfedgeMesh& source
 void check_room(lua_State* L, const HalfedgeMesh& mesh, ElementKind kind, size_t count, const char* what) {
   const uint32_t cap = binding_state(L).limits.elements_per_kind;
   if (size_t(mesh.capacity(kind)) + count > cap) {
+    LuaRuntime::note_cap(L);
     luaL_error(L, "%s: the mesh already has %d %s ids; scripts may make at most %d", what, int(mesh.capacity(kind)),
                kind_name(kind), int(cap));
   }

@@ -17,6 +17,7 @@
 
 #include <cstddef>
 #include <exception>
+#include <iterator>
 #include <memory>
 #include <string>
 
@@ -45,8 +46,16 @@ struct Handle {
   std::string name() const { return format_id(ref()); }
 };
 
+// Every kind in ElementKind order: a handle metatable's place among them is its kind's value (handle_fields.cpp).
 inline constexpr ElementKind kAllKinds[] = {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge,
                                             ElementKind::Face, ElementKind::Boundary};
+static_assert(std::size(kAllKinds) == kElementKindCount);
+static_assert([] {
+  for (int k = 0; k < kElementKindCount; ++k) {
+    if (kAllKinds[k] != static_cast<ElementKind>(k)) return false;
+  }
+  return true;
+}());
 
 // Runs a binding with C++ exceptions turned into Lua errors. The message is copied out of the handler so the
 // Lua error (itself a C++ throw in this build of Lua, not a std::exception) starts after the C++ one is done. Memory

@@ -5,9 +5,21 @@
 // Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
 // so a failure there reads like the window.
 //
-// Tolerances: points and normals within 1e-9 of the reference (scaled by the input's size for points),
-// meshes within 1e-9 x the bounding-box diagonal (at least 1e-9); "identical" means bit for bit and, for
+// Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
+// input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
 // meshes, pointer for pointer (compare_meshes_exact with tolerance 0).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   messages                       Messages (the capped list a verdict fills), bitwise_equal, close
+//   curve step                     compare_curve: a dropped last point, swapped weights
+//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (unweighted normals)
+//   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
+//   flip                           compare_flip
+//   split                          compare_split: where the new vertex is, which pointers were forgotten
+//   upsample                       diagnose_upsample and its diagnoses, compare_upsample
+//   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
+//   runs that failed               add_run_failure: an error or a limit, with its hint
+//   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -30,6 +42,8 @@
 namespace meshedit {
 namespace {
 
+// ---- messages --------------------------------------------------------------------------------------
+
 // Keeps the first kMaxMessages messages and counts all.
 class Messages {
  public:
@@ -46,7 +60,6 @@ class Messages {
   ExerciseReport& report_;
 };
 
-std::string id(ElementRef r) { return format_id(r); }
 std::string pos(const glm::dvec3& p) { return format_position(p); }
 
 bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
@@ -55,31 +68,12 @@ bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
 
 bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
 
-double largest_coordinate(std::span<const glm::dvec3> points) {
-  double m = 0.0;
-  for (const auto& p : points) m = std::max({m, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  return std::isfinite(m) ? m : 0.0;
-}
-
-double mesh_tolerance(const HalfedgeMesh& mesh) {
-  glm::dvec3 lo(0.0), hi(0.0);
-  bool first = true;
-  for (VertexId v : mesh.vertices()) {
-    const glm::dvec3& p = mesh.position(v);
-    lo = first ? p : glm::min(lo, p);
-    hi = first ? p : glm::max(hi, p);
-    first = false;
-  }
-  const double diagonal = glm::distance(lo, hi);
-  return 1e-9 * (std::isfinite(diagonal) ? std::max(1.0, diagonal) : 1.0);
-}
-
 // ---- curve step -------------------------------------------------------------------------------------------
 
 void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const auto& got = report.mine.points;
   const auto& want = report.reference.points;
-  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.points));
+  const double tolerance = points_tolerance(input.points);
   const size_t common = std::min(got.size(), want.size());
   bool prefix_matches = true;
   for (size_t i = 0; i < common; ++i) prefix_matches = prefix_matches && close(got[i], want[i], tolerance);
@@ -136,7 +130,7 @@ void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages&
 void compare_patch(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const glm::dvec3 got = report.mine.points[0];
   const glm::dvec3 want = report.reference.points[0];
-  const double tolerance = 1e-9 * std::max(1.0, largest_coordinate(input.patch.points));
+  const double tolerance = points_tolerance(input.patch.points);
   const double d = glm::distance(got, want);
   if (!(d <= tolerance)) {
     const glm::dvec3 transposed = evaluate_patch(input.patch, input.v, input.u);
@@ -205,10 +199,10 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
     std::string first;
     if (!changes.empty()) {
       const FieldChange& c = changes.front();
-      first = ": " + id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+      first = ": " + format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
     }
-    out.add("vertex_normal changed the mesh" + first + " (" + std::to_string(changes.size()) +
-            (changes.size() == 1 ? " change" : " changes") + "); it must only read it");
+    out.add("vertex_normal changed the mesh" + first + " (" + plural(changes.size(), "change", "changes") +
+            "); it must only read it");
   }
   report.equal = !out.any();
   report.identical = report.equal && bitwise_equal(got, want);
@@ -249,8 +243,8 @@ void add_validation(const ExerciseReport& report, const char* function, Messages
   for (size_t i = 0; i < v.violations.size(); ++i) {
     std::string message = v.violations[i].message;
     if (i == 0) {
-      message = "after your " + std::string(function) + " the mesh is not valid (" + std::to_string(v.total) +
-                (v.total == 1 ? " problem" : " problems") + "): " + message;
+      message = "after your " + std::string(function) + " the mesh is not valid (" +
+                plural(v.total, "problem", "problems") + "): " + message;
     }
     out.add(message);
   }
@@ -273,7 +267,9 @@ void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before
   for (HalfedgeId h : before.halfedges()) {
     if (!mine.alive(h) || !reference.alive(h)) continue;
     if (reference.next(h) == before.next(h) || mine.next(h) != before.next(h)) continue;
-    if (count++ < 3) items += (items.empty() ? "" : ", ") + id(h) + ".next is still " + id(before.next(h));
+    if (count++ < 3) {
+      items += (items.empty() ? "" : ", ") + format_id(h) + ".next is still " + format_id(before.next(h));
+    }
   }
   if (count == 0) return;
   out.add(items + (count > 3 ? " (and " + std::to_string(count - 3) + " more)" : "") + " after your " + function +
@@ -285,7 +281,7 @@ std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) 
   const std::vector<FieldChange> changes = diff(before, after);
   if (changes.empty()) return "";
   const FieldChange& c = changes.front();
-  return id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+  return format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
 }
 
 void add_comparison(const MeshComparison& c, Messages& out) {
@@ -311,7 +307,7 @@ void note_boundary_convention(ExerciseReport& report) {
   for (VertexId v : m.vertices()) {
     const HalfedgeId h = m.halfedge(v);
     if (!m.alive(h) || m.face(h).is_boundary() || !m.is_boundary(v)) continue;
-    report.notes.push_back(id(v) + " is on the boundary and its halfedge " + id(h) +
+    report.notes.push_back(format_id(v) + " is on the boundary and its halfedge " + format_id(h) +
                            " is not on the boundary loop: accepted (the course lets a vertex's halfedge be any "
                            "halfedge leaving it; MeshEdit's own operations keep a boundary vertex's on the loop)");
     return;
@@ -338,31 +334,31 @@ void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const s
 
 void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
-    return compare_refusal(input, report, "flip " + id(input.element), "flip_edge", out);
+    return compare_refusal(input, report, "flip " + format_id(input.element), "flip_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
   const EdgeId e(input.element.index);
   const Diamond q = diamond(before, e);
-  const std::string turn = id(q.a) + "-" + id(q.b) + " becomes " + id(q.d) + "-" + id(q.c);
+  const std::string turn = format_id(q.a) + "-" + format_id(q.b) + " becomes " + format_id(q.d) + "-" + format_id(q.c);
   if (mine.same_as(before)) {
     out.add("your flip_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
-            "; the reference flips " + id(e) + " (" + turn + ")");
+            "; the reference flips " + format_id(e) + " (" + turn + ")");
     report.equal = false;
     return;
   }
   add_unchanged_next(report, before, "flip_edge", out);
   add_validation(report, "flip_edge", out);
   if (report.mine.element != ElementRef(e)) {
-    out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + id(e));
+    out.add("your flip_edge returned " + report.mine.returned + "; it must return the flipped edge " + format_id(e));
   }
   for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face}) {
     for (uint32_t i = 0; i < std::max(mine.capacity(kind), before.capacity(kind)); ++i) {
       const ElementRef r(kind, i);
       if (mine.alive(r) && !before.alive(r)) {
-        out.add("your flip_edge created " + id(r) + "; a flip reuses the elements it has");
+        out.add("your flip_edge created " + format_id(r) + "; a flip reuses the elements it has");
       } else if (!mine.alive(r) && before.alive(r)) {
-        out.add("your flip_edge deleted " + id(r) + "; a flip reuses the elements it has");
+        out.add("your flip_edge deleted " + format_id(r) + "; a flip reuses the elements it has");
       }
     }
   }
@@ -372,7 +368,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
   }
   report.equal = !out.any();
   if (report.equal) {
-    note_pointer_differences(report, "a correct flip of " + id(e) + " (" + turn + ")");
+    note_pointer_differences(report, "a correct flip of " + format_id(e) + " (" + turn + ")");
     note_boundary_convention(report);
   }
 }
@@ -381,7 +377,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
 
 void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
-    return compare_refusal(input, report, "split " + id(input.element), "split_edge", out);
+    return compare_refusal(input, report, "split " + format_id(input.element), "split_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
@@ -392,7 +388,7 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
   const double tolerance = mesh_tolerance(before);
   if (mine.same_as(before)) {
     out.add("your split_edge changed nothing" + std::string(report.mine.returned == "nil" ? " and returned nil" : "") +
-            "; the reference splits " + id(e) + " at its midpoint " + pos(midpoint) +
+            "; the reference splits " + format_id(e) + " at its midpoint " + pos(midpoint) +
             (before.is_boundary(e) ? " (a boundary edge: only the triangle side is split; extra credit in the course)"
                                    : ""));
     report.equal = false;
@@ -415,12 +411,13 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
         count = 4.0;
       }
       if (close(p, corners / count, tolerance)) {
-        out.add("your new vertex " + id(v) + " is at " + pos(p) + ", the average of the corners " + id(q.a) + " " +
-                id(q.b) + " " + id(q.c) + (q.d.valid() ? " " + id(q.d) : "") +
-                "; it belongs at the midpoint of " + id(q.a) + " and " + id(q.b) + ", " + pos(midpoint));
+        out.add("your new vertex " + format_id(v) + " is at " + pos(p) + ", the average of the corners " +
+                format_id(q.a) + " " + format_id(q.b) + " " + format_id(q.c) +
+                (q.d.valid() ? " " + format_id(q.d) : "") + "; it belongs at the midpoint of " + format_id(q.a) +
+                " and " + format_id(q.b) + ", " + pos(midpoint));
       } else {
-        out.add("your new vertex " + id(v) + " is at " + pos(p) + "; it belongs at the midpoint of " + id(q.a) +
-                " and " + id(q.b) + ", " + pos(midpoint));
+        out.add("your new vertex " + format_id(v) + " is at " + pos(p) + "; it belongs at the midpoint of " +
+                format_id(q.a) + " and " + format_id(q.b) + ", " + pos(midpoint));
       }
     }
     // The course: the new vertex's halfedge runs along the split edge (towards a or b).
@@ -428,30 +425,25 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
     if (mine.alive(h) && mine.alive(mine.twin(h)) && mine.alive(mine.vertex(mine.twin(h)))) {
       const glm::dvec3& to = mine.position(mine.vertex(mine.twin(h)));
       if (!close(to, before.position(q.a), tolerance) && !close(to, before.position(q.b), tolerance)) {
-        out.add(id(v) + ".halfedge is " + id(h) + ", which runs to " + id(mine.vertex(mine.twin(h))) +
-                " across a face; the new vertex's halfedge must run along the split edge (towards " + id(q.a) +
-                " or " + id(q.b) + ")");
+        out.add(format_id(v) + ".halfedge is " + format_id(h) + ", which runs to " +
+                format_id(mine.vertex(mine.twin(h))) +
+                " across a face; the new vertex's halfedge must run along the split edge (towards " + format_id(q.a) +
+                " or " + format_id(q.b) + ")");
       }
     }
   }
   if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
   report.equal = !out.any();
   if (report.equal) {
-    note_pointer_differences(report, "a correct split of " + id(e));
+    note_pointer_differences(report, "a correct split of " + format_id(e));
     note_boundary_convention(report);
   }
 }
 
 // ---- upsample ---------------------------------------------------------------------------------------------
 
-// Likely mistakes, from where your vertices are and which edges you have that the reference does not.
-void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
-                       double tolerance, Messages& out) {
-  const HalfedgeMesh& before = *input.mesh;
-  const HalfedgeMesh& mine = *report.mine.mesh;
-  const HalfedgeMesh& reference = *report.reference.mesh;
-
-  // Zero weights put vertices at the origin.
+// Zero weights put vertices at the origin. Returns how many of yours are there.
+size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, Messages& out) {
   size_t at_origin = 0, reference_at_origin = 0;
   for (VertexId v : mine.vertices()) at_origin += close(mine.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   for (VertexId v : reference.vertices()) {
@@ -461,8 +453,12 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
     out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
             "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
   }
+  return at_origin;
+}
 
-  // Original vertices (they keep their ids in both) that did not move.
+// Original vertices (they keep their ids in both) that did not move.
+void diagnose_unmoved_originals(const HalfedgeMesh& before, const HalfedgeMesh& mine, const HalfedgeMesh& reference,
+                                double tolerance, Messages& out) {
   size_t originals = 0, unmoved = 0;
   for (VertexId v : before.vertices()) {
     if (!mine.alive(v) || !reference.alive(v)) continue;
@@ -475,12 +471,11 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
             " original vertices kept their old positions: step 5 must move them to the positions of step 1, "
             "(1 - n u) p + u (sum of the neighbours)");
   }
+}
 
-  // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
-  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
-  for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
-
-  // Coinciding vertices: positions written to the wrong vertices make the mesh collapse.
+// Coinciding vertices: positions written to the wrong vertices make the mesh collapse (unless zero weights put them
+// all at the origin, told first).
+void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Messages& out) {
   std::vector<glm::dvec3> positions;
   for (VertexId v : mine.vertices()) positions.push_back(mine.position(v));
   std::sort(positions.begin(), positions.end(), [](const glm::dvec3& a, const glm::dvec3& b) {
@@ -492,40 +487,62 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
     out.add(std::to_string(shared) + " of your vertices sit exactly on another one: were new positions written to "
             "the wrong vertices? Keep them in a table indexed by v.id and move each vertex to its own");
   }
+}
 
-  // With every vertex matched, classify the edges yours has and the reference does not.
+// With every vertex matched, the edges yours has and the reference does not, by the age of their ends: each kind is
+// a different wrong flip.
+void diagnose_extra_edges(const HalfedgeMesh& before, const HalfedgeMesh& mine, const MeshComparison& c,
+                          Messages& out) {
   if (!c.unmatched_vertices.empty() || !c.unmatched_reference.empty() || c.extra_edges.empty()) return;
+  enum Ends { kOldAndNew, kBothOld, kBothNew, kEndsKinds };
   const uint32_t old_capacity = before.vertex_capacity();
-  size_t old_new = 0, old_old = 0, new_new = 0;
-  EdgeId example[3];
+  size_t count[kEndsKinds] = {};
+  EdgeId example[kEndsKinds];
   for (EdgeId e : c.extra_edges) {
     const HalfedgeId h = mine.halfedge(e);
     if (!mine.alive(h) || !mine.alive(mine.twin(h))) continue;
     const uint32_t x = mine.vertex(h).index, y = mine.vertex(mine.twin(h)).index;
     if (x >= c.vertex_map.size() || y >= c.vertex_map.size()) continue;
     const bool x_old = c.vertex_map[x].index < old_capacity, y_old = c.vertex_map[y].index < old_capacity;
-    const int kind = x_old && y_old ? 1 : (!x_old && !y_old ? 2 : 0);
-    size_t& count = kind == 0 ? old_new : kind == 1 ? old_old : new_new;
-    if (count++ == 0) example[kind] = e;
+    const Ends kind = x_old && y_old ? kBothOld : (!x_old && !y_old ? kBothNew : kOldAndNew);
+    if (count[kind]++ == 0) example[kind] = e;
   }
   const auto ends = [&](EdgeId e) {
     const HalfedgeId h = mine.halfedge(e);
-    return id(e) + " (" + id(mine.vertex(h)) + " " + id(mine.vertex(mine.twin(h))) + ")";
+    return format_id(e) + " (" + format_id(mine.vertex(h)) + " " + format_id(mine.vertex(mine.twin(h))) + ")";
   };
-  if (old_old > 0) {
-    out.add(std::to_string(old_old) + " of your edges join two original vertices, e.g. " + ends(example[1]) +
+  if (count[kBothOld] > 0) {
+    out.add(std::to_string(count[kBothOld]) + " of your edges join two original vertices, e.g. " +
+            ends(example[kBothOld]) +
             ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end "
             "(check both ends)");
   }
-  if (new_new > 0) {
-    out.add(std::to_string(new_new) + " of your edges join two new vertices where the reference has none, e.g. " +
-            ends(example[2]) + ": an edge that was not new (a half of a split edge) was flipped");
+  if (count[kBothNew] > 0) {
+    const std::string what = " of your edges join two new vertices where the reference has none, e.g. ";
+    out.add(std::to_string(count[kBothNew]) + what + ends(example[kBothNew]) +
+            ": an edge that was not new (a half of a split edge) was flipped");
   }
-  if (old_new > 0) {
-    out.add(std::to_string(old_new) + " of your edges join an original and a new vertex where the reference has "
-            "none, e.g. " + ends(example[0]) + ": every new edge (one that cuts across an old face) that joins an "
-            "old and a new vertex must be flipped, once");
+  if (count[kOldAndNew] > 0) {
+    const std::string what = " of your edges join an original and a new vertex where the reference has none, e.g. ";
+    out.add(std::to_string(count[kOldAndNew]) + what + ends(example[kOldAndNew]) +
+            ": every new edge (one that cuts across an old face) that joins an old and a new vertex must be flipped, "
+            "once");
   }
+}
+
+// Likely mistakes, from where your vertices are and which edges you have that the reference does not.
+void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
+                       double tolerance, Messages& out) {
+  const HalfedgeMesh& before = *input.mesh;
+  const HalfedgeMesh& mine = *report.mine.mesh;
+  const HalfedgeMesh& reference = *report.reference.mesh;
+  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, out);
+  diagnose_unmoved_originals(before, mine, reference, tolerance, out);
+  // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
+  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+  for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
+  diagnose_coinciding_vertices(mine, at_origin, out);
+  diagnose_extra_edges(before, mine, c, out);
 }
 
 void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
@@ -603,7 +620,7 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
     report.equal = false;
     return;
   }
-  const std::string what = std::string(function) + (input.element.valid() ? " on " + id(input.element) : "");
+  const std::string what = std::string(function) + (input.element.valid() ? " on " + format_id(input.element) : "");
   if (!report.reference.refused.empty()) {
     return compare_refusal(input, report, "change the mesh in " + what, function, out);
   }
@@ -637,15 +654,13 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
   if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
 }
 
-// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish is explained from where
-// it was stopped and what it had done (upsample_runaway.h), its line first.
+// ---- runs that failed ------------------------------------------------------------------------------
+
+// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish (a limit or a cap stopped
+// it) is explained from where it was stopped and what it had done (upsample_runaway.h), its line first.
 void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
   const std::string& error = report.mine.error;
-  const bool unfinished = error.find("instruction budget exceeded") != std::string::npos ||
-                          error.find("time limit exceeded") != std::string::npos ||
-                          error.find("memory limit exceeded") != std::string::npos ||
-                          error.find("scripts may make at most") != std::string::npos ||
-                          error.find("changes recorded") != std::string::npos;
+  const bool unfinished = report.mine.limit != ScriptError::Limit::None;
   if (unfinished && exercise == Exercise::Upsample && input.mesh) {
     out.add(explain_unfinished_upsample(error, *input.mesh, report.mine.mesh.get(), report.mine.edits));
   } else {
@@ -656,6 +671,8 @@ void add_run_failure(Exercise exercise, const ExerciseInput& input, const Exerci
 }
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 std::string unfinished_run_hint(Exercise exercise) {
   switch (exercise) {

@@ -8,11 +8,16 @@
 // called by a one-line chunk through run_string (so the instruction budget, memory cap and deadline apply),
 // and removed again. Everything C++ reads back is read raw (no metamethod of the student's runs outside the
 // limits).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                         kExercises, the Lua helpers (kHelpers), describe_value, check_input
+//   returned values                 read_returned_value: what a student function returned, checked for its shape
+//   catalogue and inputs            exercise_info, find_exercise, the ExerciseInput makers and describe
+//   student code                    StudentCode: load, the exercise API, run (under the limits, recorded)
+//   running mine and the reference  load_student_file, run_mine, run_reference
 #include "script/exercises.h"
 
 #include <algorithm>
-#include <fstream>
-#include <iterator>
 #include <new>
 #include <stdexcept>
 
@@ -35,6 +40,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 constexpr ExerciseInfo kExercises[] = {
     {Exercise::CurveStep, "curve", "curve.lua", "evaluate_step", "evaluate_step(points, t) -> list of n - 1 vec3",
@@ -167,6 +174,8 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
 
 }  // namespace
 
+// ---- returned values -------------------------------------------------------------------------------
+
 void read_returned_value(lua_State* L, int index, Exercise exercise, const std::shared_ptr<HalfedgeMesh>& mesh,
                          ExerciseOutcome& out) {
   const ExerciseInfo& info = exercise_info(exercise);
@@ -195,7 +204,7 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
         }
         out.points.push_back(p);
       }
-      out.returned = "a list of " + std::to_string(n) + (n == 1 ? " point" : " points");
+      out.returned = "a list of " + plural(n, "point", "points");
       return;
     }
     case Exercise::PatchEvaluate:
@@ -295,8 +304,7 @@ std::string ExerciseInput::describe(Exercise exercise) const {
            std::to_string(mesh->num_faces()) + " faces";
   };
   switch (exercise) {
-    case Exercise::CurveStep:
-      return std::to_string(points.size()) + (points.size() == 1 ? " point" : " points") + ", t = " + format_number(t);
+    case Exercise::CurveStep: return plural(points.size(), "point", "points") + ", t = " + format_number(t);
     case Exercise::PatchEvaluate: return "(u, v) = (" + format_number(u) + ", " + format_number(v) + ")";
     case Exercise::VertexNormal:
     case Exercise::FlipEdge:
@@ -387,11 +395,8 @@ void StudentCode::run_protected(int closure_ref) {
 }
 
 void StudentCode::load(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + file.string());
-  // Read into the string directly: a stream's << would swallow std::bad_alloc and leave the text cut short.
-  std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!code.empty() && code[0] == '#') code = "--" + code;  // a shebang line, as lua.c skips it
+  const std::optional<std::string> code = read_lua_file(file);
+  if (!code) throw ScriptError("cannot open " + file.string());
   const std::string name = file.filename().string();
 
   lua_State* L = runtime_->state();
@@ -400,7 +405,7 @@ void StudentCode::load(const std::filesystem::path& file) {
   const int out = lua_gettop(L);
   lua_rawgeti(L, LUA_REGISTRYINDEX, helpers_ref_);
   lua_getfield(L, -1, "loader");
-  lua_pushlstring(L, code.data(), code.size());
+  lua_pushlstring(L, code->data(), code->size());
   lua_pushstring(L, ("@" + name).c_str());
   lua_pushvalue(L, out);
   if (lua_pcall(L, 3, 1, 0) != LUA_OK) {
@@ -475,6 +480,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   } catch (const ScriptError& e) {
     out.error = e.what();
     out.out_of_memory = e.out_of_memory();
+    out.limit = e.limit();
     return out;
   }
   lua_State* L = runtime_->state();
@@ -520,6 +526,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   } catch (const ScriptError& e) {
     out.error = e.what();
     out.out_of_memory = e.out_of_memory();
+    out.limit = e.limit();
   }
   output_ = nullptr;
   if (recorder) {
@@ -543,6 +550,8 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   return out;
 }
 
+// ---- running mine and the reference ----------------------------------------------------------------
+
 std::unique_ptr<StudentCode> load_student_file(const std::filesystem::path& file, LuaLimits limits) {
   auto code = std::make_unique<StudentCode>(limits);
   code->load(file);
@@ -564,7 +573,7 @@ ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   switch (exercise) {
     case Exercise::CurveStep:
       out.points = de_casteljau_step(std::span<const glm::dvec3>(input.points), input.t);
-      out.returned = "a list of " + std::to_string(out.points.size()) + (out.points.size() == 1 ? " point" : " points");
+      out.returned = "a list of " + plural(out.points.size(), "point", "points");
       return out;
     case Exercise::PatchEvaluate:
       out.points = {evaluate_patch(input.patch, input.u, input.v)};

@@ -95,6 +95,7 @@ struct ExerciseOutcome {
                             // 'twin')"), a limit, or "evaluate_step returned nil; ..."
   bool out_of_memory = false;  // `error` is memory running out under the call (ScriptError::out_of_memory), not the
                                // student's doing; a student's own error("memory ran out") is not
+  ScriptError::Limit limit = ScriptError::Limit::None;  // the limit or cap that stopped the call, if one did
   std::string returned;     // the first return value, described: "nil", "e5", "a list of 3 points", "(0, 0, 1)"
   std::vector<glm::dvec3> points;  // CurveStep: the step; PatchEvaluate, VertexNormal: the one point
   std::shared_ptr<HalfedgeMesh> mesh;  // the mesh after the call (mesh exercises; the copy it ran on)

@@ -69,9 +69,9 @@ void open_handle_metatables(lua_State* L) {
     lua_pushinteger(L, static_cast<lua_Integer>(kind));
     lua_rawsetp(L, -2, &kHandleKindKey);
   }
-  // The five metatables are on the stack in kAllKinds order; __index and __newindex are set on each.
+  // The metatables are on the stack in kAllKinds order; __index and __newindex are set on each.
   set_handle_accessors(L, context_index, context_index + 1);
-  lua_pop(L, 6);
+  lua_pop(L, 1 + kElementKindCount);  // the context and the metatables
 }
 
 void push_handle_metatable(lua_State* L, ElementKind kind) { luaL_getmetatable(L, kind_name(kind)); }

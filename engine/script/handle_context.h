@@ -26,7 +26,7 @@ inline constexpr int kMaxHandleKeys = 32;
 
 struct HandleContext {
   BindingState* state;
-  const void* metatables[5];  // by ElementKind
+  const void* metatables[kElementKindCount];  // by ElementKind
   int key_count;
   const char* keys[kMaxHandleKeys];  // interned text (see handle_fields.cpp for which)
 };
@@ -47,8 +47,8 @@ inline Handle* context_handle(lua_State* L, const HandleContext& c, int index) {
   return nullptr;
 }
 
-// Sets __index and __newindex on the five handle metatables at stack indices first .. first + 4 (kAllKinds
-// order), with the context at `context` (handle_fields.cpp; it fills the context's keys).
+// Sets __index and __newindex on the handle metatables at stack indices first .. first + kElementKindCount - 1
+// (kAllKinds order), with the context at `context` (handle_fields.cpp; it fills the context's keys).
 void set_handle_accessors(lua_State* L, int context, int first);
 
 }  // namespace meshedit

@@ -1,11 +1,11 @@
 // __index and __newindex of element handles, and the pointer reads and writes they share with set_neighbors
 // (see handle_fields.h for the fields and the invariants).
 //
-// How a key is found: the two accessors are C closures shared by the five handle metatables. Upvalue 1 is the
+// How a key is found: the two accessors are C closures shared by the handle metatables. Upvalue 1 is the
 // state's HandleContext (handle_context.h), which holds the addresses of the interned key strings ("next",
-// "twin", ... and the method names; a key is compared by address first); upvalues 2 .. 6 are the handle
-// metatables in kAllKinds order, which a new handle of each kind gets without a lookup by name; __index's
-// upvalues from 7 on are the methods, as closures over the same context, in handle_methods() order.
+// "twin", ... and the method names; a key is compared by address first); the next kElementKindCount upvalues are
+// the handle metatables in kAllKinds order, which a new handle of each kind gets without a lookup by name; __index's
+// upvalues after them are the methods, as closures over the same context, in handle_methods() order.
 #include "script/handle_fields.h"
 
 #include <cstring>
@@ -21,13 +21,19 @@
 namespace meshedit {
 namespace {
 
-// The keys, in this order: the six pointer fields (as PointerField), then these, then the methods.
-enum Key : int { kHalfedgeKey = 5, kPosition = 6, kId, kKind, kMesh, kFirstMethod };
+// The keys, in this order: the six pointer fields (a pointer field's Key is its PointerField), then these, then the
+// methods. pointer_key reads the halfedge's fields as the keys below kHalfedgeKey, and field_name reads kKeyNames by
+// PointerField: the asserts hold PointerField to that order.
+enum Key : int { kHalfedgeKey = static_cast<int>(PointerField::Halfedge), kPosition, kId, kKind, kMesh, kFirstMethod };
 constexpr const char* kKeyNames[] = {"next", "twin", "vertex", "edge", "face", "halfedge",
                                      "position", "id", "kind", "mesh"};
 static_assert(std::size(kKeyNames) == kFirstMethod);
+static_assert(static_cast<int>(PointerField::Next) == 0 && static_cast<int>(PointerField::Twin) == 1 &&
+                  static_cast<int>(PointerField::Vertex) == 2 && static_cast<int>(PointerField::Edge) == 3 &&
+                  static_cast<int>(PointerField::Face) == 4 && static_cast<int>(PointerField::Halfedge) == 5,
+              "PointerField is in the order of kKeyNames, with the halfedge's own fields before Halfedge");
 constexpr int kFirstMetatable = 2;  // upvalue of kAllKinds[0]'s metatable
-constexpr int kFirstMethodUpvalue = kFirstMetatable + 5;
+constexpr int kFirstMethodUpvalue = kFirstMetatable + kElementKindCount;
 
 int metatable_upvalue(ElementKind kind) { return lua_upvalueindex(kFirstMetatable + static_cast<int>(kind)); }
 
@@ -193,7 +199,7 @@ void set_handle_accessors(lua_State* L, int context, int first) {
 
   const auto push_upvalues = [&] {
     lua_pushvalue(L, context);
-    for (int k = 0; k < 5; ++k) lua_pushvalue(L, first + k);
+    for (int k = 0; k < kElementKindCount; ++k) lua_pushvalue(L, first + k);
   };
   push_upvalues();
   for (const HandleMethod& method : handle_methods()) {
@@ -203,7 +209,7 @@ void set_handle_accessors(lua_State* L, int context, int first) {
   lua_pushcclosure(L, guarded<handle_index>, kFirstMethodUpvalue - 1 + static_cast<int>(handle_methods().size()));
   push_upvalues();
   lua_pushcclosure(L, guarded<handle_newindex>, kFirstMethodUpvalue - 1);
-  for (int k = 0; k < 5; ++k) {
+  for (int k = 0; k < kElementKindCount; ++k) {
     lua_pushvalue(L, -1);
     lua_setfield(L, first + k, "__newindex");
     lua_pushvalue(L, -2);

@@ -7,6 +7,7 @@
 // of returning part of the answer.
 #include "script/handle_methods.h"
 
+#include <iterator>
 #include <vector>
 
 #include "script/binding_state.h"
@@ -72,7 +73,7 @@ int halfedge_set_neighbors(lua_State* L) {
   const PointerField fields[] = {PointerField::Next, PointerField::Twin, PointerField::Vertex, PointerField::Edge,
                                  PointerField::Face};
   BindingState& state = *handle_context(L).state;
-  for (int i = 0; i < 5; ++i) write_pointer(L, state, h, fields[i], values[i]);
+  for (size_t i = 0; i < std::size(fields); ++i) write_pointer(L, state, h, fields[i], values[i]);
   return 0;
 }
 

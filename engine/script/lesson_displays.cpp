@@ -43,9 +43,7 @@ bool has_place(const std::string& message) {
 
 // The error on top of L as text, placed at `where` when Lua gave it no place.
 std::string error_at(lua_State* L, const std::string& where) {
-  std::string message = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1)
-                                                       : std::string("(error object is a ") + luaL_typename(L, -1) +
-                                                             " value)";
+  std::string message = error_value_text(L, -1);
   if (!has_place(message) && !where.empty()) message = where + ": " + message;
   return message;
 }

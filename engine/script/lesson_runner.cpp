@@ -11,13 +11,20 @@
 // message that could not be made) and turn it into the step's error with exception_text, which cannot fail. Whether an
 // error is memory running out travels with it as a flag (exception_text's, the runtime's ran_out_of_memory for a
 // step's own Lua error), never read back from the text.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                        BusyScope, the empty defaults, error_text
+//   limits and settings            default_limits, live_limits, set_student_folder, set_student_limits
+//   loading                        load, reload, prepare, read_and_run, take
+//   moving between steps           next, back, restart_step, go_to, fail
+//   running a step                 start_step, resume, trampoline, protected_call
+//   waits, live values and events  update, advance_wait, refresh_live, deliver
+//   what the panel reads           title, summary, step_titles, your_turns and the other getters
 #include "script/lesson_runner.h"
 
 #include <algorithm>
 #include <cmath>
 #include <exception>
-#include <fstream>
-#include <iterator>
 
 #include <lua.hpp>
 
@@ -28,6 +35,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 // Sets the runner's busy flag for its lifetime: a script's calls back into the runner are refused meanwhile, and an
 // exception (even one thrown while its message is copied, out of memory) cannot leave the runner busy for good.
@@ -52,20 +61,19 @@ const std::vector<LessonJudgement> kNoAnswers;
 const LessonJudgement kNoJudgement;
 
 std::string error_text(lua_State* co, const LuaLimits& limits) {
-  std::string message;
-  if (lua_type(co, -1) == LUA_TSTRING) message = lua_tostring(co, -1);
-  else message = std::string("(error object is a ") + luaL_typename(co, -1) + " value)";
+  std::string message = error_value_text(co, -1);
   // A memory error carries no position (Lua builds no message for it): the coroutine's stack, which an error
   // leaves in place, still says where it was.
   if (message == "not enough memory") {
     const std::string where = lesson_where(co, 0);
-    message = (where.empty() ? "" : where + ": ") + "memory limit exceeded (" +
-              std::to_string(limits.memory_bytes >> 20) + " MB)";
+    message = (where.empty() ? "" : where + ": ") + memory_limit_message(limits.memory_bytes);
   }
   return message;
 }
 
 }  // namespace
+
+// ---- limits and settings ---------------------------------------------------------------------------
 
 LuaLimits LessonRunner::default_limits() {
   LuaLimits limits;
@@ -104,6 +112,8 @@ LessonRunner::Prepared::Prepared(Prepared&&) noexcept = default;
 LessonRunner::Prepared& LessonRunner::Prepared::operator=(Prepared&&) noexcept = default;
 
 const std::string& LessonRunner::Prepared::title() const { return script ? script->title : kEmptyText; }
+
+// ---- loading ---------------------------------------------------------------------------------------
 
 bool LessonRunner::load(const std::filesystem::path& path) {
   Prepared lesson;
@@ -155,10 +165,8 @@ bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) 
 
 std::string LessonRunner::read_and_run(Prepared& lesson) {
   const std::filesystem::path& path = lesson.path;
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return "cannot open " + path.string();
-  std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-  if (!text.empty() && text[0] == '#') text = "--" + text;  // a shebang line, as lua.c skips it
+  const std::optional<std::string> text = read_lua_file(path);
+  if (!text) return "cannot open " + path.string();
   const std::string chunk = path.filename().string();
 
   lesson.script = std::make_unique<LessonScript>();
@@ -174,7 +182,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
       if (print_) print_(line);
     });
     open_lesson_api(*lesson.runtime, script);
-    lesson.runtime->load(text, chunk);
+    lesson.runtime->load(*text, chunk);
     lesson.runtime->start_budget();
     lesson.runtime->call(0, 0);
   }
@@ -195,6 +203,8 @@ void LessonRunner::take(Prepared&& lesson, size_t index) noexcept {
   path_.swap(lesson.path);
   start_step(std::min(index, script_->steps.size() - 1));
 }
+
+// ---- moving between steps --------------------------------------------------------------------------
 
 void LessonRunner::next() {
   if (!script_ || busy_) return;
@@ -233,6 +243,8 @@ void LessonRunner::fail_with(const std::exception& error) noexcept {
   std::string message = exception_text(error, out_of_memory);
   fail(message, out_of_memory);
 }
+
+// ---- running a step --------------------------------------------------------------------------------
 
 void LessonRunner::start_step(size_t index) noexcept try {
   index_ = index;
@@ -351,6 +363,8 @@ std::string LessonRunner::protected_call(bool& out_of_memory, const std::functio
   return failure;
 }
 
+// ---- waits, live values and events -----------------------------------------------------------------
+
 void LessonRunner::update(double dt) noexcept {
   advance_wait(dt);
   refresh_live();
@@ -450,6 +464,8 @@ bool LessonRunner::deliver(const LessonEvent& event) {
   }
   return true;
 }
+
+// ---- what the panel reads --------------------------------------------------------------------------
 
 const std::string& LessonRunner::title() const { return script_ ? script_->title : kEmptyText; }
 

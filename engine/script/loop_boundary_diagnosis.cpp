@@ -7,6 +7,7 @@
 
 #include "core/loop_rules.h"
 #include "core/value_format.h"
+#include "core/vertex_ring.h"
 #include "script/loop_diagnosis_support.h"
 
 namespace meshedit {
@@ -14,23 +15,11 @@ namespace {
 
 using namespace loop_diagnosis;
 
-// A boundary vertex's neighbours: the two along the boundary, and all of them (their count and sum).
-struct BoundaryRing {
-  VertexId along[2];
-  size_t n = 0;
-  glm::dvec3 sum{0.0};
-};
-std::optional<BoundaryRing> boundary_ring(const HalfedgeMesh& mesh, VertexId v) {
-  BoundaryRing ring;
-  size_t found = 0;
-  const bool ok = mesh.for_each_outgoing(v, [&](HalfedgeId h) {
-    const VertexId tip = mesh.vertex(mesh.twin(h));
-    ++ring.n;
-    ring.sum += mesh.position(tip);
-    const bool on_boundary = mesh.face(h).is_boundary() || mesh.face(mesh.twin(h)).is_boundary();
-    if (on_boundary && found < 2) ring.along[found++] = tip;
-  });
-  if (!ok || found != 2) return std::nullopt;
+// A boundary vertex's ring (its two neighbours along the boundary, and all of them); nullopt for a vertex with fewer
+// than two boundary edges or a broken fan.
+std::optional<VertexRing> boundary_ring(const HalfedgeMesh& mesh, VertexId v) {
+  const VertexRing ring = vertex_ring(mesh, v);
+  if (!ring.closed || ring.rim_count < 2) return std::nullopt;
   return ring;
 }
 
@@ -47,16 +36,17 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
   Tally interior, other;
   for (VertexId v : before.vertices()) {
     if (!yours.alive(v)) continue;
-    const std::optional<BoundaryRing> ring = boundary_ring(before, v);
+    const std::optional<VertexRing> ring = boundary_ring(before, v);
     if (!ring) continue;
     const glm::dvec3& p = before.position(v);
     const glm::dvec3 course =
-        loop_rules::boundary_vertex(p, before.position(ring->along[0]), before.position(ring->along[1]));
+        loop_rules::boundary_vertex(p, before.position(ring->rim[0]), before.position(ring->rim[1]));
     const glm::dvec3& q = yours.position(v);
     if (close(q, course, tolerance) || close(q, p, tolerance)) continue;  // right, or unmoved (told elsewhere)
-    const double u = course_u(ring->n);
-    if (close(q, (1.0 - double(ring->n) * u) * p + u * ring->sum, tolerance)) {
-      interior.add(format_id(v) + " (" + std::to_string(ring->n) + " neighbours, 2 of them along the boundary)");
+    const size_t n = ring->valence;
+    const double u = course_u(n);
+    if (close(q, (1.0 - double(n) * u) * p + u * ring->neighbour_sum, tolerance)) {
+      interior.add(format_id(v) + " (" + std::to_string(n) + " neighbours, 2 of them along the boundary)");
     } else {
       other.add(format_id(v) + " at " + format_position(q) + ", where the course puts it at " +
                 format_position(course));

@@ -3,12 +3,13 @@
 #include "script/lua_runtime.h"
 
 #include <cstring>
-#include <fstream>
 #include <new>
 #include <sstream>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
+#include "core/value_format.h"
 #include "script/exception_text.h"
 #include "script/mesh_bindings.h"
 
@@ -17,11 +18,15 @@ namespace {
 
 LuaRuntime* runtime_of(lua_State* L) { return *static_cast<LuaRuntime**>(lua_getextraspace(L)); }
 
-// Message handler: keeps strings, names the type of anything else. It never calls __tostring, so an error
-// object cannot run script code outside the limits' reach.
+// How an error value that is not a string reads (error_value_text): kNotStringBefore, its type, kNotStringAfter.
+constexpr char kNotStringBefore[] = "(error object is a ";
+constexpr char kNotStringAfter[] = " value)";
+
+// Message handler: error_value_text, made by Lua (a C++ exception must not cross into Lua). It never calls
+// __tostring, so an error object cannot run script code outside the limits' reach.
 int message_handler(lua_State* L) {
   if (lua_type(L, 1) == LUA_TSTRING) return 1;
-  lua_pushfstring(L, "(error object is a %s value)", luaL_typename(L, 1));
+  lua_pushfstring(L, "%s%s%s", kNotStringBefore, luaL_typename(L, 1), kNotStringAfter);
   return 1;
 }
 
@@ -33,12 +38,6 @@ int to_strings(lua_State* L) {
     lua_replace(L, i);
   }
   return n;
-}
-
-std::string megabytes(size_t bytes) {
-  std::ostringstream s;
-  s << (bytes >> 20) << " MB";
-  return s.str();
 }
 
 // Keeps only the listed fields of the table on top of the stack.
@@ -60,6 +59,20 @@ void keep_only(lua_State* L, std::initializer_list<const char*> keep) {
 }
 
 }  // namespace
+
+std::string error_value_text(lua_State* L, int index) {
+  if (lua_type(L, index) == LUA_TSTRING) return lua_tostring(L, index);
+  return kNotStringBefore + std::string(luaL_typename(L, index)) + kNotStringAfter;
+}
+
+std::string memory_limit_message(size_t bytes) { return "memory limit exceeded (" + format_bytes(bytes) + ")"; }
+
+std::optional<std::string> read_lua_file(const std::filesystem::path& path) {
+  FileBytes file = read_file_bytes(path);
+  if (!file.ok()) return std::nullopt;
+  if (file.bytes.starts_with('#')) file.bytes.insert(0, "--");
+  return std::move(file.bytes);
+}
 
 LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   L_ = lua_newstate(&LuaRuntime::allocate, this);
@@ -101,6 +114,8 @@ void* LuaRuntime::allocate(void* ud, void* ptr, size_t old_size, size_t new_size
 
 void LuaRuntime::note_out_of_memory(lua_State* L) noexcept { runtime_of(L)->out_of_memory_ = true; }
 
+void LuaRuntime::note_cap(lua_State* L) noexcept { runtime_of(L)->cap_hit_ = true; }
+
 void LuaRuntime::note_memory_hit() {
   if (memory_hit_ || !L_) {
     memory_hit_ = true;
@@ -129,7 +144,7 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
           "instruction budget exceeded (" + std::to_string(self->limits_.instructions) + " instructions)";
       self->kill_limit_ = ScriptError::Limit::Instructions;
     } else if (self->memory_hit_) {
-      self->kill_message_ = "memory limit exceeded (" + megabytes(self->limits_.memory_bytes) + ")";
+      self->kill_message_ = memory_limit_message(self->limits_.memory_bytes);
       self->kill_limit_ = ScriptError::Limit::Memory;
     } else if (std::chrono::steady_clock::now() > self->deadline_) {
       std::ostringstream s;
@@ -336,6 +351,7 @@ void LuaRuntime::start_budget() {
   kill_message_.clear();
   memory_hit_ = false;
   out_of_memory_ = false;
+  cap_hit_ = false;
   memory_hit_where_.clear();
   printed_ = 0;
   print_truncated_ = false;
@@ -356,17 +372,16 @@ int LuaRuntime::protected_call(int nargs, int nresults) {
 
 ScriptError::Limit LuaRuntime::limit_hit() const {
   if (killed_) return kill_limit_;
-  return memory_hit_ ? ScriptError::Limit::Memory : ScriptError::Limit::None;
+  if (memory_hit_) return ScriptError::Limit::Memory;
+  return cap_hit_ ? ScriptError::Limit::Changes : ScriptError::Limit::None;
 }
 
 void LuaRuntime::throw_error(int base, bool end_window) {
-  std::string message;
-  if (lua_type(L_, -1) == LUA_TSTRING) message = lua_tostring(L_, -1);
-  else message = std::string("(error object is a ") + luaL_typename(L_, -1) + " value)";
+  std::string message = error_value_text(L_, -1);
   lua_settop(L_, base);
   // A memory error skips the message handler: give it the place and the reason it really has.
   if (memory_hit_ && !killed_ && message == "not enough memory") {
-    message = memory_hit_where_ + "memory limit exceeded (" + megabytes(limits_.memory_bytes) + ")";
+    message = memory_hit_where_ + memory_limit_message(limits_.memory_bytes);
   }
   const ScriptError::Limit limit = limit_hit();
   lua_sethook(L_, nullptr, 0, 0);
@@ -417,11 +432,9 @@ std::vector<std::string> LuaRuntime::run_string(std::string_view code, const std
 }
 
 void LuaRuntime::run_file(const std::filesystem::path& path, const std::vector<std::string>& args) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + path.string());
-  std::ostringstream text;
-  text << in.rdbuf();
-  const std::string code = text.str();
+  const FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw ScriptError("cannot open " + path.string());
+  const std::string& code = file.bytes;
 
   lua_settop(L_, 0);
   lua_createtable(L_, static_cast<int>(args.size()), 1);

@@ -25,7 +25,8 @@
 // - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
 //   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
 // - Memory running out (a binding's or the host's std::bad_alloc, Lua's allocator finding none) is flagged where it
-//   is caught (ran_out_of_memory, ScriptError::out_of_memory); callers never guess it from an error's text.
+//   is caught (ran_out_of_memory, ScriptError::out_of_memory), and so is a binding's cap (note_cap,
+//   ScriptError::Limit::Changes); callers never guess either from an error's text.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
 //   of a run nor closing the state can run script code outside the hook.
 #pragma once
@@ -35,6 +36,7 @@
 #include <cstdint>
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <string_view>
@@ -50,8 +52,9 @@ namespace meshedit {
 // A script failed: the Lua error message ("loop.lua:3: instruction budget exceeded (10000000 instructions)").
 class ScriptError : public std::runtime_error {
  public:
-  // Which limit stopped the script, if one did (a grader reports a timeout differently from an error).
-  enum class Limit { None, Instructions, Memory, Time };
+  // Which limit stopped the script, if one did (a grader reports a timeout differently from an error). Changes: a
+  // binding's cap on what a script may make (recorded changes, element ids), noted with LuaRuntime::note_cap.
+  enum class Limit { None, Instructions, Memory, Time, Changes };
   using std::runtime_error::runtime_error;
   ScriptError(const std::string& message, Limit limit, bool out_of_memory = false)
       : std::runtime_error(message), limit_(limit), out_of_memory_(out_of_memory) {}
@@ -70,6 +73,15 @@ struct LuaLimits {
   size_t memory_bytes = size_t(512) << 20;  // everything Lua allocates (not C++ mesh storage)
   double wall_seconds = 60.0;              // per run
 };
+
+// The Lua error value at `index` as text: a string as it is, anything else named by its type ("(error object is a
+// table value)"). Never calls __tostring, which is script code and would run outside the limits' reach.
+std::string error_value_text(lua_State* L, int index);
+// "memory limit exceeded (32 MB)": what a run stopped by the memory cap of `bytes` says, wherever it was stopped.
+std::string memory_limit_message(size_t bytes);
+// A Lua file's text as lua.c reads it (a first line starting with '#', a shebang, made a comment), or nullopt when it
+// cannot be read (core/file_bytes.h: not a regular file, or too large).
+std::optional<std::string> read_lua_file(const std::filesystem::path& path);
 
 class LuaRuntime {
  public:
@@ -125,6 +137,10 @@ class LuaRuntime {
   // What a C function calls when it turns a std::bad_alloc (or a message that could not be copied for lack of memory)
   // into a Lua error: marks the window of the runtime that owns `L` (any of its threads). Never throws.
   static void note_out_of_memory(lua_State* L) noexcept;
+  // What a binding calls before it raises the error of a cap on what a script may make (more changes than a recorder
+  // keeps, more ids than MeshLimits allow): the errors of the runtime's current window are Limit::Changes, unless
+  // one of the runtime's own limits stopped it. Never throws.
+  static void note_cap(lua_State* L) noexcept;
 
  private:
   static void* allocate(void* ud, void* ptr, size_t old_size, size_t new_size);
@@ -156,6 +172,7 @@ class LuaRuntime {
   size_t memory_used_ = 0;
   bool memory_hit_ = false;
   bool out_of_memory_ = false;  // ran_out_of_memory()
+  bool cap_hit_ = false;        // note_cap
   std::string memory_hit_where_;  // "file:line: " of the allocation that hit the cap
   uint64_t instructions_ = 0;
   bool killed_ = false;

@@ -39,8 +39,7 @@ void push_mesh(lua_State* L, std::shared_ptr<HalfedgeMesh> mesh);
 // The mesh of the mesh userdata at `index`, or nullptr if it is not one.
 std::shared_ptr<HalfedgeMesh> to_mesh(lua_State* L, int index);
 
-// The limits of L's state (open_mesh_bindings sets the defaults above).
-MeshLimits mesh_limits(lua_State* L);
+// Replaces the limits of L's state (open_mesh_bindings sets the defaults above).
 void set_mesh_limits(lua_State* L, const MeshLimits& limits);
 
 }  // namespace meshedit

@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <deque>
-#include <fstream>
 #include <iterator>
 
 #include <lua.hpp>
 
+#include "core/file_bytes.h"
 #include "core/validate.h"
 #include "script/binding_support.h"
 #include "script/lesson_api_support.h"
@@ -180,9 +180,9 @@ struct ScriptedExerciseReader {
 };
 
 std::shared_ptr<ScriptedExercise> ScriptedExercise::load(const std::filesystem::path& file) {
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + file.string());
-  const std::string code((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const FileBytes source = read_file_bytes(file);
+  if (!source.ok()) throw ScriptError("cannot open " + file.string());
+  const std::string& code = source.bytes;
   std::shared_ptr<ScriptedExercise> x(new ScriptedExercise());
   x->path_ = file;
   x->stamp_ = file_stamp(file);

@@ -13,19 +13,6 @@
 #include "core/mesh_compare.h"
 
 namespace meshedit {
-namespace {
-
-double tolerance_for(const HalfedgeMesh& mesh) {
-  double size = 1.0;
-  for (const VertexId v : mesh.vertices()) {
-    const glm::dvec3& p = mesh.position(v);
-    size = std::max({size, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  }
-  return 1e-9 * size;
-}
-
-
-}  // namespace
 
 MeshCounts counts_of(const HalfedgeMesh& mesh) { return {mesh.num_vertices(), mesh.num_edges(), mesh.num_faces()}; }
 
@@ -57,7 +44,7 @@ IdDifferences differences_by_id(const HalfedgeMesh& yours, const HalfedgeMesh& r
 UpsamplePhaseStates upsample_phase_states(const HalfedgeMesh& before, std::span<const RecordedEdit> edits,
                                           const UpsamplePhases& phases) {
   UpsamplePhaseStates out;
-  const double tolerance = tolerance_for(before);
+  const double tolerance = mesh_tolerance(before);  // as the verdict on the finished upsample
 
   // The reference's four states.
   std::array<std::optional<HalfedgeMesh>, 5> reference;

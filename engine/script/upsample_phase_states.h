@@ -11,10 +11,11 @@
 // loop_flip_edges, 4 after loop_commit_positions.
 //
 // Invariants:
-// - Differences are counted by id, as a student reads the tables: a vertex whose position differs (beyond a
-//   tolerance of 1e-9 of the mesh's size) or that is alive in one mesh only, and a halfedge whose next, twin,
-//   vertex, edge or face differs or that is alive in one only. `same_shape` is the verdict up to renumbering
-//   (compare_meshes), so a student who splits in another order still sees where the shapes agree.
+// - Differences are counted by id, as a student reads the tables: a vertex whose position differs (beyond
+//   mesh_compare.h's mesh_tolerance(before), the finished upsample's tolerance) or that is alive in one mesh only,
+//   and a halfedge whose next, twin, vertex, edge or face differs or that is alive in one only. `same_shape` is the
+//   verdict up to renumbering (compare_meshes), so a student who splits in another order still sees where the shapes
+//   agree.
 // - When the core refuses to subdivide `before` (not triangles, ...), `refused` holds its reason and only yours are
 //   filled.
 // - Throws MeshError when the edits do not replay on `before` (see edit_log.h), std::bad_alloc when memory runs out;

@@ -8,6 +8,8 @@
 #include <algorithm>
 #include <map>
 
+#include "core/value_format.h"
+
 namespace meshedit {
 namespace {
 
@@ -88,18 +90,21 @@ std::optional<size_t> UpsamplePhases::previous_phase_position(size_t k) const {
   return best;
 }
 
-UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
-  UpsamplePhases out;
-  out.phase_of.assign(edits.size(), UpsamplePhase::Other);
-  std::vector<uint8_t> near(edits.size(), 0);
+namespace {
 
-  // Pass 1. A creation opens a window for kNearCreation edits (a hand-written split's pointer writes and its new
-  // vertex's position); an operation or a committed position closes it.
+// How many of a script line's pointer writes came near a creation, of all its pointer writes.
+struct LineCount {
+  size_t near = 0, total = 0;
+};
+
+// Pass 1: operations, creations and position writes get their phase; each pointer write is marked near a creation
+// or not (`near`) and counted for its script line. A creation opens a window for kNearCreation edits (a hand-written
+// split's pointer writes and its new vertex's position); an operation or a committed position closes it.
+void phase_by_kind(std::span<const RecordedEdit> edits, UpsamplePhases& out, std::vector<uint8_t>& near,
+                   std::map<std::string, LineCount>& lines) {
   bool created = false;       // a creation is in the window
   size_t last_creation = 0;  // its index
   std::vector<uint32_t> created_vertices;  // in the open window
-  struct LineCount { size_t near = 0, total = 0; };
-  std::map<std::string, LineCount> lines;
   const auto close_window = [&] {
     created = false;
     created_vertices.clear();
@@ -140,17 +145,23 @@ UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
         break;
     }
   }
-  // Pass 2: each pointer write takes the phase its line mostly wrote in (a line without a name: the write's own).
+}
+
+// Pass 2: each pointer write takes the phase its line mostly wrote in (a line without a name: the write's own).
+void phase_by_line(std::span<const RecordedEdit> edits, UpsamplePhases& out, const std::vector<uint8_t>& near,
+                   std::map<std::string, LineCount>& lines) {
   for (size_t i = 0; i < edits.size(); ++i) {
     if (!is_pointer_write(edits[i])) continue;
     const LineCount& count = lines[edits[i].where];
     const bool split = edits[i].where.empty() ? near[i] != 0 : 2 * count.near > count.total;
     out.phase_of[i] = split ? UpsamplePhase::Split : UpsamplePhase::Flip;
   }
+}
 
-  // Spans.
+// Each phase's first and last write and its number of writes, read off phase_of.
+void measure_spans(UpsamplePhases& out) {
   out.span[size_t(UpsamplePhase::Compute)].started = true;
-  for (size_t i = 0; i < edits.size(); ++i) {
+  for (size_t i = 0; i < out.phase_of.size(); ++i) {
     const UpsamplePhase p = out.phase_of[i];
     if (p == UpsamplePhase::Other) {
       ++out.other_writes;
@@ -164,46 +175,71 @@ UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
     s.last = i;
     ++s.writes;
   }
+}
 
-  // Problems: phases that never started, started out of order, or came back after a later phase began.
-  const auto add = [&](std::string line) {
-    if (out.problems.size() < UpsamplePhases::kMaxProblems) out.problems.push_back(std::move(line));
-  };
+void add_problem(UpsamplePhases& out, std::string line) {
+  if (out.problems.size() < UpsamplePhases::kMaxProblems) out.problems.push_back(std::move(line));
+}
+
+// The problem of the earlier phase p against the later phase q, both started: q began first, or writes of p come
+// after q began.
+void check_order(std::span<const RecordedEdit> edits, UpsamplePhase p, UpsamplePhase q, UpsamplePhases& out) {
+  const UpsamplePhaseSpan& sp = out.span[size_t(p)];
+  const UpsamplePhaseSpan& sq = out.span[size_t(q)];
+  if (sq.first < sp.first) {
+    add_problem(out, upsample_phase_title(q) + " began at " + write_text(sq.first, edits[sq.first]) + ", before " +
+                         upsample_phase_title(p) + " began at " + write_text(sp.first, edits[sp.first]) +
+                         ": each step must be done for every element before the next step begins");
+    return;
+  }
+  size_t late = 0;
+  std::optional<size_t> first_late;
+  for (size_t i = sq.first + 1; i <= sp.last && i < edits.size(); ++i) {
+    if (out.phase_of[i] != p) continue;
+    ++late;
+    if (!first_late) first_late = i;
+  }
+  if (late > 0) {
+    add_problem(out, plural(late, "write", "writes") + " of " + upsample_phase_title(p) +
+                         (late == 1 ? " comes" : " come") + " after " + upsample_phase_title(q) + " began at " +
+                         write_text(sq.first, edits[sq.first]) +
+                         " (first: " + write_text(*first_late, edits[*first_late]) + ")");
+  }
+}
+
+// Problems: phases that never started, started out of order, or came back after a later phase began; then writes
+// that are not part of Loop subdivision.
+void find_problems(std::span<const RecordedEdit> edits, UpsamplePhases& out) {
   for (const UpsamplePhase p : kWritingPhases) {
-    if (!out.span[size_t(p)].started) add(upsample_phase_title(p) + " never started: " + never_started_reason(p));
+    if (!out.span[size_t(p)].started) {
+      add_problem(out, upsample_phase_title(p) + " never started: " + never_started_reason(p));
+    }
   }
   for (const UpsamplePhase p : kWritingPhases) {
-    const UpsamplePhaseSpan& sp = out.span[size_t(p)];
-    if (!sp.started) continue;
+    if (!out.span[size_t(p)].started) continue;
     for (const UpsamplePhase q : kWritingPhases) {
-      const UpsamplePhaseSpan& sq = out.span[size_t(q)];
-      if (q <= p || !sq.started) continue;
-      if (sq.first < sp.first) {
-        add(upsample_phase_title(q) + " began at " + write_text(sq.first, edits[sq.first]) + ", before " +
-            upsample_phase_title(p) + " began at " + write_text(sp.first, edits[sp.first]) +
-            ": each step must be done for every element before the next step begins");
-        continue;
-      }
-      size_t late = 0;
-      std::optional<size_t> first_late;
-      for (size_t i = sq.first + 1; i <= sp.last && i < edits.size(); ++i) {
-        if (out.phase_of[i] != p) continue;
-        ++late;
-        if (!first_late) first_late = i;
-      }
-      if (late > 0) {
-        add(std::to_string(late) + (late == 1 ? " write of " : " writes of ") + upsample_phase_title(p) +
-            (late == 1 ? " comes" : " come") + " after " + upsample_phase_title(q) + " began at " +
-            write_text(sq.first, edits[sq.first]) + " (first: " + write_text(*first_late, edits[*first_late]) + ")");
-      }
+      if (q > p && out.span[size_t(q)].started) check_order(edits, p, q, out);
     }
   }
   if (out.other_writes > 0) {
     const auto other = std::find(out.phase_of.begin(), out.phase_of.end(), UpsamplePhase::Other);
     const size_t i = size_t(other - out.phase_of.begin());
-    add(std::to_string(out.other_writes) + (out.other_writes == 1 ? " write is" : " writes are") +
-        " not part of Loop subdivision (first: " + write_text(i, edits[i]) + ", " + describe(edits[i]) + ")");
+    add_problem(out, plural(out.other_writes, "write is", "writes are") + " not part of Loop subdivision (first: " +
+                         write_text(i, edits[i]) + ", " + describe(edits[i]) + ")");
   }
+}
+
+}  // namespace
+
+UpsamplePhases find_upsample_phases(std::span<const RecordedEdit> edits) {
+  UpsamplePhases out;
+  out.phase_of.assign(edits.size(), UpsamplePhase::Other);
+  std::vector<uint8_t> near(edits.size(), 0);
+  std::map<std::string, LineCount> lines;
+  phase_by_kind(edits, out, near, lines);
+  phase_by_line(edits, out, near, lines);
+  measure_spans(out);
+  find_problems(edits, out);
   return out;
 }
 

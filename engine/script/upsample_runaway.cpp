@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/value_format.h"
 #include "script/edit_recorder.h"
 #include "script/upsample_phases.h"
 
@@ -17,10 +18,6 @@ std::string leading_line(const std::string& error) {
   size_t end = lua + 5;
   while (end < error.size() && std::isdigit(static_cast<unsigned char>(error[end]))) ++end;
   return end > lua + 5 ? error.substr(0, end) : "";
-}
-
-std::string plural(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
 }
 
 }  // namespace

@@ -1,8 +1,7 @@
 // "Mine" for the curve and patch views: see bezier_mine.h for the contract.
 //
 // The verdict is check_exercise's (report.equal); this file only finds the first point that differs, to name it,
-// with the checker's own tolerance for a curve step (exercise_compare.cpp: 1e-9 x the input's largest coordinate,
-// at least 1e-9).
+// with the checker's own tolerance for a curve step (points_tolerance, core/mesh_compare.h).
 #include "ui/bezier_mine.h"
 
 #include <algorithm>
@@ -12,16 +11,11 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/mesh_compare.h"
 #include "core/value_format.h"
 
 namespace meshedit {
 namespace {
-
-double step_tolerance(std::span<const glm::dvec3> points) {
-  double largest = 0.0;
-  for (const glm::dvec3& p : points) largest = std::max({largest, std::abs(p.x), std::abs(p.y), std::abs(p.z)});
-  return 1e-9 * std::max(1.0, std::isfinite(largest) ? largest : 0.0);
-}
 
 std::string level_range(int last) {
   return last == 1 ? "level 1 is" : "levels 1 to " + std::to_string(last) + " are";
@@ -83,7 +77,7 @@ void extend_curve_levels(StudentCode& code, CurveMineLevels& mine, double t, int
     mine.details = report.differences;
     const std::vector<glm::dvec3>& got = report.mine.points;
     const std::vector<glm::dvec3>& want = report.reference.points;
-    const double tolerance = step_tolerance(input.points);
+    const double tolerance = points_tolerance(input.points);
     for (size_t i = 0; i < std::min(got.size(), want.size()); ++i) {
       if (!(glm::distance(got[i], want[i]) <= tolerance)) {
         mine.wrong_point = static_cast<int>(i);

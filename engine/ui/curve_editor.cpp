@@ -1,6 +1,17 @@
 // The curve view's state changes (pure) and its ImGui window (ImDrawList only, no GL).
 // The drawing code never changes the state except through the functions declared in curve_editor.h,
 // so what the tests prove about those functions is what the window does.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers          finite, point_count, clamped_levels, closest_parameter
+//   view transform   curve_to_screen, screen_to_curve, fit_region, view_for
+//   state            the pure state changes: step_level, set_t, add_point, remove_point, drag_point, hit_test
+//   what is drawn    all_levels, shown_levels, split_halves, sample_curve
+//   mouse            handle_canvas_input
+//   ImGui            colours, "mine" levels, draw_mismatch
+//   the canvas       draw_canvas and its parts
+//   the level table  table_text_row, draw_mine_rows, draw_level_table
+//   windows          draw_curve_controls, draw_curve_canvas, draw_curve_levels, draw_curve_editor
 #include "ui/curve_editor.h"
 
 #include <algorithm>
@@ -20,6 +31,8 @@
 namespace meshedit {
 
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 bool finite(glm::dvec2 p) { return std::isfinite(p.x) && std::isfinite(p.y); }
 
@@ -338,24 +351,89 @@ void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels&
   dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), ghost_colour(), "reference");
 }
 
+// ---- the canvas ------------------------------------------------------------------------------------
+
 // The canvas; `mine` is the student's levels when the switch is on (else null).
+// The mouse over the canvas (the invisible button just drawn), handed to handle_canvas_input.
+void read_canvas_input(CurveEditorState& state) {
+  if (!ImGui::IsMousePosValid()) return;
+  const ImGuiIO& io = ImGui::GetIO();
+  CanvasInput input;
+  input.mouse = {io.MousePos.x, io.MousePos.y};
+  input.hovered = ImGui::IsItemHovered();
+  input.left_down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
+  input.left_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left);
+  input.left_double_clicked = input.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
+  input.right_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right);
+  input.wheel = input.hovered ? io.MouseWheel : 0.0;
+  handle_canvas_input(state, input);
+}
+
+// De Casteljau's levels above the control polygon; the first wrong one of yours (`wrong_level`) thicker, with what it
+// should have been.
+void draw_levels(ImDrawList* dl, const CurveView& view, const std::vector<std::vector<glm::dvec2>>& levels,
+                 const CurveMineLevels* yours, int wrong_level) {
+  for (size_t k = 1; k < levels.size(); ++k) {
+    const bool wrong = static_cast<int>(k) == wrong_level;
+    if (wrong) draw_mismatch(dl, view, *yours);
+    const ImU32 colour = wrong ? wrong_colour() : level_colour(static_cast<int>(k));
+    draw_polyline(dl, view, levels[k], colour, wrong ? 3.0f : 1.5f);
+    draw_points(dl, view, levels[k], colour, wrong ? 5.0f : 4.0f);
+  }
+}
+
+// C(t), when the last level shown is the single point and it is not the wrong one; over the control points.
+void draw_curve_point(ImDrawList* dl, const CurveView& view, const std::vector<std::vector<glm::dvec2>>& levels,
+                      int wrong_level) {
+  if (levels.size() > 1 && levels.back().size() == 1 && static_cast<int>(levels.size()) - 1 != wrong_level) {
+    const ImVec2 c = to_imvec(curve_to_screen(view, levels.back()[0]));
+    dl->AddCircleFilled(c, 7.0f, final_colour());
+    dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), final_colour(), "C(t)");
+  }
+}
+
+// The control points (the grabbed and the hovered one marked), and rings on the two halves' control points.
+void draw_control_points(ImDrawList* dl, const CurveEditorState& state, const CurveSplit<glm::dvec2>& halves) {
+  const auto& points = state.curve.control_points;
+  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
+    const ImVec2 c = to_imvec(curve_to_screen(state.view, points[i]));
+    const bool grabbed = i == state.dragged;
+    dl->AddCircleFilled(c, grabbed ? 7.0f : 6.0f, grabbed ? curve_colour() : control_colour());
+    if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, curve_colour(), 0, 2.0f);
+  }
+  for (const glm::dvec2& p : halves.left) {
+    dl->AddCircle(to_imvec(curve_to_screen(state.view, p)), 9.0f, split_left_ring(), 0, 2.0f);
+  }
+  for (const glm::dvec2& p : halves.right) {
+    dl->AddCircle(to_imvec(curve_to_screen(state.view, p)), 12.0f, split_right_ring(), 0, 2.0f);
+  }
+}
+
+// The status line and mine's message at the top of the canvas, the key hints at its bottom.
+void draw_canvas_text(ImDrawList* dl, const CurveEditorState& state, ImVec2 p0, ImVec2 size, int shown,
+                      const CurveMineLevels* yours, const BezierMine* mine) {
+  const float wrap = std::max(size.x - 16.0f, 50.0f);
+  char status[128];
+  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d%s", state.t, shown,
+                std::max(0, static_cast<int>(state.curve.control_points.size()) - 1),
+                yours ? "   mine: your evaluate_step" : "");
+  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status);
+  if (yours) {
+    const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
+    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
+                mine_message_colour(*yours, shown), line.c_str(), nullptr, wrap);
+  }
+  const char* hint = "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine";
+  const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
+  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + size.y - hint_size.y - 6.0f),
+              colour_of(palette().swatches.grey), hint, nullptr, wrap);
+}
+
 void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   const ImVec2 p0 = ImGui::GetCursorScreenPos();
   ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
   state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
-
-  if (ImGui::IsMousePosValid()) {
-    const ImGuiIO& io = ImGui::GetIO();
-    CanvasInput input;
-    input.mouse = {io.MousePos.x, io.MousePos.y};
-    input.hovered = ImGui::IsItemHovered();
-    input.left_down = ImGui::IsMouseDown(ImGuiMouseButton_Left);
-    input.left_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Left);
-    input.left_double_clicked = input.hovered && ImGui::IsMouseDoubleClicked(ImGuiMouseButton_Left);
-    input.right_pressed = input.hovered && ImGui::IsMouseClicked(ImGuiMouseButton_Right);
-    input.wheel = input.hovered ? io.MouseWheel : 0.0;
-    handle_canvas_input(state, input);
-  }
+  read_canvas_input(state);
 
   const int shown = clamped_levels(state);
   const CurveMineLevels* yours =
@@ -377,50 +455,14 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
 
   const auto levels = yours ? mine_shown_levels(*yours, shown) : shown_levels(state);
   const int wrong_level = yours && yours->error.empty() ? yours->failed_level : -1;
-  for (size_t k = 1; k < levels.size(); ++k) {
-    const bool wrong = static_cast<int>(k) == wrong_level;
-    if (wrong) draw_mismatch(dl, view, *yours);
-    const ImU32 colour = wrong ? wrong_colour() : level_colour(static_cast<int>(k));
-    draw_polyline(dl, view, levels[k], colour, wrong ? 3.0f : 1.5f);
-    draw_points(dl, view, levels[k], colour, wrong ? 5.0f : 4.0f);
-  }
-
-  for (int i = 0; i < static_cast<int>(points.size()); ++i) {
-    const ImVec2 c = to_imvec(curve_to_screen(view, points[i]));
-    const bool grabbed = i == state.dragged;
-    dl->AddCircleFilled(c, grabbed ? 7.0f : 6.0f, grabbed ? curve_colour() : control_colour());
-    if (i == state.hovered && !grabbed) dl->AddCircle(c, 10.0f, curve_colour(), 0, 2.0f);
-  }
-
-  for (const glm::dvec2& p : halves.left) {
-    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 9.0f, split_left_ring(), 0, 2.0f);
-  }
-  for (const glm::dvec2& p : halves.right) {
-    dl->AddCircle(to_imvec(curve_to_screen(view, p)), 12.0f, split_right_ring(), 0, 2.0f);
-  }
-
-  if (levels.size() > 1 && levels.back().size() == 1 && static_cast<int>(levels.size()) - 1 != wrong_level) {
-    const ImVec2 c = to_imvec(curve_to_screen(view, levels.back()[0]));
-    dl->AddCircleFilled(c, 7.0f, final_colour());
-    dl->AddText(ImVec2(c.x + 9.0f, c.y - 18.0f), final_colour(), "C(t)");
-  }
-
-  char status[128];
-  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d%s", state.t, shown,
-                std::max(0, static_cast<int>(points.size()) - 1), yours ? "   mine: your evaluate_step" : "");
-  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status);
-  if (yours) {
-    const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
-    dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
-                mine_message_colour(*yours, shown), line.c_str(), nullptr, std::max(size.x - 16.0f, 50.0f));
-  }
-  const char* hint = "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine";
-  const float wrap = std::max(size.x - 16.0f, 50.0f);
-  const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
-  dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p1.y - hint_size.y - 6.0f),
-              colour_of(palette().swatches.grey), hint, nullptr, wrap);
+  draw_levels(dl, view, levels, yours, wrong_level);
+  draw_control_points(dl, state, halves);
+  draw_curve_point(dl, view, levels, wrong_level);
+  draw_canvas_text(dl, state, p0, size, shown, yours, mine);
   dl->PopClipRect();
 }
+
+// ---- the level table -------------------------------------------------------------------------------
 
 void table_text_row(const char* name, ImU32 colour, const std::string& text) {
   const ImVec4 c = ImGui::ColorConvertU32ToFloat4(colour);
@@ -499,6 +541,8 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
 }
 
 }  // namespace
+
+// ---- windows ---------------------------------------------------------------------------------------
 
 void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
   const int n = point_count(state);

@@ -7,9 +7,9 @@
 #include <cstdlib>
 #include <cstring>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <string>
+
+#include "core/file_bytes.h"
 
 namespace meshedit {
 namespace {
@@ -19,12 +19,11 @@ namespace fs = std::filesystem;
 // The font file's bytes in memory ImGui owns (the atlas frees them), or null when it cannot be read or is not a
 // TrueType file: ImGui asserts on a file it cannot open or parse, so it is only handed one that opened.
 ImFont* add_font(ImFontAtlas& atlas, const fs::path& path, float pixels, ImFontConfig config) {
-  std::ifstream in(path, std::ios::binary);
-  std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const FileBytes file = read_file_bytes(path);
+  const std::string& bytes = file.bytes;
   const bool truetype = bytes.size() > 12 && (bytes.compare(0, 4, std::string("\0\1\0\0", 4)) == 0 ||
                                               bytes.compare(0, 4, "true") == 0);
-  if (!in.good() && !in.eof()) return nullptr;
-  if (!truetype) return nullptr;
+  if (!file.ok() || !truetype) return nullptr;
   void* data = ImGui::MemAlloc(bytes.size());
   std::memcpy(data, bytes.data(), bytes.size());
   return atlas.AddFontFromMemoryTTF(data, int(bytes.size()), pixels, &config);

@@ -15,6 +15,15 @@
 //   mesh may carry any version), by version() otherwise (every setter bumps it); a kept change always ends with a
 //   version() above the one before.
 // - The diff is counted before it is formatted; above the cap it is not formatted at all.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   recording a change              change_summary, set_last_change, record_local_change, record_whole_change,
+//                                   keep_unrecorded_change
+//   running an operation            run_operation, nothing_changed, record_operation
+//   fields, documents and messages  field_name, parse_field, ChangeIndex, make_document, replace_mesh, set_message
+//   operations                      detail::apply_check_operation: an operation under a journal
+//   undo and redo                   record_step, step_history, undo, redo, show_state
+//   counting and caches             count_changes, the version caches (validation, stats)
 #include "ui/mesh_document.h"
 
 #include <algorithm>
@@ -27,13 +36,12 @@
 #include "core/parallel_for.h"
 #include "core/patch_check.h"
 #include "core/quick_check.h"
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
 
-std::string plural(size_t n, const char* one, const char* many) {
-  return std::to_string(n) + " " + (n == 1 ? one : many);
-}
+// ---- recording a change ----------------------------------------------------------------------------
 
 // The status line for `last` ("flip e5: 12 fields changed").
 std::string change_summary(const LastChange& last, const DocumentLimits& limits) {
@@ -131,6 +139,8 @@ void report_state_before_lost(MeshDocument& doc, const std::string& label, const
   }
 }
 
+// ---- running an operation --------------------------------------------------------------------------
+
 // What running an operation gave: its Check, or the refusal an exception became.
 struct OperationOutcome {
   Check check;
@@ -210,6 +220,8 @@ void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal
 
 }  // namespace
 
+// ---- fields, documents and messages ----------------------------------------------------------------
+
 const char* field_name(MeshField field) {
   switch (field) {
     case MeshField::Next: return "next";
@@ -276,6 +288,8 @@ void set_memory_ran_out_message(MeshDocument& doc, Severity severity, ElementRef
   doc.message.text.assign(kMemoryRanOut);  // shorter than any string's capacity: written in place
 }
 
+// ---- operations ------------------------------------------------------------------------------------
+
 namespace detail {
 
 Check apply_check_operation(MeshDocument& doc, const std::string& label, OperationRef op) {
@@ -307,6 +321,8 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
 }
 
 }  // namespace detail
+
+// ---- undo and redo ---------------------------------------------------------------------------------
 
 namespace {
 
@@ -378,6 +394,8 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::op
                          [&] { return label + ": shown, but memory ran out listing its changes"; });
   }
 }
+
+// ---- counting and caches ---------------------------------------------------------------------------
 
 size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit) {
   size_t count = 0;

@@ -59,8 +59,13 @@ struct TablesState {
   int shown_tab = -1;             // the tab drawn last frame; when `active` differs, that tab is opened
   ElementRef scroll_to;           // a row to bring into view on its tab's next frame
   bool open_tab_requested = false;
-  std::array<uint32_t, 5> window_start{};    // first id laid out, per kind
-  std::array<int64_t, 5> pending_start{-1, -1, -1, -1, -1};  // window moves applied on the next frame
+  std::array<uint32_t, kElementKindCount> window_start{};  // first id laid out, per kind
+  // Window moves applied on the next frame, per kind; -1 for none.
+  std::array<int64_t, kElementKindCount> pending_start = [] {
+    std::array<int64_t, kElementKindCount> none;
+    none.fill(-1);
+    return none;
+  }();
 };
 
 // Draws the "Pointer tables" window (nothing when state.open is false). Clicks select; returns true when the

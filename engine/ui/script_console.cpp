@@ -187,14 +187,6 @@ ImVec4 colour_of(ConsoleEntryKind kind) {
 
 }  // namespace
 
-void draw_console_panel(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
-                        const Selection& selection) {
-  if (!state.open) return;
-  ImGui::SetNextWindowSize(ImVec2(560, 260), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Console", &state.open)) draw_console_panel_contents(console, state, doc, selection);
-  ImGui::End();
-}
-
 void draw_console_panel_contents(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
                                  const Selection& selection) {
   const float input_height = ImGui::GetFrameHeightWithSpacing();

@@ -89,11 +89,9 @@ struct ConsolePanelState {
   bool scroll_to_bottom = false;
 };
 
-// Draws the console window (a transcript and an input line with Up/Down history). Running a line happens here.
-// The same contents (transcript and input line) drawn into the current window.
+// Draws the console (a transcript and an input line with Up/Down history) into the current window. Running a line
+// happens here.
 void draw_console_panel_contents(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
                                  const Selection& selection);
-void draw_console_panel(ScriptConsole& console, ConsolePanelState& state, MeshDocument& doc,
-                        const Selection& selection);
 
 }  // namespace meshedit

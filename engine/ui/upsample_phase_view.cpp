@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "core/value_format.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -46,8 +47,8 @@ std::string verdict_text(const UpsamplePhaseState& s, bool& good) {
   if (s.same_shape) return "same shape, other ids";
   std::string out;
   if (!(s.mine == s.reference)) out = "other counts; ";
-  out += std::to_string(s.positions_differ) + (s.positions_differ == 1 ? " position, " : " positions, ") +
-         std::to_string(s.halfedges_differ) + (s.halfedges_differ == 1 ? " halfedge differs" : " halfedges differ");
+  out += plural(s.positions_differ, "position", "positions") + ", " +
+         plural(s.halfedges_differ, "halfedge differs", "halfedges differ");
   return out;
 }
 

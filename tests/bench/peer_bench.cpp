@@ -155,10 +155,6 @@ int main(int argc, char** argv) {
     for (const Entry& e : entries) present = present || e.slot == k;
     if (!present) std::printf("  %-9s absent (not compiled in: run scripts/setup_bench.sh, then reconfigure)\n", kPeerNames[k]);
   }
-  if (!ours.takes_threads_for_subdivision())
-    std::printf("TODO: ours is single-thread only for Loop subdivision: the core's loop_subdivide takes no thread count yet\n");
-  if (!ours.takes_threads_for_normals())
-    std::printf("TODO: ours is single-thread only for vertex normals: the core's vertex_normals takes no thread count yet\n");
 
   bool all_ok = true;
   TableRow build_row, closed_row, boundary_row, normal_row, memory_row;

@@ -23,7 +23,7 @@ TEST(Submission, ReadsLuaFilesAndSaysWhereTheyWere) {
   write_text(dir / "sub" / ".git" / "hooks.lua", "-- hidden folder");
   write_text(dir / "sub" / "__MACOSX" / "upsample.lua", "-- zip junk");
   write_text(dir / "sub" / "a" / "b" / "c" / "d" / "deep.lua", "-- too deep");
-  write_text(dir / "sub" / "big.lua", std::string(Submission::kMaxFileBytes + 1, '-'));
+  write_text(dir / "sub" / "big.lua", std::string(Submission::kMaxSubmittedFileBytes + 1, '-'));
   write_text(dir / "reference.lua", "-- the instructor's");
   fs::create_symlink(dir / "reference.lua", dir / "sub" / "normals.lua");
   const Submission s = Submission::read(dir / "sub");

@@ -646,6 +646,28 @@ TEST(Exercises, ErrorsDuringTheCallBecomeTheFirstDifference) {
   EXPECT_TRUE(endless->defines(Exercise::VertexNormal));
 }
 
+// A run stopped by a cap on what a script may make (here the recording's) is told like one stopped by a limit, with the
+// hint; a script raising the same words itself is an ordinary error: the runtime types the stop, the text does not.
+TEST(Exercises, ACapStopsTheRunButTheSameWordsRaisedByTheScriptDoNot) {
+  const auto input = ExerciseInput::edge(mesh_of(make_cube()), EdgeId(0));
+  RunOptions recorded;
+  recorded.record_edits = true;
+  recorded.max_edits = 10;
+  auto runaway = from_text("flip.lua", "function flip_edge(mesh, e)\n  while true do mesh:new_vertex() end\nend\n");
+  const ExerciseReport r = check_exercise(*runaway, Exercise::FlipEdge, input, recorded);
+  EXPECT_EQ(r.mine.limit, ScriptError::Limit::Changes);
+  ASSERT_EQ(r.differences.size(), 2u) << text_of(r);
+  EXPECT_EQ(r.differences[0], "flip.lua:2: more than 10 changes recorded; is there a loop that never ends?");
+  EXPECT_EQ(r.differences[1], unfinished_run_hint(Exercise::FlipEdge));
+  auto says_so = from_text("flip.lua",
+                           "function flip_edge(mesh, e)\n  error('scripts may make at most 3; more than 10 "
+                           "changes recorded')\nend\n");
+  const ExerciseReport s = check_exercise(*says_so, Exercise::FlipEdge, input, recorded);
+  EXPECT_EQ(s.mine.limit, ScriptError::Limit::None);
+  EXPECT_EQ(s.differences, std::vector<std::string>{"flip.lua:2: scripts may make at most 3; more than 10 changes "
+                                                    "recorded"});
+}
+
 TEST(Exercises, NormalThatChangesTheMeshIsReported) {
   auto code = variant(Exercise::VertexNormal,
                       {{"  return sum:normalized()", "  v.position = v.position * 2\n  return sum:normalized()"}});
