@@ -46,17 +46,25 @@ struct NamedKey {
   int key;
 };
 constexpr NamedKey kNamedKeys[] = {
-    {"space", GLFW_KEY_SPACE},  {"escape", GLFW_KEY_ESCAPE}, {"grave", GLFW_KEY_GRAVE_ACCENT},
-    {"equal", GLFW_KEY_EQUAL},  {"=", GLFW_KEY_EQUAL},       {"minus", GLFW_KEY_MINUS},
-    {"-", GLFW_KEY_MINUS},      {"0", GLFW_KEY_0},           {"[", GLFW_KEY_LEFT_BRACKET},
+    {"space", GLFW_KEY_SPACE},     {"escape", GLFW_KEY_ESCAPE}, {"grave", GLFW_KEY_GRAVE_ACCENT},
+    {"equal", GLFW_KEY_EQUAL},     {"=", GLFW_KEY_EQUAL},       {"minus", GLFW_KEY_MINUS},
+    {"-", GLFW_KEY_MINUS},         {"0", GLFW_KEY_0},           {"[", GLFW_KEY_LEFT_BRACKET},
     {"]", GLFW_KEY_RIGHT_BRACKET}, {"f1", GLFW_KEY_F1},
 };
 
 KeyMods parse_key(std::string text, int& key) {
   KeyMods mods;
   for (;;) {
-    if (text.rfind("ctrl+", 0) == 0) { mods.ctrl = true; text = text.substr(5); continue; }
-    if (text.rfind("shift+", 0) == 0) { mods.shift = true; text = text.substr(6); continue; }
+    if (text.rfind("ctrl+", 0) == 0) {
+      mods.ctrl = true;
+      text = text.substr(5);
+      continue;
+    }
+    if (text.rfind("shift+", 0) == 0) {
+      mods.shift = true;
+      text = text.substr(6);
+      continue;
+    }
     break;
   }
   if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
@@ -289,8 +297,8 @@ std::string replay_finish(EditorApp& app, const Action&) {
 
 std::string expect_exercise_run(EditorApp& app, const Action& a) {
   const std::optional<ExerciseRun>& run = app.exercises().last_run();
-  const std::string got = run ? run->label + " (" + run->input.describe(run->exercise) + "): " +
-                                    (run->mine ? run->report.summary() : "the reference alone")
+  const std::string got = run ? run->label + " (" + run->input.describe(run->exercise) +
+                                    "): " + (run->mine ? run->report.summary() : "the reference alone")
                               : std::string("none");
   return expect_contains(a, got, "the Exercises tab's last run is");
 }
@@ -383,11 +391,15 @@ std::string expect_gpu_update(EditorApp& app, const Action& a) {
 const ActionVerb kVerbs[] = {
     {"frames", 1, "frames N   the next N frames pass with no action", nullptr},
     {"quit", 0, "quit   closes the window (the script's end does too)", nullptr},
-    {"key", 1, "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "
-               "0, [, ] or f1, with ctrl+ and shift+)", press_key},
+    {"key", 1,
+     "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "
+     "0, [, ] or f1, with ctrl+ and shift+)",
+     press_key},
     {"select", 1, "select h12   selects the element, as a click on it does", select},
-    {"click", 2, "click X Y   a click at view pixels (framebuffer pixels from the view's top-left corner, as picking "
-                 "counts them)", click},
+    {"click", 2,
+     "click X Y   a click at view pixels (framebuffer pixels from the view's top-left corner, as picking "
+     "counts them)",
+     click},
     {"hover", 2, "hover X Y   the mouse rests at view pixels", hover},
     {"click-on", 1,
      "click-on h12   a click where the element's label anchor is on screen (a vertex's position, an edge's midpoint, "
@@ -412,8 +424,10 @@ const ActionVerb kVerbs[] = {
      subdivide<true>},
     {"orbit", 2, "orbit DX DY   the camera turns as a drag of DX, DY pixels would turn it", orbit},
     {"up-axis", 1, "up-axis from-file|y|z   View > Up axis: the file's, or Y or Z up; refits the view", up_axis},
-    {"animate-edits", 1, "animate-edits on|off   flip, split, collapse and their undo and redo play for a quarter "
-                         "second, whatever the settings say; a scripted run starts with them off", animate_edits},
+    {"animate-edits", 1,
+     "animate-edits on|off   flip, split, collapse and their undo and redo play for a quarter "
+     "second, whatever the settings say; a scripted run starts with them off",
+     animate_edits},
     {"console", -1, "console LUA CODE...   runs the code in the Lua console", console},
     {"curve-t", 1, "curve-t T   the curve view's t, as its slider sets it", curve_t},
     {"lesson-next", 0, "lesson-next   the lesson's Next", lesson_next},
@@ -421,12 +435,18 @@ const ActionVerb kVerbs[] = {
     {"lesson-button", -1, "lesson-button LABEL...   presses a button the step shows", lesson_button},
     {"lesson-choose", -1, "lesson-choose OPTION...   presses that option of the choose{} the step asks",
      lesson_reply<true>},
-    {"lesson-answer", -1, "lesson-answer TEXT...   types TEXT into the answer{} box and presses Check (a pick{} is "
-                          "answered by click-on)", lesson_reply<false>},
-    {"lesson-show-mine", 0, "lesson-show-mine   presses the your_turn's \"Show mine vs reference\"; fails when the "
-                            "step waits on no wrong your_turn", lesson_show_mine},
-    {"exercise", 2, "exercise flip|split|...|curve|patch FOLDER   the exercise and the folder its student files are "
-                    "read from (curve and patch: where the views' \"mine\", key M, reads them)", exercise},
+    {"lesson-answer", -1,
+     "lesson-answer TEXT...   types TEXT into the answer{} box and presses Check (a pick{} is "
+     "answered by click-on)",
+     lesson_reply<false>},
+    {"lesson-show-mine", 0,
+     "lesson-show-mine   presses the your_turn's \"Show mine vs reference\"; fails when the "
+     "step waits on no wrong your_turn",
+     lesson_show_mine},
+    {"exercise", 2,
+     "exercise flip|split|...|curve|patch FOLDER   the exercise and the folder its student files are "
+     "read from (curve and patch: where the views' \"mine\", key M, reads them)",
+     exercise},
     {"run-mine", 0, "run-mine   the Exercises tab's Run mine", run_exercise<true>},
     {"run-reference", 0, "run-reference   the Exercises tab's Run the reference", run_exercise<false>},
     {"replay-start", 0, "replay-start   starts the replay of the last run's writes", replay_start},
@@ -438,26 +458,37 @@ const ActionVerb kVerbs[] = {
     {"expect-message", -1, "expect-message TEXT...   the status line contains TEXT", expect_message},
     {"expect-valid", 0, "expect-valid   the mesh passes validate()", expect_valid},
     {"expect-console", -1, "expect-console TEXT...   the console's last line contains TEXT", expect_console},
-    {"expect-up-axis", -1, "expect-up-axis X|Y|Z [TEXT...]   the camera's up axis, and the status bar's up-axis words "
-                           "contain TEXT", expect_up_axis},
-    {"expect-gpu-update", 1, "expect-gpu-update patch|rebuild   how the mesh view's last geometry update went (the "
-                             "slots an edit touched rewritten in place, or everything rebuilt); made by the next "
-                             "frame, which the check waits for", expect_gpu_update},
+    {"expect-up-axis", -1,
+     "expect-up-axis X|Y|Z [TEXT...]   the camera's up axis, and the status bar's up-axis words "
+     "contain TEXT",
+     expect_up_axis},
+    {"expect-gpu-update", 1,
+     "expect-gpu-update patch|rebuild   how the mesh view's last geometry update went (the "
+     "slots an edit touched rewritten in place, or everything rebuilt); made by the next "
+     "frame, which the check waits for",
+     expect_gpu_update},
     {"expect-lesson-step", 2, "expect-lesson-step 3 waiting|finished|failed   the lesson's step and its state",
      expect_lesson_step},
     {"expect-lesson-said", -1, "expect-lesson-said TEXT...   the current step said TEXT", expect_lesson_said},
-    {"expect-lesson-feedback", -1, "expect-lesson-feedback TEXT...   the feedback on the last wrong answer to the "
-                                   "question asked, or the diagnosis of the your_turn waited on, contains TEXT",
+    {"expect-lesson-feedback", -1,
+     "expect-lesson-feedback TEXT...   the feedback on the last wrong answer to the "
+     "question asked, or the diagnosis of the your_turn waited on, contains TEXT",
      expect_lesson_feedback<false>},
     {"expect-lesson-hint", -1, "expect-lesson-hint TEXT...   the question's hint is shown, and contains TEXT",
      expect_lesson_feedback<true>},
-    {"expect-lesson-live", -1, "expect-lesson-live TEXT...   a live() text of the step contains TEXT, as the last "
-                               "frame evaluated it", expect_lesson_live},
-    {"expect-exercise-run", -1, "expect-exercise-run TEXT...   the Exercises tab's last run, as \"LABEL (INPUT): "
-                                "SUMMARY\", contains TEXT", expect_exercise_run},
-    {"expect-mine", -1, "expect-mine TEXT...   the \"mine\" line of the curve or patch view on screen contains TEXT; "
-                        "computed when a frame draws the view, so the check waits for the frame after the action "
-                        "before it", expect_mine},
+    {"expect-lesson-live", -1,
+     "expect-lesson-live TEXT...   a live() text of the step contains TEXT, as the last "
+     "frame evaluated it",
+     expect_lesson_live},
+    {"expect-exercise-run", -1,
+     "expect-exercise-run TEXT...   the Exercises tab's last run, as \"LABEL (INPUT): "
+     "SUMMARY\", contains TEXT",
+     expect_exercise_run},
+    {"expect-mine", -1,
+     "expect-mine TEXT...   the \"mine\" line of the curve or patch view on screen contains TEXT; "
+     "computed when a frame draws the view, so the check waits for the frame after the action "
+     "before it",
+     expect_mine},
 };
 
 }  // namespace

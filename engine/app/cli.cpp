@@ -30,8 +30,7 @@ struct CliCommand {
 
 // Every command, in the order --help lists them.
 const CliCommand kCommands[] = {
-    {"", run_window,
-     "[FILE] [--actions SCRIPT] [--size WxH]  the window (a mesh, a .bez patch set or a .bzc curve)"},
+    {"", run_window, "[FILE] [--actions SCRIPT] [--size WxH]  the window (a mesh, a .bez patch set or a .bzc curve)"},
     {"demo", run_demo,
      "demo [FILE]                          load a mesh (default: the teapot) and show what the core does"},
     {"info", run_info,

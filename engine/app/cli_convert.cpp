@@ -33,8 +33,7 @@ int run_convert(const std::vector<std::string>& arguments, std::ostream& out) {
   if (args.size() != 2) throw UsageError("convert takes an input and an output file");
   const PolygonMesh polygons = polygons_of(load_file(args[0]), args[0], resolution);
   save_mesh(args[1], polygons);
-  out << "wrote " << args[1] << ": " << polygons.num_vertices() << " vertices, " << polygons.num_faces()
-      << " faces\n";
+  out << "wrote " << args[1] << ": " << polygons.num_vertices() << " vertices, " << polygons.num_faces() << " faces\n";
   return 0;
 }
 

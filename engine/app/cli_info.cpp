@@ -36,8 +36,8 @@ nlohmann::json mesh_json(const HalfedgeMesh& mesh, size_t unused_vertices) {
   const ValidationReport report = validate(mesh, kProblemsShown);
   nlohmann::json problems = nlohmann::json::array();
   for (const auto& v : report.violations) {
-    problems.push_back({{"element", format_id(v.element)}, {"invariant", invariant_name(v.invariant)},
-                        {"message", v.message}});
+    problems.push_back(
+        {{"element", format_id(v.element)}, {"invariant", invariant_name(v.invariant)}, {"message", v.message}});
   }
   return {{"vertices", s.vertices},
           {"edges", s.edges},

@@ -11,8 +11,8 @@
 
 #include "app/cli_commands.h"
 #include "script/lesson_headless.h"
-#include "script/scripted_exercise.h"
 #include "script/lua_runtime.h"
+#include "script/scripted_exercise.h"
 #include "ui/student_file.h"
 
 namespace meshedit {
@@ -40,8 +40,8 @@ int run_lesson(const std::vector<std::string>& arguments, std::ostream& out) {
   for (const std::string& error : load_exercise_folder(default_exercise_folder())) {
     std::cerr << "meshedit: exercise: " << error << '\n';
   }
-  const HeadlessOutcome outcome = run_lesson_headless(args.front(), answers_path, out,
-                                                      LessonRunner::default_limits(), student_folder);
+  const HeadlessOutcome outcome =
+      run_lesson_headless(args.front(), answers_path, out, LessonRunner::default_limits(), student_folder);
   out.flush();
   if (!outcome.failure.empty()) throw ScriptError(outcome.failure);
   return 0;

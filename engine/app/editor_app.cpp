@@ -66,9 +66,7 @@ void EditorApp::fit_camera() {
   }
 }
 
-void EditorApp::reset_view() {
-  camera_.reset();
-}
+void EditorApp::reset_view() { camera_.reset(); }
 
 void EditorApp::frame(int width, int height, float frame_ms) {
   // The safety net: whatever a key, a click, a menu or a panel throws is shown, not fatal (ui/frame_guard.h).
@@ -77,7 +75,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   edit_animator_.advance(frame_ms / 1000.0);  // before this frame's actions: an edit they make starts at time 0
-  read_mouse_and_keys();  // in the view placed by the last frame
+  read_mouse_and_keys();                      // in the view placed by the last frame
   update_lesson(frame_ms);
   view_quality_.frame_started(frame_ms);
 
@@ -100,14 +98,9 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
 
   begin_view_drawing();
   switch (mode_) {
-    case ViewMode::Mesh:
-      draw_mesh_view();
-      break;
-    case ViewMode::Patches:
-      draw_patch_view();
-      break;
-    case ViewMode::Curve:
-      break;  // an ImGui canvas, drawn with the panels
+    case ViewMode::Mesh: draw_mesh_view(); break;
+    case ViewMode::Patches: draw_patch_view(); break;
+    case ViewMode::Curve: break;  // an ImGui canvas, drawn with the panels
   }
   end_view_drawing();
   if (mode_ == ViewMode::Curve) draw_curve_canvas_window();  // before the levels table: it computes the levels
@@ -131,8 +124,8 @@ void EditorApp::draw_mesh_view() {
   }
   // A mesh too large to draw is refused once per state: an Error says so, the status bar keeps saying it, the rest of
   // the window works on (undo brings back a mesh it can draw), and frames do not try again until the mesh changes.
-  const bool refused = !undrawable_.empty() && undrawable_generation_ == doc_.generation &&
-                       undrawable_version_ == doc_.mesh.version();
+  const bool refused =
+      !undrawable_.empty() && undrawable_generation_ == doc_.generation && undrawable_version_ == doc_.mesh.version();
   if (!refused) {
     undrawable_.clear();
     try {
@@ -177,7 +170,7 @@ void EditorApp::apply_size_defaults() {
   // (app/view_quality.h), and W, the menu or a lesson's view{} still choose.
   const bool large = is_large_mesh(mesh_renderer_->stats().triangles, mesh_renderer_->style());
   const size_t faces = doc_.mesh.num_faces();
-  const SizeClass size = large                        ? SizeClass::Large
+  const SizeClass size = large                         ? SizeClass::Large
                          : faces <= kArrowsMaxFaces    ? SizeClass::Small
                          : faces <= kWireframeMaxFaces ? SizeClass::Medium
                                                        : SizeClass::Dense;
@@ -186,8 +179,7 @@ void EditorApp::apply_size_defaults() {
     view_options_.wireframe = size == SizeClass::Small || size == SizeClass::Medium;
     view_options_.show_halfedges = size == SizeClass::Small;
   }
-  view_quality_.follow_mesh(doc_.generation, mesh_renderer_->stats().triangles, mesh_renderer_->style(),
-                            view_options_);
+  view_quality_.follow_mesh(doc_.generation, mesh_renderer_->stats().triangles, mesh_renderer_->style(), view_options_);
 }
 
 void EditorApp::draw_patch_view() {

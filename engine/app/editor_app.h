@@ -61,6 +61,7 @@
 #include "ui/bezier_mine.h"
 #include "ui/curve_editor.h"
 #include "ui/exercise_panel.h"
+#include "ui/fonts.h"
 #include "ui/inspector.h"
 #include "ui/lesson_panel.h"
 #include "ui/mesh_document.h"
@@ -68,10 +69,9 @@
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
 #include "ui/selection.h"
-#include "ui/subdivision_actions.h"
-#include "ui/fonts.h"
 #include "ui/settings.h"
 #include "ui/status_bar.h"
+#include "ui/subdivision_actions.h"
 #include "ui/window_layout.h"
 
 namespace meshedit {
@@ -215,7 +215,7 @@ class EditorApp {
   void choose_up_axis(UpAxisChoice choice);
   UpAxisChoice up_axis_choice() const { return up_axis_choice_; }
   std::string_view status_up_axis() const { return status_bar_.up_axis; }  // "Y up (from the file)"
-  void reset_view();  // Space: back to the fitted view
+  void reset_view();                                                       // Space: back to the fitted view
   ViewMode mode() const { return mode_; }
   MeshDocument& document() { return doc_; }
   Selection& selection() { return selection_; }
@@ -256,8 +256,8 @@ class EditorApp {
   void draw_menu_bar();
   void draw_open_panel();
   void draw_help_panel();
-  void draw_repairs_tab();    // the Repairs tab's rows (editor_repairs.cpp)
-  void draw_repair_spots();   // every current spot highlighted over the mesh
+  void draw_repairs_tab();   // the Repairs tab's rows (editor_repairs.cpp)
+  void draw_repair_spots();  // every current spot highlighted over the mesh
   // After open() failed: remembers `path` for open_repaired() when `repairable`, and says so in the message.
   void offer_repair(const std::filesystem::path& path, bool repairable) noexcept;
   void message(Severity severity, const std::string& text);
@@ -276,13 +276,13 @@ class EditorApp {
   bool apply_key(int key, KeyMods mods);
   bool run_key_command(KeyCommand command);  // what a row of app/key_bindings.h does; whether it did something
   void press(KeyCommand command);            // handle_key with the command's key: what a menu item for it does
-  void draw_lesson_marks();  // the lesson's highlights (its labels: draw_labels)
-  void draw_edit_animation();  // the edit playing, over the mesh (editor_edit_animation.cpp)
+  void draw_lesson_marks();                  // the lesson's highlights (its labels: draw_labels)
+  void draw_edit_animation();                // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
   // L or Shift+L (the course's weights or Loop's, as the Subdivide menu has them); tells a lesson the command.
   Check run_loop(bool one_phase);
-  void take_lesson_request();  // a lesson picked from the list, or "Lessons" (back to the list), this frame
+  void take_lesson_request();          // a lesson picked from the list, or "Lessons" (back to the list), this frame
   void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
 
   ShaderLibrary shaders_;
@@ -301,7 +301,7 @@ class EditorApp {
   static constexpr size_t kWireframeMaxFaces = 20000;
   enum class SizeClass { Unknown, Small, Medium, Dense, Large };
   SizeClass size_class_ = SizeClass::Unknown;
-  ViewQuality view_quality_;  // multisampling, wireframe and back sides by the measured frame time
+  ViewQuality view_quality_;                 // multisampling, wireframe and back sides by the measured frame time
   std::optional<ViewRequest> pending_view_;  // a lesson's view{...}, for the next mesh frame
   void take_pending_view();
   // Why the renderer refused the document's mesh (too large to draw) at this generation and version; "" when drawn.
@@ -335,10 +335,10 @@ class EditorApp {
 
   bool show_open_panel_ = false;
   bool show_help_ = false;
-  std::string repairable_path_;            // the mesh file open() last refused as not a manifold
-  RepairMarks repairs_;                    // the Repairs tab: the last repaired copy's changes and their spots
+  std::string repairable_path_;  // the mesh file open() last refused as not a manifold
+  RepairMarks repairs_;          // the Repairs tab: the last repaired copy's changes and their spots
   bool repairs_tab_open_ = false;
-  size_t repair_row_clicked_ = SIZE_MAX;   // the row last clicked (shown selected while the spots are current)
+  size_t repair_row_clicked_ = SIZE_MAX;  // the row last clicked (shown selected while the spots are current)
   std::string open_path_input_;
   std::string save_path_input_;
   std::deque<std::string> recent_;

@@ -71,9 +71,7 @@ void refresh_view(MeshRenderer& renderer, const HalfedgeMesh& mesh) noexcept {
 
 std::string EditorApp::window_title(const std::string& name) { return std::string(kStartTitle) + " - " + name; }
 
-void EditorApp::fit_camera(const BoundingBox& bounds) {
-  camera_.fit(bounds);
-}
+void EditorApp::fit_camera(const BoundingBox& bounds) { camera_.fit(bounds); }
 
 void EditorApp::take_mesh(HalfedgeMesh&& mesh, std::string&& path, bool fit) {
   const BoundingBox bounds = mesh_bounds(mesh);  // what the renderer's bounds will be, read before the move
@@ -138,12 +136,8 @@ bool EditorApp::open(const std::filesystem::path& path) {
     std::optional<CurveEditorState> curve;
     std::optional<PatchViewState> patches;
     switch (file.kind) {
-      case FileKind::Curve:
-        curve = make_curve_editor(std::move(file.curve));
-        break;
-      case FileKind::Patches:
-        patches = tessellated_view(file.patches);
-        break;
+      case FileKind::Curve: curve = make_curve_editor(std::move(file.curve)); break;
+      case FileKind::Patches: patches = tessellated_view(file.patches); break;
       case FileKind::Mesh:
         not_a_manifold = true;
         mesh = build_from_file(file.mesh, path).mesh;
@@ -154,7 +148,8 @@ bool EditorApp::open(const std::filesystem::path& path) {
     std::deque<std::string> recent = with_recent(recent_, path.string());
     std::string text = "opened " + path.string();
     if (file.joined_vertices > 0) {
-      text += " (" + std::to_string(file.joined_vertices) + " vertices the file repeats at one position, for its "
+      text += " (" + std::to_string(file.joined_vertices) +
+              " vertices the file repeats at one position, for its "
               "normals or texture coordinates, joined)";
     }
     // Nothing from here on can fail: the window switches to the file whole.

@@ -29,8 +29,9 @@ bool EditorApp::handle_key(int key, KeyMods mods) {
 }
 
 bool EditorApp::apply_key(int key, KeyMods mods) {
-  const KeyView view = mode_ == ViewMode::Mesh ? KeyView::Mesh : mode_ == ViewMode::Curve ? KeyView::Curve
-                                                                                           : KeyView::Patches;
+  const KeyView view = mode_ == ViewMode::Mesh    ? KeyView::Mesh
+                       : mode_ == ViewMode::Curve ? KeyView::Curve
+                                                  : KeyView::Patches;
   const KeyBinding* binding = find_key_binding(key, mods.ctrl, mods.shift, view);
   if (!binding) return false;
   // An edit or an undo in the middle of a replay would leave a half-replayed state in the history.
@@ -144,8 +145,8 @@ void EditorApp::read_mouse_and_keys() {
   const ImVec2 delta(io.MouseDelta.x * pixels_per_point_.x, io.MouseDelta.y * pixels_per_point_.y);
   if (io.MouseWheel != 0.0f && in_view) camera_.zoom(io.MouseWheel);
 
-  const bool panning = ImGui::IsMouseDragging(ImGuiMouseButton_Middle) ||
-                       (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
+  const bool panning =
+      ImGui::IsMouseDragging(ImGuiMouseButton_Middle) || (io.KeyShift && ImGui::IsMouseDragging(ImGuiMouseButton_Left));
   if (panning) {
     camera_.pan(delta.x, delta.y, viewport());
   } else if (ImGui::IsMouseDragging(ImGuiMouseButton_Left) || ImGui::IsMouseDragging(ImGuiMouseButton_Right)) {
@@ -170,8 +171,8 @@ void EditorApp::read_mouse_and_keys() {
   if (moving_camera) {
     hover_pending_ = false;
   } else if (mouse_moved) {
-    const bool cheap = mesh_renderer_->pick_is_cheap(camera_, viewport()) ||
-                       mesh_renderer_->stats().last_id_pass_ms < kSlowIdPassMs;
+    const bool cheap =
+        mesh_renderer_->pick_is_cheap(camera_, viewport()) || mesh_renderer_->stats().last_id_pass_ms < kSlowIdPassMs;
     if (cheap) {
       hover(x, y);
       hover_pending_ = false;

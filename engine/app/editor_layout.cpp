@@ -35,15 +35,16 @@ ImVec2 splitter(const char* id, const ScreenRect& rect, bool horizontal) {
   ImGui::PushStyleVar(ImGuiStyleVar_WindowMinSize, ImVec2(1, 1));
   ImGui::PushStyleVar(ImGuiStyleVar_WindowBorderSize, 0.0f);
   ImVec2 drag(0, 0);
-  if (ImGui::Begin(id, nullptr, ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground |
-                                    ImGuiWindowFlags_NoSavedSettings | ImGuiWindowFlags_NoMove)) {
+  if (ImGui::Begin(id, nullptr,
+                   ImGuiWindowFlags_NoDecoration | ImGuiWindowFlags_NoBackground | ImGuiWindowFlags_NoSavedSettings |
+                       ImGuiWindowFlags_NoMove)) {
     ImGui::InvisibleButton("##drag", ImVec2(rect.width, rect.height));
     const bool active = ImGui::IsItemActive(), hovered = ImGui::IsItemHovered();
     if (active || hovered) {
       ImGui::SetMouseCursor(horizontal ? ImGuiMouseCursor_ResizeNS : ImGuiMouseCursor_ResizeEW);
-      ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(rect.x, rect.y), ImVec2(rect.right(), rect.bottom()),
-                                                ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive
-                                                                          : ImGuiCol_SeparatorHovered));
+      ImGui::GetWindowDrawList()->AddRectFilled(
+          ImVec2(rect.x, rect.y), ImVec2(rect.right(), rect.bottom()),
+          ImGui::GetColorU32(active ? ImGuiCol_SeparatorActive : ImGuiCol_SeparatorHovered));
     }
     if (active) drag = ImGui::GetIO().MouseDelta;
   }

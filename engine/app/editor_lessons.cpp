@@ -84,7 +84,7 @@ ReloadOutcome EditorApp::reload_lesson() {
     if (title_names_lesson_) title_.swap(title);
     return ReloadOutcome::Reloaded;
   } catch (const std::exception& e) {
-    report_exception(doc_, e);  // nothing was switched: the version that ran goes on, under its title
+    report_exception(doc_, e);          // nothing was switched: the version that ran goes on, under its title
     return ReloadOutcome::OutOfMemory;  // std::bad_alloc, the only exception making the title throws
   }
 }

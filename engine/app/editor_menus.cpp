@@ -245,9 +245,10 @@ void EditorApp::draw_help_panel() {
       {"click", "select the vertex, edge, halfedge or face under the cursor"},
       {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
   };
-  const std::pair<KeyView, const char*> kHeadings[] = {
-      {KeyView::Mesh, "Mesh view"}, {KeyView::Curve, "Curve view"}, {KeyView::Patches, "Patch view"},
-      {KeyView::Everywhere, "Every view"}};
+  const std::pair<KeyView, const char*> kHeadings[] = {{KeyView::Mesh, "Mesh view"},
+                                                       {KeyView::Curve, "Curve view"},
+                                                       {KeyView::Patches, "Patch view"},
+                                                       {KeyView::Everywhere, "Every view"}};
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
     const auto row = [](const char* keys, const char* text) {
       ImGui::TableNextColumn();

@@ -8,9 +8,7 @@ namespace meshedit {
 void add_highlight(Overlay& overlay, const HalfedgeMesh& mesh, ElementRef element, const glm::vec4& rgba) {
   if (!mesh.alive(element)) return;
   switch (element.kind) {
-    case ElementKind::Vertex:
-      overlay.points.push_back({mesh.position(VertexId(element.index)), rgba, 14.0f});
-      break;
+    case ElementKind::Vertex: overlay.points.push_back({mesh.position(VertexId(element.index)), rgba, 14.0f}); break;
     case ElementKind::Edge:
       if (const auto s = edge_segment(mesh, EdgeId(element.index))) {
         overlay.lines.push_back({{glm::dvec3(s->start), glm::dvec3(s->end)}, rgba, 5.0f, false});
@@ -18,8 +16,8 @@ void add_highlight(Overlay& overlay, const HalfedgeMesh& mesh, ElementRef elemen
       break;
     case ElementKind::Halfedge:
       if (const auto a = halfedge_arrow(mesh, HalfedgeId(element.index))) {
-        overlay.lines.push_back({{glm::dvec3(a->tail), glm::dvec3(a->tip), glm::dvec3(a->barb_inner)}, rgba, 4.0f,
-                                 false});
+        overlay.lines.push_back(
+            {{glm::dvec3(a->tail), glm::dvec3(a->tip), glm::dvec3(a->barb_inner)}, rgba, 4.0f, false});
       }
       break;
     case ElementKind::Face:

@@ -1,8 +1,8 @@
 // GLFW window + GL 3.3 core context + ImGui backends (see glfw_window.h).
 #include "app/glfw_window.h"
 
-#include <epoxy/gl.h>
 #include <GLFW/glfw3.h>
+#include <epoxy/gl.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
@@ -104,7 +104,9 @@ GlfwWindow::~GlfwWindow() {
   glfwTerminate();
 }
 
-void GlfwWindow::note_input(GLFWwindow* w) { static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->input_seen_ = true; }
+void GlfwWindow::note_input(GLFWwindow* w) {
+  static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->input_seen_ = true;
+}
 
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
 

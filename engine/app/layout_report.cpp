@@ -50,8 +50,8 @@ std::string layout_json(const EditorApp& app) {
   out["splitters"] = std::move(splitters);
 
   json lesson = json::object();
-  for (const auto& [key, item] : {std::pair{"text", "lesson-text"}, std::pair{"back", "lesson-back"},
-                                  std::pair{"next", "lesson-next"}}) {
+  for (const auto& [key, item] :
+       {std::pair{"text", "lesson-text"}, std::pair{"back", "lesson-back"}, std::pair{"next", "lesson-next"}}) {
     if (const UiProbe::Item* found = app.probe().find(item)) {
       lesson[key] = rect(found->min.x, found->min.y, found->max.x - found->min.x, found->max.y - found->min.y);
     }

@@ -6,8 +6,8 @@
 // that size exactly and is not remembered. A settings file that cannot be read or written is a warning on stderr.
 #include <algorithm>
 #include <chrono>
-#include <filesystem>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 #include "app/action_player.h"
@@ -61,7 +61,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   app.apply_settings(settings);
   // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
   if (!player.active()) app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
-  app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
+  app.show_start_mesh();                 // out of memory: an empty window that says so (editor_app.h)
   if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
 
   auto last = std::chrono::steady_clock::now();

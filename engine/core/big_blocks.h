@@ -29,9 +29,7 @@ inline constexpr size_t kThreshold = size_t(4) << 20;
 inline bool is_mapped(size_t bytes) { return bytes >= kThreshold; }
 
 // A block of `bytes` (> 0), its contents unset.
-inline void* allocate(size_t bytes) {
-  return is_mapped(bytes) ? page_memory::allocate(bytes) : ::operator new(bytes);
-}
+inline void* allocate(size_t bytes) { return is_mapped(bytes) ? page_memory::allocate(bytes) : ::operator new(bytes); }
 
 // Gives back a block of `bytes` from allocate or regrow (nullptr: nothing).
 inline void release(void* p, size_t bytes) noexcept {

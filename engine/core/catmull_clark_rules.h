@@ -15,8 +15,7 @@ namespace meshedit::catmull_clark_rules {
 inline glm::dvec3 face_point(const glm::dvec3& corner_sum, uint32_t sides) { return corner_sum / double(sides); }
 
 // The point of interior edge a-b whose two faces have face points f0 and f1: the mean of the four.
-inline glm::dvec3 interior_edge(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& f0,
-                                const glm::dvec3& f1) {
+inline glm::dvec3 interior_edge(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& f0, const glm::dvec3& f1) {
   return 0.25 * (a + b + f0 + f1);
 }
 

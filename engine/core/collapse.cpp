@@ -30,8 +30,8 @@ struct EndpointFan {
 };
 
 // Walks the fan of vertex(start) and the corners of each face in it, both bounded; refuses if either breaks.
-Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1, VertexId other, VertexId c,
-               VertexId d, const std::string& needed_for, EndpointFan& out) {
+Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1, VertexId other, VertexId c, VertexId d,
+               const std::string& needed_for, EndpointFan& out) {
   FaceId broken_face;
   const bool closed = ops_detail::walk_fan(mesh, start, [&](HalfedgeId o) {
     out.neighbours.push_back(mesh.vertex(mesh.twin(o)));

@@ -174,8 +174,7 @@ std::string describe(const RecordedEdit& edit) {
     case EditKind::Create:
       return "new " + id +
              (edit.element.kind == ElementKind::Vertex ? " at " + format_position(edit.value.position) : "");
-    case EditKind::Delete:
-      return "delete " + id;
+    case EditKind::Delete: return "delete " + id;
     case EditKind::Operation: {
       std::string text = edit.field;
       if (edit.element.valid()) text += " " + id;

@@ -47,10 +47,10 @@ struct RecordedEdit {
   EditKind what = EditKind::Set;
   ElementRef element;  // the element written, created or deleted; the edge of flip/split/collapse
   std::string field;
-  EditValue before;    // Set: the value the field had (shown, not needed to apply)
-  EditValue value;     // Set: the value written; Create: a vertex's position; Operation: what the core returned
+  EditValue before;  // Set: the value the field had (shown, not needed to apply)
+  EditValue value;   // Set: the value written; Create: a vertex's position; Operation: what the core returned
   std::shared_ptr<const HalfedgeMesh> state;  // restore/undo/redo: the mesh as it became
-  std::string where;   // "flip.lua:12", the script line that made the edit; empty when unknown
+  std::string where;                          // "flip.lua:12", the script line that made the edit; empty when unknown
 };
 
 // The before/after text of an edit for tables and the replay panel: "h7", "-" (null), "(0.5, 0, 1)";

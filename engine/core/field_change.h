@@ -15,7 +15,7 @@ namespace meshedit {
 // to the same double (value_format.h), liveness as "alive"/"dead".
 struct FieldChange {
   ElementRef element;
-  std::string field;   // "next" "twin" "vertex" "edge" "face" "halfedge" "position" "alive"
+  std::string field;  // "next" "twin" "vertex" "edge" "face" "halfedge" "position" "alive"
   std::string before;
   std::string after;
 };

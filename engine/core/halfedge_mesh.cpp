@@ -32,8 +32,8 @@ bool HalfedgeMesh::alive(ElementRef r) const {
   return false;
 }
 
-void HalfedgeMesh::set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex,
-                                 EdgeId edge, FaceId face) {
+void HalfedgeMesh::set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex, EdgeId edge,
+                                 FaceId face) {
   log_write(h);
   h_[h.index] = HalfedgeRecord{next, twin, vertex, edge, face};
   touch();

@@ -29,8 +29,8 @@
 #pragma once
 
 #include <algorithm>
-#include <utility>
 #include <cstdint>
+#include <utility>
 #include <vector>
 
 #include <glm/vec3.hpp>
@@ -56,13 +56,22 @@ class AliveRange {
   class Iterator {
    public:
     Iterator(const AliveFlags* alive, uint32_t i, uint32_t end, uint32_t tag)
-        : alive_(alive), i_(i), end_(end), tag_(tag) { skip(); }
+        : alive_(alive), i_(i), end_(end), tag_(tag) {
+      skip();
+    }
     IdT operator*() const { return IdT(i_ | tag_); }
-    Iterator& operator++() { ++i_; skip(); return *this; }
+    Iterator& operator++() {
+      ++i_;
+      skip();
+      return *this;
+    }
     bool operator!=(const Iterator& o) const { return i_ != o.i_; }
     bool operator==(const Iterator& o) const { return i_ == o.i_; }
+
    private:
-    void skip() { while (i_ < end_ && !(*alive_)[i_]) ++i_; }
+    void skip() {
+      while (i_ < end_ && !(*alive_)[i_]) ++i_;
+    }
     const AliveFlags* alive_;
     uint32_t i_, end_, tag_;
   };
@@ -70,6 +79,7 @@ class AliveRange {
       : alive_(alive), end_(static_cast<uint32_t>(alive->size())), tag_(tag) {}
   Iterator begin() const { return Iterator(alive_, 0, end_, tag_); }
   Iterator end() const { return Iterator(alive_, end_, end_, tag_); }
+
  private:
   const AliveFlags* alive_;
   uint32_t end_, tag_;
@@ -100,27 +110,29 @@ class JournalLink {
 
   // Before a write of one slot (kind, slot): the journal logs the slot's old values.
   void before_write(ElementKind kind, uint32_t slot) {
-    if (journal_) [[unlikely]] note_write(kind, slot);
+    if (journal_) [[unlikely]]
+      note_write(kind, slot);
   }
   // Before a write the journal cannot follow slot by slot.
   void before_bulk_write() noexcept {
-    if (journal_) [[unlikely]] fall_back();
+    if (journal_) [[unlikely]]
+      fall_back();
   }
 
  private:
   friend struct MeshStorage;
   void note_write(ElementKind kind, uint32_t slot);  // change_journal.cpp
-  void fall_back() noexcept;                          // change_journal.cpp
+  void fall_back() noexcept;                         // change_journal.cpp
   ChangeJournal* journal_ = nullptr;
 };
 
 // The five pointers of one halfedge, stored together: a walk reads one cache line per halfedge, not five.
 struct HalfedgeRecord {
-  HalfedgeId next;    // h.next
-  HalfedgeId twin;    // h.twin
-  VertexId vertex;    // h.vertex (tail)
-  EdgeId edge;        // h.edge
-  FaceId face;        // h.face (a face or a boundary loop)
+  HalfedgeId next;  // h.next
+  HalfedgeId twin;  // h.twin
+  VertexId vertex;  // h.vertex (tail)
+  EdgeId edge;      // h.edge
+  FaceId face;      // h.face (a face or a boundary loop)
   friend bool operator==(const HalfedgeRecord&, const HalfedgeRecord&) = default;
 };
 
@@ -131,7 +143,7 @@ class HalfedgeMesh {
   size_t num_vertices() const { return live_vertices_; }
   size_t num_halfedges() const { return live_halfedges_; }
   size_t num_edges() const { return live_edges_; }
-  size_t num_faces() const { return live_faces_; }        // real faces, boundary loops excluded
+  size_t num_faces() const { return live_faces_; }  // real faces, boundary loops excluded
   size_t num_boundaries() const { return live_boundaries_; }
   // Slots ever allocated (live + dead): the id range of each kind.
   uint32_t vertex_capacity() const { return static_cast<uint32_t>(v_alive_.size()); }
@@ -155,34 +167,63 @@ class HalfedgeMesh {
   // ---- the pointers (precondition: the element is live or at least allocated) ---------------------
   HalfedgeId next(HalfedgeId h) const { return h_[h.index].next; }
   HalfedgeId twin(HalfedgeId h) const { return h_[h.index].twin; }
-  VertexId vertex(HalfedgeId h) const { return h_[h.index].vertex; }   // the vertex h leaves
+  VertexId vertex(HalfedgeId h) const { return h_[h.index].vertex; }  // the vertex h leaves
   EdgeId edge(HalfedgeId h) const { return h_[h.index].edge; }
   FaceId face(HalfedgeId h) const { return h_[h.index].face; }
   HalfedgeId halfedge(VertexId v) const { return v_halfedge_[v.index]; }  // some outgoing halfedge
   HalfedgeId halfedge(EdgeId e) const { return e_halfedge_[e.index]; }
-  HalfedgeId halfedge(FaceId f) const {
-    return f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()];
-  }
+  HalfedgeId halfedge(FaceId f) const { return f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()]; }
   const glm::dvec3& position(VertexId v) const { return v_position_[v.index]; }
   // All five pointers of h at once (whole-mesh passes prefetch it).
   const HalfedgeRecord& record(HalfedgeId h) const { return h_[h.index]; }
 
-  void set_next(HalfedgeId h, HalfedgeId next) { log_write(h); h_[h.index].next = next; touch(); }
-  void set_twin(HalfedgeId h, HalfedgeId twin) { log_write(h); h_[h.index].twin = twin; touch(); }
-  void set_vertex(HalfedgeId h, VertexId v) { log_write(h); h_[h.index].vertex = v; touch(); }
-  void set_edge(HalfedgeId h, EdgeId e) { log_write(h); h_[h.index].edge = e; touch(); }
-  void set_face(HalfedgeId h, FaceId f) { log_write(h); h_[h.index].face = f; touch(); }
+  void set_next(HalfedgeId h, HalfedgeId next) {
+    log_write(h);
+    h_[h.index].next = next;
+    touch();
+  }
+  void set_twin(HalfedgeId h, HalfedgeId twin) {
+    log_write(h);
+    h_[h.index].twin = twin;
+    touch();
+  }
+  void set_vertex(HalfedgeId h, VertexId v) {
+    log_write(h);
+    h_[h.index].vertex = v;
+    touch();
+  }
+  void set_edge(HalfedgeId h, EdgeId e) {
+    log_write(h);
+    h_[h.index].edge = e;
+    touch();
+  }
+  void set_face(HalfedgeId h, FaceId f) {
+    log_write(h);
+    h_[h.index].face = f;
+    touch();
+  }
   // The course's Halfedge::setNeighbors, with its argument order.
-  void set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex, EdgeId edge,
-                     FaceId face);
-  void set_halfedge(VertexId v, HalfedgeId h) { log_write(v); v_halfedge_[v.index] = h; touch(); }
-  void set_halfedge(EdgeId e, HalfedgeId h) { log_write(e); e_halfedge_[e.index] = h; touch(); }
+  void set_neighbors(HalfedgeId h, HalfedgeId next, HalfedgeId twin, VertexId vertex, EdgeId edge, FaceId face);
+  void set_halfedge(VertexId v, HalfedgeId h) {
+    log_write(v);
+    v_halfedge_[v.index] = h;
+    touch();
+  }
+  void set_halfedge(EdgeId e, HalfedgeId h) {
+    log_write(e);
+    e_halfedge_[e.index] = h;
+    touch();
+  }
   void set_halfedge(FaceId f, HalfedgeId h) {
     log_write(f);
     (f.is_boundary() ? b_halfedge_[f.slot()] : f_halfedge_[f.slot()]) = h;
     touch();
   }
-  void set_position(VertexId v, const glm::dvec3& p) { log_write(v); v_position_[v.index] = p; touch(); }
+  void set_position(VertexId v, const glm::dvec3& p) {
+    log_write(v);
+    v_position_[v.index] = p;
+    touch();
+  }
 
   // ---- allocation and deletion --------------------------------------------------------------------
   // New elements are live, appended at the end, with every pointer invalid and position (0,0,0).

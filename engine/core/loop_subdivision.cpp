@@ -46,8 +46,8 @@ Check can_loop_subdivide_without_shortcut(const HalfedgeMesh& mesh) {
   for (FaceId f : mesh.faces()) {
     const uint32_t sides = mesh.degree(f);
     if (sides != 3) {
-      return Check::no(format_id(f) + " has " + std::to_string(sides) +
-                       " sides; Loop subdivision needs triangles; " + kHowToTriangulate);
+      return Check::no(format_id(f) + " has " + std::to_string(sides) + " sides; Loop subdivision needs triangles; " +
+                       kHowToTriangulate);
     }
   }
   // A valid triangle mesh can still hold an edge split() refuses (two faces with the same three corners,

@@ -181,8 +181,8 @@ void pass_edges(Level& L, int threads) {
         m.position[mid] = loop_rules::interior_edge(a, b, c, d);
       }
       m.vertex_halfedge[mid] = HalfedgeId(n0 + 1);
-      m.edge_halfedge[ea] = HalfedgeId(n0);      // ea: n0 a->m, n1 m->a
-      m.edge_halfedge[ea + 1] = HalfedgeId(n0 + 2);  // ec: n2 m->c, n3 c->m
+      m.edge_halfedge[ea] = HalfedgeId(n0);                         // ea: n0 a->m, n1 m->a
+      m.edge_halfedge[ea + 1] = HalfedgeId(n0 + 2);                 // ec: n2 m->c, n3 c->m
       if (!boundary) m.edge_halfedge[ea + 2] = HalfedgeId(n0 + 4);  // ed: n4 m->d, n5 d->m
       if (boundary) {  // the loop's side: n1 after h1 (the face side's halfedges are written by pass_triangles)
         const uint32_t n1 = n0 + 1;
@@ -345,9 +345,9 @@ void pass_triangles(Level& L, int threads) {
         r.vertex = VertexId(vertex_id[c.vertex[s]]);
       }
       for (uint32_t s = 3; s < 12; ++s) {  // new halfedges: every field, in one store each
-        m.h[id[s]] = HalfedgeRecord{HalfedgeId(id[c.next[s]]), HalfedgeId(twin_id[s - 3]),
-                                    VertexId(vertex_id[c.vertex[s]]), EdgeId(edge_id[s - 3]),
-                                    FaceId::face(face_id[c.face[s]])};
+        m.h[id[s]] =
+            HalfedgeRecord{HalfedgeId(id[c.next[s]]), HalfedgeId(twin_id[s - 3]), VertexId(vertex_id[c.vertex[s]]),
+                           EdgeId(edge_id[s - 3]), FaceId::face(face_id[c.face[s]])};
       }
       for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
     }
@@ -363,8 +363,8 @@ struct Scratch {
 // Subdivides once. With `check_finite`, also returns whether every live position of the result is finite (with huge
 // coordinates a weighted sum can overflow); otherwise true.
 bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch, bool check_finite) {
-  Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(), mesh.face_capacity(),
-          MeshStorage::view(mesh), scratch.plan};
+  Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(),
+          mesh.face_capacity(),   MeshStorage::view(mesh),  scratch.plan};
   uint32_t live_edges = 0, boundary_edges = 0;
   plan_edges(L, threads, live_edges, boundary_edges);
   MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,

@@ -31,10 +31,10 @@ std::string face_list(const std::vector<uint32_t>& faces) {
 // Everything the builder derives before it touches the mesh, indexed by input halfedge.
 struct Corners {
   const PolygonMesh& in;
-  std::vector<uint32_t> face_of;   // input face of each halfedge
-  std::vector<uint32_t> next;      // next halfedge in the same face
-  std::vector<uint32_t> out_start; // CSR: halfedges leaving vertex v are out[out_start[v] .. out_start[v+1])
-  std::vector<uint32_t> out;       // ... sorted by head vertex
+  std::vector<uint32_t> face_of;    // input face of each halfedge
+  std::vector<uint32_t> next;       // next halfedge in the same face
+  std::vector<uint32_t> out_start;  // CSR: halfedges leaving vertex v are out[out_start[v] .. out_start[v+1])
+  std::vector<uint32_t> out;        // ... sorted by head vertex
 
   uint32_t tail(uint32_t h) const { return in.indices[h]; }
   uint32_t head(uint32_t h) const { return in.indices[next[h]]; }
@@ -79,17 +79,17 @@ void check_faces(const PolygonMesh& in) {
     }
     for (uint32_t v : corners) {
       if (v >= num_vertices) {
-        throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) + ", but there are only " +
-                        std::to_string(num_vertices) + " vertices");
+        throw MeshError("face " + std::to_string(f) + " refers to vertex " + std::to_string(v) +
+                        ", but there are only " + std::to_string(num_vertices) + " vertices");
       }
     }
     sorted.assign(corners.begin(), corners.end());
     std::sort(sorted.begin(), sorted.end());
     auto repeated = std::adjacent_find(sorted.begin(), sorted.end());
     if (repeated != sorted.end()) {
-      throw MeshError("face " + std::to_string(f) + " is degenerate: it uses vertex " + std::to_string(*repeated) +
-                          " twice",
-                      VertexId(*repeated));
+      throw MeshError(
+          "face " + std::to_string(f) + " is degenerate: it uses vertex " + std::to_string(*repeated) + " twice",
+          VertexId(*repeated));
     }
   }
 }
@@ -325,7 +325,6 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
 
 }  // namespace build_detail
 
-
 HalfedgeMesh build_halfedge_mesh(const PolygonMesh& in, BuildReport* report) {
   check_sizes(in);
   HalfedgeMesh fast;
@@ -355,9 +354,9 @@ PolygonMesh to_polygon_mesh(const HalfedgeMesh& mesh) {
       out.indices.push_back(index_of[v.index]);
     });
     if (!closed || dead_vertex) {
-      throw MeshError("cannot export " + format_id(f) + ": " +
-                          (closed ? "it uses a dead vertex" : "its next-cycle does not close"),
-                      f);
+      throw MeshError(
+          "cannot export " + format_id(f) + ": " + (closed ? "it uses a dead vertex" : "its next-cycle does not close"),
+          f);
     }
     out.face_offsets.push_back(static_cast<uint32_t>(out.indices.size()));
   }

@@ -180,8 +180,9 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
     const uint32_t f = h_[h].face.slot(), g = h_[t].face.slot();
     const uint32_t size_f = in.face_offsets[f + 1] - in.face_offsets[f];
     if (size_f != in.face_offsets[g + 1] - in.face_offsets[g]) continue;
-    const bool same = size_f == 3 ? h_[h_[h_[h].next.index].next.index].vertex == h_[h_[h_[t].next.index].next.index].vertex
-                                  : sorted_corners(in, f) == sorted_corners(in, g);
+    const bool same = size_f == 3
+                          ? h_[h_[h_[h].next.index].next.index].vertex == h_[h_[h_[t].next.index].next.index].vertex
+                          : sorted_corners(in, f) == sorted_corners(in, g);
     if (same) return false;
   }
 

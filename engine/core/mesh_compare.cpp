@@ -516,8 +516,8 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
   MeshComparison result;
   Collector out(result, options.max_differences);
   compare_counts(yours, reference, out);
-  for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
-                           ElementKind::Boundary}) {
+  for (ElementKind kind :
+       {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face, ElementKind::Boundary}) {
     const uint32_t slots = std::max(yours.capacity(kind), reference.capacity(kind));
     for (uint32_t i = 0; i < slots; ++i) {
       const ElementRef e(kind, i);
@@ -535,8 +535,7 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
   return result;
 }
 
-MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
-                              const CompareOptions& options) {
+MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& reference, const CompareOptions& options) {
   MeshComparison result;
   Collector out(result, options.max_differences);
   compare_counts(yours, reference, out);
@@ -572,9 +571,8 @@ MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& ref
   for (VertexId v : reference.vertices()) {
     if (to_yours[v.index].valid()) continue;
     result.unmatched_reference.push_back(v);
-    out.add([&] {
-      return no_match(reference, v, "reference", yours, "your", result.vertex_map, "reference", "yours");
-    });
+    out.add(
+        [&] { return no_match(reference, v, "reference", yours, "your", result.vertex_map, "reference", "yours"); });
   }
 
   compare_cycles(yours, reference, false, result.vertex_map, to_yours,

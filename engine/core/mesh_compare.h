@@ -46,17 +46,17 @@ struct MeshComparison {
   size_t total_differences = 0;          // every difference found, including those past the cap
 
   // Filled by compare_meshes (up to renumbering) only; ids of the mesh named in each comment.
-  std::vector<VertexId> vertex_map;                // your vertex id -> reference vertex (invalid if unmatched);
-                                                   // size = your vertex capacity
-  std::vector<VertexId> unmatched_vertices;        // yours, no reference vertex at that position
-  std::vector<VertexId> unmatched_reference;       // reference vertices none of yours matched
-  std::vector<FaceId> extra_faces;                 // yours, not in the reference (reversed ones included)
-  std::vector<FaceId> missing_faces;               // the reference's, not in yours (reversed ones included)
-  std::vector<FaceId> reversed_faces;              // yours, in the reference with the opposite orientation
-  std::vector<FaceId> extra_boundaries;            // yours
-  std::vector<FaceId> missing_boundaries;          // the reference's
-  std::vector<EdgeId> extra_edges;                 // yours, joining two vertices the reference does not join
-  std::vector<EdgeId> missing_edges;               // the reference's, joining two vertices yours does not join
+  std::vector<VertexId> vertex_map;           // your vertex id -> reference vertex (invalid if unmatched);
+                                              // size = your vertex capacity
+  std::vector<VertexId> unmatched_vertices;   // yours, no reference vertex at that position
+  std::vector<VertexId> unmatched_reference;  // reference vertices none of yours matched
+  std::vector<FaceId> extra_faces;            // yours, not in the reference (reversed ones included)
+  std::vector<FaceId> missing_faces;          // the reference's, not in yours (reversed ones included)
+  std::vector<FaceId> reversed_faces;         // yours, in the reference with the opposite orientation
+  std::vector<FaceId> extra_boundaries;       // yours
+  std::vector<FaceId> missing_boundaries;     // the reference's
+  std::vector<EdgeId> extra_edges;            // yours, joining two vertices the reference does not join
+  std::vector<EdgeId> missing_edges;          // the reference's, joining two vertices yours does not join
 
   // "equal", or "3 differences; first: <message>".
   std::string summary() const;

@@ -52,7 +52,8 @@ bool MeshPatch::apply_as_edit(HalfedgeMesh& mesh) const {
   }
   for (size_t i = 0; i < slots.size(); ++i) {
     const SlotChange& s = slots[i];
-    if (i > 0 && !(slot_key(slots[i - 1]) < slot_key(s))) return false;  // sorted, each slot once: appends come in order
+    if (i > 0 && !(slot_key(slots[i - 1]) < slot_key(s)))
+      return false;  // sorted, each slot once: appends come in order
     if (!exists(shape_after, s)) return false;
     if (!exists(shape_before, s)) {
       ++appended[index_of(s.kind)];

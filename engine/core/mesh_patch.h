@@ -19,8 +19,8 @@
 #include <vector>
 
 #include "core/change_journal.h"
-#include "core/halfedge_mesh.h"
 #include "core/field_change.h"
+#include "core/halfedge_mesh.h"
 #include "core/slot_values.h"
 
 namespace meshedit {

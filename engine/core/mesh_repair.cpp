@@ -66,10 +66,10 @@ struct Work {
   std::vector<glm::dvec3> positions;
   std::vector<uint32_t> indices;
   std::vector<uint32_t> offsets;
-  std::vector<uint8_t> kept;       // per face
+  std::vector<uint8_t> kept;  // per face
   size_t original_vertices = 0;
-  std::vector<Message> messages;   // formatted once the final numbers are known
-  std::vector<SpotMaker> spots;    // spots[i] for messages[i]
+  std::vector<Message> messages;  // formatted once the final numbers are known
+  std::vector<SpotMaker> spots;   // spots[i] for messages[i]
   RepairReport report;
 
   size_t num_faces() const { return offsets.size() - 1; }
@@ -102,9 +102,7 @@ std::vector<uint32_t> sorted_copy(std::vector<uint32_t> numbers) {
   return numbers;
 }
 
-uint64_t edge_key(uint32_t a, uint32_t b) {
-  return (uint64_t(std::min(a, b)) << 32) | std::max(a, b);
-}
+uint64_t edge_key(uint32_t a, uint32_t b) { return (uint64_t(std::min(a, b)) << 32) | std::max(a, b); }
 
 // Every kept face's edge uses, sorted by edge key, then face: bucketed by the edge's lower vertex (linear), then each
 // small bucket sorted.
@@ -273,11 +271,13 @@ bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
       const Message va = w.vertex_name(a), vb = w.vertex_name(b);
       const std::string faces = number_list(sharing);
       const uint32_t face = u.face;
-      w.say([=](const FinalNumbers& final) {
-        return "the edge between " + va(final) + " and " + vb(final) + " had faces " + faces + ": face " +
-               std::to_string(face) + " detached (its corners there are now new vertices " +
-               std::to_string(final[from_copy]) + " and " + std::to_string(final[to_copy]) + ")";
-      }, spots_of({from_copy, to_copy}, {face}));
+      w.say(
+          [=](const FinalNumbers& final) {
+            return "the edge between " + va(final) + " and " + vb(final) + " had faces " + faces + ": face " +
+                   std::to_string(face) + " detached (its corners there are now new vertices " +
+                   std::to_string(final[from_copy]) + " and " + std::to_string(final[to_copy]) + ")";
+          },
+          spots_of({from_copy, to_copy}, {face}));
     }
   });
   return w.report.detached_faces != before;
@@ -290,7 +290,10 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
   const uint32_t faces = static_cast<uint32_t>(w.num_faces());
   // Neighbours across edges of exactly two faces, with whether the two use the edge the same way.
   std::vector<uint32_t> degree(faces + 1, 0);
-  struct Link { uint32_t f, g; uint8_t same; };
+  struct Link {
+    uint32_t f, g;
+    uint8_t same;
+  };
   std::vector<Link> links;
   for_each_edge(uses, [&](size_t first, size_t last) {
     if (last - first != 2 || uses[first].face == uses[first + 1].face) return;
@@ -328,7 +331,7 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
     if (!orientable) {
       ++w.report.non_orientable_components;
       w.say("the " + std::to_string(component.size()) + " faces joined to face " + std::to_string(seed) +
-            " cannot all agree (a one-sided surface, like a Moebius strip): left as they are",
+                " cannot all agree (a one-sided surface, like a Moebius strip): left as they are",
             spots_of({}, sorted_copy(component)));
       continue;
     }
@@ -350,7 +353,7 @@ void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
     }
     w.report.reversed_faces += reversed.size();
     w.say(std::string(reversed.size() == 1 ? "face " : "faces ") + number_list(reversed) +
-          " reversed to agree with face " + std::to_string(reference),
+              " reversed to agree with face " + std::to_string(reference),
           spots_of({}, sorted_copy(reversed_faces)));
   }
 }
@@ -416,20 +419,22 @@ void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
     for (size_t r = 1; r < moved.size(); ++r) {
       for (size_t f : moved[r]) spot_faces.push_back(uint32_t(f));
     }
-    w.say([=](const FinalNumbers& final) {
-      std::string text = name(final) + " was a bow-tie: split into " + std::to_string(original ? v : final[v]);
-      for (size_t r = 0; r < copies.size(); ++r) {
-        text += (r + 1 == copies.size() ? " and new vertex " : ", new vertex ") + std::to_string(final[copies[r]]);
-      }
-      if (copies.size() == 1) return text + " (" + (moved[1].size() == 1 ? "face " : "faces ") +
-                                     number_list(moved[1]) + " moved)";
-      text += " (";
-      for (size_t r = 1; r < moved.size(); ++r) {
-        text += (r > 1 ? "; " : "") + std::string(moved[r].size() == 1 ? "face " : "faces ") +
-                number_list(moved[r]) + " moved to " + std::to_string(final[copies[r - 1]]);
-      }
-      return text + ")";
-    }, spots_of(std::move(spot_vertices), sorted_copy(std::move(spot_faces))));
+    w.say(
+        [=](const FinalNumbers& final) {
+          std::string text = name(final) + " was a bow-tie: split into " + std::to_string(original ? v : final[v]);
+          for (size_t r = 0; r < copies.size(); ++r) {
+            text += (r + 1 == copies.size() ? " and new vertex " : ", new vertex ") + std::to_string(final[copies[r]]);
+          }
+          if (copies.size() == 1)
+            return text + " (" + (moved[1].size() == 1 ? "face " : "faces ") + number_list(moved[1]) + " moved)";
+          text += " (";
+          for (size_t r = 1; r < moved.size(); ++r) {
+            text += (r > 1 ? "; " : "") + std::string(moved[r].size() == 1 ? "face " : "faces ") +
+                    number_list(moved[r]) + " moved to " + std::to_string(final[copies[r - 1]]);
+          }
+          return text + ")";
+        },
+        spots_of(std::move(spot_vertices), sorted_copy(std::move(spot_faces))));
   }
 }
 
@@ -456,7 +461,7 @@ PolygonMesh finish(Work& w, Renumbering& numbers) {
   if (!unused.empty()) {
     w.report.dropped_vertices = unused.size();
     w.say(std::string(unused.size() == 1 ? "vertex " : "vertices ") + number_list(unused) +
-          (unused.size() == 1 ? " was" : " were") + " used by no face: dropped",
+              (unused.size() == 1 ? " was" : " were") + " used by no face: dropped",
           spots_of({}, {}));
   }
   out.indices.reserve(w.indices.size());

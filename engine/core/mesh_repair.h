@@ -46,15 +46,15 @@ struct RepairSpots {
 };
 
 struct RepairReport {
-  std::vector<std::string> changes;  // one sentence per change, in the order of the steps
-  std::vector<RepairSpots> spots;    // spots[i]: where changes[i] is in the repaired polygons
-  size_t dropped_bad_faces = 0;      // step 1
-  size_t dropped_repeated_faces = 0; // step 2
-  size_t detached_faces = 0;         // step 3
-  size_t reversed_faces = 0;         // step 4
+  std::vector<std::string> changes;   // one sentence per change, in the order of the steps
+  std::vector<RepairSpots> spots;     // spots[i]: where changes[i] is in the repaired polygons
+  size_t dropped_bad_faces = 0;       // step 1
+  size_t dropped_repeated_faces = 0;  // step 2
+  size_t detached_faces = 0;          // step 3
+  size_t reversed_faces = 0;          // step 4
   size_t non_orientable_components = 0;
-  size_t split_vertices = 0;         // step 5: vertices that were bow-ties
-  size_t dropped_vertices = 0;       // step 6
+  size_t split_vertices = 0;    // step 5: vertices that were bow-ties
+  size_t dropped_vertices = 0;  // step 6
 
   bool empty() const { return changes.empty(); }
   // One line: "nothing to repair", or the counts ("repaired: 1 bow-tie vertex split, 2 faces reversed").

@@ -38,8 +38,8 @@ std::string RepairReport::summary() const {
   std::vector<std::string> parts;
   if (split_vertices) parts.push_back(count(split_vertices, "bow-tie vertex split", "bow-tie vertices split"));
   if (detached_faces) {
-    parts.push_back(count(detached_faces, "face detached from an edge of 3+ faces",
-                          "faces detached from edges of 3+ faces"));
+    parts.push_back(
+        count(detached_faces, "face detached from an edge of 3+ faces", "faces detached from edges of 3+ faces"));
   }
   if (dropped_repeated_faces) {
     parts.push_back(count(dropped_repeated_faces, "repeated face dropped", "repeated faces dropped"));

@@ -14,9 +14,9 @@ namespace meshedit {
 
 struct MeshStats {
   size_t vertices = 0, edges = 0, faces = 0, halfedges = 0, boundary_loops = 0;
-  size_t components = 0;       // connected pieces (through edges)
+  size_t components = 0;  // connected pieces (through edges)
   long euler_characteristic = 0;
-  std::optional<long> genus;   // absent when the count does not come out whole (a broken mesh)
+  std::optional<long> genus;  // absent when the count does not come out whole (a broken mesh)
   bool closed() const { return boundary_loops == 0; }
   bool triangles_only = true;  // every real face has 3 sides
 };

@@ -87,8 +87,8 @@ struct MeshStorage {
   };
   static Arrays arrays(HalfedgeMesh& m) {
     m.journal_.before_bulk_write();
-    return {m.h_,          m.h_alive_, m.v_halfedge_, m.v_position_, m.v_alive_,  m.e_halfedge_,
-            m.e_alive_,    m.f_halfedge_, m.f_alive_, m.b_halfedge_,  m.b_alive_};
+    return {m.h_,       m.h_alive_,    m.v_halfedge_, m.v_position_, m.v_alive_, m.e_halfedge_,
+            m.e_alive_, m.f_halfedge_, m.f_alive_,    m.b_halfedge_, m.b_alive_};
   }
   // Sets the live counts from the alive flags' sizes after a builder filled the arrays (every element live but
   // `dead_vertices` unused input vertices).

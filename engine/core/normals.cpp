@@ -215,9 +215,8 @@ void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& norma
     std::fill(sums_of(chunk), sums_of(chunk) + vertices, glm::dvec3(0.0));
   });
   // Striped, not halved: the first faces after Loop (the old ids) cost about twice as much as the rest.
-  parallel_stripes(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
-    add_face_terms(mesh, begin, end, sums_of(chunk));
-  });
+  parallel_stripes(threads, faces,
+                   [&](size_t chunk, size_t begin, size_t end) { add_face_terms(mesh, begin, end, sums_of(chunk)); });
   parallel_for(threads, vertices, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       glm::dvec3 sum = normals[v];
@@ -244,8 +243,8 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
   parallel_for(threads, mesh.vertex_capacity(), [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       glm::dvec3 sum;
-      normals[i] = sum_around_vertex(mesh, VertexId(static_cast<uint32_t>(i)), term, sum) ? unit_or_zero(sum)
-                                                                                           : glm::dvec3(0.0);
+      normals[i] =
+          sum_around_vertex(mesh, VertexId(static_cast<uint32_t>(i)), term, sum) ? unit_or_zero(sum) : glm::dvec3(0.0);
     }
   });
 }

@@ -45,14 +45,14 @@ struct Swatches {
 };
 
 // In the order of the fields: orange, sky blue, bluish green, yellow, blue, vermillion, reddish purple, grey, ink.
-inline constexpr Swatches kDarkSwatches{rgb_hex(0xE69F00), rgb_hex(0x56B4E9), rgb_hex(0x009E73), rgb_hex(0xF0E442),
-                                        rgb_hex(0x0072B2), rgb_hex(0xD55E00), rgb_hex(0xCC79A7), rgb_hex(0x8C8C8C),
-                                        rgb_hex(0xF2F2F2)};
+inline constexpr Swatches kDarkSwatches{rgb_hex(0xE69F00), rgb_hex(0x56B4E9), rgb_hex(0x009E73),
+                                        rgb_hex(0xF0E442), rgb_hex(0x0072B2), rgb_hex(0xD55E00),
+                                        rgb_hex(0xCC79A7), rgb_hex(0x8C8C8C), rgb_hex(0xF2F2F2)};
 // Darker where a colour must stand out more: yellow and sky blue as light as a contrast of 3 allows, vermillion and
 // blue much darker, so that yellow and vermillion (close in hue for deuteranopes) differ in lightness.
-inline constexpr Swatches kLightSwatches{rgb_hex(0xA8660A), rgb_hex(0x3A8CC0), rgb_hex(0x007A5A), rgb_hex(0x938A1E),
-                                         rgb_hex(0x004E7C), rgb_hex(0x8A3A00), rgb_hex(0xA0507E), rgb_hex(0x6B6B6B),
-                                         rgb_hex(0x1A1A1A)};
+inline constexpr Swatches kLightSwatches{rgb_hex(0xA8660A), rgb_hex(0x3A8CC0), rgb_hex(0x007A5A),
+                                         rgb_hex(0x938A1E), rgb_hex(0x004E7C), rgb_hex(0x8A3A00),
+                                         rgb_hex(0xA0507E), rgb_hex(0x6B6B6B), rgb_hex(0x1A1A1A)};
 
 // What is not a swatch: the surfaces things are drawn on.
 struct Neutrals {
@@ -66,11 +66,21 @@ struct Neutrals {
 };
 
 // Dark: a blue-grey view, grey faces (so every highlight hue shows on them) with brown back sides, a near-black wire.
-inline constexpr Neutrals kDarkNeutrals{rgb_hex(0x212429), rgb_hex(0x17171A), rgb_hex(0x121218), rgb_hex(0xA7AEBD),
-                                        rgb_hex(0x8C5A48), rgb_hex(0x101114), glm::vec4(0.0f, 0.0f, 0.0f, 0.75f)};
+inline constexpr Neutrals kDarkNeutrals{rgb_hex(0x212429),
+                                        rgb_hex(0x17171A),
+                                        rgb_hex(0x121218),
+                                        rgb_hex(0xA7AEBD),
+                                        rgb_hex(0x8C5A48),
+                                        rgb_hex(0x101114),
+                                        glm::vec4(0.0f, 0.0f, 0.0f, 0.75f)};
 // Light: a near-white view and panels, pale blue-grey faces with pale brown back sides, a dark wire, white label boxes.
-inline constexpr Neutrals kLightNeutrals{rgb_hex(0xEEF0F2), rgb_hex(0xF7F7F5), rgb_hex(0xFAFAF8), rgb_hex(0xAFC0D8),
-                                         rgb_hex(0xD9A58F), rgb_hex(0x2A2A2E), glm::vec4(1.0f, 1.0f, 1.0f, 0.92f)};
+inline constexpr Neutrals kLightNeutrals{rgb_hex(0xEEF0F2),
+                                         rgb_hex(0xF7F7F5),
+                                         rgb_hex(0xFAFAF8),
+                                         rgb_hex(0xAFC0D8),
+                                         rgb_hex(0xD9A58F),
+                                         rgb_hex(0x2A2A2E),
+                                         glm::vec4(1.0f, 1.0f, 1.0f, 0.92f)};
 
 inline constexpr size_t kLevelColours = 3;  // de Casteljau levels 1, 2, 3, 4... take these in turn
 inline constexpr float kGhostAlpha = 0.6f;  // the reference's level, drawn under yours in the curve view
@@ -106,7 +116,7 @@ struct Palette {
 
   // Panel text and marks.
   glm::vec3 error, warning, ok, link, dead, console_input;
-  glm::vec3 emphasis;      // text to read first: a lesson's hint, the step a replay is at
+  glm::vec3 emphasis;        // text to read first: a lesson's hint, the step a replay is at
   glm::vec4 changed_cell;    // behind a pointer-table cell the last edit changed
   glm::vec4 differing_cell;  // behind an exercise's cell where yours and the reference's differ
 };
@@ -180,9 +190,9 @@ inline glm::vec3 level_colour(const Palette& palette, int k) {
 inline glm::vec3 swatch_in_theme(glm::vec3 dark_swatch, Theme theme) {
   const Swatches& from = kDarkSwatches;
   const Swatches& to = palette_for(theme).swatches;
-  const glm::vec3 Swatches::*names[] = {&Swatches::orange, &Swatches::sky_blue,       &Swatches::bluish_green,
-                                        &Swatches::yellow, &Swatches::blue,           &Swatches::vermillion,
-                                        &Swatches::reddish_purple, &Swatches::grey, &Swatches::ink};
+  const glm::vec3 Swatches::*names[] = {&Swatches::orange,         &Swatches::sky_blue, &Swatches::bluish_green,
+                                        &Swatches::yellow,         &Swatches::blue,     &Swatches::vermillion,
+                                        &Swatches::reddish_purple, &Swatches::grey,     &Swatches::ink};
   for (const auto name : names) {
     if (from.*name == dark_swatch) return to.*name;
   }

@@ -60,15 +60,19 @@ class CheckedBefore : public StateBefore {
   // walk meets a dead halfedge or does not close.
   template <class Visit>
   size_t fan(VertexId v, Visit&& visit) const {
-    return walk(halfedge(v), [&](HalfedgeId h) {
-      const HalfedgeId twin = record(h).twin;
-      return alive(twin) ? record(twin).next : HalfedgeId();
-    }, visit);
+    return walk(
+        halfedge(v),
+        [&](HalfedgeId h) {
+          const HalfedgeId twin = record(h).twin;
+          return alive(twin) ? record(twin).next : HalfedgeId();
+        },
+        visit);
   }
   // The same for the halfedges of live face or boundary loop f (its next-cycle).
   template <class Visit>
   size_t cycle(FaceId f, Visit&& visit) const {
-    return walk(halfedge(f), [&](HalfedgeId h) { return record(h).next; }, visit);
+    return walk(
+        halfedge(f), [&](HalfedgeId h) { return record(h).next; }, visit);
   }
   // The halfedge whose next is live halfedge x: the twin of the one before x in x's vertex fan. Invalid if none.
   HalfedgeId prev(HalfedgeId x) const {
@@ -104,7 +108,7 @@ struct Suspects {
   std::vector<EdgeId> edges;
   std::vector<FaceId> faces;  // faces and boundary loops
   std::vector<VertexId> vertices;
-  bool walks_closed = true;   // false when a walk in the state before failed (it was not clean after all)
+  bool walks_closed = true;  // false when a walk in the state before failed (it was not clean after all)
 };
 
 Suspects find_suspects(const HalfedgeMesh& after, const MeshPatch& patch, const CheckedBefore& before) {
@@ -204,11 +208,13 @@ bool edit_keeps_clean(const HalfedgeMesh& after, const MeshPatch& patch) {
   // The sums: B's cycles and fans held live_before halfedges each way; swap the re-walked ones' lengths.
   const auto unused = [](HalfedgeId) {};
   int64_t in_cycles = live_before, in_fans = live_before;
-  return swap_lengths(in_cycles, s.faces, before, after, [&](FaceId f) { return before.cycle(f, unused); },
-                      [&](FaceId f) { return clean_rules::cycle_length(after, f, live, false); }) &&
+  return swap_lengths(
+             in_cycles, s.faces, before, after, [&](FaceId f) { return before.cycle(f, unused); },
+             [&](FaceId f) { return clean_rules::cycle_length(after, f, live, false); }) &&
          in_cycles == int64_t(live) &&
-         swap_lengths(in_fans, s.vertices, before, after, [&](VertexId v) { return before.fan(v, unused); },
-                      [&](VertexId v) { return clean_rules::fan_length(after, v, live); }) &&
+         swap_lengths(
+             in_fans, s.vertices, before, after, [&](VertexId v) { return before.fan(v, unused); },
+             [&](VertexId v) { return clean_rules::fan_length(after, v, live); }) &&
          in_fans == int64_t(live);
 }
 

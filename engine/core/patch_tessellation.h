@@ -24,10 +24,10 @@ namespace meshedit {
 
 // What welding did, for the console and for tests.
 struct TessellationReport {
-  size_t samples = 0;                 // patches * (resolution + 1)^2 evaluated points
-  size_t welded_vertices = 0;         // distinct vertices after welding (before vertex splits)
-  size_t degenerate_triangles = 0;    // triangles dropped because welding merged two of their corners
-  size_t vertex_splits = 0;           // extra vertex copies made so that every vertex has one fan
+  size_t samples = 0;               // patches * (resolution + 1)^2 evaluated points
+  size_t welded_vertices = 0;       // distinct vertices after welding (before vertex splits)
+  size_t degenerate_triangles = 0;  // triangles dropped because welding merged two of their corners
+  size_t vertex_splits = 0;         // extra vertex copies made so that every vertex has one fan
 };
 
 inline constexpr int kDefaultPatchResolution = 16;  // CS184 samples each patch on a 16x16 grid

@@ -17,9 +17,9 @@
 namespace meshedit {
 
 struct SlotValues {
-  HalfedgeRecord record;      // halfedges: next, twin, vertex, edge, face
-  glm::dvec3 position{0.0};   // vertices
-  HalfedgeId halfedge;        // vertices, edges, faces, boundary loops
+  HalfedgeRecord record;     // halfedges: next, twin, vertex, edge, face
+  glm::dvec3 position{0.0};  // vertices
+  HalfedgeId halfedge;       // vertices, edges, faces, boundary loops
   bool alive = false;
 };
 // Field by field; positions bit for bit (as diff() compares them).

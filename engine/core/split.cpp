@@ -52,10 +52,10 @@ OpResult<VertexId> split(HalfedgeMesh& mesh, EdgeId e) {
   const EdgeId ed = interior ? mesh.new_edge() : EdgeId();
   const FaceId g0 = mesh.new_face();
   const FaceId g1 = interior ? mesh.new_face() : FaceId();
-  const HalfedgeId n0 = mesh.new_halfedge();  // a->m
-  const HalfedgeId n1 = mesh.new_halfedge();  // m->a
-  const HalfedgeId n2 = mesh.new_halfedge();  // m->c
-  const HalfedgeId n3 = mesh.new_halfedge();  // c->m
+  const HalfedgeId n0 = mesh.new_halfedge();                            // a->m
+  const HalfedgeId n1 = mesh.new_halfedge();                            // m->a
+  const HalfedgeId n2 = mesh.new_halfedge();                            // m->c
+  const HalfedgeId n3 = mesh.new_halfedge();                            // c->m
   const HalfedgeId n4 = interior ? mesh.new_halfedge() : HalfedgeId();  // m->d
   const HalfedgeId n5 = interior ? mesh.new_halfedge() : HalfedgeId();  // d->m
 

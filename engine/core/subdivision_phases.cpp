@@ -156,8 +156,7 @@ std::string SubdivisionPhases::computed_summary() const {
   if (!computed()) return "";
   const MeshCounts& n = computed_from_;
   switch (scheme_) {
-    case SubdivisionScheme::Loop:
-      return points(n.vertices, "vertex position") + ", " + points(n.edges, "edge point");
+    case SubdivisionScheme::Loop: return points(n.vertices, "vertex position") + ", " + points(n.edges, "edge point");
     case SubdivisionScheme::CatmullClark:
       return points(n.faces, "face point") + ", " + points(n.edges, "edge point") + ", " +
              points(n.vertices, "vertex point");

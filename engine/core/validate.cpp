@@ -172,11 +172,15 @@ class Validator {
       const VertexId v = m_.vertex(h);
       const EdgeId e = m_.edge(h);
       const FaceId f = m_.face(h);
-      if (m_.alive(n)) ++next_count_[n.index]; else dead(h, "next", n);
+      if (m_.alive(n)) ++next_count_[n.index];
+      else dead(h, "next", n);
       if (!m_.alive(t)) dead(h, "twin", t);
-      if (m_.alive(v)) ++leaving_[v.index]; else dead(h, "vertex", v);
-      if (m_.alive(e)) ++on_edge_[e.index]; else dead(h, "edge", e);
-      if (m_.alive(f)) ++in_face_[face_slot(f)]; else dead(h, "face", f);
+      if (m_.alive(v)) ++leaving_[v.index];
+      else dead(h, "vertex", v);
+      if (m_.alive(e)) ++on_edge_[e.index];
+      else dead(h, "edge", e);
+      if (m_.alive(f)) ++in_face_[face_slot(f)];
+      else dead(h, "face", f);
     }
     for (VertexId v : m_.vertices()) {
       if (!m_.alive(m_.halfedge(v))) dead(v, "halfedge", m_.halfedge(v));

@@ -51,16 +51,16 @@ enum class Invariant {
 const char* invariant_name(Invariant invariant);
 
 struct Violation {
-  ElementRef element;       // the element to select to see the problem
+  ElementRef element;  // the element to select to see the problem
   Invariant invariant;
-  std::string message;      // e.g. "h12.twin is h40, but h40.twin is h13 (should be h12)"
+  std::string message;  // e.g. "h12.twin is h40, but h40.twin is h13 (should be h12)"
 };
 
 struct ValidationReport {
   // At most the cap passed to validate(): sorted by invariant (enum order), then element (kind, then id),
   // then the order found; the cap keeps the first ones in that order.
   std::vector<Violation> violations;
-  size_t total = 0;                   // every violation found, including those past the cap
+  size_t total = 0;  // every violation found, including those past the cap
 
   bool ok() const { return total == 0; }
   // "valid" or "3 problems; first: h12.twin is h40, but h40.twin is h13 (should be h12)"

@@ -148,9 +148,10 @@ void read_until_closed(pid_t pid, Stream (&streams)[3], std::chrono::steady_cloc
       result.timed_out = true;
     }
     // After the kill the pipes close at once; until then wake at the deadline.
-    const int wait_ms = result.timed_out
-                            ? 1000
-                            : static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
+    const int wait_ms =
+        result.timed_out
+            ? 1000
+            : static_cast<int>(std::chrono::duration_cast<std::chrono::milliseconds>(deadline - now).count()) + 1;
     const int ready = poll(fds, n, wait_ms);
     if (ready < 0) {
       if (errno == EINTR) continue;
@@ -225,7 +226,8 @@ ChildResult run_in_child(const ChildLimits& limits, const std::function<std::str
 std::string describe_child_end(const ChildResult& result, double time_limit) {
   std::ostringstream s;
   if (result.timed_out) {
-    s << "stopped after " << time_limit << " s (time limit): the test was still running (an endless loop, or one "
+    s << "stopped after " << time_limit
+      << " s (time limit): the test was still running (an endless loop, or one "
          "very long call such as a string pattern)";
   } else if (result.signal == SIGXCPU) {
     s << "stopped: CPU time limit exceeded";

@@ -23,23 +23,23 @@
 namespace meshedit {
 
 struct ChildLimits {
-  double wall_seconds = 10.0;                 // the parent kills the child after this
-  size_t memory_bytes = size_t(1) << 30;      // address space the child may add after the fork; 0: no limit
-  size_t output_bytes = size_t(64) << 10;     // of stdout and of stderr, each
+  double wall_seconds = 10.0;              // the parent kills the child after this
+  size_t memory_bytes = size_t(1) << 30;   // address space the child may add after the fork; 0: no limit
+  size_t output_bytes = size_t(64) << 10;  // of stdout and of stderr, each
   size_t report_bytes = size_t(16) << 20;
   bool filter_syscalls = true;
 };
 
 struct ChildResult {
-  std::string report;           // what the body returned (empty if it did not finish)
-  bool report_complete = false; // the child finished writing it and exited normally
-  std::string out;              // the child's stdout and stderr, capped
+  std::string report;            // what the body returned (empty if it did not finish)
+  bool report_complete = false;  // the child finished writing it and exited normally
+  std::string out;               // the child's stdout and stderr, capped
   std::string err;
-  bool timed_out = false;       // killed by the parent at the deadline
-  int exit_code = -1;           // when it exited
-  int signal = 0;               // when a signal ended it
+  bool timed_out = false;  // killed by the parent at the deadline
+  int exit_code = -1;      // when it exited
+  int signal = 0;          // when a signal ended it
   double seconds = 0.0;
-  std::string filter_problem;   // why the syscall filter could not be installed ("" when it was)
+  std::string filter_problem;  // why the syscall filter could not be installed ("" when it was)
 };
 
 // Runs `body` in a child. Throws GradeError only if the child cannot be started (fork or pipe failed).

@@ -118,8 +118,9 @@ std::string class_summary_csv(const std::vector<ClassEntry>& entries) {
   std::ostringstream s;
   s << "submission,status,score,max_score,passed,failed,results,problem\n";
   for (const auto& e : entries) {
-    s << csv_field(e.name) << ',' << e.status << ',' << format_number(e.score) << ',' << format_number(e.max_score) << ','
-      << e.passed << ',' << e.failed << ',' << csv_field(e.results.string()) << ',' << csv_field(e.problem) << '\n';
+    s << csv_field(e.name) << ',' << e.status << ',' << format_number(e.score) << ',' << format_number(e.max_score)
+      << ',' << e.passed << ',' << e.failed << ',' << csv_field(e.results.string()) << ',' << csv_field(e.problem)
+      << '\n';
   }
   return s.str();
 }
@@ -127,9 +128,15 @@ std::string class_summary_csv(const std::vector<ClassEntry>& entries) {
 std::string class_summary_json(const std::vector<ClassEntry>& entries) {
   nlohmann::json j = nlohmann::json::array();
   for (const auto& e : entries) {
-    j.push_back({{"submission", e.name},  {"folder", e.folder.string()}, {"status", e.status},
-                 {"score", e.score},      {"max_score", e.max_score},    {"passed", e.passed},
-                 {"failed", e.failed},    {"results", e.results.string()}, {"problem", e.problem}});
+    j.push_back({{"submission", e.name},
+                 {"folder", e.folder.string()},
+                 {"status", e.status},
+                 {"score", e.score},
+                 {"max_score", e.max_score},
+                 {"passed", e.passed},
+                 {"failed", e.failed},
+                 {"results", e.results.string()},
+                 {"problem", e.problem}});
   }
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }

@@ -21,11 +21,11 @@
 namespace meshedit {
 
 struct ClassEntry {
-  std::string name;                 // the submission's name (its folder's base name)
+  std::string name;  // the submission's name (its folder's base name)
   std::filesystem::path folder;
-  std::filesystem::path results;    // out/<name>/results.json
-  std::string status = "error";     // "graded" or "error"
-  std::string problem;              // why, for "error"
+  std::filesystem::path results;  // out/<name>/results.json
+  std::string status = "error";   // "graded" or "error"
+  std::string problem;            // why, for "error"
   double score = 0.0;
   double max_score = 0.0;
   size_t passed = 0;

@@ -58,9 +58,7 @@ std::optional<glm::dvec3> raw_point(lua_State* L, int index) {
   return p;
 }
 
-bool is_list(lua_State* L, int index) {
-  return lua_type(L, index) == LUA_TTABLE && !raw_point(L, index);
-}
+bool is_list(lua_State* L, int index) { return lua_type(L, index) == LUA_TTABLE && !raw_point(L, index); }
 
 std::string quote(const char* s, size_t len) {
   constexpr size_t kMax = 60;
@@ -249,7 +247,8 @@ std::optional<std::string> near_difference(lua_State* L, int a, int b, double to
   std::ostringstream tol;
   tol << " (tolerance " << tolerance << ")";
   if (lua_type(L, b) == LUA_TNUMBER) {
-    if (lua_type(L, a) != LUA_TNUMBER) return where + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
+    if (lua_type(L, a) != LUA_TNUMBER)
+      return where + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
     const double x = lua_tonumber(L, a);
     const double y = lua_tonumber(L, b);
     if (!(std::abs(x - y) <= tolerance)) {
@@ -269,7 +268,8 @@ std::optional<std::string> near_difference(lua_State* L, int a, int b, double to
     return std::nullopt;
   }
   if (is_list(L, b) && depth <= 32) {
-    if (!is_list(L, a)) return where + "expected a list of " + std::to_string(lua_rawlen(L, b)) + ", got " + describe_value(L, a);
+    if (!is_list(L, a))
+      return where + "expected a list of " + std::to_string(lua_rawlen(L, b)) + ", got " + describe_value(L, a);
     const lua_Integer na = static_cast<lua_Integer>(lua_rawlen(L, a));
     const lua_Integer nb = static_cast<lua_Integer>(lua_rawlen(L, b));
     if (na != nb) return where + "expected " + count_items(nb) + ", got " + std::to_string(na);
@@ -290,7 +290,8 @@ std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::s
                                            bool& failed) {
   auto mesh = to_mesh(L, index);
   if (!mesh) {
-    recorder(L).record(false, join(message, std::string("expected ") + role + " mesh, got " + describe_value(L, index)));
+    recorder(L).record(false,
+                       join(message, std::string("expected ") + role + " mesh, got " + describe_value(L, index)));
     failed = true;
   }
   return mesh;
@@ -299,7 +300,9 @@ std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::s
 // ---- the functions --------------------------------------------------------------------------------------
 
 int expect_truthy(lua_State* L) {
-  return record(L, lua_toboolean(L, 1), join(message_at(L, 2), lua_toboolean(L, 1) ? "" : "expected a true value, got " + describe_value(L, 1)));
+  return record(
+      L, lua_toboolean(L, 1),
+      join(message_at(L, 2), lua_toboolean(L, 1) ? "" : "expected a true value, got " + describe_value(L, 1)));
 }
 
 int expect_call(lua_State* L) {  // expect(value, message): argument 1 is the table itself
@@ -357,9 +360,10 @@ int expect_compare(lua_State* L) {
   CompareOptions options;
   options.position_tolerance = tolerance;
   options.max_differences = kMaxListed;
-  const MeshComparison c = Exact ? compare_meshes_exact(*yours, *reference, options)
-                                 : compare_meshes(*yours, *reference, options);
-  if (c.equal) return record(L, true, join(message, Exact ? "same pointers as the reference" : "same mesh as the reference"));
+  const MeshComparison c =
+      Exact ? compare_meshes_exact(*yours, *reference, options) : compare_meshes(*yours, *reference, options);
+  if (c.equal)
+    return record(L, true, join(message, Exact ? "same pointers as the reference" : "same mesh as the reference"));
   return record(L, false, join(message, first_items(c.differences, c.total_differences)));
 }
 
@@ -383,12 +387,14 @@ int expect_counts(lua_State* L) {
     if (lua_getfield(L, 2, c.name) != LUA_TNIL) {
       const lua_Integer want = luaL_checkinteger(L, -1);
       if (want != lua_Integer(c.value)) {
-        wrong.push_back(std::string(c.name) + ": expected " + std::to_string(want) + ", got " + std::to_string(c.value));
+        wrong.push_back(std::string(c.name) + ": expected " + std::to_string(want) + ", got " +
+                        std::to_string(c.value));
       }
     }
     lua_pop(L, 1);
   }
-  return record(L, wrong.empty(), join(message, wrong.empty() ? "counts as expected" : first_items(wrong, wrong.size())));
+  return record(L, wrong.empty(),
+                join(message, wrong.empty() ? "counts as expected" : first_items(wrong, wrong.size())));
 }
 
 int expect_pass(lua_State* L) { return record(L, true, message_at(L, 1)); }

@@ -16,12 +16,12 @@ namespace meshedit {
 
 // How a test run ended when it did not run to its end.
 enum class RunEnd {
-  Completed,   // the test function returned
-  Error,       // a Lua error (the student's or the suite's)
-  LoadError,   // a student file did not compile or failed while it ran
-  Timeout,     // the time limit or the instruction budget (in the child), or the parent's wall-clock kill
-  Memory,      // the Lua memory cap
-  Crash,       // the child died without a report (a signal, an exit, an unreadable report)
+  Completed,  // the test function returned
+  Error,      // a Lua error (the student's or the suite's)
+  LoadError,  // a student file did not compile or failed while it ran
+  Timeout,    // the time limit or the instruction budget (in the child), or the parent's wall-clock kill
+  Memory,     // the Lua memory cap
+  Crash,      // the child died without a report (a signal, an exit, an unreadable report)
 };
 
 const char* run_end_name(RunEnd end);  // "completed", "error", "load error", "timeout", "memory", "crash"
@@ -36,26 +36,26 @@ struct TestRun {
   std::vector<CheckResult> checks;
   std::optional<double> fraction;  // set by expect.score(f): the share of the points, overriding the checks
   RunEnd end = RunEnd::Completed;
-  std::string error;               // the message when end != Completed
-  std::string output;              // what the student's code printed (capped)
+  std::string error;   // the message when end != Completed
+  std::string output;  // what the student's code printed (capped)
   bool output_truncated = false;
 };
 
 // A test as the suite declares it (everything the parent needs to run and report it).
 struct TestSpec {
-  std::string number;                   // "1.2"; defaults to the 1-based position
+  std::string number;  // "1.2"; defaults to the 1-based position
   std::string name;
   double points = 1.0;
-  std::string visibility = "visible";   // visible | hidden | after_due_date | after_published
-  double time_limit = 10.0;             // seconds of wall clock for the whole test
-  size_t memory_mb = 256;               // the student state's Lua memory cap
-  bool partial = false;                 // score = points * passed checks / checks
-  bool extra_credit = false;            // its points add on top of the base points (max_score 0 in results)
-  std::vector<std::string> files;       // student files loaded for this test
-  std::vector<std::string> reference;   // reference functions installed in the student's globals
-  std::vector<std::string> allow_api;   // mesh API normally hidden from students that this test allows
+  std::string visibility = "visible";  // visible | hidden | after_due_date | after_published
+  double time_limit = 10.0;            // seconds of wall clock for the whole test
+  size_t memory_mb = 256;              // the student state's Lua memory cap
+  bool partial = false;                // score = points * passed checks / checks
+  bool extra_credit = false;           // its points add on top of the base points (max_score 0 in results)
+  std::vector<std::string> files;      // student files loaded for this test
+  std::vector<std::string> reference;  // reference functions installed in the student's globals
+  std::vector<std::string> allow_api;  // mesh API normally hidden from students that this test allows
   std::vector<std::string> tags;
-  int run_ref = -1;                     // registry reference of the run function in the suite's state
+  int run_ref = -1;  // registry reference of the run function in the suite's state
 };
 
 // A graded test, ready for the writers.
@@ -77,10 +77,10 @@ struct TestResult {
 struct GradeReport {
   std::string suite_name;
   std::vector<TestResult> tests;
-  std::string output;  // top-level text: the suite, the files found and whether they compile
-  double score = 0.0;          // base and extra credit together
-  double max_score = 0.0;      // the base points: a submission without the extra credit can reach 100%
-  double extra_points = 0.0;   // what the extra-credit tests can add on top
+  std::string output;           // top-level text: the suite, the files found and whether they compile
+  double score = 0.0;           // base and extra credit together
+  double max_score = 0.0;       // the base points: a submission without the extra credit can reach 100%
+  double extra_points = 0.0;    // what the extra-credit tests can add on top
   double execution_time = 0.0;  // seconds
 
   size_t passed() const;

@@ -22,7 +22,8 @@ constexpr size_t kFailuresShown = 8;
 double round_score(double x) { return std::round(x * 1e6) / 1e6; }
 
 RunEnd end_from_name(const std::string& name) {
-  for (RunEnd e : {RunEnd::Completed, RunEnd::Error, RunEnd::LoadError, RunEnd::Timeout, RunEnd::Memory, RunEnd::Crash}) {
+  for (RunEnd e :
+       {RunEnd::Completed, RunEnd::Error, RunEnd::LoadError, RunEnd::Timeout, RunEnd::Memory, RunEnd::Crash}) {
     if (name == run_end_name(e)) return e;
   }
   throw GradeError("unknown end '" + name + "' in a test report");
@@ -76,7 +77,8 @@ TestRun decode_test_run(const std::string& text) {
   TestRun run;
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
-    for (const auto& c : j.at("checks")) run.checks.push_back({c.at("passed").get<bool>(), c.at("message").get<std::string>()});
+    for (const auto& c : j.at("checks"))
+      run.checks.push_back({c.at("passed").get<bool>(), c.at("message").get<std::string>()});
     if (j.contains("fraction")) run.fraction = j.at("fraction").get<double>();
     run.end = end_from_name(j.at("end").get<std::string>());
     run.error = j.at("error").get<std::string>();
@@ -121,8 +123,11 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
 
   std::ostringstream out;
   if (stopped) {
-    out << (run.end == RunEnd::Timeout ? "Timed out: " : run.end == RunEnd::Memory ? "Out of memory: "
-            : run.end == RunEnd::Crash ? "Crashed: " : run.end == RunEnd::LoadError ? "Load error: " : "Error: ")
+    out << (run.end == RunEnd::Timeout     ? "Timed out: "
+            : run.end == RunEnd::Memory    ? "Out of memory: "
+            : run.end == RunEnd::Crash     ? "Crashed: "
+            : run.end == RunEnd::LoadError ? "Load error: "
+                                           : "Error: ")
         << run.error << "\n";
     if (run.end == RunEnd::Timeout || run.end == RunEnd::Memory) {
       if (const std::string hint = unfinished_hint(spec); !hint.empty()) out << hint << "\n";
@@ -136,7 +141,8 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
     if (shown++ < kFailuresShown) out << "FAILED: " << c.message << "\n";
     if (r.failure.empty()) r.failure = c.message;
   }
-  if (shown > kFailuresShown) out << "... and " << plural(shown - kFailuresShown, "more failed check", "more failed checks") << "\n";
+  if (shown > kFailuresShown)
+    out << "... and " << plural(shown - kFailuresShown, "more failed check", "more failed checks") << "\n";
   if (r.passed) {
     out << (run.checks.empty() ? std::string("Passed.") : "Passed: " + plural(passed, "check", "checks") + ".") << "\n";
   } else if (!run.checks.empty()) {

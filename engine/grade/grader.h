@@ -28,8 +28,8 @@
 namespace meshedit {
 
 struct GradeOptions {
-  double kill_grace_seconds = 1.0;        // added to a test's time limit before the parent kills its child
-  double time_limit_cap = 0.0;            // when > 0, no test gets more seconds than this (quick checks)
+  double kill_grace_seconds = 1.0;  // added to a test's time limit before the parent kills its child
+  double time_limit_cap = 0.0;      // when > 0, no test gets more seconds than this (quick checks)
   size_t child_memory_bytes = size_t(2) << 30;
   bool filter_syscalls = true;
   std::function<void(const TestResult&)> on_test;  // called after each test (progress)

@@ -73,9 +73,13 @@ std::string gradescope_json(const GradeReport& report) {
   j["extra_data"] = {{"grader", "meshedit grade"}, {"suite", report.suite_name}};
   j["tests"] = json::array();
   for (const auto& t : report.tests) {
-    json test = {{"number", t.number},   {"name", t.name},     {"score", t.score},
-                 {"max_score", t.max_score}, {"status", t.passed ? "passed" : "failed"},
-                 {"output", t.output},   {"visibility", t.visibility}};
+    json test = {{"number", t.number},
+                 {"name", t.name},
+                 {"score", t.score},
+                 {"max_score", t.max_score},
+                 {"status", t.passed ? "passed" : "failed"},
+                 {"output", t.output},
+                 {"visibility", t.visibility}};
     if (!t.tags.empty()) test["tags"] = t.tags;
     j["tests"].push_back(std::move(test));
   }
@@ -158,8 +162,7 @@ void write_file_atomically(const std::filesystem::path& path, const std::string&
   std::filesystem::path folder = path.parent_path();
   std::error_code ec;
   if (!folder.empty()) std::filesystem::create_directories(folder, ec);
-  const std::filesystem::path temporary =
-      path.string() + ".tmp" + std::to_string(static_cast<long>(getpid()));
+  const std::filesystem::path temporary = path.string() + ".tmp" + std::to_string(static_cast<long>(getpid()));
   {
     std::ofstream out(temporary, std::ios::binary | std::ios::trunc);
     if (!out) throw GradeError("cannot write " + path.string());

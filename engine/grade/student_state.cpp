@@ -6,11 +6,11 @@
 
 #include <lua.hpp>
 
-#include "script/reference_functions.h"
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
 #include "script/binding_support.h"
 #include "script/mesh_bindings.h"
+#include "script/reference_functions.h"
 #include "script/student_api.h"
 
 namespace meshedit {

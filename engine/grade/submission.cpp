@@ -97,7 +97,8 @@ Submission Submission::read(const fs::path& folder) {
 
 Submission Submission::from_files(std::vector<SubmissionFile> files) {
   Submission s;
-  std::sort(files.begin(), files.end(), [](const SubmissionFile& a, const SubmissionFile& b) { return a.name < b.name; });
+  std::sort(files.begin(), files.end(),
+            [](const SubmissionFile& a, const SubmissionFile& b) { return a.name < b.name; });
   s.files_ = std::move(files);
   return s;
 }

@@ -152,11 +152,11 @@ struct SuiteApi {
   static bool get_field(lua_State* L, const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; }
 
   static void refuse_unknown_fields(lua_State* L, bool test) {
-    static const std::set<std::string> suite_fields = {"name",      "files",     "time_limit", "memory_mb", "visibility",
-                                                       "reference", "allow_api", "partial",    "output_kb"};
-    static const std::set<std::string> test_fields = {"name",  "points",    "number",    "visibility", "time_limit",
-                                                      "memory_mb", "partial", "files",     "reference",  "allow_api",
-                                                      "tags",  "extra_credit", "run"};
+    static const std::set<std::string> suite_fields = {
+        "name", "files", "time_limit", "memory_mb", "visibility", "reference", "allow_api", "partial", "output_kb"};
+    static const std::set<std::string> test_fields = {"name",      "points",       "number", "visibility", "time_limit",
+                                                      "memory_mb", "partial",      "files",  "reference",  "allow_api",
+                                                      "tags",      "extra_credit", "run"};
     const auto& allowed = test ? test_fields : suite_fields;
     lua_pushnil(L);
     while (lua_next(L, 1) != 0) {

@@ -80,8 +80,8 @@ class Suite {
   std::unique_ptr<LuaRuntime> runtime_;
   std::string name_;
   std::vector<TestSpec> tests_;
-  std::filesystem::path folder_;   // SUITE_DIR
-  std::string chunk_folder_;       // how the suite's own chunk name spells its folder ("" or "suites")
+  std::filesystem::path folder_;  // SUITE_DIR
+  std::string chunk_folder_;      // how the suite's own chunk name spells its folder ("" or "suites")
   size_t output_bytes_ = size_t(16) << 10;
   Context* current_ = nullptr;
   TestRecorder* recorder_slot_ = nullptr;  // what `expect` records into; null between tests

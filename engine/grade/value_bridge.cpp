@@ -43,9 +43,7 @@ std::string key_path(lua_State* L, int key_index, const std::string& path) {
 ValueBridge::ValueBridge(lua_State* from, lua_State* to, BridgeOptions options)
     : from_(from), to_(to), options_(options), from_vec3_metatable_(vec3_metatable(from)) {}
 
-void ValueBridge::copy(int index, const std::string& what) {
-  copy_value(lua_absindex(from_, index), 0, what);
-}
+void ValueBridge::copy(int index, const std::string& what) { copy_value(lua_absindex(from_, index), 0, what); }
 
 void ValueBridge::push_points_table(const void* points_begin, size_t count) {
   const auto* points = static_cast<const glm::dvec3*>(points_begin);

@@ -29,7 +29,7 @@ class BridgeError : public std::runtime_error {
 };
 
 struct BridgeOptions {
-  bool bezier_as_tables = false;   // curves and patches become {points = {...}}
+  bool bezier_as_tables = false;  // curves and patches become {points = {...}}
   int max_depth = 32;
   size_t max_items = size_t(1) << 20;
   size_t max_string_bytes = size_t(16) << 20;

@@ -5,10 +5,10 @@
 #include <cstdint>
 #include <limits>
 
+#include "core/value_format.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
 #include "io/io_limits.h"
-#include "core/value_format.h"
 #include "io/text_scanner.h"
 
 namespace meshedit {

@@ -22,11 +22,11 @@
 #include <utility>
 #include <vector>
 
+#include <tinyxml2.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
-#include <tinyxml2.h>
 
 #include "io/file_access.h"
 #include "io/file_error.h"

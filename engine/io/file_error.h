@@ -19,9 +19,7 @@ class FileError : public std::runtime_error {
       : FileError(file, std::to_string(line), message) {}
 
  private:
-  static bool is_line(const std::string& place) {
-    return place.find_first_not_of("0123456789") == std::string::npos;
-  }
+  static bool is_line(const std::string& place) { return place.find_first_not_of("0123456789") == std::string::npos; }
 };
 
 }  // namespace meshedit

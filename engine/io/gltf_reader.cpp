@@ -17,12 +17,12 @@
 #include <utility>
 #include <vector>
 
+#include <tiny_gltf.h>
 #include <glm/gtc/matrix_transform.hpp>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/mat3x3.hpp>
 #include <glm/mat4x4.hpp>
 #include <glm/matrix.hpp>
-#include <tiny_gltf.h>
 
 #include "core/file_bytes.h"
 #include "core/finite.h"
@@ -112,14 +112,10 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& name, cons
 
 size_t component_size(int component_type) {
   switch (component_type) {
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
-      return 1;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT:
-      return 2;
-    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT:
-      return 4;
-    default:
-      return 0;  // not an index type
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE: return 1;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: return 2;
+    case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: return 4;
+    default: return 0;  // not an index type
   }
 }
 

@@ -12,7 +12,7 @@ namespace meshedit {
 
 // A teaching editor has no use for more; at these sizes the mesh alone is ~0.5 GB. (Files themselves are capped at
 // kMaxReadFileBytes, core/file_bytes.h.)
-inline constexpr size_t kMaxVertices = size_t(1) << 24;   // 16.7 million
-inline constexpr size_t kMaxCorners = size_t(1) << 26;    // polygon corners over all faces (indices)
+inline constexpr size_t kMaxVertices = size_t(1) << 24;  // 16.7 million
+inline constexpr size_t kMaxCorners = size_t(1) << 26;   // polygon corners over all faces (indices)
 
 }  // namespace meshedit

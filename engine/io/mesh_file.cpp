@@ -46,9 +46,7 @@ FileKind file_kind(const std::filesystem::path& path) {
   throw FileError(path.string(), "", describe_extension(path) + "; " + kReadable);
 }
 
-bool is_readable(const std::filesystem::path& path) {
-  return kind_of_extension(lowercase_extension(path)).has_value();
-}
+bool is_readable(const std::filesystem::path& path) { return kind_of_extension(lowercase_extension(path)).has_value(); }
 
 LoadedFile load_file(const std::filesystem::path& path) {
   LoadedFile loaded;

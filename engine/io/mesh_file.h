@@ -22,10 +22,10 @@ enum class FileKind { Mesh, Patches, Curve };
 
 struct LoadedFile {
   FileKind kind = FileKind::Mesh;
-  PolygonMesh mesh;                   // kind == Mesh
-  std::vector<BezierPatch> patches;   // kind == Patches
-  BezierCurve curve;                  // kind == Curve
-  FileUpAxis up_axis;                 // the axis to show up; Z for a curve, which is drawn in its plane
+  PolygonMesh mesh;                  // kind == Mesh
+  std::vector<BezierPatch> patches;  // kind == Patches
+  BezierCurve curve;                 // kind == Curve
+  FileUpAxis up_axis;                // the axis to show up; Z for a curve, which is drawn in its plane
   // glTF and PLY: the vertices the file repeats at one position (a modeller splits them where a normal, a texture
   // coordinate or a colour changes) that were joined into one (position_welder.h); 0 for the other formats.
   size_t joined_vertices = 0;

@@ -4,10 +4,10 @@
 #include <cstdint>
 #include <vector>
 
+#include "core/value_format.h"
 #include "io/file_access.h"
 #include "io/file_error.h"
 #include "io/io_limits.h"
-#include "core/value_format.h"
 #include "io/polygon_checks.h"
 #include "io/text_scanner.h"
 

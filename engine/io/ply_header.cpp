@@ -54,17 +54,13 @@ std::vector<std::string_view> words_of(std::string_view line) {
 size_t ply_type_size(PlyType type) {
   switch (type) {
     case PlyType::Int8:
-    case PlyType::Uint8:
-      return 1;
+    case PlyType::Uint8: return 1;
     case PlyType::Int16:
-    case PlyType::Uint16:
-      return 2;
+    case PlyType::Uint16: return 2;
     case PlyType::Int32:
     case PlyType::Uint32:
-    case PlyType::Float32:
-      return 4;
-    case PlyType::Float64:
-      return 8;
+    case PlyType::Float32: return 4;
+    case PlyType::Float64: return 8;
   }
   return 0;
 }

@@ -81,20 +81,14 @@ class PlyBody {
  private:
   static bool fits(PlyType type, int64_t value) {
     switch (type) {
-      case PlyType::Int8:
-        return value >= -128 && value <= 127;
-      case PlyType::Uint8:
-        return value >= 0 && value <= 255;
-      case PlyType::Int16:
-        return value >= -32768 && value <= 32767;
-      case PlyType::Uint16:
-        return value >= 0 && value <= 65535;
+      case PlyType::Int8: return value >= -128 && value <= 127;
+      case PlyType::Uint8: return value >= 0 && value <= 255;
+      case PlyType::Int16: return value >= -32768 && value <= 32767;
+      case PlyType::Uint16: return value >= 0 && value <= 65535;
       case PlyType::Int32:
         return value >= std::numeric_limits<int32_t>::min() && value <= std::numeric_limits<int32_t>::max();
-      case PlyType::Uint32:
-        return value >= 0 && value <= int64_t(UINT32_MAX);
-      default:
-        return true;
+      case PlyType::Uint32: return value >= 0 && value <= int64_t(UINT32_MAX);
+      default: return true;
     }
   }
 
@@ -105,24 +99,12 @@ class PlyBody {
     const uint64_t raw = load_unsigned(bytes_, offset_, size, order_);
     double value = 0;
     switch (type) {
-      case PlyType::Int8:
-        value = double(static_cast<int8_t>(raw));
-        break;
-      case PlyType::Int16:
-        value = double(static_cast<int16_t>(raw));
-        break;
-      case PlyType::Int32:
-        value = double(static_cast<int32_t>(raw));
-        break;
-      case PlyType::Float32:
-        value = double(load_float(bytes_, offset_, order_));
-        break;
-      case PlyType::Float64:
-        value = load_double(bytes_, offset_, order_);
-        break;
-      default:
-        value = double(raw);
-        break;
+      case PlyType::Int8: value = double(static_cast<int8_t>(raw)); break;
+      case PlyType::Int16: value = double(static_cast<int16_t>(raw)); break;
+      case PlyType::Int32: value = double(static_cast<int32_t>(raw)); break;
+      case PlyType::Float32: value = double(load_float(bytes_, offset_, order_)); break;
+      case PlyType::Float64: value = load_double(bytes_, offset_, order_); break;
+      default: value = double(raw); break;
     }
     offset_ += size;
     return value;

@@ -21,12 +21,9 @@ bool has_negative_exponent(std::string_view text) {
 
 std::string number_problem(NumberStatus status, std::string_view what, std::string_view token) {
   switch (status) {
-    case NumberStatus::NotFinite:
-      return std::string(what) + " must be a finite number, found " + quote(token);
-    case NumberStatus::OutOfRange:
-      return std::string(what) + " is out of range: " + quote(token);
-    default:
-      return "expected " + std::string(what) + ", found " + quote(token);
+    case NumberStatus::NotFinite: return std::string(what) + " must be a finite number, found " + quote(token);
+    case NumberStatus::OutOfRange: return std::string(what) + " is out of range: " + quote(token);
+    default: return "expected " + std::string(what) + ", found " + quote(token);
   }
 }
 

@@ -18,8 +18,8 @@ glm::dvec3 any_perpendicular(const glm::dvec3& d) {
 
 }  // namespace
 
-void add_arrow(Overlay& overlay, const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& eye,
-               glm::vec4 colour, float width) {
+void add_arrow(Overlay& overlay, const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& eye, glm::vec4 colour,
+               float width) {
   const glm::dvec3 shaft = to - from;
   const double length = glm::length(shaft);
   if (!finite(from) || !finite(to) || !(length > 0.0) || !std::isfinite(length)) return;

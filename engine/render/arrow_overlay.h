@@ -17,7 +17,7 @@ inline constexpr double kArrowHeadFraction = 0.2;
 inline constexpr double kArrowHeadWidth = 0.6;  // the head's width over its length
 
 // Adds the arrow's shaft and head to `overlay.lines` (two polylines, `width` pixels wide).
-void add_arrow(Overlay& overlay, const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& eye,
-               glm::vec4 colour, float width);
+void add_arrow(Overlay& overlay, const glm::dvec3& from, const glm::dvec3& to, const glm::dvec3& eye, glm::vec4 colour,
+               float width);
 
 }  // namespace meshedit

@@ -144,15 +144,11 @@ glm::dvec3 OrbitCamera::eye() const { return target_ + view_offset(yaw_, pitch_)
 
 glm::dvec3 OrbitCamera::forward_direction() const { return glm::normalize(target_ - eye()); }
 
-glm::dvec3 OrbitCamera::right_direction() const {
-  return glm::normalize(glm::cross(forward_direction(), up_vector()));
-}
+glm::dvec3 OrbitCamera::right_direction() const { return glm::normalize(glm::cross(forward_direction(), up_vector())); }
 
 glm::dvec3 OrbitCamera::screen_up_direction() const { return glm::cross(right_direction(), forward_direction()); }
 
-double OrbitCamera::far_plane() const {
-  return glm::length(eye() - scene_centre_) + kClipRadii * scene_radius_;
-}
+double OrbitCamera::far_plane() const { return glm::length(eye() - scene_centre_) + kClipRadii * scene_radius_; }
 
 double OrbitCamera::near_plane() const {
   const double far = far_plane();

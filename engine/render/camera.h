@@ -61,9 +61,9 @@ class OrbitCamera {
  public:
   static constexpr double kDefaultYawDegrees = 30.0;
   static constexpr double kDefaultPitchDegrees = 20.0;
-  static constexpr double kFovDegrees = 35.0;         // of the narrower viewport side
-  static constexpr double kRadiansPerPixel = 0.01;    // orbit speed
-  static constexpr double kZoomPerStep = 0.85;        // distance factor per scroll step
+  static constexpr double kFovDegrees = 35.0;       // of the narrower viewport side
+  static constexpr double kRadiansPerPixel = 0.01;  // orbit speed
+  static constexpr double kZoomPerStep = 0.85;      // distance factor per scroll step
 
   OrbitCamera();
 

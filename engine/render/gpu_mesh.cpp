@@ -194,8 +194,8 @@ void GpuMesh::read(SlotGeometry& out, std::vector<EdgeSegment>* slot_arrows) con
 
 size_t GpuMesh::bytes() const {
   return vertex_slots_ * 2 * sizeof(glm::vec3) + face_slots_ * 3 * sizeof(uint32_t) +
-         extra_count_ * 4 * sizeof(uint32_t) +
-         face_normals.bytes() + edges.bytes() + boundary_edges.bytes() + arrows.bytes() + points.bytes();
+         extra_count_ * 4 * sizeof(uint32_t) + face_normals.bytes() + edges.bytes() + boundary_edges.bytes() +
+         arrows.bytes() + points.bytes();
 }
 
 }  // namespace meshedit::gl

@@ -52,11 +52,11 @@ struct SlotPatch {
   std::vector<std::pair<uint32_t, std::array<uint32_t, 3>>> extra_triangles;  // packed index -> triangle
   std::vector<std::pair<uint32_t, EdgeSegment>> edges;
   std::vector<std::pair<uint32_t, std::array<EdgeSegment, 3>>> arrows;  // only when asked for
-  bool boundary_changed = false;           // a boundary edge (before or after) is among the edges
-  std::vector<uint32_t> boundary_edges;    // then: the whole new list of drawn boundary edges,
+  bool boundary_changed = false;               // a boundary edge (before or after) is among the edges
+  std::vector<uint32_t> boundary_edges;        // then: the whole new list of drawn boundary edges,
   std::vector<EdgeSegment> boundary_segments;  // and their segments (O(boundary edges), only then)
-  SlotCounts counts;                     // of `after`
-  BoundingBox bounds;                    // the old box grown by the moved points (it never shrinks)
+  SlotCounts counts;                           // of `after`
+  BoundingBox bounds;                          // the old box grown by the moved points (it never shrinks)
 
   size_t slots() const {
     return points.size() + normals.size() + faces.size() + extra_triangles.size() + edges.size() + arrows.size();

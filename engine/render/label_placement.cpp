@@ -142,8 +142,7 @@ LabelPlacement place_labels(std::span<const LabelRequest> requests, const LabelR
         if (request.keep_clear && crosses(box, *request.keep_clear)) continue;
         grid.add(spaced, uint32_t(placed.size()));
         placed.push_back(spaced);
-        result.placed.push_back(
-            {request.element, request.text, request.source, box, box.min + options.padding, index});
+        result.placed.push_back({request.element, request.text, request.source, box, box.min + options.padding, index});
         done = true;
         break;
       }

@@ -21,8 +21,7 @@ bool face_faces_eye(const HalfedgeMesh& mesh, FaceId f, const glm::dvec3& anchor
   return !f.is_boundary() && mesh.alive(f) && faces_eye(face_normal(mesh, f), anchor, eye);
 }
 
-bool element_faces_eye(const HalfedgeMesh& mesh, ElementRef element, const glm::dvec3& anchor,
-                       const glm::dvec3& eye) {
+bool element_faces_eye(const HalfedgeMesh& mesh, ElementRef element, const glm::dvec3& anchor, const glm::dvec3& eye) {
   switch (element.kind) {
     case ElementKind::Vertex: {
       bool facing = false;
@@ -260,8 +259,8 @@ std::vector<LabelRequest> label_requests(const HalfedgeMesh& mesh, const OrbitCa
     if (!direction) return;
     std::optional<LabelSegment> keep_clear = own_segment(mesh, camera, viewport, element);
     if (keep_clear) keep_clear = LabelSegment{view.to_window(keep_clear->a), view.to_window(keep_clear->b)};
-    requests.push_back({element, text, source, view.to_window(pixel), *direction * view.scale(), measure(text),
-                        priority, keep_clear});
+    requests.push_back(
+        {element, text, source, view.to_window(pixel), *direction * view.scale(), measure(text), priority, keep_clear});
   };
 
   for (const auto& [element, text] : scene.lesson) {

@@ -74,8 +74,8 @@ HalfedgeArrow make_arrow(const glm::dvec3& a, const glm::dvec3& b, const glm::dv
   const double to_centre = glm::length(inward);
   glm::dvec3 spread(0.0);
   if (to_centre > 0.0 && std::isfinite(to_centre)) {
-    const double half_width = std::min(0.5 * kArrowHead * std::sqrt(length_sq),
-                                       0.6 * to_centre * kArrowInset / (1.0 - kArrowInset));
+    const double half_width =
+        std::min(0.5 * kArrowHead * std::sqrt(length_sq), 0.6 * to_centre * kArrowInset / (1.0 - kArrowInset));
     spread = inward * (half_width / to_centre);
   }
   HalfedgeArrow arrow;
@@ -103,8 +103,7 @@ FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<Halfedg
   return walk(mesh, f, cycle, visited, max_steps);
 }
 
-void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
-                      std::vector<HalfedgeArrow>& out) {
+void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle, std::vector<HalfedgeArrow>& out) {
   add_arrows(mesh, cycle, out);
 }
 

@@ -64,11 +64,11 @@ struct MeshGeometry {
   // Three vertex ids per triangle, and the face slot of each triangle.
   std::vector<uint32_t> triangle_corners;
   std::vector<uint32_t> triangle_faces;
-  std::vector<EdgeSegment> edges;           // drawable live edges, in id order
-  std::vector<VertexPoint> points;          // live vertices with finite positions, in id order
-  std::vector<FaceId> skipped_faces;        // live faces that could not be walked, in id order
-  std::vector<EdgeId> skipped_edges;        // live edges with a dead or non-finite end
-  BoundingBox bounds;                       // of `points`
+  std::vector<EdgeSegment> edges;     // drawable live edges, in id order
+  std::vector<VertexPoint> points;    // live vertices with finite positions, in id order
+  std::vector<FaceId> skipped_faces;  // live faces that could not be walked, in id order
+  std::vector<EdgeId> skipped_edges;  // live edges with a dead or non-finite end
+  BoundingBox bounds;                 // of `points`
 
   size_t triangle_count() const { return triangle_faces.size(); }
 };
@@ -87,8 +87,7 @@ FaceWalk walk_face_cycle(const HalfedgeMesh& mesh, FaceId f, std::vector<Halfedg
 FaceWalk walk_face_cycle(const StateBefore& mesh, FaceId f, std::vector<HalfedgeId>& cycle,
                          std::vector<uint8_t>* visited, uint32_t max_steps);
 // The arrows of a closed cycle, appended in cycle order: what build_halfedge_arrows makes for that face.
-void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle,
-                      std::vector<HalfedgeArrow>& out);
+void add_cycle_arrows(const HalfedgeMesh& mesh, const std::vector<HalfedgeId>& cycle, std::vector<HalfedgeArrow>& out);
 // Arrows of every halfedge of every drawable face, face by face in id order, each cycle from the face's
 // halfedge. Costs about 100 bytes per halfedge on the GPU, so the renderer builds it only on demand.
 std::vector<HalfedgeArrow> build_halfedge_arrows(const HalfedgeMesh& mesh);

@@ -110,7 +110,7 @@ struct MeshKey {
   template <class Mesh>
   static std::array<size_t, 9> sizes_of(const Mesh& m) {
     return {m.vertex_capacity(), m.halfedge_capacity(), m.edge_capacity(), m.face_capacity(), m.boundary_capacity(),
-            m.num_vertices(), m.num_halfedges(), m.num_edges(), m.num_faces()};
+            m.num_vertices(),    m.num_halfedges(),     m.num_edges(),     m.num_faces()};
   }
   bool operator==(const MeshKey& o) const { return mesh == o.mesh && version == o.version && sizes == o.sizes; }
 };
@@ -198,8 +198,7 @@ struct MeshRenderer::Impl {
   void refuse_if_too_large(size_t texels);
   bool patch(const HalfedgeMesh& mesh, const MeshChange& change);
   template <class Before>
-  bool patch_from(const Before& before, uint64_t before_version, const HalfedgeMesh& source,
-                  const MeshChange& change);
+  bool patch_from(const Before& before, uint64_t before_version, const HalfedgeMesh& source, const MeshChange& change);
   void uploaded_state(const HalfedgeMesh& mesh);
   void refresh_changed(std::span<const ElementRef> list, uint64_t key);
   void refresh_focus(ElementRef hovered, ElementRef selected);
@@ -267,9 +266,9 @@ void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) 
   const size_t sent = gl::uploaded_bytes();
   // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot. Checked before the
   // slot build (a whole-mesh pass) as far as the capacities tell, so a refused mesh costs nothing per frame.
-  refuse_if_too_large(gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
-                                                  size_t(source.halfedge_capacity()),
-                                                  2 * size_t(source.edge_capacity())})));
+  refuse_if_too_large(
+      gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
+                                  size_t(source.halfedge_capacity()), 2 * size_t(source.edge_capacity())})));
   SlotGeometry g = build_slot_geometry(source, hardware_threads());
   refuse_if_too_large(gl::with_headroom(g.extra_faces.size()));  // the triangles of polygons past their first
   gpu.upload(g);
@@ -341,8 +340,8 @@ bool MeshRenderer::Impl::patch_from(const Before& before, uint64_t before_versio
 // ---- highlights ------------------------------------------------------------------------------------
 
 void MeshRenderer::Impl::refresh_changed(std::span<const ElementRef> list, uint64_t key) {
-  const bool same_list = key != 0 ? key == changed_key : std::equal(list.begin(), list.end(), changed_list.begin(),
-                                                                    changed_list.end());
+  const bool same_list =
+      key != 0 ? key == changed_key : std::equal(list.begin(), list.end(), changed_list.begin(), changed_list.end());
   if (changed_geometry == geometry && same_list) return;
   const std::array<uint32_t, kKindSlots> capacity = {mesh->vertex_capacity(), mesh->halfedge_capacity(),
                                                      mesh->edge_capacity(), mesh->face_capacity()};

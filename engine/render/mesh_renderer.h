@@ -57,23 +57,23 @@
 namespace meshedit {
 
 struct RenderStats {
-  uint64_t uploads = 0;            // full geometry rebuilds by update()
-  uint64_t patches = 0;            // in-place updates by update() (a MeshChange it could apply)
-  uint64_t arrow_uploads = 0;      // full halfedge-arrow rebuilds (only while arrows are shown)
-  uint64_t highlight_uploads = 0;  // rebuilds of the changed flags or the highlighted items
-  uint64_t id_passes = 0;          // id-buffer redraws by pick()
-  uint64_t refusals = 0;           // updates refused: the mesh too large to draw (then nothing is drawn)
-  bool last_update_patch = false;  // the last update() that changed anything was a patch (not a full rebuild)
-  size_t last_update_bytes = 0;    // bytes the last update() that changed anything sent to the GPU
-  size_t last_update_slots = 0;    // slots it rewrote (every slot for a full rebuild)
-  double last_id_pass_ms = 0.0;    // wall time of the last id-buffer redraw (to glFinish)
+  uint64_t uploads = 0;                  // full geometry rebuilds by update()
+  uint64_t patches = 0;                  // in-place updates by update() (a MeshChange it could apply)
+  uint64_t arrow_uploads = 0;            // full halfedge-arrow rebuilds (only while arrows are shown)
+  uint64_t highlight_uploads = 0;        // rebuilds of the changed flags or the highlighted items
+  uint64_t id_passes = 0;                // id-buffer redraws by pick()
+  uint64_t refusals = 0;                 // updates refused: the mesh too large to draw (then nothing is drawn)
+  bool last_update_patch = false;        // the last update() that changed anything was a patch (not a full rebuild)
+  size_t last_update_bytes = 0;          // bytes the last update() that changed anything sent to the GPU
+  size_t last_update_slots = 0;          // slots it rewrote (every slot for a full rebuild)
+  double last_id_pass_ms = 0.0;          // wall time of the last id-buffer redraw (to glFinish)
   bool last_id_pass_faces_only = false;  // it drew faces only (a large mesh: pick_from_faces.h)
-  std::string last_rebuild_reason; // why the last full rebuild was not a patch ("no change description", ...)
+  std::string last_rebuild_reason;       // why the last full rebuild was not a patch ("no change description", ...)
   size_t triangles = 0, edges = 0, boundary_edges = 0, vertices = 0;  // drawn
-  size_t arrows = 0;                            // halfedge slots in the arrow batch (when built)
-  size_t skipped_faces = 0, skipped_edges = 0;  // live elements the last update could not draw
-  size_t gpu_bytes = 0;                         // buffer memory the renderer holds
-  bool multisampled = false;                    // the last draw() used multisampling
+  size_t arrows = 0;                                                  // halfedge slots in the arrow batch (when built)
+  size_t skipped_faces = 0, skipped_edges = 0;                        // live elements the last update could not draw
+  size_t gpu_bytes = 0;                                               // buffer memory the renderer holds
+  bool multisampled = false;                                          // the last draw() used multisampling
   int framebuffer_samples = 0;  // samples of the framebuffer the last draw() drew into (at first: the one bound then)
 };
 

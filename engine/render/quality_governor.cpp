@@ -35,12 +35,9 @@ void QualityGovernor::view_changed() {
 
 bool QualityGovernor::available(int step) const {
   switch (QualityStep(step)) {
-    case QualityStep::Multisampling:
-      return steps_.multisampling;
-    case QualityStep::Wireframe:
-      return steps_.wireframe;
-    case QualityStep::BackSides:
-      return steps_.back_sides;
+    case QualityStep::Multisampling: return steps_.multisampling;
+    case QualityStep::Wireframe: return steps_.wireframe;
+    case QualityStep::BackSides: return steps_.back_sides;
   }
   return false;
 }

@@ -54,11 +54,11 @@ glm::dvec3 unit_or_zero(const glm::dvec3& v);
 glm::vec4 flat_normal(const glm::dvec3& term);
 
 struct SlotCounts {
-  size_t triangles = 0;       // drawn triangles (first and extra)
-  size_t skipped_faces = 0;   // live faces not drawable
-  size_t edges = 0;           // drawn edges
-  size_t skipped_edges = 0;   // live edges not drawable
-  size_t vertices = 0;        // drawn points
+  size_t triangles = 0;      // drawn triangles (first and extra)
+  size_t skipped_faces = 0;  // live faces not drawable
+  size_t edges = 0;          // drawn edges
+  size_t skipped_edges = 0;  // live edges not drawable
+  size_t vertices = 0;       // drawn points
   bool operator==(const SlotCounts&) const = default;
 };
 
@@ -75,7 +75,7 @@ struct SlotGeometry {
   MeshArray<EdgeSegment> edges;           // per edge slot
   std::vector<uint32_t> boundary_edges;   // drawn edges flagged boundary, ascending ids
   SlotCounts counts;
-  BoundingBox bounds;                     // of the drawn points
+  BoundingBox bounds;  // of the drawn points
 };
 
 // The whole build, on up to `threads` threads (parallel_for.h); the result does not depend on the thread count,

@@ -61,8 +61,8 @@ std::vector<glm::dvec3> check_points(lua_State* L, int arg, size_t max_points) {
     lua_rawgeti(L, arg, static_cast<lua_Integer>(i));
     glm::dvec3 p;
     if (!to_vec3(L, -1, p)) {
-      const std::string message = "point " + std::to_string(i) +
-                                  " must be a vec3 or a table {x, y, z} of numbers, got " + luaL_typename(L, -1);
+      const std::string message =
+          "point " + std::to_string(i) + " must be a vec3 or a table {x, y, z} of numbers, got " + luaL_typename(L, -1);
       luaL_argerror(L, arg, message.c_str());
     }
     lua_pop(L, 1);

@@ -36,7 +36,7 @@ struct MeshBox {
 };
 
 struct Handle {
-  MeshBox* box;  // the box in the handle's user value 1 (which keeps it alive)
+  MeshBox* box;    // the box in the handle's user value 1 (which keeps it alive)
   uint32_t index;  // the slot (no boundary bit)
   ElementKind kind;
 
@@ -124,8 +124,8 @@ void add_subdivision_methods(lua_State* L);
 // (the reference flip_edge and split_edge are these).
 int mesh_flip(lua_State* L);
 int mesh_split(lua_State* L);
-void add_history_methods(lua_State* L);    // history_bindings.cpp: snapshot, restore, undo, redo, diff
-void add_table_methods(lua_State* L);      // table_bindings.cpp: tables
+void add_history_methods(lua_State* L);  // history_bindings.cpp: snapshot, restore, undo, redo, diff
+void add_table_methods(lua_State* L);    // table_bindings.cpp: tables
 // Module functions (module_bindings.cpp): load, cube, ..., grid, from_polygons; added to the table on top.
 void add_module_functions(lua_State* L);
 

@@ -58,9 +58,9 @@ class EditJournal {
   size_t max_edits_;
   std::unique_ptr<HalfedgeMesh> base_;
   std::vector<RecordedEdit> edits_;
-  size_t applied_ = 0;               // edits in effect; below edits_.size() after an undo
-  std::vector<size_t> operations_;   // indices of the Operation edits, ascending
-  std::vector<size_t> redo_;         // values of applied_ that redo returns to, last first
+  size_t applied_ = 0;              // edits in effect; below edits_.size() after an undo
+  std::vector<size_t> operations_;  // indices of the Operation edits, ascending
+  std::vector<size_t> redo_;        // values of applied_ that redo returns to, last first
   uint64_t version_ = 0;
 };
 

@@ -62,9 +62,7 @@ class Messages {
 
 std::string pos(const glm::dvec3& p) { return format_position(p); }
 
-bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) {
-  return std::memcmp(&a, &b, sizeof(a)) == 0;
-}
+bool bitwise_equal(const glm::dvec3& a, const glm::dvec3& b) { return std::memcmp(&a, &b, sizeof(a)) == 0; }
 
 bool close(const glm::dvec3& a, const glm::dvec3& b, double tolerance) { return glm::distance(a, b) <= tolerance; }
 
@@ -86,8 +84,9 @@ void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages&
       swapped = swapped && close(got[i], other, tolerance);
     }
     if (swapped) {
-      out.add("the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), and yours are "
-              "t * p_i + (1 - t) * p_(i+1)");
+      out.add(
+          "the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), and yours are "
+          "t * p_i + (1 - t) * p_(i+1)");
     }
   }
   const std::string expected = std::to_string(want.size());
@@ -117,8 +116,8 @@ void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages&
     }
   }
   report.equal = !out.any();
-  report.identical = report.equal && got.size() == want.size() &&
-                     std::equal(got.begin(), got.end(), want.begin(), bitwise_equal);
+  report.identical =
+      report.equal && got.size() == want.size() && std::equal(got.begin(), got.end(), want.begin(), bitwise_equal);
   if (report.equal && !report.identical) {
     report.notes.push_back("your points differ from the reference's by at most " + format_number(worst) +
                            " (rounding; accepted)");
@@ -183,12 +182,12 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
     } else if (close(got, -want, kTolerance)) {
       out.add("your normal " + pos(got) + " points inwards (the reference's is " + pos(want) +
               "): take the cross product of the edges in the face's order, (p1 - p0):cross(p2 - p0)");
-    } else if (const glm::dvec3 unit = unweighted_normal(mesh, v, false, ok); ok && close(got, unit, 1e-9) &&
-                                                                            !close(unit, want, 1e-9)) {
+    } else if (const glm::dvec3 unit = unweighted_normal(mesh, v, false, ok);
+               ok && close(got, unit, 1e-9) && !close(unit, want, 1e-9)) {
       out.add("your normal " + pos(got) + " is the average of the faces' unit normals; the reference " + pos(want) +
               " weights each face by its area: add the cross products themselves, then normalise");
-    } else if (const glm::dvec3 loops = unweighted_normal(mesh, v, true, ok); ok && mesh.is_boundary(v) &&
-                                                                            close(got, loops, 1e-9)) {
+    } else if (const glm::dvec3 loops = unweighted_normal(mesh, v, true, ok);
+               ok && mesh.is_boundary(v) && close(got, loops, 1e-9)) {
       out.add("your normal " + pos(got) + " counts the boundary loop as a face; skip faces with f:is_boundary()");
     } else {
       out.add("your normal " + pos(got) + " differs from the reference's " + pos(want) + " by " + format_number(d));
@@ -207,8 +206,7 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
   report.equal = !out.any();
   report.identical = report.equal && bitwise_equal(got, want);
   if (report.equal && !report.identical) {
-    report.notes.push_back("your normal differs from the reference's by " + format_number(d) +
-                           " (rounding; accepted)");
+    report.notes.push_back("your normal differs from the reference's by " + format_number(d) + " (rounding; accepted)");
   }
 }
 
@@ -253,8 +251,7 @@ void add_validation(const ExerciseReport& report, const char* function, Messages
 
 // When a face cycle is broken: the next pointers the reference rewrote and yours left as they were (the pointer
 // that breaks the cycle is usually one of them).
-void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before, const char* function,
-                        Messages& out) {
+void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before, const char* function, Messages& out) {
   const ValidationReport& v = *report.mine.validation;
   const bool cycle_broken = std::any_of(v.violations.begin(), v.violations.end(), [](const Violation& x) {
     return x.invariant == Invariant::FaceCycle || x.invariant == Invariant::NextNotPermutation;
@@ -273,8 +270,11 @@ void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before
   }
   if (count == 0) return;
   out.add(items + (count > 3 ? " (and " + std::to_string(count - 3) + " more)" : "") + " after your " + function +
-          ", as before the call; the reference changes " + (count == 1 ? "it: that pointer breaks" : "them: these "
-          "pointers break") + " the face cycle");
+          ", as before the call; the reference changes " +
+          (count == 1 ? "it: that pointer breaks"
+                      : "them: these "
+                        "pointers break") +
+          " the face cycle");
 }
 
 std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) {
@@ -294,9 +294,9 @@ void note_pointer_differences(ExerciseReport& report, const std::string& what) {
   const MeshComparison exact = compare_meshes_exact(*report.mine.mesh, *report.reference.mesh, {0.0, 5});
   report.identical = exact.equal;
   if (exact.equal) return;
-  report.notes.push_back(what + " (" + std::to_string(exact.total_differences) +
-                         " pointer or id differences from the reference, which is accepted); first: " +
-                         exact.differences.front());
+  report.notes.push_back(
+      what + " (" + std::to_string(exact.total_differences) +
+      " pointer or id differences from the reference, which is accepted); first: " + exact.differences.front());
 }
 
 // The course's rule for a boundary vertex's halfedge: any halfedge leaving it (the course's own builder picks an
@@ -316,8 +316,8 @@ void note_boundary_convention(ExerciseReport& report) {
 
 // Refused by the reference (`what` is "flip e3", "split e3", "subdivide this mesh"): mine must change nothing
 // and return nil.
-void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const std::string& what,
-                     const char* function, Messages& out) {
+void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const std::string& what, const char* function,
+                     Messages& out) {
   if (!report.mine.mesh->same_as(*input.mesh)) {
     out.add("the reference does not " + what + " (" + report.reference.refused + "), but your " + function +
             " changed the mesh: " + first_change(*input.mesh, *report.mine.mesh));
@@ -484,7 +484,8 @@ void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Me
   size_t shared = 0;
   for (size_t i = 1; i < positions.size(); ++i) shared += positions[i] == positions[i - 1] ? 1 : 0;
   if (shared >= 2 && at_origin < 2) {
-    out.add(std::to_string(shared) + " of your vertices sit exactly on another one: were new positions written to "
+    out.add(std::to_string(shared) +
+            " of your vertices sit exactly on another one: were new positions written to "
             "the wrong vertices? Keep them in a table indexed by v.id and move each vertex to its own");
   }
 }

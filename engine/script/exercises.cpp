@@ -109,8 +109,9 @@ void check_input(Exercise exercise, const ExerciseInput& input) {
   if (!input.mesh) throw MeshError(std::string(exercise_info(exercise).function) + " needs a mesh");
   const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
   if (exercise == Exercise::Upsample || (scripted && !scripted->takes())) return;
-  const ElementKind wanted = scripted ? *scripted->takes()
-                             : exercise == Exercise::VertexNormal ? ElementKind::Vertex : ElementKind::Edge;
+  const ElementKind wanted = scripted                             ? *scripted->takes()
+                             : exercise == Exercise::VertexNormal ? ElementKind::Vertex
+                                                                  : ElementKind::Edge;
   if (input.element.kind != wanted || !input.mesh->alive(input.element)) {
     throw MeshError(std::string(exercise_info(exercise).function) + " needs a live " + kind_name(wanted) +
                         " of the mesh, got " + format_id(input.element),
@@ -198,8 +199,8 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
         lua_pop(L, 1);
         if (!ok) {
           out.ran = false;
-          out.error = "point " + std::to_string(i) + " of the list " + info.function + " returned is " + what +
-                      ", not a point";
+          out.error =
+              "point " + std::to_string(i) + " of the list " + info.function + " returned is " + what + ", not a point";
           return;
         }
         out.points.push_back(p);
@@ -558,8 +559,7 @@ std::unique_ptr<StudentCode> load_student_file(const std::filesystem::path& file
   return code;
 }
 
-ExerciseOutcome run_mine(StudentCode& code, Exercise exercise, const ExerciseInput& input,
-                         const RunOptions& options) {
+ExerciseOutcome run_mine(StudentCode& code, Exercise exercise, const ExerciseInput& input, const RunOptions& options) {
   return code.run(exercise, input, options);
 }
 

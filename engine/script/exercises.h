@@ -70,12 +70,12 @@ bool is_mesh_exercise(Exercise exercise);
 
 // What one run works on. Build it with the named constructors; fields not used by the exercise are ignored.
 struct ExerciseInput {
-  std::vector<glm::dvec3> points;  // CurveStep: the points given to evaluate_step
-  double t = 0.5;                  // CurveStep
-  BezierPatch patch;               // PatchEvaluate
-  double u = 0.5, v = 0.5;         // PatchEvaluate
+  std::vector<glm::dvec3> points;            // CurveStep: the points given to evaluate_step
+  double t = 0.5;                            // CurveStep
+  BezierPatch patch;                         // PatchEvaluate
+  double u = 0.5, v = 0.5;                   // PatchEvaluate
   std::shared_ptr<const HalfedgeMesh> mesh;  // the mesh exercises (never changed: runs work on copies)
-  ElementRef element;              // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge; scripted: what it takes
+  ElementRef element;  // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge; scripted: what it takes
 
   static ExerciseInput curve_step(std::vector<glm::dvec3> points, double t);
   static ExerciseInput patch_point(const BezierPatch& patch, double u, double v);
@@ -90,20 +90,20 @@ struct ExerciseInput {
 
 // What one run (mine or the reference) gave.
 struct ExerciseOutcome {
-  bool ran = false;         // the function returned a value of the expected shape
-  std::string error;        // why not: the Lua error ("flip.lua:12: attempt to index a nil value (field
-                            // 'twin')"), a limit, or "evaluate_step returned nil; ..."
+  bool ran = false;            // the function returned a value of the expected shape
+  std::string error;           // why not: the Lua error ("flip.lua:12: attempt to index a nil value (field
+                               // 'twin')"), a limit, or "evaluate_step returned nil; ..."
   bool out_of_memory = false;  // `error` is memory running out under the call (ScriptError::out_of_memory), not the
                                // student's doing; a student's own error("memory ran out") is not
   ScriptError::Limit limit = ScriptError::Limit::None;  // the limit or cap that stopped the call, if one did
-  std::string returned;     // the first return value, described: "nil", "e5", "a list of 3 points", "(0, 0, 1)"
+  std::string returned;            // the first return value, described: "nil", "e5", "a list of 3 points", "(0, 0, 1)"
   std::vector<glm::dvec3> points;  // CurveStep: the step; PatchEvaluate, VertexNormal: the one point
   std::shared_ptr<HalfedgeMesh> mesh;  // the mesh after the call (mesh exercises; the copy it ran on)
-  ElementRef element;       // FlipEdge, SplitEdge: the element returned (invalid for nil)
-  std::string refused;      // reference only: the core's reason when it refuses (flip of a boundary edge...)
+  ElementRef element;                  // FlipEdge, SplitEdge: the element returned (invalid for nil)
+  std::string refused;                 // reference only: the core's reason when it refuses (flip of a boundary edge...)
   std::optional<ValidationReport> validation;  // mesh exercises, after the call
-  std::vector<RecordedEdit> edits;  // mine on a mesh, when RunOptions::record_edits (an upsample: always)
-  std::vector<std::string> output;  // what print() wrote during the call (capped)
+  std::vector<RecordedEdit> edits;             // mine on a mesh, when RunOptions::record_edits (an upsample: always)
+  std::vector<std::string> output;             // what print() wrote during the call (capped)
 };
 
 struct RunOptions {
@@ -158,7 +158,7 @@ struct ExerciseReport {
   bool identical = false;  // bit for bit / pointer for pointer
   std::vector<std::string> differences;  // why not equal, the likely mistake first (first kMaxMessages)
   size_t total_differences = 0;
-  std::vector<std::string> notes;        // what differs without being wrong (ids, rounding, conventions)
+  std::vector<std::string> notes;  // what differs without being wrong (ids, rounding, conventions)
   ExerciseOutcome mine;
   ExerciseOutcome reference;
 

@@ -25,8 +25,8 @@ namespace {
 // methods. pointer_key reads the halfedge's fields as the keys below kHalfedgeKey, and field_name reads kKeyNames by
 // PointerField: the asserts hold PointerField to that order.
 enum Key : int { kHalfedgeKey = static_cast<int>(PointerField::Halfedge), kPosition, kId, kKind, kMesh, kFirstMethod };
-constexpr const char* kKeyNames[] = {"next", "twin", "vertex", "edge", "face", "halfedge",
-                                     "position", "id", "kind", "mesh"};
+constexpr const char* kKeyNames[] = {"next",     "twin",     "vertex", "edge", "face",
+                                     "halfedge", "position", "id",     "kind", "mesh"};
 static_assert(std::size(kKeyNames) == kFirstMethod);
 static_assert(static_cast<int>(PointerField::Next) == 0 && static_cast<int>(PointerField::Twin) == 1 &&
                   static_cast<int>(PointerField::Vertex) == 2 && static_cast<int>(PointerField::Edge) == 3 &&

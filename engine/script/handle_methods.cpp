@@ -136,9 +136,8 @@ int element_walk(lua_State* L) {
     }
     for (HalfedgeId o : fan) refs.push_back(Vertices ? ElementRef(m.vertex(m.twin(o))) : ElementRef(o));
   } else {
-    const bool closed = m.for_each_face_halfedge(h.ref().face_id(), [&](HalfedgeId x) {
-      refs.push_back(Vertices ? ElementRef(m.vertex(x)) : ElementRef(x));
-    });
+    const bool closed = m.for_each_face_halfedge(
+        h.ref().face_id(), [&](HalfedgeId x) { refs.push_back(Vertices ? ElementRef(m.vertex(x)) : ElementRef(x)); });
     if (!closed) return luaL_error(L, "the next-cycle of %s does not close", h.name().c_str());
   }
   return push_iterator(L, h, Vertices ? ElementKind::Vertex : ElementKind::Halfedge, refs);

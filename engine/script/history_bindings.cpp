@@ -205,12 +205,9 @@ void add_history_methods(lua_State* L) {
     lua_setfield(L, -2, "__metatable");
   }
   lua_pop(L, 1);
-  const luaL_Reg methods[] = {{"snapshot", guarded<mesh_snapshot>},
-                              {"restore", guarded<mesh_restore>},
-                              {"undo", guarded<mesh_undo<true>>},
-                              {"redo", guarded<mesh_undo<false>>},
-                              {"diff", guarded<mesh_diff>},
-                              {nullptr, nullptr}};
+  const luaL_Reg methods[] = {{"snapshot", guarded<mesh_snapshot>}, {"restore", guarded<mesh_restore>},
+                              {"undo", guarded<mesh_undo<true>>},   {"redo", guarded<mesh_undo<false>>},
+                              {"diff", guarded<mesh_diff>},         {nullptr, nullptr}};
   luaL_setfuncs(L, methods, 0);
 }
 

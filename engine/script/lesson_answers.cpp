@@ -18,14 +18,22 @@ struct AnswerField {
   const char* name;
   Kind kind;
 };
-const AnswerField kAnswerFields[] = {
-    {"key", Kind::Key},         {"click", Kind::Click},           {"selection", Kind::Selection},
-    {"button", Kind::Button},   {"flip", Kind::Flip},             {"split", Kind::Split},
-    {"collapse", Kind::Collapse}, {"subdivide", Kind::Subdivide}, {"subdivide_phase", Kind::SubdividePhase},
-    {"loop_phase", Kind::SubdividePhase},
-    {"triangulate", Kind::Triangulate}, {"open_repaired", Kind::OpenRepaired},
-    {"choose", Kind::Choose},   {"answer", Kind::Value},          {"curve_t", Kind::CurveT},
-    {"your_turn", Kind::YourTurn}};
+const AnswerField kAnswerFields[] = {{"key", Kind::Key},
+                                     {"click", Kind::Click},
+                                     {"selection", Kind::Selection},
+                                     {"button", Kind::Button},
+                                     {"flip", Kind::Flip},
+                                     {"split", Kind::Split},
+                                     {"collapse", Kind::Collapse},
+                                     {"subdivide", Kind::Subdivide},
+                                     {"subdivide_phase", Kind::SubdividePhase},
+                                     {"loop_phase", Kind::SubdividePhase},
+                                     {"triangulate", Kind::Triangulate},
+                                     {"open_repaired", Kind::OpenRepaired},
+                                     {"choose", Kind::Choose},
+                                     {"answer", Kind::Value},
+                                     {"curve_t", Kind::CurveT},
+                                     {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
     "key, click, selection, button, flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate, "
@@ -129,7 +137,8 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
 
 bool ScriptedAnswer::is_edit() const {
   return kind == Kind::Flip || kind == Kind::Split || kind == Kind::Collapse || kind == Kind::Subdivide ||
-         kind == Kind::SubdividePhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired || kind == Kind::CurveT;
+         kind == Kind::SubdividePhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired ||
+         kind == Kind::CurveT;
 }
 
 ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits) {

@@ -46,8 +46,21 @@ namespace meshedit {
 
 struct ScriptedAnswer {
   enum class Kind {
-    Key, Click, Selection, Button, Flip, Split, Collapse, Subdivide, SubdividePhase, Triangulate, OpenRepaired,
-    Choose, Value, CurveT, YourTurn
+    Key,
+    Click,
+    Selection,
+    Button,
+    Flip,
+    Split,
+    Collapse,
+    Subdivide,
+    SubdividePhase,
+    Triangulate,
+    OpenRepaired,
+    Choose,
+    Value,
+    CurveT,
+    YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...

@@ -72,11 +72,12 @@ void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
     wait.element = *element;
     return;
   }
-  const std::string got = lua_type(L, index) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, index)) + "'"
-                                                            : "a " + type_name(L, index);
+  const std::string got =
+      lua_type(L, index) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, index)) + "'" : "a " + type_name(L, index);
   raise(L, std::string("wait_for: ") + field +
                " must be an element kind (vertex, halfedge, edge, face, boundary), an id like \"e7\", an element or "
-               "\"any\"; got " + got);
+               "\"any\"; got " +
+               got);
 }
 
 std::string default_hint(const LessonWait& wait) {
@@ -94,8 +95,10 @@ std::string default_hint(const LessonWait& wait) {
 // hint) into a LessonWait, with `where` set to the lesson line.
 LessonWait parse_wait(lua_State* L, int index) {
   if (!lua_istable(L, index)) {
-    raise(L, "wait_for: expected a table like {key=\"F\"}, {command=\"catmull-clark-phase\"}, {click=\"vertex\"}, "
-             "{selection=\"e7\"}, {condition=function() ... end} or {button=\"Continue\"}, got " + type_name(L, index));
+    raise(L,
+          "wait_for: expected a table like {key=\"F\"}, {command=\"catmull-clark-phase\"}, {click=\"vertex\"}, "
+          "{selection=\"e7\"}, {condition=function() ... end} or {button=\"Continue\"}, got " +
+              type_name(L, index));
   }
   check_fields(L, index, "wait_for", {"key", "command", "click", "selection", "condition", "button", "hint"});
   LessonWait wait;
@@ -131,8 +134,9 @@ LessonWait parse_wait(lua_State* L, int index) {
     lua_pop(L, 1);
   }
   if (kinds != 1) {
-    raise(L, kinds == 0 ? "wait_for: say what to wait for: key, command, click, selection, condition or button"
-                        : "wait_for: wait for one thing at a time (key, command, click, selection, condition or button)");
+    raise(L, kinds == 0
+                 ? "wait_for: say what to wait for: key, command, click, selection, condition or button"
+                 : "wait_for: wait for one thing at a time (key, command, click, selection, condition or button)");
   }
   lua_getfield(L, index, "hint");
   if (!lua_isnil(L, -1)) {

@@ -129,14 +129,19 @@ struct NamedColour {
   const char* name;
   glm::vec3 rgb;
 };
-const NamedColour kColours[] = {
-    {"red", kDarkSwatches.vermillion},  {"green", kDarkSwatches.bluish_green},
-    {"blue", kDarkSwatches.blue},       {"yellow", kDarkSwatches.yellow},
-    {"orange", kDarkSwatches.orange},   {"magenta", kDarkSwatches.reddish_purple},
-    {"pink", kDarkSwatches.reddish_purple}, {"cyan", kDarkSwatches.sky_blue},
-    {"purple", kDarkSwatches.reddish_purple}, {"white", kDarkSwatches.ink},
-    {"grey", kDarkSwatches.grey},       {"gray", kDarkSwatches.grey},
-    {"black", kDarkSwatches.ink}};
+const NamedColour kColours[] = {{"red", kDarkSwatches.vermillion},
+                                {"green", kDarkSwatches.bluish_green},
+                                {"blue", kDarkSwatches.blue},
+                                {"yellow", kDarkSwatches.yellow},
+                                {"orange", kDarkSwatches.orange},
+                                {"magenta", kDarkSwatches.reddish_purple},
+                                {"pink", kDarkSwatches.reddish_purple},
+                                {"cyan", kDarkSwatches.sky_blue},
+                                {"purple", kDarkSwatches.reddish_purple},
+                                {"white", kDarkSwatches.ink},
+                                {"grey", kDarkSwatches.grey},
+                                {"gray", kDarkSwatches.grey},
+                                {"black", kDarkSwatches.ink}};
 
 // The colour of highlight(x) with no colour: the palette's lesson highlight (the last-edit colour).
 glm::vec3 default_highlight() { return palette_for(Theme::Dark).lesson_highlight; }

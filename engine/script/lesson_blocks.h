@@ -56,9 +56,9 @@ struct LessonPlot {
   glm::dvec2 x_range{0.0, 1.0};
   glm::dvec2 y_range{0.0, 1.0};  // the lesson's y = {lo, hi}, or the samples' own range
   std::vector<LessonPlotCurve> curves;
-  int marker_ref = -2;            // LUA_NOREF when the plot has no marker
-  std::optional<double> marker;   // the marker's latest x (nullopt: its function gave nil)
-  std::string error;              // the marker's error, once it failed
+  int marker_ref = -2;           // LUA_NOREF when the plot has no marker
+  std::optional<double> marker;  // the marker's latest x (nullopt: its function gave nil)
+  std::string error;             // the marker's error, once it failed
 };
 
 // One judgement of an answer to choose{}, pick{} or answer{}.
@@ -73,9 +73,9 @@ struct LessonJudgement {
 struct YourTurnVerdict {
   Exercise exercise = Exercise::FlipEdge;
   ExerciseInput exercise_input;  // what mine and the reference ran on (for a mesh: its mesh and element)
-  std::string file;      // "flip.lua"
-  std::string function;  // "flip_edge"
-  std::string input;     // ExerciseInput::describe: "e0 of a mesh with 2 faces"
+  std::string file;              // "flip.lua"
+  std::string function;          // "flip_edge"
+  std::string input;             // ExerciseInput::describe: "e0 of a mesh with 2 faces"
   bool right = false;
   std::string feedback;  // wrong: compare()'s diagnosis (or the file's error, file:line); right: ""
   std::string where;     // "4_edge_flip.lua:370": the your_turn call

@@ -135,8 +135,8 @@ LessonPlotCurve read_curve(lua_State* L, int number, glm::dvec2 x, int samples) 
     lua_pop(L, 1);
     lua_getfield(L, curve, "color");
   }
-  out.colour = lua_isnil(L, -1) ? kCurveColours[size_t(number - 1) % std::size(kCurveColours)]
-                                : read_colour(L, lua_gettop(L));
+  out.colour =
+      lua_isnil(L, -1) ? kCurveColours[size_t(number - 1) % std::size(kCurveColours)] : read_colour(L, lua_gettop(L));
   lua_pop(L, 1);
   lua_getfield(L, curve, "fn");
   if (!lua_isfunction(L, -1)) {

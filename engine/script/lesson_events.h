@@ -55,9 +55,9 @@ std::string lesson_command_names();
 struct LessonEvent {
   enum class Kind { Key, Click, Selection, Button, Choice, Value, Command };
   Kind kind = Kind::Key;
-  std::string name;     // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed,
-                        // the command (a kLessonCommands name)
-  ElementRef element;   // Click and Selection
+  std::string name;    // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed,
+                       // the command (a kLessonCommands name)
+  ElementRef element;  // Click and Selection
 
   static LessonEvent key(std::string name) { return {Kind::Key, std::move(name), {}}; }
   static LessonEvent click(ElementRef element) { return {Kind::Click, {}, element}; }
@@ -70,7 +70,18 @@ struct LessonEvent {
 
 struct LessonWait {
   enum class Kind {
-    None, Key, Click, Selection, Condition, Button, Animation, Choice, Pick, Answer, YourTurn, Command
+    None,
+    Key,
+    Click,
+    Selection,
+    Condition,
+    Button,
+    Animation,
+    Choice,
+    Pick,
+    Answer,
+    YourTurn,
+    Command
   };
   Kind kind = Kind::None;
   std::string name;                         // Key: the key; Button: the label; Command: the command's name

@@ -3,9 +3,9 @@
 #include "script/lesson_headless.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
-#include <cctype>
 #include <cstring>
 #include <deque>
 #include <fstream>
@@ -36,8 +36,8 @@ using Answer = ScriptedAnswer;
 using AnswerList = ScriptedAnswerList;
 
 std::optional<ElementKind> kind_by_name(const std::string& name) {
-  for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
-                           ElementKind::Boundary}) {
+  for (ElementKind kind :
+       {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face, ElementKind::Boundary}) {
     if (name == kind_name(kind)) return kind;
   }
   return std::nullopt;
@@ -478,7 +478,7 @@ class HeadlessDriver {
   std::string step_name_;
   Stepper steppers_[3] = {Stepper(SubdivisionScheme::Loop), Stepper(SubdivisionScheme::CatmullClark),
                           Stepper(SubdivisionScheme::Linear)};  // by SubdivisionScheme
-  std::filesystem::path lesson_folder_;  // where open_repaired's paths start
+  std::filesystem::path lesson_folder_;                         // where open_repaired's paths start
   StepShown shown_;
 };
 

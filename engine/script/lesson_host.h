@@ -34,19 +34,19 @@ namespace meshedit {
 // What `camera{...}` asks for. Several fields may be set together; the host applies reset, then fit, then
 // the orbit values that are present.
 struct CameraRequest {
-  bool reset = false;                  // back to the default view
-  bool fit = false;                    // frame everything shown
-  std::optional<double> yaw_degrees;   // orbit angle around the up axis
-  std::optional<double> pitch_degrees; // angle above the horizon
-  std::optional<double> distance;      // from the target
-  std::optional<glm::dvec3> target;    // the point the camera orbits
+  bool reset = false;                   // back to the default view
+  bool fit = false;                     // frame everything shown
+  std::optional<double> yaw_degrees;    // orbit angle around the up axis
+  std::optional<double> pitch_degrees;  // angle above the horizon
+  std::optional<double> distance;       // from the target
+  std::optional<glm::dvec3> target;     // the point the camera orbits
 };
 
 // What `view{...}` asks for: each field present turns that part of the mesh view on or off; absent fields keep
 // what the student chose. The mesh's own size class sets them again when it changes (a subdivision, another mesh).
 // What the curve view shows, for a lesson that reads it (curve_t(), curve_points()).
 struct CurveReading {
-  double t = 0.5;                           // the curve view's t, in [0, 1]
+  double t = 0.5;                          // the curve view's t, in [0, 1]
   std::vector<glm::dvec2> control_points;  // as the student left them (dragged, added, removed)
 };
 
@@ -54,7 +54,7 @@ struct ViewRequest {
   std::optional<bool> halfedges;  // the halfedge arrows inside their faces
   std::optional<bool> wireframe;
   std::optional<bool> vertices;
-  std::optional<bool> labels;     // the id labels (v3, e5, h12...)
+  std::optional<bool> labels;  // the id labels (v3, e5, h12...)
 };
 
 class LessonHost {

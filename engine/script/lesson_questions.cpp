@@ -178,10 +178,9 @@ void read_pick(lua_State* L, int index) {
   check_fields(L, index, "pick", {"answer", "feedback", "hint"}, true);
   lua_getfield(L, index, "answer");
   if (!lua_isfunction(L, -1) && !to_element(L, -1)) {
-    const std::string got = lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'"
-                                                           : "a " + type_name(L, -1);
-    raise(L, "pick: answer must be an element, an id like \"h4\" or function(element) return ok, why end; got " +
-                 got);
+    const std::string got =
+        lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'" : "a " + type_name(L, -1);
+    raise(L, "pick: answer must be an element, an id like \"h4\" or function(element) return ok, why end; got " + got);
   }
   lua_pop(L, 1);
   lua_getfield(L, index, "feedback");
@@ -194,8 +193,8 @@ void read_pick(lua_State* L, int index) {
         raise(L, "pick: feedback keys are element ids like \"h1\", got " + key);
       }
       if (lua_type(L, -1) != LUA_TSTRING) {
-        raise(L, "pick: the feedback for " + std::string(lua_tostring(L, -2)) + " must be text, got " +
-                     type_name(L, -1));
+        raise(L,
+              "pick: the feedback for " + std::string(lua_tostring(L, -2)) + " must be text, got " + type_name(L, -1));
       }
       lua_pop(L, 1);
     }

@@ -112,9 +112,9 @@ class LessonRunner {
   // the step is the step's error.
   void take(Prepared&& lesson, size_t index = 0) noexcept;
 
-  void next();          // the following step (nothing at the last one)
-  void back();          // the previous step, from its start (step 1 starts again)
-  void restart_step();  // the current step again, from its start
+  void next();               // the following step (nothing at the last one)
+  void back();               // the previous step, from its start (step 1 starts again)
+  void restart_step();       // the current step again, from its start
   void go_to(size_t index);  // that step (clamped), from its start
 
   // Advances the current wait (an animation by `dt` seconds, a condition checked again, a selection wait
@@ -182,7 +182,7 @@ class LessonRunner {
   std::unique_ptr<LessonScript> script_;
   std::unique_ptr<LuaRuntime> runtime_;
   const std::function<void(lua_State*)>* body_ = nullptr;  // what trampoline() runs
-  int thread_ref_ = -2;  // LUA_NOREF: the current step's coroutine in the registry
+  int thread_ref_ = -2;                                    // LUA_NOREF: the current step's coroutine in the registry
   size_t index_ = 0;
   StepState state_ = StepState::Empty;
   std::string load_error_, step_error_;

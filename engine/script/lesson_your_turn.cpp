@@ -79,8 +79,7 @@ ElementRef read_element(lua_State* L, int index, const HalfedgeMesh& mesh, Eleme
   if (!element || element->kind != kind || !mesh.alive(*element)) {
     const std::string got = element ? format_id(*element) : "a " + type_name(L, -1);
     raise(L, std::string("your_turn: element must be ") + (kind == ElementKind::Edge ? "an " : "a ") + kind_name(kind) +
-                 " of the mesh (a handle or an id like \"" +
-                 kind_prefix(kind) + "0\"), got " + got);
+                 " of the mesh (a handle or an id like \"" + kind_prefix(kind) + "0\"), got " + got);
   }
   lua_pop(L, 1);
   return *element;
@@ -251,8 +250,8 @@ int api_await(lua_State* L) {
   LessonWait wait;
   wait.kind = LessonWait::Kind::YourTurn;
   wait.name = last.file;
-  wait.question = "Your turn: write " + last.function + " in " + last.file + "; it runs on " + last.input +
-                  " each time you save.";
+  wait.question =
+      "Your turn: write " + last.function + " in " + last.file + "; it runs on " + last.input + " each time you save.";
   wait.feedback = last.feedback;
   lua_getfield(L, 1, "hint");
   if (lua_type(L, -1) == LUA_TSTRING) wait.hint = lua_tostring(L, -1);
@@ -274,11 +273,10 @@ int api_await(lua_State* L) {
 }  // namespace
 
 void open_lesson_your_turn(LuaRuntime& runtime, LessonScript& script) {
-  open_prelude_functions(runtime, script, "__lesson_your_turn",
-                         {{"check", lesson_guarded<api_check>},
-                          {"run", lesson_guarded<api_run>},
-                          {"await", lesson_guarded<api_await>}},
-                         kYourTurnPrelude);
+  open_prelude_functions(
+      runtime, script, "__lesson_your_turn",
+      {{"check", lesson_guarded<api_check>}, {"run", lesson_guarded<api_run>}, {"await", lesson_guarded<api_await>}},
+      kYourTurnPrelude);
 }
 
 }  // namespace meshedit

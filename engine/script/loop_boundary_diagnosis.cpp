@@ -52,8 +52,9 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
                 format_position(course));
     }
   }
-  const std::string rule = "a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along "
-                           "the boundary (extra credit)";
+  const std::string rule =
+      "a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along "
+      "the boundary (extra credit)";
   std::vector<std::string> out;
   if (interior.count > 0) {
     out.push_back(std::to_string(interior.count) + " of your boundary vertices, e.g. " + interior.example +
@@ -101,15 +102,18 @@ std::vector<std::string> edge_messages(const HalfedgeMesh& before, const Halfedg
   if (across.count > 0) {
     out.push_back(std::to_string(across.count) + " of your new vertices, e.g. " + across.example +
                   ", are at the interior rule 3/8 (a + b) + 1/8 (c + d) with d read across the boundary "
-                  "(h.twin.next.next walks the boundary loop, not a triangle); " + rule);
+                  "(h.twin.next.next walks the boundary loop, not a triangle); " +
+                  rule);
   }
   if (without_d.count > 0) {
     out.push_back(std::to_string(without_d.count) + " of your new vertices, e.g. " + without_d.example +
                   ", are at 3/8 (a + b) + 1/8 c, the interior rule with d left out; " + rule);
   }
   if (other.count > 0) {
-    out.push_back(std::to_string(other.count) + " of your new vertices on boundary edges are not at the midpoint, "
-                  "e.g. " + other.example + ": " + rule);
+    out.push_back(std::to_string(other.count) +
+                  " of your new vertices on boundary edges are not at the midpoint, "
+                  "e.g. " +
+                  other.example + ": " + rule);
   }
   return out;
 }

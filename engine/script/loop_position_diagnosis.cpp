@@ -38,8 +38,8 @@ std::optional<Ring> interior_ring(const HalfedgeMesh& mesh, VertexId v) {
   return ring;
 }
 
-std::string vertex_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& yours,
-                                  const HalfedgeMesh& reference, double tolerance) {
+std::string vertex_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& yours, const HalfedgeMesh& reference,
+                                  double tolerance) {
   VertexId first;
   size_t first_n = 0, count = 0;
   double first_u = 0.0;
@@ -161,7 +161,8 @@ std::string misplaced_message(const HalfedgeMesh& before, const HalfedgeMesh& yo
   }
   if (count == 0) return "";
   return std::to_string(count) + " of your original vertices sit where the reference puts new vertices, e.g. " +
-         example + ": a position computed for a new vertex (step 2) was written to an original one; keep it under "
+         example +
+         ": a position computed for a new vertex (step 2) was written to an original one; keep it under "
          "the new vertex's own id (m.id, from the split that made m)";
 }
 

@@ -297,9 +297,12 @@ void LuaRuntime::open_whitelist() {
     const char* name;
     lua_CFunction open;
   };
-  const Library libraries[] = {{"_G", luaopen_base},        {LUA_STRLIBNAME, luaopen_string},
-                               {LUA_TABLIBNAME, luaopen_table}, {LUA_MATHLIBNAME, luaopen_math},
-                               {LUA_UTF8LIBNAME, luaopen_utf8}, {LUA_COLIBNAME, luaopen_coroutine},
+  const Library libraries[] = {{"_G", luaopen_base},
+                               {LUA_STRLIBNAME, luaopen_string},
+                               {LUA_TABLIBNAME, luaopen_table},
+                               {LUA_MATHLIBNAME, luaopen_math},
+                               {LUA_UTF8LIBNAME, luaopen_utf8},
+                               {LUA_COLIBNAME, luaopen_coroutine},
                                {LUA_OSLIBNAME, luaopen_os}};
   for (const auto& library : libraries) {
     luaL_requiref(L_, library.name, library.open, 1);
@@ -356,9 +359,8 @@ void LuaRuntime::start_budget() {
   printed_ = 0;
   print_truncated_ = false;
   window_open_ = true;
-  deadline_ = std::chrono::steady_clock::now() +
-              std::chrono::duration_cast<std::chrono::steady_clock::duration>(
-                  std::chrono::duration<double>(limits_.wall_seconds));
+  deadline_ = std::chrono::steady_clock::now() + std::chrono::duration_cast<std::chrono::steady_clock::duration>(
+                                                     std::chrono::duration<double>(limits_.wall_seconds));
 }
 
 int LuaRuntime::protected_call(int nargs, int nresults) {

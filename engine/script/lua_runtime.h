@@ -69,9 +69,9 @@ class ScriptError : public std::runtime_error {
 };
 
 struct LuaLimits {
-  uint64_t instructions = 1'000'000'000;  // per run; counted in steps of kHookInterval
+  uint64_t instructions = 1'000'000'000;    // per run; counted in steps of kHookInterval
   size_t memory_bytes = size_t(512) << 20;  // everything Lua allocates (not C++ mesh storage)
-  double wall_seconds = 60.0;              // per run
+  double wall_seconds = 60.0;               // per run
 };
 
 // The Lua error value at `index` as text: a string as it is, anything else named by its type ("(error object is a
@@ -171,13 +171,13 @@ class LuaRuntime {
   bool window_open_ = false;
   size_t memory_used_ = 0;
   bool memory_hit_ = false;
-  bool out_of_memory_ = false;  // ran_out_of_memory()
-  bool cap_hit_ = false;        // note_cap
+  bool out_of_memory_ = false;    // ran_out_of_memory()
+  bool cap_hit_ = false;          // note_cap
   std::string memory_hit_where_;  // "file:line: " of the allocation that hit the cap
   uint64_t instructions_ = 0;
   bool killed_ = false;
   ScriptError::Limit kill_limit_ = ScriptError::Limit::None;
-  std::string kill_message_;       // without location
+  std::string kill_message_;  // without location
   std::chrono::steady_clock::time_point deadline_;
 };
 

@@ -46,9 +46,9 @@
 #include "core/mesh_build.h"
 #include "core/validate.h"
 #include "io/mesh_file.h"
+#include "script/bezier_bindings.h"
 #include "script/binding_state.h"
 #include "script/binding_support.h"
-#include "script/bezier_bindings.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -103,8 +103,8 @@ int mesh_iterate(lua_State* L) {
 int push_element(lua_State* L, const MeshBox& box, ElementKind kind, lua_Integer i) {
   const uint32_t capacity = box.mesh->capacity(kind);
   if (i < 0 || i >= lua_Integer(capacity)) {
-    return luaL_error(L, "no %s with id %I in this mesh (%s ids go from 0 to %d)", kind_name(kind), i,
-                      kind_name(kind), int(capacity) - 1);
+    return luaL_error(L, "no %s with id %I in this mesh (%s ids go from 0 to %d)", kind_name(kind), i, kind_name(kind),
+                      int(capacity) - 1);
   }
   push_handle_at(L, 1, ElementRef(kind, static_cast<uint32_t>(i)));
   return 1;
@@ -187,28 +187,27 @@ int mesh_copy(lua_State* L) {
 }
 
 void open_mesh_metatable(lua_State* L) {
-  const luaL_Reg methods[] = {
-      {"halfedges", guarded<mesh_iterate<ElementKind::Halfedge>>},
-      {"vertices", guarded<mesh_iterate<ElementKind::Vertex>>},
-      {"edges", guarded<mesh_iterate<ElementKind::Edge>>},
-      {"faces", guarded<mesh_iterate<ElementKind::Face>>},
-      {"boundaries", guarded<mesh_iterate<ElementKind::Boundary>>},
-      {"halfedge", guarded<mesh_element<ElementKind::Halfedge>>},
-      {"vertex", guarded<mesh_element<ElementKind::Vertex>>},
-      {"edge", guarded<mesh_element<ElementKind::Edge>>},
-      {"face", guarded<mesh_element<ElementKind::Face>>},
-      {"boundary", guarded<mesh_element<ElementKind::Boundary>>},
-      {"element", guarded<mesh_element_by_name>},
-      {"num_halfedges", guarded<mesh_count<ElementKind::Halfedge>>},
-      {"num_vertices", guarded<mesh_count<ElementKind::Vertex>>},
-      {"num_edges", guarded<mesh_count<ElementKind::Edge>>},
-      {"num_faces", guarded<mesh_count<ElementKind::Face>>},
-      {"num_boundaries", guarded<mesh_count<ElementKind::Boundary>>},
-      {"validate", guarded<mesh_validate>},
-      {"save", guarded<mesh_save>},
-      {"copy", guarded<mesh_copy>},
-      {"alive", guarded<mesh_alive>},
-      {nullptr, nullptr}};
+  const luaL_Reg methods[] = {{"halfedges", guarded<mesh_iterate<ElementKind::Halfedge>>},
+                              {"vertices", guarded<mesh_iterate<ElementKind::Vertex>>},
+                              {"edges", guarded<mesh_iterate<ElementKind::Edge>>},
+                              {"faces", guarded<mesh_iterate<ElementKind::Face>>},
+                              {"boundaries", guarded<mesh_iterate<ElementKind::Boundary>>},
+                              {"halfedge", guarded<mesh_element<ElementKind::Halfedge>>},
+                              {"vertex", guarded<mesh_element<ElementKind::Vertex>>},
+                              {"edge", guarded<mesh_element<ElementKind::Edge>>},
+                              {"face", guarded<mesh_element<ElementKind::Face>>},
+                              {"boundary", guarded<mesh_element<ElementKind::Boundary>>},
+                              {"element", guarded<mesh_element_by_name>},
+                              {"num_halfedges", guarded<mesh_count<ElementKind::Halfedge>>},
+                              {"num_vertices", guarded<mesh_count<ElementKind::Vertex>>},
+                              {"num_edges", guarded<mesh_count<ElementKind::Edge>>},
+                              {"num_faces", guarded<mesh_count<ElementKind::Face>>},
+                              {"num_boundaries", guarded<mesh_count<ElementKind::Boundary>>},
+                              {"validate", guarded<mesh_validate>},
+                              {"save", guarded<mesh_save>},
+                              {"copy", guarded<mesh_copy>},
+                              {"alive", guarded<mesh_alive>},
+                              {nullptr, nullptr}};
   luaL_newmetatable(L, kMeshType);
   lua_pushcfunction(L, mesh_gc);
   lua_setfield(L, -2, "__gc");

@@ -137,18 +137,16 @@ int module_from_polygons(lua_State* L) {
   try {
     mesh = build_halfedge_mesh(polygons);
   } catch (const MeshError& e) {
-    throw MeshError(std::string("from_polygons: ") + e.what() +
-                        " (face k is polygons[k+1], vertex k is positions[k+1])",
-                    e.element());
+    throw MeshError(
+        std::string("from_polygons: ") + e.what() + " (face k is polygons[k+1], vertex k is positions[k+1])",
+        e.element());
   }
   push_mesh(L, own_mesh(L, std::move(mesh)));
   return 1;
 }
 
 // meshedit.repair(positions, polygons).
-int module_repair(lua_State* L) {
-  return push_repaired(L, read_polygons(L), "repair");
-}
+int module_repair(lua_State* L) { return push_repaired(L, read_polygons(L), "repair"); }
 
 }  // namespace
 

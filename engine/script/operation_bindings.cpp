@@ -24,7 +24,6 @@ namespace {
 // Ids one flip, split or collapse makes at most, of any kind.
 constexpr size_t kMaxIdsPerOperation = 6;
 
-
 template <class Result, Result (*Operation)(HalfedgeMesh&, EdgeId)>
 int run_edge_operation(lua_State* L, const char* name) {
   MeshBox& box = check_mesh(L, 1);
@@ -42,7 +41,6 @@ int run_edge_operation(lua_State* L, const char* name) {
 }
 
 int mesh_collapse(lua_State* L) { return run_edge_operation<OpResult<VertexId>, collapse>(L, "collapse"); }
-
 
 int mesh_loop_subdivide(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);

@@ -49,7 +49,8 @@ std::vector<glm::dvec3> read_points(lua_State* L, int index, const char* what) {
 int evaluate_step(lua_State* L) {
   const std::vector<glm::dvec3> points = read_points(L, 1, "points");
   const double t = luaL_checknumber(L, 2);
-  const std::vector<glm::dvec3> next = points.empty() ? points : de_casteljau_step(std::span<const glm::dvec3>(points), t);
+  const std::vector<glm::dvec3> next =
+      points.empty() ? points : de_casteljau_step(std::span<const glm::dvec3>(points), t);
   lua_createtable(L, static_cast<int>(next.size()), 0);
   for (size_t i = 0; i < next.size(); ++i) {
     push_vec3(L, next[i]);

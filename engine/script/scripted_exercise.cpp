@@ -59,10 +59,11 @@ struct ScriptedExerciseReader {
   static int read(lua_State* L) {
     auto* reading = static_cast<Reading*>(lua_touserdata(L, lua_upvalueindex(1)));
     if (reading->called) raise(L, "exercise: a file defines one exercise; exercise{} was called a second time");
-    if (!lua_istable(L, 1)) raise(L, "exercise: expected a table like exercise{ name = \"collapse\", ... }, got " +
-                                         type_name(L, 1));
-    check_fields(L, 1, "exercise", {"name", "title", "file", "call", "signature", "takes", "allow", "reference",
-                                    "diagnose", "hint", "fixtures"});
+    if (!lua_istable(L, 1))
+      raise(L, "exercise: expected a table like exercise{ name = \"collapse\", ... }, got " + type_name(L, 1));
+    check_fields(
+        L, 1, "exercise",
+        {"name", "title", "file", "call", "signature", "takes", "allow", "reference", "diagnose", "hint", "fixtures"});
     ScriptedExercise& x = *reading->target;
     x.name_ = string_field(L, "name", true);
     if (!is_identifier(x.name_)) raise(L, "exercise: name must be a word like \"collapse\", got '" + x.name_ + "'");
@@ -82,8 +83,8 @@ struct ScriptedExerciseReader {
     x.signature_ = string_field(L, "signature", false, x.function_ + "(mesh, ...)");
     x.hint_ = string_field(L, "hint", false);
     const std::string takes = string_field(L, "takes", true);
-    const auto* const found = std::find_if(std::begin(kTakes), std::end(kTakes),
-                                            [&](const TakesName& t) { return takes == t.name; });
+    const auto* const found =
+        std::find_if(std::begin(kTakes), std::end(kTakes), [&](const TakesName& t) { return takes == t.name; });
     if (found == std::end(kTakes)) {
       raise(L, "exercise: takes must be vertex, edge, face, halfedge or mesh, got '" + takes + "'");
     }
@@ -158,9 +159,8 @@ struct ScriptedExerciseReader {
         }
         if (!element || element->kind != *x.takes_ || !mesh->alive(*element)) {
           raise(L, which + ".element must be " + (*x.takes_ == ElementKind::Edge ? "an " : "a ") +
-                       kind_name(*x.takes_) + " of its mesh (a handle, an id like \"" +
-                       kind_prefix(*x.takes_) + "3\", or the number), got " +
-                       (element ? format_id(*element) : type_name(L, -1)));
+                       kind_name(*x.takes_) + " of its mesh (a handle, an id like \"" + kind_prefix(*x.takes_) +
+                       "3\", or the number), got " + (element ? format_id(*element) : type_name(L, -1)));
         }
         fixture.element = *element;
         lua_pop(L, 1);
@@ -198,8 +198,8 @@ std::shared_ptr<ScriptedExercise> ScriptedExercise::load(const std::filesystem::
   lua_pushnil(L);
   lua_setglobal(L, "exercise");  // the reader's upvalue points at `reading`, which ends here
   if (!reading.called) throw ScriptError(name + ": no exercise{} in the file");
-  x->info_ = ExerciseInfo{Exercise::CurveStep, x->name_.c_str(), x->file_.c_str(), x->function_.c_str(),
-                          x->signature_.c_str(), x->title_.c_str()};
+  x->info_ = ExerciseInfo{Exercise::CurveStep,  x->name_.c_str(),      x->file_.c_str(),
+                          x->function_.c_str(), x->signature_.c_str(), x->title_.c_str()};
   return x;
 }
 

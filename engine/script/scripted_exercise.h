@@ -49,9 +49,9 @@ class LuaRuntime;
 
 // One fixture: what `meshedit grade --suite THE_DEFINITION` checks in one test.
 struct ScriptedFixture {
-  std::string name;                           // "an interior edge of a 2x2 grid"
-  std::shared_ptr<const HalfedgeMesh> mesh;   // as it was before the call
-  ElementRef element;                         // invalid when the exercise takes the whole mesh
+  std::string name;                          // "an interior edge of a 2x2 grid"
+  std::shared_ptr<const HalfedgeMesh> mesh;  // as it was before the call
+  ElementRef element;                        // invalid when the exercise takes the whole mesh
   double points = 1.0;
 };
 

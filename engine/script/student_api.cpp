@@ -16,7 +16,7 @@ struct ApiEntry {
   const char* name;  // how suites and messages spell it
   bool method;       // a mesh method (else a field of the meshedit module)
   const char* field;
-  const char* why;   // the end of hidden_api_message
+  const char* why;  // the end of hidden_api_message
 };
 
 constexpr const char* kNoFiles = "student code cannot read or write files";
@@ -28,8 +28,7 @@ const ApiEntry kHideable[] = {
     {"mesh:loop_subdivide", true, "loop_subdivide", "it is what upsample does, so write the five steps yourself"},
     {"meshedit.curve", false, "curve",
      "it evaluates curves for you; evaluate_step and evaluate are yours to write with vec3 arithmetic"},
-    {"meshedit.patch", false, "patch",
-     "it evaluates patches for you; evaluate is yours to write with vec3 arithmetic"},
+    {"meshedit.patch", false, "patch", "it evaluates patches for you; evaluate is yours to write with vec3 arithmetic"},
 };
 
 const ApiEntry kFileEntries[] = {{"meshedit.load", false, "load", kNoFiles},

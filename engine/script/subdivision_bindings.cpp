@@ -93,7 +93,7 @@ struct PhasesBox {
   std::shared_ptr<HalfedgeMesh> mesh;  // the mesh the phases step
   uint64_t version = 0;                // its version after the last phase ran
   std::shared_ptr<StorageAccount> account;
-  size_t charged = 0;                  // bytes of phase 1's points charged to `account`
+  size_t charged = 0;  // bytes of phase 1's points charged to `account`
 
   void release() {
     if (account) account->used -= charged;

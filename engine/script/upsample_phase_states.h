@@ -40,8 +40,8 @@ struct MeshCounts {
 MeshCounts counts_of(const HalfedgeMesh& mesh);
 
 struct UpsamplePhaseState {
-  bool started = false;         // the phase wrote something (phase 1: always)
-  size_t position = 0;          // the replay position of yours at this boundary
+  bool started = false;  // the phase wrote something (phase 1: always)
+  size_t position = 0;   // the replay position of yours at this boundary
   MeshCounts mine, reference;
   size_t positions_differ = 0;  // vertices, by id
   size_t halfedges_differ = 0;  // halfedges, by id

@@ -102,8 +102,8 @@ struct LineCount {
 // split's pointer writes and its new vertex's position); an operation or a committed position closes it.
 void phase_by_kind(std::span<const RecordedEdit> edits, UpsamplePhases& out, std::vector<uint8_t>& near,
                    std::map<std::string, LineCount>& lines) {
-  bool created = false;       // a creation is in the window
-  size_t last_creation = 0;  // its index
+  bool created = false;                    // a creation is in the window
+  size_t last_creation = 0;                // its index
   std::vector<uint32_t> created_vertices;  // in the open window
   const auto close_window = [&] {
     created = false;
@@ -115,7 +115,7 @@ void phase_by_kind(std::span<const RecordedEdit> edits, UpsamplePhases& out, std
     if (!window_open) close_window();
     switch (edit.what) {
       case EditKind::Operation:
-        out.phase_of[i] = edit.field == "split" ? UpsamplePhase::Split
+        out.phase_of[i] = edit.field == "split"  ? UpsamplePhase::Split
                           : edit.field == "flip" ? UpsamplePhase::Flip
                                                  : UpsamplePhase::Other;
         close_window();
@@ -131,9 +131,9 @@ void phase_by_kind(std::span<const RecordedEdit> edits, UpsamplePhases& out, std
         break;
       case EditKind::Set:
         if (edit.field == "position") {
-          const bool made_here = window_open && edit.element.kind == ElementKind::Vertex &&
-                                 std::find(created_vertices.begin(), created_vertices.end(), edit.element.index) !=
-                                     created_vertices.end();
+          const bool made_here =
+              window_open && edit.element.kind == ElementKind::Vertex &&
+              std::find(created_vertices.begin(), created_vertices.end(), edit.element.index) != created_vertices.end();
           out.phase_of[i] = made_here ? UpsamplePhase::Split : UpsamplePhase::Commit;
           if (!made_here) close_window();
         } else {

@@ -57,9 +57,9 @@ struct UpsamplePhases {
   static constexpr size_t kNearCreation = 48;
   static constexpr size_t kMaxProblems = 8;
 
-  std::vector<UpsamplePhase> phase_of;         // one per edit
-  std::array<UpsamplePhaseSpan, 5> span{};     // [1] .. [4]; [0] unused
-  size_t other_writes = 0;                     // edits of phase Other
+  std::vector<UpsamplePhase> phase_of;      // one per edit
+  std::array<UpsamplePhaseSpan, 5> span{};  // [1] .. [4]; [0] unused
+  size_t other_writes = 0;                  // edits of phase Other
   std::vector<std::string> problems;
 
   size_t size() const { return phase_of.size(); }

@@ -29,8 +29,8 @@ size_t upsample_edit_budget(const HalfedgeMesh& before) {
   return std::min(EditRecorder::kDefaultMaxEdits, 64 * elements + 4096);
 }
 
-std::string explain_unfinished_upsample(const std::string& error, const HalfedgeMesh& before,
-                                        const HalfedgeMesh* mine, std::span<const RecordedEdit> edits) {
+std::string explain_unfinished_upsample(const std::string& error, const HalfedgeMesh& before, const HalfedgeMesh* mine,
+                                        std::span<const RecordedEdit> edits) {
   std::string where = leading_line(error);
   std::string text = error;
   if (where.empty() && !edits.empty() && !edits.back().where.empty()) {

@@ -27,7 +27,7 @@ namespace meshedit {
 size_t upsample_edit_budget(const HalfedgeMesh& before);
 
 // `mine`: the mesh as the stopped run left it (null when there is none); `edits`: its recording (may be empty).
-std::string explain_unfinished_upsample(const std::string& error, const HalfedgeMesh& before,
-                                        const HalfedgeMesh* mine, std::span<const RecordedEdit> edits);
+std::string explain_unfinished_upsample(const std::string& error, const HalfedgeMesh& before, const HalfedgeMesh* mine,
+                                        std::span<const RecordedEdit> edits);
 
 }  // namespace meshedit

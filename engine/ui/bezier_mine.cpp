@@ -17,17 +17,15 @@
 namespace meshedit {
 namespace {
 
-std::string level_range(int last) {
-  return last == 1 ? "level 1 is" : "levels 1 to " + std::to_string(last) + " are";
-}
+std::string level_range(int last) { return last == 1 ? "level 1 is" : "levels 1 to " + std::to_string(last) + " are"; }
 
 }  // namespace
 
 void describe_curve_levels(CurveMineLevels& mine, int shown) {
   const int last = static_cast<int>(mine.levels.size()) - 1;
   if (mine.load_failed || (!mine.error.empty() && mine.failed_level <= shown)) {
-    mine.message = mine.load_failed ? mine.error
-                                    : mine.error + " (computing level " + std::to_string(mine.failed_level) + ")";
+    mine.message =
+        mine.load_failed ? mine.error : mine.error + " (computing level " + std::to_string(mine.failed_level) + ")";
   } else if (mine.failed() && mine.failed_level <= shown) {
     const std::string level = "level " + std::to_string(mine.failed_level);
     if (mine.wrong_point >= 0) {
@@ -127,9 +125,9 @@ void BezierMine::set_folder(const std::filesystem::path& folder) {
 
 const CurveMineLevels& BezierMine::curve_levels(std::span<const glm::dvec2> control_points, double t, int shown) {
   const bool loaded = curve_file_.ensure_loaded();
-  const bool same = curve_valid_ && curve_serial_ == curve_file_.serial() && curve_t_ == t &&
-                    std::equal(control_points.begin(), control_points.end(), curve_points_.begin(),
-                               curve_points_.end());
+  const bool same =
+      curve_valid_ && curve_serial_ == curve_file_.serial() && curve_t_ == t &&
+      std::equal(control_points.begin(), control_points.end(), curve_points_.begin(), curve_points_.end());
   if (!same) {
     curve_ = start_curve_levels(control_points);
     curve_points_.assign(control_points.begin(), control_points.end());

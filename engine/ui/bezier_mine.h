@@ -35,12 +35,12 @@ namespace meshedit {
 // The curve view's levels as the student's code made them.
 struct CurveMineLevels {
   std::vector<std::vector<glm::dvec3>> levels;  // [0]: the control points (z = 0); [k]: yours, k = 1, 2, ...
-  int failed_level = -1;      // the level where yours stopped: the last of `levels` when it differs, one past
-                              // the last for an error (1 when the file did not load); -1 while all match
-  bool load_failed = false;   // the file did not load: no level can be computed
-  std::string error;          // why that level could not be computed: the load error or the Lua error, file:line
-  int wrong_point = -1;       // 0-based index of the first point of failed_level that differs (-1: none does,
-                              // e.g. a missing point)
+  int failed_level = -1;            // the level where yours stopped: the last of `levels` when it differs, one past
+                                    // the last for an error (1 when the file did not load); -1 while all match
+  bool load_failed = false;         // the file did not load: no level can be computed
+  std::string error;                // why that level could not be computed: the load error or the Lua error, file:line
+  int wrong_point = -1;             // 0-based index of the first point of failed_level that differs (-1: none does,
+                                    // e.g. a missing point)
   glm::dvec3 mine_point{0.0};       // that point, yours
   glm::dvec3 reference_point{0.0};  // and the reference's
   std::vector<glm::dvec3> reference_level;  // the reference's step on failed_level's input
@@ -65,13 +65,13 @@ void describe_curve_levels(CurveMineLevels& mine, int shown);
 
 // The patch view's probe point as the student's code made it.
 struct PatchMinePoint {
-  bool ran = false;        // yours returned a point
-  bool equal = false;      // and it is the reference's (up to the checker's tolerance)
+  bool ran = false;    // yours returned a point
+  bool equal = false;  // and it is the reference's (up to the checker's tolerance)
   glm::dvec3 mine{0.0};
   glm::dvec3 reference{0.0};
-  std::string error;       // the load error or the Lua error, file:line
+  std::string error;  // the load error or the Lua error, file:line
   std::vector<std::string> details;
-  std::string message;     // one line for the panel
+  std::string message;  // one line for the panel
 };
 
 PatchMinePoint check_patch_point(StudentCode& code, const BezierPatch& patch, double u, double v);

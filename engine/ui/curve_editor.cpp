@@ -21,8 +21,8 @@
 #include <string>
 #include <utility>
 
-#include <glm/geometric.hpp>
 #include <imgui.h>
+#include <glm/geometric.hpp>
 
 #include "ui/bezier_mine.h"
 #include "ui/flow_layout.h"
@@ -99,9 +99,7 @@ CurveView view_for(const CurveRegion& region, glm::dvec2 canvas_min, glm::dvec2 
 
 // ---- state -----------------------------------------------------------------------------------------
 
-BezierCurve default_curve() {
-  return BezierCurve{{{0.1, 0.2}, {0.25, 0.8}, {0.75, 0.85}, {0.9, 0.3}}};
-}
+BezierCurve default_curve() { return BezierCurve{{{0.1, 0.2}, {0.25, 0.8}, {0.75, 0.85}, {0.9, 0.3}}}; }
 
 CurveEditorState make_curve_editor(BezierCurve curve) {
   CurveEditorState state;
@@ -486,7 +484,8 @@ void draw_mine_rows(const CurveMineLevels& mine, int shown) {
     table_text_row(std::to_string(k).c_str(), colour, format_points(flat(mine.levels[k])));
   }
   if (!mine.failed() || mine.failed_level > shown) {
-    if (!mine.complete()) table_text_row("...", disabled, "the next level comes from your evaluate_step when E shows it");
+    if (!mine.complete())
+      table_text_row("...", disabled, "the next level comes from your evaluate_step when E shows it");
     return;
   }
   if (!mine.error.empty()) {
@@ -509,10 +508,10 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
   if (mine) draw_mine_rows(*mine, shown);
   for (int k = 0; !mine && k < static_cast<int>(levels.size()); ++k) {
     const bool is_shown = k <= shown;
-    const ImVec4 colour = is_shown ? ImGui::ColorConvertU32ToFloat4(
-                                         k + 1 == static_cast<int>(levels.size()) && k > 0 ? final_colour()
-                                                                                          : level_colour(k))
-                                   : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
+    const ImVec4 colour =
+        is_shown ? ImGui::ColorConvertU32ToFloat4(k + 1 == static_cast<int>(levels.size()) && k > 0 ? final_colour()
+                                                                                                    : level_colour(k))
+                 : ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled);
     ImGui::TableNextRow();
     ImGui::TableNextColumn();
     ImGui::TextColored(colour, "%d", k);

@@ -20,8 +20,8 @@
 #include <span>
 #include <vector>
 
-#include <glm/vec2.hpp>
 #include <imgui.h>
+#include <glm/vec2.hpp>
 
 #include "core/bezier.h"
 
@@ -59,21 +59,21 @@ CurveView view_for(const CurveRegion& region, glm::dvec2 canvas_min, glm::dvec2 
 
 // ---- state -----------------------------------------------------------------------------------------
 
-inline constexpr double kCurveScrollStep = 0.01;   // t change per scroll notch (the course's value)
-inline constexpr double kCurvePickRadius = 10.0;   // pixels around a control point that grab it
-inline constexpr int kCurveSamples = 200;          // segments of the full curve (the course steps t by 0.005)
+inline constexpr double kCurveScrollStep = 0.01;  // t change per scroll notch (the course's value)
+inline constexpr double kCurvePickRadius = 10.0;  // pixels around a control point that grab it
+inline constexpr int kCurveSamples = 200;         // segments of the full curve (the course steps t by 0.005)
 
 struct CurveEditorState {
   BezierCurve curve;
   double t = 0.5;
-  int levels_shown = 0;     // de Casteljau steps drawn: 0 = control polygon only, n-1 = down to C(t)
-  bool show_curve = false;  // C; the course viewer also starts without the curve
-  bool show_split = false;  // both halves of the curve cut at t
-  int hovered = -1;         // control point under the mouse
-  int dragged = -1;         // control point being moved
+  int levels_shown = 0;              // de Casteljau steps drawn: 0 = control polygon only, n-1 = down to C(t)
+  bool show_curve = false;           // C; the course viewer also starts without the curve
+  bool show_split = false;           // both halves of the curve cut at t
+  int hovered = -1;                  // control point under the mouse
+  int dragged = -1;                  // control point being moved
   glm::dvec2 drag_offset{0.0, 0.0};  // point minus mouse (curve units) when the drag began: no jump
-  CurveRegion region;       // the curve-plane rectangle the canvas shows
-  CurveView view;           // the transform of the last drawn frame; hit tests use it
+  CurveRegion region;                // the curve-plane rectangle the canvas shows
+  CurveView view;                    // the transform of the last drawn frame; hit tests use it
 };
 
 // A cubic that shows off the construction (its levels do not overlap at t = 0.5).
@@ -141,7 +141,7 @@ struct CanvasInput {
   bool left_down = false;            // left button is held
   bool left_double_clicked = false;  // second press of a double click (left_pressed is true too)
   bool right_pressed = false;
-  double wheel = 0.0;                // scroll notches, positive away from the user
+  double wheel = 0.0;  // scroll notches, positive away from the user
 };
 
 // Applies one frame of input:

@@ -190,8 +190,8 @@ Check triangulate_all(MeshDocument& doc, Selection& selection) {
   doc.loop = LoopStepper{};
   append_to_message(doc, [&] {
     if (report.polygons_split == 0) return std::string("; every face was already a triangle");
-    return "; " + std::to_string(report.polygons_split) + " faces split into " +
-           std::to_string(report.triangles_made) + " triangles";
+    return "; " + std::to_string(report.polygons_split) + " faces split into " + std::to_string(report.triangles_made) +
+           " triangles";
   });
   return check;
 }

@@ -34,9 +34,9 @@ inline ImVec4 changed_cell() { return im_colour(ui_palette().changed_cell); }  /
 // clear it before a frame and click the recorded rectangles in the next one.
 struct UiProbe {
   struct Item {
-    std::string name;     // what kind of item: "next", "row", "cell:twin", "select-culprit", ...
-    ElementRef element;   // the element it selects (invalid for buttons without one)
-    ImVec2 min, max;      // screen rectangle
+    std::string name;    // what kind of item: "next", "row", "cell:twin", "select-culprit", ...
+    ElementRef element;  // the element it selects (invalid for buttons without one)
+    ImVec2 min, max;     // screen rectangle
     ImVec2 center() const { return ImVec2((min.x + max.x) * 0.5f, (min.y + max.y) * 0.5f); }
   };
   std::vector<Item> items;

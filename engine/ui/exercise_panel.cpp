@@ -100,7 +100,8 @@ void draw_report(const ExerciseRun& run) {
 
 void draw_pointer_table(const std::vector<PointerRow>& rows) {
   if (rows.empty()) return;
-  const size_t differing = size_t(std::count_if(rows.begin(), rows.end(), [](const PointerRow& r) { return r.differs(); }));
+  const size_t differing =
+      size_t(std::count_if(rows.begin(), rows.end(), [](const PointerRow& r) { return r.differs(); }));
   if (!ImGui::CollapsingHeader("changed pointers, mine vs reference", ImGuiTreeNodeFlags_DefaultOpen)) return;
   text(std::to_string(rows.size()) + " fields changed, " + std::to_string(differing) + " differ");
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY;
@@ -237,8 +238,7 @@ std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows) {
   return rows;
 }
 
-void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
-                         Selection& selection) {
+void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc, Selection& selection) {
   session.sync(doc);
   if (!state.open) return;
   ImGui::SetNextWindowSize(ImVec2(520, 640), ImGuiCond_FirstUseEver);

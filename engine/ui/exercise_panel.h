@@ -43,17 +43,17 @@ std::vector<PointerRow> pointer_rows(const ExerciseRun& run, size_t max_rows);
 struct ExercisePanelState {
   static constexpr size_t kMaxPointerRows = 5000;
   bool open = false;
-  bool follow_replay = true;      // scroll the write list to the current write
-  uint64_t rows_serial = 0;       // the run the cached rows belong to
+  bool follow_replay = true;  // scroll the write list to the current write
+  uint64_t rows_serial = 0;   // the run the cached rows belong to
   std::vector<PointerRow> rows;
-  uint64_t phases_serial = 0;     // the run the phases belong to
-  std::optional<UpsamplePhases> phases;            // a mine upsample run with recorded writes
+  uint64_t phases_serial = 0;            // the run the phases belong to
+  std::optional<UpsamplePhases> phases;  // a mine upsample run with recorded writes
   std::optional<UpsamplePhaseStates> phase_states;
-  std::string phases_error;       // why the phase states could not be made
-  size_t writes_drawn = 0;        // rows of the write list drawn in the last frame (tests)
-  float run_mine_x = -1.0f;       // where "Run mine" was drawn in the last frame, its centre (tests click it)
+  std::string phases_error;  // why the phase states could not be made
+  size_t writes_drawn = 0;   // rows of the write list drawn in the last frame (tests)
+  float run_mine_x = -1.0f;  // where "Run mine" was drawn in the last frame, its centre (tests click it)
   float run_mine_y = -1.0f;
-  float next_phase_x = -1.0f;     // where "next phase" was drawn in the last frame, its centre (tests click it)
+  float next_phase_x = -1.0f;  // where "next phase" was drawn in the last frame, its centre (tests click it)
   float next_phase_y = -1.0f;
   // Scroll the panel, once, so the next run's changed-pointers table ends in sight (the lesson's your_turn sets it).
   bool bring_table_into_view = false;
@@ -63,7 +63,6 @@ struct ExercisePanelState {
 // The same contents drawn into the current window or tab (state.open is the caller's to honour).
 void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
                                   Selection& selection);
-void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc,
-                         Selection& selection);
+void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc, Selection& selection);
 
 }  // namespace meshedit

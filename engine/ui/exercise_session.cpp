@@ -166,7 +166,7 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
       result.report.reference = meshedit::run_reference(exercise_, result.input);
     }
   } catch (const std::bad_alloc&) {
-    throw;  // run() reports it: nothing was done
+    throw;                             // run() reports it: nothing was done
   } catch (const std::exception& e) {  // check_exercise promises not to throw; a bug must not close the window
     run_.reset();
     set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
@@ -241,8 +241,7 @@ bool ExerciseSession::can_replay(const MeshDocument& doc) const {
   return doc.generation == run_->generation && doc.mesh.version() == run_->version;
 }
 
-void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
-                           std::optional<HalfedgeMesh> from) {
+void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from) {
   show_state(doc, std::move(mesh), std::move(label), std::move(from));
   shown_generation_ = doc.generation;
   shown_version_ = doc.mesh.version();

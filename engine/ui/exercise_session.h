@@ -52,14 +52,14 @@ std::vector<Exercise> mesh_exercises();
 // The last run (mine or the reference) and what it worked on.
 struct ExerciseRun {
   Exercise exercise = Exercise::FlipEdge;
-  bool mine = true;                 // false: the reference alone (report.mine is empty)
-  std::string label;                // "mine: flip e7"
-  ExerciseInput input;              // input.mesh is the document's mesh before the run
-  ExerciseReport report;            // mine runs: check_exercise with record_edits; reference runs: .reference only
-  bool applied = false;             // the result went into the document as one undo entry
-  uint64_t generation = 0;          // the document's generation and mesh version right after the run
+  bool mine = true;         // false: the reference alone (report.mine is empty)
+  std::string label;        // "mine: flip e7"
+  ExerciseInput input;      // input.mesh is the document's mesh before the run
+  ExerciseReport report;    // mine runs: check_exercise with record_edits; reference runs: .reference only
+  bool applied = false;     // the result went into the document as one undo entry
+  uint64_t generation = 0;  // the document's generation and mesh version right after the run
   uint64_t version = 0;
-  uint64_t serial = 0;              // +1 per run, so views rebuild what they derive from it once per run
+  uint64_t serial = 0;  // +1 per run, so views rebuild what they derive from it once per run
 };
 
 class ExerciseSession {
@@ -92,8 +92,8 @@ class ExerciseSession {
   bool can_replay(const MeshDocument& doc) const;  // a mine run with edits whose state the document still shows
   bool replaying() const { return replaying_; }
   size_t replay_position() const { return position_; }  // k: edits 1..k applied
-  size_t replay_length() const;                          // N
-  const std::vector<RecordedEdit>& edits() const;        // empty without a mine run
+  size_t replay_length() const;                         // N
+  const std::vector<RecordedEdit>& edits() const;       // empty without a mine run
   // Shows the before-mesh (k = 0). Refused when !can_replay(doc).
   Check start_replay(MeshDocument& doc);
   // Shows state k (clamped to N); `last` is edit k alone. Refused when not replaying.

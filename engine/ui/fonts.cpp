@@ -21,8 +21,8 @@ namespace fs = std::filesystem;
 ImFont* add_font(ImFontAtlas& atlas, const fs::path& path, float pixels, ImFontConfig config) {
   const FileBytes file = read_file_bytes(path);
   const std::string& bytes = file.bytes;
-  const bool truetype = bytes.size() > 12 && (bytes.compare(0, 4, std::string("\0\1\0\0", 4)) == 0 ||
-                                              bytes.compare(0, 4, "true") == 0);
+  const bool truetype =
+      bytes.size() > 12 && (bytes.compare(0, 4, std::string("\0\1\0\0", 4)) == 0 || bytes.compare(0, 4, "true") == 0);
   if (!file.ok() || !truetype) return nullptr;
   void* data = ImGui::MemAlloc(bytes.size());
   std::memcpy(data, bytes.data(), bytes.size());
@@ -57,7 +57,8 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
     out.warning = "no " + text.string() + " (install fonts-dejavu-core): using ImGui's built-in font";
     return out;
   }
-  if (!add_font(atlas, mono, out.pixels, config)) out.warning = "no " + mono.string() + " (install fonts-dejavu-core): ids use the text font";
+  if (!add_font(atlas, mono, out.pixels, config))
+    out.warning = "no " + mono.string() + " (install fonts-dejavu-core): ids use the text font";
   out.real = true;
   return out;
 }

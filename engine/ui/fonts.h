@@ -17,9 +17,9 @@ struct ImFont;
 namespace meshedit {
 
 struct FontsLoaded {
-  bool real = false;     // DejaVu was found and loaded
-  float pixels = 0.0f;   // the text font's height in framebuffer pixels
-  std::string warning;   // why ImGui's font stands in ("" when real)
+  bool real = false;    // DejaVu was found and loaded
+  float pixels = 0.0f;  // the text font's height in framebuffer pixels
+  std::string warning;  // why ImGui's font stands in ("" when real)
 };
 
 // Builds the atlas for text of `font_px` at content scale `scale` (pixels = font_px * scale), rasterised at

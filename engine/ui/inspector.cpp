@@ -143,7 +143,10 @@ void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
       d.link("face", mesh.face(h));
       if (alive) {
         d.link("prev", facts.prev);
-        if (!facts.prev.valid()) { ImGui::SameLine(); ImGui::TextDisabled("(face cycle broken)"); }
+        if (!facts.prev.valid()) {
+          ImGui::SameLine();
+          ImGui::TextDisabled("(face cycle broken)");
+        }
         d.link("head", facts.head);
         ImGui::SameLine();
         ImGui::TextDisabled("next.vertex");
@@ -202,8 +205,9 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
   const ElementRef before = selection.selected;
   const ElementRef e = selection.selected;
   if (!e.valid()) {
-    ImGui::TextWrapped("Nothing selected. Click an element in the view or a row of the pointer tables; "
-                       "N T V E F H walk the pointers.");
+    ImGui::TextWrapped(
+        "Nothing selected. Click an element in the view or a row of the pointer tables; "
+        "N T V E F H walk the pointers.");
     return false;
   }
   const RefState st = reference_state(doc.mesh, e);

@@ -57,9 +57,7 @@ ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
 // One block of the step (script/lesson_blocks.h): say() text, live text (or its error), a plot, a question answered.
 void draw_block(const LessonRunner& runner, const LessonBlock& block) {
   switch (block.kind) {
-    case LessonBlock::Kind::Text:
-      text_wrapped_at_spaces(reflow(markdown_to_plain(runner.said()[block.index])));
-      break;
+    case LessonBlock::Kind::Text: text_wrapped_at_spaces(reflow(markdown_to_plain(runner.said()[block.index]))); break;
     case LessonBlock::Kind::Live: {
       const LessonLive& live = runner.lives()[block.index];
       if (!live.error.empty()) {
@@ -97,8 +95,10 @@ void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, co
   const float width = ImGui::GetContentRegionAvail().x;
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   if (is_mesh_exercise(verdict->exercise)) {
-    ImGui::TextWrapped("Runs your %s on this input in the Exercises tab (X): the pointers it changed beside the "
-                       "reference's, and your writes one by one.", verdict->function.c_str());
+    ImGui::TextWrapped(
+        "Runs your %s on this input in the Exercises tab (X): the pointers it changed beside the "
+        "reference's, and your writes one by one.",
+        verdict->function.c_str());
   } else {
     ImGui::TextWrapped("Shows this input in the %s view with its \"mine\" on (M): your %s beside the reference's.",
                        verdict->exercise == Exercise::CurveStep ? "curve" : "patch", verdict->function.c_str());
@@ -208,8 +208,8 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   }
   const std::vector<std::string> steps = runner.step_titles();
   const size_t current = runner.current_step();
-  const std::string step_line = "Step " + std::to_string(current + 1) + " of " + std::to_string(steps.size()) +
-                                ": " + (current < steps.size() ? steps[current] : std::string());
+  const std::string step_line = "Step " + std::to_string(current + 1) + " of " + std::to_string(steps.size()) + ": " +
+                                (current < steps.size() ? steps[current] : std::string());
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##steps", step_line.c_str())) {
     for (size_t i = 0; i < steps.size(); ++i) {
@@ -223,7 +223,8 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   const char* const buttons[] = {"< Back", "Next >", "Reload", "Lessons"};
   const ImGuiStyle& style = ImGui::GetStyle();
   float row = -style.ItemSpacing.x;
-  for (const char* label : buttons) row += ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
+  for (const char* label : buttons)
+    row += ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
   const int rows = row <= ImGui::GetContentRegionAvail().x ? 1 : 2;
   ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * float(rows)), false);
   draw_step_body(runner, state);

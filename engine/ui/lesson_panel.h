@@ -14,10 +14,11 @@
 //   check; one that fails otherwise waits for the next save.
 // - Reload and hot reload reload through state.reload when it is set (the app's, which renames the window after the
 //   lesson, whole or nothing), else with the runner's own reload().
-// - While the step waits on a your_turn whose last run was wrong (your_turn_to_show), the panel shows the diagnosis and,
+// - While the step waits on a your_turn whose last run was wrong (your_turn_to_show), the panel shows the diagnosis
+// and,
 //   when state.show_your_turn is set, the "Show mine vs reference" button, which calls it: the app shows that run where
-//   it compares runs (the Exercises tab, the curve and patch views' "mine"). The step's child scrolls to the button once
-//   per run and once per width of the panel, so a new diagnosis and its button are in sight, after a resize too.
+//   it compares runs (the Exercises tab, the curve and patch views' "mine"). The step's child scrolls to the button
+//   once per run and once per width of the panel, so a new diagnosis and its button are in sight, after a resize too.
 #pragma once
 
 #include <filesystem>
@@ -40,9 +41,9 @@ struct LessonPanelState {
   static constexpr double kReloadCheckSeconds = 0.5;
 
   bool open = true;
-  std::filesystem::path lessons_dir;                 // where the lesson list comes from
-  std::vector<std::filesystem::path> lesson_files;   // *.lua in lessons_dir, sorted; filled by refresh_lessons
-  std::optional<std::filesystem::path> requested;    // a lesson the user picked from the list this frame
+  std::filesystem::path lessons_dir;                // where the lesson list comes from
+  std::vector<std::filesystem::path> lesson_files;  // *.lua in lessons_dir, sorted; filled by refresh_lessons
+  std::optional<std::filesystem::path> requested;   // a lesson the user picked from the list this frame
   std::filesystem::file_time_type loaded_time{};
   double since_check = 0.0;
   // How Reload and hot reload reload the lesson; empty: reload_runner.

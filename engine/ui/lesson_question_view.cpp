@@ -68,8 +68,8 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
 
 void draw_lesson_answered(const LessonJudgement& judgement) {
   text_wrapped_at_spaces(markdown_to_plain(judgement.question));
-  coloured_text(ui_palette().ok, "Right: " + judgement.given +
-                                     (judgement.feedback.empty() ? std::string() : ". " + judgement.feedback));
+  coloured_text(ui_palette().ok,
+                "Right: " + judgement.given + (judgement.feedback.empty() ? std::string() : ". " + judgement.feedback));
 }
 
 }  // namespace meshedit

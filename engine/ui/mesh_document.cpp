@@ -468,16 +468,18 @@ bool last_patch_kept_clean(MeshDocument& doc) {
 }  // namespace
 
 const ValidationReport& cached_validation(MeshDocument& doc) {
-  return cached(doc.validation, doc, [&] {
-           CheckedValidation checked;
-           if (last_patch_kept_clean(doc)) {
-             checked.clean = checked.from_patch = true;
-           } else {
-             checked.clean = mesh_is_clean(doc.mesh, hardware_threads());
-             if (!checked.clean) checked.report = validate_without_shortcut(doc.mesh, kListedViolations);
-           }
-           return checked;
-         }).report;
+  return cached(doc.validation, doc,
+                [&] {
+                  CheckedValidation checked;
+                  if (last_patch_kept_clean(doc)) {
+                    checked.clean = checked.from_patch = true;
+                  } else {
+                    checked.clean = mesh_is_clean(doc.mesh, hardware_threads());
+                    if (!checked.clean) checked.report = validate_without_shortcut(doc.mesh, kListedViolations);
+                  }
+                  return checked;
+                })
+      .report;
 }
 
 const ValidationReport* cached_validation_if_cheap(MeshDocument& doc) {

@@ -85,8 +85,8 @@ struct DocumentMessage {
 // The pointer fields a diff names (core/history.h FieldChange::field), as a small enum for O(1) lookups.
 enum class MeshField : uint8_t { Next, Twin, Vertex, Edge, Face, Halfedge, Position, Alive };
 inline constexpr int kMeshFieldCount = 8;
-const char* field_name(MeshField field);                          // "next", ..., "alive"
-std::optional<MeshField> parse_field(std::string_view name);      // the inverse; nullopt for anything else
+const char* field_name(MeshField field);                      // "next", ..., "alive"
+std::optional<MeshField> parse_field(std::string_view name);  // the inverse; nullopt for anything else
 
 // Which (element, field) cells and which elements a diff touches. Built once per change; lookups are O(1).
 class ChangeIndex {
@@ -111,18 +111,18 @@ class ChangeIndex {
 
 // What the most recent change did, for highlighted cells and the Before/After view.
 struct LastChange {
-  std::string label;                       // "flip e5", "undo flip e5"; empty before the first change
-  std::vector<FieldChange> changes;        // diff(before, mesh); empty when `listed` is false
-  size_t change_count = 0;                 // fields that changed; when not listed, only "more than the cap"
-  bool listed = true;                      // false when the diff was larger than DocumentLimits::max_listed_changes
-  ChangeIndex index;                       // built from `changes`
+  std::string label;                 // "flip e5", "undo flip e5"; empty before the first change
+  std::vector<FieldChange> changes;  // diff(before, mesh); empty when `listed` is false
+  size_t change_count = 0;           // fields that changed; when not listed, only "more than the cap"
+  bool listed = true;                // false when the diff was larger than DocumentLimits::max_listed_changes
+  ChangeIndex index;                 // built from `changes`
   // The change as a patch from the state before to the mesh, when it was local (the state before is read through it:
   // core/state_before.h). Absent for snapshot-sized changes.
   std::optional<MeshPatch> patch;
   // A copy of the mesh before a snapshot-sized change whose diff is listed, for the renderer's in-place update;
   // absent otherwise (before the first change, with a patch, or a diff too long to list: nothing would read it).
   std::optional<HalfedgeMesh> before;
-  uint64_t serial = 0;                     // +1 every time this struct is replaced
+  uint64_t serial = 0;  // +1 every time this struct is replaced
   // False when the change happened but could not be recorded (memory ran out saving the state before it, or
   // recording the change): no `before`, `patch` or `changes`, and views say so rather than show an empty diff.
   bool recorded = true;
@@ -145,9 +145,9 @@ struct DocumentLimits {
 // Loop subdivision one phase per key press (core/loop_subdivision.h): which phase runs next and the state
 // phases 1-3 computed. The state is only trusted while the mesh is the one the last phase left.
 struct LoopStepper {
-  int next_phase = 1;            // 1..4
+  int next_phase = 1;  // 1..4
   LoopState state;
-  uint64_t generation = 0;       // document generation and mesh version after the last phase ran
+  uint64_t generation = 0;  // document generation and mesh version after the last phase ran
   uint64_t version = 0;
 };
 
@@ -156,7 +156,7 @@ struct VersionCache {
   bool filled = false;
   uint64_t generation = 0;
   uint64_t version = 0;
-  size_t computations = 0;       // how many times the value was computed (tests count them)
+  size_t computations = 0;  // how many times the value was computed (tests count them)
   T value{};
 };
 
@@ -169,7 +169,7 @@ struct CheckedValidation {
 };
 
 struct MeshDocument {
-  std::string path;              // the file the mesh came from ("" for a generated mesh)
+  std::string path;  // the file the mesh came from ("" for a generated mesh)
   HalfedgeMesh mesh;
   History history;
   LastChange last;

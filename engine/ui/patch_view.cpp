@@ -54,8 +54,8 @@ std::vector<glm::dvec3> sample_curve3(std::span<const glm::dvec3> points, int se
   return samples;
 }
 
-PatchOverlayItem item(std::vector<glm::dvec3> points, glm::vec4 colour, float width, bool points_only,
-                     OverlayKind kind, std::string label) {
+PatchOverlayItem item(std::vector<glm::dvec3> points, glm::vec4 colour, float width, bool points_only, OverlayKind kind,
+                      std::string label) {
   return PatchOverlayItem{std::move(points), colour, width, points_only, kind, std::move(label)};
 }
 
@@ -64,7 +64,7 @@ PatchOverlayItem item(std::vector<glm::dvec3> points, glm::vec4 colour, float wi
 // ---- overlay geometry ------------------------------------------------------------------------------
 
 std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
-                                                   const std::string& label_prefix) {
+                                                    const std::string& label_prefix) {
   std::vector<PatchOverlayItem> net;
   net.reserve(8);
   for (int r = 0; r < 4; ++r) {
@@ -92,8 +92,8 @@ std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, doub
   items.push_back(item(row_points, opaque(palette().column_polygon), 1.5f, false, OverlayKind::ColumnPolygon,
                        "column control polygon"));
   for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
-    items.push_back(item(eval.column_levels[k], column_level_colour(k), 1.5f, false,
-                         OverlayKind::ColumnLevel, "column level " + std::to_string(k) + " at v"));
+    items.push_back(item(eval.column_levels[k], column_level_colour(k), 1.5f, false, OverlayKind::ColumnLevel,
+                         "column level " + std::to_string(k) + " at v"));
   }
   items.push_back(item(sample_curve3(row_points, samples), opaque(palette().curve), 2.5f, false,
                        OverlayKind::ColumnCurve, "column curve"));
@@ -171,8 +171,8 @@ std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, co
     if (mine && mine->ran) {
       const glm::vec4 colour = mine_colour(*mine);
       if (!mine->equal) {
-        items.push_back(item({mine->mine, mine->reference}, colour, 2.0f, false, OverlayKind::MinePoint,
-                             "yours to P(u, v)"));
+        items.push_back(
+            item({mine->mine, mine->reference}, colour, 2.0f, false, OverlayKind::MinePoint, "yours to P(u, v)"));
       }
       // Smaller than P(u, v)'s dot, so a right answer shows as a dot of the mine colour inside P(u, v)'s.
       items.push_back(item({mine->mine}, colour, 8.0f, true, OverlayKind::MinePoint, "yours"));
@@ -281,8 +281,9 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
 
   update_tessellation(state);
   const PatchTessellation& cache = state.tessellation;
-  ImGui::TextWrapped("%d patches -> %zu vertices, %zu triangles (built %llu times)", count, cache.polygons.num_vertices(),
-              cache.polygons.num_faces(), static_cast<unsigned long long>(cache.rebuilds));
+  ImGui::TextWrapped("%d patches -> %zu vertices, %zu triangles (built %llu times)", count,
+                     cache.polygons.num_vertices(), cache.polygons.num_faces(),
+                     static_cast<unsigned long long>(cache.rebuilds));
   if (!cache.error.empty()) ImGui::TextColored(im_colour(palette().error), "%s", cache.error.c_str());
   if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 

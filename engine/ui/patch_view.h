@@ -55,13 +55,13 @@ struct PatchOverlayItem {
   float width = 1.0f;        // line width in pixels, or point diameter when points_only
   bool points_only = false;  // draw the points as dots, no lines between them
   OverlayKind kind = OverlayKind::ControlNet;
-  std::string label;         // for a legend or a tooltip: "row 2 at u", "P(u, v)"
+  std::string label;  // for a legend or a tooltip: "row 2 at u", "P(u, v)"
 };
 
 // The 8 polylines of a control net: rows 0..3 (at(r, 0..3)) then columns 0..3 (at(0..3, c)), each
 // labelled "<prefix>row r" / "<prefix>column c".
 std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, glm::vec4 colour, float width,
-                                                   const std::string& label_prefix = "");
+                                                    const std::string& label_prefix = "");
 
 // Everything the probe shows for `patch` at (u, v) (not clamped here), in this order:
 //   8 ControlNet polylines (control_net_polylines),
@@ -72,20 +72,20 @@ std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, gl
 //   1 ColumnCurve polyline (samples + 1 points, from row point 0 to row point 3),
 //   1 SurfacePoint item (evaluate_patch(patch, u, v)).
 std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v,
-                                                 int samples = kProbeCurveSamples);
+                                                  int samples = kProbeCurveSamples);
 
 // ---- state -----------------------------------------------------------------------------------------
 
 // The tessellated surface and what it was built from.
 struct PatchTessellation {
-  std::vector<BezierPatch> source;   // the patches it was built from
-  int resolution = 0;                // 0: never built
+  std::vector<BezierPatch> source;  // the patches it was built from
+  int resolution = 0;               // 0: never built
   PolygonMesh polygons;
   std::optional<HalfedgeMesh> mesh;  // empty when the triangles do not form a manifold (see error)
   TessellationReport report;
-  std::string error;                 // why mesh is empty, when it is
-  uint64_t rebuilds = 0;             // how many times it was built (tests and the panel show it)
-  uint64_t last_mesh_version = 0;    // the largest version() handed out so far
+  std::string error;               // why mesh is empty, when it is
+  uint64_t rebuilds = 0;           // how many times it was built (tests and the panel show it)
+  uint64_t last_mesh_version = 0;  // the largest version() handed out so far
 };
 
 struct PatchViewState {
@@ -103,9 +103,9 @@ struct PatchViewState {
 // A state showing `patches`; the tessellation is built on the first update_tessellation.
 PatchViewState make_patch_view(std::vector<BezierPatch> patches);
 
-void set_resolution(PatchViewState& state, int resolution);      // clamped to [1, kMaxPatchViewResolution]
-void select_patch(PatchViewState& state, int index);             // clamped to a valid index
-void set_probe(PatchViewState& state, double u, double v);       // each clamped to [0, 1]; NaN ignored
+void set_resolution(PatchViewState& state, int resolution);  // clamped to [1, kMaxPatchViewResolution]
+void select_patch(PatchViewState& state, int index);         // clamped to a valid index
+void set_probe(PatchViewState& state, double u, double v);   // each clamped to [0, 1]; NaN ignored
 
 // Rebuilds state.tessellation if the patches or the resolution changed since it was built (clamping
 // the resolution and selected_patch first). Returns true if it rebuilt. A MeshError from tessellating

@@ -15,7 +15,7 @@
 namespace meshedit {
 namespace {
 
-constexpr TableTab kTabs[kTableTabCount] = {TableTab::Vertices, TableTab::Halfedges, TableTab::Edges,
+constexpr TableTab kTabs[kTableTabCount] = {TableTab::Vertices, TableTab::Halfedges,  TableTab::Edges,
                                             TableTab::Faces,    TableTab::Boundaries, TableTab::Changes};
 
 int kind_slot(ElementKind kind) { return static_cast<int>(kind); }
@@ -195,9 +195,7 @@ void setup_columns(ElementKind kind) {
   ImGui::TableHeadersRow();
 }
 
-int column_count(ElementKind kind) {
-  return kind == ElementKind::Halfedge ? 6 : kind == ElementKind::Vertex ? 3 : 2;
-}
+int column_count(ElementKind kind) { return kind == ElementKind::Halfedge ? 6 : kind == ElementKind::Vertex ? 3 : 2; }
 
 // Moves the window of laid-out rows when the scroll enters its first or last quarter, so that the rows on screen
 // end up in its middle (far from both ends: no back-and-forth). Called inside the table after its rows are drawn:
@@ -305,8 +303,8 @@ void draw_changes(TableContext& c) {
     return;
   }
   ImGui::Text("%s: %zu fields changed", last.label.c_str(), last.changes.size());
-  const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
-                                ImGuiTableFlags_Resizable;
+  const ImGuiTableFlags flags =
+      ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_Resizable;
   if (!ImGui::BeginTable("changes", 4, flags)) return;
   ImGui::TableSetupScrollFreeze(0, 1);
   for (const char* name : {"element", "field", "before", "after"}) ImGui::TableSetupColumn(name);

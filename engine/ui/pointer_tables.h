@@ -31,7 +31,7 @@ namespace meshedit {
 
 enum class TableTab { Vertices, Halfedges, Edges, Faces, Boundaries, Changes };
 inline constexpr int kTableTabCount = 6;
-ElementKind table_kind(TableTab tab);            // the kind a tab lists (Changes: Halfedge, unused)
+ElementKind table_kind(TableTab tab);  // the kind a tab lists (Changes: Halfedge, unused)
 TableTab tab_for_kind(ElementKind kind);
 
 // The filter box: "h37" (any kind, by its prefix; case-insensitive), "37" (the current tab's kind), with
@@ -51,13 +51,13 @@ struct TablesState {
   UiProbe* probe = nullptr;       // tests: where rows and links were drawn
 
   // Read after a frame (tests, benchmarks).
-  size_t rows_drawn = 0;          // rows whose fields were read in the last frame
-  float row_height = 0.0f;        // measured by the clipper
+  size_t rows_drawn = 0;    // rows whose fields were read in the last frame
+  float row_height = 0.0f;  // measured by the clipper
 
   // Internal bookkeeping, kept between frames.
-  ElementRef seen_selection;      // the selection at the end of the last frame
-  int shown_tab = -1;             // the tab drawn last frame; when `active` differs, that tab is opened
-  ElementRef scroll_to;           // a row to bring into view on its tab's next frame
+  ElementRef seen_selection;  // the selection at the end of the last frame
+  int shown_tab = -1;         // the tab drawn last frame; when `active` differs, that tab is opened
+  ElementRef scroll_to;       // a row to bring into view on its tab's next frame
   bool open_tab_requested = false;
   std::array<uint32_t, kElementKindCount> window_start{};  // first id laid out, per kind
   // Window moves applied on the next frame, per kind; -1 for none.

@@ -64,10 +64,9 @@ void ScriptConsole::sync_from(const MeshDocument& doc) {
   // A console mesh changed since it was synced (a line that threw past submit's bookkeeping) is copied afresh.
   const bool untouched = mesh_->version() == mesh_version_when_synced_;
   if (untouched && doc.generation == synced_generation_ && doc.mesh.version() == synced_version_) return;
-  const bool one_local_change_behind = untouched && doc.generation == synced_generation_ &&
-                                       synced_version_ != UINT64_MAX && doc.last.patch &&
-                                       doc.last.version_before == synced_version_ &&
-                                       doc.last.version_after == doc.mesh.version();
+  const bool one_local_change_behind =
+      untouched && doc.generation == synced_generation_ && synced_version_ != UINT64_MAX && doc.last.patch &&
+      doc.last.version_before == synced_version_ && doc.last.version_after == doc.mesh.version();
   if (one_local_change_behind) {
     doc.last.patch->apply(*mesh_, true);
     mesh_->bump_version_above(mesh_->version());  // apply() keeps the version: the script's undo must see a change

@@ -85,7 +85,7 @@ class ScriptConsole {
 struct ConsolePanelState {
   bool open = false;
   std::array<char, 2048> input{};  // the line being typed (NUL-terminated)
-  bool focus_input = false;  // give the input line the keyboard on the next frame
+  bool focus_input = false;        // give the input line the keyboard on the next frame
   bool scroll_to_bottom = false;
 };
 

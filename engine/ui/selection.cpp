@@ -27,9 +27,7 @@ const char* nav_field(NavStep step) {
   return "?";
 }
 
-bool in_range(const HalfedgeMesh& mesh, ElementRef ref) {
-  return ref.valid() && ref.index < mesh.capacity(ref.kind);
-}
+bool in_range(const HalfedgeMesh& mesh, ElementRef ref) { return ref.valid() && ref.index < mesh.capacity(ref.kind); }
 
 RefState reference_state(const HalfedgeMesh& mesh, ElementRef ref) {
   if (!ref.valid()) return RefState::Null;

@@ -25,8 +25,8 @@ struct Selection {
 
 // The keys students know from the course viewers.
 enum class NavStep { Next, Twin, Vertex, Edge, Face, Halfedge };
-char nav_key(NavStep step);             // 'N', 'T', 'V', 'E', 'F', 'H'
-const char* nav_field(NavStep step);    // "next", "twin", "vertex", "edge", "face", "halfedge"
+char nav_key(NavStep step);           // 'N', 'T', 'V', 'E', 'F', 'H'
+const char* nav_field(NavStep step);  // "next", "twin", "vertex", "edge", "face", "halfedge"
 
 // Whether a reference can be followed.
 enum class RefState { Live, Dead, OutOfRange, Null };

@@ -76,15 +76,17 @@ Key ems_key(const char* name, float LayoutPrefs::*field, float low) {
 
 const std::vector<Key>& keys() {
   static const std::vector<Key> table = {
-      number_key("window_width", "a width in pixels", Settings::kMinWindowWidth, Settings::kMaxWindowSide,
-                 [](Settings& s, double v) { s.window_width = int(v); },
-                 [](const Settings& s) { return double(s.window_width); }),
-      number_key("window_height", "a height in pixels", Settings::kMinWindowHeight, Settings::kMaxWindowSide,
-                 [](Settings& s, double v) { s.window_height = int(v); },
-                 [](const Settings& s) { return double(s.window_height); }),
-      number_key("font_px", "a text size in pixels", Settings::kMinFontPx, Settings::kMaxFontPx,
-                 [](Settings& s, double v) { s.font_px = float(v); },
-                 [](const Settings& s) { return double(s.font_px); }),
+      number_key(
+          "window_width", "a width in pixels", Settings::kMinWindowWidth, Settings::kMaxWindowSide,
+          [](Settings& s, double v) { s.window_width = int(v); },
+          [](const Settings& s) { return double(s.window_width); }),
+      number_key(
+          "window_height", "a height in pixels", Settings::kMinWindowHeight, Settings::kMaxWindowSide,
+          [](Settings& s, double v) { s.window_height = int(v); },
+          [](const Settings& s) { return double(s.window_height); }),
+      number_key(
+          "font_px", "a text size in pixels", Settings::kMinFontPx, Settings::kMaxFontPx,
+          [](Settings& s, double v) { s.font_px = float(v); }, [](const Settings& s) { return double(s.font_px); }),
       {"theme", "dark or light",
        [](Settings& s, const std::string& text) {
          if (text != "dark" && text != "light") return false;

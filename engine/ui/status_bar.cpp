@@ -64,18 +64,18 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
     std::snprintf(frame, sizeof frame, "%.1f ms", static_cast<double>(frame_ms));
     const bool show_axis = !state.up_axis.empty() && state.view_is_3d;
     const float gap = 24.0f;
-    const float right_width = ImGui::CalcTextSize(frame).x +
-                              (show_axis ? ImGui::CalcTextSize(state.up_axis.data(), state.up_axis.data() +
-                                                                                         state.up_axis.size()).x + gap
-                                         : 0.0f);
+    const float right_width =
+        ImGui::CalcTextSize(frame).x +
+        (show_axis ? ImGui::CalcTextSize(state.up_axis.data(), state.up_axis.data() + state.up_axis.size()).x + gap
+                   : 0.0f);
     const float left_width = std::max(1.0f, ImGui::GetContentRegionAvail().x - right_width - gap);
     ImGui::BeginChild("##status left", ImVec2(left_width, ImGui::GetFrameHeight()), false,
                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
     const HalfedgeMesh& mesh = doc.mesh;
     if (state.mesh_shown) {
       const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
-      ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(),
-                  mesh.num_faces(), mesh.num_halfedges(), mesh.num_boundaries(), chi);
+      ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(), mesh.num_faces(),
+                  mesh.num_halfedges(), mesh.num_boundaries(), chi);
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
       ImGui::SameLine(0.0f, gap);
       draw_validation(doc, selection, state);

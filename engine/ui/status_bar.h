@@ -1,7 +1,7 @@
 // The status bar along the bottom of the window: V/E/F/H counts, Euler characteristic, validation state (green
 // "valid", or red with the first broken invariant and a button that selects its element), the message line,
-// a standing note from the view (what it dropped to keep frames fast), the view's up axis, undo/redo hints and the frame
-// time.
+// a standing note from the view (what it dropped to keep frames fast), the view's up axis, undo/redo hints and the
+// frame time.
 //
 // Invariants:
 // - validate() runs through the document's cache: at most once per mesh state. Meshes with more halfedges than
@@ -24,10 +24,10 @@ namespace meshedit {
 
 struct StatusBarState {
   size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
-  UiProbe* probe = nullptr;                       // tests: where the buttons were drawn
+  UiProbe* probe = nullptr;                      // tests: where the buttons were drawn
   bool mesh_shown = true;  // the mesh view is on screen: counts, validation and undo (else the message line only)
   bool view_is_3d = true;  // the up axis means something (not in the curve view)
-  std::string note;  // a standing remark from the view ("frame 62 ms: multisampling off"); "" for none
+  std::string note;        // a standing remark from the view ("frame 62 ms: multisampling off"); "" for none
   // The view's up axis ("Y up (from the file)") and where it came from, for its tooltip; static text the app fills
   // (app/up_axis_choice.h); "" shows nothing.
   std::string_view up_axis;

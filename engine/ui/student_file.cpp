@@ -41,7 +41,7 @@ bool StudentFile::ensure_loaded() {
     attempted_ = true;
     code_ = load_student_file(path_);
   } catch (const std::bad_alloc&) {
-    attempted_ = false;  // not the file's doing: the next call tries again
+    attempted_ = false;            // not the file's doing: the next call tries again
     error_ = kScriptMemoryRanOut;  // fits std::string's inline buffer: allocates nothing
     return false;
   } catch (const std::exception& e) {

@@ -45,7 +45,7 @@ class StudentFile {
   bool ensure_loaded();
   StudentCode* code() { return code_.get(); }
   const std::string& error() const { return error_; }
-  size_t loads() const { return loads_; }       // load attempts (tests)
+  size_t loads() const { return loads_; }  // load attempts (tests)
   uint64_t serial() const { return loads_; }
 
  private:

@@ -5,8 +5,9 @@
 // "Catmull-Clark subdivision", "Linear subdivision" or the phase's label ("Catmull-Clark 2/3: ..."); a refusal
 // changes nothing but the message (a Warning with the core's reason); the selection keeps what survives (original
 // vertices keep their ids; every original edge and face is replaced, so they are deselected); a whole subdivision
-// resets the Loop stepper, since its next phase would start again anyway. No action throws std::bad_alloc (the labels are made when the program starts;
-// the points of phase 1 are computed before anything changes, and running out of memory there does nothing).
+// resets the Loop stepper, since its next phase would start again anyway. No action throws std::bad_alloc (the labels
+// are made when the program starts; the points of phase 1 are computed before anything changes, and running out of
+// memory there does nothing).
 #pragma once
 
 #include <cstdint>

@@ -16,7 +16,7 @@ void apply_theme(ImGuiStyle& style, Theme theme) {
     ImGui::StyleColorsDark(&style);
   }
   style.Colors[ImGuiCol_WindowBg] = im_colour(palette.neutrals.panel);  // opaque: the columns are not overlays
-  style.WindowRounding = 0.0f;  // columns meet the view edge to edge
+  style.WindowRounding = 0.0f;                                          // columns meet the view edge to edge
   style.WindowBorderSize = 1.0f;
   panel_theme = theme;
 }
@@ -24,6 +24,5 @@ void apply_theme(ImGuiStyle& style, Theme theme) {
 const Palette& ui_palette() { return palette_for(panel_theme); }
 
 Theme ui_theme() { return panel_theme; }
-
 
 }  // namespace meshedit

@@ -147,7 +147,8 @@ void draw_upsample_phases(ExerciseSession& session, ExercisePanelState& state, M
              "write " + std::to_string(k) + "/" + std::to_string(n) + " is in " + upsample_phase_title(current));
   }
   draw_table(session, state, doc, current);
-  ImGui::TextDisabled("V/E/F: vertices, edges, faces when the phase is done; positions and halfedges are compared by id");
+  ImGui::TextDisabled(
+      "V/E/F: vertices, edges, faces when the phase is done; positions and halfedges are compared by id");
   for (const std::string& problem : phases.problems) coloured(im_colour(ui_palette().error), "- " + problem);
   if (!state.phases_error.empty()) coloured(im_colour(ui_palette().error), state.phases_error);
 }

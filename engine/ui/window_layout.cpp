@@ -57,7 +57,8 @@ WindowLayout compute_layout(float display_width, float display_height, float men
   const float s = WindowLayout::kSplitterPixels;
   if (!out.left.empty()) out.left_splitter = {out.left.right() - std::min(s, left), top, std::min(s, left), body};
   if (!out.right.empty()) out.right_splitter = {out.right.x, top, std::min(s, right), body};
-  if (!out.console.empty()) out.console_splitter = {out.console.x, out.console.y, out.console.width, std::min(s, console)};
+  if (!out.console.empty())
+    out.console_splitter = {out.console.x, out.console.y, out.console.width, std::min(s, console)};
   return out;
 }
 

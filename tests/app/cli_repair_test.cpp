@@ -8,11 +8,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/cli_test_support.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "core/validate.h"
 #include "io/mesh_file.h"
-#include "app/cli_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -29,8 +29,8 @@ bool contains(const std::string& text, const std::string& part) { return text.fi
 TEST(CliTriangulate, QuadCubeBecomesTwelveTrianglesThatSubdivide) {
   const fs::path dir = testing::scratch_dir();
   save_mesh(dir / "cube.obj", make_cube_quads());
-  const CommandRun refused = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "1", "-o",
-                                       (dir / "s.obj").string()});
+  const CommandRun refused =
+      meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "1", "-o", (dir / "s.obj").string()});
   EXPECT_NE(refused.status, 0);
   EXPECT_TRUE(contains(refused.err, "meshedit triangulate IN -o OUT")) << refused.err;
 
@@ -42,8 +42,8 @@ TEST(CliTriangulate, QuadCubeBecomesTwelveTrianglesThatSubdivide) {
   EXPECT_EQ(tris.positions, make_cube_quads().positions);
   for (size_t f = 0; f < tris.num_faces(); ++f) EXPECT_EQ(tris.face(f).size(), 3u);
   EXPECT_TRUE(validate(build_halfedge_mesh(tris)).ok());
-  const CommandRun subdivided = meshedit({"subdivide", (dir / "tri.obj").string(), "-n", "1", "-o",
-                                          (dir / "s.obj").string()});
+  const CommandRun subdivided =
+      meshedit({"subdivide", (dir / "tri.obj").string(), "-n", "1", "-o", (dir / "s.obj").string()});
   EXPECT_EQ(subdivided.status, 0) << subdivided.err;
   EXPECT_EQ(load_mesh(dir / "s.obj").num_faces(), 48u);
 }

@@ -10,10 +10,10 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "app/cli_test_support.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
-#include "app/cli_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {

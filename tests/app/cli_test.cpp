@@ -10,9 +10,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include "app/cli_test_support.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
-#include "app/cli_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -90,8 +90,8 @@ TEST(Cli, ErrorsAreOneLineAndNonZero) {
 TEST(Cli, SubdivideWritesTheRefinedMesh) {
   const fs::path dir = testing::scratch_dir();
   save_mesh(dir / "cube.obj", make_cube());
-  const CommandRun run = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "2", "--weights", "loop", "-o",
-                            (dir / "cube2.obj").string()});
+  const CommandRun run = meshedit(
+      {"subdivide", (dir / "cube.obj").string(), "-n", "2", "--weights", "loop", "-o", (dir / "cube2.obj").string()});
   ASSERT_EQ(run.status, 0) << run.err;
   const nlohmann::json j = info_json(dir / "cube2.obj");
   // V' = V + E, F' = 4F per level: 8 -> 26 -> 98 vertices, 12 -> 48 -> 192 faces.

@@ -42,9 +42,11 @@ class EditorLessonReload : public testing::GlTest {
     if (existed) fs::last_write_time(file_, before + std::chrono::seconds(2));
   }
   static std::string lesson(const std::string& title) {
-    return "lesson { title = \"" + title + "\" }\n"
+    return "lesson { title = \"" + title +
+           "\" }\n"
            "step(\"One\", function() say(\"one\") end)\n"
-           "step(\"Two\", function() say(\"two, from " + title + "\") end)\n";
+           "step(\"Two\", function() say(\"two, from " +
+           title + "\") end)\n";
   }
 
   // Frames of 250 ms (the most a frame advances the lesson), enough for hot reload's half-second check.
@@ -94,7 +96,7 @@ TEST_F(EditorLessonReload, AWindowTitledAfterAFileOpenedSinceKeepsItsTitle) {
   save(lesson("After the save"));
   frames(3);
   EXPECT_EQ(app_->lesson().title(), "After the save");  // what the panel shows
-  EXPECT_EQ(app_->title(), "MeshEdit - torus.obj");  // the window is the file's
+  EXPECT_EQ(app_->title(), "MeshEdit - torus.obj");     // the window is the file's
 }
 
 TEST_F(EditorLessonReload, GoingBackToTheListDropsTheLessonsTitle) {

@@ -18,8 +18,8 @@ TEST(RepairMarks, ARowSelectsItsFirstVertexElseItsFirstFace) {
   EXPECT_EQ(marks.first_spot(1), ElementRef(FaceId::face(2)));
   EXPECT_FALSE(marks.first_spot(2).valid());
   EXPECT_FALSE(marks.first_spot(3).valid());
-  EXPECT_EQ(marks.all_spots(), (std::vector<ElementRef>{VertexId(0), VertexId(5), FaceId::face(1), FaceId::face(2),
-                                                        FaceId::face(3)}));
+  EXPECT_EQ(marks.all_spots(),
+            (std::vector<ElementRef>{VertexId(0), VertexId(5), FaceId::face(1), FaceId::face(2), FaceId::face(3)}));
 }
 
 TEST(RepairMarks, SpotsAreCurrentOnlyForTheGenerationAndVersionTheyWereMadeFor) {

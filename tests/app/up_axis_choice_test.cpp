@@ -18,8 +18,8 @@ TEST(UpAxisChoice, FromTheFileIsTheFilesAndZWithoutOne) {
 }
 
 TEST(UpAxisChoice, AChoiceOverridesTheFile) {
-  for (const std::optional<FileUpAxis>& file : {std::optional<FileUpAxis>(kObj), std::optional<FileUpAxis>(kTaggedX),
-                                                std::optional<FileUpAxis>()}) {
+  for (const std::optional<FileUpAxis>& file :
+       {std::optional<FileUpAxis>(kObj), std::optional<FileUpAxis>(kTaggedX), std::optional<FileUpAxis>()}) {
     EXPECT_EQ(chosen_up_axis(UpAxisChoice::Y, file), UpAxis::Y);
     EXPECT_EQ(chosen_up_axis(UpAxisChoice::Z, file), UpAxis::Z);
   }
@@ -38,7 +38,8 @@ TEST(UpAxisChoice, TheTooltipSaysWhy) {
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kObj).find("format's convention"), std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kTaggedX).find("<up_axis>"), std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kCourseDae).find("course file"), std::string_view::npos);
-  EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, std::nullopt).find("MeshEdit makes"), std::string_view::npos);
+  EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, std::nullopt).find("MeshEdit makes"),
+            std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::Y, kObj).find("View > Up axis"), std::string_view::npos);
 }
 

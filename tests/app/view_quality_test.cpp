@@ -57,8 +57,7 @@ TEST(ViewQuality, SlowFramesDropMultisamplingThenTheWireframeAndTheNoteSaysSo) {
 
   drawn = view.frames(62.0f, 3);
   EXPECT_FALSE(drawn.back_sides);
-  EXPECT_EQ(view.quality.note(),
-            "frame 62 ms: multisampling, back sides and wireframe off (W shows it)");
+  EXPECT_EQ(view.quality.note(), "frame 62 ms: multisampling, back sides and wireframe off (W shows it)");
   // Back sides and multisampling are dropped from the copy drawn only.
   EXPECT_TRUE(view.options.multisampling);
   EXPECT_TRUE(view.options.back_sides);

@@ -32,7 +32,9 @@ struct Rect {
   bool inside(const Rect& r) const { return x >= r.x && y >= r.y && x + w <= r.x + r.w && y + h <= r.y + r.h; }
 };
 
-Rect rect_of(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()}; }
+Rect rect_of(const json& j) {
+  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>(), j.at(3).get<double>()};
+}
 
 std::string describe(const Rect& r) {
   std::ostringstream out;
@@ -49,8 +51,8 @@ json read_json(const fs::path& path) {
 // layout after a few frames, after `before` (more actions).
 json layout_of(const XServer& x, const fs::path& file, const fs::path& dir, const std::string& before = "") {
   const fs::path out = dir / "layout.json";
-  const WindowRun run = run_window(x.display(), file, "frames 4\n" + before + "frames 2\nlayout-json " + out.string() +
-                                                          "\nquit\n", dir, "");
+  const WindowRun run = run_window(
+      x.display(), file, "frames 4\n" + before + "frames 2\nlayout-json " + out.string() + "\nquit\n", dir, "");
   EXPECT_EQ(run.status, 0) << run.output;
   return fs::exists(out) ? read_json(out) : json::object();
 }
@@ -231,7 +233,8 @@ TEST(WindowLayout, OnAHiDpiScreenTheTextAndColumnsScaleAndTheButtonsStayInside) 
   if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
   if (std::system("command -v xprop >/dev/null 2>&1") != 0) GTEST_SKIP() << "no xprop (x11-utils)";
   // GLFW reads the content scale from Xft.dpi: 192 dpi is a scale of 2.
-  const std::string set_dpi = "DISPLAY=" + x.display() + " xprop -root -f RESOURCE_MANAGER 8s -set RESOURCE_MANAGER 'Xft.dpi: 192'";
+  const std::string set_dpi =
+      "DISPLAY=" + x.display() + " xprop -root -f RESOURCE_MANAGER 8s -set RESOURCE_MANAGER 'Xft.dpi: 192'";
   ASSERT_EQ(std::system(set_dpi.c_str()), 0);
   const json layout = layout_of(x, testing::source_dir() / "lessons" / "4_edge_flip.lua", testing::scratch_dir());
   EXPECT_EQ(layout["font_px"].get<double>(), 32.0);
@@ -244,10 +247,9 @@ TEST(WindowLayout, WithoutTheFontFilesImGuisFontStandsInWithAWarning) {
   if (x.display().empty()) GTEST_SKIP() << "no Xvfb";
   const fs::path dir = testing::scratch_dir();
   const fs::path out = dir / "layout.json";
-  const WindowRun run =
-      run_window(x.display(), testing::source_dir() / "lessons" / "welcome.lua",
-                 "frames 3\nexpect-message DejaVuSans.ttf\nlayout-json " + out.string() + "\nquit\n", dir, "",
-                 "MESHEDIT_FONT_DIR='" + (dir / "no fonts here").string() + "'");
+  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "welcome.lua",
+                                   "frames 3\nexpect-message DejaVuSans.ttf\nlayout-json " + out.string() + "\nquit\n",
+                                   dir, "", "MESHEDIT_FONT_DIR='" + (dir / "no fonts here").string() + "'");
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("fonts-dejavu-core"), std::string::npos) << run.output;
   ASSERT_TRUE(fs::exists(out));

@@ -5,10 +5,10 @@
 
 #include <fstream>
 
+#include "app/window_test_support.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
 #include "support/test_support.h"
-#include "app/window_test_support.h"
 
 namespace meshedit {
 namespace {
@@ -33,7 +33,8 @@ TEST(WindowRepairSpots, ClickingTheBowTiesRowSelectsTheSplitVertex) {
   std::ofstream(bowtie) << "v 0.5 0.25 0\nv 1.5 0.25 0\nv 1.5 1.25 0\nv -0.5 0.25 0\nv -0.5 -0.75 0\n"
                            "f 1 2 3\nf 1 4 5\n";
   const std::string actions =
-      "frames 2\nopen " + bowtie.string() + "\n"  // line 2: refused
+      "frames 2\nopen " + bowtie.string() +
+      "\n"  // line 2: refused
       "open-repaired\nframes 2\n"
       "expect-message the Repairs tab lists each change\n"
       "expect-selected -\n"
@@ -51,7 +52,9 @@ TEST(WindowRepairSpots, ClickingTheBowTiesRowSelectsTheSplitVertex) {
       "select e0\nkey S\nframes 1\nselect v1\n"
       "repair-row 1\n"  // line 22: the mesh was edited, the spots are stale
       "expect-selected v1\n"
-      "open " + file.string() + "\n"
+      "open " +
+      file.string() +
+      "\n"
       "repair-row 1\n"  // line 25: another file is open, the Repairs tab is gone
       "quit\n";
   const WindowRun run = run_window(x.display(), file, actions, dir);

@@ -4,11 +4,11 @@
 
 #include <fstream>
 
+#include "app/window_test_support.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
 #include "render/image_file.h"
 #include "support/test_support.h"
-#include "app/window_test_support.h"
 
 namespace meshedit {
 namespace {
@@ -64,12 +64,14 @@ TEST(WindowRepair, ABlenderStlOpensRepairedSubdividesAndDraws) {
   const fs::path dir = testing::scratch_dir();
   const fs::path file = testing::source_dir() / "tests" / "data" / "from_tools" / "suzanne.stl";
   const fs::path shot = dir / "suzanne.png";
-  const std::string actions = "frames 2\nexpect-message File > Open a repaired copy\n"
-                              "open-repaired\nframes 1\n"
-                              "expect-message repaired: 2 bow-tie vertices split\n"
-                              "subdivide catmull-clark\nexpect-valid\nexpect-message Catmull-Clark subdivision\n"
-                              "triangulate\nsubdivide loop\nexpect-valid\nframes 2\n"
-                              "screenshot " + shot.string() + "\nframes 2\nquit\n";
+  const std::string actions =
+      "frames 2\nexpect-message File > Open a repaired copy\n"
+      "open-repaired\nframes 1\n"
+      "expect-message repaired: 2 bow-tie vertices split\n"
+      "subdivide catmull-clark\nexpect-valid\nexpect-message Catmull-Clark subdivision\n"
+      "triangulate\nsubdivide loop\nexpect-valid\nframes 2\n"
+      "screenshot " +
+      shot.string() + "\nframes 2\nquit\n";
   const WindowRun run = run_window(x.display(), file, actions, dir);
   EXPECT_EQ(run.status, 0) << run.output;
   const Image image = read_png(shot);

@@ -13,6 +13,7 @@
 #include <sstream>
 
 #include "app/editor_app.h"
+#include "app/window_test_support.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
@@ -20,7 +21,6 @@
 #include "render/camera.h"
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
-#include "app/window_test_support.h"
 #include "support/test_support.h"
 
 namespace meshedit {

@@ -18,7 +18,6 @@ namespace meshedit::testing {
 
 namespace fs = std::filesystem;
 
-
 // An X server for the test: the existing DISPLAY, or an Xvfb started here and stopped at the end. Given a screen
 // size ("1024x640"), always an Xvfb of its own with a screen of that size.
 class XServer {
@@ -80,8 +79,9 @@ struct WindowRun {
 
 // Runs the window on `mesh` with the actions. `size` is the --size option ("" for none: the window opens at the size
 // its settings remember, within the screen); `environment` goes before the command ("NAME=value ...").
-inline WindowRun run_window(const std::string& display, const fs::path& mesh, const std::string& actions, const fs::path& dir,
-                            const std::string& size = "1280x800", const std::string& environment = "") {
+inline WindowRun run_window(const std::string& display, const fs::path& mesh, const std::string& actions,
+                            const fs::path& dir, const std::string& size = "1280x800",
+                            const std::string& environment = "") {
   const fs::path script = dir / "actions.txt";
   std::ofstream(script) << actions;
   const fs::path log = dir / "log.txt";
@@ -110,8 +110,10 @@ inline std::string expect_every_pointer(const HalfedgeMesh& mesh) {
         << "expect-field " << format_id(h) << " edge " << format_id(mesh.edge(h)) << "\n"
         << "expect-field " << format_id(h) << " face " << format_id(mesh.face(h)) << "\n";
   }
-  for (VertexId v : mesh.vertices()) out << "expect-field " << format_id(v) << " halfedge " << format_id(mesh.halfedge(v)) << "\n";
-  for (FaceId f : mesh.faces()) out << "expect-field " << format_id(f) << " halfedge " << format_id(mesh.halfedge(f)) << "\n";
+  for (VertexId v : mesh.vertices())
+    out << "expect-field " << format_id(v) << " halfedge " << format_id(mesh.halfedge(v)) << "\n";
+  for (FaceId f : mesh.faces())
+    out << "expect-field " << format_id(f) << " halfedge " << format_id(mesh.halfedge(f)) << "\n";
   return out.str();
 }
 

@@ -1,8 +1,9 @@
-// Lesson 4's your_turn in the real window under Xvfb, with a buggy flip.lua (tests/grading/students/flip_forgets_faces.lua)
-// in the window's student folder (the `exercise flip FOLDER` action): the last step waits with the diagnosis the
-// Exercises tab's checker gives on the lesson's rigged diamond; `lesson-show-mine` (the panel's "Show mine vs
-// reference") puts that diamond in the document with the student's flip applied, pointer for pointer, selects e, and
-// the Exercises tab's last run is mine on e, wrong, with the same first difference. At 1280x800 and 1024x640.
+// Lesson 4's your_turn in the real window under Xvfb, with a buggy flip.lua
+// (tests/grading/students/flip_forgets_faces.lua) in the window's student folder (the `exercise flip FOLDER` action):
+// the last step waits with the diagnosis the Exercises tab's checker gives on the lesson's rigged diamond;
+// `lesson-show-mine` (the panel's "Show mine vs reference") puts that diamond in the document with the student's flip
+// applied, pointer for pointer, selects e, and the Exercises tab's last run is mine on e, wrong, with the same first
+// difference. At 1280x800 and 1024x640.
 #include <gtest/gtest.h>
 
 #include <sstream>
@@ -47,7 +48,8 @@ void run_lesson_four(const std::string& screen) {
   const fs::path dir = testing::scratch_dir();
   const fs::path student = dir / "student";
   fs::create_directories(student);
-  fs::copy_file(testing::source_dir() / "tests" / "grading" / "students" / "flip_forgets_faces.lua", student / "flip.lua");
+  fs::copy_file(testing::source_dir() / "tests" / "grading" / "students" / "flip_forgets_faces.lua",
+                student / "flip.lua");
 
   // What the lesson's checker says of the student's flip on the diamond, and the mesh it leaves.
   auto input = std::make_shared<const HalfedgeMesh>(rigged_diamond());
@@ -83,8 +85,8 @@ void run_lesson_four(const std::string& screen) {
           << "screenshot " << shot.string() << "\n"
           << "frames 2\n"
           << "quit\n";
-  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions.str(),
-                                   dir, screen);
+  const WindowRun run =
+      run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions.str(), dir, screen);
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(std::to_string(read_png(shot).width) + "x" + std::to_string(read_png(shot).height), screen);
 }

@@ -30,7 +30,8 @@ int main(int argc, char** argv) {
     for (const char* part : {"curve", "patch", "normals", "flip", "split", "upsample", "all"}) {
       const auto suite = Suite::load(source / "tests" / "grading" / "suites" / (std::string(part) + ".lua"));
       GradeReport report;
-      const double best = min_ms(reps, [] {}, [&] { report = grade(*suite, solutions); });
+      const double best = min_ms(
+          reps, [] {}, [&] { report = grade(*suite, solutions); });
       std::printf("  %-9s %2zu tests  %5.1f / %-4.0f points  %8.1f ms\n", part, report.tests.size(), report.score,
                   report.max_score, best);
     }

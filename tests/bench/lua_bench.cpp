@@ -75,11 +75,17 @@ int main(int argc, char** argv) {
   lua_setglobal(lua.state(), "N");
   // The interpreter's own floor for a binding: a C function that returns its argument, and a userdata whose
   // __index is a C function that returns the key (no work, no allocation).
-  lua_pushcfunction(lua.state(), [](lua_State* L) { lua_settop(L, 1); return 1; });
+  lua_pushcfunction(lua.state(), [](lua_State* L) {
+    lua_settop(L, 1);
+    return 1;
+  });
   lua_setglobal(lua.state(), "c_identity");
   lua_newuserdatauv(lua.state(), 8, 0);
   lua_createtable(lua.state(), 0, 1);
-  lua_pushcfunction(lua.state(), [](lua_State* L) { lua_settop(L, 2); return 1; });
+  lua_pushcfunction(lua.state(), [](lua_State* L) {
+    lua_settop(L, 2);
+    return 1;
+  });
   lua_setfield(lua.state(), -2, "__index");
   lua_setmetatable(lua.state(), -2);
   lua_setglobal(lua.state(), "u");
@@ -88,24 +94,30 @@ int main(int argc, char** argv) {
   lua_newuserdatauv(lua.state(), 16, 1);
   lua_createtable(lua.state(), 0, 1);
   lua_pushvalue(lua.state(), -1);
-  lua_pushcclosure(lua.state(), [](lua_State* L) {
-    lua_newuserdatauv(L, 16, 1);
-    lua_getiuservalue(L, 1, 1);
-    lua_setiuservalue(L, -2, 1);
-    lua_pushvalue(L, lua_upvalueindex(1));
-    lua_setmetatable(L, -2);
-    return 1;
-  }, 1);
+  lua_pushcclosure(
+      lua.state(),
+      [](lua_State* L) {
+        lua_newuserdatauv(L, 16, 1);
+        lua_getiuservalue(L, 1, 1);
+        lua_setiuservalue(L, -2, 1);
+        lua_pushvalue(L, lua_upvalueindex(1));
+        lua_setmetatable(L, -2);
+        return 1;
+      },
+      1);
   lua_setfield(lua.state(), -2, "__index");
   lua_setmetatable(lua.state(), -2);
   lua_setglobal(lua.state(), "w");
 
   // Each loop body does one operation N times; the empty loop is subtracted to leave the operation's cost.
   auto per_op_ns = [&](const char* body) {
-    const std::string code = "local h = mesh:halfedge(0) local v = mesh:vertex(0) local t = {next = 1} "
-                             "local f, u, w, mt = c_identity, u, w, {} local n = h.next local x for i = 1, N do " +
-                             std::string(body) + " end";
-    return min_ms(reps, [] {}, [&] { lua.run_string(code, "bench.lua"); }) * 1e6 / double(reads);
+    const std::string code =
+        "local h = mesh:halfedge(0) local v = mesh:vertex(0) local t = {next = 1} "
+        "local f, u, w, mt = c_identity, u, w, {} local n = h.next local x for i = 1, N do " +
+        std::string(body) + " end";
+    return min_ms(
+               reps, [] {}, [&] { lua.run_string(code, "bench.lua"); }) *
+           1e6 / double(reads);
   };
   const double empty = per_op_ns("");
   std::printf("%-36s %8.1f ns\n", "empty Lua loop iteration", empty);
@@ -127,13 +139,15 @@ int main(int argc, char** argv) {
   std::printf("%-36s %8.1f ns  (%.2fx making the same vec3 in Lua)\n", "position read (v.position)", position_read,
               position_read / lua_vec3);
   std::printf("%-36s %8.1f ns\n", "method call (v:degree())", per_op_ns("x = v:degree()") - empty);
-  const double iterate = min_ms(reps, [] {}, [&] {
-    lua.run_string("for i = 1, 10 do for h in mesh:halfedges() do end end", "bench.lua");
-  }) * 1e6 / (10.0 * double(mesh->num_halfedges()));
+  const double iterate =
+      min_ms(
+          reps, [] {}, [&] { lua.run_string("for i = 1, 10 do for h in mesh:halfedges() do end end", "bench.lua"); }) *
+      1e6 / (10.0 * double(mesh->num_halfedges()));
   std::printf("%-36s %8.1f ns per halfedge\n", "iteration (mesh:halfedges())", iterate);
 
   HalfedgeMesh work;
-  const double core_ms = min_ms(reps, [&] { work = original; }, [&] { loop_subdivide(work, LoopWeights::Course); });
+  const double core_ms = min_ms(
+      reps, [&] { work = original; }, [&] { loop_subdivide(work, LoopWeights::Course); });
   std::printf("%-36s %8.2f ms  (%zu faces)\n", "core loop_subdivide (C++)", core_ms, work.num_faces());
 
   if (!fs::exists(upsample_path)) {
@@ -142,9 +156,8 @@ int main(int argc, char** argv) {
   }
   try {
     lua.run_file(upsample_path);
-    const double lua_ms = min_ms(reps, [&] { *mesh = original; }, [&] {
-      lua.run_string("upsample(mesh)", "bench.lua");
-    });
+    const double lua_ms = min_ms(
+        reps, [&] { *mesh = original; }, [&] { lua.run_string("upsample(mesh)", "bench.lua"); });
     std::printf("%-36s %8.2f ms  (%zu faces, %.1fx the core)\n", "Lua upsample (student style)", lua_ms,
                 mesh->num_faces(), lua_ms / core_ms);
   } catch (const std::exception& e) {

@@ -37,14 +37,16 @@ int main(int argc, char** argv) {
               torus.num_faces(), reps);
 
   HalfedgeMesh mesh;
-  const double build = min_ms(reps, [] {}, [&] { mesh = build_halfedge_mesh(torus); });
+  const double build = min_ms(
+      reps, [] {}, [&] { mesh = build_halfedge_mesh(torus); });
   std::printf("%-34s %9.2f ms  %7.2f M faces/s\n", "build half-edge mesh", build, torus.num_faces() / build / 1e3);
   std::printf("%-34s %9.1f bytes/face\n", "  memory at rest", double(mesh.memory_bytes()) / mesh.num_faces());
 
   std::vector<glm::dvec3> normals;
   const int threads = static_cast<int>(std::clamp(arg(argc, argv, "--threads", 2), 1L, 64L));
   const auto normals_row = [&](const HalfedgeMesh& of, const char* which, int thread_count) {
-    const double normal_ms = min_ms(reps, [] {}, [&] { vertex_normals(of, normals, thread_count); });
+    const double normal_ms = min_ms(
+        reps, [] {}, [&] { vertex_normals(of, normals, thread_count); });
     char label[80];
     std::snprintf(label, sizeof label, "area-weighted vertex normals%s (%d thr)", which, thread_count);
     std::printf("%-34s %9.2f ms  %7.2f M faces/s\n", label, normal_ms, of.num_faces() / normal_ms / 1e3);
@@ -52,7 +54,8 @@ int main(int argc, char** argv) {
   normals_row(mesh, "", 1);
   if (threads > 1) normals_row(mesh, "", threads);
 
-  const double validate_ms = min_ms(reps, [] {}, [&] { (void)validate(mesh); });
+  const double validate_ms = min_ms(
+      reps, [] {}, [&] { (void)validate(mesh); });
   std::printf("%-34s %9.2f ms\n", "validate", validate_ms);
 
   const auto loop_row = [&](const char* path, LoopWeights weights, int thread_count,
@@ -60,7 +63,13 @@ int main(int argc, char** argv) {
     HalfedgeMesh work;
     // Cold: every run subdivides into freshly mapped memory, as a user's first subdivision does. Warm (--warm 1):
     // the copy reuses the arrays of the previous run, so page faults are out of the figure.
-    const double ms = min_ms(reps, [&] { if (!warm) work = HalfedgeMesh(); work = mesh; }, [&] { run(work); });
+    const double ms = min_ms(
+        reps,
+        [&] {
+          if (!warm) work = HalfedgeMesh();
+          work = mesh;
+        },
+        [&] { run(work); });
     char label[80];
     std::snprintf(label, sizeof label, "Loop x%d %s (%s, %d thr)", levels, path,
                   weights == LoopWeights::Course ? "course" : "loop", thread_count);

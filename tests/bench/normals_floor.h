@@ -41,9 +41,9 @@ inline void print_normals_floor(const HalfedgeMesh& mesh, int reps) {
       if (length > 0.0) n /= length;
     }
   };
-  std::printf("%-34s %9.2f ms\n", "normals floor, buffer, our ids", min_ms(reps, [] {}, [&] {
-                scatter(corners, positions);
-              }));
+  std::printf("%-34s %9.2f ms\n", "normals floor, buffer, our ids",
+              min_ms(
+                  reps, [] {}, [&] { scatter(corners, positions); }));
   std::vector<uint32_t> renumbered(corners.size()), new_id(positions.size(), UINT32_MAX);
   uint32_t next = 0;
   for (size_t i = 0; i < corners.size(); ++i) {
@@ -54,9 +54,9 @@ inline void print_normals_floor(const HalfedgeMesh& mesh, int reps) {
   for (size_t v = 0; v < positions.size(); ++v) {
     if (new_id[v] != UINT32_MAX) moved[new_id[v]] = positions[v];
   }
-  std::printf("%-34s %9.2f ms\n", "normals floor, buffer, new ids", min_ms(reps, [] {}, [&] {
-                scatter(renumbered, moved);
-              }));
+  std::printf("%-34s %9.2f ms\n", "normals floor, buffer, new ids",
+              min_ms(
+                  reps, [] {}, [&] { scatter(renumbered, moved); }));
 }
 
 }  // namespace meshedit::bench

@@ -53,10 +53,22 @@ struct Entry {
 bool parse(int argc, char** argv, Options& o) {
   for (int i = 1; i < argc; ++i) {
     const std::string a = argv[i];
-    if (a == "--closed") { o.boundary = false; continue; }
-    if (a == "--boundary") { o.closed = false; continue; }
-    if (a == "--interior-only") { o.interior_only = true; continue; }
-    if (a == "--cold") { o.cold = true; continue; }
+    if (a == "--closed") {
+      o.boundary = false;
+      continue;
+    }
+    if (a == "--boundary") {
+      o.closed = false;
+      continue;
+    }
+    if (a == "--interior-only") {
+      o.interior_only = true;
+      continue;
+    }
+    if (a == "--cold") {
+      o.cold = true;
+      continue;
+    }
     if (i + 1 >= argc) return false;
     char* end = nullptr;
     const long value = std::strtol(argv[++i], &end, 10);
@@ -119,8 +131,9 @@ void mark_mismatch(TableRow& row, const Entry& e, const char* note) {
 int main(int argc, char** argv) {
   Options o;
   if (!parse(argc, argv, o)) {
-    std::fprintf(stderr, "usage: peer_bench [--faces N] [--levels L] [--reps R] [--build-faces N] [--threads N] "
-                         "[--closed | --boundary] [--interior-only] [--cold]\n");
+    std::fprintf(stderr,
+                 "usage: peer_bench [--faces N] [--levels L] [--reps R] [--build-faces N] [--threads N] "
+                 "[--closed | --boundary] [--interior-only] [--cold]\n");
     return 2;
   }
   std::vector<Entry> entries;
@@ -138,22 +151,28 @@ int main(int argc, char** argv) {
 
   std::printf("peer_bench: minimum of %d runs, single thread unless a column says otherwise; times in ms\n", o.reps);
   if (o.cold) {
-    std::printf("  --cold: memory not backed before the runs; times depend on the host's page faults and the order "
-                "of the jobs\n");
+    std::printf(
+        "  --cold: memory not backed before the runs; times depend on the host's page faults and the order "
+        "of the jobs\n");
   } else {
-    std::printf("  before every timed run %zu MiB are touched and freed, so every contender gets backed pages "
-                "(bench_support.h)\n", kBackedMiB);
+    std::printf(
+        "  before every timed run %zu MiB are touched and freed, so every contender gets backed pages "
+        "(bench_support.h)\n",
+        kBackedMiB);
   }
   if (FILE* load = std::fopen("/proc/loadavg", "r")) {  // the machine is shared: say how busy it was
     double one = 0, five = 0;
-    if (std::fscanf(load, "%lf %lf", &one, &five) == 2) std::printf("  load average at start: %.2f (1 min), %.2f (5 min)\n", one, five);
+    if (std::fscanf(load, "%lf %lf", &one, &five) == 2)
+      std::printf("  load average at start: %.2f (1 min), %.2f (5 min)\n", one, five);
     std::fclose(load);
   }
-  for (const Entry& e : entries) std::printf("  %-9s %s\n", e.contender->name().c_str(), e.contender->library().c_str());
+  for (const Entry& e : entries)
+    std::printf("  %-9s %s\n", e.contender->name().c_str(), e.contender->library().c_str());
   for (int k = 0; k < kPeerSlots; ++k) {
     bool present = false;
     for (const Entry& e : entries) present = present || e.slot == k;
-    if (!present) std::printf("  %-9s absent (not compiled in: run scripts/setup_bench.sh, then reconfigure)\n", kPeerNames[k]);
+    if (!present)
+      std::printf("  %-9s absent (not compiled in: run scripts/setup_bench.sh, then reconfigure)\n", kPeerNames[k]);
   }
 
   bool all_ok = true;
@@ -172,15 +191,19 @@ int main(int argc, char** argv) {
     for (Entry& e : entries) {
       Contender& c = *e.contender;
       MeshCounts got;
-      bool ok = attempt(c.name() + " build", [&] { c.build(input); got = c.counts(); });
+      bool ok = attempt(c.name() + " build", [&] {
+        c.build(input);
+        got = c.counts();
+      });
       if (ok && e.slot < 0) expected = got;
       if (ok && !(got == expected)) {
         std::printf("FAIL  build: %s has %zu vertices, %zu edges, %zu faces; ours %zu, %zu, %zu\n", c.name().c_str(),
                     got.vertices, got.edges, got.faces, expected.vertices, expected.edges, expected.faces);
         ok = false;
       }
-      if (ok && e.slot >= 0) std::printf("check build: %s has the same %zu vertices, %zu edges, %zu faces as ours\n",
-                                         c.name().c_str(), got.vertices, got.edges, got.faces);
+      if (ok && e.slot >= 0)
+        std::printf("check build: %s has the same %zu vertices, %zu edges, %zu faces as ours\n", c.name().c_str(),
+                    got.vertices, got.edges, got.faces);
       if (!ok) {
         all_ok = false;
         mark_mismatch(row, e, "mismatch");
@@ -270,11 +293,12 @@ int main(int argc, char** argv) {
       if (ok) {
         const MatchReport report = match_vertices(reference, c.vertex_data(), match);
         if (report.ok) {
-          std::printf("check %s, %s: %zu vertices, %zu faces as ours; %s (%zu) match ours point by point "
-                      "(max |d| %.1e x |p|max), boundary flags too, normals max |d| %.1e%s\n",
-                      variant.label.c_str(), who.c_str(), expected.vertices, expected.faces, scope.c_str(),
-                      report.compared, report.max_position_error, report.max_normal_error,
-                      variant.closed ? "" : (", boundary rule " + c.boundary_rule()).c_str());
+          std::printf(
+              "check %s, %s: %zu vertices, %zu faces as ours; %s (%zu) match ours point by point "
+              "(max |d| %.1e x |p|max), boundary flags too, normals max |d| %.1e%s\n",
+              variant.label.c_str(), who.c_str(), expected.vertices, expected.faces, scope.c_str(), report.compared,
+              report.max_position_error, report.max_normal_error,
+              variant.closed ? "" : (", boundary rule " + c.boundary_rule()).c_str());
         } else {
           std::printf("FAIL  %s, %s: %s\n", variant.label.c_str(), who.c_str(), report.problem.c_str());
           ok = false;
@@ -299,9 +323,11 @@ int main(int argc, char** argv) {
       if (!matched[i]) continue;
       const Entry& e = entries[i];
       Contender* c = e.contender.get();
-      const auto keep_last = [c, reps = o.reps](int round) { if (round + 1 < reps) c->clear(); };
-      loop_jobs.push_back({&cell(loop_row, e), [c, v] { c->build(v->mesh); }, [c, &o] { c->subdivide(o.levels, 1); },
-                           keep_last});
+      const auto keep_last = [c, reps = o.reps](int round) {
+        if (round + 1 < reps) c->clear();
+      };
+      loop_jobs.push_back(
+          {&cell(loop_row, e), [c, v] { c->build(v->mesh); }, [c, &o] { c->subdivide(o.levels, 1); }, keep_last});
       normal_jobs.push_back({&cell(normal_row, e), [c] { c->drop_normals(); }, [c] { c->compute_normals(1); }, {}});
       if (e.slot >= 0 || !ours_threads_ok) continue;
       if (ours_threads_subdivide) {
@@ -309,8 +335,8 @@ int main(int argc, char** argv) {
                              [c, &o] { c->subdivide(o.levels, o.threads); }, keep_last});
       }
       if (ours_threads_normals) {
-        normal_jobs.push_back({&normal_row.ours_threads, [c] { c->drop_normals(); },
-                               [c, &o] { c->compute_normals(o.threads); }, {}});
+        normal_jobs.push_back(
+            {&normal_row.ours_threads, [c] { c->drop_normals(); }, [c, &o] { c->compute_normals(o.threads); }, {}});
       }
     }
     run_interleaved(o.reps, o.cold, loop_jobs);
@@ -321,16 +347,18 @@ int main(int argc, char** argv) {
     for (size_t i = 0; variant.closed && i < entries.size(); ++i) {
       if (!matched[i]) continue;
       Contender& c = *entries[i].contender;
-      const long long growth = rss_growth_in_child([&] { c.clear(); }, [&] {
-        c.build(variant.mesh);
-        c.subdivide(o.levels, 1);
-      });
+      const long long growth = rss_growth_in_child([&] { c.clear(); },
+                                                   [&] {
+                                                     c.build(variant.mesh);
+                                                     c.subdivide(o.levels, 1);
+                                                   });
       if (growth >= 0) cell(memory_row, entries[i]) = double(growth) / double(expected.faces);
     }
     if (variant.closed) {
-      std::printf("memory: growth of the resident set (after malloc_trim) of a forked child over build + subdivision, "
-                  "per output face, same for all; ours by HalfedgeMesh::memory_bytes(): %.1f B/face\n",
-                  double(ours_bytes) / double(expected.faces));
+      std::printf(
+          "memory: growth of the resident set (after malloc_trim) of a forked child over build + subdivision, "
+          "per output face, same for all; ours by HalfedgeMesh::memory_bytes(): %.1f B/face\n",
+          double(ours_bytes) / double(expected.faces));
     }
   }
 
@@ -342,8 +370,8 @@ int main(int argc, char** argv) {
   if (ours_threads_subdivide || ours_threads_normals) {
     for (const TableRow& row : rows) {
       if (std::isnan(row.ours_threads)) continue;
-      std::printf("ours with %d threads over one, %s: %.2fx (target >= 1.6x at 1M faces or more: %s)\n",
-                  o.threads, row.label.substr(0, row.label.rfind(" (")).c_str(), row.ours / row.ours_threads,
+      std::printf("ours with %d threads over one, %s: %.2fx (target >= 1.6x at 1M faces or more: %s)\n", o.threads,
+                  row.label.substr(0, row.label.rfind(" (")).c_str(), row.ours / row.ours_threads,
                   row.ours / row.ours_threads >= 1.6 ? "met" : "NOT met");
     }
   }

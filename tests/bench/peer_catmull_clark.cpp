@@ -128,16 +128,19 @@ bool compare_catmull_clark(const CatmullClarkOptions& o) {
         skip = near_boundary(reference, radius);
         match.skip = &skip;
         scope = "interior points";
-        std::printf("note  %s: boundary rule %s differs from ours; comparing only points farther than %.3g from the "
-                    "boundary\n", c.name().c_str(), c.boundary_rule().c_str(), radius);
+        std::printf(
+            "note  %s: boundary rule %s differs from ours; comparing only points farther than %.3g from the "
+            "boundary\n",
+            c.name().c_str(), c.boundary_rule().c_str(), radius);
       }
       if (ok) {
         const MatchReport report = match_vertices(reference, c.vertex_data(), match);
         if (report.ok) {
-          std::printf("check Catmull-Clark %s, %s: %zu vertices, %zu faces as ours; %s (%zu) match ours point by "
-                      "point (max |d| %.1e x |p|max), boundary flags too\n",
-                      label.c_str(), c.name().c_str(), expected.vertices, expected.faces, scope.c_str(),
-                      report.compared, report.max_position_error);
+          std::printf(
+              "check Catmull-Clark %s, %s: %zu vertices, %zu faces as ours; %s (%zu) match ours point by "
+              "point (max |d| %.1e x |p|max), boundary flags too\n",
+              label.c_str(), c.name().c_str(), expected.vertices, expected.faces, scope.c_str(), report.compared,
+              report.max_position_error);
         } else {
           std::printf("FAIL  Catmull-Clark %s, %s: %s\n", label.c_str(), c.name().c_str(), report.problem.c_str());
           ok = false;

@@ -57,7 +57,8 @@ std::string point_text(const glm::dvec3& p) {
 MatchReport match_vertices(const VertexData& ours, const VertexData& theirs, const MatchOptions& options) {
   MatchReport report;
   if (!options.skip && ours.position.size() != theirs.position.size()) {
-    report.problem = std::to_string(theirs.position.size()) + " vertices instead of " + std::to_string(ours.position.size());
+    report.problem =
+        std::to_string(theirs.position.size()) + " vertices instead of " + std::to_string(ours.position.size());
     return report;
   }
   double scale = 0.0;

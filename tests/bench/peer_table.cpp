@@ -68,7 +68,8 @@ void print_table(const std::vector<TableRow>& rows, int threads) {
     if (with_threads) std::printf(" %10s |", number(row.ours_threads).c_str());
     std::string cells[kPeerSlots], ratios[kPeerSlots];
     for (int k = 0; k < kPeerSlots; ++k) {
-      cells[k] = std::isnan(row.peer[k]) ? (row.peer_note[k].empty() ? "absent" : row.peer_note[k]) : number(row.peer[k]);
+      cells[k] =
+          std::isnan(row.peer[k]) ? (row.peer_note[k].empty() ? "absent" : row.peer_note[k]) : number(row.peer[k]);
       ratios[k] = std::isnan(row.peer[k]) || std::isnan(row.ours) ? "-" : number(row.peer[k] / row.ours, 2) + "x";
     }
     std::printf(" %10s | %10s | %8s | %9s | %-22s | %s\n", cells[0].c_str(), cells[1].c_str(), ratios[0].c_str(),

@@ -12,13 +12,13 @@ inline constexpr int kPeerSlots = 2;  // 0 = OpenMesh, 1 = CGAL
 inline const char* const kPeerNames[kPeerSlots] = {"OpenMesh", "CGAL"};
 
 struct TableRow {
-  std::string label;                      // says the unit: ms or B/face
+  std::string label;  // says the unit: ms or B/face
   double ours = NAN;
-  double ours_threads = NAN;              // ours with --threads N, NAN if not measured
+  double ours_threads = NAN;  // ours with --threads N, NAN if not measured
   double peer[kPeerSlots] = {NAN, NAN};
-  std::string peer_note[kPeerSlots];      // why a peer has no number ("absent", "mismatch")
+  std::string peer_note[kPeerSlots];       // why a peer has no number ("absent", "mismatch")
   double target[kPeerSlots] = {1.0, 1.0};  // peer/ours must be at least this
-  bool strictly_below = false;            // memory: ours must be below the peer (peer/ours > 1)
+  bool strictly_below = false;             // memory: ours must be below the peer (peer/ours > 1)
 };
 
 // Prints the rows; `threads` > 1 adds the column of ours with that many threads.

@@ -157,8 +157,7 @@ void time_edit(MeshRenderer& renderer, HalfedgeMesh& mesh, const char* name,
   char label[96], note[160];
   std::snprintf(label, sizeof label, "update() after a %s (patch)", name);
   std::snprintf(note, sizeof note, "%zu elements changed, %zu slots, %zu bytes sent%s", elements.size(),
-                patched.last_update_slots, patched.last_update_bytes,
-                patched.patches == 0 ? "; NOT a patch" : "");
+                patched.last_update_slots, patched.last_update_bytes, patched.patches == 0 ? "; NOT a patch" : "");
   line(label, "%10.3f ms", patch_ms, note);
   // The same state again as a full rebuild.
   renderer.invalidate();
@@ -170,9 +169,9 @@ void time_edit(MeshRenderer& renderer, HalfedgeMesh& mesh, const char* name,
   line(label, "%10.3f ms", ms_since(start), note);
 }
 
-const char* const kLevelNames[kQualitySteps + 1] = {
-    "full: multisampling, wireframe, back sides", "no multisampling", "no multisampling, no wireframe",
-    "no multisampling, no wireframe, no back sides"};
+const char* const kLevelNames[kQualitySteps + 1] = {"full: multisampling, wireframe, back sides", "no multisampling",
+                                                    "no multisampling, no wireframe",
+                                                    "no multisampling, no wireframe, no back sides"};
 const char* const kStepNames[kQualitySteps] = {"multisampling", "wireframe", "back sides"};
 
 // What the window draws at a quality level, on a closed mesh with the user's wireframe choice left to the governor.
@@ -475,8 +474,8 @@ int main(int argc, char** argv) {
     OffscreenContext context;
     const ShaderLibrary shaders;
     RenderTarget target(viewport.width, viewport.height, samples);
-    std::printf("%s; %dx%d, %dx multisampling, %d frames per figure\n", context.description().c_str(),
-                viewport.width, viewport.height, target.samples(), frames);
+    std::printf("%s; %dx%d, %dx multisampling, %d frames per figure\n", context.description().c_str(), viewport.width,
+                viewport.height, target.samples(), frames);
     for (uint32_t faces : counts) bench_mesh(faces, frames, viewport, target, shaders, frames_only);
   } catch (const RenderError& e) {
     // No OpenGL here (the render tests skip too): the table figures need none.

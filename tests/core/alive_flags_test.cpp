@@ -117,9 +117,9 @@ TEST(AliveFlags, AgreeWithAPlainModelUnderRandomUse) {
 TEST(AliveFlags, ABuiltAndSubdividedMeshSpendsNothingOnLiveness) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_torus(24, 16));
   ASSERT_TRUE(loop_subdivide(mesh, LoopWeights::Course, 1).ok);
-  const size_t pointers_and_positions =
-      mesh.halfedge_capacity() * sizeof(HalfedgeRecord) + mesh.vertex_capacity() * (4 + sizeof(glm::dvec3)) +
-      mesh.edge_capacity() * 4 + mesh.face_capacity() * 4 + mesh.boundary_capacity() * 4;
+  const size_t pointers_and_positions = mesh.halfedge_capacity() * sizeof(HalfedgeRecord) +
+                                        mesh.vertex_capacity() * (4 + sizeof(glm::dvec3)) + mesh.edge_capacity() * 4 +
+                                        mesh.face_capacity() * 4 + mesh.boundary_capacity() * 4;
   EXPECT_EQ(mesh.memory_bytes(), pointers_and_positions);
 
   const FaceId f = FaceId::face(5);

@@ -283,8 +283,8 @@ TEST(BezierPatchEval, BilinearPatchHasExactPoints) {
   EXPECT_EQ(evaluate_patch(patch, 0.5, 0.75), dvec3(1.5, 4.5, 3.375));
   EXPECT_EQ(evaluate_patch(patch, 0.5, 0.5), dvec3(1.5, 3, 2.25));
   const PatchEvaluation steps = evaluate_patch_steps(patch, 0.25, 0.5);
-  EXPECT_EQ(steps.row_points, (std::array<dvec3, 4>{dvec3(0.75, 0, 0), dvec3(0.75, 2, 0.75), dvec3(0.75, 4, 1.5),
-                                                    dvec3(0.75, 6, 2.25)}));
+  EXPECT_EQ(steps.row_points,
+            (std::array<dvec3, 4>{dvec3(0.75, 0, 0), dvec3(0.75, 2, 0.75), dvec3(0.75, 4, 1.5), dvec3(0.75, 6, 2.25)}));
   EXPECT_EQ(steps.column_levels[1], (std::vector<dvec3>{{0.75, 1, 0.375}, {0.75, 3, 1.125}, {0.75, 5, 1.875}}));
 }
 
@@ -325,8 +325,8 @@ TEST(PatchTessellation, OneFlatPatchGivesTheDocumentedGrid) {
   // Normals point along dP/du x dP/dv = +z.
   for (size_t f = 0; f < mesh.num_faces(); ++f) {
     const auto t = mesh.face(f);
-    const dvec3 normal = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]],
-                                    mesh.positions[t[2]] - mesh.positions[t[0]]);
+    const dvec3 normal =
+        glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
     EXPECT_GT(normal.z, 0.0) << "face " << f;
   }
   const HalfedgeMesh m = build_halfedge_mesh(mesh);
@@ -365,7 +365,7 @@ TEST(PatchTessellation, SharedEdgeIsWeldedAndBuilds) {
   EXPECT_TRUE(validate(m).ok()) << validate(m).summary();
   EXPECT_EQ(m.num_boundaries(), 1u);
   EXPECT_EQ(m.degree(FaceId::boundary(0)), 6 * n);  // a 2n by n rectangle of grid steps
-  EXPECT_FALSE(m.is_boundary(VertexId(5)));          // A's (2, 1): inside once B is welded on
+  EXPECT_FALSE(m.is_boundary(VertexId(5)));         // A's (2, 1): inside once B is welded on
   EXPECT_TRUE(m.is_boundary(VertexId(2)));
   EXPECT_TRUE(m.is_boundary(VertexId(10)));
 }
@@ -419,7 +419,7 @@ TEST(PatchTessellation, CollapsedRowDropsDegenerateTrianglesAndBuilds) {
   const HalfedgeMesh m = build_halfedge_mesh(mesh);
   EXPECT_TRUE(validate(m).ok()) << validate(m).summary();
   EXPECT_EQ(m.num_boundaries(), 1u);
-  EXPECT_EQ(m.degree(FaceId::boundary(0)), 3 * n);  // the collapsed side has no length
+  EXPECT_EQ(m.degree(FaceId::boundary(0)), 3 * n);   // the collapsed side has no length
   EXPECT_EQ(outgoing_count(m, VertexId(0)), n + 1);  // n triangles fan around the apex, plus the boundary
 }
 
@@ -538,8 +538,8 @@ TEST(TeapotAsset, HasThirtyTwoFinitePatchesAndBuilds) {
       EXPECT_TRUE(std::isfinite(q.x) && std::isfinite(q.y) && std::isfinite(q.z)) << "patch " << p;
     }
   }
-  EXPECT_EQ(patches[0].at(0, 0), dvec3(1.4, 0, 2.4));    // the rim's first point
-  EXPECT_EQ(patches[18].at(3, 3), dvec3(3.2, 0, 2.4));   // on the spout's opening
+  EXPECT_EQ(patches[0].at(0, 0), dvec3(1.4, 0, 2.4));   // the rim's first point
+  EXPECT_EQ(patches[18].at(3, 3), dvec3(3.2, 0, 2.4));  // on the spout's opening
 
   TessellationReport report;
   const PolygonMesh mesh = tessellate_patches(patches, 16, &report);

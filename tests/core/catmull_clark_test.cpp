@@ -9,8 +9,8 @@
 #include <cmath>
 #include <vector>
 
-#include <glm/vec3.hpp>
 #include <gtest/gtest.h>
+#include <glm/vec3.hpp>
 
 #include "core/catmull_clark.h"
 #include "core/mesh_build.h"

@@ -43,15 +43,12 @@ inline glm::dvec3 linear_rgb(glm::vec3 srgb) {
 // Machado et al. 2009, severity 1.0, rows acting on linear (R, G, B).
 inline glm::dvec3 simulate_linear(glm::dvec3 rgb, Vision vision) {
   using Rows = std::array<std::array<double, 3>, 3>;
-  static constexpr Rows kProtanopia{{{0.152286, 1.052583, -0.204868},
-                                     {0.114503, 0.786281, 0.099216},
-                                     {-0.003882, -0.048116, 1.051998}}};
-  static constexpr Rows kDeuteranopia{{{0.367322, 0.860646, -0.227968},
-                                       {0.280085, 0.672501, 0.047413},
-                                       {-0.011820, 0.042940, 0.968881}}};
-  static constexpr Rows kTritanopia{{{1.255528, -0.076749, -0.178779},
-                                     {-0.078411, 0.930809, 0.147602},
-                                     {0.004733, 0.691367, 0.303900}}};
+  static constexpr Rows kProtanopia{
+      {{0.152286, 1.052583, -0.204868}, {0.114503, 0.786281, 0.099216}, {-0.003882, -0.048116, 1.051998}}};
+  static constexpr Rows kDeuteranopia{
+      {{0.367322, 0.860646, -0.227968}, {0.280085, 0.672501, 0.047413}, {-0.011820, 0.042940, 0.968881}}};
+  static constexpr Rows kTritanopia{
+      {{1.255528, -0.076749, -0.178779}, {-0.078411, 0.930809, 0.147602}, {0.004733, 0.691367, 0.303900}}};
   const Rows* m = vision == Vision::Protanopia     ? &kProtanopia
                   : vision == Vision::Deuteranopia ? &kDeuteranopia
                   : vision == Vision::Tritanopia   ? &kTritanopia

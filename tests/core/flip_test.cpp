@@ -196,12 +196,12 @@ TEST(Flip, BrokenPointersAreRefusedWithAReason) {
     const char* reason;
   };
   const Case cases[] = {
-      {"twin points elsewhere", [](HalfedgeMesh& m) { m.set_twin(H(3), H(4)); },
-       "h2.twin is h3, but h3.twin is h4"},
+      {"twin points elsewhere", [](HalfedgeMesh& m) { m.set_twin(H(3), H(4)); }, "h2.twin is h3, but h3.twin is h4"},
       {"twin out of range", [](HalfedgeMesh& m) { m.set_twin(H(2), H(99)); }, "h2.twin is h99, which does not exist"},
       {"edge halfedge on another edge", [](HalfedgeMesh& m) { m.set_halfedge(E(2), H(0)); },
        "e2.halfedge is h0, but h0.edge is e0"},
-      {"f0 made a quad through h6", [](HalfedgeMesh& m) {
+      {"f0 made a quad through h6",
+       [](HalfedgeMesh& m) {
          m.set_next(H(1), H(6));
          m.set_next(H(6), H(2));
          m.set_face(H(6), F(0));

@@ -85,31 +85,35 @@ TEST(Diff, EveryFieldOfEveryKindInOrder) {
   after.new_boundary();
   EXPECT_EQ(listing(diff(before, after)),
             "v0.alive: alive -> dead\n"
-            "v3.halfedge: h" + std::to_string(before.halfedge(VertexId(3)).index) + " -> -\n"
-            "h1.next: h2 -> h3\n"
-            "h1.twin: h" + std::to_string(before.twin(HalfedgeId(1)).index) + " -> h4\n"
-            "h1.vertex: v1 -> v2\n"
-            "h1.edge: e1 -> e3\n"
-            "h1.face: f0 -> b0\n"
-            "h10.next: - -> -\n"
-            "h10.twin: - -> -\n"
-            "h10.vertex: - -> -\n"
-            "h10.edge: - -> -\n"
-            "h10.face: - -> -\n"
-            "h10.alive: - -> alive\n"
-            "e2.halfedge: h2 -> h3\n"
-            "e4.alive: alive -> dead\n"
-            "f1.halfedge: h3 -> h4\n"
-            "b0.halfedge: h6 -> h7\n"
-            "b0.alive: alive -> dead\n"
-            "b1.halfedge: - -> -\n"
-            "b1.alive: - -> alive\n");
+            "v3.halfedge: h" +
+                std::to_string(before.halfedge(VertexId(3)).index) +
+                " -> -\n"
+                "h1.next: h2 -> h3\n"
+                "h1.twin: h" +
+                std::to_string(before.twin(HalfedgeId(1)).index) +
+                " -> h4\n"
+                "h1.vertex: v1 -> v2\n"
+                "h1.edge: e1 -> e3\n"
+                "h1.face: f0 -> b0\n"
+                "h10.next: - -> -\n"
+                "h10.twin: - -> -\n"
+                "h10.vertex: - -> -\n"
+                "h10.edge: - -> -\n"
+                "h10.face: - -> -\n"
+                "h10.alive: - -> alive\n"
+                "e2.halfedge: h2 -> h3\n"
+                "e4.alive: alive -> dead\n"
+                "f1.halfedge: h3 -> h4\n"
+                "b0.halfedge: h6 -> h7\n"
+                "b0.alive: alive -> dead\n"
+                "b1.halfedge: - -> -\n"
+                "b1.alive: - -> alive\n");
 }
 
 TEST(Diff, PositionsCompareBitForBit) {
   const HalfedgeMesh before = tetrahedron();
   HalfedgeMesh after = before;
-  after.set_position(VertexId(0), {-0.0, 1, 1});  // was (1, 1, 1)
+  after.set_position(VertexId(0), {-0.0, 1, 1});         // was (1, 1, 1)
   after.set_position(VertexId(2), {-1, 1, -1 + 1e-16});  // tiny change must still show
   EXPECT_EQ(listing(diff(before, after)),
             "v0.position: (1, 1, 1) -> (-0, 1, 1)\n"

@@ -3,8 +3,8 @@
 #include <algorithm>
 #include <string>
 
-#include <glm/vec3.hpp>
 #include <gtest/gtest.h>
+#include <glm/vec3.hpp>
 
 #include "core/linear_subdivision.h"
 #include "core/mesh_build.h"

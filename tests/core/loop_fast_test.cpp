@@ -11,22 +11,26 @@
 
 #include "core/history.h"
 #include "core/loop_subdivision.h"
-#include "core/triangulate.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "core/triangulate.h"
 #include "core/validate.h"
-#include "support/random_edits.h"
 #include "support/loop_equality.h"
+#include "support/random_edits.h"
 
 namespace meshedit {
 namespace {
 
 const std::vector<std::pair<std::string, PolygonMesh>>& fixtures() {
-  static const std::vector<std::pair<std::string, PolygonMesh>> all = {
-      {"tetrahedron", make_tetrahedron()}, {"cube", make_cube()},         {"icosahedron", make_icosahedron()},
-      {"grid 3x2", make_grid(3, 2)},       {"grid 7x5", make_grid(7, 5)}, {"fan 9", make_fan(9)},
-      {"fan 50", make_fan(50)},            {"torus 6x5", make_torus(6, 5)}};
+  static const std::vector<std::pair<std::string, PolygonMesh>> all = {{"tetrahedron", make_tetrahedron()},
+                                                                       {"cube", make_cube()},
+                                                                       {"icosahedron", make_icosahedron()},
+                                                                       {"grid 3x2", make_grid(3, 2)},
+                                                                       {"grid 7x5", make_grid(7, 5)},
+                                                                       {"fan 9", make_fan(9)},
+                                                                       {"fan 50", make_fan(50)},
+                                                                       {"torus 6x5", make_torus(6, 5)}};
   return all;
 }
 

@@ -14,15 +14,15 @@
 #include <sstream>
 #include <vector>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "core/loop_subdivision.h"
-#include "core/triangulate.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
-#include "support/test_support.h"
+#include "core/triangulate.h"
 #include "core/validate.h"
+#include "support/test_support.h"
 
 namespace meshedit {
 namespace {
@@ -267,8 +267,8 @@ TEST(LoopSubdivision, CubePositionsMatchTheRulesForBothWeightSets) {
     // for u = 1/16 (both sets agree at valence 6). v1's ring sums to (1,0,0):
     // Course u = 3/32 -> 5/8 p1 + (3/32,0,0); Loop u = 31/256 -> 132/256 p1 + (31/256,0,0).
     EXPECT_TRUE(near(p0, glm::dvec3(-5.0 / 16.0)));
-    EXPECT_TRUE(near(p1, w == LoopWeights::Course ? glm::dvec3(13, -10, -10) / 32.0
-                                                  : glm::dvec3(97, -66, -66) / 256.0));
+    EXPECT_TRUE(
+        near(p1, w == LoopWeights::Course ? glm::dvec3(13, -10, -10) / 32.0 : glm::dvec3(97, -66, -66) / 256.0));
     EXPECT_TRUE(near(e01, {1.0 / 8.0, -3.0 / 8.0, -3.0 / 8.0}));
     EXPECT_TRUE(near(e03, {0, 0, -0.5}));
 
@@ -335,7 +335,8 @@ TEST(LoopSubdivision, FlatGridStaysFlatAndFollowsTheBoundaryRules) {
     for (VertexId v : m.vertices()) EXPECT_EQ(m.position(v).z, 0.0) << format_id(v);
     // Corners: 3/4 p + 1/8 (two boundary neighbours). v0 also has the interior neighbour v4, which the
     // boundary rule ignores; v2 = (2,0) lies in one triangle only.
-    EXPECT_TRUE(near(m.position(V(0)), 0.75 * glm::dvec3(0, 0, 0) + 0.125 * (glm::dvec3(1, 0, 0) + glm::dvec3(0, 1, 0))));
+    EXPECT_TRUE(
+        near(m.position(V(0)), 0.75 * glm::dvec3(0, 0, 0) + 0.125 * (glm::dvec3(1, 0, 0) + glm::dvec3(0, 1, 0))));
     EXPECT_TRUE(near(m.position(V(0)), {1.0 / 8.0, 1.0 / 8.0, 0}));
     EXPECT_TRUE(near(m.position(V(2)), {15.0 / 8.0, 1.0 / 8.0, 0}));
     EXPECT_TRUE(near(m.position(V(6)), {1.0 / 8.0, 15.0 / 8.0, 0}));
@@ -499,8 +500,8 @@ TEST(LoopSubdivision, EmptyMeshIsANoOp) {
 TEST(LoopSubdivision, TorusTwoAndThreeLevels) {
   HalfedgeMesh m = build_halfedge_mesh(make_torus(8, 6));  // V 48, E 144, F 96
   ASSERT_EQ(m.num_edges(), 144u);
-  const size_t expected[3][3] = {{48 + 144, 2 * 144 + 3 * 96, 4 * 96},      // 192, 576, 384
-                                 {192 + 576, 2 * 576 + 3 * 384, 4 * 384},    // 768, 2304, 1536
+  const size_t expected[3][3] = {{48 + 144, 2 * 144 + 3 * 96, 4 * 96},          // 192, 576, 384
+                                 {192 + 576, 2 * 576 + 3 * 384, 4 * 384},       // 768, 2304, 1536
                                  {768 + 2304, 2 * 2304 + 3 * 1536, 4 * 1536}};  // 3072, 9216, 6144
   for (int level = 0; level < 3; ++level) {
     SCOPED_TRACE(level + 1);

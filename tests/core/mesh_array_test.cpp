@@ -1,7 +1,8 @@
 // MeshArray (mesh_array.h) on big_blocks (big_blocks.h): big arrays start on a huge-page boundary where the
-// page_memory seam maps them (Linux) and their mapping ends at the last small page they need; values survive every kind of growth (heap to heap, heap to mapping, mapping
-// to mapping by moving pages); a grown mapping's new pages are writable; copies, moves, assignment, assign, resize
-// and shrink_to_fit keep std::vector's meaning; an allocation that fails leaves the array as it was.
+// page_memory seam maps them (Linux) and their mapping ends at the last small page they need; values survive every kind
+// of growth (heap to heap, heap to mapping, mapping to mapping by moving pages); a grown mapping's new pages are
+// writable; copies, moves, assignment, assign, resize and shrink_to_fit keep std::vector's meaning; an allocation that
+// fails leaves the array as it was.
 #include "core/mesh_array.h"
 
 #include <gtest/gtest.h>
@@ -107,7 +108,7 @@ TEST(MeshArray, CopiesMovesAndAssignmentMeanWhatTheyDoForVectors) {
   EXPECT_TRUE(copy.empty());
   EXPECT_EQ(copy.data(), nullptr);
   MeshArray<uint64_t>& same = moved;  // through a reference: clang's -Wself-move flags the direct spelling
-  moved = std::move(same);             // self-move keeps the contents
+  moved = std::move(same);            // self-move keeps the contents
   EXPECT_EQ(moved.size(), big.size());
 
   const uint64_t* before = big.data();

@@ -59,13 +59,13 @@ TEST(MeshBuildFast, TwoHolesMixedPolygonsAndAnUnusedVertex) {
 
 TEST(MeshBuildFast, StepsAsideForEveryBadInputAndTheCheckedPathNamesIt) {
   const std::vector<PolygonMesh> bad = {
-      with_faces(points(3), {{0, 1}}),                                  // too few corners
-      with_faces(points(3), {{0, 1, 1}}),                               // repeated corner
-      with_faces(points(3), {{0, 1, 7}}),                               // out of range
-      with_faces(points(4), {{0, 1, 2}, {0, 1, 3}}),                    // same direction: inconsistent
-      with_faces(points(5), {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}),         // three faces on one edge
-      with_faces(points(3), {{0, 1, 2}, {0, 2, 1}}),                    // repeated face
-      with_faces(points(5), {{0, 1, 2}, {0, 3, 4}}),                    // bow-tie at vertex 0
+      with_faces(points(3), {{0, 1}}),                           // too few corners
+      with_faces(points(3), {{0, 1, 1}}),                        // repeated corner
+      with_faces(points(3), {{0, 1, 7}}),                        // out of range
+      with_faces(points(4), {{0, 1, 2}, {0, 1, 3}}),             // same direction: inconsistent
+      with_faces(points(5), {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}),  // three faces on one edge
+      with_faces(points(3), {{0, 1, 2}, {0, 2, 1}}),             // repeated face
+      with_faces(points(5), {{0, 1, 2}, {0, 3, 4}}),             // bow-tie at vertex 0
   };
   for (const PolygonMesh& p : bad) {
     HalfedgeMesh fast;

@@ -42,7 +42,10 @@ TEST(MeshBuild, SquareOfTwoTrianglesHasDocumentedIds) {
   ASSERT_EQ(m.num_boundaries(), 1u);
   const FaceId f0 = FaceId::face(0), f1 = FaceId::face(1), b0 = FaceId::boundary(0);
 
-  struct Row { uint32_t next, twin, vertex, edge; FaceId face; };
+  struct Row {
+    uint32_t next, twin, vertex, edge;
+    FaceId face;
+  };
   const Row expected[10] = {
       {1, 6, 0, 0, f0}, {2, 9, 1, 1, f0}, {0, 3, 3, 2, f0}, {4, 2, 0, 2, f1}, {5, 8, 3, 3, f1},
       {3, 7, 2, 4, f1}, {7, 0, 1, 0, b0}, {8, 5, 0, 4, b0}, {9, 4, 2, 3, b0}, {6, 1, 3, 1, b0},
@@ -84,14 +87,17 @@ TEST(MeshBuild, InteriorVertexTakesItsLowestOutgoingHalfedge) {
 }
 
 TEST(MeshBuild, FixturesHaveExpectedTopology) {
-  struct Case { const char* name; PolygonMesh mesh; size_t v, e, f, b; long chi; long genus; };
+  struct Case {
+    const char* name;
+    PolygonMesh mesh;
+    size_t v, e, f, b;
+    long chi;
+    long genus;
+  };
   const Case cases[] = {
-      {"tetrahedron", make_tetrahedron(), 4, 6, 4, 0, 2, 0},
-      {"cube", make_cube(), 8, 18, 12, 0, 2, 0},
-      {"cube_quads", make_cube_quads(), 8, 12, 6, 0, 2, 0},
-      {"icosahedron", make_icosahedron(), 12, 30, 20, 0, 2, 0},
-      {"grid", make_grid(3, 2), 12, 23, 12, 1, 1, 0},
-      {"fan", make_fan(50), 51, 100, 50, 1, 1, 0},
+      {"tetrahedron", make_tetrahedron(), 4, 6, 4, 0, 2, 0}, {"cube", make_cube(), 8, 18, 12, 0, 2, 0},
+      {"cube_quads", make_cube_quads(), 8, 12, 6, 0, 2, 0},  {"icosahedron", make_icosahedron(), 12, 30, 20, 0, 2, 0},
+      {"grid", make_grid(3, 2), 12, 23, 12, 1, 1, 0},        {"fan", make_fan(50), 51, 100, 50, 1, 1, 0},
       {"torus", make_torus(8, 4), 32, 96, 64, 0, 0, 1},
   };
   for (const auto& c : cases) {

@@ -152,8 +152,7 @@ TEST(MeshCompare, OneReversedTriangleBesideARightOne) {
   mine.indices = {0, 1, 2, 3, 5, 4};
   const MeshComparison c = compare_meshes(build_halfedge_mesh(mine), build_halfedge_mesh(ref));
   ASSERT_EQ(c.differences.size(), 3u) << c.summary();
-  EXPECT_EQ(c.differences[0],
-            "your face f1 (v3 v5 v4) has the opposite orientation of reference face f1 (v3 v4 v5)");
+  EXPECT_EQ(c.differences[0], "your face f1 (v3 v5 v4) has the opposite orientation of reference face f1 (v3 v4 v5)");
   EXPECT_EQ(c.differences[1].rfind("your boundary loop b1 (", 0), 0u) << c.differences[1];
   EXPECT_NE(c.differences[1].find(") is not in the reference"), std::string::npos) << c.differences[1];
   EXPECT_EQ(c.differences[2].rfind("reference boundary loop b1 (", 0), 0u) << c.differences[2];
@@ -182,8 +181,10 @@ TEST(MeshCompare, MissingFaceAndTheBoundaryItChanges) {
   EXPECT_EQ(c.differences[4],
             "reference vertex v2 at (0, 1, 0) has no match in yours; the nearest is your v0 at (0, 0, 0), 1 away "
             "(already matched to reference v0)");
-  EXPECT_TRUE(has(c.differences, "0 of your faces and 1 of the reference's touch a vertex without a match and were "
-                                 "not compared")) << c.summary();
+  EXPECT_TRUE(has(c.differences,
+                  "0 of your faces and 1 of the reference's touch a vertex without a match and were "
+                  "not compared"))
+      << c.summary();
   EXPECT_EQ(c.missing_faces, std::vector<FaceId>{FaceId::face(1)});
   EXPECT_TRUE(c.extra_faces.empty());
   EXPECT_EQ(c.missing_edges.size(), 2u);  // v0-v2, v2-v3 (v0-v3 is in yours, on the boundary now)
@@ -224,8 +225,7 @@ TEST(MeshCompare, RenumberedMessagesShowYourIdsToo) {
   const HalfedgeMesh reference = build_halfedge_mesh(tetrahedron);
   const HalfedgeMesh yours = build_halfedge_mesh(renumbered(open, {3, 2, 1, 0}));
   const MeshComparison c = compare_meshes(yours, reference);
-  EXPECT_TRUE(has(c.differences, "reference face f0 (v0 v1 v2; your v3 v2 v1) is missing from yours"))
-      << c.summary();
+  EXPECT_TRUE(has(c.differences, "reference face f0 (v0 v1 v2; your v3 v2 v1) is missing from yours")) << c.summary();
   EXPECT_EQ(c.vertex_map[3], VertexId(0));
   EXPECT_EQ(c.extra_boundaries.size(), 1u);
 }

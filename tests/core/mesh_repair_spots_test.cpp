@@ -105,8 +105,8 @@ TEST(MeshRepairSpots, ABowTieAFinAndAFlippedFaceTogether) {
   // Triangles 0 and 1 touch only at vertex 0; triangles 2, 3 and 4 share the edge 5-6 (a fin); triangle 5 shares the
   // edge 6-7 with triangle 2 the same way round (flipped).
   PolygonMesh p;
-  p.positions = {{0, 0, 0},  {1, 0, 0},  {1, 1, 0},  {-1, 0, 0}, {-1, -1, 0}, {3, 0, 0},
-                 {4, 0, 0},  {3.5, 1, 0}, {3.5, -1, 0}, {3.5, 0, 1}, {4.5, 1, 0}};
+  p.positions = {{0, 0, 0}, {1, 0, 0},   {1, 1, 0},    {-1, 0, 0},  {-1, -1, 0}, {3, 0, 0},
+                 {4, 0, 0}, {3.5, 1, 0}, {3.5, -1, 0}, {3.5, 0, 1}, {4.5, 1, 0}};
   p.add_face({0, 1, 2});
   p.add_face({0, 3, 4});
   p.add_face({5, 6, 7});

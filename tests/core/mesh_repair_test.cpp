@@ -111,9 +111,9 @@ TEST(MeshRepair, DegenerateFacesAreDropped) {
   p.add_face({4, 5});               // face 6: two corners
   p.add_face({0, 1, 9});            // face 7: no vertex 9
   const RepairResult r = repair_and_build(p);
-  EXPECT_EQ(r.report.changes, (Strings{"face 4 has zero area: dropped", "face 5 repeats vertex 3: dropped",
-                                       "face 6 has 2 corners: dropped",
-                                       "face 7 uses vertex 9, but there are only 6: dropped"}));
+  EXPECT_EQ(r.report.changes,
+            (Strings{"face 4 has zero area: dropped", "face 5 repeats vertex 3: dropped",
+                     "face 6 has 2 corners: dropped", "face 7 uses vertex 9, but there are only 6: dropped"}));
   EXPECT_EQ(r.report.summary(), "repaired: 4 degenerate faces dropped");
   EXPECT_EQ(r.polygons.positions, make_grid(2, 1).positions);
   EXPECT_EQ(faces_of(r.polygons), faces_of(make_grid(2, 1)));

@@ -6,8 +6,8 @@
 #include <cstring>
 #include <random>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
@@ -40,9 +40,9 @@ bool equal_to_rounding(const glm::dvec3& a, const glm::dvec3& b) {
     for (uint32_t v = 0; v < m.vertex_capacity(); ++v) {
       const glm::dvec3 one = vertex_normal(m, VertexId(v));
       if (face_order ? !equal_to_rounding(one, all[v]) : !bitwise_equal(one, all[v])) {
-        return ::testing::AssertionFailure() << "v" << v << ": (" << all[v].x << ", " << all[v].y << ", " << all[v].z
-                                             << ") but vertex_normal gives (" << one.x << ", " << one.y << ", "
-                                             << one.z << ")" << (face_order ? " (face-order path)" : "");
+        return ::testing::AssertionFailure()
+               << "v" << v << ": (" << all[v].x << ", " << all[v].y << ", " << all[v].z << ") but vertex_normal gives ("
+               << one.x << ", " << one.y << ", " << one.z << ")" << (face_order ? " (face-order path)" : "");
       }
     }
   }

@@ -5,8 +5,8 @@
 #include <numbers>
 #include <sstream>
 
-#include <glm/geometric.hpp>
 #include <gtest/gtest.h>
+#include <glm/geometric.hpp>
 
 #include "core/mesh_build.h"
 #include "core/normals.h"
@@ -61,9 +61,8 @@ TEST(Normals, CubeVertexNormalsFollowItsTriangulation) {
   //   v7: both of z+, y+, x+          -> (1, 1, 1)
   const HalfedgeMesh m = build_halfedge_mesh(make_cube());
   const double s3 = std::sqrt(3.0), s6 = std::sqrt(6.0);
-  const glm::dvec3 expected[8] = {glm::dvec3(-1, -1, -1) / s3, glm::dvec3(2, -1, -1) / s6,
-                                  glm::dvec3(-1, 2, -1) / s6,  glm::dvec3(1, 1, -2) / s6,
-                                  glm::dvec3(-1, -1, 2) / s6,  glm::dvec3(1, -2, 1) / s6,
+  const glm::dvec3 expected[8] = {glm::dvec3(-1, -1, -1) / s3, glm::dvec3(2, -1, -1) / s6, glm::dvec3(-1, 2, -1) / s6,
+                                  glm::dvec3(1, 1, -2) / s6,   glm::dvec3(-1, -1, 2) / s6, glm::dvec3(1, -2, 1) / s6,
                                   glm::dvec3(-2, 1, 1) / s6,   glm::dvec3(1, 1, 1) / s3};
   const std::vector<glm::dvec3> all = vertex_normals(m);
   ASSERT_EQ(all.size(), 8u);

@@ -122,8 +122,8 @@ struct Fixture {
 };
 
 std::vector<Fixture> fixtures() {
-  return {{"tetrahedron", make_tetrahedron()}, {"cube", make_cube()},       {"icosahedron", make_icosahedron()},
-          {"grid(3,2)", make_grid(3, 2)},      {"fan(50)", make_fan(50)},   {"torus(8,4)", make_torus(8, 4)},
+  return {{"tetrahedron", make_tetrahedron()}, {"cube", make_cube()},     {"icosahedron", make_icosahedron()},
+          {"grid(3,2)", make_grid(3, 2)},      {"fan(50)", make_fan(50)}, {"torus(8,4)", make_torus(8, 4)},
           {"cube_quads", make_cube_quads()}};
 }
 
@@ -250,9 +250,7 @@ TEST(OpsStress, CorruptedMeshesNeverCrashOrHang) {
   size_t refused = 0, accepted = 0;
   auto run = [&](HalfedgeMesh& m, Op op, EdgeId e) {
     const HalfedgeMesh before = m;
-    const Check check = op == Op::Flip    ? flip(m, e).check
-                        : op == Op::Split ? split(m, e).check
-                                          : collapse(m, e).check;
+    const Check check = op == Op::Flip ? flip(m, e).check : op == Op::Split ? split(m, e).check : collapse(m, e).check;
     if (check.ok) {
       ++accepted;
       return;

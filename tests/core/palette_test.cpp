@@ -20,7 +20,7 @@ using testing::delta_e;
 using testing::kVisions;
 using testing::Vision;
 
-constexpr double kMinDeltaE = 20.0;     // CIELAB units between colours that must be told apart
+constexpr double kMinDeltaE = 20.0;       // CIELAB units between colours that must be told apart
 constexpr double kMinLineContrast = 3.0;  // WCAG, for lines, marks, labels and large text
 
 struct Named {
@@ -51,8 +51,8 @@ std::vector<double> expect_apart(const Pairs& pairs, Theme theme, const std::str
                                << " under " << testing::vision_name(vision);
     }
     smallest.push_back(least);
-    std::printf("  %-5s %-34s %-14s smallest dE %.1f\n", theme_name(theme), group.c_str(),
-                testing::vision_name(vision), least);
+    std::printf("  %-5s %-34s %-14s smallest dE %.1f\n", theme_name(theme), group.c_str(), testing::vision_name(vision),
+                least);
   }
   return smallest;
 }
@@ -109,18 +109,17 @@ class PaletteInTheme : public ::testing::TestWithParam<Theme> {
 
 TEST_P(PaletteInTheme, HighlightsAreApart) {
   const Palette& pal = p();
-  expect_apart(all_pairs({{"selected", pal.selected},
-                          {"hovered", pal.hovered},
-                          {"changed", pal.changed},
-                          {"boundary", pal.boundary}}),
-               GetParam(), "selection/hover/changed/boundary");
+  expect_apart(
+      all_pairs(
+          {{"selected", pal.selected}, {"hovered", pal.hovered}, {"changed", pal.changed}, {"boundary", pal.boundary}}),
+      GetParam(), "selection/hover/changed/boundary");
 }
 
 TEST_P(PaletteInTheme, HighlightsStandOutOnFacesAndWire) {
   const Palette& pal = p();
   Pairs pairs;
-  for (const Named& highlight : {Named{"selected", pal.selected}, Named{"hovered", pal.hovered},
-                                 Named{"changed", pal.changed}}) {
+  for (const Named& highlight :
+       {Named{"selected", pal.selected}, Named{"hovered", pal.hovered}, Named{"changed", pal.changed}}) {
     pairs.push_back({highlight, {"face", pal.neutrals.face}});
   }
   for (const Named& line : {Named{"selected", pal.selected}, Named{"hovered", pal.hovered},
@@ -145,8 +144,8 @@ TEST_P(PaletteInTheme, DeCasteljauLevelsAreApart) {
   std::vector<std::string> names;
   for (int k = 0; k <= int(kLevelColours) + 1; ++k) names.push_back("level " + std::to_string(k));
   for (int k = 0; k <= int(kLevelColours); ++k) {
-    pairs.push_back({{names[size_t(k)].c_str(), level_colour(pal, k)},
-                     {names[size_t(k) + 1].c_str(), level_colour(pal, k + 1)}});
+    pairs.push_back(
+        {{names[size_t(k)].c_str(), level_colour(pal, k)}, {names[size_t(k) + 1].c_str(), level_colour(pal, k + 1)}});
   }
   for (int k = 0; k <= int(kLevelColours); ++k) {
     pairs.push_back({{names[size_t(k)].c_str(), level_colour(pal, k)}, {"final point", pal.final_point}});
@@ -163,8 +162,10 @@ TEST_P(PaletteInTheme, ErrorWarningAndOkTextAreApart) {
 
 TEST_P(PaletteInTheme, LabelsReadOnTheirBoxesOverTheViewAndTheFaces) {
   const Palette& pal = p();
-  const std::vector<Named> texts{{"vertex label", pal.vertex_label},     {"edge label", pal.edge_label},
-                                 {"halfedge label", pal.halfedge_label}, {"face label", pal.face_label}};
+  const std::vector<Named> texts{{"vertex label", pal.vertex_label},
+                                 {"edge label", pal.edge_label},
+                                 {"halfedge label", pal.halfedge_label},
+                                 {"face label", pal.face_label}};
   for (glm::vec3 under : {pal.neutrals.view, pal.neutrals.face, pal.neutrals.back_face}) {
     const glm::vec3 box = composite(glm::vec3(pal.neutrals.label_box), pal.neutrals.label_box.a, under);
     for (const Named& text : texts) {
@@ -182,14 +183,22 @@ INSTANTIATE_TEST_SUITE_P(BothThemes, PaletteInTheme, ::testing::Values(Theme::Da
 
 TEST(LightPalette, LinesAndMarksContrastWithTheLightBackgrounds) {
   const Palette& pal = palette_for(Theme::Light);
-  const std::vector<Named> on_view{{"wire", pal.neutrals.wire},     {"boundary", pal.boundary},
-                                   {"vertex", pal.vertex},          {"arrow", pal.arrow},
-                                   {"selected", pal.selected},      {"hovered", pal.hovered},
-                                   {"changed", pal.changed},        {"lesson highlight", pal.lesson_highlight},
-                                   {"net", pal.net},                {"probed net", pal.probed_net},
-                                   {"row curve", pal.row_curve},    {"row points", pal.row_points},
-                                   {"column polygon", pal.column_polygon}, {"column level 1", pal.column_levels[0]},
-                                   {"column level 2", pal.column_levels[1]}, {"surface point", pal.final_point}};
+  const std::vector<Named> on_view{{"wire", pal.neutrals.wire},
+                                   {"boundary", pal.boundary},
+                                   {"vertex", pal.vertex},
+                                   {"arrow", pal.arrow},
+                                   {"selected", pal.selected},
+                                   {"hovered", pal.hovered},
+                                   {"changed", pal.changed},
+                                   {"lesson highlight", pal.lesson_highlight},
+                                   {"net", pal.net},
+                                   {"probed net", pal.probed_net},
+                                   {"row curve", pal.row_curve},
+                                   {"row points", pal.row_points},
+                                   {"column polygon", pal.column_polygon},
+                                   {"column level 1", pal.column_levels[0]},
+                                   {"column level 2", pal.column_levels[1]},
+                                   {"surface point", pal.final_point}};
   for (const Named& c : on_view) {
     EXPECT_GE(contrast_ratio(c.rgb, pal.neutrals.view), kMinLineContrast) << c.name << " on the view";
   }
@@ -207,10 +216,10 @@ TEST(LightPalette, LinesAndMarksContrastWithTheLightBackgrounds) {
     EXPECT_GE(contrast_ratio(c.rgb, pal.neutrals.view), kMinLineContrast) << c.name << " on the view";
   }
   const glm::vec3 ghosted_reference = composite(pal.reference, kGhostAlpha, pal.neutrals.canvas);
-  std::vector<Named> on_canvas{{"control", pal.control},       {"final point", pal.final_point},
-                               {"curve", pal.curve},           {"split left", pal.split_left},
-                               {"split right", pal.split_right}, {"mine", pal.mine},
-                               {"wrong", pal.wrong},           {"reference (ghosted)", ghosted_reference}};
+  std::vector<Named> on_canvas{
+      {"control", pal.control},       {"final point", pal.final_point},          {"curve", pal.curve},
+      {"split left", pal.split_left}, {"split right", pal.split_right},          {"mine", pal.mine},
+      {"wrong", pal.wrong},           {"reference (ghosted)", ghosted_reference}};
   for (glm::vec3 level : pal.levels) on_canvas.push_back({"level", level});
   for (const Named& c : on_canvas) {
     EXPECT_GE(contrast_ratio(c.rgb, pal.neutrals.canvas), kMinLineContrast) << c.name << " on the curve view";

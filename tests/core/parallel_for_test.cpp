@@ -19,8 +19,13 @@
 namespace meshedit {
 namespace {
 
-const size_t kSizes[] = {0, 1, kMinItemsPerThread - 1, kMinItemsPerThread * 2, kMinItemsPerThread * 2 + 1,
-                         kMinItemsPerThread * 17 + 5, kMinItemsPerThread * 80 + 3};
+const size_t kSizes[] = {0,
+                         1,
+                         kMinItemsPerThread - 1,
+                         kMinItemsPerThread * 2,
+                         kMinItemsPerThread * 2 + 1,
+                         kMinItemsPerThread * 17 + 5,
+                         kMinItemsPerThread * 80 + 3};
 
 TEST(ParallelFor, HandsOutEveryIndexExactlyOnce) {
   for (const int threads : {0, 1, 2, 3, 8}) {

@@ -71,7 +71,7 @@ void rewire_randomly(HalfedgeMesh& m, std::mt19937& random) {
       m.set_face(b, fa);
       break;
     }
-    case 7: m.set_halfedge(m.face(a), m.next(a)); break;        // valid: another halfedge of the same cycle
+    case 7: m.set_halfedge(m.face(a), m.next(a)); break;             // valid: another halfedge of the same cycle
     default: m.set_halfedge(m.vertex(a), m.next(m.twin(a))); break;  // valid: another halfedge of the same fan
   }
 }

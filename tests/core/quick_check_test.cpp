@@ -22,8 +22,8 @@ namespace meshedit {
 namespace {
 
 TEST(QuickCheck, AcceptsTheValidFixtures) {
-  for (const PolygonMesh& p : {make_tetrahedron(), make_cube(), make_icosahedron(), make_grid(6, 4), make_fan(30),
-                               make_torus(11, 7)}) {
+  for (const PolygonMesh& p :
+       {make_tetrahedron(), make_cube(), make_icosahedron(), make_grid(6, 4), make_fan(30), make_torus(11, 7)}) {
     const HalfedgeMesh m = build_halfedge_mesh(p);
     EXPECT_TRUE(mesh_is_clean(m));
     EXPECT_TRUE(loop_input_is_clean(m));
@@ -89,8 +89,9 @@ TEST(QuickCheck, RefusesAFaceWithTwoCycles) {
 TEST(QuickCheck, NeverAcceptsWhatTheFullChecksRefuse) {
   size_t refused = 0;
   for (uint32_t seed = 1; seed <= 600; ++seed) {
-    HalfedgeMesh m =
-        build_halfedge_mesh(seed % 3 == 0 ? make_grid(4, 3) : seed % 3 == 1 ? make_torus(6, 5) : make_cube());
+    HalfedgeMesh m = build_halfedge_mesh(seed % 3 == 0   ? make_grid(4, 3)
+                                         : seed % 3 == 1 ? make_torus(6, 5)
+                                                         : make_cube());
     std::mt19937 random(seed);
     testing::break_randomly(m, random);
     const ValidationReport full = validate_without_shortcut(m);

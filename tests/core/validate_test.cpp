@@ -57,8 +57,8 @@ HalfedgeMesh two_triangles_sharing_v0() {
 }
 
 TEST(Validate, EveryFixtureIsValid) {
-  const PolygonMesh fixtures[] = {make_tetrahedron(), make_cube(),   make_cube_quads(), make_icosahedron(),
-                                  make_grid(3, 2),    make_fan(50),  make_torus(8, 6)};
+  const PolygonMesh fixtures[] = {make_tetrahedron(), make_cube(),  make_cube_quads(), make_icosahedron(),
+                                  make_grid(3, 2),    make_fan(50), make_torus(8, 6)};
   for (const PolygonMesh& p : fixtures) {
     const ValidationReport report = validate(build_halfedge_mesh(p));
     EXPECT_TRUE(report.ok()) << listing(report);
@@ -496,11 +496,12 @@ TEST(Validate, ManyRandomCorruptionsAtOnceNeverCrash) {
         case 2: m.set_vertex(h, VertexId(any_value(m.vertex_capacity()))); break;
         case 3: m.set_edge(h, EdgeId(any_value(m.edge_capacity()))); break;
         case 4: m.set_face(h, FaceId(any_value(m.face_capacity()) | (rng() % 2 ? FaceId::kBoundaryBit : 0))); break;
-        case 5: m.set_halfedge(VertexId(rng() % m.vertex_capacity()), HalfedgeId(any_value(m.halfedge_capacity())));
+        case 5:
+          m.set_halfedge(VertexId(rng() % m.vertex_capacity()), HalfedgeId(any_value(m.halfedge_capacity())));
           break;
-        case 6: m.set_halfedge(EdgeId(rng() % m.edge_capacity()), HalfedgeId(any_value(m.halfedge_capacity())));
-          break;
-        case 7: m.set_halfedge(FaceId::face(rng() % m.face_capacity()), HalfedgeId(any_value(m.halfedge_capacity())));
+        case 6: m.set_halfedge(EdgeId(rng() % m.edge_capacity()), HalfedgeId(any_value(m.halfedge_capacity()))); break;
+        case 7:
+          m.set_halfedge(FaceId::face(rng() % m.face_capacity()), HalfedgeId(any_value(m.halfedge_capacity())));
           break;
         case 8: m.set_halfedge(FaceId::boundary(0), HalfedgeId(any_value(m.halfedge_capacity()))); break;
         default: m.delete_element(h); break;
@@ -593,10 +594,29 @@ TEST(Validate, RandomSingleCorruptionsOfTheTorusAreAllCaught) {
       what = format_id(f) + ".halfedge";
     } else {
       switch (rng() % 4) {
-        case 0: { const VertexId v(rng() % V); m.delete_element(v); what = "delete " + format_id(v); break; }
-        case 1: { const HalfedgeId h(rng() % H); m.delete_element(h); what = "delete " + format_id(h); break; }
-        case 2: { const EdgeId e(rng() % E); m.delete_element(e); what = "delete " + format_id(e); break; }
-        default: { const FaceId f = FaceId::face(rng() % F); m.delete_element(f); what = "delete " + format_id(f); }
+        case 0: {
+          const VertexId v(rng() % V);
+          m.delete_element(v);
+          what = "delete " + format_id(v);
+          break;
+        }
+        case 1: {
+          const HalfedgeId h(rng() % H);
+          m.delete_element(h);
+          what = "delete " + format_id(h);
+          break;
+        }
+        case 2: {
+          const EdgeId e(rng() % E);
+          m.delete_element(e);
+          what = "delete " + format_id(e);
+          break;
+        }
+        default: {
+          const FaceId f = FaceId::face(rng() % F);
+          m.delete_element(f);
+          what = "delete " + format_id(f);
+        }
       }
     }
     const ValidationReport report = validate(m);

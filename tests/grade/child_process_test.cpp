@@ -92,7 +92,12 @@ TEST(ChildProcess, AnExceptionInTheBodyIsAnExitWithoutReport) {
 TEST(ChildProcess, TheChildCannotOpenFilesOrStartProcesses) {
   const auto dir = testing::scratch_dir();
   const std::string path = (dir / "secret.txt").string();
-  { FILE* f = std::fopen(path.c_str(), "w"); ASSERT_NE(f, nullptr); std::fputs("hidden tests", f); std::fclose(f); }
+  {
+    FILE* f = std::fopen(path.c_str(), "w");
+    ASSERT_NE(f, nullptr);
+    std::fputs("hidden tests", f);
+    std::fclose(f);
+  }
   const ChildResult r = run_in_child(limits(5), [&] {
     std::string report;
     const int read_fd = open(path.c_str(), O_RDONLY);

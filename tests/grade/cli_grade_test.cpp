@@ -54,7 +54,8 @@ bool ends_with(const std::string& s, const std::string& tail) {
 TEST(CliGrade, GradesASubmissionAndWritesResults) {
   const fs::path dir = testing::scratch_dir();
   submission(dir, "alice", grading_dir() / "students" / "flip_correct.lua");
-  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission alice --junit junit.xml");
+  const Outcome o =
+      run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission alice --junit junit.xml");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.err, "");
   EXPECT_TRUE(ends_with(o.out, "\nScore: 10 / 10\n5 passed, 0 failed\n")) << o.out;
@@ -63,16 +64,19 @@ TEST(CliGrade, GradesASubmissionAndWritesResults) {
   EXPECT_EQ(results.at("tests").size(), 5u);
   EXPECT_EQ(results["tests"][4]["visibility"], "hidden");
   const std::string junit = read_text(dir / "junit.xml");
-  EXPECT_NE(junit.find("<testsuites name=\"flip_edge\" tests=\"5\" failures=\"0\" errors=\"0\""), std::string::npos) << junit;
+  EXPECT_NE(junit.find("<testsuites name=\"flip_edge\" tests=\"5\" failures=\"0\" errors=\"0\""), std::string::npos)
+      << junit;
 }
 
 TEST(CliGrade, AFailingSubmissionIsStillAGradingThatWorked) {
   const fs::path dir = testing::scratch_dir();
   submission(dir, "bob", grading_dir() / "students" / "flip_forgets_faces.lua");
-  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission bob --results out/r.json --tap");
+  const Outcome o =
+      run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission bob --results out/r.json --tap");
   EXPECT_EQ(o.status, 0) << o.err;
   // With --tap, stdout is TAP only.
-  EXPECT_EQ(o.out.rfind("TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles\n", 0), 0u) << o.out;
+  EXPECT_EQ(o.out.rfind("TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles\n", 0), 0u)
+      << o.out;
   EXPECT_TRUE(ends_with(o.out, "# score 2 / 10\n# 1 passed, 4 failed\n")) << o.out;
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "r.json")).at("score"), 2.0);
 }
@@ -160,8 +164,8 @@ TEST(CliGrade, AWholeClassInParallel) {
   submission(dir / "class", "alice", grading_dir() / "students" / "flip_correct.lua");
   submission(dir / "class", "bob", grading_dir() / "students" / "flip_forgets_faces.lua");
   submission(dir / "class", "carol", grading_dir() / "students" / "flip_boundary.lua");
-  const Outcome o = run_meshedit(
-      dir, "grade " + suite_arg("suites/flip.lua") + " --submissions class/alice class/bob class/carol --jobs 2 --out marks");
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") +
+                                          " --submissions class/alice class/bob class/carol --jobs 2 --out marks");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out,
             "alice: 10 / 10 (5 passed, 0 failed)\n"
@@ -184,7 +188,8 @@ TEST(CliGrade, TheGradescopeRunAutograderScript) {
   const fs::path dir = testing::scratch_dir();
   const fs::path solutions = testing::source_dir() / "tests" / "script" / "solutions";
   fs::create_directories(dir / "submission");
-  for (const auto& f : fs::directory_iterator(solutions)) fs::copy_file(f.path(), dir / "submission" / f.path().filename());
+  for (const auto& f : fs::directory_iterator(solutions))
+    fs::copy_file(f.path(), dir / "submission" / f.path().filename());
   const std::string command = "AUTOGRADER_ROOT='" + dir.string() + "' MESHEDIT='" + std::string(MESHEDIT_BINARY) +
                               "' SUITE='" + (grading_dir() / "suites" / "all.lua").string() + "' '" +
                               (grading_dir() / "gradescope" / "run_autograder").string() + "' > '" +
@@ -193,7 +198,7 @@ TEST(CliGrade, TheGradescopeRunAutograderScript) {
   ASSERT_TRUE(WIFEXITED(raw));
   EXPECT_EQ(WEXITSTATUS(raw), 0) << read_text(dir / "stdout.txt");
   const auto results = nlohmann::json::parse(read_text(dir / "results" / "results.json"));
-  EXPECT_EQ(results.at("score"), 56.0);      // 54 base points and the 2 of extra credit
+  EXPECT_EQ(results.at("score"), 56.0);  // 54 base points and the 2 of extra credit
   EXPECT_EQ(results.at("max_score"), 54.0);
   EXPECT_EQ(results.at("tests").size(), 29u);
   EXPECT_TRUE(ends_with(read_text(dir / "stdout.txt"), "29 passed, 0 failed\n"));

@@ -22,8 +22,10 @@ std::string checks(const std::string& body) {
 TEST(Expect, TruthAndNil) {
   EXPECT_EQ(checks("expect(1 == 1, 'callable') expect(nil) expect.truthy(false, 'flag')"),
             "ok: callable\nFAIL: expected a true value, got nil\nFAIL: flag: expected a true value, got false\n");
-  EXPECT_EQ(checks("expect.falsy(nil, 'a') expect.falsy(0, 'b') expect.is_nil(nil) expect.is_nil(meshedit.cube():edge(2), 'c')"),
-            "ok: a\nFAIL: b: expected nil or false, got 0\nok: \nFAIL: c: expected nil, got e2\n");
+  EXPECT_EQ(
+      checks(
+          "expect.falsy(nil, 'a') expect.falsy(0, 'b') expect.is_nil(nil) expect.is_nil(meshedit.cube():edge(2), 'c')"),
+      "ok: a\nFAIL: b: expected nil or false, got 0\nok: \nFAIL: c: expected nil, got e2\n");
 }
 
 TEST(Expect, EqualNamesTheFirstDifference) {
@@ -83,8 +85,7 @@ TEST(Expect, MeshChecksUseTheCore) {
 TEST(Expect, ScorePassAndFail) {
   EXPECT_EQ(checks("expect.pass('fine') expect.fail('wrong') expect.score(0.25) expect.score(0.5, 'half')"),
             "ok: fine\nFAIL: wrong\nFAIL: half\nFRACTION: 0.500000\n");
-  EXPECT_EQ(checks("expect.score(2)"),
-            "END: suite.lua:2: bad argument #1 to 'score' (must be between 0 and 1)\n");
+  EXPECT_EQ(checks("expect.score(2)"), "END: suite.lua:2: bad argument #1 to 'score' (must be between 0 and 1)\n");
 }
 
 }  // namespace

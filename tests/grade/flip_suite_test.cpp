@@ -49,9 +49,10 @@ TEST(FlipSuite, ForgettingTheFacesHalfedgesLosesPointsNamingTheFace) {
   const GradeReport report = grade_flip("flip_forgets_faces.lua");
   EXPECT_EQ(report.score, 2.0);
   EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.1", 0.0}, {"4.2", 1.0}, {"4.4", 0.0}, {"4.5", 0.0}}));
-  EXPECT_NE(test_numbered(report, "4.1").output.find(
-                "FAILED: flip_edge(e2) of a 1x1 grid: after your flip_edge the mesh is not valid (1 problem): f0.halfedge "
-                "is h0, but h0.face is f1\n"),
+  EXPECT_NE(test_numbered(report, "4.1")
+                .output.find("FAILED: flip_edge(e2) of a 1x1 grid: after your flip_edge the mesh is not valid (1 "
+                             "problem): f0.halfedge "
+                             "is h0, but h0.face is f1\n"),
             std::string::npos)
       << test_numbered(report, "4.1").output;
   // One check per edge of the cube: the six edges whose faces keep a halfedge of their own pass.
@@ -62,10 +63,12 @@ TEST(FlipSuite, ForgettingTheVerticesHalfedgesLosesPointsNamingTheVertex) {
   const GradeReport report = grade_flip("flip_forgets_vertices.lua");
   EXPECT_EQ(report.score, 4.666667);
   EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.2", 1.666667}, {"4.4", 0.0}, {"4.5", 0.0}}));
-  EXPECT_NE(test_numbered(report, "4.2").output.find(
-                "FAILED: flip_edge(e0) of a cube: after your flip_edge the mesh is not valid (1 problem): v0.halfedge is "
-                "h0, but h0 leaves v6"),
-            std::string::npos)
+  EXPECT_NE(
+      test_numbered(report, "4.2")
+          .output.find(
+              "FAILED: flip_edge(e0) of a cube: after your flip_edge the mesh is not valid (1 problem): v0.halfedge is "
+              "h0, but h0 leaves v6"),
+      std::string::npos)
       << test_numbered(report, "4.2").output;
 }
 
@@ -73,9 +76,10 @@ TEST(FlipSuite, FlippingABoundaryEdgeLosesOnlyThatTest) {
   const GradeReport report = grade_flip("flip_boundary.lua");
   EXPECT_EQ(report.score, 9.0);
   EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.3", 0.0}}));
-  EXPECT_NE(test_numbered(report, "4.3").output.find(
-                "FAILED: flip_edge(e0) on the boundary of a 2x2 grid: the reference does not flip e0 (e0 is on the "
-                "boundary (b0); only interior edges can be flipped), but your flip_edge changed the mesh: "),
+  EXPECT_NE(test_numbered(report, "4.3")
+                .output.find(
+                    "FAILED: flip_edge(e0) on the boundary of a 2x2 grid: the reference does not flip e0 (e0 is on the "
+                    "boundary (b0); only interior edges can be flipped), but your flip_edge changed the mesh: "),
             std::string::npos)
       << test_numbered(report, "4.3").output;
   EXPECT_NE(test_numbered(report, "4.3").output.find("yours returned e0"), std::string::npos);
@@ -85,10 +89,12 @@ TEST(FlipSuite, ANextPointerLeftAsItWasBreaksTheFaceCycleAndIsNamed) {
   const GradeReport report = grade_flip("flip_breaks_face_cycle.lua");
   EXPECT_EQ(report.score, 1.0);  // only the boundary refusals (4.3) pass
   EXPECT_EQ(failed(report), (std::map<std::string, double>{{"4.1", 0.0}, {"4.2", 0.0}, {"4.4", 0.0}, {"4.5", 0.0}}));
-  EXPECT_NE(test_numbered(report, "4.1").output.find(
-                "FAILED: flip_edge(e2) of a 1x1 grid: h5.next is still h3 after your flip_edge, as before the call; the "
-                "reference changes it: that pointer breaks the face cycle; after your flip_edge the mesh is not valid"),
-            std::string::npos)
+  EXPECT_NE(
+      test_numbered(report, "4.1")
+          .output.find(
+              "FAILED: flip_edge(e2) of a 1x1 grid: h5.next is still h3 after your flip_edge, as before the call; the "
+              "reference changes it: that pointer breaks the face cycle; after your flip_edge the mesh is not valid"),
+      std::string::npos)
       << test_numbered(report, "4.1").output;
 }
 

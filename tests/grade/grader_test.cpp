@@ -86,13 +86,15 @@ TEST(Scoring, OnlyTheFirstEightFailuresAreListed) {
 }
 
 TEST(Scoring, StoppedTestsScoreZeroAndSayWhy) {
-  const TestResult r = score_test(spec(5), run_with({true}, RunEnd::Timeout, "flip.lua:9: time limit exceeded (2 s)"), 2);
+  const TestResult r =
+      score_test(spec(5), run_with({true}, RunEnd::Timeout, "flip.lua:9: time limit exceeded (2 s)"), 2);
   EXPECT_EQ(r.score, 0.0);
   EXPECT_EQ(r.end, RunEnd::Timeout);
   EXPECT_EQ(r.output, "Timed out: flip.lua:9: time limit exceeded (2 s)\n1 check of 1 passed.\n");
   TestRun printed = run_with({false});
   printed.output = "debug 1\n";
-  EXPECT_EQ(score_test(spec(1), printed, 0).output, "FAILED: check 1\n0 checks of 1 passed.\n\nYour code printed:\ndebug 1\n");
+  EXPECT_EQ(score_test(spec(1), printed, 0).output,
+            "FAILED: check 1\n0 checks of 1 passed.\n\nYour code printed:\ndebug 1\n");
 }
 
 TEST(Scoring, ReportsTravelAsJson) {
@@ -136,9 +138,18 @@ GradeReport sample_report() {
 TEST(Results, GradescopeJsonHasTheSpecsFieldsOnly) {
   const nlohmann::json j = nlohmann::json::parse(gradescope_json(sample_report()));
   // Gradescope's top-level keys (gradescope-autograders.readthedocs.io/en/latest/specs), plus max_score.
-  const std::set<std::string> top = {"score",      "max_score",         "execution_time", "output",
-                                     "output_format", "test_output_format", "test_name_format", "visibility",
-                                     "stdout_visibility", "extra_data", "tests",  "leaderboard"};
+  const std::set<std::string> top = {"score",
+                                     "max_score",
+                                     "execution_time",
+                                     "output",
+                                     "output_format",
+                                     "test_output_format",
+                                     "test_name_format",
+                                     "visibility",
+                                     "stdout_visibility",
+                                     "extra_data",
+                                     "tests",
+                                     "leaderboard"};
   for (const auto& [key, value] : j.items()) EXPECT_TRUE(top.count(key)) << key;
   EXPECT_EQ(j.at("score"), 2.0);
   EXPECT_EQ(j.at("max_score"), 6.0);
@@ -147,8 +158,8 @@ TEST(Results, GradescopeJsonHasTheSpecsFieldsOnly) {
   EXPECT_EQ(j.at("output"), "Suite flip: 3 tests.\n");
   EXPECT_EQ(j.at("visibility"), "visible");
   EXPECT_EQ(j.at("stdout_visibility"), "hidden");
-  const std::set<std::string> test_keys = {"score",  "max_score", "status",        "name", "name_format", "number",
-                                           "output", "output_format", "tags", "visibility", "extra_data"};
+  const std::set<std::string> test_keys = {"score",  "max_score",     "status", "name",       "name_format", "number",
+                                           "output", "output_format", "tags",   "visibility", "extra_data"};
   ASSERT_EQ(j.at("tests").size(), 3u);
   for (const auto& t : j.at("tests")) {
     for (const auto& [key, value] : t.items()) EXPECT_TRUE(test_keys.count(key)) << key;
@@ -171,7 +182,9 @@ TEST(Results, GradescopeJsonHasTheSpecsFieldsOnly) {
 TEST(Results, JunitTapAndText) {
   const GradeReport report = sample_report();
   const std::string xml = junit_xml(report);
-  EXPECT_NE(xml.find("<testsuites name=\"flip\" tests=\"3\" failures=\"1\" errors=\"1\" time=\"2.2\">"), std::string::npos) << xml;
+  EXPECT_NE(xml.find("<testsuites name=\"flip\" tests=\"3\" failures=\"1\" errors=\"1\" time=\"2.2\">"),
+            std::string::npos)
+      << xml;
   EXPECT_NE(xml.find("<testcase classname=\"flip\" name=\"2 hidden &lt;one&gt; &amp; &quot;quoted&quot; # not a "
                      "directive\" time=\"0.2\">"),
             std::string::npos)
@@ -225,10 +238,11 @@ TEST(Grade, EachTestRunsInItsOwnChildAndTheReportAddsUp) {
     EXPECT_EQ(t.end, RunEnd::LoadError);
     EXPECT_EQ(t.output, "Load error: the submission did not load: the submission has no b.lua\n");
   }
-  EXPECT_EQ(report.output, "Suite demo: 3 tests.\nFiles submitted: a.lua.\nMissing: b.lua (the tests that need it fail).\n");
-  const GradeReport fixed = grade(*suite, testing::submission_of({{"a.lua", "function add(x, y) return x + y end"},
-                                                                  {"b.lua", ""}}),
-                                  testing::quick_options());
+  EXPECT_EQ(report.output,
+            "Suite demo: 3 tests.\nFiles submitted: a.lua.\nMissing: b.lua (the tests that need it fail).\n");
+  const GradeReport fixed =
+      grade(*suite, testing::submission_of({{"a.lua", "function add(x, y) return x + y end"}, {"b.lua", ""}}),
+            testing::quick_options());
   EXPECT_EQ(summary_line(fixed), "3 passed, 0 failed");
   EXPECT_EQ(fixed.score, 4.0);
   EXPECT_EQ(fixed.max_score, 4.0);

@@ -68,7 +68,8 @@ INSTANTIATE_TEST_SUITE_P(
         // Its load-time patches fail quietly (pcall); the suite's string methods are checked in test 1.
         HostileCase{"string_metatable.lua", RunEnd::Error, "split.lua:10: attempt to index a boolean value"},
         // Its fake `expect` lives in its own state: the real checks run and fail.
-        HostileCase{"overwrite_globals.lua", RunEnd::Completed, "FAILED: split e0: the reference has 5 vertices, yours 4"},
+        HostileCase{"overwrite_globals.lua", RunEnd::Completed,
+                    "FAILED: split e0: the reference has 5 vertices, yours 4"},
         HostileCase{"read_hidden_tests.lua", RunEnd::Error,
                     "split.lua:7: meshedit.load is hidden from your code (in the window and in grading): student code "
                     "cannot read or write files"},

@@ -51,7 +51,7 @@ TEST(PartSuites, TheCorrectSolutionsScoreFullMarksEverywhere) {
   struct Points {
     double base, extra;
   };
-  const std::map<std::string, Points> points = {{"curve", {9, 0}}, {"patch", {7, 0}},  {"normals", {9, 0}},
+  const std::map<std::string, Points> points = {{"curve", {9, 0}}, {"patch", {7, 0}}, {"normals", {9, 0}},
                                                 {"flip", {10, 0}}, {"split", {9, 1}}, {"upsample", {10, 1}}};
   for (const auto& [part, p] : points) {
     SCOPED_TRACE(part);
@@ -73,9 +73,9 @@ TEST(PartSuites, TheWholeAssignmentInOneSuite) {
   EXPECT_EQ(report.extra_points, 2.0);
   EXPECT_EQ(report.score, 56.0) << text_report(report);
   // A submission with only a correct flip.lua: part 4 full, every other test fails to load its file.
-  const GradeReport flip_only = grade(
-      *suite, testing::submission_of({{"flip.lua", read_text(grading_dir() / "students" / "flip_correct.lua")}}),
-      testing::quick_options());
+  const GradeReport flip_only =
+      grade(*suite, testing::submission_of({{"flip.lua", read_text(grading_dir() / "students" / "flip_correct.lua")}}),
+            testing::quick_options());
   EXPECT_EQ(flip_only.score, 10.0);
   EXPECT_EQ(summary_line(flip_only), "5 passed, 24 failed");
 }
@@ -84,9 +84,10 @@ TEST(PartSuites, ADeCasteljauStepThatDropsTheLastPoint) {
   const GradeReport r = grade_fixture("curve", "curve_drops_last.lua");
   EXPECT_EQ(r.score, 1.0);
   EXPECT_EQ(failed(r), (std::map<std::string, double>{{"1.1", 0}, {"1.2", 0}, {"1.4", 0}, {"1.5", 0}}));
-  EXPECT_EQ(output_of(r, "1.1"), "FAILED: evaluate_step(cubic, 0.5): point 3 of the step is missing (got 2 points, "
-                                 "expected 3): n points give n - 1, so the loop runs i = 1, ..., n - 1\n"
-                                 "0 checks of 1 passed.\n");
+  EXPECT_EQ(output_of(r, "1.1"),
+            "FAILED: evaluate_step(cubic, 0.5): point 3 of the step is missing (got 2 points, "
+            "expected 3): n points give n - 1, so the loop runs i = 1, ..., n - 1\n"
+            "0 checks of 1 passed.\n");
 }
 
 TEST(PartSuites, ADeCasteljauStepWithSwappedWeights) {
@@ -158,11 +159,12 @@ TEST(PartSuites, ASplitVertexAtTheAverageOfTheCorners) {
   const GradeReport r = grade_fixture("split", "split_corner_average.lua");
   EXPECT_EQ(r.score, 5.0);  // on the square of 5.1 the corners' average is the midpoint; so it is on a cube's diagonals
   EXPECT_EQ(failed(r), (std::map<std::string, double>{{"5.2", 1.0}, {"5.4", 0}, {"5.5", 0}}));
-  EXPECT_EQ(output_of(r, "5.2").rfind("FAILED: split_edge(e0) of a cube: your new vertex v8 is at (-0.25, 0.25, -0.25), "
-                                      "the average of the corners v0 v2 v3 v6; it belongs at the midpoint of v0 and v2, "
-                                      "(-0.5, 0, -0.5)",
-                                      0),
-            0u)
+  EXPECT_EQ(
+      output_of(r, "5.2").rfind("FAILED: split_edge(e0) of a cube: your new vertex v8 is at (-0.25, 0.25, -0.25), "
+                                "the average of the corners v0 v2 v3 v6; it belongs at the midpoint of v0 and v2, "
+                                "(-0.5, 0, -0.5)",
+                                0),
+      0u)
       << output_of(r, "5.2");
 }
 
@@ -170,10 +172,11 @@ TEST(PartSuites, ASplitWithAWrongFaceOnANewHalfedge) {
   const GradeReport r = grade_fixture("split", "split_wrong_face.lua");
   EXPECT_EQ(r.score, 2.0);
   EXPECT_EQ(failed(r), (std::map<std::string, double>{{"5.1", 0}, {"5.2", 0}, {"5.4", 0}, {"5.5", 0}}));
-  EXPECT_EQ(output_of(r, "5.1").rfind("FAILED: split_edge(e2) of a 1x1 grid: after your split_edge the mesh is not valid "
-                                      "(1 problem): h12.face is f0, but h12 is in f2's next-cycle\n",
-                                      0),
-            0u)
+  EXPECT_EQ(
+      output_of(r, "5.1").rfind("FAILED: split_edge(e2) of a 1x1 grid: after your split_edge the mesh is not valid "
+                                "(1 problem): h12.face is f0, but h12 is in f2's next-cycle\n",
+                                0),
+      0u)
       << output_of(r, "5.1");
 }
 
@@ -182,29 +185,32 @@ TEST(PartSuites, UpsampleFlippingEdgesWithOnlyOneEndpointChecked) {
   EXPECT_EQ(r.score, 4.0);  // valid and the right counts: 40% of each base test
   EXPECT_EQ(failed(r),
             (std::map<std::string, double>{{"6.1", 1.2}, {"6.2", 1.2}, {"6.3", 0.8}, {"6.4", 0}, {"6.5", 0.8}}));
-  EXPECT_NE(output_of(r, "6.1").find("FAILED: tetrahedron: 3 of your edges join two original vertices, e.g. e13 (v0 v1): "
-                                     "a new edge whose ends were both new was flipped"),
-            std::string::npos)
+  EXPECT_NE(
+      output_of(r, "6.1").find("FAILED: tetrahedron: 3 of your edges join two original vertices, e.g. e13 (v0 v1): "
+                               "a new edge whose ends were both new was flipped"),
+      std::string::npos)
       << output_of(r, "6.1");
 }
 
 TEST(PartSuites, UpsampleFlippingHalvesOfSplitEdges) {
   const GradeReport r = grade_fixture("upsample", "upsample_flips_split_halves.lua");
   EXPECT_EQ(r.score, 4.0);
-  EXPECT_NE(output_of(r, "6.1").find("FAILED: tetrahedron: 2 of your edges join two new vertices where the reference has "
-                                     "none, e.g. e1 (v9 v4): an edge that was not new (a half of a split edge) was "
-                                     "flipped"),
-            std::string::npos)
+  EXPECT_NE(
+      output_of(r, "6.1").find("FAILED: tetrahedron: 2 of your edges join two new vertices where the reference has "
+                               "none, e.g. e1 (v9 v4): an edge that was not new (a half of a split edge) was "
+                               "flipped"),
+      std::string::npos)
       << output_of(r, "6.1");
 }
 
 TEST(PartSuites, UpsampleWritingPositionsToTheWrongVertices) {
   const GradeReport r = grade_fixture("upsample", "upsample_wrong_vertices.lua");
   EXPECT_EQ(r.score, 4.0);
-  EXPECT_NE(output_of(r, "6.1").find("FAILED: tetrahedron: 4 of your original vertices sit where the reference puts new "
-                                     "vertices, e.g. v0 at (0, 0, 0.5), where the reference puts the new vertex v7: a "
-                                     "position computed for a new vertex (step 2) was written to an original one"),
-            std::string::npos)
+  EXPECT_NE(
+      output_of(r, "6.1").find("FAILED: tetrahedron: 4 of your original vertices sit where the reference puts new "
+                               "vertices, e.g. v0 at (0, 0, 0.5), where the reference puts the new vertex v7: a "
+                               "position computed for a new vertex (step 2) was written to an original one"),
+      std::string::npos)
       << output_of(r, "6.1");
 }
 
@@ -222,11 +228,13 @@ TEST(PartSuites, UpsampleSplittingTheEdgesItCreatesNeverEnds) {
 
 TEST(PartSuites, UpsampleWithIntegerDivisionWeights) {
   const GradeReport r = grade_fixture("upsample", "upsample_integer_division.lua");
-  EXPECT_EQ(r.score, 5.0);  // 6.4 (extra credit) passes: a grid's vertices are all on the boundary, where no weight is 3 // 16
+  EXPECT_EQ(r.score,
+            5.0);  // 6.4 (extra credit) passes: a grid's vertices are all on the boundary, where no weight is 3 // 16
   EXPECT_EQ(failed(r), (std::map<std::string, double>{{"6.1", 1.2}, {"6.2", 1.2}, {"6.3", 0.8}, {"6.5", 0.8}}));
-  EXPECT_NE(output_of(r, "6.1").find("FAILED: tetrahedron: 4 of the 4 original vertices kept their old positions: step 5 "
-                                     "must move them to the positions of step 1"),
-            std::string::npos)
+  EXPECT_NE(
+      output_of(r, "6.1").find("FAILED: tetrahedron: 4 of the 4 original vertices kept their old positions: step 5 "
+                               "must move them to the positions of step 1"),
+      std::string::npos)
       << output_of(r, "6.1");
 }
 
@@ -234,10 +242,11 @@ TEST(PartSuites, UpsampleWithTheWrongWeightForDegreeThree) {
   const GradeReport r = grade_fixture("upsample", "upsample_wrong_weight.lua");
   EXPECT_EQ(r.score, 9.2);  // only the tetrahedron has vertices of degree 3
   EXPECT_EQ(failed(r), (std::map<std::string, double>{{"6.1", 1.2}}));
-  EXPECT_NE(output_of(r, "6.1").find("FAILED: tetrahedron: your original vertex v0 (degree 3) moved as if u = 0.125 (4 "
-                                     "original vertices moved by a wrong weight); the course's u for degree 3 is 3/16 = "
-                                     "0.1875 (yours is 3 / (8 n) with n = 3: degree 3 is the exception, u = 3/16)"),
-            std::string::npos)
+  EXPECT_NE(
+      output_of(r, "6.1").find("FAILED: tetrahedron: your original vertex v0 (degree 3) moved as if u = 0.125 (4 "
+                               "original vertices moved by a wrong weight); the course's u for degree 3 is 3/16 = "
+                               "0.1875 (yours is 3 / (8 n) with n = 3: degree 3 is the exception, u = 3/16)"),
+      std::string::npos)
       << output_of(r, "6.1");
 }
 

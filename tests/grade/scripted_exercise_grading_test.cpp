@@ -56,8 +56,9 @@ TEST(ScriptedExerciseGrading, ABuggySubmissionIsToldWhatTheWindowSays) {
   auto code = load_student_file(dir / "collapse.lua");
   const ExerciseReport window = check_exercise(*code, *id, ExerciseInput::element_of(fixture.mesh, fixture.element));
   ASSERT_FALSE(window.differences.empty());
-  EXPECT_EQ(window.differences[0], "the vertex that remains is still where a was; collapse moves it to the midpoint "
-                                   "of a and b, (0.5, 0.5, 0)");
+  EXPECT_EQ(window.differences[0],
+            "the vertex that remains is still where a was; collapse moves it to the midpoint "
+            "of a and b, (0.5, 0.5, 0)");
   ASSERT_EQ(report.tests.size(), 3u);
   EXPECT_NE(report.tests[2].output.find("FAILED: a diagonal of a 2x2 grid's corner square: " + window.differences[0]),
             std::string::npos)
@@ -69,8 +70,8 @@ TEST(ScriptedExerciseGrading, TheCommandLineGradesTheDefinitionFile) {
   const fs::path dir = testing::scratch_dir();
   testing::write_text(dir / "submission" / "collapse.lua", solution());
   const std::string command = "'" + std::string(MESHEDIT_BINARY) + "' grade --suite '" + definition().string() +
-                              "' --submission '" + (dir / "submission").string() + "' > '" + (dir / "out.txt").string() +
-                              "' 2>&1";
+                              "' --submission '" + (dir / "submission").string() + "' > '" +
+                              (dir / "out.txt").string() + "' 2>&1";
   const int status = std::system(command.c_str());
   ASSERT_TRUE(WIFEXITED(status));
   EXPECT_EQ(WEXITSTATUS(status), 0);

@@ -26,8 +26,9 @@ constexpr const char* kFlipWithTheReference = "function flip_edge(mesh, e)\n  re
 
 TEST(StudentApi, MeshFlipInsideFlipEdgeIsRefusedAlikeInTheWindowAndInGrading) {
   const std::string refusal = "flip.lua:2: " + hidden_api_message("mesh:flip");
-  EXPECT_EQ(refusal, "flip.lua:2: mesh:flip is hidden from your code (in the window and in grading): it is what "
-                     "flip_edge does, so write the pointer updates yourself");
+  EXPECT_EQ(refusal,
+            "flip.lua:2: mesh:flip is hidden from your code (in the window and in grading): it is what "
+            "flip_edge does, so write the pointer updates yourself");
 
   // The window: the Exercises panel's check of e2 of a 1x1 grid.
   const fs::path file = testing::scratch_dir() / "flip.lua";
@@ -70,7 +71,8 @@ TEST(StudentApi, UpsampleMayUseTheReferenceFlipAndSplitInBoth) {
     const ExerciseReport window = check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(cube));
     EXPECT_TRUE(window.equal) << window.summary();
     auto suite = Suite::load(grading_dir() / "suites" / "upsample.lua");
-    const GradeReport report = grade(*suite, testing::submission_of({{"upsample.lua", source}}), testing::quick_options());
+    const GradeReport report =
+        grade(*suite, testing::submission_of({{"upsample.lua", source}}), testing::quick_options());
     EXPECT_EQ(report.score, 11.0);
   }
 }

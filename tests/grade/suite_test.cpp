@@ -79,11 +79,13 @@ TEST(Suite, WithoutFilesEverySubmittedFileLoads) {
 
 TEST(Suite, DeclarationErrorsNameTheLine) {
   EXPECT_EQ(load_error("\ntest{ name = 't', point = 1, run = function() end }"),
-            "the suite did not load: suite.lua:2: test: unknown field 'point' (fields: allow_api, extra_credit, files, memory_mb, "
+            "the suite did not load: suite.lua:2: test: unknown field 'point' (fields: allow_api, extra_credit, files, "
+            "memory_mb, "
             "name, number, partial, points, reference, run, tags, time_limit, visibility)");
   EXPECT_EQ(load_error("test{ name = 't' }"),
             "the suite did not load: suite.lua:1: test 't': field 'run' must be a function(student, expect)");
-  EXPECT_EQ(load_error("test{ run = function() end }"), "the suite did not load: suite.lua:1: test: field 'name' is required");
+  EXPECT_EQ(load_error("test{ run = function() end }"),
+            "the suite did not load: suite.lua:1: test: field 'name' is required");
   EXPECT_EQ(load_error("test{ name = 't', visibility = 'secret', run = function() end }"),
             "the suite did not load: suite.lua:1: field 'visibility' must be visible, hidden, after_due_date or "
             "after_published");
@@ -150,11 +152,12 @@ TEST(Suite, StudentErrorsStopTheTestWithTheStudentsMessage) {
   run = run_one("test{ name = 't', run = function(student, expect) student.f(print) end }", "function f() end");
   EXPECT_EQ(run.error, "the grader could not pass argument 1: cannot pass a function");
   // A suite may catch a student error and carry on; then only its checks decide.
-  run = run_one("test{ name = 't', run = function(student, expect)\n"
-                "  local ok, why = pcall(student.f)\n"
-                "  expect.falsy(ok, why)\n"
-                "end }",
-                "function f() error('mine') end");
+  run = run_one(
+      "test{ name = 't', run = function(student, expect)\n"
+      "  local ok, why = pcall(student.f)\n"
+      "  expect.falsy(ok, why)\n"
+      "end }",
+      "function f() error('mine') end");
   EXPECT_EQ(run.end, RunEnd::Completed);
   EXPECT_EQ(checks_of(run), "ok: student.lua:1: mine\n");
 }
@@ -168,7 +171,8 @@ TEST(Suite, LoadFailuresAreReportedAndNothingRuns) {
   run = suite->run_test_here(0, submission_of({{"split.lua", ""}}));
   EXPECT_EQ(run.end, RunEnd::LoadError);
   EXPECT_EQ(run.error, "the submission did not load: the submission has no flip.lua");
-  run = run_one("suite{ time_limit = 0.2 }\ntest{ name = 't', run = function() end }", "print('start')\nwhile true do end");
+  run = run_one("suite{ time_limit = 0.2 }\ntest{ name = 't', run = function() end }",
+                "print('start')\nwhile true do end");
   EXPECT_EQ(run.end, RunEnd::Timeout);
   EXPECT_EQ(run.error, "the submission did not load: student.lua:2: time limit exceeded (0.2 s)");
   EXPECT_EQ(run.output, "start\n");
@@ -189,10 +193,13 @@ TEST(Suite, TheStudentApiIsRestricted) {
   // Hidden entries are functions that refuse with the words of student_api.h, naming the student's line.
   const TestRun run = run_one(
       "test{ name = 't', run = function(student, expect)\n"
-      "  expect.equal(student.probe(meshedit.cube()), {'student.lua:3: meshedit.load is hidden from your code (in the window "
-      "and in grading): student code cannot read or write files', 'student.lua:4: mesh:flip is hidden from your code (in "
+      "  expect.equal(student.probe(meshedit.cube()), {'student.lua:3: meshedit.load is hidden from your code (in the "
+      "window "
+      "and in grading): student code cannot read or write files', 'student.lua:4: mesh:flip is hidden from your code "
+      "(in "
       "the window and in grading): it is what flip_edge does, so write the pointer updates yourself', 'student.lua:5: "
-      "meshedit.curve is hidden from your code (in the window and in grading): it evaluates curves for you; evaluate_step "
+      "meshedit.curve is hidden from your code (in the window and in grading): it evaluates curves for you; "
+      "evaluate_step "
       "and evaluate are yours to write with vec3 arithmetic', 'table function'})\n"
       "end }",
       "function probe(m)\n"
@@ -233,24 +240,28 @@ TEST(Suite, EachTestGetsAFreshStudentState) {
   auto suite = suite_of(
       "test{ name = 'a', run = function(student, expect) expect.equal(student.bump(), 1) end }\n"
       "test{ name = 'b', run = function(student, expect) expect.equal(student.bump(), 1) end }\n");
-  const Submission s = submission_of({{"student.lua", "count = 0\nfunction bump() count = count + 1 return count end"}});
+  const Submission s =
+      submission_of({{"student.lua", "count = 0\nfunction bump() count = count + 1 return count end"}});
   EXPECT_EQ(checks_of(suite->run_test_here(0, s)), "ok: \n");
   EXPECT_EQ(checks_of(suite->run_test_here(1, s)), "ok: \n");
 }
 
 TEST(Suite, ASuiteErrorIsReported) {
-  const TestRun run = run_one("test{ name = 't', run = function(student, expect)\n  local x = nil\n  x.y = 1\nend }", "");
+  const TestRun run =
+      run_one("test{ name = 't', run = function(student, expect)\n  local x = nil\n  x.y = 1\nend }", "");
   EXPECT_EQ(run.end, RunEnd::Error);
   EXPECT_EQ(run.error, "suite.lua:3: attempt to index a nil value (local 'x')");
 }
 
 TEST(Suite, IncludedFilesKeepTheirOwnDefaults) {
   const auto dir = testing::scratch_dir();
-  testing::write_text(dir / "part.lua", "suite{ name = 'part', files = {'part.lua'}, time_limit = 2 }\n"
-                                         "test{ name = 'in part', run = function() end }\n");
-  testing::write_text(dir / "main.lua", "suite{ name = 'main', visibility = 'hidden' }\n"
-                                         "include('part.lua')\n"
-                                         "test{ name = 'in main', run = function() end }\n");
+  testing::write_text(dir / "part.lua",
+                      "suite{ name = 'part', files = {'part.lua'}, time_limit = 2 }\n"
+                      "test{ name = 'in part', run = function() end }\n");
+  testing::write_text(dir / "main.lua",
+                      "suite{ name = 'main', visibility = 'hidden' }\n"
+                      "include('part.lua')\n"
+                      "test{ name = 'in main', run = function() end }\n");
   auto suite = Suite::load(dir / "main.lua");
   EXPECT_EQ(suite->name(), "main");
   ASSERT_EQ(suite->tests().size(), 2u);

@@ -25,9 +25,9 @@ using testing::read_text;
 using Mesh = std::shared_ptr<const HalfedgeMesh>;
 
 // The correct fixtures: they have no mistake to name.
-const std::set<std::string> kCorrect = {"flip_correct.lua",          "split_correct.lua",
-                                        "split_reordered.lua",       "split_without_boundary.lua",
-                                        "upsample_correct.lua",      "upsample_without_boundary.lua"};
+const std::set<std::string> kCorrect = {"flip_correct.lua",     "split_correct.lua",
+                                        "split_reordered.lua",  "split_without_boundary.lua",
+                                        "upsample_correct.lua", "upsample_without_boundary.lua"};
 
 Mesh mesh_of(const PolygonMesh& p) { return std::make_shared<const HalfedgeMesh>(build_halfedge_mesh(p)); }
 
@@ -63,7 +63,10 @@ const std::vector<Case>& cases() {
   static const std::vector<Case> all = {
       {"curve_drops_last.lua", "1.1", [] { return ExerciseInput::curve_step(kCubic, 0.5); },
        "point 3 of the step is missing"},
-      {"curve_swapped_weights.lua", "1.2", [] { return ExerciseInput::curve_step({{0, 0, 0}, {2, 1, 0}}, 0.0); },
+      {"curve_swapped_weights.lua", "1.2",
+       [] {
+         return ExerciseInput::curve_step({{0, 0, 0}, {2, 1, 0}}, 0.0);
+       },
        "the weights are swapped"},
       {"patch_columns_first.lua", "2.1", [] { return ExerciseInput::patch_point(sheet(), 1, 0); },
        "u and v are swapped"},
@@ -72,7 +75,8 @@ const std::vector<Case>& cases() {
       {"flip_boundary.lua", "4.3", [] { return ExerciseInput::edge(grid(2, 2), EdgeId(0)); },
        "the reference does not flip e0 (e0 is on the boundary"},
       {"flip_breaks_face_cycle.lua", "4.1", [] { return ExerciseInput::edge(grid(1, 1), EdgeId(2)); },
-       "h5.next is still h3 after your flip_edge, as before the call; the reference changes it: that pointer breaks the "
+       "h5.next is still h3 after your flip_edge, as before the call; the reference changes it: that pointer breaks "
+       "the "
        "face cycle"},
       {"flip_forgets_faces.lua", "4.1", [] { return ExerciseInput::edge(grid(1, 1), EdgeId(2)); },
        "f0.halfedge is h0, but h0.face is f1"},
@@ -84,8 +88,7 @@ const std::vector<Case>& cases() {
        "h12.face is f0, but h12 is in f2's next-cycle"},
       {"upsample_flip_one_check.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "a new edge whose ends were both new was flipped"},
-      {"upsample_flips_split_halves.lua", "6.1",
-       [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
+      {"upsample_flips_split_halves.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "an edge that was not new (a half of a split edge) was flipped"},
       {"upsample_integer_division.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "4 of the 4 original vertices kept their old positions"},
@@ -183,8 +186,9 @@ TEST(WindowAndGrader, TheExtraCreditBoundaryRulesAreNamedAlikeInBoth) {
     }
     return std::string();
   };
-  const std::string vertex = names("boundary vertices, e.g. v0 (3 neighbours, 2 of them along the boundary), moved by "
-                                   "the interior rule");
+  const std::string vertex = names(
+      "boundary vertices, e.g. v0 (3 neighbours, 2 of them along the boundary), moved by "
+      "the interior rule");
   const std::string edge = names("are at the interior rule 3/8 (a + b) + 1/8 (c + d) with d read across the boundary");
   ASSERT_NE(vertex, "") << window.summary();
   ASSERT_NE(edge, "") << window.summary();

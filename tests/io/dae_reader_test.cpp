@@ -305,8 +305,8 @@ TEST(Dae, ReadsTheUpAxisTagAndTheAuthoringTool) {
 }
 
 TEST(Dae, WithoutAnUpAxisTagTheAssetIsColladasDefault) {
-  for (const std::string& text : {with_asset("<unit meter=\"1\"/>\n"), document(geometry("T", "0 0 0 1 0 0 0 1 0",
-                                                                             triangles("T", "0 0 1 0 2 0", "1")))}) {
+  for (const std::string& text : {with_asset("<unit meter=\"1\"/>\n"),
+                                  document(geometry("T", "0 0 0 1 0 0 0 1 0", triangles("T", "0 0 1 0 2 0", "1")))}) {
     const DaeFile file = parse_dae_file(text, "u.dae");
     EXPECT_FALSE(file.asset.up_axis_tagged);
     EXPECT_EQ(file.asset.up_axis, UpAxis::Y);

@@ -99,11 +99,14 @@ TEST(FileUpAxis, LoadFileCarriesTheUpAxis) {
 TEST(FileUpAxis, EveryCourseFileIsZUp) {
   MESHEDIT_REQUIRE_COURSE_DATA(dir);
   // The modo files are tagged Y_UP but Z-up (file_up_axis.h); the Blender ones are tagged Z_UP.
-  const std::map<std::string, UpAxisSource> dae = {
-      {"bean.dae", UpAxisSource::CourseExporter},   {"beetle.dae", UpAxisSource::CourseExporter},
-      {"cow.dae", UpAxisSource::CourseExporter},    {"peter.dae", UpAxisSource::CourseExporter},
-      {"quadball.dae", UpAxisSource::CourseExporter}, {"teapot.dae", UpAxisSource::CourseExporter},
-      {"cube.dae", UpAxisSource::FileTag},          {"weird.dae", UpAxisSource::FileTag}};
+  const std::map<std::string, UpAxisSource> dae = {{"bean.dae", UpAxisSource::CourseExporter},
+                                                   {"beetle.dae", UpAxisSource::CourseExporter},
+                                                   {"cow.dae", UpAxisSource::CourseExporter},
+                                                   {"peter.dae", UpAxisSource::CourseExporter},
+                                                   {"quadball.dae", UpAxisSource::CourseExporter},
+                                                   {"teapot.dae", UpAxisSource::CourseExporter},
+                                                   {"cube.dae", UpAxisSource::FileTag},
+                                                   {"weird.dae", UpAxisSource::FileTag}};
   for (const auto& [name, source] : dae) {
     SCOPED_TRACE(name);
     const DaeFile file = read_dae_file(dir / "dae" / name);

@@ -13,8 +13,8 @@
 #include <string>
 #include <vector>
 
-#include "core/primitives.h"
 #include "binary_builder.h"
+#include "core/primitives.h"
 #include "fuzz_mutator.h"
 #include "gltf_test_files.h"
 #include "io/bez_io.h"
@@ -241,10 +241,9 @@ std::vector<std::string> ply_seeds() {
       "property uchar red\nproperty list uchar float uv\nelement face 2\nproperty list uchar int vertex_indices\n"
       "element edge 1\nproperty int vertex1\nproperty int vertex2\nend_header\n"
       "0 0 0 255 0\n1 0 0 0 2 0.5 0.5\n1 1 0 7 0\n0 1 0.5 9 0\n3 0 1 2\n4 0 2 3 1\n0 1\n";
-  testing::BinaryBuilder big(true,
-                             "ply\nformat binary_big_endian 1.0\nelement vertex 3\n" + xyz +
-                                 "property float confidence\nelement face 1\n"
-                                 "property list uchar int vertex_indices\nend_header\n");
+  testing::BinaryBuilder big(true, "ply\nformat binary_big_endian 1.0\nelement vertex 3\n" + xyz +
+                                       "property float confidence\nelement face 1\n"
+                                       "property list uchar int vertex_indices\nend_header\n");
   big.f32(0).f32(0).f32(0).f32(1).f32(1).f32(0).f32(0).f32(1).f32(0).f32(1).f32(0).f32(1);
   big.u8(3).i32(0).i32(1).i32(2);
   return {ascii, big.bytes(), format_ply(make_torus(4, 3), "t.ply")};

@@ -1,6 +1,7 @@
 // The fast Loop subdivision against the teaching path on every real course mesh (../shared/data/cs184; skipped
-// when absent; the .bez patches tessellated as the app shows them): the same mesh id for id, pointer for pointer and bit for bit, two levels, both weight sets,
-// one and two threads. tests/core/loop_fast_test.cpp covers the generated and randomly edited meshes.
+// when absent; the .bez patches tessellated as the app shows them): the same mesh id for id, pointer for pointer and
+// bit for bit, two levels, both weight sets, one and two threads. tests/core/loop_fast_test.cpp covers the generated
+// and randomly edited meshes.
 #include <filesystem>
 
 #include <gtest/gtest.h>

@@ -172,8 +172,8 @@ TEST(Stl, RoundTripsTrianglesAndSplitsPolygonsIntoFans) {
   // The first quad's two triangles: its corners only, covering its area, facing its way.
   const PolygonMesh quads = make_cube_quads();
   const auto q = quads.face(0);
-  const glm::dvec3 quad_normal = glm::cross(quads.positions[q[1]] - quads.positions[q[0]],
-                                            quads.positions[q[2]] - quads.positions[q[0]]);
+  const glm::dvec3 quad_normal =
+      glm::cross(quads.positions[q[1]] - quads.positions[q[0]], quads.positions[q[2]] - quads.positions[q[0]]);
   double area = 0;
   for (size_t f = 0; f < 2; ++f) {
     const auto t = back.face(f);

@@ -57,8 +57,8 @@ void expect_edge_answered(const HalfedgeMesh& mesh, ElementRef selected) {
 TEST(ActionQueriesOutOfMemory, EdgeForOperationAnswersOrSaysMemoryRanOut) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_grid(1, 1));
   // The edge, and each refusal: nothing, a vertex, a face, a missing edge.
-  for (const ElementRef selected : std::vector<ElementRef>{EdgeId(2), HalfedgeId(3), ElementRef(), VertexId(3),
-                                                           FaceId::face(0), EdgeId(99)}) {
+  for (const ElementRef selected :
+       std::vector<ElementRef>{EdgeId(2), HalfedgeId(3), ElementRef(), VertexId(3), FaceId::face(0), EdgeId(99)}) {
     expect_edge_answered(mesh, selected);
   }
   mesh.set_edge(HalfedgeId(3), EdgeId());  // a broken pointer: the walk to the edge refuses

@@ -281,10 +281,10 @@ std::string case_name(const ::testing::TestParamInfo<std::tuple<size_t, Later>>&
   return std::string(c.name) + (one ? "_OneAllocationFails" : "_MemoryStaysShort");
 }
 
-INSTANTIATE_TEST_SUITE_P(
-    Actions, DocumentActionsOutOfMemory,
-    ::testing::Combine(::testing::Range<size_t>(0, cases().size()), ::testing::Values(Later::Succeed, Later::Fail)),
-    case_name);
+INSTANTIATE_TEST_SUITE_P(Actions, DocumentActionsOutOfMemory,
+                         ::testing::Combine(::testing::Range<size_t>(0, cases().size()),
+                                            ::testing::Values(Later::Succeed, Later::Fail)),
+                         case_name);
 
 }  // namespace
 }  // namespace meshedit

@@ -81,8 +81,13 @@ struct Before {
 };
 
 Before before_of(const MeshDocument& doc) {
-  return {doc.mesh,           doc.mesh.version(),     doc.last.serial,       doc.history.undo_depth(),
-          doc.history.can_redo(), doc.history.undo_label(), doc.history.redo_label()};
+  return {doc.mesh,
+          doc.mesh.version(),
+          doc.last.serial,
+          doc.history.undo_depth(),
+          doc.history.can_redo(),
+          doc.history.undo_label(),
+          doc.history.redo_label()};
 }
 
 // The message starts with the label, or is the one that needs no memory: when memory stays short, or when what ran

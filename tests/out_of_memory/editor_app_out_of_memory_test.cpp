@@ -119,8 +119,8 @@ Before before_of(const MeshDocument& doc) {
 }
 
 bool left_alone(const MeshDocument& doc, const Before& before) {
-  return doc.mesh.same_as(before.mesh) && doc.mesh.version() == before.version &&
-         doc.generation == before.generation && doc.history.undo_depth() == before.undo_depth;
+  return doc.mesh.same_as(before.mesh) && doc.mesh.version() == before.version && doc.generation == before.generation &&
+         doc.history.undo_depth() == before.undo_depth;
 }
 
 // Replaced whole by `opened`: a new generation with no history.

@@ -105,8 +105,8 @@ TEST_F(EditorLessonOutOfMemory, ALessonOpensWholeOrNotAtAll) {
       EXPECT_FALSE(escaped);
       const LessonRunner& lesson = app_->lesson();
       const bool torus_kept = doc.mesh.same_as(torus) && doc.generation == generation;
-      const bool tetrahedron_shown = doc.mesh.same_as(tetrahedron) && doc.generation == generation + 1 &&
-                                     validate(doc.mesh).ok();
+      const bool tetrahedron_shown =
+          doc.mesh.same_as(tetrahedron) && doc.generation == generation + 1 && validate(doc.mesh).ok();
       if (opened) {
         EXPECT_EQ(lesson.title(), "Running short of memory");
         EXPECT_EQ(app_->title(), "MeshEdit - Running short of memory");
@@ -171,8 +171,9 @@ TEST_F(EditorLessonOutOfMemory, ALessonsMeshIsShownWholeOrNotAtAll) {
 // The panel's Reload and hot reload (reload_lesson) of a lesson saved with a new title: the new version runs under its
 // title, or the version that ran goes on under its own and the outcome says memory ran out (hot reload tries again).
 TEST_F(EditorLessonOutOfMemory, AReloadIsWholeOrNotAtAll) {
-  const std::string saved = "lesson { title = \"A renamed lesson\" }\n"
-                            "step(\"Only\", function() say(\"the renamed lesson's only step\") end)\n";
+  const std::string saved =
+      "lesson { title = \"A renamed lesson\" }\n"
+      "step(\"Only\", function() say(\"the renamed lesson's only step\") end)\n";
   const std::string earlier = testing::read_text(earlier_);
   for (const Later later : {Later::Succeed, Later::Fail}) {
     for (size_t n = 1;; ++n) {

@@ -51,8 +51,8 @@ RecordedEdit record_edit(const std::function<void(HalfedgeMesh&)>& edit, bool as
 // Runs the step on a copy of `history` and `mesh` (the torus as `original` or `edited`) with the Nth allocation
 // failing (and every later one with Later::Fail), for N = 1, 2, ... until the step no longer fails: each time the
 // step is taken exactly or nothing changed, and the lists then still step the mesh between the two states.
-void expect_all_or_nothing(const History& history, const HalfedgeMesh& mesh, bool forward,
-                           const HalfedgeMesh& original, const HalfedgeMesh& edited, FailingAllocations::Later later) {
+void expect_all_or_nothing(const History& history, const HalfedgeMesh& mesh, bool forward, const HalfedgeMesh& original,
+                           const HalfedgeMesh& edited, FailingAllocations::Later later) {
   for (size_t n = 1;; ++n) {
     SCOPED_TRACE(n);
     History h = history;

@@ -95,10 +95,13 @@ TEST_F(RenderCommand, FlatWireframeAndSubdivisionOfAPrimitive) {
 TEST_F(RenderCommand, BadArgumentsAreUsageErrorsAndBadFilesErrors) {
   const fs::path teapot = testing::source_dir() / "assets" / "teapot.bez";
   const std::string out = (dir_ / "x.png").string();
-  for (const std::vector<std::string>& args :
-       {std::vector<std::string>{teapot.string()}, {teapot.string(), "-o", out, "--size", "0x10"},
-        {teapot.string(), "-o", out, "--size", "12"}, {teapot.string(), "-o", out, "--shading", "gouraud"},
-        {teapot.string(), "-o", out, "--up", "x"}, {teapot.string(), "-o", out, "--bogus"}, {"-o", out}}) {
+  for (const std::vector<std::string>& args : {std::vector<std::string>{teapot.string()},
+                                               {teapot.string(), "-o", out, "--size", "0x10"},
+                                               {teapot.string(), "-o", out, "--size", "12"},
+                                               {teapot.string(), "-o", out, "--shading", "gouraud"},
+                                               {teapot.string(), "-o", out, "--up", "x"},
+                                               {teapot.string(), "-o", out, "--bogus"},
+                                               {"-o", out}}) {
     const CommandResult run = render(args);
     EXPECT_EQ(run.status, 2) << run.err;
     EXPECT_NE(run.err.find("meshedit: "), std::string::npos);

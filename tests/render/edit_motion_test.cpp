@@ -27,24 +27,29 @@ HalfedgeMesh diamond() {
 HalfedgeMesh octahedron() {
   PolygonMesh p;
   p.positions = {{1, 0, 0}, {-1, 0, 0}, {0, 1, 0}, {0, -1, 0}, {0, 0, 1}, {0, 0, -1}};
-  for (const auto& f : {std::array<uint32_t, 3>{0, 2, 4}, {2, 1, 4}, {1, 3, 4}, {3, 0, 4}, {2, 0, 5}, {1, 2, 5},
-                        {3, 1, 5}, {0, 3, 5}}) {
+  for (const auto& f : {std::array<uint32_t, 3>{0, 2, 4},
+                        {2, 1, 4},
+                        {1, 3, 4},
+                        {3, 0, 4},
+                        {2, 0, 5},
+                        {1, 2, 5},
+                        {3, 1, 5},
+                        {0, 3, 5}}) {
     p.add_face({f[0], f[1], f[2]});
   }
   return build_halfedge_mesh(p);
 }
 
 std::vector<glm::dvec3> sorted(std::vector<glm::dvec3> points) {
-  std::sort(points.begin(), points.end(), [](const glm::dvec3& p, const glm::dvec3& q) {
-    return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z);
-  });
+  std::sort(points.begin(), points.end(),
+            [](const glm::dvec3& p, const glm::dvec3& q) { return std::tie(p.x, p.y, p.z) < std::tie(q.x, q.y, q.z); });
   return points;
 }
 
 // The animation of the edit on `mesh`, and of its undo (the reversed patch, on the mesh put back as it was).
 template <class Op>
 std::pair<std::optional<EditAnimation>, std::optional<EditAnimation>> edit_and_undo(HalfedgeMesh& mesh,
-                                                                                   EdgeOperation operation, Op op) {
+                                                                                    EdgeOperation operation, Op op) {
   const HalfedgeMesh start = mesh;
   const MeshPatch patch = testing::patch_of(mesh, op);
   auto edit = edit_animation_of_change(operation, EdgeId(0), false, mesh, patch);

@@ -18,8 +18,8 @@
 #include "core/mesh_ops.h"
 #include "core/mesh_patch.h"
 #include "core/primitives.h"
-#include "render/incremental_update.h"
 #include "quad_torus.h"
+#include "render/incremental_update.h"
 #include "update_test_support.h"
 
 namespace meshedit {
@@ -197,8 +197,8 @@ TEST(IncrementalUpdate, BrokenMeshesGiveTheFullBuild) {
   EXPECT_GT(all.patches + torus.patches, 100u);
   EXPECT_GT(all.rebuilds + torus.rebuilds, 10u);
   EXPECT_GT(all.through_patches + torus.through_patches, 600u);
-  std::printf("broken meshes: %zu patches, %zu rebuilds, %zu planned through the edit too\n", all.patches + torus.patches,
-              all.rebuilds + torus.rebuilds, all.through_patches + torus.through_patches);
+  std::printf("broken meshes: %zu patches, %zu rebuilds, %zu planned through the edit too\n",
+              all.patches + torus.patches, all.rebuilds + torus.rebuilds, all.through_patches + torus.through_patches);
 }
 
 TEST(IncrementalUpdate, PolygonsArePatchedWhileTheirTriangleCountsStay) {

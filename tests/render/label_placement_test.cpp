@@ -28,8 +28,8 @@ std::vector<LabelRequest> random_requests(std::mt19937& random, size_t count, co
   std::vector<LabelRequest> requests;
   for (size_t i = 0; i < count; ++i) {
     const glm::dvec2 direction = centred(random) == 0 ? glm::dvec2(0.0) : glm::dvec2(unit(random), unit(random));
-    requests.push_back(request(uint32_t(i), {x(random), y(random)}, direction, priority(random),
-                               {7.0 * chars(random), 13.0}));
+    requests.push_back(
+        request(uint32_t(i), {x(random), y(random)}, direction, priority(random), {7.0 * chars(random), 13.0}));
   }
   return requests;
 }
@@ -179,9 +179,8 @@ TEST(LabelPlacement, NoBoxCrossesItsLabelsKeepClearSegment) {
 TEST(LabelPlacement, LabelsThatFitNowhereAreDroppedAndCounted) {
   // A view just big enough for one box around the anchor: the first label takes it, the other two are dropped.
   const LabelRect view{{0.0, 0.0}, {30.0, 20.0}};
-  const std::vector<LabelRequest> requests = {request(0, {15.0, 10.0}, {0.0, 0.0}),
-                                              request(1, {15.0, 10.0}, {0.0, 0.0}),
-                                              request(2, {15.0, 10.0}, {1.0, 0.0})};
+  const std::vector<LabelRequest> requests = {
+      request(0, {15.0, 10.0}, {0.0, 0.0}), request(1, {15.0, 10.0}, {0.0, 0.0}), request(2, {15.0, 10.0}, {1.0, 0.0})};
   const LabelPlacement placement = place_labels(requests, view);
   ASSERT_EQ(placement.placed.size(), 1u);
   EXPECT_EQ(placement.placed[0].element, ElementRef(VertexId(0)));

@@ -215,8 +215,7 @@ TEST(Labels, AnEdgeLabelKeepsOffItsEdgeOnTheOutside) {
   LabelScene scene;
   scene.ids.vertices = scene.ids.faces = false;
   const LabelView view{{{0.0, 0.0}, {800.0, 600.0}}, viewport};
-  const LabelPlacement placement =
-      place_labels(label_requests(mesh, camera, view, scene, proggy_size), view.window);
+  const LabelPlacement placement = place_labels(label_requests(mesh, camera, view, scene, proggy_size), view.window);
   ASSERT_EQ(placement.placed.size(), 3u);
   const glm::dvec2 centre = pixel(camera, viewport, *label_anchor(mesh, FaceId::face(0)));
   for (const PlacedLabel& label : placement.placed) {
@@ -238,8 +237,8 @@ TEST(Labels, RequestsCarryPrioritiesAndWindowCoordinates) {
   // A view at (100, 40) in the window, drawn at twice the window's pixel density.
   const LabelView view{{{100.0, 40.0}, {740.0, 440.0}}, {1280, 800}};
   const HalfedgeId h0 = mesh.halfedge(EdgeId(0));
-  const std::vector<std::pair<ElementRef, std::string>> lesson = {{h0, "h0"}, {FaceId::face(0), "f0"},
-                                                                  {VertexId(0), "a"}};
+  const std::vector<std::pair<ElementRef, std::string>> lesson = {
+      {h0, "h0"}, {FaceId::face(0), "f0"}, {VertexId(0), "a"}};
   LabelScene scene;
   scene.lesson = lesson;
   scene.selected = mesh.twin(h0);  // a halfedge, though halfedge labels are off
@@ -289,11 +288,22 @@ TEST(Labels, TheFlipLessonsDiamondShowsItsNamesApart) {
   const HalfedgeId h0 = mesh.halfedge(EdgeId(0)), h1 = mesh.twin(h0);
   const HalfedgeId h2 = mesh.next(h0), h3 = mesh.next(h2), h4 = mesh.next(h1), h5 = mesh.next(h4);
   const FaceId f0 = mesh.face(h0), f1 = mesh.face(h1);
-  const std::vector<std::pair<ElementRef, std::string>> lesson = {
-      {mesh.vertex(h0), "a"}, {mesh.vertex(h1), "b"}, {mesh.vertex(h3), "c"}, {mesh.vertex(h5), "d"},
-      {f0, "f0"},            {f1, "f1"},             {h0, "h0"},            {h1, "h1"},
-      {h2, "h2"},            {h3, "h3"},             {h4, "h4"},            {h5, "h5"},
-      {mesh.twin(h2), "h6"}, {mesh.twin(h3), "h7"},  {mesh.twin(h4), "h8"}, {mesh.twin(h5), "h9"}};
+  const std::vector<std::pair<ElementRef, std::string>> lesson = {{mesh.vertex(h0), "a"},
+                                                                  {mesh.vertex(h1), "b"},
+                                                                  {mesh.vertex(h3), "c"},
+                                                                  {mesh.vertex(h5), "d"},
+                                                                  {f0, "f0"},
+                                                                  {f1, "f1"},
+                                                                  {h0, "h0"},
+                                                                  {h1, "h1"},
+                                                                  {h2, "h2"},
+                                                                  {h3, "h3"},
+                                                                  {h4, "h4"},
+                                                                  {h5, "h5"},
+                                                                  {mesh.twin(h2), "h6"},
+                                                                  {mesh.twin(h3), "h7"},
+                                                                  {mesh.twin(h4), "h8"},
+                                                                  {mesh.twin(h5), "h9"}};
   LabelScene scene;
   scene.lesson = lesson;
   const std::vector<LabelRequest> requests = label_requests(mesh, camera, view, scene, proggy_size);
@@ -325,9 +335,9 @@ TEST(Labels, TheFlipLessonsDiamondShowsItsNamesApart) {
   EXPECT_GT(glm::dot(n, named[0]->rect.centre() - a) * glm::dot(n, f0_centre - a), 0.0);
   EXPECT_GT(glm::dot(n, named[1]->rect.centre() - a) * glm::dot(n, f1_centre - a), 0.0);
   const glm::dvec2 e0_mid = origin + pixel(camera, viewport, *label_anchor(mesh, EdgeId(0)));
-  EXPECT_FALSE(named[2]->rect.contains(e0_mid)) << e0_mid.x << " " << e0_mid.y << " in " << named[2]->rect.min.x << " "
-                                               << named[2]->rect.min.y << " " << named[2]->rect.max.x << " "
-                                               << named[2]->rect.max.y;
+  EXPECT_FALSE(named[2]->rect.contains(e0_mid))
+      << e0_mid.x << " " << e0_mid.y << " in " << named[2]->rect.min.x << " " << named[2]->rect.min.y << " "
+      << named[2]->rect.max.x << " " << named[2]->rect.max.y;
   EXPECT_TRUE(named[3]->rect.contains(f0_centre));
   EXPECT_TRUE(named[4]->rect.contains(f1_centre));
 }

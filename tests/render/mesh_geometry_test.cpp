@@ -183,8 +183,8 @@ TEST(MeshGeometry, ARhoShapedFaceCycleIsSkippedAndTheRestIsDrawn) {
 
 TEST(MeshGeometry, PointersToNowhereOrToOtherFacesSkipOnlyTheirFace) {
   HalfedgeMesh mesh = build_halfedge_mesh(make_cube());
-  mesh.set_next(HalfedgeId(4), HalfedgeId(999999));  // f1's cycle leaves the arrays
-  mesh.set_face(HalfedgeId(7), FaceId::face(5));      // f2's cycle holds a halfedge of "f5"
+  mesh.set_next(HalfedgeId(4), HalfedgeId(999999));                               // f1's cycle leaves the arrays
+  mesh.set_face(HalfedgeId(7), FaceId::face(5));                                  // f2's cycle holds a halfedge of "f5"
   mesh.set_twin(HalfedgeId(mesh.halfedge(EdgeId(0)).index), HalfedgeId(123456));  // e0's twin is gone
   const MeshGeometry g = build_mesh_geometry(mesh);
   ASSERT_EQ(g.skipped_faces.size(), 2u);

@@ -83,7 +83,7 @@ TEST(ChoosePick, EachKindCountsOnlyWithinItsRadius) {
   EXPECT_EQ(choose_pick(ids, 13, 13, 6, 6), ElementRef(ElementKind::Edge, 2));
   set(6 + 4, 6 + 4, ElementRef(ElementKind::Vertex, 3));  // 5.7 pixels away: a vertex still counts
   EXPECT_EQ(choose_pick(ids, 13, 13, 6, 6), ElementRef(ElementKind::Vertex, 3));
-  set(6 + 4, 6 + 4, ElementRef());  // encodes as background
+  set(6 + 4, 6 + 4, ElementRef());                  // encodes as background
   set(12, 12, ElementRef(ElementKind::Vertex, 4));  // in the window's corner, 8.5 pixels: too far
   EXPECT_EQ(choose_pick(ids, 13, 13, 6, 6), ElementRef(ElementKind::Edge, 2));
 }

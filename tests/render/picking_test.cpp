@@ -298,7 +298,7 @@ TEST_F(Picking, HighlightsColourTheirElements) {
 }
 
 TEST_F(Picking, ABrokenMeshIsDrawnAsFarAsItCanBeWalked) {
-  mesh_.set_next(HalfedgeId(2), HalfedgeId(1));  // f0's cycle becomes a rho
+  mesh_.set_next(HalfedgeId(2), HalfedgeId(1));       // f0's cycle becomes a rho
   mesh_.set_next(HalfedgeId(5), HalfedgeId(999999));  // f1's leaves the arrays
   renderer_->update(mesh_);
   EXPECT_EQ(renderer_->stats().skipped_faces, 2u);

@@ -14,8 +14,8 @@ inline PolygonMesh quad_torus(uint32_t rings, uint32_t sides) {
   for (uint32_t i = 0; i < rings; ++i) {
     for (uint32_t j = 0; j < sides; ++j) {
       const double u = 6.283185307179586 * i / rings, v = 6.283185307179586 * j / sides;
-      out.positions.push_back({(1.0 + 0.35 * std::cos(v)) * std::cos(u), (1.0 + 0.35 * std::cos(v)) * std::sin(u),
-                               0.35 * std::sin(v)});
+      out.positions.push_back(
+          {(1.0 + 0.35 * std::cos(v)) * std::cos(u), (1.0 + 0.35 * std::cos(v)) * std::sin(u), 0.35 * std::sin(v)});
     }
   }
   for (uint32_t i = 0; i < rings; ++i) {

@@ -77,8 +77,8 @@ TEST(QualityGovernor, ComesBackUpWhenThePredictedCostIsClearlyUnderTheUpThreshol
 }
 
 TEST(QualityGovernor, AStepUpThatTurnsOutSlowComesBackOnceAndIsNotTriedAgain) {
-  // Without multisampling 12 ms, predicted 16.8 with it (the default ratio), but it really costs 45: the governor tries,
-  // measures, returns after three frames, and knows the ratio (45 / 12) from then on.
+  // Without multisampling 12 ms, predicted 16.8 with it (the default ratio), but it really costs 45: the governor
+  // tries, measures, returns after three frames, and knows the ratio (45 / 12) from then on.
   QualityGovernor governor = started_at(1);
   const std::string levels = run(governor, {45, 12, 8, 6}, 300);
   EXPECT_EQ(governor.level(), 1);

@@ -19,8 +19,8 @@
 namespace meshedit {
 namespace {
 
-using testing::GlTest;
 using testing::changed_elements;
+using testing::GlTest;
 using testing::same_bytes;
 
 // Updates `renderer` from `before` to `mesh` with a change description, as the app does.
@@ -180,9 +180,7 @@ TEST_F(RendererUpdate, AMeshTooLargeToDrawIsRefusedAndNothingIsDrawn) {
   target.clear(renderer.style().background);
   renderer.draw(camera, kViewport, {}, {});
   const std::vector<uint8_t> pixels = target.read_rgba();
-  const auto background = [&](size_t i) {
-    return pixels[i] == uint8_t(renderer.style().background.r * 255.0f + 0.5f);
-  };
+  const auto background = [&](size_t i) { return pixels[i] == uint8_t(renderer.style().background.r * 255.0f + 0.5f); };
   for (size_t i = 0; i < pixels.size(); i += 4 * 37) EXPECT_TRUE(background(i)) << "pixel " << i / 4;
   EXPECT_FALSE(renderer.pick(camera, kViewport, 80, 60).valid());
 

@@ -63,9 +63,12 @@ class ShaderCompile : public testing::GlTest {};
 
 TEST_F(ShaderCompile, EveryProgramTheRenderersUseBuilds) {
   const ShaderLibrary library;
-  for (const auto& [vert, frag] : {std::pair{"face.vert", "face.frag"}, {"face.vert", "face_pick.frag"},
-                                   {"segment.vert", "segment.frag"}, {"segment.vert", "id.frag"},
-                                   {"point.vert", "point.frag"}, {"point.vert", "id.frag"}}) {
+  for (const auto& [vert, frag] : {std::pair{"face.vert", "face.frag"},
+                                   {"face.vert", "face_pick.frag"},
+                                   {"segment.vert", "segment.frag"},
+                                   {"segment.vert", "id.frag"},
+                                   {"point.vert", "point.frag"},
+                                   {"point.vert", "id.frag"}}) {
     const ShaderProgram program = library.program(vert, frag);
     EXPECT_NE(program.id(), 0u);
     EXPECT_EQ(program.name(), std::string(vert) + " + " + frag);

@@ -4,7 +4,7 @@
  * window's LeakSanitizer report at exit then lists them with a stack that ends in the unloaded library, which no
  * suppression can match. With libraries kept loaded the blocks stay reachable, and every leak of ours still shows.
  * Invariant: only for sanitizer runs; never linked into MeshEdit. */
-int dlclose(void *handle) {
+int dlclose(void* handle) {
   (void)handle;
   return 0;
 }

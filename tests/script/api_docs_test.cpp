@@ -72,9 +72,10 @@ class ApiDocs : public ::testing::Test {
   }
   // "ok" when `expression[name]` is not nil, else what it is.
   std::string lookup(const std::string& expression, const std::string& name) {
-    return lua.run_string("local ok, v = pcall(function() return (" + expression + ")['" + name +
-                              "'] end) return ok and v ~= nil and 'ok' or tostring(v)",
-                          "lookup.lua")
+    return lua
+        .run_string("local ok, v = pcall(function() return (" + expression + ")['" + name +
+                        "'] end) return ok and v ~= nil and 'ok' or tostring(v)",
+                    "lookup.lua")
         .at(0);
   }
   LuaRuntime lua;
@@ -82,8 +83,8 @@ class ApiDocs : public ::testing::Test {
 };
 
 TEST_F(ApiDocs, TheMetaFileDocumentsEveryClass) {
-  for (const char* cls : {"Element", "Mesh", "Vertex", "Halfedge", "Face", "Boundary", "vec3", "Curve", "Patch",
-                          "meshedit"}) {
+  for (const char* cls :
+       {"Element", "Mesh", "Vertex", "Halfedge", "Face", "Boundary", "vec3", "Curve", "Patch", "meshedit"}) {
     EXPECT_FALSE(doc.functions[cls].empty()) << cls << " has no documented function";
   }
   EXPECT_EQ(doc.fields["Halfedge"], (std::set<std::string>{"next", "twin", "vertex", "edge", "face"}));
@@ -96,8 +97,8 @@ TEST_F(ApiDocs, EveryDocumentedFunctionExists) {
     ASSERT_NE(sample, kSamples.end()) << "no sample value for documented class " << cls;
     for (const std::string& expression : sample->second) {
       for (const std::string& name : names) {
-        EXPECT_EQ(lookup(expression, name), "ok") << cls << ":" << name << " is documented but " << expression
-                                                  << "." << name << " is missing";
+        EXPECT_EQ(lookup(expression, name), "ok")
+            << cls << ":" << name << " is documented but " << expression << "." << name << " is missing";
       }
     }
   }
@@ -108,8 +109,8 @@ TEST_F(ApiDocs, EveryDocumentedFieldExists) {
     ASSERT_FALSE(doc.fields[cls].empty()) << cls;
     for (const std::string& expression : kSamples.at(cls)) {
       for (const std::string& name : doc.fields[cls]) {
-        EXPECT_EQ(lookup(expression, name), "ok") << cls << "." << name << " is documented but missing on "
-                                                  << expression;
+        EXPECT_EQ(lookup(expression, name), "ok")
+            << cls << "." << name << " is documented but missing on " << expression;
       }
     }
   }
@@ -184,8 +185,8 @@ TEST(ApiDocsFiles, TheLessonMetaFileDocumentsExactlyTheLessonGlobals) {
   }
   EXPECT_TRUE(lesson_globals.count("choose") && lesson_globals.count("plot"));  // the set is read, not empty
 
-  const std::string text = ::meshedit::testing::read_text(::meshedit::testing::source_dir() / "scripts" / "api" /
-                                                          "lesson.lua");
+  const std::string text =
+      ::meshedit::testing::read_text(::meshedit::testing::source_dir() / "scripts" / "api" / "lesson.lua");
   const std::regex global_function(R"((^|\n)function ([A-Za-z_][A-Za-z0-9_]*)\()");
   std::set<std::string> documented;
   for (auto it = std::sregex_iterator(text.begin(), text.end(), global_function); it != std::sregex_iterator(); ++it) {
@@ -198,15 +199,16 @@ TEST(ApiDocsFiles, LessonAndGradingMetaFilesNameTheRealGlobals) {
   const auto dir = ::meshedit::testing::source_dir() / "scripts" / "api";
   Documented lesson = parse_meta(dir / "lesson.lua");
   const std::string text = ::meshedit::testing::read_text(dir / "lesson.lua");
-  for (const char* name : {"lesson", "step", "say", "wait_for", "animate", "show", "highlight", "label", "clear",
-                           "camera", "current_mesh", "selection", "lesson_file", "choose", "pick", "answer", "live",
-                           "plot", "arrow", "curve_t", "curve_points", "your_turn"}) {
+  for (const char* name :
+       {"lesson", "step",   "say",          "wait_for",  "animate",      "show",     "highlight", "label",
+        "clear",  "camera", "current_mesh", "selection", "lesson_file",  "choose",   "pick",      "answer",
+        "live",   "plot",   "arrow",        "curve_t",   "curve_points", "your_turn"}) {
     EXPECT_NE(text.find(std::string("\nfunction ") + name + "("), std::string::npos) << name;
   }
   Documented grading = parse_meta(dir / "grading.lua");
   EXPECT_EQ(grading.functions["Expect"],
-            (std::set<std::string>{"truthy", "falsy", "is_nil", "equal", "near", "valid", "mesh_equal",
-                                   "same_pointers", "counts", "pass", "fail", "score", "exercise"}));
+            (std::set<std::string>{"truthy", "falsy", "is_nil", "equal", "near", "valid", "mesh_equal", "same_pointers",
+                                   "counts", "pass", "fail", "score", "exercise"}));
   EXPECT_EQ(grading.functions["Student"], (std::set<std::string>{"has", "call", "output"}));
 }
 

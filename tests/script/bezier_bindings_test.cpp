@@ -63,8 +63,9 @@ std::string strlevels(const std::vector<std::vector<glm::dvec3>>& levels) {
 }
 
 const std::vector<glm::dvec3> kCubic = {{0.1, 0.2, 0}, {0.35, 0.9, 0}, {0.65, 0.1, 0}, {0.9, 0.8, 0}};
-const char* kCubicLua = "meshedit.curve({{0.1, 0.2, 0}, meshedit.vec3(0.35, 0.9), {x = 0.65, y = 0.1, z = 0}, "
-                        "{0.9, 0.8, 0}})";
+const char* kCubicLua =
+    "meshedit.curve({{0.1, 0.2, 0}, meshedit.vec3(0.35, 0.9), {x = 0.65, y = 0.1, z = 0}, "
+    "{0.9, 0.8, 0}})";
 
 TEST(BezierBindings, CurveResultsAreTheCoresBitForBit) {
   Fixture f;
@@ -113,9 +114,8 @@ TEST(BezierBindings, PatchResultsAreTheCoresBitForBit) {
   Fixture f;
   const auto teapot = read_bez(testing::source_dir() / "assets" / "teapot.bez");
   ASSERT_EQ(teapot.size(), 32u);
-  f.lua.run_string("patches = meshedit.load_patches('" + (testing::source_dir() / "assets" / "teapot.bez").string() +
-                       "')",
-                   "t.lua");
+  f.lua.run_string(
+      "patches = meshedit.load_patches('" + (testing::source_dir() / "assets" / "teapot.bez").string() + "')", "t.lua");
   EXPECT_EQ(f.run("return #patches, tostring(patches[1])"), (Strings{"32", "patch"}));
   for (int index : {1, 6, 14, 22}) {
     const BezierPatch& patch = teapot[index - 1];

@@ -24,9 +24,8 @@ struct Outcome {
 // `dir` is the test's scratch_dir() (calling scratch_dir() again would empty it).
 Outcome run_meshedit(const std::filesystem::path& dir, const std::string& arguments) {
   const auto out = dir / "run_stdout.txt", err = dir / "run_stderr.txt";
-  const std::string command =
-      "cd '" + dir.string() + "' && '" + std::string(MESHEDIT_BINARY) + "' " + arguments + " >'" + out.string() +
-      "' 2>'" + err.string() + "'";
+  const std::string command = "cd '" + dir.string() + "' && '" + std::string(MESHEDIT_BINARY) + "' " + arguments +
+                              " >'" + out.string() + "' 2>'" + err.string() + "'";
   const int raw = std::system(command.c_str());
   Outcome o;
   o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
@@ -35,8 +34,7 @@ Outcome run_meshedit(const std::filesystem::path& dir, const std::string& argume
   return o;
 }
 
-std::filesystem::path write_script(const std::filesystem::path& dir, const std::string& name,
-                                   const std::string& text) {
+std::filesystem::path write_script(const std::filesystem::path& dir, const std::string& name, const std::string& text) {
   const auto path = dir / name;
   std::ofstream(path) << text;
   return path;
@@ -46,9 +44,9 @@ TEST(CliRun, RunsAScriptWithArgumentsAndAMesh) {
   if (!std::filesystem::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const auto dir = testing::scratch_dir();
   write_script(dir, "hello.lua",
-                                   "print(#arg, arg[1], arg[2], select('#', ...))\n"
-                                   "local m = meshedit.grid(2, 1)\n"
-                                   "print(tostring(m), (m:validate()))\n");
+               "print(#arg, arg[1], arg[2], select('#', ...))\n"
+               "local m = meshedit.grid(2, 1)\n"
+               "print(tostring(m), (m:validate()))\n");
   const Outcome o = run_meshedit(dir, "run hello.lua one --two");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out, "2\tone\t--two\t2\nmesh (6 vertices, 9 edges, 4 faces)\ttrue\n");

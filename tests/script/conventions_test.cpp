@@ -48,21 +48,18 @@ std::string words_of(const std::string& relative_path) {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-std::string opposite(const std::string& sense) {
-  return sense == "clockwise" ? "counter-clockwise" : "clockwise";
-}
+std::string opposite(const std::string& sense) { return sense == "clockwise" ? "counter-clockwise" : "clockwise"; }
 
 TEST(Conventions, EveryFileThatStatesTheVertexWalkGivesTheDirectionTheMeshTurns) {
   if (!std::filesystem::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const auto facts = run_facts("walk_directions.lua");
   const std::string sense = facts.count("vertex walk") ? facts.at("vertex walk") : "";
   ASSERT_TRUE(sense == "clockwise" || sense == "counter-clockwise") << sense;
-  for (const char* file : {"engine/core/halfedge_mesh.h", "scripts/api/README.md", "scripts/api/meshedit.lua",
-                           "scripts/student/normals.lua", "scripts/student/upsample.lua",
-                           "lessons/3_halfedge_walks.lua"}) {
+  for (const char* file :
+       {"engine/core/halfedge_mesh.h", "scripts/api/README.md", "scripts/api/meshedit.lua",
+        "scripts/student/normals.lua", "scripts/student/upsample.lua", "lessons/3_halfedge_walks.lua"}) {
     const std::string words = words_of(file);
-    EXPECT_TRUE(contains(words, "turns " + sense + " around")) << file << " does not say h.twin.next turns "
-                                                               << sense;
+    EXPECT_TRUE(contains(words, "turns " + sense + " around")) << file << " does not say h.twin.next turns " << sense;
     EXPECT_FALSE(contains(words, "turns " + opposite(sense) + " around")) << file;
   }
 }

@@ -102,13 +102,24 @@ std::vector<std::string> expected_wheres(const HalfedgeMesh& before, EdgeId e) {
   if (interior) steps.push_back({"local g1", 1});
   for (const char* n : {"local n0", "local n1", "local n2", "local n3"}) steps.push_back({n, 1});
   if (interior) steps.insert(steps.end(), {{"local n4", 1}, {"local n5", 1}});
-  steps.insert(steps.end(), {{"n0:set_neighbors", 5}, {"n2:set_neighbors", 5}, {"n3:set_neighbors", 5},
-                             {"h0.vertex = m", 1}, {"h2.next = n3", 1}, {"h3.next = n0", 1}, {"h3.face = g0", 1},
-                             {"f0.halfedge = h0", 1}, {"g0.halfedge = n0", 1}});
+  steps.insert(steps.end(), {{"n0:set_neighbors", 5},
+                             {"n2:set_neighbors", 5},
+                             {"n3:set_neighbors", 5},
+                             {"h0.vertex = m", 1},
+                             {"h2.next = n3", 1},
+                             {"h3.next = n0", 1},
+                             {"h3.face = g0", 1},
+                             {"f0.halfedge = h0", 1},
+                             {"g0.halfedge = n0", 1}});
   if (interior) {
-    steps.insert(steps.end(), {{"n1:set_neighbors(h4, n0, m, ea, g1)", 5}, {"n4:set_neighbors", 5},
-                               {"n5:set_neighbors", 5}, {"h1.next = n4", 1}, {"h4.next = n5", 1},
-                               {"h4.face = g1", 1}, {"f1.halfedge = h1", 1}, {"g1.halfedge = n1", 1},
+    steps.insert(steps.end(), {{"n1:set_neighbors(h4, n0, m, ea, g1)", 5},
+                               {"n4:set_neighbors", 5},
+                               {"n5:set_neighbors", 5},
+                               {"h1.next = n4", 1},
+                               {"h4.next = n5", 1},
+                               {"h4.face = g1", 1},
+                               {"f1.halfedge = h1", 1},
+                               {"g1.halfedge = n1", 1},
                                {"ed.halfedge = n4", 1}});
   } else {
     steps.insert(steps.end(), {{"n1:set_neighbors(h4, n0, m, ea, f1)", 5}, {"h1.next = n1", 1}});
@@ -162,8 +173,8 @@ void check_recorded_split(EdgeId e) {
   ASSERT_EQ(log.size(), wheres.size());
   for (size_t i = 0; i < log.size(); ++i)
     EXPECT_EQ(log[i].where, wheres[i]) << "edit " << i << ": " << describe(log[i]);
-  EXPECT_EQ(describe(log[0]), "new " + format_id(made.value) + " at " +
-                                  describe(log[0]).substr(describe(log[0]).find(" at ") + 4));
+  EXPECT_EQ(describe(log[0]),
+            "new " + format_id(made.value) + " at " + describe(log[0]).substr(describe(log[0]).find(" at ") + 4));
   EXPECT_EQ(log[0].value.position, expected.position(made.value));
 
   // Each step of the replay makes exactly the change its record describes.
@@ -237,7 +248,8 @@ TEST(EditRecorder, LuaRecordReturnsTheLog) {
   const Strings got = s.run(
       "local log = m:record(function() split_edge(m, m:edge(0)) end)\n"
       "local first, write\n"
-      "for _, r in ipairs(log) do if r.field == 'vertex' and r.what == 'set' and r.where == '" + where_h0 +
+      "for _, r in ipairs(log) do if r.field == 'vertex' and r.what == 'set' and r.where == '" +
+      where_h0 +
       "' then write = r end end\n"
       "first = log[1]\n"
       "return #log, first.what, first.element, first.field, first.before, first.after, first.where, "
@@ -267,15 +279,16 @@ TEST(EditRecorder, RecordsOperationsAndStateChangesAndReplaysThem) {
   MeshScript s(make_grid(1, 1));
   const HalfedgeMesh before = *s.mesh;
   EditRecorder recorder(s.lua.state(), s.mesh);
-  s.run("local snap = m:snapshot()\n"                  // 1
-        "m:split(m:edge(0))\n"                          // 2
-        "m:vertex(0).position = {0, 0, 1}\n"            // 3
-        "m:flip(m:edge(2))\n"                           // 4 (refused or not: only accepted ones are recorded)
-        "m:restore(snap)\n"                             // 5
-        "m:undo()\n"                                    // 6
-        "m:delete(m:halfedge(0))\n"                     // 7
-        "m:loop_subdivide()\n",                         // 8 (refused: the mesh is broken now)
-        "ops.lua");
+  s.run(
+      "local snap = m:snapshot()\n"         // 1
+      "m:split(m:edge(0))\n"                // 2
+      "m:vertex(0).position = {0, 0, 1}\n"  // 3
+      "m:flip(m:edge(2))\n"                 // 4 (refused or not: only accepted ones are recorded)
+      "m:restore(snap)\n"                   // 5
+      "m:undo()\n"                          // 6
+      "m:delete(m:halfedge(0))\n"           // 7
+      "m:loop_subdivide()\n",               // 8 (refused: the mesh is broken now)
+      "ops.lua");
   recorder.stop();
   std::vector<std::string> seen;
   for (const RecordedEdit& edit : recorder.edits()) seen.push_back(describe(edit) + " @" + edit.where);
@@ -298,9 +311,10 @@ TEST(EditRecorder, WatchesOnlyItsMeshAndStopsWhenAsked) {
   MeshScript s(make_grid(1, 1));
   EditRecorder recorder(s.lua.state(), s.mesh, {.keep_before = false, .max_edits = 100});
   EXPECT_FALSE(recorder.before());
-  s.run("local scratch = m:copy()\nscratch:halfedge(0).twin = nil\nm:halfedge(1).twin = nil\n"
-        "co = coroutine.wrap(function()\n  m:halfedge(2).twin = nil\n  coroutine.yield()\nend)\nco()",
-        "dir/sub/w.lua");
+  s.run(
+      "local scratch = m:copy()\nscratch:halfedge(0).twin = nil\nm:halfedge(1).twin = nil\n"
+      "co = coroutine.wrap(function()\n  m:halfedge(2).twin = nil\n  coroutine.yield()\nend)\nco()",
+      "dir/sub/w.lua");
   ASSERT_EQ(recorder.edits().size(), 2u);
   EXPECT_EQ(describe(recorder.edits()[0]),
             "h1.twin = - (was " + format_id(build_halfedge_mesh(make_grid(1, 1)).twin(HalfedgeId(1))) + ")");

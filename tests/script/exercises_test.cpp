@@ -246,7 +246,7 @@ TEST(Exercises, UpsampleSolutionIsIdenticalIncludingTheTeapot) {
   inputs.push_back(teapot(3));
   for (const Mesh& mesh : inputs) expect_identical(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh));
   // Twice in a row (the second input has the first one's ids).
-  const ExerciseReport once = 
+  const ExerciseReport once =
       check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_cube())));
   expect_identical(*code, Exercise::Upsample, ExerciseInput::whole_mesh(once.mine.mesh));
 }
@@ -273,19 +273,21 @@ TEST(Exercises, CurveStepDroppingTheLastPoint) {
   const ExerciseReport r = check_exercise(*code, Exercise::CurveStep, ExerciseInput::curve_step(curves()[0], 0.3));
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
-  EXPECT_EQ(r.differences[0], "point 3 of the step is missing (got 2 points, expected 3): n points give n - 1, so "
-                              "the loop runs i = 1, ..., n - 1");
+  EXPECT_EQ(r.differences[0],
+            "point 3 of the step is missing (got 2 points, expected 3): n points give n - 1, so "
+            "the loop runs i = 1, ..., n - 1");
   EXPECT_EQ(r.total_differences, 1u) << text_of(r);
 }
 
 TEST(Exercises, CurveStepWithSwappedWeights) {
-  auto code = variant(Exercise::CurveStep, {{"(1 - t) * points[i] + t * points[i + 1]",
-                                             "t * points[i] + (1 - t) * points[i + 1]"}});
+  auto code = variant(Exercise::CurveStep,
+                      {{"(1 - t) * points[i] + t * points[i + 1]", "t * points[i] + (1 - t) * points[i + 1]"}});
   const ExerciseReport r = check_exercise(*code, Exercise::CurveStep, ExerciseInput::curve_step(curves()[0], 0.3));
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
-  EXPECT_EQ(r.differences[0], "the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), "
-                              "and yours are t * p_i + (1 - t) * p_(i+1)");
+  EXPECT_EQ(r.differences[0],
+            "the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), "
+            "and yours are t * p_i + (1 - t) * p_(i+1)");
   EXPECT_TRUE(starts_with(r.differences[1], "point 1 is (")) << text_of(r);
   // At t = 0.5 the swap cannot be seen, and is not reported.
   EXPECT_TRUE(check_exercise(*code, Exercise::CurveStep, ExerciseInput::curve_step(curves()[0], 0.5)).equal);
@@ -295,8 +297,9 @@ TEST(Exercises, CurveStepReturningTooMany) {
   auto code = from_text("curve.lua", "function evaluate_step(points, t) return points end");
   const ExerciseReport r = check_exercise(*code, Exercise::CurveStep, ExerciseInput::curve_step(curves()[0], 0.3));
   ASSERT_FALSE(r.differences.empty());
-  EXPECT_EQ(r.differences[0], "the step has 4 points, expected 3: one step turns n points into n - 1 (yours has as "
-                              "many as it was given)");
+  EXPECT_EQ(r.differences[0],
+            "the step has 4 points, expected 3: one step turns n points into n - 1 (yours has as "
+            "many as it was given)");
 }
 
 TEST(Exercises, PatchWithColumnsFirst) {
@@ -327,7 +330,7 @@ TEST(Exercises, NormalsAveragingUnitFaceNormals) {
   uneven.add_face({0, 2, 3});
   uneven.add_face({0, 3, 4});
   uneven.add_face({0, 4, 1});
-  const ExerciseReport r = 
+  const ExerciseReport r =
       check_exercise(*code, Exercise::VertexNormal, ExerciseInput::vertex(mesh_of(uneven), VertexId(0)));
   EXPECT_FALSE(r.equal);
   ASSERT_EQ(r.differences.size(), 1u) << text_of(r);
@@ -343,7 +346,7 @@ TEST(Exercises, NormalsInwardsAndNotNormalised) {
   ASSERT_FALSE(r.differences.empty());
   EXPECT_NE(r.differences[0].find("points inwards"), std::string::npos) << text_of(r);
   auto unnormalised = variant(Exercise::VertexNormal, {{"return sum:normalized()", "return sum"}});
-  const ExerciseReport s = 
+  const ExerciseReport s =
       check_exercise(*unnormalised, Exercise::VertexNormal, ExerciseInput::vertex(ico, VertexId(4)));
   ASSERT_FALSE(s.differences.empty());
   EXPECT_NE(s.differences[0].find("points the right way but has length"), std::string::npos) << text_of(s);
@@ -389,17 +392,15 @@ TEST(Exercises, FlipForgettingTheVerticesHalfedge) {
   ASSERT_FALSE(r.differences.empty());
   const std::string h0 = format_id(cube->halfedge(e));
   EXPECT_TRUE(starts_with(r.differences[0], "after your flip_edge the mesh is not valid (")) << text_of(r);
-  EXPECT_NE(r.differences[0].find(format_id(a) + ".halfedge is " + h0 + ", but " + h0 + " leaves v"),
-            std::string::npos)
+  EXPECT_NE(r.differences[0].find(format_id(a) + ".halfedge is " + h0 + ", but " + h0 + " leaves v"), std::string::npos)
       << text_of(r);
 }
 
 TEST(Exercises, FlipOfABoundaryEdge) {
-  auto code = variant(Exercise::FlipEdge,
-                      {{"  if f0:is_boundary() or f1:is_boundary() then return nil end\n", ""},
-                       {"  if f0:degree() ~= 3 or f1:degree() ~= 3 then return nil end\n", ""},
-                       {"  if c == d then return nil end\n", ""},
-                       {"    if w == d then return nil end  -- c-d is already an edge\n", ""}});
+  auto code = variant(Exercise::FlipEdge, {{"  if f0:is_boundary() or f1:is_boundary() then return nil end\n", ""},
+                                           {"  if f0:degree() ~= 3 or f1:degree() ~= 3 then return nil end\n", ""},
+                                           {"  if c == d then return nil end\n", ""},
+                                           {"    if w == d then return nil end  -- c-d is already an edge\n", ""}});
   const Mesh grid = mesh_of(make_grid(3, 2));
   EdgeId boundary;
   for (EdgeId e : grid->edges()) {
@@ -444,7 +445,7 @@ function flip_edge(mesh, e)
   return e
 end
 )lua");
-  const ExerciseReport r = 
+  const ExerciseReport r =
       check_exercise(*code, Exercise::FlipEdge, ExerciseInput::edge(mesh_of(make_cube()), EdgeId(3)));
   EXPECT_TRUE(r.equal) << text_of(r);
   EXPECT_FALSE(r.identical);
@@ -453,9 +454,9 @@ end
 }
 
 TEST(Exercises, SplitAtTheAverageOfTheFourCorners) {
-  auto code = variant(Exercise::SplitEdge,
-                      {{"mesh:new_vertex((a.position + b.position) * 0.5)",
-                        "mesh:new_vertex((a.position + b.position + c.position + d.position) * 0.25)"}});
+  auto code =
+      variant(Exercise::SplitEdge, {{"mesh:new_vertex((a.position + b.position) * 0.5)",
+                                     "mesh:new_vertex((a.position + b.position + c.position + d.position) * 0.25)"}});
   const Mesh ico = mesh_of(make_icosahedron());
   const ExerciseReport r = check_exercise(*code, Exercise::SplitEdge, ExerciseInput::edge(ico, EdgeId(7)));
   EXPECT_FALSE(r.equal);
@@ -482,7 +483,7 @@ TEST(Exercises, SplitWithAWrongFaceOnANewHalfedge) {
 
 TEST(Exercises, SplitWhoseVertexPointsAcross) {
   auto code = variant(Exercise::SplitEdge, {{"  m.halfedge = n1\n", "  m.halfedge = n2\n"}});
-  const ExerciseReport r = 
+  const ExerciseReport r =
       check_exercise(*code, Exercise::SplitEdge, ExerciseInput::edge(mesh_of(make_cube()), EdgeId(2)));
   EXPECT_FALSE(r.equal);
   ASSERT_EQ(r.differences.size(), 1u) << text_of(r);
@@ -497,15 +498,17 @@ TEST(Exercises, SplitIgnoringBoundaryEdgesIsToldTheReferenceSplitsThem) {
   const Mesh grid = mesh_of(make_grid(1, 1));
   const ExerciseReport r = check_exercise(*code, Exercise::SplitEdge, ExerciseInput::edge(grid, EdgeId(0)));
   ASSERT_FALSE(r.differences.empty());
-  EXPECT_EQ(r.differences[0], "your split_edge changed nothing and returned nil; the reference splits e0 at its "
-                              "midpoint (0.5, 0, 0) (a boundary edge: only the triangle side is split; extra credit "
-                              "in the course)");
+  EXPECT_EQ(r.differences[0],
+            "your split_edge changed nothing and returned nil; the reference splits e0 at its "
+            "midpoint (0.5, 0, 0) (a boundary edge: only the triangle side is split; extra credit "
+            "in the course)");
 }
 
 TEST(Exercises, UpsampleFlippingWithOneEndpointCheck) {
-  auto code = variant(Exercise::Upsample, {{"if (is_new[x.id] == true) ~= (is_new[y.id] == true) then",
-                                            "if is_new[x.id] or is_new[y.id] then"}});
-  const ExerciseReport r = 
+  auto code =
+      variant(Exercise::Upsample,
+              {{"if (is_new[x.id] == true) ~= (is_new[y.id] == true) then", "if is_new[x.id] or is_new[y.id] then"}});
+  const ExerciseReport r =
       check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
@@ -513,8 +516,7 @@ TEST(Exercises, UpsampleFlippingWithOneEndpointCheck) {
   // subdivision has.
   EXPECT_NE(r.differences[0].find(" of your edges join two original vertices, e.g. e"), std::string::npos)
       << text_of(r);
-  EXPECT_NE(r.differences[0].find("a new edge whose ends were both new was flipped"), std::string::npos)
-      << text_of(r);
+  EXPECT_NE(r.differences[0].find("a new edge whose ends were both new was flipped"), std::string::npos) << text_of(r);
 }
 
 TEST(Exercises, UpsampleNotFlippingAtAll) {
@@ -523,21 +525,23 @@ TEST(Exercises, UpsampleNotFlippingAtAll) {
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
   // The cube: 18 edges, 12 faces; each face's cross edge that should have been flipped stays.
-  EXPECT_TRUE(starts_with(r.differences[0], "12 of your edges join an original and a new vertex where the reference "
-                                            "has none, e.g. e"))
+  EXPECT_TRUE(starts_with(r.differences[0],
+                          "12 of your edges join an original and a new vertex where the reference "
+                          "has none, e.g. e"))
       << text_of(r);
 }
 
 TEST(Exercises, UpsampleWithIntegerDivision) {
-  auto code = variant(Exercise::Upsample,
-                      {{"(n == 3) and 3 / 16 or 3 / (8 * n)", "(n == 3) and 3 // 16 or 3 // (8 * n)"},
-                       {"3 / 8 * (a + b) + 1 / 8 * (c + d)", "3 // 8 * (a + b) + 1 // 8 * (c + d)"}});
-  const ExerciseReport r = 
+  auto code =
+      variant(Exercise::Upsample, {{"(n == 3) and 3 / 16 or 3 / (8 * n)", "(n == 3) and 3 // 16 or 3 // (8 * n)"},
+                                   {"3 / 8 * (a + b) + 1 / 8 * (c + d)", "3 // 8 * (a + b) + 1 // 8 * (c + d)"}});
+  const ExerciseReport r =
       check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
   EXPECT_FALSE(r.equal);
   ASSERT_GE(r.differences.size(), 2u) << text_of(r);
-  EXPECT_EQ(r.differences[0], "30 of your vertices are at (0, 0, 0): a weight that should not be zero is (in Lua "
-                              "3 // 8 is 0, an integer division; write 3 / 8)");
+  EXPECT_EQ(r.differences[0],
+            "30 of your vertices are at (0, 0, 0): a weight that should not be zero is (in Lua "
+            "3 // 8 is 0, an integer division; write 3 / 8)");
   EXPECT_TRUE(starts_with(r.differences[1], "12 of the 12 original vertices kept their old positions")) << text_of(r);
 }
 
@@ -580,9 +584,10 @@ TEST(Exercises, UpsampleSplittingNewEdgesNeverEnds) {
 
 TEST(Exercises, FunctionsMayComeFromTheReturnedTableOrGlobals) {
   const auto input = ExerciseInput::curve_step(curves()[0], 0.3);
-  auto table_only = from_text("curve.lua", "local function step(points, t) local r = {} for i = 1, #points - 1 do "
-                                           "r[i] = (1 - t) * points[i] + t * points[i + 1] end return r end "
-                                           "return { evaluate_step = step }");
+  auto table_only = from_text("curve.lua",
+                              "local function step(points, t) local r = {} for i = 1, #points - 1 do "
+                              "r[i] = (1 - t) * points[i] + t * points[i + 1] end return r end "
+                              "return { evaluate_step = step }");
   EXPECT_TRUE(check_exercise(*table_only, Exercise::CurveStep, input).identical);
   lua_State* L = table_only->runtime().state();
   EXPECT_EQ(lua_getglobal(L, "evaluate_step"), LUA_TNIL);
@@ -623,9 +628,10 @@ TEST(Exercises, LoadErrorsNameTheFileAndLine) {
 }
 
 TEST(Exercises, ErrorsDuringTheCallBecomeTheFirstDifference) {
-  auto code = from_text("flip.lua", "function flip_edge(mesh, e)\n  local h = e.halfedge.next.next.next.face\n"
-                                    "  return h.nothing.twin\nend\n");
-  const ExerciseReport r = 
+  auto code = from_text("flip.lua",
+                        "function flip_edge(mesh, e)\n  local h = e.halfedge.next.next.next.face\n"
+                        "  return h.nothing.twin\nend\n");
+  const ExerciseReport r =
       check_exercise(*code, Exercise::FlipEdge, ExerciseInput::edge(mesh_of(make_cube()), EdgeId(0)));
   EXPECT_FALSE(r.mine.ran);
   ASSERT_FALSE(r.differences.empty());
@@ -637,8 +643,8 @@ TEST(Exercises, ErrorsDuringTheCallBecomeTheFirstDifference) {
                            "function vertex_normal(v)\n  local h = v.halfedge\n"
                            "  repeat pcall(function() h = h.next end) until false\nend\n",
                            limits);
-  const ExerciseReport s = check_exercise(*endless, Exercise::VertexNormal,
-                                          ExerciseInput::vertex(mesh_of(make_cube()), VertexId(0)));
+  const ExerciseReport s =
+      check_exercise(*endless, Exercise::VertexNormal, ExerciseInput::vertex(mesh_of(make_cube()), VertexId(0)));
   ASSERT_EQ(s.differences.size(), 2u) << text_of(s);
   EXPECT_NE(s.differences[0].find("instruction budget exceeded"), std::string::npos);
   EXPECT_TRUE(starts_with(s.differences[1], "it did not finish: a walk like"));
@@ -671,7 +677,7 @@ TEST(Exercises, ACapStopsTheRunButTheSameWordsRaisedByTheScriptDoNot) {
 TEST(Exercises, NormalThatChangesTheMeshIsReported) {
   auto code = variant(Exercise::VertexNormal,
                       {{"  return sum:normalized()", "  v.position = v.position * 2\n  return sum:normalized()"}});
-  const ExerciseReport r = 
+  const ExerciseReport r =
       check_exercise(*code, Exercise::VertexNormal, ExerciseInput::vertex(mesh_of(make_cube()), VertexId(1)));
   EXPECT_FALSE(r.equal);
   ASSERT_EQ(r.differences.size(), 1u) << text_of(r);

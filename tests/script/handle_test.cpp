@@ -88,8 +88,8 @@ TEST(Handles, KeysAreUnderstoodHoweverTheStringWasMade) {
   EXPECT_EQ(s.run("local h = m:halfedge(0) local k = 'ne' .. 'xt' "
                   "return tostring(h[k]), tostring(h[('TWIN'):lower()]), h[string.rep('i', 1) .. 'd'], "
                   "h.vertex:degree(), h[table.concat({'is', 'boundary'}, '_')](h)"),
-            (Strings{"h1", format_id(s.mesh->twin(HalfedgeId(0))), "0",
-                     std::to_string(s.mesh->degree(VertexId(0))), "false"}));
+            (Strings{"h1", format_id(s.mesh->twin(HalfedgeId(0))), "0", std::to_string(s.mesh->degree(VertexId(0))),
+                     "false"}));
   EXPECT_EQ(s.run("local h = m:halfedge(0) local k = 'ne' .. 'xt' h[k] = h.next return tostring(h.next)"),
             Strings{"h1"});
   EXPECT_EQ(s.error("return m:halfedge(0)[1]"), "t.lua:1: h0 has no field '1'");

@@ -42,8 +42,9 @@ TEST(HistoryBindings, DiffMatchesTheCoreDiff) {
   const EdgeId e = interior_edge(start);
   s.run("m:flip(m:edge(" + std::to_string(e.index) + "))");
   EXPECT_EQ(s.run(std::string(kDiffText) + "return text(m:diff(snap))"), Strings{core_text(start, *s.mesh)});
-  s.run("m:split(m:edge(0))\nlocal h = m:halfedge(1)\nh.next = h\nm:delete(m:vertex(3))\n"
-        "m:vertex(0).position = {0.1, -0.0, 1e100}");
+  s.run(
+      "m:split(m:edge(0))\nlocal h = m:halfedge(1)\nh.next = h\nm:delete(m:vertex(3))\n"
+      "m:vertex(0).position = {0.1, -0.0, 1e100}");
   const std::string expected = core_text(start, *s.mesh);
   EXPECT_NE(expected.find("v4.alive:-->alive"), std::string::npos) << expected;
   EXPECT_NE(expected.find("h1.next:"), std::string::npos) << expected;

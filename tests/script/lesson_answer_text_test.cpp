@@ -31,9 +31,9 @@ TEST(LessonAnswerText, RefusesAnythingElseWhole) {
   EXPECT_FALSE(parse_answer_text("nan", 1));
   EXPECT_FALSE(parse_answer_text("0x10", 1));
   EXPECT_FALSE(parse_answer_text("1e999", 1));
-  EXPECT_FALSE(parse_answer_text("0.5", 2));       // too few
-  EXPECT_FALSE(parse_answer_text("1, 2, 3", 2));   // too many
-  EXPECT_FALSE(parse_answer_text("(1, 2", 2));     // an unclosed bracket is not a number
+  EXPECT_FALSE(parse_answer_text("0.5", 2));      // too few
+  EXPECT_FALSE(parse_answer_text("1, 2, 3", 2));  // too many
+  EXPECT_FALSE(parse_answer_text("(1, 2", 2));    // an unclosed bracket is not a number
 }
 
 TEST(LessonAnswerText, SaysHowToWriteEachKind) {

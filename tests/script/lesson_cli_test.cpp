@@ -38,8 +38,8 @@ TEST(CliLesson, TheWelcomeLessonPassesHeadlessWithItsAnswers) {
   const auto source = testing::source_dir();
   const auto lesson = source / "lessons" / "welcome.lua";
   const auto answers = source / "tests" / "script" / "lessons" / "welcome_answers.lua";
-  const Outcome o = run_meshedit(testing::scratch_dir(), "lesson '" + lesson.string() + "' --headless --answers '" +
-                                                             answers.string() + "'");
+  const Outcome o = run_meshedit(testing::scratch_dir(),
+                                 "lesson '" + lesson.string() + "' --headless --answers '" + answers.string() + "'");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.err, "");
   EXPECT_EQ(o.out.rfind("Welcome to MeshEdit (welcome.lua, 5 steps)\n", 0), 0u) << o.out;
@@ -59,8 +59,9 @@ TEST(CliLesson, AWaitWithoutAnswerExitsOneNamingFileLineAndStep) {
   const Outcome o = run_meshedit(dir, "lesson lesson.lua --headless");
   EXPECT_EQ(o.status, 1);
   EXPECT_EQ(o.err, "meshedit: lesson.lua:3: step 2 'Flip it': waiting for key F (no scripted answer)\n");
-  EXPECT_EQ(o.out, "lesson (lesson.lua, 2 steps)\n\nstep 1/2: Look\n  A cube.\n  done\n\nstep 2/2: Flip it\n\n"
-                   "1 of 2 steps passed\n");
+  EXPECT_EQ(o.out,
+            "lesson (lesson.lua, 2 steps)\n\nstep 1/2: Look\n  A cube.\n  done\n\nstep 2/2: Flip it\n\n"
+            "1 of 2 steps passed\n");
 }
 
 TEST(CliLesson, TheAskingDemoNamesEachMistakeAndAWrongExpectationExitsOne) {
@@ -85,10 +86,11 @@ TEST(CliLesson, TheAskingDemoNamesEachMistakeAndAWrongExpectationExitsOne) {
   const Outcome wrong =
       run_meshedit(dir, "lesson '" + (lessons / "asking_demo.lua").string() + "' --headless --answers wrong.lua");
   EXPECT_EQ(wrong.status, 1);
-  EXPECT_EQ(wrong.err,
-            "meshedit: asking_demo.lua:15: step 1 'Choose': answer choose = \"h6\" should be judged wrong with "
-            "feedback containing 'before the flip', but its feedback was 'h6 is h0's twin on the boundary: it is in no face, "
-            "and h1 keeps its face.'\n");
+  EXPECT_EQ(
+      wrong.err,
+      "meshedit: asking_demo.lua:15: step 1 'Choose': answer choose = \"h6\" should be judged wrong with "
+      "feedback containing 'before the flip', but its feedback was 'h6 is h0's twin on the boundary: it is in no face, "
+      "and h1 keeps its face.'\n");
 }
 
 TEST(CliLesson, WithoutHeadlessItPointsToTheWindow) {

@@ -47,7 +47,8 @@ step("No curve", function()
   show(grid)
   live(function() return tostring(curve_t()) .. " " .. tostring(curve_points()) end)
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.lives().size(), 1u) << runner.error();
   EXPECT_EQ(runner.lives()[0].text, "selected: nil");  // evaluated when live() ran
   EXPECT_EQ(runner.lives()[0].where, "lesson.lua:5");
@@ -86,7 +87,8 @@ step("Live errors", function()
   wait_for { button = "Continue" }
   say("still running")
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.lives().size(), 3u) << runner.error();
   EXPECT_EQ(runner.lives()[0].text, "calls 1");
   EXPECT_EQ(runner.lives()[1].error,
@@ -120,7 +122,8 @@ TEST(LessonDisplays, ARunawayLiveBlockStopsAtItsOwnBudgetAndTheStepGoesOn) {
   wait_for { button = "Continue" }
   say("after")
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   EXPECT_EQ(runner.lives().at(0).text, "idle");
   host.set_selection(ElementRef(VertexId(0)));
   runner.update(0.016);
@@ -145,19 +148,20 @@ end)
 step("None", function() end)
 step("Bad", function() arrow({0, 0, 0}) end)
 step("Bad colour", function() arrow({0, 0, 0}, {1, 1, 1}, "teal") end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
-  EXPECT_EQ(host.calls(), (Strings{"clear_annotations",
-                                   "arrow (0, 0, 0) -> (0, 0, 1) " + colour_hex(kDarkSwatches.blue),
-                                   "arrow (1, 2, 3) -> (1, 2, 4) " +
-                                       colour_hex(palette_for(Theme::Dark).lesson_highlight)}));
+  EXPECT_EQ(host.calls(),
+            (Strings{"clear_annotations", "arrow (0, 0, 0) -> (0, 0, 1) " + colour_hex(kDarkSwatches.blue),
+                     "arrow (1, 2, 3) -> (1, 2, 4) " + colour_hex(palette_for(Theme::Dark).lesson_highlight)}));
   ASSERT_EQ(host.arrows().size(), 2u);
   EXPECT_EQ(host.arrows()[1].to, glm::dvec3(1, 2, 4));
   runner.next();
   EXPECT_TRUE(host.arrows().empty());
   runner.next();
-  EXPECT_EQ(runner.error(), "lesson.lua:6: arrow: the second (where it points) point must be {x, y, z} or a vec3 of "
-                            "finite numbers, got no value");
+  EXPECT_EQ(runner.error(),
+            "lesson.lua:6: arrow: the second (where it points) point must be {x, y, z} or a vec3 of "
+            "finite numbers, got no value");
   runner.next();
   EXPECT_EQ(runner.error().rfind("lesson.lua:7: unknown colour 'teal'", 0), 0u) << runner.error();
 }
@@ -178,7 +182,8 @@ step("Plot", function()
   }
   say("sampled " .. calls)
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.plots().size(), 1u) << runner.error();
   const LessonPlot& plot = runner.plots()[0];
   EXPECT_EQ(plot.title, "Bernstein weights");
@@ -218,7 +223,8 @@ step("4", function() plot { curves = { ok }, marker = 3 } end)
 step("5", function() plot { curves = { ok }, colour = "red" } end)
 step("6", function() plot { curves = { ok }, marker = function() return "left" end } say("goes on") end)
 step("7", function() plot { curves = { { fn = ok.fn, width = 2 } } } end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   const Strings expected = {
       "lesson.lua:2: plot: curves must be a list like {{label = \"B0\", fn = function(x) ... end}, ...}",
       "lesson.lua:3: plot: x must be two increasing numbers like {0, 1}",
@@ -234,8 +240,7 @@ step("7", function() plot { curves = { { fn = ok.fn, width = 2 } } } end)
   }
   runner.go_to(5);  // a marker's error stops the marker, not the step
   EXPECT_EQ(runner.step_state(), State::Finished);
-  EXPECT_EQ(runner.plots().at(0).error,
-            "lesson.lua:7: plot: the marker must return a number or nil, got string");
+  EXPECT_EQ(runner.plots().at(0).error, "lesson.lua:7: plot: the marker must return a number or nil, got string");
   EXPECT_EQ(runner.said(), Strings{"goes on"});
 }
 

@@ -69,8 +69,8 @@ TEST(LessonHeadless, ScriptedEditsChangeTheMeshTheLessonReads) {
   HalfedgeMesh cube = build_halfedge_mesh(make_cube());
   ASSERT_TRUE(flip(cube, EdgeId(7)).ok());
   const HalfedgeId h = cube.halfedge(EdgeId(7));
-  const std::string expected = "  e7 now joins " + format_id(cube.vertex(h)) + " and " +
-                               format_id(cube.vertex(cube.twin(h))) + "\n";
+  const std::string expected =
+      "  e7 now joins " + format_id(cube.vertex(h)) + " and " + format_id(cube.vertex(cube.twin(h))) + "\n";
   EXPECT_TRUE(contains(out.str(), "  > selection e7\n  > flip e7\n  > key F\n" + expected)) << out.str();
 }
 
@@ -81,7 +81,8 @@ TEST(LessonHeadless, AWaitWithoutAnswerFailsNamingFileLineAndStep) {
 step("Flip it", function()
   wait_for { key = "F" }
 end)
-)lua"), std::nullopt, out);
+)lua"),
+                                                      std::nullopt, out);
   EXPECT_EQ(outcome.failure, "lesson.lua:3: step 2 'Flip it': waiting for key F (no scripted answer)");
   EXPECT_EQ(outcome.passed, 1u);
   EXPECT_EQ(outcome.steps, 2u);
@@ -91,7 +92,8 @@ end)
 TEST(LessonHeadless, WaitsThatNeedNoAnswerGoOnByThemselves) {
   const auto dir = testing::scratch_dir();
   std::ostringstream out;
-  const HeadlessOutcome outcome = run_lesson_headless(write_file(dir, "lesson.lua", R"lua(step("Auto", function()
+  const HeadlessOutcome outcome = run_lesson_headless(
+      write_file(dir, "lesson.lua", R"lua(step("Auto", function()
   wait_for { button = "Continue" }
   wait_for { condition = function() return true end }
   animate(2, function(t) end)
@@ -100,7 +102,8 @@ end)
 step("Stray answers", function()
   wait_for { key = "F" }
 end)
-)lua"), write_file(dir, "answers.lua", "return { [2] = { {key = 'X'}, {key = 'F'} }, [1] = {} }\n"), out);
+)lua"),
+      write_file(dir, "answers.lua", "return { [2] = { {key = 'X'}, {key = 'F'} }, [1] = {} }\n"), out);
   EXPECT_EQ(outcome.failure, "") << out.str();
   EXPECT_TRUE(contains(out.str(), "  > button Continue (pressed)\n  through\n  done\n")) << out.str();
   EXPECT_TRUE(contains(out.str(), "  > key X (not awaited: the step waits for key F)\n  > key F\n")) << out.str();
@@ -115,7 +118,8 @@ TEST(LessonHeadless, ALuaErrorInAStepFailsWithItsLine) {
   local m = meshedit.cube()
   m:nonsense()
 end)
-)lua"), std::nullopt, out);
+)lua"),
+                                                      std::nullopt, out);
   EXPECT_EQ(outcome.failure.rfind("lesson.lua:4: step 1 'Broken': ", 0), 0u) << outcome.failure;
   EXPECT_EQ(outcome.passed, 0u);
 }
@@ -208,12 +212,12 @@ std::string core_after(int phases) {
 TEST(LessonHeadless, LoopPhaseAnswersStepThroughTheCoresFourPhases) {
   const auto dir = testing::scratch_dir();
   std::ostringstream out;
-  const HeadlessOutcome outcome = run_lesson_headless(
-      write_file(dir, "phases.lua", kPhaseLesson),
-      write_file(dir, "answers.lua",
-                 "local p = { {loop_phase = true}, {key = 'shift+L'} }\n"
-                 "return { { p[1], p[2], p[1], p[2], p[1], p[2], p[1], p[2] } }\n"),
-      out);
+  const HeadlessOutcome outcome =
+      run_lesson_headless(write_file(dir, "phases.lua", kPhaseLesson),
+                          write_file(dir, "answers.lua",
+                                     "local p = { {loop_phase = true}, {key = 'shift+L'} }\n"
+                                     "return { { p[1], p[2], p[1], p[2], p[1], p[2], p[1], p[2] } }\n"),
+                          out);
   ASSERT_EQ(outcome.failure, "") << out.str();
   const std::string text = out.str();
   size_t at = 0;  // each phase, its key and what the lesson saw, in order
@@ -221,7 +225,8 @@ TEST(LessonHeadless, LoopPhaseAnswersStepThroughTheCoresFourPhases) {
     static const char* const names[] = {"", "compute new positions", "split every original edge",
                                         "flip new edges joining an old and a new vertex",
                                         "move every vertex to its new position"};
-    const std::string answer = "  > loop phase " + std::to_string(phase) + "/4: " + names[phase] + "\n  > key shift+L\n";
+    const std::string answer =
+        "  > loop phase " + std::to_string(phase) + "/4: " + names[phase] + "\n  > key shift+L\n";
     at = text.find(answer, at);
     ASSERT_NE(at, std::string::npos) << answer << text;
     at = text.find("  " + core_after(phase) + "\n", at);
@@ -239,16 +244,18 @@ TEST(LessonHeadless, AnEditBetweenLoopPhasesStartsThemAgain) {
   // Phases 1 and 2, then a flip: the next loop_phase is phase 1 of the flipped mesh, and it changes nothing.
   const HeadlessOutcome outcome = run_lesson_headless(
       write_file(dir, "phases.lua", kPhaseLesson),
-      write_file(dir, "answers.lua",
-                 "return { { {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'},\n"
-                 "  {flip = 'e30'}, {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'} } }\n"),
+      write_file(
+          dir, "answers.lua",
+          "return { { {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'},\n"
+          "  {flip = 'e30'}, {loop_phase = true}, {key = 'shift+L'}, {loop_phase = true}, {key = 'shift+L'} } }\n"),
       out);
   ASSERT_EQ(outcome.failure, "") << out.str();
   const std::string text = out.str();
-  EXPECT_TRUE(contains(text, "  > flip e30\n  (the mesh changed after Loop phase 2; starting again)\n"
-                             "  > loop phase 1/4: compute new positions\n"))
+  EXPECT_TRUE(contains(text,
+                       "  > flip e30\n  (the mesh changed after Loop phase 2; starting again)\n"
+                       "  > loop phase 1/4: compute new positions\n"))
       << text;
-  EXPECT_TRUE(contains(text, "after 3: 26 72 48")) << text;  // phase 1 of the new run: still the split cube's counts
+  EXPECT_TRUE(contains(text, "after 3: 26 72 48")) << text;    // phase 1 of the new run: still the split cube's counts
   EXPECT_TRUE(contains(text, "after 4: 98 288 192")) << text;  // its phase 2 splits the 72 edges of the flipped mesh
 }
 
@@ -266,22 +273,26 @@ TEST(LessonHeadlessQuestions, TheAskingDemoPassesNamingEachMistakeWithItsFeedbac
   const std::string text = out.str();
   EXPECT_EQ(outcome.failure, "");
   EXPECT_EQ(outcome.passed, 4u);
-  EXPECT_TRUE(contains(text, "  ? Which halfedge is h1.next after the flip? (h2 | h6 | h4)\n"
-                             "  > choose h2: wrong: h2 is h1.next now, before the flip: h2 lies along e2, and the flip "
-                             "moves e2.\n"
-                             "  hint: After a flip each face is one old outer halfedge, one more outer halfedge and "
-                             "the new diagonal.\n"
-                             "  > choose h6: wrong: h6 is h0's twin on the boundary: it is in no face, and h1 keeps "
-                             "its face.\n"
-                             "  > choose h4: right: After the flip h1 goes on to h4, the outer halfedge of the other "
-                             "triangle.\n")) << text;
+  EXPECT_TRUE(contains(text,
+                       "  ? Which halfedge is h1.next after the flip? (h2 | h6 | h4)\n"
+                       "  > choose h2: wrong: h2 is h1.next now, before the flip: h2 lies along e2, and the flip "
+                       "moves e2.\n"
+                       "  hint: After a flip each face is one old outer halfedge, one more outer halfedge and "
+                       "the new diagonal.\n"
+                       "  > choose h6: wrong: h6 is h0's twin on the boundary: it is in no face, and h1 keeps "
+                       "its face.\n"
+                       "  > choose h4: right: After the flip h1 goes on to h4, the outer halfedge of the other "
+                       "triangle.\n"))
+      << text;
   EXPECT_TRUE(contains(text, "  > click f0: wrong: That is a face: click one of the arrows inside the faces.\n"))
       << text;
   EXPECT_TRUE(contains(text, "  > click h4: right\n  You clicked h4.\n")) << text;
   EXPECT_TRUE(contains(text, "  [live] Selected: nothing. Each blue arrow is a face normal.\n")) << text;
   // The live text follows the curve's t when an answer moves it.
-  EXPECT_TRUE(contains(text, "  [live] t = 0.50, C(t) = (2.000, 1.500)\n"
-                             "  [plot Bernstein weights: B0, B1, B2, B3 for x from 0 to 1, marker at 0.5]\n")) << text;
+  EXPECT_TRUE(contains(text,
+                       "  [live] t = 0.50, C(t) = (2.000, 1.500)\n"
+                       "  [plot Bernstein weights: B0, B1, B2, B3 for x from 0 to 1, marker at 0.5]\n"))
+      << text;
   EXPECT_TRUE(contains(text, "  > curve t = 0.25\n  [live] t = 0.25, C(t) = (0.906, 1.125)\n")) << text;
   EXPECT_TRUE(contains(text, "  > answer three eighths: wrong: Type a number, like 0.25 or 3/8.\n")) << text;
   EXPECT_TRUE(contains(text, "  > answer 0.375: right\n  Yes: B1(0.5) = 0.375.\n")) << text;

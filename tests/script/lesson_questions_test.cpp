@@ -50,9 +50,9 @@ TEST(LessonQuestions, ChooseReturnsTheRightOptionAndAnswersEachWrongOne) {
   EXPECT_FALSE(wait.hint_shown());  // not before a try
   EXPECT_EQ(runner.judgements(), 0u);
 
-  EXPECT_FALSE(runner.deliver(LessonEvent::choice("h9")));   // not an option
-  EXPECT_FALSE(runner.deliver(LessonEvent::button("h4")));   // a button is not a choice
-  EXPECT_FALSE(runner.deliver(LessonEvent::value("h4")));    // nor is typed text
+  EXPECT_FALSE(runner.deliver(LessonEvent::choice("h9")));  // not an option
+  EXPECT_FALSE(runner.deliver(LessonEvent::button("h4")));  // a button is not a choice
+  EXPECT_FALSE(runner.deliver(LessonEvent::value("h4")));   // nor is typed text
   EXPECT_EQ(runner.judgements(), 0u);
 
   EXPECT_TRUE(runner.deliver(LessonEvent::choice("h2")));
@@ -128,7 +128,8 @@ step("Feedback function", function()
   show(grid)
   pick { "Click e2", answer = "e2", feedback = function(e) if e.kind == "edge" then return "another edge" end end }
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Pick) << runner.error();
   EXPECT_FALSE(runner.deliver(LessonEvent::selection(ElementRef(HalfedgeId(4)))));  // a pick takes clicks only
   EXPECT_TRUE(runner.deliver(LessonEvent::click(ElementRef(HalfedgeId(2)))));
@@ -172,7 +173,8 @@ step("Point", function()
   local p = answer { "Where is C(0.5)?", point = { 2, 1.5 }, tolerance = 0.01 }
   say(tostring(p))
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::Answer) << runner.error();
   EXPECT_EQ(runner.waiting_for().components, 1u);
   EXPECT_FALSE(runner.deliver(LessonEvent::choice("0.375")));
@@ -259,8 +261,9 @@ step("12", function() choose { "q", options = { "a", "a" }, answer = "a" } end)
 TEST(LessonQuestions, AQuestionAtTheTopLevelIsALoadError) {
   HeadlessHost host;
   LessonRunner runner(host);
-  EXPECT_FALSE(runner.load(write_lesson("choose { 'q', options = {'a', 'b'}, answer = 'a' }\n"
-                                        "step('A', function() end)\n")));
+  EXPECT_FALSE(
+      runner.load(write_lesson("choose { 'q', options = {'a', 'b'}, answer = 'a' }\n"
+                               "step('A', function() end)\n")));
   EXPECT_EQ(runner.error(),
             "lesson.lua:1: choose{} can only be used inside a step: step(\"title\", function() ... end)");
 }

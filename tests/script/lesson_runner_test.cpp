@@ -46,7 +46,8 @@ TEST(LessonRunner, RunsStepsInOrderAndKeepsWhatEachSaid) {
 step("One", function() say("first") say("**second**") end)
 step("Two", function() say("third") end)
 step("Three", function() say(3) end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   EXPECT_EQ(runner.title(), "Order");
   EXPECT_EQ(runner.summary(), "Three steps.");
   EXPECT_EQ(runner.step_titles(), (Strings{"One", "Two", "Three"}));
@@ -87,15 +88,16 @@ step("Scene", function()
   camera "fit"
   camera { yaw = 30, pitch = 20, distance = 4, target = {0, 0, 1} }
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
   // No colour: the palette's lesson highlight; a name: the palette's swatch; "#rrggbb" and {r, g, b}: as given.
   const std::string default_colour = colour_hex(palette_for(Theme::Dark).lesson_highlight);
-  EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "show_mesh (8 vertices, 18 edges, 12 faces)",
-                                   "highlight e7 " + default_colour,
-                                   "highlight v0 " + colour_hex(kDarkSwatches.vermillion), "highlight f1 #00ff80",
-                                   "highlight h3 #00ff80", "highlight e2 #0000ff", "label v0 \"apex\"", "camera fit",
-                                   "camera yaw=30 pitch=20 distance=4 target=(0, 0, 1)"}));
+  EXPECT_EQ(host.calls(),
+            (Strings{"clear_annotations", "show_mesh (8 vertices, 18 edges, 12 faces)",
+                     "highlight e7 " + default_colour, "highlight v0 " + colour_hex(kDarkSwatches.vermillion),
+                     "highlight f1 #00ff80", "highlight h3 #00ff80", "highlight e2 #0000ff", "label v0 \"apex\"",
+                     "camera fit", "camera yaw=30 pitch=20 distance=4 target=(0, 0, 1)"}));
   ASSERT_EQ(host.highlights().size(), 5u);
   EXPECT_EQ(host.highlights().at(ElementRef(EdgeId(7))), palette_for(Theme::Dark).lesson_highlight);
   EXPECT_EQ(host.labels().at(ElementRef(VertexId(0))), "apex");
@@ -120,9 +122,11 @@ end)
 step("Unknown part", function()
   view { arrows = true }
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   ASSERT_EQ(runner.step_state(), State::Finished) << runner.error();
-  EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "view halfedges=on labels=off", "view wireframe=off vertices=on"}));
+  EXPECT_EQ(host.calls(),
+            (Strings{"clear_annotations", "view halfedges=on labels=off", "view wireframe=off vertices=on"}));
   runner.next();
   EXPECT_EQ(runner.step_state(), State::Failed);
   EXPECT_NE(runner.error().find("view: halfedges must be true or false"), std::string::npos) << runner.error();
@@ -164,8 +168,7 @@ step("Bad patch", function() show({ { {0, 0, 0} } }) end)
 )lua")));
   ASSERT_EQ(runner.step_state(), State::Finished) << runner.error();
   ASSERT_TRUE(host.shown_curve());
-  EXPECT_EQ(host.shown_curve()->control_points,
-            (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {2, 2}, {3, 0}}));
+  EXPECT_EQ(host.shown_curve()->control_points, (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {2, 2}, {3, 0}}));
   runner.next();
   ASSERT_EQ(runner.step_state(), State::Finished) << runner.error();
   ASSERT_EQ(host.shown_patches().size(), 2u);

@@ -60,8 +60,8 @@ struct Lesson {
   size_t steps;
 };
 const std::vector<Lesson> kLessons = {
-    {"curve", "1_de_casteljau", 9},  {"patch", "2_bezier_patches", 6}, {"normals", "3_halfedge_walks", 7},
-    {"flip", "4_edge_flip", 6},      {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 11},
+    {"curve", "1_de_casteljau", 9}, {"patch", "2_bezier_patches", 6}, {"normals", "3_halfedge_walks", 7},
+    {"flip", "4_edge_flip", 6},     {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 11},
 };
 
 void PrintTo(const Lesson& lesson, std::ostream* out) { *out << lesson.stem; }
@@ -156,7 +156,7 @@ struct BuggyCase {
 };
 
 // The fixtures that are correct (for the lessons: boundary rules are extra credit, which no lesson requires).
-const std::set<std::string> kCorrect = {"flip_correct",         "split_correct",   "split_reordered",
+const std::set<std::string> kCorrect = {"flip_correct",           "split_correct",    "split_reordered",
                                         "split_without_boundary", "upsample_correct", "upsample_without_boundary"};
 
 const std::vector<BuggyCase>& buggy_cases() {
@@ -216,8 +216,8 @@ TEST_P(BuggyFixture, TheLessonNamesTheMistake) {
   EXPECT_TRUE(ends_with(o.out, passed_line(lesson))) << o.out;
 
   // The shipped answers expect the right answer: the buggy file fails the run at its step, quoting the diagnosis.
-  const std::string& first_wrong = *std::find_if(c.verdicts.begin(), c.verdicts.end(),
-                                                 [](const std::string& v) { return v != "right"; });
+  const std::string& first_wrong =
+      *std::find_if(c.verdicts.begin(), c.verdicts.end(), [](const std::string& v) { return v != "right"; });
   const Outcome failed = run_lesson(dir, lesson, shipped_answers(lesson), student);
   EXPECT_EQ(failed.status, 1) << failed.out;
   EXPECT_NE(failed.err.find(std::string(lesson.stem) + ".lua:"), std::string::npos) << failed.err;
@@ -228,7 +228,9 @@ TEST_P(BuggyFixture, TheLessonNamesTheMistake) {
 }
 
 INSTANTIATE_TEST_SUITE_P(Fixtures, BuggyFixture, ::testing::ValuesIn(buggy_cases()),
-                         [](const ::testing::TestParamInfo<BuggyCase>& fixture) { return std::string(fixture.param.fixture); });
+                         [](const ::testing::TestParamInfo<BuggyCase>& fixture) {
+                           return std::string(fixture.param.fixture);
+                         });
 
 TEST(LessonStudent, EveryBuggyFixtureHasALessonCase) {
   std::set<std::string> covered(kCorrect);
@@ -258,8 +260,7 @@ TEST(LessonStudent, AStudentFileThatFailsIsReportedAtItsLine) {
   fs::create_directories(dir / "broken");
   std::ofstream(dir / "broken" / "flip.lua") << "function flip_edge(mesh, e)\n  return e.halfedge.nope.twin\nend\n";
   const Lesson& lesson = lesson_of("flip");
-  const Outcome o = run_lesson(dir, lesson, answers_expecting(dir, lesson, {"flip.lua:2:"}),
-                               dir / "broken");
+  const Outcome o = run_lesson(dir, lesson, answers_expecting(dir, lesson, {"flip.lua:2:"}), dir / "broken");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_NE(o.out.find("  > your turn flip.lua: wrong: flip.lua:2: "), std::string::npos) << o.out;
 }

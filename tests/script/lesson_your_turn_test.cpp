@@ -137,8 +137,8 @@ TEST(LessonYourTurn, BadArgumentsFailTheStepAtTheLessonsLine) {
   LessonRunner runner(host);
   runner.set_student_folder(dir);
   const auto fails_with = [&](const std::string& call, const std::string& message) {
-    ASSERT_TRUE(runner.load(write(dir / "lesson.lua", "local m = meshedit.grid(1, 1)\nstep('S', function()\n  " + call +
-                                                          "\nend)\n")))
+    ASSERT_TRUE(runner.load(
+        write(dir / "lesson.lua", "local m = meshedit.grid(1, 1)\nstep('S', function()\n  " + call + "\nend)\n")))
         << runner.error();
     EXPECT_EQ(runner.step_state(), State::Failed) << call;
     EXPECT_EQ(runner.error(), message);

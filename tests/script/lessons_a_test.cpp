@@ -1,7 +1,8 @@
 // The lessons for parts 1-3 (lessons/1_de_casteljau.lua, 2_bezier_patches.lua, 3_halfedge_walks.lua): each
 // passes every step headless with its answers file and the correct solutions as the student's folder (each ends
 // with your_turn), says the numbers the core computes, names each likely wrong answer, and marks the elements its
-// walks really reach (checked against the core mesh's own pointers through HeadlessHost). Also lesson_file(), which the teapot lesson uses to find assets/teapot.bez.
+// walks really reach (checked against the core mesh's own pointers through HeadlessHost). Also lesson_file(), which the
+// teapot lesson uses to find assets/teapot.bez.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -59,27 +60,31 @@ TEST(LessonsA, DeCasteljauPassesEveryStep) {
   EXPECT_TRUE(contains(r.text, "- level 3: (0.90625, 1.125)")) << r.text;
   EXPECT_TRUE(contains(r.text, "Yes, C(0.25) = (0.90625, 1.125).")) << r.text;
   // Each wrong answer is told what it is (the answers file also checks the words).
-  EXPECT_TRUE(contains(r.text, "> answer 0.75, 1.5: wrong: (0.75, 1.5) is three quarters of the way: t and 1 - t "
-                               "swapped."))
+  EXPECT_TRUE(contains(r.text,
+                       "> answer 0.75, 1.5: wrong: (0.75, 1.5) is three quarters of the way: t and 1 - t "
+                       "swapped."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "> choose 4: wrong: 4 is level 1, after one step: off by one.")) << r.text;
   EXPECT_TRUE(contains(r.text, "> answer 2, 1: wrong: (2, 1) is the average of the four control points")) << r.text;
   // The split follows the view's t, and the first points of the levels are its left half.
-  EXPECT_TRUE(contains(r.text, "At t = 0.50: left (0, 0), (0.5, 1), (1.25, 1.5), (2, 1.5); right (2, 1.5), "
-                               "(2.75, 1.5), (3.5, 1), (4, 0). The first points of the levels are the left half."))
+  EXPECT_TRUE(contains(r.text,
+                       "At t = 0.50: left (0, 0), (0.5, 1), (1.25, 1.5), (2, 1.5); right (2, 1.5), "
+                       "(2.75, 1.5), (3.5, 1), (4, 0). The first points of the levels are the left half."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "  [live] At t = 0.30: left (0, 0), (0.3, 0.6)")) << r.text;
   EXPECT_FALSE(contains(r.text, "are NOT")) << r.text;
   EXPECT_TRUE(contains(r.text, "[plot Bernstein weights: B0, B1, B2, B3 for x from 0 to 1, marker at 0.5]")) << r.text;
   // The derivative: C'(0) = 3 (P1 - P0); the tangent from the level-2 points; the hodograph at 0.25.
   EXPECT_TRUE(contains(r.text, "> answer 3, 6: right")) << r.text;
-  EXPECT_TRUE(contains(r.text, "the level-2 points are (1.25, 1.5) and (2.75, 1.5): C'(t) = 3 x their difference = "
-                               "(4.5, 0)."))
+  EXPECT_TRUE(contains(r.text,
+                       "the level-2 points are (1.25, 1.5) and (2.75, 1.5): C'(t) = 3 x their difference = "
+                       "(4.5, 0)."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "= (3, 6), (6, 0), (3, -6).")) << r.text;
   EXPECT_TRUE(contains(r.text, "Yes: C'(0.25) = (4.125, 3)")) << r.text;
   // The last step runs the student's evaluate_step, then points to the view's own check and to the grader.
-  EXPECT_TRUE(contains(r.text, "> your turn curve.lua: right\n\n  Your evaluate_step gives the reference's level 1.")) << r.text;
+  EXPECT_TRUE(contains(r.text, "> your turn curve.lua: right\n\n  Your evaluate_step gives the reference's level 1."))
+      << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/curve.lua")) << r.text;
 }
 
@@ -88,8 +93,7 @@ TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndItsHodograph) {
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("1_de_casteljau"))) << runner.error();
   ASSERT_TRUE(host.shown_curve().has_value());
-  EXPECT_EQ(host.shown_curve()->control_points,
-            (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
+  EXPECT_EQ(host.shown_curve()->control_points, (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
   // "The hodograph": the derivative's control points, 3 times the differences of the cubic's.
   runner.go_to(7);
   ASSERT_EQ(runner.error(), "");
@@ -104,21 +108,26 @@ TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
   EXPECT_EQ(r.outcome.passed, 6u);
   // The hill at u = 0.25: rows 0 and 3 are flat (z 0), rows 1 and 2 reach z 1.125 at x 0.75; the column
   // (0, 1.125, 1.125, 0) at v = 0.5 is 0.84375.
-  EXPECT_TRUE(contains(r.text, "The four row points at u = 0.25 are (0.75, 0, 0), (0.75, 1, 1.125), (0.75, 2, 1.125), "
-                               "(0.75, 3, 0)."))
+  EXPECT_TRUE(contains(r.text,
+                       "The four row points at u = 0.25 are (0.75, 0, 0), (0.75, 1, 1.125), (0.75, 2, 1.125), "
+                       "(0.75, 3, 0)."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "Yes: P(0.25, 0.5) = (0.75, 1.5, 0.84375).")) << r.text;
   // u and v swapped, and rows and columns swapped, are named as such.
-  EXPECT_TRUE(contains(r.text, "> answer 1.5, 0.75, 0.84375: wrong: (1.5, 0.75, 0.84375) is P(0.5, 0.25): u and v "
-                               "swapped."))
+  EXPECT_TRUE(contains(r.text,
+                       "> answer 1.5, 0.75, 0.84375: wrong: (1.5, 0.75, 0.84375) is P(0.5, 0.25): u and v "
+                       "swapped."))
       << r.text;
-  EXPECT_TRUE(contains(r.text, "> choose 10: wrong: 10 = 2 * 4 + 1 + 1 is row 2, column 1: rows and columns "
-                               "swapped."))
+  EXPECT_TRUE(contains(r.text,
+                       "> choose 10: wrong: 10 = 2 * 4 + 1 + 1 is row 2, column 1: rows and columns "
+                       "swapped."))
       << r.text;
-  EXPECT_TRUE(contains(r.text, "> choose the first column's four points: wrong: The first column is the edge u = 0: "
-                               "rows and columns swapped."))
+  EXPECT_TRUE(contains(r.text,
+                       "> choose the first column's four points: wrong: The first column is the edge u = 0: "
+                       "rows and columns swapped."))
       << r.text;
-  EXPECT_TRUE(contains(r.text, "> your turn patch.lua: right\n\n  Your evaluate gives the reference's P(0.25, 0.5).")) << r.text;
+  EXPECT_TRUE(contains(r.text, "> your turn patch.lua: right\n\n  Your evaluate gives the reference's P(0.25, 0.5)."))
+      << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/patch.lua")) << r.text;
   EXPECT_TRUE(contains(r.text, "made of 32 Bézier patches")) << r.text;
   EXPECT_TRUE(contains(r.text, "only 512 control points")) << r.text;
@@ -131,9 +140,9 @@ TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(lesson_path("2_bezier_patches"))) << runner.error();
   ASSERT_EQ(host.shown_patches().size(), 1u);
-  EXPECT_EQ(host.shown_patches()[0].points[5], glm::dvec3(1, 1, 2));   // row 1, column 1: raised
-  EXPECT_EQ(host.shown_patches()[0].points[4], glm::dvec3(0, 1, 0));   // row 1, column 0: flat edge
-  runner.go_to(3);  // "The Utah teapot"
+  EXPECT_EQ(host.shown_patches()[0].points[5], glm::dvec3(1, 1, 2));  // row 1, column 1: raised
+  EXPECT_EQ(host.shown_patches()[0].points[4], glm::dvec3(0, 1, 0));  // row 1, column 0: flat edge
+  runner.go_to(3);                                                    // "The Utah teapot"
   ASSERT_EQ(runner.error(), "");
   const std::vector<BezierPatch> teapot = read_bez(testing::source_dir() / "assets" / "teapot.bez");
   ASSERT_EQ(teapot.size(), 32u);
@@ -148,7 +157,8 @@ TEST(LessonsA, HalfedgeWalksPassesEveryStep) {
   EXPECT_EQ(r.outcome.passed, 7u);
   // Each question names the mistakes the answers file makes.
   EXPECT_TRUE(contains(r.text, "  > click h14: wrong: That is h.twin: the same edge the other way")) << r.text;
-  EXPECT_TRUE(contains(r.text, "  > answer 4: wrong: 4 triangles touch v5, but the list does not say which 4")) << r.text;
+  EXPECT_TRUE(contains(r.text, "  > answer 4: wrong: 4 triangles touch v5, but the list does not say which 4"))
+      << r.text;
   EXPECT_TRUE(contains(r.text, "  > click h8: wrong: That is h.next: it goes on around h's own face")) << r.text;
   EXPECT_TRUE(contains(r.text, "After 3 steps of next the walk is back at the start: f5 is a triangle.")) << r.text;
   EXPECT_TRUE(contains(r.text, "  > click f5\n")) << r.text;
@@ -237,8 +247,7 @@ TEST(LessonsA, LessonFileResolvesNextToTheLesson) {
   LessonRunner runner(host);
   ASSERT_TRUE(runner.load(path)) << runner.error();
   EXPECT_EQ(runner.said(), (std::vector<std::string>{(scratch / "assets" / "x.bez").lexically_normal().string(),
-                                                     (dir / "y.bzc").lexically_normal().string(),
-                                                     "/abs/z"}));
+                                                     (dir / "y.bzc").lexically_normal().string(), "/abs/z"}));
 }
 
 }  // namespace

@@ -38,7 +38,9 @@ namespace {
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
-std::filesystem::path lesson_path(const std::string& name) { return testing::source_dir() / "lessons" / (name + ".lua"); }
+std::filesystem::path lesson_path(const std::string& name) {
+  return testing::source_dir() / "lessons" / (name + ".lua");
+}
 
 // Runs lessons/NAME.lua headless with tests/script/lessons/NAME_answers.lua and the correct solutions as the student's
 // folder (your_turn); expects every step to pass with every answer awaited and used. Returns the transcript.
@@ -133,15 +135,25 @@ TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
   const HalfedgeMesh mesh = diamond();
   const HalfedgeId h0 = mesh.halfedge(EdgeId(0));
-  const HalfedgeId h1 = mesh.twin(h0), h2 = mesh.next(h0), h3 = mesh.next(h2), h4 = mesh.next(h1),
-                   h5 = mesh.next(h4);
+  const HalfedgeId h1 = mesh.twin(h0), h2 = mesh.next(h0), h3 = mesh.next(h2), h4 = mesh.next(h1), h5 = mesh.next(h4);
   EXPECT_EQ(h1, HalfedgeId(3));
   EXPECT_EQ(h2, HalfedgeId(1));
-  const std::pair<ElementRef, std::string> expected[] = {
-      {VertexId(0), "a"},     {VertexId(1), "b"},     {VertexId(2), "c"},     {VertexId(3), "d"},
-      {FaceId(0), "f0"},      {FaceId(1), "f1"},      {h0, "h0"},             {h1, "h1"},
-      {h2, "h2"},             {h3, "h3"},             {h4, "h4"},             {h5, "h5"},
-      {mesh.twin(h2), "h6"},  {mesh.twin(h3), "h7"},  {mesh.twin(h4), "h8"},  {mesh.twin(h5), "h9"}};
+  const std::pair<ElementRef, std::string> expected[] = {{VertexId(0), "a"},
+                                                         {VertexId(1), "b"},
+                                                         {VertexId(2), "c"},
+                                                         {VertexId(3), "d"},
+                                                         {FaceId(0), "f0"},
+                                                         {FaceId(1), "f1"},
+                                                         {h0, "h0"},
+                                                         {h1, "h1"},
+                                                         {h2, "h2"},
+                                                         {h3, "h3"},
+                                                         {h4, "h4"},
+                                                         {h5, "h5"},
+                                                         {mesh.twin(h2), "h6"},
+                                                         {mesh.twin(h3), "h7"},
+                                                         {mesh.twin(h4), "h8"},
+                                                         {mesh.twin(h5), "h9"}};
   EXPECT_EQ(host.labels().size(), std::size(expected));
   for (const auto& [element, name] : expected) EXPECT_EQ(label_of(host, element), name) << format_id(element);
   EXPECT_TRUE(mesh.is_boundary(mesh.twin(h2)));
@@ -171,10 +183,10 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
   // The next step highlights exactly the elements whose fields changed, then asks how many flips go round.
   runner.next();
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
-  for (ElementRef changed : {ElementRef(HalfedgeId(0)), ElementRef(HalfedgeId(1)), ElementRef(HalfedgeId(2)),
-                             ElementRef(HalfedgeId(3)), ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5)),
-                             ElementRef(VertexId(0)), ElementRef(VertexId(1)), ElementRef(FaceId(0)),
-                             ElementRef(FaceId(1))}) {
+  for (ElementRef changed :
+       {ElementRef(HalfedgeId(0)), ElementRef(HalfedgeId(1)), ElementRef(HalfedgeId(2)), ElementRef(HalfedgeId(3)),
+        ElementRef(HalfedgeId(4)), ElementRef(HalfedgeId(5)), ElementRef(VertexId(0)), ElementRef(VertexId(1)),
+        ElementRef(FaceId(0)), ElementRef(FaceId(1))}) {
     EXPECT_EQ(colour_of(host, changed), colour_hex(kDarkSwatches.orange)) << format_id(changed);
   }
   EXPECT_EQ(host.highlights().size(), 10u);
@@ -186,20 +198,22 @@ TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
   const std::string text = run_headless("5_edge_split", 7);
   EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
       << text;
-  EXPECT_TRUE(contains(text, "edges ea = e5, ec = e6, ed = e7; faces g0 = f2 and g1 = f3; halfedges n0 to n5 = h10 "
-                             "to h15. The mesh now has 5 vertices, 8 edges, 4 faces"))
+  EXPECT_TRUE(contains(text,
+                       "edges ea = e5, ec = e6, ed = e7; faces g0 = f2 and g1 = f3; halfedges n0 to n5 = h10 "
+                       "to h15. The mesh now has 5 vertices, 8 edges, 4 faces"))
       << text;
   EXPECT_TRUE(contains(text, "now runs from v4 (m) to v1 (b).")) << text;
   // The grid: e0 is the bottom row's first boundary edge; m = v9 at its midpoint, on the boundary.
-  EXPECT_TRUE(contains(text, "This grid has 9 vertices, 16 edges, 8 faces. Click the yellow edge on its bottom row (e0)"))
+  EXPECT_TRUE(
+      contains(text, "This grid has 9 vertices, 16 edges, 8 faces. Click the yellow edge on its bottom row (e0)"))
       << text;
   HalfedgeMesh grid = build_halfedge_mesh(make_grid(2, 2));
   ASSERT_TRUE(grid.is_boundary(EdgeId(0)));
   const OpResult<VertexId> m = split(grid, EdgeId(0));
   ASSERT_TRUE(m.ok());
   EXPECT_EQ(m.value, VertexId(9));
-  EXPECT_TRUE(contains(text, "m = v9 sits on the boundary at (0.5, 0, 0) with " +
-                                 std::to_string(grid.degree(m.value)) + " neighbours. The mesh has 10 vertices, "
+  EXPECT_TRUE(contains(text, "m = v9 sits on the boundary at (0.5, 0, 0) with " + std::to_string(grid.degree(m.value)) +
+                                 " neighbours. The mesh has 10 vertices, "
                                  "18 edges, 9 faces"))
       << text;
   EXPECT_TRUE(contains(text, "m's halfedge is " + format_id(grid.halfedge(m.value)) + ", which lies on the boundary"))
@@ -238,27 +252,41 @@ TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
 
 TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
   const std::string text = run_headless("6_loop_subdivision", 11);
-  EXPECT_TRUE(contains(text, "The yellow vertex v0 has 6 neighbours, so u = 0.0625: it will go from (-0.5, -0.5, "
-                             "-0.5) to (-0.3125, -0.3125, -0.3125).")) << text;
-  EXPECT_TRUE(contains(text, "Every one of the 18 original edges has been split with the same split as part 5. The "
-                             "mesh now has 26 vertices, 72 edges, 48 faces")) << text;
+  EXPECT_TRUE(contains(text,
+                       "The yellow vertex v0 has 6 neighbours, so u = 0.0625: it will go from (-0.5, -0.5, "
+                       "-0.5) to (-0.3125, -0.3125, -0.3125)."))
+      << text;
+  EXPECT_TRUE(contains(text,
+                       "Every one of the 18 original edges has been split with the same split as part 5. The "
+                       "mesh now has 26 vertices, 72 edges, 48 faces"))
+      << text;
   EXPECT_TRUE(contains(text, "Of the 36 edges the splits made across faces, 12 joined an old vertex to a new one"))
       << text;
   EXPECT_TRUE(contains(text, "give exactly the mesh the app's L gives")) << text;
-  EXPECT_TRUE(contains(text, "  > loop phase 1/4: compute new positions\n  > key shift+L\n\n  Phase 1 computed every new "
-                             "position and changed nothing: the cube still has 8 vertices, 18 edges, 12 faces.")) << text;
+  EXPECT_TRUE(contains(text,
+                       "  > loop phase 1/4: compute new positions\n  > key shift+L\n\n  Phase 1 computed every new "
+                       "position and changed nothing: the cube still has 8 vertices, 18 edges, 12 faces."))
+      << text;
   EXPECT_TRUE(contains(text, "Phase 2 split all 18 original edges: now 26 vertices, 72 edges, 48 faces")) << text;
-  EXPECT_TRUE(contains(text, "Phase 3 flipped the 12 new edges joining an old and a new vertex (orange): still 26 "
-                             "vertices, 72 edges, 48 faces.")) << text;
-  EXPECT_TRUE(contains(text, "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, -0.3125, "
-                             "-0.3125).")) << text;
+  EXPECT_TRUE(contains(text,
+                       "Phase 3 flipped the 12 new edges joining an old and a new vertex (orange): still 26 "
+                       "vertices, 72 edges, 48 faces."))
+      << text;
+  EXPECT_TRUE(contains(text,
+                       "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, -0.3125, "
+                       "-0.3125)."))
+      << text;
   EXPECT_TRUE(contains(text, "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << text;
   EXPECT_TRUE(contains(text, "the degrees of v0 to v7 are 6, 4, 4, 4, 4, 4, 4, 6.")) << text;
   EXPECT_TRUE(contains(text, "All six split: 14 vertices, 36 edges, 24 faces, and every corner has degree 6.")) << text;
-  EXPECT_TRUE(contains(text, "After two steps: 194 vertices, 576 edges, 384 faces. All 8 corners are 0.5954 from the "
-                             "centre")) << text;
-  EXPECT_TRUE(contains(text, "Now 25 vertices, 56 edges, 32 faces, still 1 boundary loop. The corner moved from (0, 0, "
-                             "0) to (0.125, 0.125, 0)")) << text;
+  EXPECT_TRUE(contains(text,
+                       "After two steps: 194 vertices, 576 edges, 384 faces. All 8 corners are 0.5954 from the "
+                       "centre"))
+      << text;
+  EXPECT_TRUE(contains(text,
+                       "Now 25 vertices, 56 edges, 32 faces, still 1 boundary loop. The corner moved from (0, 0, "
+                       "0) to (0.125, 0.125, 0)"))
+      << text;
 
   // The asymmetry numbers are the core's: corners of the plain cube after two steps.
   HalfedgeMesh cube = build_halfedge_mesh(make_cube());
@@ -372,8 +400,10 @@ TEST(LessonsB, ShiftLStepChecksEveryPhaseAndStartsAgainOnAnotherEdit) {
   for (int k = 1; k <= 4; ++k) ASSERT_TRUE(phase(k)) << k;
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Finished) << runner.error();
   EXPECT_TRUE(contains(said(runner), "Phase 3 flipped the 12 new edges")) << said(runner);
-  EXPECT_TRUE(contains(said(runner), "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, "
-                                     "-0.3125, -0.3125).")) << said(runner);
+  EXPECT_TRUE(contains(said(runner),
+                       "Phase 4 moved every vertex: v0 went from (-0.5, -0.5, -0.5) to (-0.3125, "
+                       "-0.3125, -0.3125)."))
+      << said(runner);
   EXPECT_TRUE(contains(said(runner), "One step done: 26 vertices, 72 edges, 48 faces, valid.")) << said(runner);
   EXPECT_EQ(colour_of(host, VertexId(0)), colour_hex(kDarkSwatches.yellow));
 }
@@ -467,8 +497,9 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
     EXPECT_EQ(cube.position(cube.vertex(h)).z, 0.5);
     h = cube.next(h);
   } while (h != top);
-  EXPECT_TRUE(contains(text, "The core puts it at " + lesson_point(state.value.face_point[1]) +
-                                 ": the centre of the top.")) << text;
+  EXPECT_TRUE(
+      contains(text, "The core puts it at " + lesson_point(state.value.face_point[1]) + ": the centre of the top."))
+      << text;
 
   // Edge points: the edge from v0 to v1, pulled in from its midpoint.
   const EdgeId e = edge_between(cube, VertexId(0), VertexId(1));
@@ -476,15 +507,20 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   const glm::dvec3 edge_point = state.value.edge_point[e.index];
   EXPECT_GT(glm::length(edge_point - midpoint), 0.1);
   EXPECT_TRUE(contains(text, "The orange edge " + format_id(e) + " runs from")) << text;
-  EXPECT_TRUE(contains(text, "The core puts it at " + lesson_point(edge_point) + ". The blue arrow goes from the "
-                                 "midpoint " + lesson_point(midpoint) + " to it: the two face points pull it " +
-                                 lesson_number(glm::length(midpoint - edge_point)) + " in")) << text;
+  EXPECT_TRUE(contains(text, "The core puts it at " + lesson_point(edge_point) +
+                                 ". The blue arrow goes from the "
+                                 "midpoint " +
+                                 lesson_point(midpoint) + " to it: the two face points pull it " +
+                                 lesson_number(glm::length(midpoint - edge_point)) + " in"))
+      << text;
 
   // Vertex points: the corner v0 keeps 5/9 of its distance from the centre.
   const glm::dvec3 corner = state.value.vertex_point[0];
   EXPECT_NEAR(glm::length(corner) / glm::length(cube.position(VertexId(0))), 5.0 / 9.0, 1e-12);
-  EXPECT_TRUE(contains(text, "The core moves v0 to " + lesson_point(corner) + " (blue arrow): 5/9 of its distance "
-                             "from the centre")) << text;
+  EXPECT_TRUE(contains(text, "The core moves v0 to " + lesson_point(corner) +
+                                 " (blue arrow): 5/9 of its distance "
+                                 "from the centre"))
+      << text;
 
   // Counts after one level, on the cube and on the tetrahedron.
   HalfedgeMesh once = cube;
@@ -492,10 +528,12 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   EXPECT_EQ(once.num_vertices(), cube.num_vertices() + cube.num_edges() + cube.num_faces());
   // The student's Subdivide > Catmull-Clark on the cube on screen (the answers' {subdivide = "catmull-clark"}).
   EXPECT_TRUE(contains(text, "  > subdivide catmull-clark\n")) << text;
-  EXPECT_TRUE(contains(text, "Your level: " + lesson_counts(once) + ", all " + std::to_string(once.num_faces()) +
-                                 " quads.")) << text;
+  EXPECT_TRUE(
+      contains(text, "Your level: " + lesson_counts(once) + ", all " + std::to_string(once.num_faces()) + " quads."))
+      << text;
   EXPECT_TRUE(contains(text, "so the 24 corners of the old faces give " + std::to_string(once.num_faces()) +
-                                 " quads and E' = 2E + 24 = " + std::to_string(once.num_edges()) + " edges.")) << text;
+                                 " quads and E' = 2E + 24 = " + std::to_string(once.num_edges()) + " edges."))
+      << text;
   // The app's phases (the answers' {subdivide_phase = "catmull-clark"}, three times): what each phase left, as the
   // core's phases leave it.
   HalfedgeMesh stepped = cube;
@@ -503,22 +541,28 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   const VertexId new_vertex(uint32_t(cube.num_vertices() + e.index));
   EXPECT_EQ(stepped.position(new_vertex), midpoint);
   EXPECT_TRUE(contains(text, "  > catmull-clark phase 1/3: compute face, edge and vertex points\n")) << text;
-  EXPECT_TRUE(contains(text, "Phase 1 computed 6 face points, 12 edge points and 8 vertex points, and nothing "
-                             "moved: the edge point of " + format_id(e) + " is " + lesson_point(edge_point) +
-                             ", the vertex point of v0 " + lesson_point(corner) + ".")) << text;
+  EXPECT_TRUE(contains(text,
+                       "Phase 1 computed 6 face points, 12 edge points and 8 vertex points, and nothing "
+                       "moved: the edge point of " +
+                           format_id(e) + " is " + lesson_point(edge_point) + ", the vertex point of v0 " +
+                           lesson_point(corner) + "."))
+      << text;
   EXPECT_TRUE(contains(text, "Phase 2 split the 6 faces into 24 quads. The new vertex " + format_id(new_vertex) +
-                             " sits at " + lesson_point(midpoint) + ", the midpoint")) << text;
+                                 " sits at " + lesson_point(midpoint) + ", the midpoint"))
+      << text;
   catmull_clark_commit_positions(stepped, state.value);
   EXPECT_TRUE(stepped.same_as(once));
   EXPECT_TRUE(contains(text, "Phase 3 moved every vertex to its point: " + format_id(new_vertex) + " to " +
-                             lesson_point(stepped.position(new_vertex)) + ", the edge point, and v0 to " +
-                             lesson_point(stepped.position(VertexId(0))) + ", its vertex point. One level done: " +
-                             lesson_counts(stepped) + ".")) << text;
+                                 lesson_point(stepped.position(new_vertex)) + ", the edge point, and v0 to " +
+                                 lesson_point(stepped.position(VertexId(0))) +
+                                 ", its vertex point. One level done: " + lesson_counts(stepped) + "."))
+      << text;
   HalfedgeMesh tetrahedron = build_halfedge_mesh(make_tetrahedron());
   ASSERT_TRUE(catmull_clark_subdivide(tetrahedron).ok);
   for (FaceId f : tetrahedron.faces()) EXPECT_EQ(tetrahedron.degree(f), 4u) << format_id(f);
   EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(tetrahedron) + ", all " +
-                                 std::to_string(tetrahedron.num_faces()) + " quads. After one level")) << text;
+                                 std::to_string(tetrahedron.num_faces()) + " quads. After one level"))
+      << text;
 
   // The boundary: a boundary edge's point is its midpoint, the grid's corner goes to 3/4 P + 1/8 (r0 + r1).
   const HalfedgeMesh grid = quad_grid(2);
@@ -526,13 +570,17 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   ASSERT_TRUE(grid_state.ok());
   const EdgeId boundary = edge_between(grid, VertexId(0), VertexId(1));
   EXPECT_EQ(grid_state.value.edge_point[boundary.index], glm::dvec3(0.5, 0, 0));
-  EXPECT_TRUE(contains(text, "The core puts it at the midpoint, " +
-                                 lesson_point(grid_state.value.edge_point[boundary.index]) + ".")) << text;
+  EXPECT_TRUE(contains(
+      text, "The core puts it at the midpoint, " + lesson_point(grid_state.value.edge_point[boundary.index]) + "."))
+      << text;
   HalfedgeMesh grid_once = grid;
   ASSERT_TRUE(catmull_clark_subdivide(grid_once).ok);
   EXPECT_TRUE(contains(text, "The core's level: " + lesson_counts(grid_once) + ", still " +
-                                 std::to_string(grid_once.num_boundaries()) + " boundary loop. The corner went from "
-                                 "(0, 0, 0) to " + lesson_point(grid_state.value.vertex_point[0]))) << text;
+                                 std::to_string(grid_once.num_boundaries()) +
+                                 " boundary loop. The corner went from "
+                                 "(0, 0, 0) to " +
+                                 lesson_point(grid_state.value.vertex_point[0])))
+      << text;
   EXPECT_EQ(grid_state.value.vertex_point[0], glm::dvec3(0.125, 0.125, 0));
 
   // Linear subdivision moves no old vertex; Catmull-Clark moves v0; three levels.
@@ -546,7 +594,8 @@ TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
   HalfedgeMesh thrice = cube;
   ASSERT_TRUE(catmull_clark_subdivide(thrice, 3).ok);
   EXPECT_TRUE(contains(text, "after three levels it is " + lesson_number(glm::length(thrice.position(VertexId(0)))) +
-                                 " from it, and there are " + std::to_string(thrice.num_faces()) + " quads")) << text;
+                                 " from it, and there are " + std::to_string(thrice.num_faces()) + " quads"))
+      << text;
 }
 
 // Driven step by step: a wrong vertex point keeps the step waiting; the right one draws the arrow from the corner to
@@ -729,7 +778,8 @@ TEST(LessonsB, BringYourOwnMeshPassesHeadlessWithTheCoresReports) {
   // The student's Edit > Triangulate on the mesh on screen (the answers' {triangulate = true}).
   EXPECT_TRUE(contains(text, "  > triangulate\n")) << text;
   EXPECT_TRUE(contains(text, "Triangulate split " + std::to_string(split.value.polygons_split) + " faces: " +
-                                 lesson_counts(quads) + " before, " + lesson_counts(triangles) + " after.")) << text;
+                                 lesson_counts(quads) + " before, " + lesson_counts(triangles) + " after."))
+      << text;
 
   // Subdivide: L on the triangulated Suzanne, then Catmull-Clark's and Linear's counts.
   HalfedgeMesh loop = triangles;
@@ -759,8 +809,7 @@ TEST(LessonsB, BringYourOwnMeshSubdividesTheStudentsMesh) {
   EXPECT_FALSE(contains(said(runner), "Loop: ")) << said(runner);
   edit_screen(host, [](HalfedgeMesh& mesh) { ASSERT_TRUE(loop_subdivide(mesh).ok); });
   runner.update(0.1);
-  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "then asks about Catmull-Clark"
-                                                                    << runner.error();
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "then asks about Catmull-Clark" << runner.error();
   HalfedgeMesh loop = ico;
   ASSERT_TRUE(loop_subdivide(loop).ok);
   EXPECT_TRUE(contains(said(runner), "Loop: " + lesson_counts(loop) + ".")) << said(runner);

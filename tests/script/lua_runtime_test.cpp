@@ -85,8 +85,10 @@ TEST(LuaRuntime, ACoroutineFromAStoppedRunResumesWithTheNextRunsBudget) {
 TEST(LuaRuntime, RunFileSetsArgAndSkipsAShebang) {
   const auto path = std::filesystem::temp_directory_path() / "meshedit_lua_runtime_test_args.lua";
   std::ofstream(path) << "#!/usr/bin/env meshedit run\n"
-                          "print(arg[0] == '" + path.string() + "', #arg, arg[2], select('#', ...), (...))\n"
-                          "error('x')\n";
+                         "print(arg[0] == '" +
+                             path.string() +
+                             "', #arg, arg[2], select('#', ...), (...))\n"
+                             "error('x')\n";
   LuaRuntime lua;
   std::vector<std::string> printed;
   lua.set_print([&](const std::string& line) { printed.push_back(line); });
@@ -158,8 +160,8 @@ TEST(LuaRuntime, OnlyWhitelistedLibrariesExist) {
       "  type(coroutine.wrap), tostring(getmetatable(''))",
       "t.lua");
   EXPECT_EQ(r, (std::vector<std::string>{"nil", "nil", "nil", "nil", "nil", "nil", "nil", "nil", "nil", "function",
-                                         "function", "function", "nil", "function", "function", "function",
-                                         "function", "function", "false"}));
+                                         "function", "function", "nil", "function", "function", "function", "function",
+                                         "function", "false"}));
 }
 
 TEST(LuaRuntime, LoadIsTextOnly) {

@@ -28,8 +28,9 @@ PolygonMesh square() {
 
 TEST(MeshApi, FromPolygonsBuildsTheSameMeshAsTheCore) {
   MeshScript s(square());
-  s.run("sq = meshedit.from_polygons({{0, 0, 0}, {x = 1, y = 0, z = 0}, meshedit.vec3(1, 1), {0, 1, 0}}, "
-        "{{1, 2, 3}, {1, 3, 4}})");
+  s.run(
+      "sq = meshedit.from_polygons({{0, 0, 0}, {x = 1, y = 0, z = 0}, meshedit.vec3(1, 1), {0, 1, 0}}, "
+      "{{1, 2, 3}, {1, 3, 4}})");
   lua_getglobal(s.lua.state(), "sq");
   const std::shared_ptr<HalfedgeMesh> built = to_mesh(s.lua.state(), -1);
   lua_pop(s.lua.state(), 1);
@@ -74,8 +75,9 @@ TEST(MeshApi, NewElementsAreAppendedWithNullPointers) {
   EXPECT_EQ(s.mesh->num_vertices(), 6u);
   EXPECT_TRUE(s.mesh->alive(FaceId::boundary(1)));
   // Wiring the new elements reaches the mesh.
-  s.run("local h = m:halfedge(10)\nh:set_neighbors(h, nil, m:vertex(4), m:edge(5), m:boundary(1))\n"
-        "m:boundary(1).halfedge = h");
+  s.run(
+      "local h = m:halfedge(10)\nh:set_neighbors(h, nil, m:vertex(4), m:edge(5), m:boundary(1))\n"
+      "m:boundary(1).halfedge = h");
   EXPECT_EQ(s.mesh->next(HalfedgeId(10)), HalfedgeId(10));
   EXPECT_FALSE(s.mesh->twin(HalfedgeId(10)).valid());
   EXPECT_EQ(s.mesh->face(HalfedgeId(10)), FaceId::boundary(1));
@@ -139,8 +141,8 @@ std::string expected_tables(const HalfedgeMesh& m) {
     row(format_id(v) + " halfedge=" + format_id(m.halfedge(v)) + " position=" + format_position(m.position(v)));
   }
   for (HalfedgeId h : m.halfedges()) {
-    row(format_id(h) + " next=" + format_id(m.next(h)) + " twin=" + format_id(m.twin(h)) + " vertex=" +
-        format_id(m.vertex(h)) + " edge=" + format_id(m.edge(h)) + " face=" + format_id(m.face(h)));
+    row(format_id(h) + " next=" + format_id(m.next(h)) + " twin=" + format_id(m.twin(h)) +
+        " vertex=" + format_id(m.vertex(h)) + " edge=" + format_id(m.edge(h)) + " face=" + format_id(m.face(h)));
   }
   for (EdgeId e : m.edges()) row(format_id(e) + " halfedge=" + format_id(m.halfedge(e)));
   for (FaceId f : m.faces()) row(format_id(f) + " halfedge=" + format_id(m.halfedge(f)));
@@ -169,8 +171,9 @@ TEST(MeshApi, PositionsAreVec3AndWritesTakeVec3OrTables) {
   EXPECT_EQ(s.run("local v = m:vertex(2)\nlocal p = v.position\np.x = 9\n"
                   "return tostring(v.position), tostring(p), getmetatable(p), tostring(v.position + v.position)"),
             (Strings{"(0, 1, 0)", "(9, 1, 0)", "vec3", "(0, 2, 0)"}));
-  s.run("m:vertex(0).position = m:vertex(2).position * 2\nm:vertex(1).position = {1, 2, 3}\n"
-        "m:vertex(3).position = {x = -1, y = 0.5, z = 0}");
+  s.run(
+      "m:vertex(0).position = m:vertex(2).position * 2\nm:vertex(1).position = {1, 2, 3}\n"
+      "m:vertex(3).position = {x = -1, y = 0.5, z = 0}");
   EXPECT_EQ(s.mesh->position(VertexId(0)), glm::dvec3(0, 2, 0));
   EXPECT_EQ(s.mesh->position(VertexId(1)), glm::dvec3(1, 2, 3));
   EXPECT_EQ(s.mesh->position(VertexId(3)), glm::dvec3(-1, 0.5, 0));
@@ -194,7 +197,8 @@ TEST(MeshApi, WalksAroundFacesAndVertices) {
   });
   const char* collect =
       "local function all(it) local s = '' for x in it do s = s .. tostring(x) .. ' ' end return s end\n";
-  EXPECT_EQ(s.run(std::string(collect) + "local f, v = m:face(0), m:vertex(0)\n"
+  EXPECT_EQ(s.run(std::string(collect) +
+                  "local f, v = m:face(0), m:vertex(0)\n"
                   "return all(f:halfedges()), all(f:vertices()), all(v:halfedges()), all(v:neighbors())"),
             (Strings{face_cycle, face_vertices, fan, neighbours}));
   EXPECT_EQ(s.run("local h = m:halfedge(1) return tostring(h:prev()), h:prev().next == h, m:boundary(0):degree()"),

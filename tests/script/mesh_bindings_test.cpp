@@ -100,8 +100,9 @@ TEST(MeshBindings, ErrorMessages) {
 
 TEST(MeshBindings, PointerWritesReachTheMesh) {
   Fixture f(make_grid(1, 1));
-  f.run("local h = m:halfedge(0)\nh.twin = nil\nh.face = m:boundary(0)\nm:vertex(1).position = {1, 2, 3}\n"
-        "m:vertex(2).position = {x = 4, y = 5, z = 6}\nm:edge(1).halfedge = m:halfedge(5)");
+  f.run(
+      "local h = m:halfedge(0)\nh.twin = nil\nh.face = m:boundary(0)\nm:vertex(1).position = {1, 2, 3}\n"
+      "m:vertex(2).position = {x = 4, y = 5, z = 6}\nm:edge(1).halfedge = m:halfedge(5)");
   EXPECT_FALSE(f.mesh->twin(HalfedgeId(0)).valid());
   EXPECT_EQ(f.mesh->face(HalfedgeId(0)), FaceId::boundary(0));
   EXPECT_EQ(f.mesh->position(VertexId(1)), glm::dvec3(1, 2, 3));
@@ -186,7 +187,7 @@ TEST(MeshBindings, BrokenMeshCanStillBeValidated) {
       "return ok, report.total > 0, report.summary, tostring(report.violations[1].element), "
       "report.violations[1].invariant, report.violations[1].message");
   EXPECT_EQ(r, (Strings{"false", "true", "6 problems; first: h1.face is f0, but h1 is not in f0's next-cycle", "h1",
-                       "face cycle", "h1.face is f0, but h1 is not in f0's next-cycle"}));
+                        "face cycle", "h1.face is f0, but h1 is not in f0's next-cycle"}));
   // The broken mesh still iterates and prints without hanging.
   EXPECT_EQ(f.run("local n = 0 for h in m:halfedges() do n = n + 1 local _ = tostring(h.next) end return n"),
             Strings{"10"});

@@ -91,8 +91,8 @@ TEST(ScriptedExercise, TheCorrectSolutionGivesTheCoresCollapseOnEveryFixture) {
   const Exercise id = collapse_exercise();
   auto code = load_student_file(solutions() / "collapse.lua");
   for (const ScriptedFixture& fixture : scripted_exercise(id)->fixtures()) {
-    const ExerciseReport report = check_exercise(*code, id, ExerciseInput::element_of(fixture.mesh, fixture.element),
-                                                 RunOptions{true});
+    const ExerciseReport report =
+        check_exercise(*code, id, ExerciseInput::element_of(fixture.mesh, fixture.element), RunOptions{true});
     EXPECT_TRUE(report.equal) << fixture.name << ": " << report.summary();
     ASSERT_TRUE(report.mine.mesh);
     HalfedgeMesh core = *fixture.mesh;
@@ -116,8 +116,9 @@ TEST(ScriptedExercise, TheDefinitionsDiagnosisComesFirst) {
   const ExerciseReport report = check_exercise(*code, id, ExerciseInput::element_of(fixture.mesh, fixture.element));
   EXPECT_FALSE(report.equal);
   ASSERT_GE(report.differences.size(), 2u);
-  EXPECT_EQ(report.differences[0], "the vertex that remains is still where a was; collapse moves it to the midpoint "
-                                   "of a and b, (0.5, 0.5, 0)");
+  EXPECT_EQ(report.differences[0],
+            "the vertex that remains is still where a was; collapse moves it to the midpoint "
+            "of a and b, (0.5, 0.5, 0)");
   EXPECT_NE(report.differences[1].find("your vertex v4 at (1, 1, 0) has no match in the reference"), std::string::npos)
       << report.differences[1];
 }
@@ -163,8 +164,7 @@ end)
   const fs::path wrong =
       write(dir, "wrong.lua", "return { [1] = { {your_turn = \"wrong\", feedback = \"still where a was\"} } }\n");
   std::ostringstream out;
-  HeadlessOutcome outcome =
-      run_lesson_headless(lesson, right, out, LessonRunner::default_limits(), solutions());
+  HeadlessOutcome outcome = run_lesson_headless(lesson, right, out, LessonRunner::default_limits(), solutions());
   EXPECT_EQ(outcome.failure, "") << out.str();
   EXPECT_NE(out.str().find("  > your turn collapse.lua: right"), std::string::npos) << out.str();
 
@@ -191,7 +191,8 @@ TEST(ScriptedExercise, AWaitingYourTurnShowsTheDefinitionsHint) {
 step("Your turn", function()
   your_turn { exercise = "collapse", mesh = meshedit.icosahedron(), element = "e0" }
 end)
-)lua"))) << runner.error();
+)lua")))
+      << runner.error();
   const LessonWait& wait = runner.waiting_for();
   ASSERT_EQ(wait.kind, LessonWait::Kind::YourTurn) << runner.error();
   EXPECT_EQ(wait.hint, scripted_exercise(id)->hint());
@@ -204,8 +205,7 @@ TEST(ScriptedExercise, ABrokenDefinitionIsNamedAtItsLine) {
   name = "minimal", file = "minimal.lua", call = "do_it",
 )lua";
   const std::string reference = "  reference = function(mesh, e) return mesh:collapse(e) end,\n";
-  EXPECT_EQ(load_error(head + reference + "}\n"),
-            "bad.lua:1: exercise: takes must be a string, got nil");
+  EXPECT_EQ(load_error(head + reference + "}\n"), "bad.lua:1: exercise: takes must be a string, got nil");
   EXPECT_EQ(load_error(head + reference + "  takes = \"edges\" }\n"),
             "bad.lua:1: exercise: takes must be vertex, edge, face, halfedge or mesh, got 'edges'");
   EXPECT_EQ(load_error(head + "  takes = \"edge\" }\n"), "bad.lua:1: exercise: reference must be a function, got nil");
@@ -215,13 +215,14 @@ TEST(ScriptedExercise, ABrokenDefinitionIsNamedAtItsLine) {
   EXPECT_EQ(load_error(head + reference + "  takes = \"edge\", allow = { \"mesh:fly\" } }\n"),
             "bad.lua:1: exercise: allow[1] must be one of mesh:flip, mesh:split, mesh:collapse, mesh:loop_subdivide, "
             "meshedit.curve, meshedit.patch, got 'mesh:fly'");
-  EXPECT_EQ(load_error(head + reference + "  takes = \"edge\",\n  fixtures = { { mesh = meshedit.cube(), "
-                                          "element = \"v0\" } } }\n"),
+  EXPECT_EQ(load_error(head + reference +
+                       "  takes = \"edge\",\n  fixtures = { { mesh = meshedit.cube(), "
+                       "element = \"v0\" } } }\n"),
             "bad.lua:1: exercise: fixtures[1].element must be an edge of its mesh (a handle, an id like \"e3\", or "
             "the number), got v0");
-  EXPECT_EQ(load_error("exercise { name = \"flip\", file = \"x.lua\", call = \"f\", takes = \"mesh\",\n" + reference +
-                       "}\n"),
-            "bad.lua:1: exercise: 'flip' is a built-in exercise; choose another name");
+  EXPECT_EQ(
+      load_error("exercise { name = \"flip\", file = \"x.lua\", call = \"f\", takes = \"mesh\",\n" + reference + "}\n"),
+      "bad.lua:1: exercise: 'flip' is a built-in exercise; choose another name");
   EXPECT_EQ(load_error("local x = nil\nx.y = 1\n"), "bad.lua:2: attempt to index a nil value (local 'x')");
   EXPECT_EQ(load_error("-- nothing\n"), "bad.lua: no exercise{} in the file");
 }
@@ -242,9 +243,8 @@ TEST(ScriptedExercise, ADiagnoseThatFailsIsOneMessageNamingItsLine) {
   const ExerciseReport report = check_exercise(*code, id, ExerciseInput::element_of(ico, EdgeId(0)));
   EXPECT_FALSE(report.equal);
   ASSERT_FALSE(report.differences.empty());
-  EXPECT_EQ(report.differences[0].rfind("the exercise's diagnose failed: failing.lua:5: attempt to index a nil value",
-                                        0),
-            0u)
+  EXPECT_EQ(
+      report.differences[0].rfind("the exercise's diagnose failed: failing.lua:5: attempt to index a nil value", 0), 0u)
       << report.differences[0];
   EXPECT_NE(report.differences[1].find("has no match in the reference"), std::string::npos) << report.differences[1];
 }

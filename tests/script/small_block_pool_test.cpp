@@ -55,7 +55,7 @@ TEST(SmallBlockPool, ResizeKeepsTheContents) {
   void* p = pool.resize(nullptr, 0, 20);
   fill(p, 20);
   EXPECT_EQ(pool.resize(p, 20, 30), p);  // same class: the block stays
-  p = pool.resize(p, 30, 200);            // another class
+  p = pool.resize(p, 30, 200);           // another class
   EXPECT_TRUE(intact(p, 20));
   fill(p, 200);
   p = pool.resize(p, 200, 5000);  // to malloc

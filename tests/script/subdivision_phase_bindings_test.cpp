@@ -94,8 +94,9 @@ TEST(SubdivisionPhaseBindings, RefusalsSayWhyAndChangeNothing) {
 TEST(SubdivisionPhaseBindings, RecordedPhasesReplay) {
   MeshScript s(make_cube_quads());
   EditRecorder recorder(s.lua.state(), s.mesh, {.keep_before = true, .max_edits = 100});
-  s.run("local p = m:subdivision_phases('catmull-clark') p:step() p:step() p:step() m:linear_subdivide()\n"
-        "m:catmull_clark()");
+  s.run(
+      "local p = m:subdivision_phases('catmull-clark') p:step() p:step() p:step() m:linear_subdivide()\n"
+      "m:catmull_clark()");
   ASSERT_EQ(recorder.edits().size(), 4u);
   EXPECT_EQ(describe(recorder.edits()[0]), "subdivision phase");
   EXPECT_TRUE(replay(*recorder.before(), recorder.edits(), recorder.edits().size()).same_as(*s.mesh));

@@ -27,9 +27,9 @@ TEST(TriangulateBinding, QuadCubeBecomesTrianglesThatSubdivide) {
   const Strings refused = lua.run_string("return m:loop_subdivide()", "t.lua");
   ASSERT_EQ(refused.size(), 2u);
   EXPECT_NE(refused[1].find("mesh:triangulate()"), std::string::npos) << refused[1];
-  EXPECT_EQ(lua.run_string("local n = m:triangulate() return n, m:num_faces(), (m:validate()), m:triangulate()",
-                           "t.lua"),
-            (Strings{"6", "12", "true", "0"}));
+  EXPECT_EQ(
+      lua.run_string("local n = m:triangulate() return n, m:num_faces(), (m:validate()), m:triangulate()", "t.lua"),
+      (Strings{"6", "12", "true", "0"}));
   EXPECT_EQ(mesh->num_faces(), 12u);
   EXPECT_EQ(to_polygon_mesh(*mesh).positions, make_cube_quads().positions);
   EXPECT_EQ(lua.run_string("return m:loop_subdivide(), m:num_faces()", "t.lua"), (Strings{"true", "48"}));
@@ -56,13 +56,16 @@ TEST(RepairBinding, LoadWithTheRepairOption) {
   const std::string path = (dir / "fin.obj").string();
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0\nv 0.5 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
   LuaRuntime lua;
-  const Strings r = lua.run_string(
-      "local ok = pcall(meshedit.load, '" + path + "')\n"
-      "local m, report = meshedit.load('" + path + "', {repair = true})\n"
-      "return ok, m:num_faces(), m:num_vertices(), report.changes[1]",
-      "t.lua");
-  EXPECT_EQ(r, (Strings{"false", "3", "7", "the edge between vertex 0 and vertex 1 had faces 0..2: face 2 detached "
-                                          "(its corners there are now new vertices 5 and 6)"}));
+  const Strings r = lua.run_string("local ok = pcall(meshedit.load, '" + path +
+                                       "')\n"
+                                       "local m, report = meshedit.load('" +
+                                       path +
+                                       "', {repair = true})\n"
+                                       "return ok, m:num_faces(), m:num_vertices(), report.changes[1]",
+                                   "t.lua");
+  EXPECT_EQ(r, (Strings{"false", "3", "7",
+                        "the edge between vertex 0 and vertex 1 had faces 0..2: face 2 detached "
+                        "(its corners there are now new vertices 5 and 6)"}));
 }
 
 }  // namespace

@@ -25,7 +25,9 @@ using Mesh = std::shared_ptr<const HalfedgeMesh>;
 
 Mesh mesh_of(const PolygonMesh& p) { return std::make_shared<const HalfedgeMesh>(build_halfedge_mesh(p)); }
 
-std::string solution_text() { return testing::read_text(testing::source_dir() / "tests/script/solutions/upsample.lua"); }
+std::string solution_text() {
+  return testing::read_text(testing::source_dir() / "tests/script/solutions/upsample.lua");
+}
 
 std::string replaced(std::string text, const std::string& from, const std::string& to) {
   const size_t at = text.find(from);
@@ -80,9 +82,8 @@ void expect_identical_at_every_boundary(const Recording& r, const UpsamplePhases
 }
 
 size_t count_operations(const std::vector<RecordedEdit>& edits, const char* name) {
-  return size_t(std::count_if(edits.begin(), edits.end(), [&](const RecordedEdit& e) {
-    return e.what == EditKind::Operation && e.field == name;
-  }));
+  return size_t(std::count_if(edits.begin(), edits.end(),
+                              [&](const RecordedEdit& e) { return e.what == EditKind::Operation && e.field == name; }));
 }
 
 TEST(UpsamplePhases, TheSolutionsFourPhasesBeginWhereItsStepsDo) {
@@ -150,8 +151,8 @@ TEST(UpsamplePhases, TheSolutionsFourPhasesBeginWhereItsStepsDo) {
 // The reference split_edge and flip_edge the template offers are recorded as mesh:split and mesh:flip are: the replay
 // and the phases are the same whichever a student calls.
 TEST(UpsamplePhases, TheReferenceSplitEdgeAndFlipEdgeAreRecordedAsTheMeshMethodsAre) {
-  const std::string text = replaced(replaced(solution_text(), "mesh:split(e)", "split_edge(mesh, e)"), "mesh:flip(e)",
-                                    "flip_edge(mesh, e)");
+  const std::string text =
+      replaced(replaced(solution_text(), "mesh:split(e)", "split_edge(mesh, e)"), "mesh:flip(e)", "flip_edge(mesh, e)");
   const Recording r = record(text, mesh_of(make_cube()));
   ASSERT_TRUE(r.report.identical) << r.report.summary();
   const size_t E = 18, V = 8, flips = count_operations(r.edits(), "flip");
@@ -246,7 +247,8 @@ TEST(UpsamplePhases, FlippingInsideTheSplitLoopInterleavesPhasesTwoAndThree) {
   const std::string flip_line = line_of(text, "then mesh:flip(f) end");
   EXPECT_EQ(r.edits()[phases.span[3].first].where, flip_line);
   EXPECT_NE(phases.problems[0].find("writes of phase 2 (edges split) come after phase 3 (new edges flipped) began at "
-                                    "write " + std::to_string(phases.span[3].first + 1) + " (" + flip_line + ")"),
+                                    "write " +
+                                    std::to_string(phases.span[3].first + 1) + " (" + flip_line + ")"),
             std::string::npos)
       << phases.problems[0];
   // The stepping follows the recording: phase 3 starts inside phase 2, phase 4 after both.
@@ -279,8 +281,8 @@ TEST(UpsamplePhases, ASkippedPhaseNeverStartedAndItsBoundaryIsThePhaseBelow) {
 }
 
 TEST(UpsamplePhases, TheTemplateWritesNothingSoOnlyPhaseOneIsThere) {
-  const Recording r = record(testing::read_text(testing::source_dir() / "scripts/student/upsample.lua"),
-                             mesh_of(make_cube()));
+  const Recording r =
+      record(testing::read_text(testing::source_dir() / "scripts/student/upsample.lua"), mesh_of(make_cube()));
   ASSERT_TRUE(r.edits().empty());
   const UpsamplePhases phases = find_upsample_phases(r.edits());
   EXPECT_EQ(phases.phase_at(0), UpsamplePhase::Compute);
@@ -299,8 +301,10 @@ TEST(UpsamplePhases, TheTemplateWritesNothingSoOnlyPhaseOneIsThere) {
 TEST(UpsamplePhases, ASplitAndAFlipWrittenByHandAreToldApart) {
   std::string split = testing::read_text(testing::source_dir() / "tests/script/solutions/split.lua");
   std::string flip = testing::read_text(testing::source_dir() / "tests/script/solutions/flip.lua");
-  split = replaced(replaced(split, "function split_edge(", "local function my_split("), "return { split_edge = split_edge }", "");
-  flip = replaced(replaced(flip, "function flip_edge(", "local function my_flip("), "return { flip_edge = flip_edge }", "");
+  split = replaced(replaced(split, "function split_edge(", "local function my_split("),
+                   "return { split_edge = split_edge }", "");
+  flip = replaced(replaced(flip, "function flip_edge(", "local function my_flip("), "return { flip_edge = flip_edge }",
+                  "");
   std::string text = replaced(replaced(solution_text(), "local m = mesh:split(e)", "local m = my_split(mesh, e)"),
                               "then mesh:flip(e) end", "then my_flip(mesh, e) end");
   text = split + flip + text;
@@ -325,8 +329,9 @@ TEST(UpsamplePhases, ASplitAndAFlipWrittenByHandAreToldApart) {
 TEST(UpsamplePhases, ARunawayStaysInPhaseTwo) {
   LuaLimits limits;
   limits.instructions = 2'000'000;
-  const Recording r = record(testing::read_text(testing::source_dir() / "tests/grading/students/upsample_splits_new_edges.lua"),
-                             mesh_of(make_tetrahedron()), limits);
+  const Recording r =
+      record(testing::read_text(testing::source_dir() / "tests/grading/students/upsample_splits_new_edges.lua"),
+             mesh_of(make_tetrahedron()), limits);
   ASSERT_FALSE(r.report.mine.error.empty());
   const UpsamplePhases phases = find_upsample_phases(r.edits());
   EXPECT_GT(phases.span[2].writes, 6u);  // more splits than the tetrahedron's 6 edges
@@ -355,7 +360,8 @@ TEST(UpsamplePhases, OperationsLoopSubdivisionDoesNotUseAreNamed) {
   EXPECT_EQ(phases.other_writes, 1u);
   EXPECT_EQ(phases.phase_at(2), UpsamplePhase::Other);
   ASSERT_EQ(phases.problems.size(), 2u);
-  EXPECT_EQ(phases.problems[1], "1 write is not part of Loop subdivision (first: write 2 (upsample.lua:9), collapse e2 -> v1)");
+  EXPECT_EQ(phases.problems[1],
+            "1 write is not part of Loop subdivision (first: write 2 (upsample.lua:9), collapse e2 -> v1)");
 }
 
 }  // namespace

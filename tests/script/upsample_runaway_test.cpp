@@ -59,11 +59,15 @@ TEST(UpsampleRunaway, SplittingTheEdgesItsSplitsMadeIsStoppedAtTheSplitsLine) {
   ASSERT_EQ(r.differences.size(), 2u);
   const std::string split_line = line_of(text, "local m = mesh:split(o.edge)");
   const std::string budget = std::to_string(upsample_edit_budget(*cube()));
-  EXPECT_EQ(r.differences[0],
-            split_line + ": more than " + budget + " changes recorded; is there a loop that never ends? It was "
-            "stopped in phase 2 (edges split) after " + budget + " splits; the mesh had 18 edges and Loop "
-            "subdivision splits each of them once: the loop at " + split_line + " splits edges that its own splits "
-            "made. List the original edges before the first split and split only those.");
+  EXPECT_EQ(r.differences[0], split_line + ": more than " + budget +
+                                  " changes recorded; is there a loop that never ends? It was "
+                                  "stopped in phase 2 (edges split) after " +
+                                  budget +
+                                  " splits; the mesh had 18 edges and Loop "
+                                  "subdivision splits each of them once: the loop at " +
+                                  split_line +
+                                  " splits edges that its own splits "
+                                  "made. List the original edges before the first split and split only those.");
   EXPECT_EQ(r.differences[1], unfinished_run_hint(Exercise::Upsample));
   EXPECT_EQ(r.summary(), "different: " + r.differences[0] + " (1 more)");
 }
@@ -95,7 +99,8 @@ TEST(UpsampleRunaway, AWhileTrueIsStoppedAtItsLineBeforeItChangedTheMesh) {
     EXPECT_TRUE(starts_with(first, "upsample.lua:3:") || starts_with(first, "upsample.lua:4:")) << first;
     const std::string at = first.substr(0, first.find(": "));
     EXPECT_NE(first.find("instruction budget exceeded (1000000 instructions). It was stopped before it changed the "
-                         "mesh: a loop at " + at + " never ends. Look at what its condition waits for"),
+                         "mesh: a loop at " +
+                         at + " never ends. Look at what its condition waits for"),
               std::string::npos)
         << first;
     EXPECT_EQ(r.differences[1], unfinished_run_hint(Exercise::Upsample));
@@ -111,8 +116,9 @@ TEST(UpsampleRunaway, AnErrorWithoutALineTakesTheLastWritesLine) {
   const HalfedgeMesh before = *cube();
   const std::vector<RecordedEdit> edits(30, split);
   const std::string text = explain_unfinished_upsample("time limit exceeded (5 s)", before, nullptr, edits);
-  EXPECT_TRUE(starts_with(text, "upsample.lua:7: time limit exceeded (5 s). It was stopped in phase 2 (edges split) "
-                                "after 30 splits;"))
+  EXPECT_TRUE(starts_with(text,
+                          "upsample.lua:7: time limit exceeded (5 s). It was stopped in phase 2 (edges split) "
+                          "after 30 splits;"))
       << text;
 }
 

@@ -29,8 +29,8 @@ inline ::testing::AssertionResult loop_paths_agree(const HalfedgeMesh& input, Lo
   failure << changes.size() << " fields differ (phases -> fast) after " << levels << " level(s), " << threads
           << " thread(s):";
   for (size_t i = 0; i < std::min<size_t>(changes.size(), 12); ++i) {
-    failure << "\n  " << format_id(changes[i].element) << "." << changes[i].field << ": " << changes[i].before
-            << " -> " << changes[i].after;
+    failure << "\n  " << format_id(changes[i].element) << "." << changes[i].field << ": " << changes[i].before << " -> "
+            << changes[i].after;
   }
   return failure;
 }

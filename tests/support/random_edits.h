@@ -73,8 +73,9 @@ inline void break_randomly(HalfedgeMesh& m, std::mt19937& random) {
       case 5: m.set_halfedge(VertexId(random() % m.vertex_capacity()), HalfedgeId(random() % hc)); break;
       case 6: m.set_halfedge(EdgeId(random() % m.edge_capacity()), HalfedgeId(random() % hc)); break;
       case 7: m.set_halfedge(FaceId::face(random() % m.face_capacity()), HalfedgeId(random() % hc)); break;
-      case 8: m.set_position(VertexId(random() % m.vertex_capacity()),
-                             glm::dvec3(std::numeric_limits<double>::quiet_NaN())); break;
+      case 8:
+        m.set_position(VertexId(random() % m.vertex_capacity()), glm::dvec3(std::numeric_limits<double>::quiet_NaN()));
+        break;
       default: m.delete_element(EdgeId(random() % m.edge_capacity())); break;
     }
   }

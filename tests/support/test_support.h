@@ -29,7 +29,7 @@ std::filesystem::path scratch_dir();
 }  // namespace meshedit::testing
 
 // Binds `dir` to the course data folder, or skips the test when it is absent.
-#define MESHEDIT_REQUIRE_COURSE_DATA(dir)                                           \
-  const auto dir##_opt = ::meshedit::testing::course_data_dir();                    \
+#define MESHEDIT_REQUIRE_COURSE_DATA(dir)                                          \
+  const auto dir##_opt = ::meshedit::testing::course_data_dir();                   \
   if (!dir##_opt) GTEST_SKIP() << "course files not found (../shared/data/cs184)"; \
   const std::filesystem::path dir = *dir##_opt

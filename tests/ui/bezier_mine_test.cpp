@@ -129,7 +129,8 @@ TEST(BezierMine, AMistakeInALaterLevelIsShownWhenEReachesIt) {
   const fs::path folder = testing::scratch_dir();
   // Wrong only on 3 points (level 2 of a cubic): the first point is copied instead of interpolated.
   write_file(folder, "curve.lua",
-             solution_with("curve.lua", kStepLine, kStepLine + "    if #points == 3 and i == 1 then result[i] = points[i] end\n"));
+             solution_with("curve.lua", kStepLine,
+                           kStepLine + "    if #points == 3 and i == 1 then result[i] = points[i] end\n"));
   BezierMine mine(folder);
   const CurveMineLevels& first = mine.curve_levels(kCubic, 0.5, 1);
   EXPECT_FALSE(first.failed());
@@ -155,8 +156,9 @@ TEST(BezierMine, AMissingPointIsNamedByTheChecker) {
   EXPECT_EQ(got.wrong_point, -1);
   ASSERT_EQ(got.levels.size(), 2u);
   EXPECT_EQ(got.levels[1].size(), 2u);
-  EXPECT_EQ(got.message, "level 1: point 3 of the step is missing (got 2 points, expected 3): n points give n - 1, so "
-                         "the loop runs i = 1, ..., n - 1");
+  EXPECT_EQ(got.message,
+            "level 1: point 3 of the step is missing (got 2 points, expected 3): n points give n - 1, so "
+            "the loop runs i = 1, ..., n - 1");
 }
 
 TEST(BezierMine, ALuaErrorKeepsFileAndLineAndNothingThrows) {
@@ -231,8 +233,9 @@ TEST(BezierMine, NothingRunsAgainWhileNothingChanges) {
 
 TEST(BezierMine, AWrongFileSavedRightIsReloaded) {
   const fs::path folder = testing::scratch_dir();
-  write_file(folder, "curve.lua", solution_with("curve.lua", "(1 - t) * points[i] + t * points[i + 1]",
-                                                "t * points[i] + (1 - t) * points[i + 1]"));
+  write_file(
+      folder, "curve.lua",
+      solution_with("curve.lua", "(1 - t) * points[i] + t * points[i + 1]", "t * points[i] + (1 - t) * points[i + 1]"));
   BezierMine mine(folder);
   const CurveMineLevels& swapped = mine.curve_levels(kCubic, 0.25, 1);
   EXPECT_EQ(swapped.failed_level, 1);
@@ -269,7 +272,8 @@ TEST(BezierMine, TheSolutionsProbePointIsTheReferences) {
 TEST(BezierMine, SwappedUAndVAreNamedWithBothPoints) {
   const fs::path folder = testing::scratch_dir();
   write_file(folder, "patch.lua",
-             solution_with("patch.lua", "column[row + 1] = evaluate_1d({ p[base + 1], p[base + 2], p[base + 3], p[base + 4] }, u)",
+             solution_with("patch.lua",
+                           "column[row + 1] = evaluate_1d({ p[base + 1], p[base + 2], p[base + 3], p[base + 4] }, u)",
                            "column[row + 1] = evaluate_1d({ p[row + 1], p[row + 5], p[row + 9], p[row + 13] }, u)"));
   BezierMine mine(folder);
   const PatchMinePoint& got = mine.patch_point(hill(), 0.3, 0.8);

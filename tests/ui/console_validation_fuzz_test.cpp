@@ -35,8 +35,9 @@ std::string random_line(const HalfedgeMesh& m, std::mt19937& random) {
     case 7: return "mesh:delete(mesh:vertex(" + v + "))";
     case 8: return "mesh:delete(mesh:face(" + f + "))";
     case 9: return "mesh:vertex(" + v + ").position = {1, 2, 3}";
-    case 10: return "local x = mesh:new_halfedge(); x:set_neighbors(x, x, mesh:vertex(" + v + "), mesh:edge(" + e +
-                    "), mesh:face(" + f + "))";
+    case 10:
+      return "local x = mesh:new_halfedge(); x:set_neighbors(x, x, mesh:vertex(" + v + "), mesh:edge(" + e +
+             "), mesh:face(" + f + "))";
     default: return "mesh:undo()";
   }
 }
@@ -68,9 +69,7 @@ TEST(ConsoleValidationFuzz, TheCachedValidationAgreesWithTheWholeMeshValidator) 
           apply_operation(doc, "flip", [&](HalfedgeMesh& m) { return flip(m, e); });
           break;
         }
-        default:
-          what = random_line(doc.mesh, random);
-          console.submit(doc, {}, what);
+        default: what = random_line(doc.mesh, random); console.submit(doc, {}, what);
       }
       SCOPED_TRACE("step " + std::to_string(step) + ": " + what);
       if (random() % 4 == 0) continue;  // a state the status bar never validated (two changes in one frame)

@@ -190,7 +190,7 @@ TEST(CurveEditor, AddPointBeyondAnEndExtendsTheCurve) {
   CurveEditorState state = make_curve_editor(square_curve());
   EXPECT_EQ(add_point(state, {-0.5, -0.2}), 0);  // nearest polygon point is p0 itself: prepend
   EXPECT_EQ(state.curve.control_points.front(), dvec2(-0.5, -0.2));
-  EXPECT_EQ(add_point(state, {-0.4, 1.3}), 5);   // nearest is the last point: append
+  EXPECT_EQ(add_point(state, {-0.4, 1.3}), 5);  // nearest is the last point: append
   EXPECT_EQ(state.curve.control_points.back(), dvec2(-0.4, 1.3));
   EXPECT_EQ(state.curve.control_points.size(), 6u);
 }
@@ -201,8 +201,8 @@ TEST(CurveEditor, AddPointKeepsHoveredAndDraggedOnTheirPoints) {
   state.dragged = 3;
   state.levels_shown = 2;
   EXPECT_EQ(add_point(state, {1.2, 0.5}), 2);
-  EXPECT_EQ(state.hovered, 1);   // before the insertion: unchanged
-  EXPECT_EQ(state.dragged, 4);   // after it: shifted
+  EXPECT_EQ(state.hovered, 1);  // before the insertion: unchanged
+  EXPECT_EQ(state.dragged, 4);  // after it: shifted
   EXPECT_EQ(state.curve.control_points[4], dvec2(0.0, 1.0));
   EXPECT_EQ(state.levels_shown, 2);
 }
@@ -261,9 +261,9 @@ TEST(CurveEditor, ViewMapsYUpIntoTheCanvasCentred) {
   const CurveView view = view_for(CurveRegion{{0.0, 0.0}, {1.0, 1.0}}, {100.0, 50.0}, {400.0, 300.0});
   EXPECT_EQ(view.scale, 300.0);  // the height limits
   EXPECT_EQ(view.centre, dvec2(0.5, 0.5));
-  EXPECT_EQ(curve_to_screen(view, {0.0, 0.0}), dvec2(150.0, 350.0));   // bottom-left of the square
-  EXPECT_EQ(curve_to_screen(view, {1.0, 1.0}), dvec2(450.0, 50.0));    // top-right
-  EXPECT_EQ(curve_to_screen(view, {0.5, 0.5}), dvec2(300.0, 200.0));   // canvas centre
+  EXPECT_EQ(curve_to_screen(view, {0.0, 0.0}), dvec2(150.0, 350.0));  // bottom-left of the square
+  EXPECT_EQ(curve_to_screen(view, {1.0, 1.0}), dvec2(450.0, 50.0));   // top-right
+  EXPECT_EQ(curve_to_screen(view, {0.5, 0.5}), dvec2(300.0, 200.0));  // canvas centre
   EXPECT_EQ(screen_to_curve(view, {300.0, 50.0}), dvec2(0.5, 1.0));
 }
 
@@ -304,8 +304,8 @@ TEST(CurveEditor, HitTestFindsTheNearestPointWithinTheRadius) {
   state.view = view_for(CurveRegion{{0.0, 0.0}, {1.0, 1.0}}, {100.0, 50.0}, {400.0, 300.0});
   // p0 (0,0) is at (150, 350), p1 (1,0) at (450, 350), p3 (0,1) at (150, 50).
   EXPECT_EQ(hit_test(state, {150.0, 350.0}), 0);
-  EXPECT_EQ(hit_test(state, {156.0, 342.0}), 0);     // 10 px away: on the radius
-  EXPECT_EQ(hit_test(state, {157.0, 342.0}), -1);    // just outside
+  EXPECT_EQ(hit_test(state, {156.0, 342.0}), 0);   // 10 px away: on the radius
+  EXPECT_EQ(hit_test(state, {157.0, 342.0}), -1);  // just outside
   EXPECT_EQ(hit_test(state, {445.0, 352.0}), 1);
   EXPECT_EQ(hit_test(state, {150.0, 55.0}), 3);
   EXPECT_EQ(hit_test(state, {300.0, 200.0}), -1);

@@ -80,8 +80,7 @@ TEST(Actions, NavigationMovesTheSelectionOrExplains) {
   doc.mesh.set_next(H(6), H(40));  // b0.halfedge = h6, whose next is now missing
   EXPECT_FALSE(navigate_selection(doc, sel, NavStep::Next));
   EXPECT_REF(sel.selected, B(0));
-  EXPECT_EQ(doc.message.text,
-            "N (next): b0.halfedge is h6; h6.next is h40, which does not exist (halfedges h0..h9)");
+  EXPECT_EQ(doc.message.text, "N (next): b0.halfedge is h6; h6.next is h40, which does not exist (halfedges h0..h9)");
   EXPECT_EQ(doc.message.severity, Severity::Warning);
 }
 

@@ -17,8 +17,8 @@
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
 #include "support/diff_expect.h"
-#include "support/state_before_last.h"
 #include "support/random_edits.h"
+#include "support/state_before_last.h"
 #include "ui/mesh_document.h"
 
 namespace meshedit {

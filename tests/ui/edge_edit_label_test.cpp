@@ -49,10 +49,26 @@ TEST(EdgeEditLabel, TheKeyActionsLabelsNameTheirOperationAndEdge) {
 }
 
 TEST(EdgeEditLabel, OtherLabelsReadAsNothing) {
-  for (const char* label : {"", "flip", "flip ", "flip e", "flip h5", "flip e5 ", "flip e5x", "flipe5", " flip e5",
-                            "undo", "undo flip", "undo undo flip e5", "console: flip e5", "mine: flip e5",
-                            "Loop subdivision", "undo Loop subdivision", "Loop 2/4: split every original edge",
-                            "split v3", "collapse -", "turn e5"}) {
+  for (const char* label : {"",
+                            "flip",
+                            "flip ",
+                            "flip e",
+                            "flip h5",
+                            "flip e5 ",
+                            "flip e5x",
+                            "flipe5",
+                            " flip e5",
+                            "undo",
+                            "undo flip",
+                            "undo undo flip e5",
+                            "console: flip e5",
+                            "mine: flip e5",
+                            "Loop subdivision",
+                            "undo Loop subdivision",
+                            "Loop 2/4: split every original edge",
+                            "split v3",
+                            "collapse -",
+                            "turn e5"}) {
     EXPECT_FALSE(read_edge_edit_label(label)) << '"' << label << '"';
   }
 }

@@ -25,8 +25,9 @@ std::vector<std::string> lines_of(const std::string& text) {
 
 TEST(FlowLayout, TextWrapsAtSpacesOnlyAndKeepsItsOwnBreaks) {
   ui_testing::ImGuiHarness imgui;
-  const std::string text = "The core moves v0 to (-0.2778, -0.2778, -0.2778) (blue arrow): 5/9 of its distance "
-                           "from the centre.\nfaces 2..4 and 10..17 reversed";
+  const std::string text =
+      "The core moves v0 to (-0.2778, -0.2778, -0.2778) (blue arrow): 5/9 of its distance "
+      "from the centre.\nfaces 2..4 and 10..17 reversed";
   imgui.frame([&] {
     for (const float width : {60.0f, 110.0f, 170.0f, 400.0f}) {
       const std::string wrapped = wrapped_at_spaces(text, width);

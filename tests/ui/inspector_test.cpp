@@ -103,8 +103,12 @@ struct InspectorFixture {
     ImGui::SetNextWindowSize(ImVec2(500, 700));
     draw_inspector(doc, sel, state);
   }
-  int frame() { return imgui.frame([&] { draw(); }); }
-  void click(const UiProbe::Item& item) { imgui.click(item.center(), [&] { draw(); }); }
+  int frame() {
+    return imgui.frame([&] { draw(); });
+  }
+  void click(const UiProbe::Item& item) {
+    imgui.click(item.center(), [&] { draw(); });
+  }
 };
 
 TEST(InspectorPanel, LinksSelectWhatTheyName) {
@@ -173,9 +177,9 @@ TEST(InspectorPanel, FactsAreComputedOncePerMeshState) {
   t.frame();
   EXPECT_EQ(t.state.facts_computations, 2u);
   ASSERT_TRUE(apply_operation(t.doc, "move v1", [](HalfedgeMesh& m) {
-    m.set_position(V(1), glm::dvec3(2, 0, 0));
-    return Check::yes();
-  }).ok);
+                m.set_position(V(1), glm::dvec3(2, 0, 0));
+                return Check::yes();
+              }).ok);
   t.frame();
   EXPECT_EQ(t.state.facts_computations, 3u);
 }

@@ -80,8 +80,9 @@ TEST(LessonPanel, ALessonThatSaysMemoryRanOutItselfWaitsForTheNextSave) {
 TEST(LessonPanel, DrawsAWaitingStepAndAnError) {
   const fs::path dir = testing::scratch_dir();
   const fs::path file = dir / "l.lua";
-  write(file, "lesson{title='T'}\nstep('One', function() say('**bold** text') wait_for{button='Go on'} end)\n"
-              "step('Two', function() error('broken') end)\n");
+  write(file,
+        "lesson{title='T'}\nstep('One', function() say('**bold** text') wait_for{button='Go on'} end)\n"
+        "step('Two', function() error('broken') end)\n");
   HeadlessHost host;
   LessonRunner runner(host);
   LessonPanelState state;

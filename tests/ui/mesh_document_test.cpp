@@ -31,10 +31,10 @@ std::set<Cell> cells(const std::vector<FieldChange>& changes) {
 // flip(e2) on the 1x1 grid (see mesh_ops.h): a = v3, b = v0, c = v1, d = v2; f0 becomes h2 h1 h4 (v2 v1 v3),
 // f1 becomes h3 h5 h0 (v1 v2 v0).
 const std::set<Cell> kFlipE2 = {
-    {"h0", "next", "h1", "h3"}, {"h0", "face", "f0", "f1"},   {"h1", "next", "h2", "h4"},
-    {"h2", "next", "h0", "h1"}, {"h2", "vertex", "v3", "v2"}, {"h3", "next", "h4", "h5"},
-    {"h3", "vertex", "v0", "v1"}, {"h4", "next", "h5", "h2"}, {"h4", "face", "f1", "f0"},
-    {"h5", "next", "h3", "h0"}, {"f0", "halfedge", "h0", "h2"},
+    {"h0", "next", "h1", "h3"},   {"h0", "face", "f0", "f1"},     {"h1", "next", "h2", "h4"},
+    {"h2", "next", "h0", "h1"},   {"h2", "vertex", "v3", "v2"},   {"h3", "next", "h4", "h5"},
+    {"h3", "vertex", "v0", "v1"}, {"h4", "next", "h5", "h2"},     {"h4", "face", "f1", "f0"},
+    {"h5", "next", "h3", "h0"},   {"f0", "halfedge", "h0", "h2"},
 };
 
 std::set<Cell> reversed(const std::set<Cell>& in) {
@@ -126,9 +126,8 @@ TEST(MeshDocument, ExceptionsBecomeErrorsAndAreRolledBack) {
   EXPECT_EQ(doc.message.text, "explode: h1 cannot be its own twin");
   EXPECT_REF(doc.message.element, H(1));
 
-  const OpResult<VertexId> r = apply_operation(doc, "std", [](HalfedgeMesh&) -> OpResult<VertexId> {
-    throw std::runtime_error("out of memory, pretend");
-  });
+  const OpResult<VertexId> r = apply_operation(
+      doc, "std", [](HalfedgeMesh&) -> OpResult<VertexId> { throw std::runtime_error("out of memory, pretend"); });
   EXPECT_FALSE(r.ok());
   EXPECT_FALSE(r.value.valid());
   EXPECT_EQ(doc.message.severity, Severity::Error);
@@ -209,7 +208,7 @@ TEST(MeshDocument, CountChangesAgreesWithDiff) {
   const size_t all = diff(before, grid).size();
   EXPECT_EQ(count_changes(before, grid, all), all);
   EXPECT_EQ(count_changes(grid, before, all), all);  // swapped: slots only in `before`
-  EXPECT_GT(count_changes(before, grid, 10), 10u);  // stops early, but says "more"
+  EXPECT_GT(count_changes(before, grid, 10), 10u);   // stops early, but says "more"
   EXPECT_EQ(count_changes(grid, grid, 0), 0u);
 }
 
@@ -278,9 +277,9 @@ TEST(MeshDocument, HistoryDepthFollowsTheMemoryBudget) {
   MeshDocument doc = make_document(build_halfedge_mesh(make_grid(3, 3)), "", limits);
   for (uint32_t i = 0; i < 6; ++i) {
     ASSERT_TRUE(apply_operation(doc, "move v" + std::to_string(i), [i](HalfedgeMesh& m) {
-      m.set_position(V(i), glm::dvec3(9.0));
-      return Check::yes();
-    }).ok);
+                  m.set_position(V(i), glm::dvec3(9.0));
+                  return Check::yes();
+                }).ok);
   }
   EXPECT_EQ(doc.history.undo_depth(), 4u);
 }
@@ -294,9 +293,9 @@ TEST(MeshDocument, LocalEditsKeepADeepHistoryWhateverTheMeshSize) {
   MeshDocument doc = make_document(std::move(grid), "", limits);
   for (uint32_t i = 0; i < 20; ++i) {
     ASSERT_TRUE(apply_operation(doc, "move v" + std::to_string(i), [i](HalfedgeMesh& m) {
-      m.set_position(V(i), glm::dvec3(i, 9.0, 0.0));
-      return Check::yes();
-    }).ok);
+                  m.set_position(V(i), glm::dvec3(i, 9.0, 0.0));
+                  return Check::yes();
+                }).ok);
   }
   EXPECT_EQ(doc.history.undo_depth(), 20u);
   for (const char* label : {"loop 1", "loop 2"}) {
@@ -351,9 +350,9 @@ TEST(MeshDocument, ValidationRunsOncePerMeshState) {
 
   // A broken mesh: the cache reports the problem.
   ASSERT_TRUE(apply_operation(doc, "break", [](HalfedgeMesh& m) {
-    m.set_twin(H(0), H(1));
-    return Check::yes();
-  }).ok);
+                m.set_twin(H(0), H(1));
+                return Check::yes();
+              }).ok);
   const ValidationReport& report = cached_validation(doc);
   EXPECT_FALSE(report.ok());
   EXPECT_EQ(doc.validation.computations, 4u);
@@ -390,9 +389,9 @@ TEST(MeshDocument, ValidatesALocalChangeFromItsPatch) {
 
   const HalfedgeId twin = doc.mesh.twin(H(0));
   ASSERT_TRUE(apply_operation(doc, "break", [](HalfedgeMesh& m) {
-    m.set_twin(H(0), H(1));
-    return Check::yes();
-  }).ok);
+                m.set_twin(H(0), H(1));
+                return Check::yes();
+              }).ok);
   EXPECT_EQ(cached_validation_if_cheap(doc), nullptr);  // its patch shows it broke the mesh: the report needs it all
   const ValidationReport expected = validate_without_shortcut(doc.mesh);
   const ValidationReport& report = cached_validation(doc);
@@ -405,9 +404,9 @@ TEST(MeshDocument, ValidatesALocalChangeFromItsPatch) {
 
   // From a broken state, the next change needs the whole mesh again; after it, patches serve again.
   ASSERT_TRUE(apply_operation(doc, "mend", [&](HalfedgeMesh& m) {
-    m.set_twin(H(0), twin);
-    return Check::yes();
-  }).ok);
+                m.set_twin(H(0), twin);
+                return Check::yes();
+              }).ok);
   EXPECT_EQ(cached_validation_if_cheap(doc), nullptr);
   EXPECT_TRUE(cached_validation(doc).ok());
   EXPECT_FALSE(doc.validation.value.from_patch);

@@ -8,8 +8,8 @@
 #include <cfloat>
 #include <cmath>
 #include <iterator>
-#include <string>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -22,8 +22,8 @@ using glm::dvec3;
 
 // A bumpy, non-planar patch with distinct control points: at(r, c) = (c, r, z(r, c)).
 BezierPatch bumpy_patch(double shift = 0.0) {
-  static constexpr double kHeights[16] = {0.0, 0.5, -0.25, 1.0, 0.75, 2.0, 1.5, -0.5,
-                                          -1.0, 0.25, 3.0, 0.5, 0.125, -0.75, 1.25, 2.5};
+  static constexpr double kHeights[16] = {0.0,  0.5,  -0.25, 1.0, 0.75,  2.0,   1.5,  -0.5,
+                                          -1.0, 0.25, 3.0,   0.5, 0.125, -0.75, 1.25, 2.5};
   BezierPatch patch;
   for (int r = 0; r < 4; ++r) {
     for (int c = 0; c < 4; ++c) patch.at(r, c) = dvec3(c + shift, r, kHeights[r * 4 + c]);
@@ -155,7 +155,7 @@ TEST(PatchView, OverlayFollowsTheToggles) {
   for (const auto& item : items) EXPECT_EQ(item.kind, OverlayKind::ControlNet);
   expect_same(items[8].points[0], bumpy_patch(10.0).at(0, 0));  // patch order kept
   EXPECT_EQ(items[8].label, "patch 1 row 0");
-  EXPECT_GT(items[8].width, items[0].width);                   // the selected net stands out
+  EXPECT_GT(items[8].width, items[0].width);  // the selected net stands out
 
   state.show_probe = true;
   items = patch_view_overlay(state);

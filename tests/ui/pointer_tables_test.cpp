@@ -54,8 +54,8 @@ TEST(TableFilter, ResolvesAgainstTheMesh) {
 }
 
 TEST(TableTabs, KindsRoundTrip) {
-  for (ElementKind k : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
-                        ElementKind::Boundary})
+  for (ElementKind k :
+       {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face, ElementKind::Boundary})
     EXPECT_EQ(table_kind(tab_for_kind(k)), k);
 }
 
@@ -71,8 +71,12 @@ struct TablesFixture {
     ImGui::SetNextWindowPos(ImVec2(0, 0));
     draw_pointer_tables(doc, sel, state);
   }
-  int frame() { return imgui.frame([&] { draw(); }); }
-  void click(const UiProbe::Item& item) { imgui.click(item.center(), [&] { draw(); }); }
+  int frame() {
+    return imgui.frame([&] { draw(); });
+  }
+  void click(const UiProbe::Item& item) {
+    imgui.click(item.center(), [&] { draw(); });
+  }
   // Draws the document's last change (two frames, the tab request dropped), then clicks the Changes tab open.
   void open_changes_tab() {
     frame();
@@ -134,7 +138,7 @@ TEST(PointerTables, SelectionMadeElsewhereOpensItsTabAndRow) {
   const UiProbe::Item* row = t.probe.find("row", V(400));
   ASSERT_NE(row, nullptr);
   EXPECT_GE(row->min.y, 0.0f);
-  EXPECT_LE(row->max.y, 420.0f);  // inside the window
+  EXPECT_LE(row->max.y, 420.0f);                  // inside the window
   EXPECT_EQ(t.probe.find("row", V(0)), nullptr);  // scrolled away from the top
 }
 
@@ -284,7 +288,7 @@ std::vector<uint32_t> visible_ids(const TablesFixture& t) {
 
 TEST(PointerTables, TheRowWindowSlidesSmoothlyWhileScrolling) {
   TablesFixture t(build_halfedge_mesh(make_grid(10, 10)));  // 440 halfedges
-  t.state.window_rows = 60;                                  // force the sliding window on a small mesh
+  t.state.window_rows = 60;                                 // force the sliding window on a small mesh
   t.frame();
   t.frame();
   ImGuiIO& io = ImGui::GetIO();
@@ -305,7 +309,7 @@ TEST(PointerTables, TheRowWindowSlidesSmoothlyWhileScrolling) {
     max_start = std::max(max_start, t.state.window_start[slot]);
   }
   EXPECT_GT(max_start, 0u);
-  EXPECT_GT(previous_top, 300u);  // far past the first window of 60 rows
+  EXPECT_GT(previous_top, 300u);   // far past the first window of 60 rows
   for (int i = 0; i < 150; ++i) {  // and back up to the top
     io.MousePos = ImVec2(200, 250);
     io.MouseWheel = 1.0f;
@@ -323,12 +327,12 @@ TEST(PointerTables, TheRowWindowSlidesSmoothlyWhileScrolling) {
 
 TEST(PointerTables, BrokenMeshesStillDraw) {
   TablesFixture t(grid_1x1());
-  t.doc.mesh.set_next(H(2), H(1));           // rho cycle in f0
+  t.doc.mesh.set_next(H(2), H(1));            // rho cycle in f0
   t.doc.mesh.set_twin(H(0), HalfedgeId(50));  // missing
-  t.doc.mesh.delete_element(V(2));           // dead vertex still referenced
+  t.doc.mesh.delete_element(V(2));            // dead vertex still referenced
   t.doc.mesh.set_halfedge(F(1), HalfedgeId());
-  for (TableTab tab : {TableTab::Vertices, TableTab::Halfedges, TableTab::Edges, TableTab::Faces,
-                       TableTab::Boundaries}) {
+  for (TableTab tab :
+       {TableTab::Vertices, TableTab::Halfedges, TableTab::Edges, TableTab::Faces, TableTab::Boundaries}) {
     t.sel.selected = ElementRef(table_kind(tab), 0);
     t.frame();
     EXPECT_GT(t.frame(), 0);

@@ -162,7 +162,8 @@ TEST(ScriptConsole, ARunawayLineStopsAndTheConsoleKeepsWorking) {
   ScriptConsole console;
   console.submit(doc, {}, "while true do pcall(function() while true do end end) end");
   EXPECT_EQ(last_entry(console).kind, ConsoleEntryKind::Error);
-  EXPECT_NE(last_entry(console).text.find("instruction budget exceeded"), std::string::npos) << last_entry(console).text;
+  EXPECT_NE(last_entry(console).text.find("instruction budget exceeded"), std::string::npos)
+      << last_entry(console).text;
   console.submit(doc, {}, "1 + 1");
   EXPECT_EQ(last_entry(console).text, "2");
 }

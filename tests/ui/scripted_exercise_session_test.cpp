@@ -49,8 +49,8 @@ TEST(ScriptedExerciseSession, TheExercisesTabRunsAndReplaysACollapse) {
   EXPECT_TRUE(run.report.equal) << run.report.summary();
   EXPECT_EQ(doc.mesh.num_vertices(), 11u);
   EXPECT_EQ(doc.mesh.num_faces(), 18u);
-  EXPECT_TRUE(testing::near(doc.mesh.position(VertexId(run.report.mine.element.index)), expected.position(kept.value),
-                            1e-12));
+  EXPECT_TRUE(
+      testing::near(doc.mesh.position(VertexId(run.report.mine.element.index)), expected.position(kept.value), 1e-12));
   EXPECT_EQ(doc.history.undo_depth(), 1u);
 
   ASSERT_TRUE(session.can_replay(doc));

@@ -30,7 +30,9 @@ struct StatusFixture {
     probe.clear();
     height = draw_status_bar(doc, sel, state, 16.7f);
   }
-  int frame() { return imgui.frame([&] { draw(); }); }
+  int frame() {
+    return imgui.frame([&] { draw(); });
+  }
 };
 
 TEST(StatusBar, ValidMeshShowsGreenAndValidatesOnce) {
@@ -95,9 +97,9 @@ TEST(StatusBar, ABigMeshBrokenByAnEditWaitsForTheButton) {
   t.frame();
   t.imgui.click(t.probe.find("validate")->center(), [&] { t.draw(); });
   ASSERT_TRUE(apply_operation(t.doc, "break", [](HalfedgeMesh& m) {
-    m.set_twin(H(0), H(1));
-    return Check::yes();
-  }).ok);
+                m.set_twin(H(0), H(1));
+                return Check::yes();
+              }).ok);
   t.frame();
   t.frame();
   EXPECT_EQ(t.doc.validation.computations, 1u);
@@ -149,15 +151,15 @@ void draw_everything_on(MeshDocument& doc) {
     draw_inspector(doc, sel, inspector);
     draw_status_bar(doc, sel, status, 1.0f);
   };
-  for (ElementKind kind : {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face,
-                           ElementKind::Boundary}) {
+  for (ElementKind kind :
+       {ElementKind::Vertex, ElementKind::Halfedge, ElementKind::Edge, ElementKind::Face, ElementKind::Boundary}) {
     for (uint32_t i = 0; i <= doc.mesh.capacity(kind); ++i) {
       sel.selected = ElementRef(kind, i);
       sel.hovered = ElementRef(kind, i);
       imgui.frame(draw);
       ASSERT_GT(imgui.frame(draw), 0) << format_id(sel.selected);
-      for (NavStep step : {NavStep::Next, NavStep::Twin, NavStep::Vertex, NavStep::Edge, NavStep::Face,
-                           NavStep::Halfedge}) {
+      for (NavStep step :
+           {NavStep::Next, NavStep::Twin, NavStep::Vertex, NavStep::Edge, NavStep::Face, NavStep::Halfedge}) {
         Selection walk{ElementRef(kind, i), {}};
         // Refused or not, never crashes; when it moves, it lands on a live element.
         if (navigate_selection(doc, walk, step)) {
@@ -174,10 +176,10 @@ void draw_everything_on(MeshDocument& doc) {
 TEST(Panels, SurviveARhoCycle) {
   MeshDocument doc = make_document(build_halfedge_mesh(make_grid(2, 2)));
   ASSERT_TRUE(apply_operation(doc, "bend next", [](HalfedgeMesh& m) {
-    m.set_next(H(2), H(1));  // f0: h0 -> h1 -> h2 -> h1 -> ... never back to h0
-    m.set_next(H(7), H(7));  // and a halfedge that is its own next
-    return Check::yes();
-  }).ok);
+                m.set_next(H(2), H(1));  // f0: h0 -> h1 -> h2 -> h1 -> ... never back to h0
+                m.set_next(H(7), H(7));  // and a halfedge that is its own next
+                return Check::yes();
+              }).ok);
   ASSERT_FALSE(cached_validation(doc).ok());
   draw_everything_on(doc);
 }
@@ -185,15 +187,15 @@ TEST(Panels, SurviveARhoCycle) {
 TEST(Panels, SurviveDeadAndMissingReferences) {
   MeshDocument doc = make_document(build_halfedge_mesh(make_grid(2, 2)));
   ASSERT_TRUE(apply_operation(doc, "break", [](HalfedgeMesh& m) {
-    m.delete_element(V(4));                        // the centre, still referenced by six halfedges
-    m.delete_element(H(5));                        // referenced by its twin, its prev and maybe a vertex
-    m.set_twin(H(0), HalfedgeId(1000));            // out of range
-    m.set_face(H(1), FaceId::boundary(9));         // a boundary loop that does not exist
-    m.set_halfedge(F(3), HalfedgeId());            // null
-    m.set_halfedge(V(0), HalfedgeId(77));          // out of range
-    m.set_position(V(1), glm::dvec3(std::nan(""), 0, 0));
-    return Check::yes();
-  }).ok);
+                m.delete_element(V(4));                 // the centre, still referenced by six halfedges
+                m.delete_element(H(5));                 // referenced by its twin, its prev and maybe a vertex
+                m.set_twin(H(0), HalfedgeId(1000));     // out of range
+                m.set_face(H(1), FaceId::boundary(9));  // a boundary loop that does not exist
+                m.set_halfedge(F(3), HalfedgeId());     // null
+                m.set_halfedge(V(0), HalfedgeId(77));   // out of range
+                m.set_position(V(1), glm::dvec3(std::nan(""), 0, 0));
+                return Check::yes();
+              }).ok);
   ASSERT_FALSE(cached_validation(doc).ok());
   draw_everything_on(doc);
 }

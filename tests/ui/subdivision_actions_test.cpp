@@ -23,7 +23,7 @@ TEST(SubdivisionActions, CatmullClarkIsOneUndoableStep) {
   ASSERT_TRUE(catmull_clark_all(doc, sel).ok);
   EXPECT_TRUE(doc.mesh.same_as(reference));
   EXPECT_EQ(doc.last.label, "Catmull-Clark subdivision");
-  EXPECT_REF(sel.selected, V(3));  // original vertices keep their ids
+  EXPECT_REF(sel.selected, V(3));     // original vertices keep their ids
   EXPECT_FALSE(sel.hovered.valid());  // edge e1 is another edge now
   ASSERT_TRUE(undo_edit(doc, sel));
   EXPECT_TRUE(doc.mesh.same_as(start));
@@ -71,8 +71,7 @@ TEST(SubdivisionActions, CatmullClarkPhaseByPhase) {
   EXPECT_EQ(doc.message.text,
             "Catmull-Clark 1/3: compute face, edge and vertex points: 6 face points, 12 edge points, 8 vertex points; "
             "nothing moved yet");
-  EXPECT_EQ(next_phase_label(doc, stepper),
-            "Catmull-Clark 2/3: split every face into quads (nothing moves yet)");
+  EXPECT_EQ(next_phase_label(doc, stepper), "Catmull-Clark 2/3: split every face into quads (nothing moves yet)");
   ASSERT_TRUE(subdivision_step(doc, sel, stepper).ok);
   EXPECT_EQ(doc.mesh.num_faces(), 24u);
   EXPECT_EQ(doc.mesh.position(V(5)), start.position(V(5)));  // nothing moved yet

@@ -22,7 +22,7 @@ inline FaceId F(uint32_t i) { return FaceId::face(i); }
 inline FaceId B(uint32_t i) { return FaceId::boundary(i); }
 
 // Compares elements by their printed form, so failures read "h13 vs h14".
-#define EXPECT_REF(actual, expected)                                  \
+#define EXPECT_REF(actual, expected)                               \
   EXPECT_EQ(::meshedit::format_id(::meshedit::ElementRef(actual)), \
             ::meshedit::format_id(::meshedit::ElementRef(expected)))
 

@@ -79,7 +79,8 @@ TEST(WindowLayout, MinimisedTinyAndNonsenseSizesStillTile) {
   LayoutPrefs huge;
   huge.left_ems = 1e9f;
   huge.right_ems = -5;
-  for (const auto& [w, h] : std::vector<std::pair<float, float>>{{0, 0}, {1, 1}, {200, 150}, {640, 400}, {7680, 4320}}) {
+  for (const auto& [w, h] :
+       std::vector<std::pair<float, float>>{{0, 0}, {1, 1}, {200, 150}, {640, 400}, {7680, 4320}}) {
     for (const LayoutPrefs& prefs : {LayoutPrefs{}, huge}) {
       const WindowLayout l = compute_layout(w, h, 22, 40, prefs, 16, true);
       SCOPED_TRACE(std::to_string(w) + "x" + std::to_string(h));
