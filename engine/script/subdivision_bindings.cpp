@@ -190,21 +190,21 @@ int phases_points(lua_State* L) {
   const HalfedgeMesh& mesh = *box.mesh;
   const auto original_vertex = [&](size_t v) { return mesh.alive(VertexId(uint32_t(v))); };
   lua_createtable(L, 0, 3);
-  if (const LoopState* s = phases.loop_state()) {
-    std::vector<uint8_t> split(s->edge_position.size(), 0);
-    for (EdgeId e : s->original_edges) split[e.index] = 1;
-    set_points(L, "vertices", s->vertex_position, original_vertex);
-    set_points(L, "edges", s->edge_position, [&](size_t e) { return split[e] != 0; });
-  } else if (const CatmullClarkState* s = phases.catmull_clark_state()) {
-    const RefineLayout& layout = s->layout;
-    set_points(L, "vertices", s->vertex_point, original_vertex);
-    set_points(L, "edges", s->edge_point, [&](size_t e) { return layout.edge_vertex[e] != RefineLayout::kNone; });
-    set_points(L, "faces", s->face_point, [&](size_t f) { return layout.face_vertex[f] != RefineLayout::kNone; });
-  } else if (const LinearState* s = phases.linear_state()) {
-    const RefineLayout& layout = s->layout;
-    set_points(L, "edges", positions_of(layout.edge_vertex, s->position),
+  if (const LoopState* loop = phases.loop_state()) {
+    std::vector<uint8_t> split(loop->edge_position.size(), 0);
+    for (EdgeId e : loop->original_edges) split[e.index] = 1;
+    set_points(L, "vertices", loop->vertex_position, original_vertex);
+    set_points(L, "edges", loop->edge_position, [&](size_t e) { return split[e] != 0; });
+  } else if (const CatmullClarkState* cc = phases.catmull_clark_state()) {
+    const RefineLayout& layout = cc->layout;
+    set_points(L, "vertices", cc->vertex_point, original_vertex);
+    set_points(L, "edges", cc->edge_point, [&](size_t e) { return layout.edge_vertex[e] != RefineLayout::kNone; });
+    set_points(L, "faces", cc->face_point, [&](size_t f) { return layout.face_vertex[f] != RefineLayout::kNone; });
+  } else if (const LinearState* linear = phases.linear_state()) {
+    const RefineLayout& layout = linear->layout;
+    set_points(L, "edges", positions_of(layout.edge_vertex, linear->position),
                [&](size_t e) { return layout.edge_vertex[e] != RefineLayout::kNone; });
-    set_points(L, "faces", positions_of(layout.face_vertex, s->position),
+    set_points(L, "faces", positions_of(layout.face_vertex, linear->position),
                [&](size_t f) { return layout.face_vertex[f] != RefineLayout::kNone; });
   }
   return 1;
