@@ -1,8 +1,10 @@
 // GLFW window + GL 3.3 core context + ImGui backends (see glfw_window.h).
 #include "app/glfw_window.h"
 
-#include <GLFW/glfw3.h>
+// libepoxy's gl.h comes before every other GL header (GLFW's included).
 #include <epoxy/gl.h>
+
+#include <GLFW/glfw3.h>
 #include <imgui.h>
 #include <imgui_impl_glfw.h>
 #include <imgui_impl_opengl3.h>
