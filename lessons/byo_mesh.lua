@@ -289,7 +289,7 @@ end
 
 step("Triangulate the quads", function()
   local suzanne = meshedit.load(lesson_file(SUZANNE))
-  show(suzanne)
+  show(suzanne, { up = "y" }) -- her .obj is Y-up, as opening it in the window shows her
   camera "fit"
   view { labels = false, halfedges = false }
   local quads, triangles_before = faces_with(suzanne, 4), faces_with(suzanne, 3)
@@ -333,7 +333,7 @@ step("Subdivide it", function()
   if not mesh then
     local triangles = meshedit.load(lesson_file(SUZANNE))
     triangles:triangulate()
-    show(triangles)
+    show(triangles, { up = "y" })
     mesh = current_mesh()
   end
   local ok_loop, why = mesh:copy():loop_subdivide()

@@ -111,9 +111,10 @@ class EditorApp {
   // What the window shows as it starts, before the file it was given (if any) is opened: the default cube. Never
   // throws: out of memory, the window starts empty, with an Error that says so (see the invariants).
   void show_start_mesh();
-  // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked), a curve, patches. Each is
-  // whole or nothing, as show_mesh: what stops it (memory running out) is thrown with the window unchanged.
-  void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit);
+  // What lessons show (window_lesson_host.h): a mesh (fitting the camera only when asked; `up` as show{up=} says, else
+  // Z), a curve, patches. Each is whole or nothing, as show_mesh: what stops it (memory running out) is thrown with
+  // the window unchanged.
+  void show_lesson_mesh(const HalfedgeMesh& mesh, bool fit, std::optional<UpAxis> up = std::nullopt);
   void show_curve(const BezierCurve& curve);
   void show_patches(const std::vector<BezierPatch>& patches);
   // A lesson's view{...}: turns the parts it names on or off.

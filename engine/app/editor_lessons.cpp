@@ -39,9 +39,11 @@ constexpr float kHiddenArrowAlpha = 0.3f;  // a lesson's arrow where the mesh is
 
 }  // namespace
 
-void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit) {
+void EditorApp::show_lesson_mesh(const HalfedgeMesh& mesh, bool fit, std::optional<UpAxis> up) {
   HalfedgeMesh copy = mesh;  // the one step that can fail: the window is as it was when it does
-  file_up_axis_.reset();     // a lesson's mesh is made from core's Z-up primitives
+  // Core's primitives are Z-up; a mesh the lesson read from a file is shown as the lesson says its file is.
+  if (up) file_up_axis_ = FileUpAxis{*up, UpAxisSource::Lesson};
+  else file_up_axis_.reset();
   take_mesh(std::move(copy), std::string(), fit || mode_ != ViewMode::Mesh);
 }
 

@@ -20,6 +20,10 @@ std::string_view up_axis_status(UpAxisChoice choice, const std::optional<FileUpA
   }
   if (!file) return "Z up";
   if (file->source == UpAxisSource::CourseExporter) return "Z up (course file)";
+  if (file->source == UpAxisSource::Lesson)
+    return file->up_axis == UpAxis::Y   ? "Y up (the lesson's)"
+           : file->up_axis == UpAxis::X ? "X up (the lesson's)"
+                                        : "Z up (the lesson's)";
   switch (file->up_axis) {
     case UpAxis::X: return "X up (from the file)";
     case UpAxis::Y: return "Y up (from the file)";
@@ -36,6 +40,7 @@ std::string_view up_axis_status_tooltip(UpAxisChoice choice, const std::optional
     case UpAxisSource::FileTag: return "What the file's <up_axis> says (View > Up axis changes it)";
     case UpAxisSource::CourseExporter:
       return "A CS184 course file: Z-up, although its exporter tagged it Y_UP (View > Up axis changes it)";
+    case UpAxisSource::Lesson: return "The lesson shows this mesh as its file is meant (View > Up axis changes it)";
   }
   return "View > Up axis changes it";
 }

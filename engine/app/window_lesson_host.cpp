@@ -5,9 +5,9 @@
 
 namespace meshedit {
 
-void WindowLessonHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh) {
+void WindowLessonHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh, std::optional<UpAxis> up) {
   if (!mesh) return;
-  app_.show_lesson_mesh(*mesh, !shown_this_step_);
+  app_.show_lesson_mesh(*mesh, !shown_this_step_, up);
   shown_this_step_ = true;
 }
 

@@ -54,9 +54,10 @@ inline constexpr std::array<std::string_view, 1> kMistaggedExporters = {
 
 // Where a file's up axis came from (the window's status bar says it).
 enum class UpAxisSource {
-  Format,         // the format's entry in kFormatUpAxes
-  FileTag,        // the COLLADA file's <up_axis>
-  CourseExporter  // the file's exporter is in kMistaggedExporters: Z whatever the tag says
+  Format,          // the format's entry in kFormatUpAxes
+  FileTag,         // the COLLADA file's <up_axis>
+  CourseExporter,  // the file's exporter is in kMistaggedExporters: Z whatever the tag says
+  Lesson           // a lesson's show(mesh, {up = ...}), for a mesh it read from a file
 };
 
 struct FileUpAxis {

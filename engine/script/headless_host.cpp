@@ -36,14 +36,14 @@ std::string colour_hex(glm::vec3 colour) {
   return buffer;
 }
 
-void HeadlessHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh) {
+void HeadlessHost::show_mesh(std::shared_ptr<HalfedgeMesh> mesh, std::optional<UpAxis> up) {
   if (!mesh) {
     calls_.push_back("show_mesh (none)");
     shown_mesh_.reset();
     screen_mesh_.reset();
     return;
   }
-  calls_.push_back("show_mesh " + mesh_summary(*mesh));
+  calls_.push_back("show_mesh " + mesh_summary(*mesh) + (up ? " " + std::string(up_axis_name(*up)) : ""));
   screen_mesh_ = std::make_shared<HalfedgeMesh>(*mesh);
   shown_mesh_ = std::move(mesh);
   curve_.reset();

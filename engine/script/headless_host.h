@@ -29,7 +29,7 @@ namespace meshedit {
 
 class HeadlessHost : public LessonHost {
  public:
-  void show_mesh(std::shared_ptr<HalfedgeMesh> mesh) override;
+  void show_mesh(std::shared_ptr<HalfedgeMesh> mesh, std::optional<UpAxis> up) override;
   void show_curve(const BezierCurve& curve) override;
   void show_patches(const std::vector<BezierPatch>& patches) override;
   void highlight(ElementRef element, glm::vec3 colour) override;

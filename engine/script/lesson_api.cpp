@@ -271,11 +271,28 @@ int api_say(lua_State* L) {
   return 0;
 }
 
+// show(mesh, {up = "y"}): the axis a mesh read from a file is shown with pointing up (its file's, which the lesson
+// knows); none: Z, as for every mesh MeshEdit makes.
+std::optional<UpAxis> show_up_axis(lua_State* L, int index) {
+  if (lua_isnoneornil(L, index)) return std::nullopt;
+  if (!lua_istable(L, index))
+    raise(L, "show: the second argument is a table like {up = \"y\"}, got " + type_name(L, index));
+  check_fields(L, index, "show", {"up"});
+  lua_getfield(L, index, "up");
+  const char* up = lua_isstring(L, -1) ? lua_tostring(L, -1) : "";
+  const std::string word = up;
+  lua_pop(L, 1);
+  if (word == "x") return UpAxis::X;
+  if (word == "y") return UpAxis::Y;
+  if (word == "z") return UpAxis::Z;
+  raise(L, "show: up must be \"x\", \"y\" or \"z\" (the axis pointing up on screen), got '" + word + "'");
+}
+
 int api_show(lua_State* L) {
   require_step(L, "show()");
   LessonHost& host = *script_of(L).host;
   if (std::shared_ptr<HalfedgeMesh> mesh = to_mesh(L, 1)) {
-    host.show_mesh(std::move(mesh));
+    host.show_mesh(std::move(mesh), show_up_axis(L, 2));
     return 0;
   }
   const std::string name = userdata_name(L, 1);

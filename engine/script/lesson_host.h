@@ -28,6 +28,7 @@
 #include "core/bezier.h"
 #include "core/halfedge_mesh.h"
 #include "core/ids.h"
+#include "core/up_axis.h"
 
 namespace meshedit {
 
@@ -62,7 +63,8 @@ class LessonHost {
   virtual ~LessonHost() = default;
 
   // ---- what is on screen ----
-  virtual void show_mesh(std::shared_ptr<HalfedgeMesh> mesh) = 0;
+  // `up`: the axis shown pointing up (a mesh read from a Y-up file); none: Z, as every mesh MeshEdit makes.
+  virtual void show_mesh(std::shared_ptr<HalfedgeMesh> mesh, std::optional<UpAxis> up = std::nullopt) = 0;
   virtual void show_curve(const BezierCurve& curve) = 0;
   virtual void show_patches(const std::vector<BezierPatch>& patches) = 0;
 

@@ -42,8 +42,11 @@ function wait_for(spec) end
 function animate(seconds, fn) end
 
 ---Shows a mesh, a 2D curve (z = 0), a list of points (a curve) or patches ({{16 points}, ...}).
+---A mesh is shown Z-up, as every mesh MeshEdit makes; `{up = "y"}` shows one read from a Y-up file (.obj, glTF,
+---.ply) the way opening that file does (the status bar says "Y up (the lesson's)"; View > Up axis still turns it).
 ---@param what Mesh|Curve|Patch|Patch[]|point[]|point[][]
-function show(what) end
+---@param options? {up: "x"|"y"|"z"}
+function show(what, options) end
 
 ---@alias Colour string|number[] "red" ... (colour-blind-safe palette colours), "#rrggbb" or {r, g, b} in [0, 1]
 

@@ -9,6 +9,7 @@ namespace {
 const FileUpAxis kObj{UpAxis::Y, UpAxisSource::Format};
 const FileUpAxis kTaggedX{UpAxis::X, UpAxisSource::FileTag};
 const FileUpAxis kCourseDae{UpAxis::Z, UpAxisSource::CourseExporter};
+const FileUpAxis kLessonY{UpAxis::Y, UpAxisSource::Lesson};
 
 TEST(UpAxisChoice, FromTheFileIsTheFilesAndZWithoutOne) {
   EXPECT_EQ(chosen_up_axis(UpAxisChoice::FromFile, kObj), UpAxis::Y);
@@ -29,6 +30,7 @@ TEST(UpAxisChoice, TheStatusBarSaysTheAxisAndWhereItCameFrom) {
   EXPECT_EQ(up_axis_status(UpAxisChoice::FromFile, kObj), "Y up (from the file)");
   EXPECT_EQ(up_axis_status(UpAxisChoice::FromFile, kTaggedX), "X up (from the file)");
   EXPECT_EQ(up_axis_status(UpAxisChoice::FromFile, kCourseDae), "Z up (course file)");
+  EXPECT_EQ(up_axis_status(UpAxisChoice::FromFile, kLessonY), "Y up (the lesson's)");
   EXPECT_EQ(up_axis_status(UpAxisChoice::FromFile, std::nullopt), "Z up");
   EXPECT_EQ(up_axis_status(UpAxisChoice::Z, kObj), "Z up (View menu)");
   EXPECT_EQ(up_axis_status(UpAxisChoice::Y, std::nullopt), "Y up (View menu)");
@@ -38,6 +40,7 @@ TEST(UpAxisChoice, TheTooltipSaysWhy) {
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kObj).find("format's convention"), std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kTaggedX).find("<up_axis>"), std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kCourseDae).find("course file"), std::string_view::npos);
+  EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, kLessonY).find("lesson"), std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::FromFile, std::nullopt).find("MeshEdit makes"),
             std::string_view::npos);
   EXPECT_NE(up_axis_status_tooltip(UpAxisChoice::Y, kObj).find("View > Up axis"), std::string_view::npos);

@@ -107,5 +107,40 @@ TEST(WindowUpAxis, FilesShowTheirUpAxisAndTheViewMenuTurnsAndRefits) {
   EXPECT_EQ(run.status, 0) << run.output;
 }
 
+TEST(WindowUpAxis, ALessonShowsAMeshReadFromAFileWithTheUpAxisItGives) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path lesson = dir / "upright.lua";
+  write_file(lesson, R"lua(step("Upright", function()
+  show(meshedit.cube(), { up = "y" })
+  say "Y up"
+end)
+step("Made here", function()
+  show(meshedit.cube())
+  say "Z up"
+end)
+)lua");
+  const Viewport view = view_size(x.display(), lesson, dir);
+  std::ostringstream actions;
+  actions << "frames 2\n"
+          << "expect-up-axis Y Y up (the lesson's)\n"
+          << "click " << cube_vertex_pixel(UpAxis::Y, VertexId(6), view) << "\n"  // the camera turned and refitted
+          << "expect-selected v6\n"
+          << "up-axis z\n"  // the student may still turn it
+          << "expect-up-axis Z Z up (View menu)\n"
+          << "up-axis from-file\n"
+          << "expect-up-axis Y Y up (the lesson's)\n"
+          << "lesson-next\n"
+          << "frames 2\n"
+          << "expect-up-axis Z Z up\n"
+          << "lesson-back\n"
+          << "frames 2\n"
+          << "expect-up-axis Y Y up (the lesson's)\n"
+          << "quit\n";
+  const WindowRun run = run_window(x.display(), lesson, actions.str(), dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+}
+
 }  // namespace
 }  // namespace meshedit

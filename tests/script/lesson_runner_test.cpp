@@ -136,6 +136,34 @@ end)
   EXPECT_NE(runner.error().find("arrows"), std::string::npos) << runner.error();
 }
 
+TEST(LessonRunner, ShowTakesTheUpAxisOfAMeshReadFromAFile) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(write_lesson(testing::scratch_dir(), R"lua(step("Up", function()
+  show(meshedit.cube(), { up = "y" })
+  show(meshedit.cube())
+end)
+step("Not an axis", function()
+  show(meshedit.cube(), { up = "w" })
+end)
+step("Unknown option", function()
+  show(meshedit.cube(), { upright = true })
+end)
+)lua")))
+      << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Finished) << runner.error();
+  EXPECT_EQ(host.calls(), (Strings{"clear_annotations", "show_mesh (8 vertices, 18 edges, 12 faces) Y up",
+                                   "show_mesh (8 vertices, 18 edges, 12 faces)"}));
+  runner.next();
+  EXPECT_EQ(runner.step_state(), State::Failed);
+  EXPECT_NE(runner.error().find("show: up must be \"x\", \"y\" or \"z\""), std::string::npos) << runner.error();
+  EXPECT_NE(runner.error().find("got 'w'"), std::string::npos) << runner.error();
+  EXPECT_EQ(runner.error().rfind("lesson.lua:6: ", 0), 0u) << runner.error();
+  runner.next();
+  EXPECT_EQ(runner.step_state(), State::Failed);
+  EXPECT_NE(runner.error().find("upright"), std::string::npos) << runner.error();
+}
+
 TEST(LessonRunner, ShowTakesTheLessonsOwnMeshObject) {
   HeadlessHost host;
   LessonRunner runner(host);
@@ -682,7 +710,9 @@ end)
 
 class ThrowingHost : public HeadlessHost {
  public:
-  void show_mesh(std::shared_ptr<HalfedgeMesh>) override { throw std::runtime_error("no GPU today"); }
+  void show_mesh(std::shared_ptr<HalfedgeMesh>, std::optional<UpAxis>) override {
+    throw std::runtime_error("no GPU today");
+  }
 };
 
 TEST(LessonRunner, AHostExceptionBecomesAStepError) {
