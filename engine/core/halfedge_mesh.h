@@ -17,7 +17,9 @@
 //   here or edited by the core's operations.
 // - The class never follows pointers on its own except in the bounded walks below, which stop after
 //   `halfedge_capacity()` steps, so a broken mesh can be inspected without hanging.
-// - Every mutation bumps `version()`, so caches (GPU buffers, tables) know when to refresh.
+// - Every mutation bumps `version()`, so caches (GPU buffers, tables) know when to refresh. Every mutation but
+//   set_position also drops the triangle rows (triangle_rows.h) a Loop subdivision left, which describe the
+//   connectivity they were made from.
 // - While a ChangeJournal is attached (change_journal.h; off by default), every mutating member first reports the
 //   slot it is about to write, and every wholesale replacement (assignment, being moved from, MeshStorage's direct
 //   array access) makes the journal take a full snapshot first (out of memory, the journal gives up the state before
@@ -30,6 +32,7 @@
 
 #include <algorithm>
 #include <cstdint>
+#include <memory>
 #include <utility>
 #include <vector>
 
@@ -38,6 +41,7 @@
 #include "core/alive_flags.h"
 #include "core/ids.h"
 #include "core/mesh_array.h"
+#include "core/triangle_rows.h"
 
 namespace meshedit {
 
@@ -222,7 +226,7 @@ class HalfedgeMesh {
   void set_position(VertexId v, const glm::dvec3& p) {
     log_write(v);
     v_position_[v.index] = p;
-    touch();
+    ++version_;  // the connectivity, and so the triangle rows, stay as they are
   }
 
   // ---- allocation and deletion --------------------------------------------------------------------
@@ -283,13 +287,16 @@ class HalfedgeMesh {
     *this = std::move(replacement);
     bump_version_above(seen);
   }
-  // Memory held by the arrays, in bytes (capacity, not size).
+  // Memory held by the arrays and the triangle rows, in bytes (capacity, not size).
   size_t memory_bytes() const;
 
   // True while the mesh is unchanged since a builder or an operation that checks its result declared it a valid
   // mesh whose faces are all triangles (build_halfedge_mesh, loop_subdivide); any mutation ends it. Whole-mesh
   // passes (vertex_normals) may then skip per-step checks. Never true for a mesh nobody vouched for.
   bool proven_valid_triangles() const { return proven_version_ == version_; }
+  // Every face as a row of its corners, in an order that keeps neighbours close (triangle_rows.h): left by Loop
+  // subdivision and kept until the connectivity changes; nullptr otherwise.
+  const TriangleRows* triangle_rows() const { return rows_.get(); }
 
   // Exact equality of every array (ids, pointers, liveness, positions bit for bit); version is ignored.
   bool same_as(const HalfedgeMesh& other) const;
@@ -298,7 +305,10 @@ class HalfedgeMesh {
   // The builder and the whole-mesh fast paths (Loop subdivision) fill the arrays directly through it, one pass
   // per array instead of one call per element (mesh_storage.h).
   friend struct MeshStorage;
-  void touch() { ++version_; }
+  void touch() {
+    ++version_;
+    if (rows_) rows_.reset();
+  }
   void log_write(VertexId v) { journal_.before_write(ElementKind::Vertex, v.index); }
   void log_write(HalfedgeId h) { journal_.before_write(ElementKind::Halfedge, h.index); }
   void log_write(EdgeId e) { journal_.before_write(ElementKind::Edge, e.index); }
@@ -327,7 +337,8 @@ class HalfedgeMesh {
 
   size_t live_vertices_ = 0, live_halfedges_ = 0, live_edges_ = 0, live_faces_ = 0, live_boundaries_ = 0;
   uint64_t version_ = 0;
-  uint64_t proven_version_ = ~uint64_t(0);  // version_ at the last MeshStorage::vouch_valid_triangles
+  uint64_t proven_version_ = ~uint64_t(0);    // version_ at the last MeshStorage::vouch_valid_triangles
+  std::shared_ptr<const TriangleRows> rows_;  // what Loop left, while the connectivity is unchanged
 };
 
 template <class Fn>

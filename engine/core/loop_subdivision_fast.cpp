@@ -17,9 +17,12 @@
 //   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
 // - An old vertex's halfedge x changes only when x is split()'s h0 of its edge (it becomes that split's n0).
 // - Positions use loop_rules.h with the same neighbour order, so they are the same doubles.
+// - Rows (triangle_rows.h). The four faces T becomes take four consecutive rows, at 4 x T's own row (its row in the
+//   mesh's rows, or its rank among live faces when the mesh had none), so the last level's rows follow the surface.
 // Passes write disjoint elements per index (parallel_for), and each reads only what no pass running at the same
 // time writes: vertex points go to a temporary array until every vertex has read its neighbours.
 #include <algorithm>
+#include <memory>
 #include <vector>
 
 #include "core/finite.h"
@@ -203,6 +206,7 @@ struct TriangleCase {
   uint8_t face[12];
   uint8_t vertex[12];
   uint8_t face_halfedge[4];
+  uint8_t corner[4][3];  // each face's corners (vertex slots), from its halfedge in next order
 };
 
 // Replays split() on T's three sides in `order`, then flip() of the first split's crossing edge, on slot numbers:
@@ -254,6 +258,10 @@ TriangleCase replay_case(const uint8_t order[3], const bool side_h0[3]) {
   t.next[h1] = h5, t.next[h5] = h2, t.next[h2] = h1;
   t.face[h2] = f1;
   t.face_halfedge[f1] = h1;
+  for (uint8_t g = 0; g < 4; ++g) {
+    uint8_t h = t.face_halfedge[g];
+    for (uint8_t k = 0; k < 3; ++k, h = t.next[h]) t.corner[g][k] = t.vertex[h];
+  }
   return t;
 }
 
@@ -286,8 +294,17 @@ const TriangleCase& triangle_case(unsigned order, unsigned sides) {
   return table[order * 8 + sides];
 }
 
-// Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case.
-void pass_triangles(Level& L, int threads) {
+// Where pass_triangles puts each triangle's four faces in the row order: T's four faces go to rows 4 x row_of[T]
+// and on. The next level reads next_row_of (when there is one), the mesh keeps rows (after the last level).
+struct RowOrder {
+  const uint32_t* row_of;  // by face id of this level's input (live faces only)
+  uint32_t* next_row_of;   // by face id of its output, or null
+  TriangleRow* rows;       // the output's rows, or null
+};
+
+// Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
+// and the four faces' places in the row order.
+void pass_triangles(Level& L, int threads, const RowOrder& order) {
   (void)triangle_case(0, 0);  // build the table before the threads start
   parallel_for(threads, L.f0, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
@@ -350,6 +367,18 @@ void pass_triangles(Level& L, int threads) {
                            EdgeId(edge_id[s - 3]), FaceId::face(face_id[c.face[s]])};
       }
       for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
+      const uint32_t first_row = 4 * order.row_of[f];
+      if (order.next_row_of) {
+        for (uint32_t g = 0; g < 4; ++g) order.next_row_of[face_id[g]] = first_row + g;
+      }
+      if (order.rows) {
+        for (uint32_t g = 0; g < 4; ++g) {
+          order.rows[first_row + g] =
+              TriangleRow{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
+                           VertexId(vertex_id[c.corner[g][2]])},
+                          FaceId::face(face_id[g])};
+        }
+      }
     }
   });
 }
@@ -358,11 +387,25 @@ void pass_triangles(Level& L, int threads) {
 struct Scratch {
   MeshArray<EdgePlan> plan;
   MeshArray<glm::dvec3> points;
+  MeshArray<uint32_t> row_of, next_row_of;  // RowOrder's, by face id of the level's input and output
 };
+
+// The first level's row_of: each face's row in `rows` when the mesh had rows, else its rank among live faces.
+void first_row_order(const HalfedgeMesh& mesh, const TriangleRows* rows, MeshArray<uint32_t>& row_of) {
+  resize_for_overwrite(row_of, mesh.face_capacity());  // read for live faces only, each written below
+  if (rows) {
+    for (size_t r = 0; r < rows->size(); ++r) row_of[(*rows)[r].face.slot()] = uint32_t(r);
+    return;
+  }
+  uint32_t rank = 0;
+  for (FaceId f : mesh.faces()) row_of[f.slot()] = rank++;
+}
 
 // Subdivides once. With `check_finite`, also returns whether every live position of the result is finite (with huge
 // coordinates a weighted sum can overflow); otherwise true.
-bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch, bool check_finite) {
+// `rows`: where the last level writes its output's rows (null before the last level).
+bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scratch& scratch, bool check_finite,
+                     TriangleRows* rows) {
   Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(),
           mesh.face_capacity(),   MeshStorage::view(mesh),  scratch.plan};
   uint32_t live_edges = 0, boundary_edges = 0;
@@ -375,7 +418,15 @@ bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   resize_for_overwrite(points, L.v0);  // written for live vertices, read only for them
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
-  pass_triangles(L, threads);
+  if (rows) {
+    resize_for_overwrite(*rows, mesh.num_faces());  // every row written: 4 per live face of the input
+  } else {
+    resize_for_overwrite(scratch.next_row_of, mesh.face_capacity());  // written for every face of the output
+  }
+  pass_triangles(
+      L, threads,
+      RowOrder{scratch.row_of.data(), rows ? nullptr : scratch.next_row_of.data(), rows ? rows->data() : nullptr});
+  if (!rows) scratch.row_of.swap(scratch.next_row_of);
   const size_t vertices = check_finite ? mesh.vertex_capacity() : L.v0;
   std::vector<uint8_t> chunk_finite(chunk_count(threads, vertices), 1);
   parallel_chunks(threads, vertices, [&](size_t chunk, size_t begin, size_t end) {
@@ -404,10 +455,15 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
   size_t vertices = mesh.vertex_capacity(), halfedges = mesh.halfedge_capacity(), edges = mesh.edge_capacity(),
          faces = mesh.face_capacity(), live_edges = mesh.num_edges(), live_faces = mesh.num_faces();
   Scratch scratch;
+  // The rows the mesh has (if any) order the first level (the first write drops them); the last level's output gets
+  // new ones.
+  first_row_order(mesh, mesh.triangle_rows(), scratch.row_of);
   for (int i = 0; i < levels; ++i) {
     if (i + 1 == levels) {
       scratch.plan.reserve(edges);
       scratch.points.reserve(vertices);
+      scratch.row_of.reserve(faces);  // row_of and next_row_of swap at each level but the last
+      scratch.next_row_of.reserve(faces);
     }
     vertices += live_edges;
     halfedges += 6 * live_edges;
@@ -418,10 +474,17 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
     live_edges = next_edges;
   }
   MeshStorage::reserve_total(mesh, vertices, halfedges, edges, faces);
+  auto rows = std::make_shared<TriangleRows>();
+  rows->reserve(live_faces);  // every allocation before the first level, so running out of memory changes nothing
   bool positions_finite = true;
-  for (int i = 0; i < levels; ++i) positions_finite = subdivide_level(mesh, weights, threads, scratch, i + 1 == levels);
-  // Accepted input, so the result is valid and all triangles, unless a position overflowed.
+  for (int i = 0; i < levels; ++i) {
+    const bool last = i + 1 == levels;
+    positions_finite = subdivide_level(mesh, weights, threads, scratch, last, last ? rows.get() : nullptr);
+  }
+  // Accepted input, so the result is valid and all triangles, unless a position overflowed; its connectivity is the
+  // rows' either way.
   if (positions_finite) MeshStorage::vouch_valid_triangles(mesh);
+  MeshStorage::set_triangle_rows(mesh, std::move(rows));
   return Check::yes();
 }
 

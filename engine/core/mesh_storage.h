@@ -3,6 +3,8 @@
 //
 // Invariants: a mesh with a ChangeJournal attached is told before view(), grow(), arrays() or set_slots() hands out
 // or changes its arrays (the journal takes a full snapshot then, since it cannot follow such writes slot by slot).
+// Each of those, and set_versions(), drops the mesh's triangle rows (triangle_rows.h): they cannot follow such
+// writes either. A caller that makes rows for what it wrote sets them last, with set_triangle_rows().
 // grow() appends live elements (alive flags set, live counts and version() updated) and leaves their fields for the
 // caller to write, all of them; a View's pointers stay valid until the next change of any array's size. Code that
 // writes through a View must leave a mesh the element API could have produced, and calls touch() when done.
@@ -30,6 +32,7 @@ struct MeshStorage {
 
   static View view(HalfedgeMesh& m) {
     m.journal_.before_bulk_write();
+    m.rows_.reset();
     return {m.h_.data(),          m.v_halfedge_.data(), m.v_position_.data(), m.e_halfedge_.data(),
             m.f_halfedge_.data(), &m.v_alive_,          &m.e_alive_,          &m.f_alive_};
   }
@@ -41,6 +44,7 @@ struct MeshStorage {
   // reserve_total for the last step first, as Loop does, so the steps do not copy the arrays again each time.
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.journal_.before_bulk_write();
+    m.rows_.reset();
     reserve_total(m, vertices, halfedges, edges, faces);
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
@@ -71,6 +75,12 @@ struct MeshStorage {
   // for code that has established it: the builder's fast path, Loop subdivision of an accepted mesh.
   static void vouch_valid_triangles(HalfedgeMesh& m) { m.proven_version_ = m.version_; }
 
+  // Rows made for the connectivity as it is now, set after the last write that would drop them. Only for code that
+  // made them so (Loop subdivision).
+  static void set_triangle_rows(HalfedgeMesh& m, std::shared_ptr<const TriangleRows> rows) {
+    m.rows_ = std::move(rows);
+  }
+
   // The arrays themselves, for a builder that sizes and fills them from nothing (mesh_build_fast.cpp).
   struct Arrays {
     MeshArray<HalfedgeRecord>& h;
@@ -87,6 +97,7 @@ struct MeshStorage {
   };
   static Arrays arrays(HalfedgeMesh& m) {
     m.journal_.before_bulk_write();
+    m.rows_.reset();
     return {m.h_,       m.h_alive_,    m.v_halfedge_, m.v_position_, m.v_alive_, m.e_halfedge_,
             m.e_alive_, m.f_halfedge_, m.f_alive_,    m.b_halfedge_, m.b_alive_};
   }
@@ -109,6 +120,7 @@ struct MeshStorage {
   static void set_slots(HalfedgeMesh& m, const uint32_t (&capacity)[kElementKindCount],
                         const size_t (&live)[kElementKindCount]) {
     m.journal_.before_bulk_write();
+    m.rows_.reset();
     m.v_halfedge_.resize(capacity[0]);
     m.v_position_.resize(capacity[0]);
     m.v_alive_.resize(capacity[0], false);
@@ -149,6 +161,7 @@ struct MeshStorage {
   static void set_versions(HalfedgeMesh& m, uint64_t version, uint64_t proven_version) {
     m.version_ = version;
     m.proven_version_ = proven_version;
+    m.rows_.reset();
   }
 };
 

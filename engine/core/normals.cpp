@@ -198,31 +198,69 @@ void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dve
   }
 }
 
-// vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
-// in face order (about 3x faster than walking each vertex's fan, 1040 -> 350 ms at 6.4M faces after Loop, where a
-// fan's halfedges are a chain of dependent cache misses). Each vertex gets the same terms as vertex_normal, added
-// in another order, so the two agree to rounding. With more threads, each adds its stripes of faces into its own
-// sums (the first into `normals`) and the sums are added per vertex, so the result depends on the thread count, by
-// rounding only.
-void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
-  const size_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity();
-  const size_t chunks = chunk_count(threads, faces);
+// Adds the term of each triangle in rows [begin, end) (triangle_rows.h), taken from its first corner as
+// add_face_terms takes it, to its three corners' sums. The rows keep neighbours together, so most corners are in
+// cache already; the corners of a row a little ahead are prefetched for the rest.
+void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t begin, size_t end, glm::dvec3* sums) {
+  constexpr size_t kAhead = 8;
+  for (size_t r = begin; r < end; ++r) {
+    if (r + kAhead < end) {
+      for (VertexId c : rows[r + kAhead].corner) {
+        __builtin_prefetch(&mesh.position(c));
+        __builtin_prefetch(&sums[c.index]);
+      }
+    }
+    const VertexId* c = rows[r].corner;
+    const glm::dvec3 term = corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
+    sums[c[0].index] += term;
+    sums[c[1].index] += term;
+    sums[c[2].index] += term;
+  }
+}
+
+// Scatters terms to corners over `count` items (faces or rows), `add_terms(begin, end, sums)` adding items [begin,
+// end) into `sums`, then normalises. With more threads, each adds its share of the items into its own sums (the
+// first into `normals`) and the sums are added per vertex, so the result depends on the thread count, by rounding
+// only. `striped`: each thread takes stripes across the items rather than one run of them.
+template <class AddTerms>
+void scatter_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads, size_t count,
+                     bool striped, AddTerms&& add_terms) {
+  const size_t vertices = mesh.vertex_capacity();
+  const size_t chunks = chunk_count(threads, count);
   normals.resize(vertices);
   std::vector<MeshArray<glm::dvec3>> extra(chunks - 1);
   const auto sums_of = [&](size_t chunk) { return chunk == 0 ? normals.data() : extra[chunk - 1].data(); };
-  parallel_chunks(threads, faces, [&](size_t chunk, size_t, size_t) {
+  parallel_chunks(threads, count, [&](size_t chunk, size_t, size_t) {
     if (chunk > 0) resize_for_overwrite(extra[chunk - 1], vertices);
     std::fill(sums_of(chunk), sums_of(chunk) + vertices, glm::dvec3(0.0));
   });
-  // Striped, not halved: the first faces after Loop (the old ids) cost about twice as much as the rest.
-  parallel_stripes(threads, faces,
-                   [&](size_t chunk, size_t begin, size_t end) { add_face_terms(mesh, begin, end, sums_of(chunk)); });
+  const auto add = [&](size_t chunk, size_t begin, size_t end) { add_terms(begin, end, sums_of(chunk)); };
+  if (striped) parallel_stripes(threads, count, add);
+  else parallel_chunks(threads, count, add);
   parallel_for(threads, vertices, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       glm::dvec3 sum = normals[v];
       for (const MeshArray<glm::dvec3>& more : extra) sum += more[v];
       normals[v] = unit_or_zero(sum);
     }
+  });
+}
+
+// vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
+// in face order (about 3x faster than walking each vertex's fan, where a fan's halfedges are a chain of dependent
+// cache misses). Each vertex gets the same terms as vertex_normal, added in another order, so the two agree to
+// rounding. Striped over threads: the first faces after Loop (the old ids) cost about twice as much as the rest.
+void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
+  scatter_normals(mesh, normals, threads, mesh.face_capacity(), true,
+                  [&](size_t begin, size_t end, glm::dvec3* sums) { add_face_terms(mesh, begin, end, sums); });
+}
+
+// The same over the mesh's triangle rows, which list the same faces with the same first corners: the same terms
+// again, added in row order. Each thread takes one run of rows, a patch of the surface.
+void row_order_normals(const HalfedgeMesh& mesh, const TriangleRows& rows, std::vector<glm::dvec3>& normals,
+                       int threads) {
+  scatter_normals(mesh, normals, threads, rows.size(), false, [&](size_t begin, size_t end, glm::dvec3* sums) {
+    add_row_terms(mesh, rows.data(), begin, end, sums);
   });
 }
 
@@ -233,6 +271,10 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
   // else): the same terms in the same order, so the same bits. Each face's term is taken from the vertex's own
   // halfedge, so no per-face array is needed (fresh memory costs more than the arithmetic on a big mesh).
   normals.resize(mesh.vertex_capacity());
+  if (const TriangleRows* rows = mesh.triangle_rows()) {
+    row_order_normals(mesh, *rows, normals, threads);
+    return;
+  }
   if (mesh.proven_valid_triangles()) {
     face_order_normals(mesh, normals, threads);
     return;

@@ -14,10 +14,11 @@
 // - Walks are bounded and every id is checked before it is followed: a broken mesh yields zero vectors
 //   where a fan or cycle does not close or reaches a dead element; dead or out-of-range ids give zero.
 // - The whole-mesh versions equal the per-element ones exactly (same terms, same order), with one exception for
-//   speed: on a mesh proven valid with triangle faces only (HalfedgeMesh::proven_valid_triangles: just built
-//   or subdivided), vertex_normals adds each face's vector area, taken from the face's own first corner, to its
-//   three corners in face order. That agrees with vertex_normal to rounding (a few units in the last place),
-//   and with more threads the order of the additions, so the last bits, depend on the thread count.
+//   speed: on a mesh whose connectivity Loop subdivision left (HalfedgeMesh::triangle_rows: its rows, whatever the
+//   positions are now) or one proven valid with triangle faces only (HalfedgeMesh::proven_valid_triangles: just
+//   built or subdivided), vertex_normals adds each face's vector area, taken from the face's own first corner, to
+//   its three corners, in row order or in face order. That agrees with vertex_normal to rounding (a few units in the
+//   last place), and with more threads the order of the additions, so the last bits, depend on the thread count.
 #pragma once
 
 #include <cstdint>

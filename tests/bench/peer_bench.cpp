@@ -18,6 +18,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <iterator>
 #include <memory>
 #include <stdexcept>
 #include <string>
@@ -160,10 +161,14 @@ int main(int argc, char** argv) {
         "(bench_support.h)\n",
         kBackedMiB);
   }
+  Judging judging;
   if (FILE* load = std::fopen("/proc/loadavg", "r")) {  // the machine is shared: say how busy it was
     double one = 0, five = 0;
-    if (std::fscanf(load, "%lf %lf", &one, &five) == 2)
-      std::printf("  load average at start: %.2f (1 min), %.2f (5 min)\n", one, five);
+    if (std::fscanf(load, "%lf %lf", &one, &five) == 2) {
+      std::printf("  load average at start: %.2f (1 min), %.2f (5 min)%s\n", one, five,
+                  one > 1.0 ? "; above 1, so no target is judged met or not (rerun on a quiet machine)" : "");
+      judging.load = one;
+    }
     std::fclose(load);
   }
   for (const Entry& e : entries)
@@ -176,9 +181,12 @@ int main(int argc, char** argv) {
   }
 
   bool all_ok = true;
-  TableRow build_row, closed_row, boundary_row, normal_row, memory_row;
-  normal_row.target[0] = normal_row.target[1] = 3.0;
-  memory_row.strictly_below = true;
+  // The targets: Loop >= 3x OpenMesh and >= 2x CGAL, normals >= 1.1x both on one thread and >= 1.5x both on two,
+  // build >= 3x both; memory is reported, with no target.
+  TableRow build_row, closed_row, boundary_row, normal_row, normal_threads_row, memory_row;
+  normal_row.target[0] = normal_row.target[1] = 1.1;
+  normal_threads_row.target[0] = normal_threads_row.target[1] = 1.5;
+  memory_row.has_target = false;
 
   // ---- 1. build from indexed triangles ----------------------------------------------------------------
   {
@@ -238,8 +246,8 @@ int main(int argc, char** argv) {
   for (const Variant& variant : variants) {
     TableRow& loop_row = variant.closed ? closed_row : boundary_row;
     loop_row.label = "Loop " + variant.label + " (ms)";
-    loop_row.target[0] = 4.0;
-    loop_row.target[1] = 3.0;
+    loop_row.target[0] = 3.0;
+    loop_row.target[1] = 2.0;
 
     // Our result is the reference every other output must match.
     VertexData reference;
@@ -364,15 +372,25 @@ int main(int argc, char** argv) {
 
   std::vector<TableRow> rows = {build_row};
   for (const Variant& variant : variants) rows.push_back(variant.closed ? closed_row : boundary_row);
-  if (o.closed) rows.insert(rows.end(), {normal_row, memory_row});
+  if (o.closed) {
+    // Ours on all its threads against the peers on one (neither peer's normals take threads).
+    normal_threads_row.label = "vertex normals, ours on " + std::to_string(o.threads) + " threads (ms)";
+    normal_threads_row.ours = normal_row.ours_threads;
+    std::copy(std::begin(normal_row.peer), std::end(normal_row.peer), std::begin(normal_threads_row.peer));
+    for (int k = 0; k < kPeerSlots; ++k) normal_threads_row.peer_note[k] = normal_row.peer_note[k];
+    rows.push_back(normal_row);
+    if (ours_threads_normals) rows.push_back(normal_threads_row);
+    rows.push_back(memory_row);
+  }
   std::printf("\n");
-  print_table(rows, thread_column);
+  print_table(rows, thread_column, judging);
   if (ours_threads_subdivide || ours_threads_normals) {
     for (const TableRow& row : rows) {
       if (std::isnan(row.ours_threads)) continue;
-      std::printf("ours with %d threads over one, %s: %.2fx (target >= 1.6x at 1M faces or more: %s)\n", o.threads,
-                  row.label.substr(0, row.label.rfind(" (")).c_str(), row.ours / row.ours_threads,
-                  row.ours / row.ours_threads >= 1.6 ? "met" : "NOT met");
+      const double speedup = row.ours / row.ours_threads;
+      std::printf("ours with %d threads over one, %s: %.2fx (target >= 1.8x: %s)\n", o.threads,
+                  row.label.substr(0, row.label.rfind(" (")).c_str(), speedup,
+                  ratio_status(speedup, 1.8, judging).c_str());
     }
   }
   CatmullClarkOptions catmull_clark;

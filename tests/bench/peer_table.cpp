@@ -17,7 +17,7 @@ std::string number(double value, int decimals = -1) {
 }
 
 std::string target_text(const TableRow& row) {
-  if (row.strictly_below) return "below both";
+  if (!row.has_target) return "-";
   char text[64];
   if (row.target[0] == row.target[1]) {
     std::snprintf(text, sizeof text, ">= %gx both", row.target[0]);
@@ -27,9 +27,21 @@ std::string target_text(const TableRow& row) {
   return text;
 }
 
+std::string not_judged(const Judging& judging) {
+  char text[64];
+  std::snprintf(text, sizeof text, "not judged (load %.2f > 1)", judging.load);
+  return text;
+}
+
 }  // namespace
 
-std::string row_status(const TableRow& row) {
+std::string ratio_status(double ratio, double target, const Judging& judging) {
+  if (!judging.judged()) return not_judged(judging);
+  return ratio >= target ? "met" : "NOT met";
+}
+
+std::string row_status(const TableRow& row, const Judging& judging) {
+  if (!row.has_target) return "-";
   int measured = 0, met = 0;
   bool failed = false;  // a peer that is present but has no number (its output did not match) fails the row
   std::string missing;
@@ -42,15 +54,18 @@ std::string row_status(const TableRow& row) {
     }
     ++measured;
     const double ratio = row.peer[k] / row.ours;
-    if (row.strictly_below ? ratio > 1.0 : ratio >= row.target[k]) ++met;
+    if (ratio >= row.target[k]) ++met;
   }
   if (measured == 0) return (failed ? "NOT met (" : "n/a (") + missing + ")";
-  std::string status = met == measured && !failed ? "met" : "NOT met";
+  std::string status = failed              ? "NOT met"
+                       : !judging.judged() ? not_judged(judging)
+                       : met == measured   ? "met"
+                                           : "NOT met";
   if (!missing.empty()) status += " (" + missing + ")";
   return status;
 }
 
-void print_table(const std::vector<TableRow>& rows, int threads) {
+void print_table(const std::vector<TableRow>& rows, int threads, const Judging& judging) {
   const bool with_threads = threads > 1;
   char thread_header[32];
   std::snprintf(thread_header, sizeof thread_header, "ours %d thr", threads);
@@ -73,7 +88,7 @@ void print_table(const std::vector<TableRow>& rows, int threads) {
       ratios[k] = std::isnan(row.peer[k]) || std::isnan(row.ours) ? "-" : number(row.peer[k] / row.ours, 2) + "x";
     }
     std::printf(" %10s | %10s | %8s | %9s | %-22s | %s\n", cells[0].c_str(), cells[1].c_str(), ratios[0].c_str(),
-                ratios[1].c_str(), target_text(row).c_str(), row_status(row).c_str());
+                ratios[1].c_str(), target_text(row).c_str(), row_status(row, judging).c_str());
   }
 }
 

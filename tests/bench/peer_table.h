@@ -1,5 +1,7 @@
 // The one table peer_bench prints: a row per measurement, ours against OpenMesh and CGAL, the ratios
-// peer/ours and whether each row's target ratio is met.
+// peer/ours and whether each row's target ratio is met. Whether a target is met is judged only on a quiet machine
+// (Judging: the load average at the start at most 1): on a busy one the peers pay for the load differently, and
+// the status says the run was not judged.
 #pragma once
 
 #include <cmath>
@@ -18,13 +20,22 @@ struct TableRow {
   double peer[kPeerSlots] = {NAN, NAN};
   std::string peer_note[kPeerSlots];       // why a peer has no number ("absent", "mismatch")
   double target[kPeerSlots] = {1.0, 1.0};  // peer/ours must be at least this
-  bool strictly_below = false;             // memory: ours must be below the peer (peer/ours > 1)
+  bool has_target = true;                  // false: the row informs (memory) and has no status
+};
+
+// Whether targets are judged, and why not.
+struct Judging {
+  double load = 0.0;  // the 1-minute load average when the program started
+  bool judged() const { return load <= 1.0; }
 };
 
 // Prints the rows; `threads` > 1 adds the column of ours with that many threads.
-void print_table(const std::vector<TableRow>& rows, int threads);
+void print_table(const std::vector<TableRow>& rows, int threads, const Judging& judging);
 
-// "met", "NOT met" or "n/a ..." for one row (also used for the exit summary).
-std::string row_status(const TableRow& row);
+// "met", "NOT met", "n/a ...", or "not judged (load ...)" for one row.
+std::string row_status(const TableRow& row, const Judging& judging);
+
+// The status of a ratio against a target, as row_status words it: "met", "NOT met" or "not judged (load ...)".
+std::string ratio_status(double ratio, double target, const Judging& judging);
 
 }  // namespace meshedit::bench
