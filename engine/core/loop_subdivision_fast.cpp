@@ -17,8 +17,9 @@
 //   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
 // - An old vertex's halfedge x changes only when x is split()'s h0 of its edge (it becomes that split's n0).
 // - Positions use loop_rules.h with the same neighbour order, so they are the same doubles.
-// - Rows (triangle_rows.h). The four faces T becomes take four consecutive rows, at 4 x T's own row (its row in the
-//   mesh's rows, or its rank among live faces when the mesh had none), so the last level's rows follow the surface.
+// - Rows (triangle_rows.h). pass_triangles takes the triangles in row order (the mesh's rows, or live faces in id
+//   order when it has none) and the four faces T becomes take four consecutive rows, at 4 x T's row, so each
+//   level's rows follow the surface more closely and the next level reads its neighbours close together.
 // Passes write disjoint elements per index (parallel_for), and each reads only what no pass running at the same
 // time writes: vertex points go to a temporary array until every vertex has read its neighbours.
 #include <algorithm>
@@ -294,40 +295,44 @@ const TriangleCase& triangle_case(unsigned order, unsigned sides) {
   return table[order * 8 + sides];
 }
 
-// Where pass_triangles puts each triangle's four faces in the row order: T's four faces go to rows 4 x row_of[T]
-// and on. The next level reads next_row_of (when there is one), the mesh keeps rows (after the last level).
+// The order pass_triangles takes the triangles in, and where it puts their faces: the triangle in row r (its
+// face_at_row[r]) puts its four faces in rows 4r to 4r + 3. The next level reads next_face_at_row (when there is
+// one), the mesh keeps rows (after the last level). Neighbours on the surface come close in the rows, so the
+// triangles that share an edge are mostly written one soon after the other.
 struct RowOrder {
-  const uint32_t* row_of;  // by face id of this level's input (live faces only)
-  uint32_t* next_row_of;   // by face id of its output, or null
-  TriangleRow* rows;       // the output's rows, or null
+  const uint32_t* face_at_row;  // this level's input: every live face once
+  size_t count;                 // its live faces
+  uint32_t* next_face_at_row;   // its output's, or null
+  TriangleRow* rows;            // the output's rows, or null
 };
 
 // Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
 // and the four faces' places in the row order.
 void pass_triangles(Level& L, int threads, const RowOrder& order) {
   (void)triangle_case(0, 0);  // build the table before the threads start
-  parallel_for(threads, L.f0, [&](size_t begin, size_t end) {
+  parallel_for(threads, order.count, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
-    for (size_t f = begin; f < end; ++f) {
-      // The chain face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for later
-      // faces now, one link per stage. (Dead faces are skipped: their halfedge may be any id.)
-      const auto live = [&](size_t g) { return g < end && (*m.face_alive)[g]; };
-      if (live(f + 24)) __builtin_prefetch(&m.h[m.face_halfedge[f + 24].index]);
-      if (live(f + 16)) {
-        const HalfedgeRecord& x0 = m.h[m.face_halfedge[f + 16].index];
+    const uint32_t* face_at = order.face_at_row;
+    for (size_t r = begin; r < end; ++r) {
+      // The chain row -> face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for
+      // later rows now, one link per stage.
+      if (r + 32 < end) __builtin_prefetch(&m.face_halfedge[face_at[r + 32]]);
+      if (r + 24 < end) __builtin_prefetch(&m.h[m.face_halfedge[face_at[r + 24]].index]);
+      if (r + 16 < end) {
+        const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[r + 16]].index];
         __builtin_prefetch(&m.h[x0.next.index]);
         __builtin_prefetch(&L.plan[x0.edge.index]);
       }
-      if (live(f + 8)) {
-        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[f + 8].index].next.index];
+      if (r + 8 < end) {
+        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[r + 8]].index].next.index];
         __builtin_prefetch(&m.h[x1.next.index]);
         __builtin_prefetch(&L.plan[x1.edge.index]);
       }
-      if (live(f + 4)) {
-        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[f + 4].index].next.index].next.index];
+      if (r + 4 < end) {
+        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[r + 4]].index].next.index].next.index];
         __builtin_prefetch(&L.plan[x2.edge.index]);
       }
-      if (!(*m.face_alive)[f]) continue;
+      const size_t f = face_at[r];
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
       unsigned sides = 0;
       id[0] = m.face_halfedge[f].index;
@@ -367,9 +372,9 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
                            EdgeId(edge_id[s - 3]), FaceId::face(face_id[c.face[s]])};
       }
       for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
-      const uint32_t first_row = 4 * order.row_of[f];
-      if (order.next_row_of) {
-        for (uint32_t g = 0; g < 4; ++g) order.next_row_of[face_id[g]] = first_row + g;
+      const size_t first_row = 4 * r;
+      if (order.next_face_at_row) {
+        for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = face_id[g];
       }
       if (order.rows) {
         for (uint32_t g = 0; g < 4; ++g) {
@@ -387,18 +392,18 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
 struct Scratch {
   MeshArray<EdgePlan> plan;
   MeshArray<glm::dvec3> points;
-  MeshArray<uint32_t> row_of, next_row_of;  // RowOrder's, by face id of the level's input and output
+  MeshArray<uint32_t> face_at_row, next_face_at_row;  // RowOrder's, for the level's input and output
 };
 
-// The first level's row_of: each face's row in `rows` when the mesh had rows, else its rank among live faces.
-void first_row_order(const HalfedgeMesh& mesh, const TriangleRows* rows, MeshArray<uint32_t>& row_of) {
-  resize_for_overwrite(row_of, mesh.face_capacity());  // read for live faces only, each written below
+// The first level's face_at_row: the faces in the order of the mesh's rows when it has them, else in id order.
+void first_row_order(const HalfedgeMesh& mesh, const TriangleRows* rows, MeshArray<uint32_t>& face_at_row) {
+  resize_for_overwrite(face_at_row, mesh.num_faces());  // every entry written below
+  size_t r = 0;
   if (rows) {
-    for (size_t r = 0; r < rows->size(); ++r) row_of[(*rows)[r].face.slot()] = uint32_t(r);
+    for (const TriangleRow& row : *rows) face_at_row[r++] = row.face.slot();
     return;
   }
-  uint32_t rank = 0;
-  for (FaceId f : mesh.faces()) row_of[f.slot()] = rank++;
+  for (FaceId f : mesh.faces()) face_at_row[r++] = f.slot();
 }
 
 // Subdivides once. With `check_finite`, also returns whether every live position of the result is finite (with huge
@@ -418,15 +423,16 @@ bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   resize_for_overwrite(points, L.v0);  // written for live vertices, read only for them
   pass_vertices(L, weights, threads, points);
   pass_edges(L, threads);
+  const size_t input_faces = mesh.num_faces() / 4;  // grow() counted the output: four faces for each
   if (rows) {
-    resize_for_overwrite(*rows, mesh.num_faces());  // every row written: 4 per live face of the input
+    resize_for_overwrite(*rows, mesh.num_faces());  // every row written
   } else {
-    resize_for_overwrite(scratch.next_row_of, mesh.face_capacity());  // written for every face of the output
+    resize_for_overwrite(scratch.next_face_at_row, mesh.num_faces());  // every entry written
   }
-  pass_triangles(
-      L, threads,
-      RowOrder{scratch.row_of.data(), rows ? nullptr : scratch.next_row_of.data(), rows ? rows->data() : nullptr});
-  if (!rows) scratch.row_of.swap(scratch.next_row_of);
+  pass_triangles(L, threads,
+                 RowOrder{scratch.face_at_row.data(), input_faces, rows ? nullptr : scratch.next_face_at_row.data(),
+                          rows ? rows->data() : nullptr});
+  if (!rows) scratch.face_at_row.swap(scratch.next_face_at_row);
   const size_t vertices = check_finite ? mesh.vertex_capacity() : L.v0;
   std::vector<uint8_t> chunk_finite(chunk_count(threads, vertices), 1);
   parallel_chunks(threads, vertices, [&](size_t chunk, size_t begin, size_t end) {
@@ -457,13 +463,13 @@ Check loop_subdivide(HalfedgeMesh& mesh, LoopWeights weights, int levels, int th
   Scratch scratch;
   // The rows the mesh has (if any) order the first level (the first write drops them); the last level's output gets
   // new ones.
-  first_row_order(mesh, mesh.triangle_rows(), scratch.row_of);
+  first_row_order(mesh, mesh.triangle_rows(), scratch.face_at_row);
   for (int i = 0; i < levels; ++i) {
     if (i + 1 == levels) {
       scratch.plan.reserve(edges);
       scratch.points.reserve(vertices);
-      scratch.row_of.reserve(faces);  // row_of and next_row_of swap at each level but the last
-      scratch.next_row_of.reserve(faces);
+      scratch.face_at_row.reserve(live_faces);  // the two swap at each level but the last
+      scratch.next_face_at_row.reserve(live_faces);
     }
     vertices += live_edges;
     halfedges += 6 * live_edges;
