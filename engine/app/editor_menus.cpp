@@ -11,8 +11,8 @@
 #include "app/editor_app.h"
 #include "app/key_bindings.h"
 #include "app/mesh_loading.h"
-#include "ui/document_actions.h"
-#include "ui/subdivision_actions.h"
+#include "document/document_actions.h"
+#include "document/subdivision_actions.h"
 #include "ui/theme.h"
 
 namespace meshedit {

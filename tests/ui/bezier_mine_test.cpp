@@ -14,11 +14,11 @@
 
 #include "core/bezier.h"
 #include "core/value_format.h"
+#include "document/bezier_mine.h"
+#include "document/student_file.h"
 #include "support/test_support.h"
-#include "ui/bezier_mine.h"
 #include "ui/curve_editor.h"
 #include "ui/patch_view.h"
-#include "ui/student_file.h"
 #include "ui/ui_test_support.h"
 
 namespace meshedit {

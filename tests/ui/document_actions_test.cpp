@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 
 #include "core/loop_subdivision.h"
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

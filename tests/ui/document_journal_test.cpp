@@ -16,10 +16,10 @@
 #include "core/mesh_ops.h"
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
+#include "document/mesh_document.h"
 #include "support/diff_expect.h"
 #include "support/random_edits.h"
 #include "support/state_before_last.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit {
 namespace {

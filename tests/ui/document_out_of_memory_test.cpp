@@ -15,9 +15,9 @@
 #include "core/mesh_ops.h"
 #include "core/mesh_storage.h"
 #include "core/primitives.h"
+#include "document/mesh_document.h"
 #include "support/failing_snapshots.h"
 #include "support/next_edit_check.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit {
 namespace {

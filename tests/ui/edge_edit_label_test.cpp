@@ -1,9 +1,10 @@
-// The labels of flip, split and collapse read back (ui/edge_edit_label.h): the ones the key actions and their undo and
-// redo leave in doc.last.label name the operation, the edge and the direction; every other label reads as nothing.
+// The labels of flip, split and collapse read back (document/edge_edit_label.h): the ones the key actions and their
+// undo and redo leave in doc.last.label name the operation, the edge and the direction; every other label reads as
+// nothing.
 #include <gtest/gtest.h>
 
-#include "ui/document_actions.h"
-#include "ui/edge_edit_label.h"
+#include "document/document_actions.h"
+#include "document/edge_edit_label.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

@@ -9,7 +9,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
-#include "ui/exception_report.h"
+#include "document/exception_report.h"
 
 namespace meshedit {
 namespace {

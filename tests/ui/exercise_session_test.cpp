@@ -15,9 +15,9 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "document/exercise_session.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"
-#include "ui/exercise_session.h"
 #include "ui/ui_test_support.h"
 
 namespace meshedit {

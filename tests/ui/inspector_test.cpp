@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "document/mesh_document.h"
 #include "ui/inspector.h"
-#include "ui/mesh_document.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

@@ -12,8 +12,8 @@
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "document/mesh_document.h"
 #include "support/state_before_last.h"
-#include "ui/mesh_document.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

@@ -12,10 +12,10 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "document/exercise_session.h"
 #include "script/scripted_exercise.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"
-#include "ui/exercise_session.h"
 
 namespace meshedit {
 namespace {

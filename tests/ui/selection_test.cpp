@@ -5,9 +5,9 @@
 #include <gtest/gtest.h>
 
 #include "core/mesh_ops.h"
-#include "ui/document_actions.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
+#include "document/document_actions.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

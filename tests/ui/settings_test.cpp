@@ -6,8 +6,8 @@
 #include <cstdlib>
 #include <fstream>
 
+#include "document/settings.h"
 #include "support/test_support.h"
-#include "ui/settings.h"
 
 namespace meshedit {
 namespace {

@@ -5,8 +5,8 @@
 #include "core/catmull_clark.h"
 #include "core/linear_subdivision.h"
 #include "core/primitives.h"
-#include "ui/document_actions.h"
-#include "ui/subdivision_actions.h"
+#include "document/document_actions.h"
+#include "document/subdivision_actions.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

@@ -3,7 +3,7 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 #include "ui_test_support.h"
 
 namespace meshedit {

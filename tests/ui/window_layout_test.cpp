@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "ui/window_layout.h"
+#include "document/window_layout.h"
 
 namespace meshedit {
 namespace {

@@ -1,5 +1,5 @@
 // StudentFile: see student_file.h for the contract.
-#include "ui/student_file.h"
+#include "document/student_file.h"
 
 #include <exception>
 #include <new>

@@ -1,5 +1,5 @@
 // The window's lasting settings (see settings.h). One table lists every key with how it is read and written.
-#include "ui/settings.h"
+#include "document/settings.h"
 
 #include <algorithm>
 #include <cmath>

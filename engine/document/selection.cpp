@@ -1,5 +1,5 @@
 // Navigation and selection upkeep (see selection.h). Every read of a stored field is preceded by in_range().
-#include "ui/selection.h"
+#include "document/selection.h"
 
 namespace meshedit {
 

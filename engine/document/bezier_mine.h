@@ -27,8 +27,8 @@
 #include <glm/vec3.hpp>
 
 #include "core/bezier.h"
+#include "document/student_file.h"
 #include "script/exercises.h"
-#include "ui/student_file.h"
 
 namespace meshedit {
 

@@ -1,5 +1,5 @@
 // The window's fixed layout (see window_layout.h).
-#include "ui/window_layout.h"
+#include "document/window_layout.h"
 
 #include <algorithm>
 #include <cmath>

@@ -2,7 +2,7 @@
 //
 // The verdict is check_exercise's (report.equal); this file only finds the first point that differs, to name it,
 // with the checker's own tolerance for a curve step (points_tolerance, core/mesh_compare.h).
-#include "ui/bezier_mine.h"
+#include "document/bezier_mine.h"
 
 #include <algorithm>
 #include <cmath>

@@ -1,5 +1,5 @@
 // Catmull-Clark and linear subdivision as document actions (see subdivision_actions.h).
-#include "ui/subdivision_actions.h"
+#include "document/subdivision_actions.h"
 
 #include <new>
 #include <string>

@@ -7,7 +7,7 @@
 // A run is prepared (prepare_run: everything that can fail, the run's mesh copied out of its report) and then taken
 // (take_run: apply_operation, which never throws, and messages that fall back to kMemoryRanOut), as the document's
 // actions do; run() turns a std::bad_alloc from the preparation into an Error with nothing done.
-#include "ui/exercise_session.h"
+#include "document/exercise_session.h"
 
 #include <algorithm>
 #include <exception>
@@ -16,10 +16,10 @@
 #include <utility>
 
 #include "core/mesh_error.h"
+#include "document/document_actions.h"
+#include "document/exception_report.h"
 #include "script/lua_runtime.h"
 #include "script/scripted_exercise.h"
-#include "ui/document_actions.h"
-#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {

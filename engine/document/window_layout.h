@@ -34,7 +34,7 @@ struct ScreenRect {
   }
 };
 
-// What the user chose, remembered between runs (ui/settings.h). Widths and heights are in font-size units.
+// What the user chose, remembered between runs (document/settings.h). Widths and heights are in font-size units.
 struct LayoutPrefs {
   static constexpr float kDefaultLeftEms = 22.0f;
   static constexpr float kDefaultRightEms = 25.0f;

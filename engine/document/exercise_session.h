@@ -38,10 +38,10 @@
 #include "core/check.h"
 #include "core/edit_log.h"
 #include "core/halfedge_mesh.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
+#include "document/student_file.h"
 #include "script/exercises.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
-#include "ui/student_file.h"
 
 namespace meshedit {
 

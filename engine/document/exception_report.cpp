@@ -1,5 +1,5 @@
 // Exceptions as status-line Errors (see exception_report.h).
-#include "ui/exception_report.h"
+#include "document/exception_report.h"
 
 #include <new>
 #include <string>

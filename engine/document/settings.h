@@ -16,7 +16,7 @@
 #include <vector>
 
 #include "core/palette.h"  // Theme
-#include "ui/window_layout.h"
+#include "document/window_layout.h"
 
 namespace meshedit {
 

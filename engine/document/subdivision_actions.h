@@ -15,8 +15,8 @@
 
 #include "core/check.h"
 #include "core/subdivision_phases.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 
 namespace meshedit {
 

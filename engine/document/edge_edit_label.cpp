@@ -1,5 +1,5 @@
 // Making and reading the labels of flip, split and collapse (see edge_edit_label.h).
-#include "ui/edge_edit_label.h"
+#include "document/edge_edit_label.h"
 
 namespace meshedit {
 namespace {

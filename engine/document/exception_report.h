@@ -10,7 +10,7 @@
 
 #include <exception>
 
-#include "ui/mesh_document.h"
+#include "document/mesh_document.h"
 
 namespace meshedit {
 

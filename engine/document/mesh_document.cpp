@@ -24,7 +24,7 @@
 //   operations                      detail::apply_check_operation: an operation under a journal
 //   undo and redo                   record_step, step_history, undo, redo, show_state
 //   counting and caches             count_changes, the version caches (validation, stats)
-#include "ui/mesh_document.h"
+#include "document/mesh_document.h"
 
 #include <algorithm>
 #include <cstring>

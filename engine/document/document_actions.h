@@ -7,7 +7,7 @@
 //   it survives the edit (flip and split keep the edge's id), collapse selects the surviving vertex, and an
 //   element an undo removed is deselected.
 // - Edits go through apply_operation(), so a refusal changes nothing but the message. A flip, split or collapse is
-//   labelled by edge_edit_label ("flip e5": ui/edge_edit_label.h), which the window reads back to animate it.
+//   labelled by edge_edit_label ("flip e5": document/edge_edit_label.h), which the window reads back to animate it.
 // - No action throws std::bad_alloc. When memory runs out, an action is either not done (mesh, history, selection
 //   and Loop stepper as they were; an Error that says memory ran out when it would have been done) or done as the
 //   document keeps it (mesh_document.h: recorded, or kept without its record); a message that cannot be built for
@@ -21,8 +21,8 @@
 
 #include "core/check.h"
 #include "core/loop_subdivision.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 
 namespace meshedit {
 

@@ -6,14 +6,14 @@
 // is set with set_message_noexcept or append_to_message, which fall back to kMemoryRanOut; the bookkeeping that
 // follows a kept change (the selection, the Loop stepper) allocates nothing. edge_for_operation, asked outside the
 // actions too (the exercise session), turns its search's std::bad_alloc into a refusal with kMemoryRanOut.
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 
 #include <new>
 
 #include "core/mesh_ops.h"
 #include "core/parallel_for.h"
 #include "core/triangulate.h"
-#include "ui/edge_edit_label.h"
+#include "document/edge_edit_label.h"
 
 namespace meshedit {
 namespace {
