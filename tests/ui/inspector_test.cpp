@@ -12,6 +12,7 @@ namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 std::string walk_text(const ElementFacts& f) {
   std::string s;

@@ -15,6 +15,7 @@ namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 std::string parsed(std::string_view text, TableTab tab) {
   const OpResult<ElementRef> r = parse_table_filter(text, tab);

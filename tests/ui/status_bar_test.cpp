@@ -17,6 +17,7 @@ namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 struct StatusFixture {
   MeshDocument doc;

@@ -12,14 +12,14 @@
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "document/document_test_support.h"
 #include "document/mesh_document.h"
 #include "support/state_before_last.h"
-#include "ui_test_support.h"
 
 namespace meshedit {
 namespace {
 
-using namespace ui_testing;
+using namespace document_testing;
 using Cell = std::tuple<std::string, std::string, std::string, std::string>;  // element, field, before, after
 
 std::set<Cell> cells(const std::vector<FieldChange>& changes) {

@@ -6,12 +6,12 @@
 
 #include "core/loop_subdivision.h"
 #include "document/document_actions.h"
-#include "ui_test_support.h"
+#include "document/document_test_support.h"
 
 namespace meshedit {
 namespace {
 
-using namespace ui_testing;
+using namespace document_testing;
 
 TEST(EdgeForOperation, AcceptsEdgesAndHalfedgesOnly) {
   HalfedgeMesh m = grid_1x1();

@@ -6,13 +6,13 @@
 #include "core/linear_subdivision.h"
 #include "core/primitives.h"
 #include "document/document_actions.h"
+#include "document/document_test_support.h"
 #include "document/subdivision_actions.h"
-#include "ui_test_support.h"
 
 namespace meshedit {
 namespace {
 
-using namespace ui_testing;
+using namespace document_testing;
 
 TEST(SubdivisionActions, CatmullClarkIsOneUndoableStep) {
   const HalfedgeMesh start = build_halfedge_mesh(make_cube_quads());

@@ -4,7 +4,7 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "document/document_actions.h"
-#include "ui_test_support.h"
+#include "document/document_test_support.h"
 
 namespace meshedit {
 namespace {

@@ -1,25 +1,21 @@
 // "Mine" in the curve and patch views (bezier_mine.h): with the correct solutions (tests/script/solutions) every
 // level and the probe point are the reference's bit for bit; a student file with a wrong point stops at that level
 // and names the level, the point and both values; a Lua error and a syntax error keep curve.lua:LINE; levels run
-// only as far as E shows them and are not run again while nothing changes; a saved file is reloaded; the views
-// draw all of it headless, and the patch overlay puts the student's point where it is.
+// only as far as E shows them and are not run again while nothing changes; a saved file is reloaded. The views that
+// draw it are tested in ui/bezier_mine_views_test.cpp.
 #include <gtest/gtest.h>
 
-#include <chrono>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
+#include <span>
 #include <string>
 #include <vector>
 
 #include "core/bezier.h"
 #include "core/value_format.h"
 #include "document/bezier_mine.h"
+#include "document/bezier_mine_test_support.h"
 #include "document/student_file.h"
 #include "support/test_support.h"
-#include "ui/curve_editor.h"
-#include "ui/patch_view.h"
-#include "ui/ui_test_support.h"
 
 namespace meshedit {
 namespace {
@@ -28,32 +24,8 @@ using glm::dvec2;
 using glm::dvec3;
 namespace fs = std::filesystem;
 
-fs::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
-
+using namespace document_testing;
 using testing::read_text;
-
-// Writes `text` as `name` in `folder`, moving the modification time on so a rewrite is always seen as a save.
-void write_file(const fs::path& folder, const std::string& name, const std::string& text) {
-  const fs::path path = folder / name;
-  const bool existed = fs::exists(path);
-  const auto before = existed ? fs::last_write_time(path) : fs::file_time_type{};
-  std::ofstream(path, std::ios::binary) << text;
-  if (existed) fs::last_write_time(path, before + std::chrono::seconds(2));
-}
-
-// The solution with `from` replaced by `to`.
-std::string solution_with(const std::string& file, const std::string& from, const std::string& to) {
-  std::string text = read_text(solutions() / file);
-  const size_t at = text.find(from);
-  EXPECT_NE(at, std::string::npos) << from;
-  if (at != std::string::npos) text.replace(at, from.size(), to);
-  return text;
-}
-
-const std::string kStepLine = "    result[i] = (1 - t) * points[i] + t * points[i + 1]\n";
-
-// The course's curve1.bzc cubic; at t = 0.5 level 1 is (0.25, 0.475) (0.55, 0.675) (0.85, 0.6).
-const std::vector<dvec2> kCubic = {{0.2, 0.35}, {0.3, 0.6}, {0.8, 0.75}, {0.9, 0.45}};
 
 std::vector<dvec3> reference_level(int k, double t = 0.5) {
   std::vector<dvec3> points;
@@ -248,15 +220,6 @@ TEST(BezierMine, AWrongFileSavedRightIsReloaded) {
 
 // ---- the patch probe -------------------------------------------------------------------------------------
 
-// Lesson 2's hill: row r at y = r, column c at x = c, the middle four raised to z = 2.
-BezierPatch hill() {
-  BezierPatch patch;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) patch.at(r, c) = dvec3(c, r, (r == 1 || r == 2) && (c == 1 || c == 2) ? 2.0 : 0.0);
-  }
-  return patch;
-}
-
 TEST(BezierMine, TheSolutionsProbePointIsTheReferences) {
   BezierMine mine(solutions());
   const PatchMinePoint& got = mine.patch_point(hill(), 0.3, 0.8);
@@ -267,85 +230,6 @@ TEST(BezierMine, TheSolutionsProbePointIsTheReferences) {
   EXPECT_EQ(got.message, "yours is the reference's P(0.3, 0.8) = " + format_position(got.reference));
   // x follows u along the rows, y follows v: (3 * 0.3, 3 * 0.8) on this hill.
   EXPECT_TRUE(testing::near(got.mine, dvec3(0.9, 2.4, got.mine.z), 1e-12));
-}
-
-TEST(BezierMine, SwappedUAndVAreNamedWithBothPoints) {
-  const fs::path folder = testing::scratch_dir();
-  write_file(folder, "patch.lua",
-             solution_with("patch.lua",
-                           "column[row + 1] = evaluate_1d({ p[base + 1], p[base + 2], p[base + 3], p[base + 4] }, u)",
-                           "column[row + 1] = evaluate_1d({ p[row + 1], p[row + 5], p[row + 9], p[row + 13] }, u)"));
-  BezierMine mine(folder);
-  const PatchMinePoint& got = mine.patch_point(hill(), 0.3, 0.8);
-  EXPECT_TRUE(got.ran);
-  EXPECT_FALSE(got.equal);
-  EXPECT_TRUE(testing::near(got.mine, evaluate_patch(hill(), 0.8, 0.3), 1e-12));  // the point at (v, u)
-  EXPECT_EQ(got.reference, evaluate_patch(hill(), 0.3, 0.8));
-  EXPECT_EQ(got.message, "P(0.3, 0.8): yours is " + format_position(got.mine) + ", the reference's is " +
-                             format_position(got.reference));
-  ASSERT_EQ(got.details.size(), 1u);
-  EXPECT_NE(got.details[0].find("u and v are swapped"), std::string::npos) << got.details[0];
-
-  // The overlay: the reference's P(u, v) as before, then a segment from yours to it and yours, in that order.
-  PatchViewState state = make_patch_view({hill()});
-  set_probe(state, 0.3, 0.8);
-  const std::vector<PatchOverlayItem> items = patch_view_overlay(state, &got);
-  ASSERT_GE(items.size(), 3u);
-  const PatchOverlayItem& dot = items.back();
-  const PatchOverlayItem& segment = items[items.size() - 2];
-  EXPECT_EQ(dot.kind, OverlayKind::MinePoint);
-  EXPECT_TRUE(dot.points_only);
-  ASSERT_EQ(dot.points.size(), 1u);
-  EXPECT_EQ(dot.points[0], got.mine);
-  EXPECT_EQ(segment.kind, OverlayKind::MinePoint);
-  ASSERT_EQ(segment.points.size(), 2u);
-  EXPECT_EQ(segment.points[1], evaluate_patch(hill(), 0.3, 0.8));
-  EXPECT_EQ(items[items.size() - 3].kind, OverlayKind::SurfacePoint);
-  EXPECT_EQ(patch_view_overlay(state).size(), items.size() - 2);  // without mine: the probe alone
-}
-
-TEST(BezierMine, APatchErrorKeepsFileAndLineAndDrawsNoPoint) {
-  const fs::path folder = testing::scratch_dir();
-  write_file(folder, "patch.lua", "function evaluate(patch, u, v)\n  return patch.points[17] * u\nend\n");
-  BezierMine mine(folder);
-  const PatchMinePoint& got = mine.patch_point(hill(), 0.5, 0.5);
-  EXPECT_FALSE(got.ran);
-  EXPECT_EQ(got.error.rfind("patch.lua:2:", 0), 0u) << got.error;
-  EXPECT_EQ(got.message, got.error);
-  PatchViewState state = make_patch_view({hill()});
-  EXPECT_EQ(patch_view_overlay(state, &got).size(), patch_view_overlay(state).size());
-}
-
-// ---- the views, drawn headless ---------------------------------------------------------------------------
-
-TEST(BezierMine, TheViewsDrawTheSwitchTheWrongLevelAndTheErrors) {
-  ui_testing::ImGuiHarness imgui;
-  const fs::path folder = testing::scratch_dir();
-  write_file(folder, "curve.lua",
-             solution_with("curve.lua", kStepLine,
-                           kStepLine + "    if i == 2 then result[i] = result[i] + meshedit.vec3(0, 0.25, 0) end\n"));
-  write_file(folder, "patch.lua", "function evaluate(patch, u, v)\n  return nil + 1\nend\n");
-  BezierMine mine(folder);
-  CurveEditorState curve = make_curve_editor(BezierCurve{kCubic});
-  const auto draw_curve = [&] {
-    ImGui::SetNextWindowPos(ImVec2(0, 0));
-    ImGui::SetNextWindowSize(ImVec2(900, 700));
-    draw_curve_editor(curve, "Curve editor", &mine);
-  };
-  const int off = imgui.frame(draw_curve);
-  EXPECT_TRUE(mine.curve().levels.empty()) << "the switch is off: no student code runs";
-  mine.set_curve_on(true);
-  step_level(curve);
-  step_level(curve);
-  const int on = imgui.frame(draw_curve);
-  EXPECT_EQ(mine.curve().failed_level, 1);
-  EXPECT_NE(on, off);  // the reference level, the ring and the message are drawn
-  EXPECT_EQ(mine.curve().message.rfind("level 1, point 2 of 3: yours is ", 0), 0u) << mine.curve().message;
-
-  PatchViewState patches = make_patch_view({hill()});
-  mine.set_patch_on(true);
-  imgui.frame([&] { draw_patch_view_panel(patches, "Patch view", &mine); });
-  EXPECT_EQ(mine.patch().message.rfind("patch.lua:2:", 0), 0u) << mine.patch().message;
 }
 
 // ---- the file --------------------------------------------------------------------------------------------

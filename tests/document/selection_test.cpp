@@ -6,14 +6,14 @@
 
 #include "core/mesh_ops.h"
 #include "document/document_actions.h"
+#include "document/document_test_support.h"
 #include "document/mesh_document.h"
 #include "document/selection.h"
-#include "ui_test_support.h"
 
 namespace meshedit {
 namespace {
 
-using namespace ui_testing;
+using namespace document_testing;
 
 std::string go(const HalfedgeMesh& m, ElementRef from, NavStep step) {
   const OpResult<ElementRef> r = navigate(m, from, step);

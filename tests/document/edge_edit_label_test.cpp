@@ -4,13 +4,13 @@
 #include <gtest/gtest.h>
 
 #include "document/document_actions.h"
+#include "document/document_test_support.h"
 #include "document/edge_edit_label.h"
-#include "ui_test_support.h"
 
 namespace meshedit {
 namespace {
 
-using namespace ui_testing;
+using namespace document_testing;
 
 void expect_label(const std::string& label, EdgeOperation operation, EdgeId edge, bool undone) {
   SCOPED_TRACE(label);
