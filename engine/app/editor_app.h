@@ -253,7 +253,15 @@ class EditorApp {
   // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window
   // coordinates; `framebuffer` is the view's size in framebuffer pixels, which the camera projects to.
   void draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer);
-  void draw_menu_bar();
+  void draw_menu_bar();  // File, Edit, Subdivide, View and Help, each drawn by its draw_*_menu
+  void draw_file_menu();
+  void draw_edit_menu();
+  void draw_subdivide_menu();
+  void draw_view_menu();
+  void draw_help_menu();
+  // A menu item for a key's command: shows the key and does what pressing it does (press: a running replay is
+  // finished first, a lesson waiting for the key hears about it).
+  void key_menu_item(const char* label, KeyCommand command, bool enabled = true, bool checked = false);
   void draw_open_panel();
   void draw_help_panel();
   void draw_repairs_tab();   // the Repairs tab's rows (editor_repairs.cpp)
