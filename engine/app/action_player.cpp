@@ -5,7 +5,7 @@
 
 #include "app/action_verbs.h"
 #include "app/editor_app.h"
-#include "ui/exception_report.h"
+#include "document/exception_report.h"
 
 namespace meshedit {
 namespace {

@@ -13,8 +13,8 @@
 
 #include "app/editor_app.h"
 #include "app/layout_report.h"
+#include "document/document_actions.h"
 #include "io/file_access.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "app/cli_commands.h"
+#include "document/student_file.h"
 #include "script/lesson_headless.h"
 #include "script/lua_runtime.h"
 #include "script/scripted_exercise.h"
-#include "ui/student_file.h"
 
 namespace meshedit {
 

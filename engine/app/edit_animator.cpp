@@ -3,8 +3,8 @@
 
 #include <algorithm>
 
+#include "document/edge_edit_label.h"
 #include "render/edit_motion.h"
-#include "ui/edge_edit_label.h"
 
 namespace meshedit {
 

@@ -1,8 +1,8 @@
 // EditAnimator: plays the document's flips, splits and collapses, and their undo and redo, in the mesh view for
 // kEditAnimationSeconds (render/edit_animation.h), so a student sees the edge turn, the new vertex appear or the two
 // ends meet. It follows the document's last change: a new change whose label names one of those operations
-// (ui/edge_edit_label.h) and that was recorded as a patch starts its animation, an undo's backward; any other change
-// stops the one playing.
+// (document/edge_edit_label.h) and that was recorded as a patch starts its animation, an undo's backward; any other
+// change stops the one playing.
 //
 // Invariants:
 // - Off until set_enabled(true) (tests, headless pictures and scripted runs leave it off): while off it starts nothing,
@@ -19,8 +19,8 @@
 #include <cstdint>
 #include <optional>
 
+#include "document/mesh_document.h"
 #include "render/edit_animation.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit {
 

@@ -11,6 +11,7 @@
 #include "app/mesh_loading.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
+#include "document/exception_report.h"
 #include "io/file_error.h"
 #include "io/mesh_file.h"
 #include "render/image_file.h"
@@ -18,7 +19,6 @@
 #include "render/render_error.h"
 #include "render/render_target.h"
 #include "script/scripted_exercise.h"
-#include "ui/exception_report.h"
 #include "ui/frame_guard.h"
 #include "ui/theme.h"
 

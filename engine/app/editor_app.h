@@ -1,6 +1,6 @@
 // EditorApp: the window's application state and one frame of it. Owns the document being edited (a mesh,
 // a curve or a set of patches), the camera, the renderers and every panel's state; wires the keys and the
-// mouse to the core through engine/ui's document actions.
+// mouse to the core through engine/document's actions.
 //
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
@@ -11,7 +11,7 @@
 //   show_patches are whole or nothing too, and throw what stopped them. A file saved is reported saved and put first
 //   in the recent list; one not saved changes neither (saving makes both before writing). open(), save() and
 //   write_pending_screenshot() never throw: their report of a failure falls back to kMemoryRanOut, which needs no
-//   memory (ui/exception_report.h).
+//   memory (document/exception_report.h).
 // - The window starts with the default cube (show_start_mesh). When memory runs out making or showing it, the window
 //   opens all the same, empty (no mesh, the title "MeshEdit"), with an Error in the status line that says memory ran
 //   out; it works as usual from there, and a file named on the command line is still opened. Only running out while
@@ -26,11 +26,11 @@
 // - An edit playing (app/edit_animator.h, only under a policy that allows it: never in tests, pictures or scripted
 //   runs) is drawn over the mesh as it is after the edit; meanwhile the selection, changed and lesson highlights wait
 //   for it to land.
-// - The layout is fixed (ui/window_layout.h): menu bar, status bar, the left and right columns, the console strip,
-//   and the view in the free centre. The mesh, patch and curve views draw only into the view rectangle (GL viewport
-//   and scissor set to it, the camera's aspect and picking in its pixels); no panel is drawn over the view or a
-//   column except the modal dialogs (open, keys) and menus. Picking pixels (click, hover) are framebuffer pixels
-//   relative to the view's top-left corner.
+// - The layout is fixed (document/window_layout.h): menu bar, status bar, the left and right columns, the console
+//   strip, and the view in the free centre. The mesh, patch and curve views draw only into the view rectangle (GL
+//   viewport and scissor set to it, the camera's aspect and picking in its pixels); no panel is drawn over the view
+//   or a column except the modal dialogs (open, keys) and menus. Picking pixels (click, hover) are framebuffer
+//   pixels relative to the view's top-left corner.
 #pragma once
 
 #include <cstdint>
@@ -51,6 +51,12 @@
 #include "app/view_quality.h"
 #include "app/window_lesson_host.h"
 #include "core/bezier.h"
+#include "document/bezier_mine.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
+#include "document/settings.h"
+#include "document/subdivision_actions.h"
+#include "document/window_layout.h"
 #include "render/camera.h"
 #include "render/label_placement.h"
 #include "render/mesh_renderer.h"
@@ -58,21 +64,15 @@
 #include "render/shader_library.h"
 #include "render/view_options.h"
 #include "script/lesson_runner.h"
-#include "ui/bezier_mine.h"
 #include "ui/curve_editor.h"
 #include "ui/exercise_panel.h"
 #include "ui/fonts.h"
 #include "ui/inspector.h"
 #include "ui/lesson_panel.h"
-#include "ui/mesh_document.h"
 #include "ui/patch_view.h"
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
-#include "ui/selection.h"
-#include "ui/settings.h"
 #include "ui/status_bar.h"
-#include "ui/subdivision_actions.h"
-#include "ui/window_layout.h"
 
 namespace meshedit {
 
@@ -104,7 +104,7 @@ class EditorApp {
   const RepairMarks& repair_marks() const { return repairs_; }
   bool repair_spots_current() const;  // the spots are the shown mesh's: highlighted, and the rows select
   // Opens the files dropped on the window, in turn, each as open() does: the status line tells the last one's outcome.
-  // Never throws: what escapes opening a file is an Error in the status line (ui/exception_report.h).
+  // Never throws: what escapes opening a file is an Error in the status line (document/exception_report.h).
   void open_dropped(const std::vector<std::string>& paths);
   // Shows `mesh` as a new document named `name` ("untitled" in the title when empty), or throws with nothing changed.
   void show_mesh(HalfedgeMesh mesh, const std::string& name);
@@ -171,7 +171,7 @@ class EditorApp {
   // when it is dead, behind the eye or outside the view.
   std::optional<ScreenPoint> element_pixel(ElementRef element) const;
 
-  // The settings that last between runs (ui/settings.h): apply_settings takes them at start; the window saves
+  // The settings that last between runs (document/settings.h): apply_settings takes them at start; the window saves
   // settings() when it closes.
   void apply_settings(const Settings& settings);
   const Settings& settings() const { return settings_; }
@@ -254,7 +254,15 @@ class EditorApp {
   // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window
   // coordinates; `framebuffer` is the view's size in framebuffer pixels, which the camera projects to.
   void draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer);
-  void draw_menu_bar();
+  void draw_menu_bar();  // File, Edit, Subdivide, View and Help, each drawn by its draw_*_menu
+  void draw_file_menu();
+  void draw_edit_menu();
+  void draw_subdivide_menu();
+  void draw_view_menu();
+  void draw_help_menu();
+  // A menu item for a key's command: shows the key and does what pressing it does (press: a running replay is
+  // finished first, a lesson waiting for the key hears about it).
+  void key_menu_item(const char* label, KeyCommand command, bool enabled = true, bool checked = false);
   void draw_open_panel();
   void draw_help_panel();
   void draw_repairs_tab();   // the Repairs tab's rows (editor_repairs.cpp)

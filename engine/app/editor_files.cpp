@@ -24,9 +24,9 @@
 #include "core/mesh_error.h"
 #include "core/mesh_repair.h"
 #include "core/primitives.h"
+#include "document/exception_report.h"
 #include "io/mesh_file.h"
 #include "render/mesh_geometry.h"
-#include "ui/exception_report.h"
 
 namespace meshedit {
 

@@ -7,8 +7,8 @@
 
 #include "app/editor_app.h"
 #include "app/key_bindings.h"
+#include "document/document_actions.h"
 #include "render/labels.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -1,5 +1,5 @@
-// EditorApp's fixed layout (see editor_app.h and ui/window_layout.h): the columns, the console strip, the splitters
-// that resize them, and the view rectangle the 3D, patch and curve views draw into.
+// EditorApp's fixed layout (see editor_app.h and document/window_layout.h): the columns, the console strip, the
+// splitters that resize them, and the view rectangle the 3D, patch and curve views draw into.
 //
 // The columns are borderless ImGui windows that cannot move, resize or collapse by themselves: their rectangles come
 // from compute_layout every frame, so no panel can cover the lesson or the view. What each column holds:

@@ -16,9 +16,9 @@
 #include "app/element_highlight.h"
 #include "app/mesh_loading.h"
 #include "core/palette.h"
+#include "document/exception_report.h"
 #include "render/arrow_overlay.h"
 #include "render/mesh_geometry.h"
-#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {

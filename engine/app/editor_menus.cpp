@@ -11,8 +11,8 @@
 #include "app/editor_app.h"
 #include "app/key_bindings.h"
 #include "app/mesh_loading.h"
-#include "ui/document_actions.h"
-#include "ui/subdivision_actions.h"
+#include "document/document_actions.h"
+#include "document/subdivision_actions.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -62,108 +62,125 @@ void EditorApp::press(KeyCommand command) {
   }
 }
 
+void EditorApp::key_menu_item(const char* label, KeyCommand command, bool enabled, bool checked) {
+  if (ImGui::MenuItem(label, shortcut_of(command), checked, enabled)) press(command);
+}
+
 void EditorApp::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  // An item for a key's command shows the key and does what pressing it does (a running replay is finished first, a
-  // lesson waiting for the key hears about it).
-  const auto key_item = [this](const char* label, KeyCommand command, bool enabled = true, bool checked = false) {
-    if (ImGui::MenuItem(label, shortcut_of(command), checked, enabled)) press(command);
-  };
+  draw_file_menu();
+  draw_edit_menu();
+  draw_subdivide_menu();
+  draw_view_menu();
+  draw_help_menu();
+  ImGui::EndMainMenuBar();
+}
+
+void EditorApp::draw_file_menu() {
+  using K = KeyCommand;
+  if (!ImGui::BeginMenu("File")) return;
+  key_menu_item("Open...", K::Open);
+  if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
+    for (const std::string& path : std::deque<std::string>(recent_)) {
+      if (ImGui::MenuItem(path.c_str())) open(path);
+    }
+    ImGui::EndMenu();
+  }
+  if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
+  if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
+  if (ImGui::MenuItem("Screenshot", shortcut_of(K::Screenshot))) request_screenshot("meshedit-screenshot.png");
+  ImGui::Separator();
+  key_menu_item("Quit", K::Quit);
+  ImGui::EndMenu();
+}
+
+void EditorApp::draw_edit_menu() {
+  using K = KeyCommand;
+  if (!ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) return;
+  key_menu_item("Undo", K::Undo, doc_.history.can_undo());
+  key_menu_item("Redo", K::Redo, doc_.history.can_redo());
+  ImGui::Separator();
+  if (ImGui::MenuItem("Flip edge", shortcut_of(K::FlipOrFace))) {  // F on a halfedge walks to its face; this flips
+    exercises_.finish_replay(doc_);
+    flip_selected(doc_, selection_);
+  }
+  key_menu_item("Split edge", K::Split);
+  key_menu_item("Collapse edge", K::Collapse);
+  ImGui::Separator();
+  if (ImGui::MenuItem("Triangulate")) {  // every face of more than three corners
+    exercises_.finish_replay(doc_);
+    if (triangulate_all(doc_, selection_)) tell_lesson_command("triangulate");
+  }
+  ImGui::EndMenu();
+}
+
+void EditorApp::draw_subdivide_menu() {
   using K = KeyCommand;
   using S = SubdivisionScheme;
-  if (ImGui::BeginMenu("File")) {
-    key_item("Open...", K::Open);
-    if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
-      for (const std::string& path : std::deque<std::string>(recent_)) {
-        if (ImGui::MenuItem(path.c_str())) open(path);
-      }
-      ImGui::EndMenu();
+  if (!ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) return;
+  if (ImGui::MenuItem("Loop subdivision", shortcut_of(K::Loop))) run_subdivide_command(S::Loop, false);
+  char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
+  std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
+  if (ImGui::MenuItem(phase, shortcut_of(K::LoopPhase))) run_subdivide_command(S::Loop, true);
+  bool loop_beta = loop_weights_ == LoopWeights::Loop;
+  if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
+    loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
+  }
+  ImGui::Separator();
+  if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(S::CatmullClark, false);
+  if (ImGui::MenuItem(next_phase_label(doc_, catmull_clark_stepper_).c_str())) {
+    run_subdivide_command(S::CatmullClark, true);
+  }
+  if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(S::Linear, false);
+  if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) run_subdivide_command(S::Linear, true);
+  ImGui::EndMenu();
+}
+
+void EditorApp::draw_view_menu() {
+  using K = KeyCommand;
+  if (!ImGui::BeginMenu("View")) return;
+  ImGui::MenuItem("Wireframe", shortcut_of(K::Wireframe), &view_options_.wireframe);
+  ImGui::MenuItem("Smooth shading", shortcut_of(K::Shading), &view_options_.smooth_shading);
+  ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
+  ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
+  ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
+  ImGui::MenuItem("Id labels", nullptr, &show_labels_);
+  ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
+  ImGui::Separator();
+  ImGui::MenuItem("Left column (lesson)", shortcut_of(K::FoldLeft), &settings_.layout.left_open);
+  ImGui::MenuItem("Right column (tables)", shortcut_of(K::FoldRight), &settings_.layout.right_open);
+  key_menu_item("Inspector", K::Inspector, true, inspector_.open);
+  ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
+  key_menu_item("Exercises: mine vs reference", K::ToggleExercises, true, exercise_panel_.open);
+  key_menu_item("Lua console", K::Console, true, console_panel_.open);
+  if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
+    const std::pair<const char*, UpAxisChoice> choices[] = {
+        {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
+    for (const auto& [label, choice] : choices) {
+      if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
     }
-    if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
-    if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
-    if (ImGui::MenuItem("Screenshot", shortcut_of(K::Screenshot))) request_screenshot("meshedit-screenshot.png");
-    ImGui::Separator();
-    key_item("Quit", K::Quit);
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) {
-    key_item("Undo", K::Undo, doc_.history.can_undo());
-    key_item("Redo", K::Redo, doc_.history.can_redo());
-    ImGui::Separator();
-    if (ImGui::MenuItem("Flip edge", shortcut_of(K::FlipOrFace))) {  // F on a halfedge walks to its face; this flips
-      exercises_.finish_replay(doc_);
-      flip_selected(doc_, selection_);
-    }
-    key_item("Split edge", K::Split);
-    key_item("Collapse edge", K::Collapse);
-    ImGui::Separator();
-    if (ImGui::MenuItem("Triangulate")) {  // every face of more than three corners
-      exercises_.finish_replay(doc_);
-      if (triangulate_all(doc_, selection_)) tell_lesson_command("triangulate");
+  ImGui::Separator();
+  key_menu_item("Bigger text", K::BiggerText);
+  key_menu_item("Smaller text", K::SmallerText);
+  key_menu_item("Default text size", K::DefaultText);
+  if (ImGui::BeginMenu("Theme")) {
+    constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
+    for (const auto& [name, theme] : kThemes) {
+      if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) set_theme(theme);
     }
     ImGui::EndMenu();
   }
-  if (ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) {
-    if (ImGui::MenuItem("Loop subdivision", shortcut_of(K::Loop))) run_subdivide_command(S::Loop, false);
-    char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
-    std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
-    if (ImGui::MenuItem(phase, shortcut_of(K::LoopPhase))) run_subdivide_command(S::Loop, true);
-    bool loop_beta = loop_weights_ == LoopWeights::Loop;
-    if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
-      loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
-    }
-    ImGui::Separator();
-    if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(S::CatmullClark, false);
-    if (ImGui::MenuItem(next_phase_label(doc_, catmull_clark_stepper_).c_str())) {
-      run_subdivide_command(S::CatmullClark, true);
-    }
-    if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(S::Linear, false);
-    if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) run_subdivide_command(S::Linear, true);
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("View")) {
-    ImGui::MenuItem("Wireframe", shortcut_of(K::Wireframe), &view_options_.wireframe);
-    ImGui::MenuItem("Smooth shading", shortcut_of(K::Shading), &view_options_.smooth_shading);
-    ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
-    ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
-    ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
-    ImGui::MenuItem("Id labels", nullptr, &show_labels_);
-    ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
-    ImGui::Separator();
-    ImGui::MenuItem("Left column (lesson)", shortcut_of(K::FoldLeft), &settings_.layout.left_open);
-    ImGui::MenuItem("Right column (tables)", shortcut_of(K::FoldRight), &settings_.layout.right_open);
-    key_item("Inspector", K::Inspector, true, inspector_.open);
-    ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-    key_item("Exercises: mine vs reference", K::ToggleExercises, true, exercise_panel_.open);
-    key_item("Lua console", K::Console, true, console_panel_.open);
-    if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
-      const std::pair<const char*, UpAxisChoice> choices[] = {
-          {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
-      for (const auto& [label, choice] : choices) {
-        if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
-      }
-      ImGui::EndMenu();
-    }
-    ImGui::Separator();
-    key_item("Bigger text", K::BiggerText);
-    key_item("Smaller text", K::SmallerText);
-    key_item("Default text size", K::DefaultText);
-    if (ImGui::BeginMenu("Theme")) {
-      constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
-      for (const auto& [name, theme] : kThemes) {
-        if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) set_theme(theme);
-      }
-      ImGui::EndMenu();
-    }
-    ImGui::Separator();
-    key_item("Reset view", K::ResetView);
-    ImGui::EndMenu();
-  }
-  if (ImGui::BeginMenu("Help")) {
-    if (ImGui::MenuItem("Keys", shortcut_of(K::Help))) show_help_ = true;
-    ImGui::EndMenu();
-  }
-  ImGui::EndMainMenuBar();
+  ImGui::Separator();
+  key_menu_item("Reset view", K::ResetView);
+  ImGui::EndMenu();
+}
+
+void EditorApp::draw_help_menu() {
+  if (!ImGui::BeginMenu("Help")) return;
+  if (ImGui::MenuItem("Keys", shortcut_of(KeyCommand::Help))) show_help_ = true;
+  ImGui::EndMenu();
 }
 
 namespace {

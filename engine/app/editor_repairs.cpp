@@ -9,7 +9,7 @@
 #include "app/editor_app.h"
 #include "app/element_highlight.h"
 #include "core/palette.h"
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 

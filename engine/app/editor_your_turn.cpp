@@ -6,7 +6,7 @@
 //     mine vs reference, the validation, the write-by-write replay), and the tab comes to the front of the right
 //     column, scrolled so the changed-pointers table is in sight.
 //   - curve, patch: the input goes into the curve view (its points, its t, every level shown) or the patch view (the
-//     patch, the probe at its (u, v)) with the view's "mine" switch on (ui/bezier_mine.h).
+//     patch, the probe at its (u, v)) with the view's "mine" switch on (document/bezier_mine.h).
 //
 // Invariants:
 // - The file run is the lesson's: the Exercises tab's folder is the lesson's student folder (update_lesson keeps them
@@ -21,7 +21,7 @@
 #include <new>
 
 #include "app/editor_app.h"
-#include "ui/exception_report.h"
+#include "document/exception_report.h"
 
 namespace meshedit {
 

@@ -15,8 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "document/settings.h"
 #include "ui/fonts.h"
-#include "ui/settings.h"
 
 struct GLFWwindow;
 

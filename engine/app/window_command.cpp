@@ -1,7 +1,7 @@
 // `meshedit [FILE] [--actions SCRIPT] [--size WxH]`: the window. Runs the frame loop, feeds dropped files
 // to the app, and plays scripted actions (action_player.h) one per frame for GUI tests.
 //
-// Settings (ui/settings.h) are read at start and written when the window closes: the window opens at the size it
+// Settings (document/settings.h) are read at start and written when the window closes: the window opens at the size it
 // had (never larger than the screen's work area), with the columns, text size and theme it had. --size opens it at
 // that size exactly and is not remembered. A settings file that cannot be read or written is a warning on stderr.
 #include <algorithm>
@@ -15,7 +15,7 @@
 #include "app/editor_app.h"
 #include "app/glfw_window.h"
 #include "app/scripted_actions.h"
-#include "ui/exception_report.h"
+#include "document/exception_report.h"
 
 namespace meshedit {
 

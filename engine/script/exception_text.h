@@ -14,7 +14,7 @@
 
 namespace meshedit {
 
-inline constexpr char kScriptMemoryRanOut[] = "memory ran out";  // as ui/mesh_document.h's kMemoryRanOut
+inline constexpr char kScriptMemoryRanOut[] = "memory ran out";  // as document/mesh_document.h's kMemoryRanOut
 static_assert(sizeof(kScriptMemoryRanOut) <= 16, "held in std::string's inline buffer (15 characters)");
 
 // Whether `error` is memory running out: a std::bad_alloc, or a ScriptError raised for one

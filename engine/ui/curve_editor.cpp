@@ -24,7 +24,7 @@
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
-#include "ui/bezier_mine.h"
+#include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 

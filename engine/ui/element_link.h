@@ -15,7 +15,7 @@
 #include <imgui.h>
 
 #include "core/halfedge_mesh.h"
-#include "ui/selection.h"
+#include "document/selection.h"
 #include "ui/theme.h"
 
 namespace meshedit {

@@ -17,11 +17,11 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "document/exercise_session.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "script/upsample_phase_states.h"
 #include "script/upsample_phases.h"
-#include "ui/exercise_session.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
 
 namespace meshedit {
 

@@ -5,14 +5,14 @@
 // Invariants: only std::exception and what derives from it (std::bad_alloc included) is caught; what the frame did
 // before the throw stays (the document's own entry points keep it consistent: mesh_document.h); ImGui's Begin/End,
 // Push/Pop, table and tree stacks are closed, so the frame can still be rendered and the next one starts clean; the
-// message is report_escaped_exception's (ui/exception_report.h, which guards what runs outside a frame). Not the
+// message is report_escaped_exception's (document/exception_report.h, which guards what runs outside a frame). Not the
 // protection against running out of memory, only what stops the app from terminating when something was missed.
 #pragma once
 
 #include <exception>
 
-#include "ui/exception_report.h"
-#include "ui/mesh_document.h"
+#include "document/exception_report.h"
+#include "document/mesh_document.h"
 
 namespace meshedit {
 

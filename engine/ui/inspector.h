@@ -15,9 +15,9 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "ui/element_link.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
 
 namespace meshedit {
 

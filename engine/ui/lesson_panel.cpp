@@ -6,8 +6,8 @@
 
 #include <imgui.h>
 
+#include "document/exercise_session.h"
 #include "script/lesson_text.h"
-#include "ui/exercise_session.h"
 #include "ui/flow_layout.h"
 #include "ui/lesson_plot_view.h"
 #include "ui/lesson_question_view.h"

@@ -15,7 +15,7 @@
 
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
-#include "ui/bezier_mine.h"
+#include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 

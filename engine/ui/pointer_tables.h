@@ -23,9 +23,9 @@
 
 #include "core/check.h"
 #include "core/halfedge_mesh.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "ui/element_link.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
 
 namespace meshedit {
 

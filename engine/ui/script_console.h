@@ -31,9 +31,9 @@
 #include <vector>
 
 #include "core/halfedge_mesh.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "script/lua_runtime.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
 
 namespace meshedit {
 

@@ -50,7 +50,7 @@ void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& st
 
 float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& state, float frame_ms) {
   const ImGuiViewport* viewport = ImGui::GetMainViewport();
-  // Whole pixels, as the window layout counts them (ui/window_layout.h).
+  // Whole pixels, as the window layout counts them (document/window_layout.h).
   const float height = std::ceil(ImGui::GetFrameHeightWithSpacing() + ImGui::GetStyle().WindowPadding.y * 2.0f);
   ImGui::SetNextWindowPos(ImVec2(viewport->WorkPos.x, viewport->WorkPos.y + viewport->WorkSize.y - height));
   ImGui::SetNextWindowSize(ImVec2(viewport->WorkSize.x, height));

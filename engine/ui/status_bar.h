@@ -16,9 +16,9 @@
 #include <string>
 #include <string_view>
 
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "ui/element_link.h"
-#include "ui/mesh_document.h"
-#include "ui/selection.h"
 
 namespace meshedit {
 

@@ -9,7 +9,7 @@
 #include <imgui.h>
 
 #include "core/palette.h"
-#include "ui/settings.h"
+#include "document/settings.h"
 
 namespace meshedit {
 

@@ -9,9 +9,9 @@
 // - Drawing changes the document only through ExerciseSession (start_replay, replay_step).
 #pragma once
 
+#include "document/exercise_session.h"
+#include "document/mesh_document.h"
 #include "ui/exercise_panel.h"
-#include "ui/exercise_session.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit {
 

@@ -8,7 +8,7 @@
 
 #include "app/edit_animator.h"
 #include "core/mesh_build.h"
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -10,9 +10,9 @@
 #include "app/editor_app.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "document/document_actions.h"
 #include "render/gl_test_support.h"
 #include "support/imgui_harness.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -39,6 +39,9 @@
 #include "core/mesh_patch.h"
 #include "core/parallel_for.h"
 #include "core/primitives.h"
+#include "document/document_actions.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
 #include "render/offscreen_context.h"
@@ -48,11 +51,8 @@
 #include "render/shader_library.h"
 #include "render/slot_geometry.h"
 #include "support/imgui_harness.h"
-#include "ui/document_actions.h"
-#include "ui/mesh_document.h"
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
-#include "ui/selection.h"
 
 namespace {
 

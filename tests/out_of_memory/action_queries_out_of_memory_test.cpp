@@ -1,6 +1,6 @@
-// What the key actions' callers ask before acting (ui/document_actions.h) when memory runs out: which edge the local
-// operations would act on (edge_for_operation, also the exercise session's question) and the label of the next Loop
-// phase (next_loop_phase_label, the Edit menu's item). edge_for_operation runs with its Nth allocation failing, or
+// What the key actions' callers ask before acting (document/document_actions.h) when memory runs out: which edge the
+// local operations would act on (edge_for_operation, also the exercise session's question) and the label of the next
+// Loop phase (next_loop_phase_label, the Edit menu's item). edge_for_operation runs with its Nth allocation failing, or
 // the Nth and every later one (FailingAllocations), for N = 1, 2, ... until it gets through without a failure: nothing
 // escapes, and it answers as with memory to spare (the edge, or the refusal's sentence) or refuses with kMemoryRanOut.
 // next_loop_phase_label, asked with every allocation failing, allocates nothing and names the phase.
@@ -11,8 +11,8 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "document/document_actions.h"
 #include "support/failing_allocations.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -1,4 +1,4 @@
-// The key actions (ui/document_actions.h) when memory runs out at any allocation they make: their own (the edit's
+// The key actions (document/document_actions.h) when memory runs out at any allocation they make: their own (the edit's
 // label, a refusal's sentence, the "; new vertex v4" split adds to the message, Loop's phase 1) and the document's.
 // Each action runs with its Nth allocation failing (FailingAllocations), or the Nth and every later one, for
 // N = 1, 2, ... until it gets through without a failure. Each time nothing escapes, the selection names only live
@@ -19,9 +19,9 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "document/document_actions.h"
 #include "support/failing_allocations.h"
 #include "support/next_edit_check.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

@@ -16,9 +16,9 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "document/mesh_document.h"
 #include "support/failing_allocations.h"
 #include "support/next_edit_check.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit {
 namespace {

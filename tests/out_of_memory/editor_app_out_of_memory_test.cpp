@@ -26,9 +26,9 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "document/document_actions.h"
 #include "render/gl_test_support.h"
 #include "support/failing_allocations.h"
-#include "ui/document_actions.h"
 
 namespace meshedit {
 namespace {

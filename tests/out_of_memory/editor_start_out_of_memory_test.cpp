@@ -78,7 +78,7 @@ TEST_F(EditorStartOutOfMemory, TheWindowStartsWithTheWholeCubeOrEmptyAndSaysWhy)
         EXPECT_TRUE(doc.mesh.same_as(cube));
         EXPECT_TRUE(validate(doc.mesh).ok());
         EXPECT_EQ(app_->title(), "MeshEdit - untitled");
-        // Shown, but memory ran out saying so: the message says that instead (ui/mesh_document.h).
+        // Shown, but memory ran out saying so: the message says that instead (document/mesh_document.h).
         if (doc.message.text.find(kMemoryRanOut) != std::string::npos) {
           EXPECT_NE(doc.message.severity, Severity::Info);
         }

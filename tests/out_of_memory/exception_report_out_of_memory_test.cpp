@@ -1,5 +1,5 @@
-// The exception reports (ui/exception_report.h) when memory has run out for good (every allocation fails): nothing
-// escapes them or run_guarded, and the status line says memory ran out, as an Error, with no allocation.
+// The exception reports (document/exception_report.h) when memory has run out for good (every allocation fails):
+// nothing escapes them or run_guarded, and the status line says memory ran out, as an Error, with no allocation.
 #include <new>
 #include <stdexcept>
 
@@ -7,8 +7,8 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "document/exception_report.h"
 #include "support/failing_allocations.h"
-#include "ui/exception_report.h"
 
 namespace meshedit {
 namespace {

@@ -1,5 +1,5 @@
-// The exercise session's runs (ui/exercise_session.h: mine and the reference, on the selection) when memory runs out
-// at any allocation they make: copying the mesh for the exercise's input, running it, building the label and the
+// The exercise session's runs (document/exercise_session.h: mine and the reference, on the selection) when memory runs
+// out at any allocation they make: copying the mesh for the exercise's input, running it, building the label and the
 // status line, and the document's own. Each run has its Nth allocation fail (FailingAllocations), or the Nth and
 // every later one, for N = 1, 2, ... until it gets through without a failure. Each time nothing escapes, and it keeps
 // document_actions.h's contract: the run was not done (mesh, version, history as they were; an Error that says memory
@@ -19,10 +19,10 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "document/exercise_session.h"
+#include "document/student_file.h"
 #include "support/failing_allocations.h"
 #include "support/test_support.h"
-#include "ui/exercise_session.h"
-#include "ui/student_file.h"
 
 namespace meshedit {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <gtest/gtest.h>
 
+#include "document/mesh_document.h"
 #include "support/state_before_last.h"
-#include "ui/mesh_document.h"
 
 namespace meshedit::testing {
 

@@ -7,7 +7,7 @@
 
 #include "core/halfedge_mesh.h"
 #include "core/mesh_patch.h"
-#include "ui/mesh_document.h"
+#include "document/mesh_document.h"
 
 namespace meshedit::testing {
 

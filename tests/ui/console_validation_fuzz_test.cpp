@@ -12,8 +12,8 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/validate.h"
+#include "document/mesh_document.h"
 #include "support/random_edits.h"
-#include "ui/mesh_document.h"
 #include "ui/script_console.h"
 
 namespace meshedit {

@@ -4,14 +4,15 @@
 
 #include <gtest/gtest.h>
 
+#include "document/mesh_document.h"
 #include "ui/inspector.h"
-#include "ui/mesh_document.h"
 #include "ui_test_support.h"
 
 namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 std::string walk_text(const ElementFacts& f) {
   std::string s;

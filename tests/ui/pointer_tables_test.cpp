@@ -6,8 +6,8 @@
 #include <gtest/gtest.h>
 
 #include "core/mesh_ops.h"
+#include "document/document_actions.h"
 #include "support/failing_snapshots.h"
-#include "ui/document_actions.h"
 #include "ui/pointer_tables.h"
 #include "ui_test_support.h"
 
@@ -15,6 +15,7 @@ namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 std::string parsed(std::string_view text, TableTab tab) {
   const OpResult<ElementRef> r = parse_table_filter(text, tab);

@@ -7,7 +7,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_ops.h"
 #include "core/validate.h"
-#include "ui/document_actions.h"
+#include "document/document_actions.h"
 #include "ui/inspector.h"
 #include "ui/pointer_tables.h"
 #include "ui/status_bar.h"
@@ -17,6 +17,7 @@ namespace meshedit {
 namespace {
 
 using namespace ui_testing;
+using namespace document_testing;
 
 struct StatusFixture {
   MeshDocument doc;

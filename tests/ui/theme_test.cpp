@@ -4,7 +4,7 @@
 #include <imgui.h>
 
 #include "core/palette.h"
-#include "ui/bezier_mine.h"
+#include "document/bezier_mine.h"
 #include "ui/patch_view.h"
 #include "ui/theme.h"
 

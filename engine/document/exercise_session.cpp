@@ -1,0 +1,308 @@
+// ExerciseSession: see exercise_session.h for the contract.
+//
+// Kept here: the document is only written through apply_operation (the run, one undo entry) and show_state
+// (replay frames, no history), and every replay frame is rebuilt from the run's before-mesh with core replay(),
+// so stepping backwards is as exact as stepping forwards.
+//
+// A run is prepared (prepare_run: everything that can fail, the run's mesh copied out of its report) and then taken
+// (take_run: apply_operation, which never throws, and messages that fall back to kMemoryRanOut), as the document's
+// actions do; run() turns a std::bad_alloc from the preparation into an Error with nothing done.
+#include "document/exercise_session.h"
+
+#include <algorithm>
+#include <exception>
+#include <new>
+#include <type_traits>
+#include <utility>
+
+#include "core/mesh_error.h"
+#include "document/document_actions.h"
+#include "document/exception_report.h"
+#include "script/lua_runtime.h"
+#include "script/scripted_exercise.h"
+
+namespace meshedit {
+namespace {
+
+// Moved into run_ and the document after the document changed: moves that cannot fail.
+static_assert(std::is_nothrow_move_constructible_v<ExerciseRun> && std::is_nothrow_move_assignable_v<ExerciseRun>);
+static_assert(std::is_nothrow_move_assignable_v<HalfedgeMesh>);
+
+const char* operation_word(Exercise exercise) {
+  switch (exercise) {
+    case Exercise::FlipEdge: return "flip";
+    case Exercise::SplitEdge: return "split";
+    case Exercise::VertexNormal: return "normal";
+    case Exercise::Upsample: return "upsample";
+    default: return exercise_info(exercise).name;
+  }
+}
+
+// The input the active exercise takes from the selection, or why the selection does not fit.
+OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, const Selection& selection) {
+  auto mesh = std::make_shared<const HalfedgeMesh>(doc.mesh);
+  switch (exercise) {
+    case Exercise::FlipEdge:
+    case Exercise::SplitEdge: {
+      const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
+      if (!edge.ok()) return {edge.check, {}};
+      return {Check::yes(), ExerciseInput::edge(std::move(mesh), edge.value)};
+    }
+    case Exercise::VertexNormal: {
+      const ElementRef ref = selection.selected;
+      if (!ref.valid() || ref.kind != ElementKind::Vertex) return {Check::no("select a vertex first"), {}};
+      if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
+      return {Check::yes(), ExerciseInput::vertex(std::move(mesh), VertexId(ref.index))};
+    }
+    case Exercise::Upsample: return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
+    default: break;
+  }
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    if (!scripted->takes()) return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
+    const ElementKind kind = *scripted->takes();
+    if (kind == ElementKind::Edge) {  // as flip and split take it: a selected halfedge names its edge
+      const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
+      if (!edge.ok()) return {edge.check, {}};
+      return {Check::yes(), ExerciseInput::element_of(std::move(mesh), edge.value)};
+    }
+    const ElementRef ref = selection.selected;
+    if (!ref.valid() || ref.kind != kind) {
+      return {Check::no(std::string("select ") + (kind == ElementKind::Edge ? "an " : "a ") + kind_name(kind) +
+                        " first: " + scripted->info().signature),
+              {}};
+    }
+    if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
+    return {Check::yes(), ExerciseInput::element_of(std::move(mesh), ref)};
+  }
+  return {Check::no(std::string(exercise_info(exercise).name) + " is not a mesh exercise"), {}};
+}
+
+std::string point_text(const std::vector<glm::dvec3>& points) {
+  if (points.empty()) return "nothing";
+  const glm::dvec3& p = points.front();
+  return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
+}
+
+}  // namespace
+
+std::vector<Exercise> mesh_exercises() {
+  std::vector<Exercise> all = {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
+  for (Exercise scripted : scripted_exercises()) all.push_back(scripted);
+  return all;
+}
+
+ExerciseSession::ExerciseSession(std::filesystem::path folder)
+    : folder_(std::move(folder)), student_(folder_ / exercise_info(exercise_).file) {}
+
+void ExerciseSession::set_folder(std::filesystem::path folder) {
+  folder_ = std::move(folder);
+  student_.set_path(file());
+}
+
+bool ExerciseSession::set_exercise(Exercise exercise) {
+  if (!is_mesh_exercise(exercise)) return false;
+  exercise_ = exercise;
+  student_.set_path(file());
+  return true;
+}
+
+std::filesystem::path ExerciseSession::file() const { return folder_ / exercise_info(exercise_).file; }
+
+Check ExerciseSession::run_mine(MeshDocument& doc, Selection& selection) { return run(doc, selection, true); }
+Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { return run(doc, selection, false); }
+
+Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
+  std::optional<PreparedRun> prepared;
+  try {
+    Check refused = prepare_run(doc, selection, mine, prepared);
+    if (!prepared) return refused;
+  } catch (const std::exception& e) {
+    // Nothing was done: the document is as it was (or as finish_replay left it, whole). The report needs no memory.
+    report_exception(doc, e);
+    return Check::no(kMemoryRanOut);  // fits std::string's inline buffer: no allocation
+  }
+  return take_run(doc, selection, std::move(*prepared));
+}
+
+Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool mine,
+                                   std::optional<PreparedRun>& prepared) {
+  finish_replay(doc);
+  const char* who = mine ? "mine" : "reference";
+  // An instructor's exercise whose definition was saved since: its new version runs (or its error is shown).
+  if (const std::string error = reload_scripted_exercise_if_changed(exercise_); !error.empty()) {
+    Check refused = Check::no("the exercise's definition did not load: " + error);
+    set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
+    return refused;
+  }
+  OpResult<ExerciseInput> input = input_for(exercise_, doc, selection);
+  if (!input.ok()) {
+    // A refusal for lack of memory is an Error: memory to spare might have run it.
+    const Severity severity = input.check.reason == kMemoryRanOut ? Severity::Error : Severity::Warning;
+    set_message_noexcept(doc, severity, [&] { return who + std::string(": ") + input.check.reason; });
+    return std::move(input.check);
+  }
+  if (mine && !ensure_loaded()) {
+    Check refused = Check::no(load_error());
+    run_.reset();
+    set_message_noexcept(doc, Severity::Error, [&] { return load_error(); });
+    return refused;
+  }
+
+  PreparedRun run;
+  ExerciseRun& result = run.result;
+  result.exercise = exercise_;
+  result.mine = mine;
+  result.serial = runs_ + 1;
+  const std::string target = input.value.element.valid() ? " " + format_id(input.value.element) : std::string();
+  result.label = who + std::string(": ") + operation_word(exercise_) + target;
+  result.input = input.value;
+  try {
+    if (mine) {
+      RunOptions options;
+      options.record_edits = true;
+      result.report = check_exercise(*student_.code(), exercise_, result.input, options);
+    } else {
+      result.report.exercise = exercise_;
+      result.report.reference = meshedit::run_reference(exercise_, result.input);
+    }
+  } catch (const std::bad_alloc&) {
+    throw;                             // run() reports it: nothing was done
+  } catch (const std::exception& e) {  // check_exercise promises not to throw; a bug must not close the window
+    run_.reset();
+    set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
+    return Check::no(e.what());
+  }
+
+  const ExerciseOutcome& outcome = mine ? result.report.mine : result.report.reference;
+  // Memory that ran out under the student's code (a binding's std::bad_alloc, turned into a Lua error flagged
+  // out_of_memory) is not the student's error: nothing is done, as for the reference's std::bad_alloc. The flag, not
+  // the text: a student's own error("memory ran out") is the student's error.
+  if (outcome.out_of_memory) throw std::bad_alloc();
+  const bool failed = !outcome.error.empty();
+  if (failed && mine) result.label = "mine (error): " + std::string(operation_word(exercise_)) + target;
+  // The status line says what happened beyond "N fields changed": made now, before the document changes.
+  if (failed) {
+    run.verdict = outcome.error;
+  } else if (!mine) {
+    run.verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
+    if (exercise_ == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
+  } else {
+    run.verdict = result.report.summary();
+    if (outcome.validation && !outcome.validation->ok()) {
+      run.verdict += "; yours is invalid: " + outcome.validation->summary();
+    }
+  }
+  run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
+  run.unchanged_text = result.label + ": nothing changed (" + run.verdict + ")";
+  run.returned = failed ? Check::no(outcome.error) : Check::yes();
+  if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) run.mesh = *outcome.mesh;  // the report keeps its own
+  prepared = std::move(run);
+  return Check::yes();
+}
+
+Check ExerciseSession::take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept {
+  ExerciseRun& result = run.result;
+  ++runs_;
+  if (run.mesh) {
+    const uint64_t seen = doc.mesh.version();
+    Check check = apply_operation(doc, result.label, [&](HalfedgeMesh& mesh) {
+      mesh = std::move(*run.mesh);  // a move: the mesh is never left half copied
+      mesh.bump_version_above(seen);
+      return Check::yes();
+    });
+    if (!check.ok) {  // not done (memory ran out): apply_operation's message says so
+      run_.reset();
+      return check;  // moved: no copy to run out of memory
+    }
+    result.applied = true;
+    keep_if_alive(selection, doc.mesh);
+    // Kept without its record, the document's Warning stays a Warning.
+    const Severity severity = std::max(run.severity, doc.message.severity);
+    set_message_noexcept(doc, severity, [&] { return doc.message.text + " (" + run.verdict + ")"; });
+  } else {
+    set_message(doc, run.severity, std::move(run.unchanged_text));
+  }
+  result.generation = doc.generation;
+  result.version = doc.mesh.version();
+  run_ = std::move(result);
+  return std::move(run.returned);
+}
+
+const std::vector<RecordedEdit>& ExerciseSession::edits() const {
+  static const std::vector<RecordedEdit> none;
+  return run_ && run_->mine ? run_->report.mine.edits : none;
+}
+
+size_t ExerciseSession::replay_length() const { return edits().size(); }
+
+bool ExerciseSession::can_replay(const MeshDocument& doc) const {
+  if (!run_ || !run_->mine || !run_->applied || edits().empty() || !run_->input.mesh) return false;
+  if (replaying_) return true;
+  return doc.generation == run_->generation && doc.mesh.version() == run_->version;
+}
+
+void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from) {
+  show_state(doc, std::move(mesh), std::move(label), std::move(from));
+  shown_generation_ = doc.generation;
+  shown_version_ = doc.mesh.version();
+}
+
+Check ExerciseSession::start_replay(MeshDocument& doc) {
+  if (!can_replay(doc)) {
+    const Check no = Check::no("nothing to replay: run mine on a mesh exercise first (and do not edit in between)");
+    set_message(doc, Severity::Warning, no.reason);
+    return no;
+  }
+  replaying_ = true;
+  position_ = 0;
+  const HalfedgeMesh& before = *run_->input.mesh;
+  show(doc, before, "replay 0/" + std::to_string(replay_length()) + ": before " + run_->label, before);
+  return Check::yes();
+}
+
+Check ExerciseSession::replay_step(MeshDocument& doc, size_t k) {
+  if (!replaying_) return Check::no("no replay in progress");
+  k = std::min(k, replay_length());
+  const HalfedgeMesh& before = *run_->input.mesh;
+  const std::vector<RecordedEdit>& log = edits();
+  try {
+    HalfedgeMesh previous = replay(before, log, k == 0 ? 0 : k - 1);
+    HalfedgeMesh state = previous;
+    std::string label = "replay 0/" + std::to_string(log.size()) + ": before " + run_->label;
+    if (k > 0) {
+      apply_edit(state, log[k - 1]);
+      const RecordedEdit& edit = log[k - 1];
+      label = "replay " + std::to_string(k) + "/" + std::to_string(log.size()) + ": " + describe(edit) +
+              (edit.where.empty() ? "" : "  (" + edit.where + ")");
+    }
+    show(doc, std::move(state), std::move(label), std::move(previous));
+  } catch (const std::exception& e) {
+    // The recording promises a faithful replay; if it is not, say so and go back to the real result.
+    const Check no = Check::no(std::string("replay failed at write ") + std::to_string(k) + ": " + e.what());
+    finish_replay(doc);
+    set_message(doc, Severity::Error, no.reason);
+    return no;
+  }
+  position_ = k;
+  return Check::yes();
+}
+
+void ExerciseSession::finish_replay(MeshDocument& doc) {
+  if (!replaying_) return;
+  sync(doc);
+  if (!replaying_) return;  // the document moved on: leave it alone
+  // Copied first: when memory runs out here the replay goes on as it was.
+  HalfedgeMesh final_state = *run_->report.mine.mesh;
+  std::string label = run_->label;
+  std::optional<HalfedgeMesh> before(*run_->input.mesh);
+  replaying_ = false;
+  show(doc, std::move(final_state), std::move(label), std::move(before));
+  run_->generation = doc.generation;
+  run_->version = doc.mesh.version();
+}
+
+void ExerciseSession::sync(const MeshDocument& doc) {
+  if (replaying_ && (doc.generation != shown_generation_ || doc.mesh.version() != shown_version_)) replaying_ = false;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,138 @@
+// ExerciseSession: the window's "mine vs reference" for the mesh exercises (flip, split, normals, upsample), as
+// plain data (no ImGui): which exercise is active, the student folder, the last report, and the write-by-write
+// replay of the student's operation in the document.
+//
+// Invariants:
+// - The student file is read through a StudentFile (student_file.h): loaded again when it is saved, so saving
+//   the file in an editor is enough. A file that does not load (syntax error, missing) leaves the document
+//   untouched and keeps the error ("flip.lua:3: ...").
+// - run_mine / run_reference never throw and change the document by at most one undoable operation, labelled
+//   "mine: flip e7" / "reference: flip e7" ("mine (error): ..." when the student's function failed half way);
+//   the student's result goes in even when it differs from the reference (validation says what broke). An
+//   unchanged mesh (a refusal, the templates) records nothing.
+// - They keep document_actions.h's out-of-memory contract: everything that can fail (the input's copy of the mesh,
+//   the run, the label, the status line's text) is made before the document changes, and the run goes in through
+//   apply_operation. When memory runs out before that, or under the student's code (a Lua error flagged
+//   ExerciseOutcome::out_of_memory, not the student's doing; a student's own error("memory ran out") is an error of
+//   the run like any other), nothing is done: an Error that says memory ran out (kMemoryRanOut), the document
+//   as it was (a replay in progress finished first, whole). Once the run went in, it is the session's last run, and
+//   a message that cannot be made for lack of memory is kMemoryRanOut as a Warning or worse.
+// - A replay shows states with show_state(), never history: while it runs, the document shows
+//   replay(before, edits, k) and `last` is the diff of edit k alone (state k-1 -> k), so the tables highlight
+//   the cell edit k wrote. finish_replay() (or stepping to the end) leaves the document at the operation's
+//   final state with its single undo entry, as run_mine left it.
+// - A replay only starts on the document state run_mine left (same generation and version); if anything else
+//   changes the document during a replay, the replay is dropped (sync()) rather than overwrite that change.
+//   Callers should finish_replay() before their own edits and undo/redo (a no-op when no replay runs): an undo
+//   in the middle of a replay would put the partly replayed state on the redo list.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/check.h"
+#include "core/edit_log.h"
+#include "core/halfedge_mesh.h"
+#include "document/mesh_document.h"
+#include "document/selection.h"
+#include "document/student_file.h"
+#include "script/exercises.h"
+
+namespace meshedit {
+
+// The exercises the window runs on its mesh: normals, flip, split, upsample (in the assignment's order), then the
+// scripted ones registered from scripts/exercises (scripted_exercise.h).
+std::vector<Exercise> mesh_exercises();
+
+// The last run (mine or the reference) and what it worked on.
+struct ExerciseRun {
+  Exercise exercise = Exercise::FlipEdge;
+  bool mine = true;         // false: the reference alone (report.mine is empty)
+  std::string label;        // "mine: flip e7"
+  ExerciseInput input;      // input.mesh is the document's mesh before the run
+  ExerciseReport report;    // mine runs: check_exercise with record_edits; reference runs: .reference only
+  bool applied = false;     // the result went into the document as one undo entry
+  uint64_t generation = 0;  // the document's generation and mesh version right after the run
+  uint64_t version = 0;
+  uint64_t serial = 0;  // +1 per run, so views rebuild what they derive from it once per run
+};
+
+class ExerciseSession {
+ public:
+  explicit ExerciseSession(std::filesystem::path folder = default_student_folder());
+
+  const std::filesystem::path& folder() const { return folder_; }
+  void set_folder(std::filesystem::path folder);  // forgets the loaded code (the next run loads afresh)
+  Exercise exercise() const { return exercise_; }
+  // Only mesh exercises; anything else is ignored (returns false).
+  bool set_exercise(Exercise exercise);
+  std::filesystem::path file() const;  // folder() / "flip.lua"
+
+  // The student file differs from the last load attempt (or there was none).
+  bool file_changed() const { return student_.changed(); }
+  // Loads the file if file_changed(); returns false (and sets load_error()) when it does not load.
+  bool ensure_loaded() { return student_.ensure_loaded(); }
+  const std::string& load_error() const { return student_.error(); }
+  size_t loads() const { return student_.loads(); }  // how many times a file was loaded (tests)
+
+  // The active exercise on the selection (edge or its halfedge for flip/split, vertex for normals, the whole
+  // mesh for upsample). Refused (with doc.message) when the selection does not fit or the file does not load.
+  // Ends a replay in progress first.
+  Check run_mine(MeshDocument& doc, Selection& selection);
+  Check run_reference(MeshDocument& doc, Selection& selection);
+
+  const std::optional<ExerciseRun>& last_run() const { return run_; }
+
+  // Replay of the last mine run's recorded writes.
+  bool can_replay(const MeshDocument& doc) const;  // a mine run with edits whose state the document still shows
+  bool replaying() const { return replaying_; }
+  size_t replay_position() const { return position_; }  // k: edits 1..k applied
+  size_t replay_length() const;                         // N
+  const std::vector<RecordedEdit>& edits() const;       // empty without a mine run
+  // Shows the before-mesh (k = 0). Refused when !can_replay(doc).
+  Check start_replay(MeshDocument& doc);
+  // Shows state k (clamped to N); `last` is edit k alone. Refused when not replaying.
+  Check replay_step(MeshDocument& doc, size_t k);
+  // Back to the operation's final state with its diff as `last`; no-op when not replaying.
+  void finish_replay(MeshDocument& doc);
+  // Drops the replay when the document no longer shows the state the replay put there (an undo, an edit, a
+  // new file). Call once per frame; cheap.
+  void sync(const MeshDocument& doc);
+
+ private:
+  // A run made before the document changes: its result, the status line's parts and what run() returns.
+  struct PreparedRun {
+    ExerciseRun result;
+    std::string verdict;         // "(...)" after the document's own message
+    std::string unchanged_text;  // the whole message when the mesh does not change
+    Severity severity = Severity::Info;
+    Check returned;
+    std::optional<HalfedgeMesh> mesh;  // the run's mesh, when it differs from the document's
+  };
+
+  Check run(MeshDocument& doc, Selection& selection, bool mine);
+  // Everything that can fail: the input, the student's code or the reference, the label and the texts. A refusal is
+  // returned with `prepared` left empty (its message set); std::bad_alloc escapes with the document as it was.
+  Check prepare_run(MeshDocument& doc, Selection& selection, bool mine, std::optional<PreparedRun>& prepared);
+  // Puts the prepared run in the document (apply_operation, which never throws) and says so; cannot fail.
+  Check take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept;
+  void show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from);
+
+  std::filesystem::path folder_;
+  Exercise exercise_ = Exercise::FlipEdge;
+  StudentFile student_;
+
+  std::optional<ExerciseRun> run_;
+  uint64_t runs_ = 0;
+  bool replaying_ = false;
+  size_t position_ = 0;
+  uint64_t shown_generation_ = 0;  // what the replay last put in the document
+  uint64_t shown_version_ = 0;
+};
+
+}  // namespace meshedit
