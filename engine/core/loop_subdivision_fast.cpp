@@ -313,26 +313,26 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
   parallel_for(threads, order.count, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
     const uint32_t* face_at = order.face_at_row;
-    for (size_t r = begin; r < end; ++r) {
+    for (size_t row = begin; row < end; ++row) {
       // The chain row -> face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for
       // later rows now, one link per stage.
-      if (r + 32 < end) __builtin_prefetch(&m.face_halfedge[face_at[r + 32]]);
-      if (r + 24 < end) __builtin_prefetch(&m.h[m.face_halfedge[face_at[r + 24]].index]);
-      if (r + 16 < end) {
-        const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[r + 16]].index];
+      if (row + 32 < end) __builtin_prefetch(&m.face_halfedge[face_at[row + 32]]);
+      if (row + 24 < end) __builtin_prefetch(&m.h[m.face_halfedge[face_at[row + 24]].index]);
+      if (row + 16 < end) {
+        const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[row + 16]].index];
         __builtin_prefetch(&m.h[x0.next.index]);
         __builtin_prefetch(&L.plan[x0.edge.index]);
       }
-      if (r + 8 < end) {
-        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[r + 8]].index].next.index];
+      if (row + 8 < end) {
+        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[row + 8]].index].next.index];
         __builtin_prefetch(&m.h[x1.next.index]);
         __builtin_prefetch(&L.plan[x1.edge.index]);
       }
-      if (r + 4 < end) {
-        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[r + 4]].index].next.index].next.index];
+      if (row + 4 < end) {
+        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
         __builtin_prefetch(&L.plan[x2.edge.index]);
       }
-      const size_t f = face_at[r];
+      const size_t f = face_at[row];
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
       unsigned sides = 0;
       id[0] = m.face_halfedge[f].index;
@@ -372,7 +372,7 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
                            EdgeId(edge_id[s - 3]), FaceId::face(face_id[c.face[s]])};
       }
       for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
-      const size_t first_row = 4 * r;
+      const size_t first_row = 4 * row;
       if (order.next_face_at_row) {
         for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = face_id[g];
       }
