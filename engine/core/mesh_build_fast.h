@@ -12,10 +12,10 @@
 
 namespace meshedit::build_detail {
 
-// Builds `out` from `in` exactly as the checked builder would (same ids, pointers, positions, liveness), and
-// sets `unused_vertices`. Returns false, leaving `out` unspecified, as soon as the input is anything but a clean
+// Builds `mesh` from `in` exactly as the checked builder would (same ids, pointers, positions, liveness), and
+// sets `unused_vertices`. Returns false, leaving `mesh` unspecified, as soon as the input is anything but a clean
 // oriented manifold; the checked builder then runs and explains what is wrong. Never throws except bad_alloc.
-bool build_fast(const PolygonMesh& in, HalfedgeMesh& out, size_t& unused_vertices);
+bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertices);
 
 // The first step after the twins are known, for the fast builder and for subdivision's refine_mesh: halfedge h of
 // face f is corner h of `in` (next around the face, twin from `twin`, its vertex, face f), every face's halfedge its

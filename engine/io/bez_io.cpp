@@ -14,7 +14,7 @@
 namespace meshedit {
 namespace {
 
-constexpr size_t kNumbersPerPatch = 16 * 3;
+constexpr size_t kNumbersPerPatch = size_t{16} * 3;
 constexpr const char* kAxis[3] = {"x", "y", "z"};
 
 }  // namespace

@@ -84,7 +84,7 @@ struct Instance {
 
 class DaeReader {
  public:
-  DaeReader(std::string_view text, const std::string& name) : text_(text), file_(name) {}
+  DaeReader(std::string_view text, std::string name) : text_(text), file_(std::move(name)) {}
 
   DaeFile read() {
     if (text_.find_first_not_of(" \t\r\n") == std::string_view::npos) throw FileError(file_, 1, "file is empty");

@@ -90,7 +90,7 @@ PlyHeader parse_ply_header(std::string_view bytes, const std::string& name) {
   while (true) {
     const size_t end = bytes.find('\n', pos);
     ++line_number;
-    if (end == std::string_view::npos || end > kMaxHeaderBytes) {
+    if (end > kMaxHeaderBytes) {  // npos too: no newline at all
       throw FileError(name, line_number, "the header has no end_header line");
     }
     const std::string_view line = bytes.substr(pos, end - pos);
