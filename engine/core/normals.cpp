@@ -4,8 +4,9 @@
 // - Every walk is bounded (HalfedgeMesh's own walks) and every id is checked with alive() before its
 //   pointers or position are read, so a broken mesh yields zero vectors, never a hang or a stray read.
 // - The per-element and whole-mesh functions add the same terms in the same order, so they agree bit
-//   for bit, except on a mesh proven valid with triangle faces only: there vertex_normals adds each face's
-//   term (taken from the face's own halfedge) in face order, which agrees with vertex_normal to rounding.
+//   for bit, except on a mesh with triangle rows or proven valid with triangle faces only: there vertex_normals
+//   adds each face's term (taken from the face's own halfedge) in row or face order, which agrees with
+//   vertex_normal to rounding. Rows describe a valid triangle mesh's connectivity, so their ids need no check.
 #include "core/normals.h"
 
 #include <algorithm>
