@@ -20,16 +20,11 @@ std::string_view up_axis_status(UpAxisChoice choice, const std::optional<FileUpA
   }
   if (!file) return "Z up";
   if (file->source == UpAxisSource::CourseExporter) return "Z up (course file)";
-  if (file->source == UpAxisSource::Lesson)
-    return file->up_axis == UpAxis::Y   ? "Y up (the lesson's)"
-           : file->up_axis == UpAxis::X ? "X up (the lesson's)"
-                                        : "Z up (the lesson's)";
-  switch (file->up_axis) {
-    case UpAxis::X: return "X up (from the file)";
-    case UpAxis::Y: return "Y up (from the file)";
-    case UpAxis::Z: return "Z up (from the file)";
-  }
-  return "Z up (from the file)";
+  // By axis, in UpAxis order: what the file says, or what the lesson says of the file it read.
+  static_assert(int(UpAxis::X) == 0 && int(UpAxis::Y) == 1 && int(UpAxis::Z) == 2);
+  constexpr std::string_view kFromTheFile[] = {"X up (from the file)", "Y up (from the file)", "Z up (from the file)"};
+  constexpr std::string_view kTheLessons[] = {"X up (the lesson's)", "Y up (the lesson's)", "Z up (the lesson's)"};
+  return (file->source == UpAxisSource::Lesson ? kTheLessons : kFromTheFile)[int(file->up_axis)];
 }
 
 std::string_view up_axis_status_tooltip(UpAxisChoice choice, const std::optional<FileUpAxis>& file) noexcept {

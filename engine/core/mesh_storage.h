@@ -44,7 +44,6 @@ struct MeshStorage {
   // reserve_total for the last step first, as Loop does, so the steps do not copy the arrays again each time.
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.journal_.before_bulk_write();
-    m.rows_.reset();
     reserve_total(m, vertices, halfedges, edges, faces);
     m.live_vertices_ += vertices - m.vertex_capacity();
     m.live_halfedges_ += halfedges - m.halfedge_capacity();
