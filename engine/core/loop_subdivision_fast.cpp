@@ -29,8 +29,10 @@
 #include "core/finite.h"
 #include "core/loop_rules.h"
 #include "core/loop_subdivision.h"
+#include "core/memory_hints.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
+#include "core/ring_walks.h"
 
 namespace meshedit {
 namespace {
@@ -99,39 +101,55 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
   boundary_edges = bound[chunks];
 }
 
-// Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge.
+// Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge. The rings are
+// walked several at a time (ring_walks.h); each lane sums its vertex's neighbours in walk order.
+class VertexPoints {
+ public:
+  VertexPoints(Level& level, LoopWeights weights, MeshArray<glm::dvec3>& points)
+      : L_(level), weight_(weights), points_(points) {}
+
+  void begin(unsigned lane, uint32_t) { sums_[lane] = Sum{}; }
+
+  void neighbour(unsigned lane, uint32_t q_vertex, bool rim) {
+    Sum& s = sums_[lane];
+    const glm::dvec3& q = L_.m.position[q_vertex];
+    s.neighbours += q;
+    ++s.valence;
+    if (rim) {
+      if (s.rim_count < 2) s.rim[s.rim_count] = q;
+      ++s.rim_count;
+    }
+  }
+
+  void end(unsigned lane, uint32_t v, uint32_t start) {
+    const Sum& s = sums_[lane];
+    const glm::dvec3& p = L_.m.position[v];
+    if (s.rim_count == 0) {
+      points_[v] = loop_rules::interior_vertex(p, s.neighbours, s.valence, weight_(s.valence));
+    } else if (s.rim_count == 2) {
+      points_[v] = loop_rules::boundary_vertex(p, s.rim[0], s.rim[1]);
+    } else {
+      points_[v] = p;
+    }
+    const uint32_t e = L_.m.h[start].edge.index;
+    if (L_.face_side(e) == start) L_.m.vertex_halfedge[v] = HalfedgeId(L_.first_halfedge(e));  // becomes n0
+  }
+
+ private:
+  struct Sum {
+    glm::dvec3 neighbours{0.0}, rim[2];
+    uint32_t valence = 0, rim_count = 0;
+  };
+  Level& L_;
+  loop_rules::ValenceWeights weight_;
+  MeshArray<glm::dvec3>& points_;
+  Sum sums_[ring_walks::kLanes];
+};
+
 void pass_vertices(Level& L, LoopWeights weights, int threads, MeshArray<glm::dvec3>& points) {
   parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
-    loop_rules::ValenceWeights weight(weights);
-    const MeshStorage::View& m = L.m;
-    for (size_t v = begin; v < end; ++v) {
-      if (!(*m.vertex_alive)[v]) continue;
-      const glm::dvec3& p = m.position[v];
-      const uint32_t start = m.vertex_halfedge[v].index;
-      glm::dvec3 neighbour_sum(0.0), rim[2];
-      uint32_t valence = 0, rim_count = 0;
-      uint32_t h = start;
-      do {
-        const uint32_t t = m.h[h].twin.index;
-        const glm::dvec3& q = m.position[m.h[t].vertex.index];
-        neighbour_sum += q;
-        ++valence;
-        if (m.h[h].face.is_boundary() || m.h[t].face.is_boundary()) {
-          if (rim_count < 2) rim[rim_count] = q;
-          ++rim_count;
-        }
-        h = m.h[t].next.index;
-      } while (h != start);
-      if (rim_count == 0) {
-        points[v] = loop_rules::interior_vertex(p, neighbour_sum, valence, weight(valence));
-      } else if (rim_count == 2) {
-        points[v] = loop_rules::boundary_vertex(p, rim[0], rim[1]);
-      } else {
-        points[v] = p;
-      }
-      const uint32_t e = m.h[start].edge.index;
-      if (L.face_side(e) == start) m.vertex_halfedge[v] = HalfedgeId(L.first_halfedge(e));  // becomes n0
-    }
+    VertexPoints visitor(L, weights, points);
+    ring_walks::walk_rings(L.m, begin, end, visitor);
   });
 }
 
@@ -146,29 +164,29 @@ void pass_edges(Level& L, int threads) {
       // boundary edge is a loop halfedge whose next another edge rewrites meanwhile: they skip boundary edges.
       const auto live = [&](size_t g) { return g < end && (*m.edge_alive)[g]; };
       const auto interior = [&](size_t g) { return live(g) && !L.plan[g].boundary(); };
-      if (live(e + 32)) __builtin_prefetch(&m.h[L.face_side(uint32_t(e + 32))]);
+      if (live(e + 32)) memory_hints::prefetch_record(&m.h[L.face_side(uint32_t(e + 32))]);
       if (live(e + 24)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 24))];
-        __builtin_prefetch(&m.h[h0.twin.index]);
-        __builtin_prefetch(&m.h[h0.next.index]);
+        memory_hints::prefetch_record(&m.h[h0.twin.index]);
+        memory_hints::prefetch_record(&m.h[h0.next.index]);
       }
       if (live(e + 16)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 16))];
         const HalfedgeRecord& h1 = m.h[h0.twin.index];
-        __builtin_prefetch(&m.h[h1.next.index]);
-        __builtin_prefetch(&m.h[m.h[h0.next.index].next.index]);
-        __builtin_prefetch(&m.position[h0.vertex.index]);
-        __builtin_prefetch(&m.position[h1.vertex.index]);
+        memory_hints::prefetch_record(&m.h[h1.next.index]);
+        memory_hints::prefetch_record(&m.h[m.h[h0.next.index].next.index]);
+        memory_hints::prefetch(&m.position[h0.vertex.index]);
+        memory_hints::prefetch(&m.position[h1.vertex.index]);
       }
       if (interior(e + 8)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 8))];
         const HalfedgeRecord& h1 = m.h[h0.twin.index];
-        __builtin_prefetch(&m.h[m.h[h1.next.index].next.index]);
-        __builtin_prefetch(&m.position[m.h[m.h[h0.next.index].next.index].vertex.index]);
+        memory_hints::prefetch_record(&m.h[m.h[h1.next.index].next.index]);
+        memory_hints::prefetch(&m.position[m.h[m.h[h0.next.index].next.index].vertex.index]);
       }
       if (interior(e + 4)) {
         const HalfedgeRecord& h1 = m.h[m.h[L.face_side(uint32_t(e + 4))].twin.index];
-        __builtin_prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
+        memory_hints::prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
       }
       if (!(*m.edge_alive)[e]) continue;
       const auto edge = uint32_t(e);
@@ -316,21 +334,30 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
     for (size_t row = begin; row < end; ++row) {
       // The chain row -> face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for
       // later rows now, one link per stage.
-      if (row + 32 < end) __builtin_prefetch(&m.face_halfedge[face_at[row + 32]]);
-      if (row + 24 < end) __builtin_prefetch(&m.h[m.face_halfedge[face_at[row + 24]].index]);
+      if (row + 32 < end) memory_hints::prefetch(&m.face_halfedge[face_at[row + 32]]);
+      if (row + 24 < end) memory_hints::prefetch_record(&m.h[m.face_halfedge[face_at[row + 24]].index]);
       if (row + 16 < end) {
         const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[row + 16]].index];
-        __builtin_prefetch(&m.h[x0.next.index]);
-        __builtin_prefetch(&L.plan[x0.edge.index]);
+        memory_hints::prefetch_record(&m.h[x0.next.index]);
+        memory_hints::prefetch(&L.plan[x0.edge.index]);
       }
       if (row + 8 < end) {
         const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[row + 8]].index].next.index];
-        __builtin_prefetch(&m.h[x1.next.index]);
-        __builtin_prefetch(&L.plan[x1.edge.index]);
+        memory_hints::prefetch_record(&m.h[x1.next.index]);
+        memory_hints::prefetch(&L.plan[x1.edge.index]);
       }
       if (row + 4 < end) {
         const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
-        __builtin_prefetch(&L.plan[x2.edge.index]);
+        memory_hints::prefetch(&L.plan[x2.edge.index]);
+      }
+      if (row + 2 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
+        uint32_t x = m.face_halfedge[face_at[row + 2]].index;
+        for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
+          const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
+          memory_hints::prefetch_for_write(&m.h[n0]);
+          memory_hints::prefetch_for_write(&m.h[n0 + 6] - 1);
+          memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
+        }
       }
       const size_t f = face_at[row];
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
@@ -376,15 +403,16 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
       if (order.next_face_at_row) {
         for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = face_id[g];
       }
-      if (order.rows) {
+      if (order.rows) {  // one 64-byte line, written past the caches: the rows are read only after Loop
         for (uint32_t g = 0; g < 4; ++g) {
-          order.rows[first_row + g] =
-              TriangleRow{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
-                           VertexId(vertex_id[c.corner[g][2]])},
-                          FaceId::face(face_id[g])};
+          const TriangleRow row_of_face{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
+                                         VertexId(vertex_id[c.corner[g][2]])},
+                                        FaceId::face(face_id[g])};
+          memory_hints::stream_store(&order.rows[first_row + g], &row_of_face);
         }
       }
     }
+    memory_hints::stream_fence();
   });
 }
 
