@@ -15,7 +15,9 @@
 #include <vector>
 
 #include "core/finite.h"
+#include "core/mesh_array.h"
 #include "core/mesh_storage.h"
+#include "core/ring_walks.h"
 
 namespace meshedit::build_detail {
 namespace {
@@ -45,8 +47,10 @@ bool faces_are_clean(const PolygonMesh& in) {
 
 // Outgoing halfedges by tail vertex: keys[start[v] .. start[v + 1]) = (head << 32 | h), sorted (so by head).
 struct Outgoing {
-  std::vector<uint32_t> start;
-  std::vector<uint64_t> keys;
+  MeshArray<uint32_t> start;
+  MeshArray<uint64_t> keys;
+
+  uint32_t count(uint32_t v) const { return start[v + 1] - start[v]; }
 
   // The first key of v whose head is >= u (or the range's end).
   const uint64_t* lower(uint32_t v, uint32_t u) const {
@@ -67,8 +71,9 @@ Outgoing outgoing_table(const PolygonMesh& in) {
   out.start.assign(vertices + 1, 0);
   for (uint32_t v : in.indices) ++out.start[v + 1];
   for (size_t v = 0; v < vertices; ++v) out.start[v + 1] += out.start[v];
-  out.keys.resize(in.indices.size());
-  std::vector<uint32_t> cursor(out.start.begin(), out.start.end() - 1);
+  out.keys.resize_for_overwrite(in.indices.size());  // every key written below
+  MeshArray<uint32_t> cursor;
+  cursor.assign(out.start.begin(), out.start.end() - 1);
   for (size_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
     for (uint32_t h = begin; h < end; ++h) {
@@ -94,7 +99,7 @@ Outgoing outgoing_table(const PolygonMesh& in) {
 }
 
 // Interior twins; false on a doubled edge (two halfedges u -> v) or an edge with two halfedges v -> u.
-bool match_twins(const PolygonMesh& in, const Outgoing& out, std::vector<uint32_t>& twin) {
+bool match_twins(const PolygonMesh& in, const Outgoing& out, MeshArray<uint32_t>& twin) {
   twin.assign(in.indices.size(), kNone);
   for (uint32_t u = 0; u < in.num_vertices(); ++u) {
     const uint32_t end = out.start[u + 1];
@@ -118,25 +123,51 @@ std::vector<uint32_t> sorted_corners(const PolygonMesh& in, uint32_t f) {
   return s;
 }
 
+// Counts each vertex's fan (its ring walk) against its outgoing halfedges, the interior ones and the open one.
+class FanCount {
+ public:
+  FanCount(const Outgoing& out, std::span<const uint32_t> open_incoming) : out_(out), open_incoming_(open_incoming) {}
+
+  void begin(unsigned lane, uint32_t) { walked_[lane] = 0; }
+  void neighbour(unsigned lane, uint32_t, bool) { ++walked_[lane]; }
+  void end(unsigned lane, uint32_t v, uint32_t) {
+    const uint32_t outgoing = out_.count(v) + (open_incoming_[v] != kNone ? 1 : 0);
+    whole_ = whole_ && walked_[lane] == outgoing;
+  }
+  bool whole() const { return whole_; }
+
+ private:
+  const Outgoing& out_;
+  std::span<const uint32_t> open_incoming_;
+  uint32_t walked_[ring_walks::kLanes] = {};
+  bool whole_ = true;
+};
+
+// Whether every vertex's fan reaches all its outgoing halfedges; one that does not joins several surfaces (a
+// bow-tie). Every walk ends: next is a permutation (face cycles and hole loops) and twin an involution, so the walk
+// h -> h.twin.next from a vertex's halfedge returns to it through that vertex's outgoing halfedges only.
+bool every_fan_whole(const Outgoing& out, std::span<const uint32_t> open_incoming, HalfedgeMesh& mesh) {
+  FanCount count(out, open_incoming);
+  ring_walks::walk_rings(MeshStorage::view(mesh), 0, mesh.vertex_capacity(), count);
+  return count.whole();
+}
+
 }  // namespace
 
-void write_face_halfedges(const PolygonMesh& in, const std::vector<uint32_t>& twin, size_t num_halfedges,
+void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, size_t num_halfedges,
                           HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
-  m.h.resize(num_halfedges);
+  m.h.resize_for_overwrite(num_halfedges);  // interior records written here, boundary ones by finish_build
   m.h_alive.assign(num_halfedges, true);
   HalfedgeRecord* h_ = m.h.data();
-  m.f_halfedge.resize(in.num_faces());
+  m.f_halfedge.resize_for_overwrite(in.num_faces());  // every face's written below
   m.f_alive.assign(in.num_faces(), true);
   for (uint32_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
     m.f_halfedge[f] = HalfedgeId(begin);
-    for (uint32_t h = begin; h < end; ++h) {
-      HalfedgeRecord& r = h_[h];
-      r.next = HalfedgeId(h + 1 < end ? h + 1 : begin);
-      r.twin = HalfedgeId(twin[h]);
-      r.vertex = VertexId(in.indices[h]);
-      r.face = FaceId::face(f);
+    for (uint32_t h = begin; h < end; ++h) {  // the edge stays unset (invalid) for finish_build to number
+      h_[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(twin[h]), VertexId(in.indices[h]),
+                             EdgeId(), FaceId::face(f)};
     }
   }
 }
@@ -147,14 +178,12 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   const uint32_t num_vertices = uint32_t(in.num_vertices());
   const uint32_t* idx = in.indices.data();
 
-  std::vector<uint32_t> twin;
-  {
-    const Outgoing out = outgoing_table(in);
-    if (!match_twins(in, out, twin)) return false;
-  }
+  MeshArray<uint32_t> twin;
+  const Outgoing out = outgoing_table(in);
+  if (!match_twins(in, out, twin)) return false;
 
   // Boundary: at most one open halfedge may arrive at each vertex.
-  std::vector<uint32_t> open_incoming(num_vertices, kNone);
+  MeshArray<uint32_t> open_incoming(num_vertices, kNone);
   uint32_t num_boundary = 0;
   for (size_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
@@ -188,19 +217,7 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
 
   const size_t unused = finish_build(in, twin, open_incoming, mesh);
 
-  // A vertex whose fan does not reach all its outgoing halfedges joins several surfaces (a bow-tie).
-  std::vector<uint32_t> outgoing(num_vertices, 0);
-  for (uint32_t h = 0; h < num_halfedges; ++h) ++outgoing[h_[h].vertex.index];
-  for (uint32_t v = 0; v < num_vertices; ++v) {
-    if (!m.v_alive[v]) continue;
-    const uint32_t first = m.v_halfedge[v].index;
-    uint32_t h = first, walked = 0;
-    do {
-      if (++walked > outgoing[v]) return false;
-      h = h_[h_[h].twin.index].next.index;
-    } while (h != first);
-    if (walked != outgoing[v]) return false;
-  }
+  if (!every_fan_whole(out, open_incoming, mesh)) return false;
   unused_vertices = unused;
   // Vouched only as valid as validate() would find it: triangles, every vertex used, every position finite.
   const bool finite_positions =
