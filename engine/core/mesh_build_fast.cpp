@@ -17,7 +17,6 @@
 #include "core/finite.h"
 #include "core/mesh_array.h"
 #include "core/mesh_storage.h"
-#include "core/ring_walks.h"
 
 namespace meshedit::build_detail {
 namespace {
@@ -98,20 +97,53 @@ Outgoing outgoing_table(const PolygonMesh& in) {
   return out;
 }
 
-// Interior twins; false on a doubled edge (two halfedges u -> v) or an edge with two halfedges v -> u.
-bool match_twins(const PolygonMesh& in, const Outgoing& out, MeshArray<uint32_t>& twin) {
+// The corner after h around its face, when every face is a triangle (corners 3f, 3f + 1, 3f + 2).
+uint32_t triangle_next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
+
+// Interior twins; false on a doubled edge (two halfedges u -> v, seen in u's sorted keys), and, when every face is a
+// triangle, on two triangles glued along an edge with the same third corner (one face repeated). Each pair is
+// looked up once, from its lower vertex.
+bool match_twins(const PolygonMesh& in, const Outgoing& out, bool triangles, MeshArray<uint32_t>& twin) {
   twin.assign(in.indices.size(), kNone);
+  const uint32_t* idx = in.indices.data();
   for (uint32_t u = 0; u < in.num_vertices(); ++u) {
     const uint32_t end = out.start[u + 1];
     for (uint32_t i = out.start[u]; i < end; ++i) {
       const uint32_t v = key_head(out.keys[i]);
       if (i + 1 < end && key_head(out.keys[i + 1]) == v) return false;
+      if (v < u) continue;
       const uint64_t* reverse = out.lower(v, u);
       const uint64_t* last = out.keys.data() + out.start[v + 1];
       if (reverse == last || key_head(*reverse) != u) continue;
-      if (reverse + 1 != last && key_head(reverse[1]) == u) return false;
-      twin[key_halfedge(out.keys[i])] = key_halfedge(*reverse);
+      const uint32_t h = key_halfedge(out.keys[i]), t = key_halfedge(*reverse);
+      if (triangles && idx[triangle_next(triangle_next(h))] == idx[triangle_next(triangle_next(t))]) return false;
+      twin[h] = t;
+      twin[t] = h;
     }
+  }
+  return true;
+}
+
+// Whether every vertex's fan reaches all its outgoing halfedges (the interior ones, and the open one on a hole); one
+// that does not joins several surfaces (a bow-tie). Walks h -> h.twin.next on the twin table, with next_of(h) the
+// next corner around h's face; the open halfedge leaving v sits between an open interior halfedge and
+// next_of(open_incoming[v]). Every walk ends: next is a permutation and twin an involution, so the walk returns to
+// its start through that vertex's outgoing halfedges only (the count below is a guard, not the proof).
+template <class NextOf>
+bool every_fan_whole(const Outgoing& out, std::span<const uint32_t> twin, std::span<const uint32_t> open_incoming,
+                     NextOf next_of) {
+  for (uint32_t v = 0; v + 1 < out.start.size(); ++v) {
+    if (out.count(v) == 0) continue;  // unused: no fan
+    const uint32_t outgoing = out.count(v) + (open_incoming[v] != kNone ? 1 : 0);
+    const uint32_t first = key_halfedge(out.keys[out.start[v]]);
+    uint32_t h = first, walked = 0;
+    do {
+      const uint32_t t = twin[h];
+      walked += t == kNone ? 2 : 1;  // an open h, then the open halfedge after it
+      if (walked > outgoing) return false;
+      h = next_of(t == kNone ? open_incoming[v] : t);
+    } while (h != first);
+    if (walked != outgoing) return false;
   }
   return true;
 }
@@ -121,35 +153,6 @@ std::vector<uint32_t> sorted_corners(const PolygonMesh& in, uint32_t f) {
   std::vector<uint32_t> s(in.indices.begin() + in.face_offsets[f], in.indices.begin() + in.face_offsets[f + 1]);
   std::sort(s.begin(), s.end());
   return s;
-}
-
-// Counts each vertex's fan (its ring walk) against its outgoing halfedges, the interior ones and the open one.
-class FanCount {
- public:
-  FanCount(const Outgoing& out, std::span<const uint32_t> open_incoming) : out_(out), open_incoming_(open_incoming) {}
-
-  void begin(unsigned lane, uint32_t) { walked_[lane] = 0; }
-  void neighbour(unsigned lane, uint32_t, bool) { ++walked_[lane]; }
-  void end(unsigned lane, uint32_t v, uint32_t) {
-    const uint32_t outgoing = out_.count(v) + (open_incoming_[v] != kNone ? 1 : 0);
-    whole_ = whole_ && walked_[lane] == outgoing;
-  }
-  bool whole() const { return whole_; }
-
- private:
-  const Outgoing& out_;
-  std::span<const uint32_t> open_incoming_;
-  uint32_t walked_[ring_walks::kLanes] = {};
-  bool whole_ = true;
-};
-
-// Whether every vertex's fan reaches all its outgoing halfedges; one that does not joins several surfaces (a
-// bow-tie). Every walk ends: next is a permutation (face cycles and hole loops) and twin an involution, so the walk
-// h -> h.twin.next from a vertex's halfedge returns to it through that vertex's outgoing halfedges only.
-bool every_fan_whole(const Outgoing& out, std::span<const uint32_t> open_incoming, HalfedgeMesh& mesh) {
-  FanCount count(out, open_incoming);
-  ring_walks::walk_rings(MeshStorage::view(mesh), 0, mesh.vertex_capacity(), count);
-  return count.whole();
 }
 
 }  // namespace
@@ -178,9 +181,10 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   const uint32_t num_vertices = uint32_t(in.num_vertices());
   const uint32_t* idx = in.indices.data();
 
+  const bool triangles = in.indices.size() == 3 * in.num_faces();
   MeshArray<uint32_t> twin;
   const Outgoing out = outgoing_table(in);
-  if (!match_twins(in, out, twin)) return false;
+  if (!match_twins(in, out, triangles, twin)) return false;
 
   // Boundary: at most one open halfedge may arrive at each vertex.
   MeshArray<uint32_t> open_incoming(num_vertices, kNone);
@@ -202,27 +206,26 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const HalfedgeRecord* h_ = m.h.data();
 
-  // Two faces glued along an edge with the same corners are one face repeated.
-  for (uint32_t h = 0; h < num_interior; ++h) {
+  // Two polygons glued along an edge with the same corners are one face repeated (triangles: match_twins).
+  for (uint32_t h = 0; h < num_interior && !triangles; ++h) {
     const uint32_t t = twin[h];
     if (t == kNone || t < h) continue;
     const uint32_t f = h_[h].face.slot(), g = h_[t].face.slot();
     const uint32_t size_f = in.face_offsets[f + 1] - in.face_offsets[f];
     if (size_f != in.face_offsets[g + 1] - in.face_offsets[g]) continue;
-    const bool same = size_f == 3
-                          ? h_[h_[h_[h].next.index].next.index].vertex == h_[h_[h_[t].next.index].next.index].vertex
-                          : sorted_corners(in, f) == sorted_corners(in, g);
-    if (same) return false;
+    if (sorted_corners(in, f) == sorted_corners(in, g)) return false;
   }
+  const bool fans_whole =
+      triangles ? every_fan_whole(out, twin, open_incoming, triangle_next)
+                : every_fan_whole(out, twin, open_incoming, [h_](uint32_t h) { return h_[h].next.index; });
+  if (!fans_whole) return false;
 
   const size_t unused = finish_build(in, twin, open_incoming, mesh);
-
-  if (!every_fan_whole(out, open_incoming, mesh)) return false;
   unused_vertices = unused;
   // Vouched only as valid as validate() would find it: triangles, every vertex used, every position finite.
   const bool finite_positions =
       std::all_of(in.positions.begin(), in.positions.end(), [](const glm::dvec3& p) { return finite(p); });
-  if (in.indices.size() == 3 * in.num_faces() && unused == 0 && finite_positions) {
+  if (triangles && unused == 0 && finite_positions) {
     MeshStorage::vouch_valid_triangles(mesh);
   }
   return true;
