@@ -10,8 +10,8 @@
 //   flipped edge, which lie inside one original triangle. So each original triangle T ends up as a function of
 //   T alone: the order (by edge id) in which its three edges were split and, for each, whether T's halfedge was
 //   split()'s h0 (T's side gets n0, n2, n3, g0) or h1 (n1, n4, n5, g1). Those three splits and the one flip are
-//   replayed once on slot numbers for each of the 6 x 8 cases (replay_case), and pass_triangles writes each
-//   triangle from its case.
+//   replayed once on slot numbers for each of the 6 x 8 cases (loop_triangle_cases.h), and pass_triangles writes
+//   each triangle from its case.
 // - The one flip per triangle is the crossing edge of T's first split (it joins the first midpoint to the corner
 //   opposite); the other two crossing edges join two midpoints. Flips never move a vertex's halfedge here: old
 //   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
@@ -29,6 +29,7 @@
 #include "core/finite.h"
 #include "core/loop_rules.h"
 #include "core/loop_subdivision.h"
+#include "core/loop_triangle_cases.h"
 #include "core/memory_hints.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
@@ -215,104 +216,6 @@ void pass_edges(Level& L, int threads) {
   });
 }
 
-// What one original triangle T becomes, as a function of the order in which its three edges were split and of
-// which side of each split T was on. Slots: 0-2 the original halfedges x0 x1 x2 (x0 = T.halfedge, x1 = x0.next);
-// per side i the new halfedges on T's side: o_i (the other half of the split edge) at 3 + i, p_i (from the
-// midpoint to the opposite corner) at 6 + i, q_i (its twin) at 9 + i. Faces: 0 = T, 1 + i = the face split i
-// made on T's side. Vertices: 0-2 the corners (x_i leaves corner i), 3 + i the midpoint of side i.
-struct TriangleCase {
-  uint8_t next[12];
-  uint8_t face[12];
-  uint8_t vertex[12];
-  uint8_t face_halfedge[4];
-  uint8_t corner[4][3];  // each face's corners (vertex slots), from its halfedge in next order
-};
-
-// Replays split() on T's three sides in `order`, then flip() of the first split's crossing edge, on slot numbers:
-// the writes of mesh_ops.h restricted to T, so the table below is the teaching path's result by construction.
-TriangleCase replay_case(const uint8_t order[3], const bool side_h0[3]) {
-  TriangleCase t{};
-  for (uint8_t i = 0; i < 3; ++i) {
-    t.next[i] = uint8_t((i + 1) % 3);
-    t.face[i] = 0;
-    t.vertex[i] = i;
-  }
-  t.face_halfedge[0] = 0;
-  for (int k = 0; k < 3; ++k) {
-    // split(): the current triangle prev -> x -> nx becomes (F, p, prev) and (S, nx, q), F running from x's tail
-    // to the midpoint and S from the midpoint on; x keeps its face, the other triangle is the new face.
-    const uint8_t i = order[k];
-    const uint8_t x = i, o = uint8_t(3 + i), p = uint8_t(6 + i), q = uint8_t(9 + i), mid = uint8_t(3 + i);
-    const uint8_t nx = t.next[x], prev = t.next[nx];
-    const uint8_t corner = t.vertex[prev];
-    const uint8_t old_face = t.face[x], new_face = uint8_t(1 + i);
-    uint8_t first, second, first_face, second_face;
-    if (side_h0[i]) {  // x is h0: it becomes the second half; o = n0 is the first, from x's old tail
-      first = o, second = x, first_face = new_face, second_face = old_face;
-      t.vertex[o] = t.vertex[x];
-      t.vertex[x] = mid;
-    } else {  // x is h1: it stays the first half; o = n1 leaves the midpoint
-      first = x, second = o, first_face = old_face, second_face = new_face;
-      t.vertex[o] = mid;
-    }
-    t.vertex[p] = mid;
-    t.vertex[q] = corner;
-    t.next[first] = p, t.next[p] = prev, t.next[prev] = first;
-    t.next[second] = nx, t.next[nx] = q, t.next[q] = second;
-    t.face[first] = t.face[p] = t.face[prev] = first_face;
-    t.face[second] = t.face[nx] = t.face[q] = second_face;
-    t.face_halfedge[old_face] = x;
-    t.face_halfedge[new_face] = o;
-  }
-  // flip() of the first split's crossing edge (its halfedge is p, leaving the midpoint).
-  const uint8_t h0 = uint8_t(6 + order[0]), h1 = uint8_t(9 + order[0]);
-  const uint8_t h2 = t.next[h0], h3 = t.next[h2], h4 = t.next[h1], h5 = t.next[h4];
-  const uint8_t c = t.vertex[h3], d = t.vertex[h5];
-  const uint8_t f0 = t.face[h0], f1 = t.face[h1];
-  t.vertex[h0] = d;
-  t.next[h0] = h3, t.next[h3] = h4, t.next[h4] = h0;
-  t.face[h4] = f0;
-  t.face_halfedge[f0] = h0;
-  t.vertex[h1] = c;
-  t.next[h1] = h5, t.next[h5] = h2, t.next[h2] = h1;
-  t.face[h2] = f1;
-  t.face_halfedge[f1] = h1;
-  for (uint8_t g = 0; g < 4; ++g) {
-    uint8_t h = t.face_halfedge[g];
-    for (uint8_t k = 0; k < 3; ++k, h = t.next[h]) t.corner[g][k] = t.vertex[h];
-  }
-  return t;
-}
-
-// The order of three ranks as an index: bit 0 = r0 < r1, bit 1 = r1 < r2, bit 2 = r0 < r2 (codes 2 and 5 cannot
-// happen for distinct ranks).
-unsigned order_code(uint32_t r0, uint32_t r1, uint32_t r2) {
-  return unsigned(r0 < r1) | unsigned(r1 < r2) << 1 | unsigned(r0 < r2) << 2;
-}
-
-// The 64 cases (order code x side bits), replayed once.
-const TriangleCase& triangle_case(unsigned order, unsigned sides) {
-  static const std::vector<TriangleCase> table = [] {
-    std::vector<TriangleCase> cases(64);
-    for (unsigned code = 0; code < 8; ++code) {
-      uint8_t order_of[3] = {0, 1, 2};
-      // Find a permutation whose comparisons give this code; impossible codes keep the identity.
-      const uint8_t perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-      for (const auto& perm : perms) {
-        uint32_t r[3];
-        for (uint32_t k = 0; k < 3; ++k) r[perm[k]] = k;  // perm[k] is split k-th
-        if (order_code(r[0], r[1], r[2]) == code) std::copy(perm, perm + 3, order_of);
-      }
-      for (unsigned bits = 0; bits < 8; ++bits) {
-        const bool side_h0[3] = {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0};
-        cases[code * 8 + bits] = replay_case(order_of, side_h0);
-      }
-    }
-    return cases;
-  }();
-  return table[order * 8 + sides];
-}
-
 // The order pass_triangles takes the triangles in, and where it puts their faces: the triangle in row r (its
 // face_at_row[r]) puts its four faces in rows 4r to 4r + 3. The next level reads next_face_at_row (when there is
 // one), the mesh keeps rows (after the last level). Neighbours on the surface come close in the rows, so the
@@ -327,7 +230,7 @@ struct RowOrder {
 // Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
 // and the four faces' places in the row order.
 void pass_triangles(Level& L, int threads, const RowOrder& order) {
-  (void)triangle_case(0, 0);  // build the table before the threads start
+  const loop_cases::TriangleCase* cases = loop_cases::triangle_cases();  // made before the threads start
   parallel_for(threads, order.count, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
     const uint32_t* face_at = order.face_at_row;
@@ -386,7 +289,8 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
         edge_id[3 + i] = edge_id[6 + i] = ea + (side_h0 ? 1 : 2);
         face_id[1 + i] = L.first_face(e) + (side_h0 ? 0 : 1);
       }
-      const TriangleCase& c = triangle_case(order_code(rank[0], rank[1], rank[2]), sides);
+      const loop_cases::TriangleCase& c =
+          cases[loop_cases::case_index(loop_cases::order_code(rank[0], rank[1], rank[2]), sides)];
       for (uint32_t s = 0; s < 3; ++s) {  // the original halfedges keep their twin and edge
         HalfedgeRecord& r = m.h[id[s]];
         r.next = HalfedgeId(id[c.next[s]]);
