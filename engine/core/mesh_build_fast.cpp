@@ -44,22 +44,40 @@ bool faces_are_clean(const PolygonMesh& in) {
   return true;
 }
 
-// Outgoing halfedges by tail vertex: keys[start[v] .. start[v + 1]) = (head << 32 | h), sorted (so by head).
+// Outgoing halfedges by tail vertex: keys[start[v] .. start[v + 1]) = (head << 32 | h). A vertex's keys are in
+// corner order, except that more than kSortedAbove of them are sorted (so by head) for binary search; a few keys
+// are scanned faster than sorted.
 struct Outgoing {
+  static constexpr uint32_t kSortedAbove = 16;
   MeshArray<uint32_t> start;
   MeshArray<uint64_t> keys;
 
   uint32_t count(uint32_t v) const { return start[v + 1] - start[v]; }
 
-  // The first key of v whose head is >= u (or the range's end).
-  const uint64_t* lower(uint32_t v, uint32_t u) const {
+  // v's key with head u, or null.
+  const uint64_t* find(uint32_t v, uint32_t u) const {
     const uint64_t* first = keys.data() + start[v];
     const uint64_t* last = keys.data() + start[v + 1];
-    if (last - first <= 16) {
-      while (first != last && key_head(*first) < u) ++first;
-      return first;
+    if (last - first > kSortedAbove) first = std::lower_bound(first, last, uint64_t(u) << 32);
+    for (; first != last; ++first) {
+      if (key_head(*first) == u) return first;
     }
-    return std::lower_bound(first, last, uint64_t(u) << 32);
+    return nullptr;
+  }
+
+  // Whether no two of v's keys have the same head (two halfedges v -> u are a doubled edge).
+  bool heads_distinct(uint32_t v) const {
+    const uint64_t* first = keys.data() + start[v];
+    const uint64_t* last = keys.data() + start[v + 1];
+    if (last - first > kSortedAbove) {
+      return std::adjacent_find(first, last, [](uint64_t a, uint64_t b) { return key_head(a) == key_head(b); }) == last;
+    }
+    for (const uint64_t* i = first; i != last; ++i) {
+      for (const uint64_t* j = i + 1; j != last; ++j) {
+        if (key_head(*i) == key_head(*j)) return false;
+      }
+    }
+    return true;
   }
 };
 
@@ -81,17 +99,8 @@ Outgoing outgoing_table(const PolygonMesh& in) {
     }
   }
   for (size_t v = 0; v < vertices; ++v) {
-    uint64_t* first = out.keys.data() + out.start[v];
-    uint64_t* last = out.keys.data() + out.start[v + 1];
-    if (last - first <= 16) {
-      for (uint64_t* i = first + 1; i < last; ++i) {  // insertion sort: valences are small
-        const uint64_t k = *i;
-        uint64_t* j = i;
-        for (; j > first && *(j - 1) > k; --j) *j = *(j - 1);
-        *j = k;
-      }
-    } else {
-      std::sort(first, last);
+    if (out.count(uint32_t(v)) > Outgoing::kSortedAbove) {
+      std::sort(out.keys.data() + out.start[v], out.keys.data() + out.start[v + 1]);
     }
   }
   return out;
@@ -100,21 +109,20 @@ Outgoing outgoing_table(const PolygonMesh& in) {
 // The corner after h around its face, when every face is a triangle (corners 3f, 3f + 1, 3f + 2).
 uint32_t triangle_next(uint32_t h) { return h % 3 == 2 ? h - 2 : h + 1; }
 
-// Interior twins; false on a doubled edge (two halfedges u -> v, seen in u's sorted keys), and, when every face is a
+// Interior twins; false on a doubled edge (two halfedges u -> v, seen in u's keys), and, when every face is a
 // triangle, on two triangles glued along an edge with the same third corner (one face repeated). Each pair is
 // looked up once, from its lower vertex.
 bool match_twins(const PolygonMesh& in, const Outgoing& out, bool triangles, MeshArray<uint32_t>& twin) {
   twin.assign(in.indices.size(), kNone);
   const uint32_t* idx = in.indices.data();
   for (uint32_t u = 0; u < in.num_vertices(); ++u) {
+    if (!out.heads_distinct(u)) return false;
     const uint32_t end = out.start[u + 1];
     for (uint32_t i = out.start[u]; i < end; ++i) {
       const uint32_t v = key_head(out.keys[i]);
-      if (i + 1 < end && key_head(out.keys[i + 1]) == v) return false;
       if (v < u) continue;
-      const uint64_t* reverse = out.lower(v, u);
-      const uint64_t* last = out.keys.data() + out.start[v + 1];
-      if (reverse == last || key_head(*reverse) != u) continue;
+      const uint64_t* reverse = out.find(v, u);
+      if (!reverse) continue;
       const uint32_t h = key_halfedge(out.keys[i]), t = key_halfedge(*reverse);
       if (triangles && idx[triangle_next(triangle_next(h))] == idx[triangle_next(triangle_next(t))]) return false;
       twin[h] = t;
