@@ -27,10 +27,26 @@ constexpr uint32_t kMaxFastCorners = 16;  // bigger polygons take the checked pa
 uint32_t key_head(uint64_t key) { return uint32_t(key >> 32); }
 uint32_t key_halfedge(uint64_t key) { return uint32_t(key); }
 
-// Every face has 3..kMaxFastCorners distinct corners, all in range.
-bool faces_are_clean(const PolygonMesh& in) {
+// Whether every face is a triangle: face f's corners are 3f, 3f + 1, 3f + 2.
+bool all_triangles(const PolygonMesh& in) {
+  if (in.indices.size() != 3 * in.num_faces()) return false;
+  uint32_t differ = 0;
+  for (size_t f = 0; f <= in.num_faces(); ++f) differ |= in.face_offsets[f] ^ uint32_t(3 * f);
+  return differ == 0;
+}
+
+// Every face has 3..kMaxFastCorners distinct corners, all in range. `triangles`: all_triangles(in).
+bool faces_are_clean(const PolygonMesh& in, bool triangles) {
   const uint32_t vertices = uint32_t(in.num_vertices());
   const uint32_t* idx = in.indices.data();
+  if (triangles) {
+    bool clean = true;
+    for (size_t c = 0; c < in.indices.size(); c += 3) {
+      const uint32_t a = idx[c], b = idx[c + 1], d = idx[c + 2];
+      clean &= a < vertices && b < vertices && d < vertices && a != b && b != d && a != d;
+    }
+    return clean;
+  }
   for (size_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1], n = end - begin;
     if (n < 3 || n > kMaxFastCorners) return false;
@@ -184,12 +200,12 @@ void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin,
 }
 
 bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertices) {
-  if (!faces_are_clean(in)) return false;
+  const bool triangles = all_triangles(in);
+  if (!faces_are_clean(in, triangles)) return false;
   const uint32_t num_interior = uint32_t(in.indices.size());
   const uint32_t num_vertices = uint32_t(in.num_vertices());
   const uint32_t* idx = in.indices.data();
 
-  const bool triangles = in.indices.size() == 3 * in.num_faces();
   MeshArray<uint32_t> twin;
   const Outgoing out = outgoing_table(in);
   if (!match_twins(in, out, triangles, twin)) return false;
@@ -197,14 +213,22 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   // Boundary: at most one open halfedge may arrive at each vertex.
   MeshArray<uint32_t> open_incoming(num_vertices, kNone);
   uint32_t num_boundary = 0;
-  for (size_t f = 0; f < in.num_faces(); ++f) {
-    const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
-    for (uint32_t h = begin; h < end; ++h) {
-      if (twin[h] != kNone) continue;
-      const uint32_t head = idx[h + 1 < end ? h + 1 : begin];
-      if (open_incoming[head] != kNone) return false;
-      open_incoming[head] = h;
-      ++num_boundary;
+  const auto open_arrives = [&](uint32_t h, uint32_t head) {
+    if (open_incoming[head] != kNone) return false;
+    open_incoming[head] = h;
+    ++num_boundary;
+    return true;
+  };
+  if (triangles) {
+    for (uint32_t h = 0; h < num_interior; ++h) {
+      if (twin[h] == kNone && !open_arrives(h, idx[triangle_next(h)])) return false;
+    }
+  } else {
+    for (size_t f = 0; f < in.num_faces(); ++f) {
+      const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
+      for (uint32_t h = begin; h < end; ++h) {
+        if (twin[h] == kNone && !open_arrives(h, idx[h + 1 < end ? h + 1 : begin])) return false;
+      }
     }
   }
   const uint32_t num_halfedges = num_interior + num_boundary;
