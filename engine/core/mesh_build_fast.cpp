@@ -2,9 +2,10 @@
 // input, in a few sequential passes and one table of outgoing halfedges, with no error bookkeeping.
 //
 // How it differs from the checked builder (mesh_build.cpp), which stays the reference and the only place that
-// explains a refusal: the outgoing halfedges of each vertex are stored as (head << 32 | halfedge) keys sorted in
-// place (no head lookups while sorting or searching), twins are found by scanning the head vertex's few keys, and
-// the pointers are written straight into the mesh's arrays. Anything unusual (a face with fewer than 3 or more
+// explains a refusal: the outgoing halfedges of each vertex are stored as (head << 32 | halfedge) keys (no head
+// lookups while searching), twins are found by scanning the head vertex's few keys, each pair once, fans are walked
+// on the twin table (a triangle's next corner is arithmetic), and the pointers are written straight into the mesh's
+// arrays. Anything unusual (a face with fewer than 3 or more
 // than kMaxFastCorners corners, a repeated corner, an index out of range, a doubled or inconsistent edge, a
 // repeated face, a bow-tie) makes it return false at once, and build_halfedge_mesh reruns the checked builder.
 // tests/core/mesh_build_fast_test.cpp holds the two to the same result.
@@ -164,7 +165,7 @@ bool every_fan_whole(const Outgoing& out, std::span<const uint32_t> twin, std::s
     do {
       const uint32_t t = twin[h];
       walked += t == kNone ? 2 : 1;  // an open h, then the open halfedge after it
-      if (walked > outgoing) return false;
+      if (walked > outgoing || (t == kNone && open_incoming[v] == kNone)) return false;
       h = next_of(t == kNone ? open_incoming[v] : t);
     } while (h != first);
     if (walked != outgoing) return false;
