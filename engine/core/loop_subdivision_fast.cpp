@@ -258,7 +258,7 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
         for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
           const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
           memory_hints::prefetch_for_write(&m.h[n0]);
-          memory_hints::prefetch_for_write(&m.h[n0 + 6] - 1);
+          memory_hints::prefetch_for_write(&m.h[n0 + 5]);
           memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
         }
       }

@@ -75,7 +75,10 @@ struct Outgoing {
   const uint64_t* find(uint32_t v, uint32_t u) const {
     const uint64_t* first = keys.data() + start[v];
     const uint64_t* last = keys.data() + start[v + 1];
-    if (last - first > kSortedAbove) first = std::lower_bound(first, last, uint64_t(u) << 32);
+    if (last - first > kSortedAbove) {
+      first = std::lower_bound(first, last, uint64_t(u) << 32);
+      return first != last && key_head(*first) == u ? first : nullptr;
+    }
     for (; first != last; ++first) {
       if (key_head(*first) == u) return first;
     }

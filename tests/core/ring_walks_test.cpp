@@ -3,7 +3,9 @@
 // v.halfedge) and the rim flag of each edge; begin, neighbours and end of one vertex come on one lane; dead vertices
 // are skipped. Checked against the element API's walk on a closed mesh, a grid with a boundary, a mesh with dead
 // vertices after collapses, and ranges shorter than the lanes.
+#include <algorithm>
 #include <cstdint>
+#include <iterator>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -26,6 +28,8 @@ struct Visit {
 // Records each vertex's walk as the visitor sees it, checking that a lane is used by one vertex at a time.
 class Recorder {
  public:
+  Recorder() { std::fill(std::begin(open_), std::end(open_), int64_t(-1)); }
+
   void begin(unsigned lane, uint32_t v) {
     ASSERT_LT(lane, ring_walks::kLanes);
     ASSERT_EQ(open_[lane], -1) << "lane " << lane << " began v" << v << " before ending v" << open_[lane];
@@ -47,7 +51,7 @@ class Recorder {
   std::vector<Visit> visits;  // in begin order
 
  private:
-  int64_t open_[ring_walks::kLanes] = {-1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1, -1};
+  int64_t open_[ring_walks::kLanes];  // the vertex a lane is walking, or -1
   size_t slot_[ring_walks::kLanes] = {};
 };
 
