@@ -17,6 +17,7 @@
 #include "core/memory_hints.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
+#include "core/triangle_rows.h"
 
 namespace meshedit {
 
@@ -201,10 +202,28 @@ void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dve
   }
 }
 
-// Adds the term of each triangle in rows [begin, end) (triangle_rows.h), taken from its first corner as
-// add_face_terms takes it, to its three corners' sums. The rows keep neighbours together, so most corners are in
-// cache already; the corners of a row a little ahead are prefetched for the rest.
-void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t begin, size_t end, glm::dvec3* sums) {
+// The term of row r's triangle, taken from its first corner as add_face_terms takes it.
+glm::dvec3 row_term(const HalfedgeMesh& mesh, const TriangleRow& row) {
+  const VertexId* c = row.corner;
+  return corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
+}
+
+// One bit per vertex slot.
+using VertexBits = MeshArray<uint64_t>;
+
+bool bit(const uint64_t* bits, VertexId v) { return (bits[v.index >> 6] >> (v.index & 63)) & 1u; }
+
+// A row whose term some of its corners take only after every run is done: bit k of `corners` for corner k.
+struct SeamRow {
+  uint32_t row;
+  uint8_t corners;
+};
+
+// Adds the term of each triangle in rows [begin, end) (triangle_rows.h) to its three corners' sums, except to the
+// corners in `seam` (none when it is null), which are listed in `deferred` instead. The rows keep neighbours
+// together, so most corners are in cache already; the corners of a row a little ahead are prefetched for the rest.
+void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t begin, size_t end, glm::dvec3* sums,
+                   const uint64_t* seam, std::vector<SeamRow>* deferred) {
   constexpr size_t kAhead = 8;
   for (size_t r = begin; r < end; ++r) {
     if (r + kAhead < end) {
@@ -214,32 +233,70 @@ void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t beg
       }
     }
     const VertexId* c = rows[r].corner;
-    const glm::dvec3 term = corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
-    sums[c[0].index] += term;
-    sums[c[1].index] += term;
-    sums[c[2].index] += term;
+    const glm::dvec3 term = row_term(mesh, rows[r]);
+    uint8_t on_seam = 0;
+    for (int k = 0; k < 3; ++k) {
+      if (seam != nullptr && bit(seam, c[k])) on_seam |= uint8_t(1u << k);
+      else sums[c[k].index] += term;
+    }
+    if (on_seam != 0) deferred->push_back({static_cast<uint32_t>(r), on_seam});
   }
 }
 
-// Scatters terms to corners over `count` items (faces or rows), `add_terms(begin, end, sums)` adding items [begin,
-// end) into `sums`, then normalises. With more threads, each adds its share of the items into its own sums (the
-// first into `normals`) and the sums are added per vertex, so the result depends on the thread count, by rounding
-// only. `striped`: each thread takes stripes across the items rather than one run of them.
-template <class AddTerms>
-void scatter_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads, size_t count,
-                     bool striped, AddTerms&& add_terms) {
-  const size_t vertices = mesh.vertex_capacity();
-  const size_t chunks = chunk_count(threads, count);
-  normals.resize(vertices);
-  std::vector<MeshArray<glm::dvec3>> extra(chunks - 1);
-  const auto sums_of = [&](size_t chunk) { return chunk == 0 ? normals.data() : extra[chunk - 1].data(); };
-  parallel_chunks(threads, count, [&](size_t chunk, size_t, size_t) {
-    if (chunk > 0) resize_for_overwrite(extra[chunk - 1], vertices);
-    std::fill(sums_of(chunk), sums_of(chunk) + vertices, glm::dvec3(0.0));
+// The vertices that rows of more than one run touch, one run per chunk of parallel_chunks(threads, rows.size()).
+VertexBits seam_between_runs(const TriangleRows& rows, size_t vertices, int threads) {
+  const size_t words = (vertices + 63) / 64;
+  std::vector<VertexBits> touched(chunk_count(threads, rows.size()));
+  parallel_chunks(threads, rows.size(), [&](size_t run, size_t begin, size_t end) {
+    VertexBits& bits = touched[run];
+    bits.assign(words, 0);
+    for (size_t r = begin; r < end; ++r) {
+      for (VertexId c : rows[r].corner) bits[c.index >> 6] |= uint64_t(1) << (c.index & 63);
+    }
   });
-  const auto add = [&](size_t chunk, size_t begin, size_t end) { add_terms(begin, end, sums_of(chunk)); };
-  if (striped) parallel_stripes(threads, count, add);
-  else parallel_chunks(threads, count, add);
+  VertexBits seam;
+  seam.resize_for_overwrite(words);
+  parallel_for(threads, words, [&](size_t begin, size_t end) {
+    for (size_t w = begin; w < end; ++w) {
+      uint64_t seen = 0, more_than_once = 0;
+      for (const VertexBits& bits : touched) {
+        more_than_once |= seen & bits[w];
+        seen |= bits[w];
+      }
+      seam[w] = more_than_once;
+    }
+  });
+  return seam;
+}
+
+// Every entry of `sums` zero, `vertices` of them.
+void zero_sums(std::vector<glm::dvec3>& sums, size_t vertices, int threads) {
+  if (sums.size() != vertices) {
+    sums.clear();
+    sums.resize(vertices);  // value-initialised: zero
+    return;
+  }
+  parallel_for(threads, vertices, [&](size_t begin, size_t end) {
+    std::fill(sums.begin() + begin, sums.begin() + end, glm::dvec3(0.0));
+  });
+}
+
+// vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
+// in face order (about 3x faster than walking each vertex's fan, where a fan's halfedges are a chain of dependent
+// cache misses). Each vertex gets the same terms as vertex_normal, added in another order, so the two agree to
+// rounding. With more threads, each adds its share of the faces into its own sums (the first into `normals`) and
+// the sums are added per vertex, so the last bits depend on the thread count. The shares are stripes across the
+// faces: the first faces after Loop (the old ids) cost about twice as much as the rest.
+void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
+  const size_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity();
+  zero_sums(normals, vertices, threads);
+  std::vector<MeshArray<glm::dvec3>> extra(chunk_count(threads, faces) - 1);
+  parallel_chunks(threads, faces, [&](size_t chunk, size_t, size_t) {
+    if (chunk > 0) extra[chunk - 1].assign(vertices, glm::dvec3(0.0));
+  });
+  parallel_stripes(threads, faces, [&](size_t chunk, size_t begin, size_t end) {
+    add_face_terms(mesh, begin, end, chunk == 0 ? normals.data() : extra[chunk - 1].data());
+  });
   parallel_for(threads, vertices, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       glm::dvec3 sum = normals[v];
@@ -249,21 +306,35 @@ void scatter_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals,
   });
 }
 
-// vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
-// in face order (about 3x faster than walking each vertex's fan, where a fan's halfedges are a chain of dependent
-// cache misses). Each vertex gets the same terms as vertex_normal, added in another order, so the two agree to
-// rounding. Striped over threads: the first faces after Loop (the old ids) cost about twice as much as the rest.
-void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
-  scatter_normals(mesh, normals, threads, mesh.face_capacity(), true,
-                  [&](size_t begin, size_t end, glm::dvec3* sums) { add_face_terms(mesh, begin, end, sums); });
-}
-
 // The same over the mesh's triangle rows, which list the same faces with the same first corners: the same terms
-// again, added in row order. Each thread takes one run of rows, a patch of the surface.
+// again, added in row order, into one array of sums on any number of threads. Each thread takes one run of rows, a
+// patch of the surface, so runs share few vertices (2.5 thousand of 3.2 million after three levels of Loop on a
+// torus). Those (the seam) are left out while the runs add their terms and get them afterwards, run by run, each
+// run's in row order: every vertex gets its terms in row order, so the bits do not depend on the thread count.
 void row_order_normals(const HalfedgeMesh& mesh, const TriangleRows& rows, std::vector<glm::dvec3>& normals,
                        int threads) {
-  scatter_normals(mesh, normals, threads, rows.size(), false, [&](size_t begin, size_t end, glm::dvec3* sums) {
-    add_row_terms(mesh, rows.data(), begin, end, sums);
+  const size_t vertices = mesh.vertex_capacity();
+  zero_sums(normals, vertices, threads);
+  if (chunk_count(threads, rows.size()) <= 1) {
+    add_row_terms(mesh, rows.data(), 0, rows.size(), normals.data(), nullptr, nullptr);
+  } else {
+    const VertexBits seam = seam_between_runs(rows, vertices, threads);
+    std::vector<std::vector<SeamRow>> deferred(chunk_count(threads, rows.size()));
+    parallel_chunks(threads, rows.size(), [&](size_t run, size_t begin, size_t end) {
+      add_row_terms(mesh, rows.data(), begin, end, normals.data(), seam.data(), &deferred[run]);
+    });
+    for (const std::vector<SeamRow>& run : deferred) {
+      for (const SeamRow& late : run) {
+        const TriangleRow& row = rows[late.row];
+        const glm::dvec3 term = row_term(mesh, row);
+        for (int k = 0; k < 3; ++k) {
+          if ((late.corners >> k) & 1u) normals[row.corner[k].index] += term;
+        }
+      }
+    }
+  }
+  parallel_for(threads, vertices, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) normals[v] = unit_or_zero(normals[v]);
   });
 }
 
@@ -273,7 +344,6 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
   // vertex_normal for every vertex, each triangle's term from triangle_term_from (the generic walk for anything
   // else): the same terms in the same order, so the same bits. Each face's term is taken from the vertex's own
   // halfedge, so no per-face array is needed (fresh memory costs more than the arithmetic on a big mesh).
-  normals.resize(mesh.vertex_capacity());
   if (const TriangleRows* rows = mesh.triangle_rows()) {
     row_order_normals(mesh, *rows, normals, threads);
     return;
@@ -282,6 +352,7 @@ void vertex_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, 
     face_order_normals(mesh, normals, threads);
     return;
   }
+  normals.resize(mesh.vertex_capacity());
   const auto term = [&](HalfedgeId h, glm::dvec3& out) {
     return triangle_term_from(mesh, h, out) || face_term_from(mesh, h, out);
   };

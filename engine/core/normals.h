@@ -18,7 +18,7 @@
 //   positions are now) or one proven valid with triangle faces only (HalfedgeMesh::proven_valid_triangles: just
 //   built or subdivided), vertex_normals adds each face's vector area, taken from the face's own first corner, to
 //   its three corners, in row order or in face order. That agrees with vertex_normal to rounding (a few units in the
-//   last place), and with more threads the order of the additions, so the last bits, depend on the thread count.
+//   last place). In row order the bits are the same on any number of threads; in face order they depend on it.
 #pragma once
 
 #include <cstdint>
