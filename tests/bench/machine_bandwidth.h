@@ -37,8 +37,10 @@ inline ReadRates measure_read_rates(int threads, int reps, size_t mib = 256) {
   };
   double one_ms = 1e300, all_ms = 1e300;
   for (int i = 0; i < reps; ++i) {
-    one_ms = std::min(one_ms, min_ms(1, [] {}, [&] { read(0); }));
-    all_ms = std::min(all_ms, min_ms(1, [] {}, all));
+    one_ms = std::min(one_ms, min_ms(
+                                  1, [] {}, [&] { read(0); }));
+    all_ms = std::min(all_ms, min_ms(
+                                  1, [] {}, all));
   }
   const double gb = double(mib << 20) / 1e9;
   return {gb / one_ms * 1e3, gb * double(buffers.size()) / all_ms * 1e3};

@@ -387,9 +387,10 @@ int main(int argc, char** argv) {
   print_table(rows, thread_column, judging);
   if (ours_threads_subdivide || ours_threads_normals) {
     const ReadRates rates = measure_read_rates(o.threads, o.reps);
-    std::printf("this machine reads memory at %.1f GB/s on one thread and %.1f GB/s on %d: %.2fx, as far as a pass "
-                "that waits on memory can scale\n",
-                rates.one_thread_gbs, rates.all_threads_gbs, o.threads, rates.all_threads_gbs / rates.one_thread_gbs);
+    std::printf(
+        "this machine reads memory at %.1f GB/s on one thread and %.1f GB/s on %d: %.2fx, as far as a pass "
+        "that waits on memory can scale\n",
+        rates.one_thread_gbs, rates.all_threads_gbs, o.threads, rates.all_threads_gbs / rates.one_thread_gbs);
     for (const TableRow& row : rows) {
       if (std::isnan(row.ours_threads)) continue;
       const double speedup = row.ours / row.ours_threads;
