@@ -197,8 +197,8 @@ std::vector<uint32_t> open_incoming_halfedges(const PolygonMesh& in, const Corne
 
 // The interior halfedges and the faces, straight from the corners; the boundary halfedges' slots stay for
 // finish_build.
-void fill_interior(const PolygonMesh& in, const Corners& c, const std::vector<uint32_t>& twin, size_t num_halfedges,
-                   HalfedgeMesh& mesh) {
+void fill_interior(const PolygonMesh& in, const Corners& c, const std::vector<uint32_t>& twin,
+                   std::span<const uint32_t> edge_of, size_t num_halfedges, HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize(num_halfedges);
   m.h_alive.assign(num_halfedges, true);
@@ -206,6 +206,7 @@ void fill_interior(const PolygonMesh& in, const Corners& c, const std::vector<ui
     m.h[h].next = HalfedgeId(c.next[h]);
     m.h[h].twin = HalfedgeId(twin[h]);
     m.h[h].vertex = VertexId(c.tail(h));
+    m.h[h].edge = EdgeId(edge_of[h]);
     m.h[h].face = FaceId::face(c.face_of[h]);
   }
   m.f_halfedge.resize(in.num_faces());
@@ -243,14 +244,14 @@ void refuse_split_fans(const PolygonMesh& in, const Corners& c, const std::vecto
 
 namespace build_detail {
 
-size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> open_incoming,
-                    HalfedgeMesh& mesh) {
+size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> edge_of,
+                    std::span<const uint32_t> open_incoming, HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const auto num_interior = static_cast<uint32_t>(in.indices.size());
   const auto num_halfedges = static_cast<uint32_t>(m.h.size());
   HalfedgeRecord* h_ = m.h.data();
 
-  // Walk each hole once, creating its boundary halfedges in walking order.
+  // Walk each hole once, creating its boundary halfedges in walking order; each takes its twin's edge.
   std::vector<uint32_t> boundary_twin_of(num_halfedges > num_interior ? num_interior : 0, kNone);
   uint32_t next_boundary = num_interior;
   for (uint32_t start = 0; start < num_interior && next_boundary < num_halfedges; ++start) {
@@ -266,6 +267,7 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
       h_[h].twin = HalfedgeId(b);
       h_[b].twin = HalfedgeId(h);
       h_[b].vertex = h_[h_[h].next.index].vertex;  // h's head
+      h_[b].edge = h_[h].edge;
       h_[b].face = loop;
       if (previous != kNone) h_[previous].next = HalfedgeId(b);
       previous = b;
@@ -274,14 +276,10 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
     h_[previous].next = m.b_halfedge.back();
   }
 
-  // Edges in order of their first halfedge.
+  // Each edge's first halfedge (number_edges).
   m.e_halfedge.reserve(num_halfedges / 2);
   for (uint32_t h = 0; h < num_interior; ++h) {
-    if (h_[h].edge.valid()) continue;
-    const EdgeId e(static_cast<uint32_t>(m.e_halfedge.size()));
-    m.e_halfedge.push_back(HalfedgeId(h));
-    h_[h].edge = e;
-    h_[h_[h].twin.index].edge = e;
+    if (edge_of[h] == m.e_halfedge.size()) m.e_halfedge.push_back(HalfedgeId(h));
   }
   m.e_alive.assign(m.e_halfedge.size(), true);
 
@@ -316,8 +314,9 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   if (num_halfedges >= kNone / 2) throw MeshError("mesh too large for 32-bit halfedge ids");
 
   HalfedgeMesh mesh;
-  fill_interior(in, c, twin, num_halfedges, mesh);
-  const size_t unused = finish_build(in, twin, open_incoming, mesh);
+  const MeshArray<uint32_t> edge_of = number_edges(twin);
+  fill_interior(in, c, twin, edge_of, num_halfedges, mesh);
+  const size_t unused = finish_build(in, twin, edge_of, open_incoming, mesh);
   refuse_split_fans(in, c, open_incoming, mesh);
   if (report) report->unused_vertices = unused;
   return mesh;

@@ -185,8 +185,19 @@ std::vector<uint32_t> sorted_corners(const PolygonMesh& in, uint32_t f) {
 
 }  // namespace
 
-void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, size_t num_halfedges,
-                          HalfedgeMesh& mesh) {
+MeshArray<uint32_t> number_edges(std::span<const uint32_t> twin) {
+  MeshArray<uint32_t> edge_of;
+  edge_of.resize_for_overwrite(twin.size());  // every entry written below
+  uint32_t next_edge = 0;
+  for (uint32_t h = 0; h < twin.size(); ++h) {
+    const uint32_t t = twin[h];  // kNone (open) is above every halfedge
+    edge_of[h] = t > h ? next_edge++ : edge_of[t];
+  }
+  return edge_of;
+}
+
+void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> edge_of,
+                          size_t num_halfedges, HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize_for_overwrite(num_halfedges);  // interior records written here, boundary ones by finish_build
   m.h_alive.assign(num_halfedges, true);
@@ -196,9 +207,9 @@ void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin,
   for (uint32_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
     m.f_halfedge[f] = HalfedgeId(begin);
-    for (uint32_t h = begin; h < end; ++h) {  // the edge stays unset (invalid) for finish_build to number
+    for (uint32_t h = begin; h < end; ++h) {
       h_[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(twin[h]), VertexId(in.indices[h]),
-                             EdgeId(), FaceId::face(f)};
+                             EdgeId(edge_of[h]), FaceId::face(f)};
     }
   }
 }
@@ -238,7 +249,8 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   const uint32_t num_halfedges = num_interior + num_boundary;
   if (num_halfedges >= kNone / 2) return false;
 
-  write_face_halfedges(in, twin, num_halfedges, mesh);
+  const MeshArray<uint32_t> edge_of = number_edges(twin);
+  write_face_halfedges(in, twin, edge_of, num_halfedges, mesh);
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const HalfedgeRecord* h_ = m.h.data();
 
@@ -256,7 +268,7 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
                 : every_fan_whole(out, twin, open_incoming, [h_](uint32_t h) { return h_[h].next.index; });
   if (!fans_whole) return false;
 
-  const size_t unused = finish_build(in, twin, open_incoming, mesh);
+  const size_t unused = finish_build(in, twin, edge_of, open_incoming, mesh);
   unused_vertices = unused;
   // Vouched only as valid as validate() would find it: triangles, every vertex used, every position finite.
   const bool finite_positions =
