@@ -5,7 +5,6 @@
 
 #include <cstdio>
 
-#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include "app/mesh_loading.h"
@@ -14,6 +13,7 @@
 #include "document/exception_report.h"
 #include "io/file_error.h"
 #include "io/mesh_file.h"
+#include "render/gl_api.h"
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
 #include "render/render_error.h"

@@ -5,7 +5,7 @@
 #include <cstdio>
 
 #include <epoxy/egl.h>
-#include <epoxy/gl.h>
+#include "render/gl_api.h"
 
 #include "render/render_error.h"
 
