@@ -28,7 +28,5 @@ file(GLOB_RECURSE packaged_files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lesson
      "${PROJECT_SOURCE_DIR}/scripts/exercises/*")
 set_property(TARGET meshedit APPEND PROPERTY LINK_DEPENDS ${packaged_files})
 
-add_custom_command(TARGET meshedit POST_BUILD
-  COMMAND ${CMAKE_COMMAND} -E copy_if_different "${PROJECT_SOURCE_DIR}/web/index.html" "${site_dir}/index.html"
-  COMMAND ${CMAKE_COMMAND} -E echo "site: ${site_dir}"
-  VERBATIM)
+# The page itself: copied at configure time, and again whenever it changes (configure_file makes CMake watch it).
+configure_file("${PROJECT_SOURCE_DIR}/web/index.html" "${site_dir}/index.html" COPYONLY)
