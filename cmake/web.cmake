@@ -51,8 +51,12 @@ foreach(entry glm nlohmann tiny_gltf.h stb/stb_image.h stb/stb_image_write.h)
   file(CREATE_LINK "${MESHEDIT_HEADER_ONLY_DIR}/${entry}" "${header_only}/${link_name}" SYMBOLIC)
 endforeach()
 # Lua compiled as C++ has C++ linkage: lua.hpp includes its headers without extern "C".
-file(WRITE "${header_only}/lua.hpp" "// Lua 5.4 compiled as C++ (web build): no extern \"C\".\n"
-     "#include \"lua.h\"\n#include \"lualib.h\"\n#include \"lauxlib.h\"\n")
+# (file(CONFIGURE) writes it only when its text changes, so a new configure recompiles nothing.)
+file(CONFIGURE OUTPUT "${header_only}/lua.hpp" CONTENT "// Lua 5.4 compiled as C++ (web build): no extern \"C\".
+#include \"lua.h\"
+#include \"lualib.h\"
+#include \"lauxlib.h\"
+")
 
 add_library(meshedit_header_only INTERFACE)
 target_include_directories(meshedit_header_only SYSTEM INTERFACE "${header_only}")

@@ -29,7 +29,7 @@ done
 # Chromium as root needs --no-sandbox; the background-networking flags keep it off the network.
 browser=(chromium --headless=new --no-sandbox --use-angle=swiftshader --enable-unsafe-swiftshader --no-first-run
   --disable-background-networking --disable-component-update --disable-sync --window-size=1280,800
-  --virtual-time-budget=60000)
+  --virtual-time-budget=30000)
 encoded=$(python3 -c 'import sys, urllib.parse; print(urllib.parse.quote(open(sys.argv[1]).read()))' "$actions")
 "${browser[@]}" --user-data-dir="$profile/a" --dump-dom \
   "http://127.0.0.1:$port/?file=$file&actions=$encoded" >"$out/page.html" 2>"$out/chromium.log" || true
