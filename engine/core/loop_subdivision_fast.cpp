@@ -10,8 +10,8 @@
 //   flipped edge, which lie inside one original triangle. So each original triangle T ends up as a function of
 //   T alone: the order (by edge id) in which its three edges were split and, for each, whether T's halfedge was
 //   split()'s h0 (T's side gets n0, n2, n3, g0) or h1 (n1, n4, n5, g1). Those three splits and the one flip are
-//   replayed once on slot numbers for each of the 6 x 8 cases (replay_case), and pass_triangles writes each
-//   triangle from its case.
+//   replayed once on slot numbers for each of the 6 x 8 cases (loop_triangle_cases.h), and pass_triangles writes
+//   each triangle from its case.
 // - The one flip per triangle is the crossing edge of T's first split (it joins the first midpoint to the corner
 //   opposite); the other two crossing edges join two midpoints. Flips never move a vertex's halfedge here: old
 //   vertices point at original or n0 halfedges and midpoints at n1, never at a crossing halfedge.
@@ -29,8 +29,11 @@
 #include "core/finite.h"
 #include "core/loop_rules.h"
 #include "core/loop_subdivision.h"
+#include "core/loop_triangle_cases.h"
+#include "core/memory_hints.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
+#include "core/ring_walks.h"
 
 namespace meshedit {
 namespace {
@@ -99,39 +102,55 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
   boundary_edges = bound[chunks];
 }
 
-// Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge.
+// Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge. The rings are
+// walked several at a time (ring_walks.h); each lane sums its vertex's neighbours in walk order.
+class VertexPoints {
+ public:
+  VertexPoints(Level& level, LoopWeights weights, MeshArray<glm::dvec3>& points)
+      : L_(level), weight_(weights), points_(points) {}
+
+  void begin(unsigned lane, uint32_t) { sums_[lane] = Sum{}; }
+
+  void neighbour(unsigned lane, uint32_t q_vertex, bool rim) {
+    Sum& s = sums_[lane];
+    const glm::dvec3& q = L_.m.position[q_vertex];
+    s.neighbours += q;
+    ++s.valence;
+    if (rim) {
+      if (s.rim_count < 2) s.rim[s.rim_count] = q;
+      ++s.rim_count;
+    }
+  }
+
+  void end(unsigned lane, uint32_t v, uint32_t start) {
+    const Sum& s = sums_[lane];
+    const glm::dvec3& p = L_.m.position[v];
+    if (s.rim_count == 0) {
+      points_[v] = loop_rules::interior_vertex(p, s.neighbours, s.valence, weight_(s.valence));
+    } else if (s.rim_count == 2) {
+      points_[v] = loop_rules::boundary_vertex(p, s.rim[0], s.rim[1]);
+    } else {
+      points_[v] = p;
+    }
+    const uint32_t e = L_.m.h[start].edge.index;
+    if (L_.face_side(e) == start) L_.m.vertex_halfedge[v] = HalfedgeId(L_.first_halfedge(e));  // becomes n0
+  }
+
+ private:
+  struct Sum {
+    glm::dvec3 neighbours{0.0}, rim[2];
+    uint32_t valence = 0, rim_count = 0;
+  };
+  Level& L_;
+  loop_rules::ValenceWeights weight_;
+  MeshArray<glm::dvec3>& points_;
+  Sum sums_[ring_walks::kLanes];
+};
+
 void pass_vertices(Level& L, LoopWeights weights, int threads, MeshArray<glm::dvec3>& points) {
   parallel_for(threads, L.v0, [&](size_t begin, size_t end) {
-    loop_rules::ValenceWeights weight(weights);
-    const MeshStorage::View& m = L.m;
-    for (size_t v = begin; v < end; ++v) {
-      if (!(*m.vertex_alive)[v]) continue;
-      const glm::dvec3& p = m.position[v];
-      const uint32_t start = m.vertex_halfedge[v].index;
-      glm::dvec3 neighbour_sum(0.0), rim[2];
-      uint32_t valence = 0, rim_count = 0;
-      uint32_t h = start;
-      do {
-        const uint32_t t = m.h[h].twin.index;
-        const glm::dvec3& q = m.position[m.h[t].vertex.index];
-        neighbour_sum += q;
-        ++valence;
-        if (m.h[h].face.is_boundary() || m.h[t].face.is_boundary()) {
-          if (rim_count < 2) rim[rim_count] = q;
-          ++rim_count;
-        }
-        h = m.h[t].next.index;
-      } while (h != start);
-      if (rim_count == 0) {
-        points[v] = loop_rules::interior_vertex(p, neighbour_sum, valence, weight(valence));
-      } else if (rim_count == 2) {
-        points[v] = loop_rules::boundary_vertex(p, rim[0], rim[1]);
-      } else {
-        points[v] = p;
-      }
-      const uint32_t e = m.h[start].edge.index;
-      if (L.face_side(e) == start) m.vertex_halfedge[v] = HalfedgeId(L.first_halfedge(e));  // becomes n0
-    }
+    VertexPoints visitor(L, weights, points);
+    ring_walks::walk_rings(L.m, begin, end, visitor);
   });
 }
 
@@ -146,29 +165,29 @@ void pass_edges(Level& L, int threads) {
       // boundary edge is a loop halfedge whose next another edge rewrites meanwhile: they skip boundary edges.
       const auto live = [&](size_t g) { return g < end && (*m.edge_alive)[g]; };
       const auto interior = [&](size_t g) { return live(g) && !L.plan[g].boundary(); };
-      if (live(e + 32)) __builtin_prefetch(&m.h[L.face_side(uint32_t(e + 32))]);
+      if (live(e + 32)) memory_hints::prefetch_record(&m.h[L.face_side(uint32_t(e + 32))]);
       if (live(e + 24)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 24))];
-        __builtin_prefetch(&m.h[h0.twin.index]);
-        __builtin_prefetch(&m.h[h0.next.index]);
+        memory_hints::prefetch_record(&m.h[h0.twin.index]);
+        memory_hints::prefetch_record(&m.h[h0.next.index]);
       }
       if (live(e + 16)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 16))];
         const HalfedgeRecord& h1 = m.h[h0.twin.index];
-        __builtin_prefetch(&m.h[h1.next.index]);
-        __builtin_prefetch(&m.h[m.h[h0.next.index].next.index]);
-        __builtin_prefetch(&m.position[h0.vertex.index]);
-        __builtin_prefetch(&m.position[h1.vertex.index]);
+        memory_hints::prefetch_record(&m.h[h1.next.index]);
+        memory_hints::prefetch_record(&m.h[m.h[h0.next.index].next.index]);
+        memory_hints::prefetch(&m.position[h0.vertex.index]);
+        memory_hints::prefetch(&m.position[h1.vertex.index]);
       }
       if (interior(e + 8)) {
         const HalfedgeRecord& h0 = m.h[L.face_side(uint32_t(e + 8))];
         const HalfedgeRecord& h1 = m.h[h0.twin.index];
-        __builtin_prefetch(&m.h[m.h[h1.next.index].next.index]);
-        __builtin_prefetch(&m.position[m.h[m.h[h0.next.index].next.index].vertex.index]);
+        memory_hints::prefetch_record(&m.h[m.h[h1.next.index].next.index]);
+        memory_hints::prefetch(&m.position[m.h[m.h[h0.next.index].next.index].vertex.index]);
       }
       if (interior(e + 4)) {
         const HalfedgeRecord& h1 = m.h[m.h[L.face_side(uint32_t(e + 4))].twin.index];
-        __builtin_prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
+        memory_hints::prefetch(&m.position[m.h[m.h[h1.next.index].next.index].vertex.index]);
       }
       if (!(*m.edge_alive)[e]) continue;
       const auto edge = uint32_t(e);
@@ -197,104 +216,6 @@ void pass_edges(Level& L, int threads) {
   });
 }
 
-// What one original triangle T becomes, as a function of the order in which its three edges were split and of
-// which side of each split T was on. Slots: 0-2 the original halfedges x0 x1 x2 (x0 = T.halfedge, x1 = x0.next);
-// per side i the new halfedges on T's side: o_i (the other half of the split edge) at 3 + i, p_i (from the
-// midpoint to the opposite corner) at 6 + i, q_i (its twin) at 9 + i. Faces: 0 = T, 1 + i = the face split i
-// made on T's side. Vertices: 0-2 the corners (x_i leaves corner i), 3 + i the midpoint of side i.
-struct TriangleCase {
-  uint8_t next[12];
-  uint8_t face[12];
-  uint8_t vertex[12];
-  uint8_t face_halfedge[4];
-  uint8_t corner[4][3];  // each face's corners (vertex slots), from its halfedge in next order
-};
-
-// Replays split() on T's three sides in `order`, then flip() of the first split's crossing edge, on slot numbers:
-// the writes of mesh_ops.h restricted to T, so the table below is the teaching path's result by construction.
-TriangleCase replay_case(const uint8_t order[3], const bool side_h0[3]) {
-  TriangleCase t{};
-  for (uint8_t i = 0; i < 3; ++i) {
-    t.next[i] = uint8_t((i + 1) % 3);
-    t.face[i] = 0;
-    t.vertex[i] = i;
-  }
-  t.face_halfedge[0] = 0;
-  for (int k = 0; k < 3; ++k) {
-    // split(): the current triangle prev -> x -> nx becomes (F, p, prev) and (S, nx, q), F running from x's tail
-    // to the midpoint and S from the midpoint on; x keeps its face, the other triangle is the new face.
-    const uint8_t i = order[k];
-    const uint8_t x = i, o = uint8_t(3 + i), p = uint8_t(6 + i), q = uint8_t(9 + i), mid = uint8_t(3 + i);
-    const uint8_t nx = t.next[x], prev = t.next[nx];
-    const uint8_t corner = t.vertex[prev];
-    const uint8_t old_face = t.face[x], new_face = uint8_t(1 + i);
-    uint8_t first, second, first_face, second_face;
-    if (side_h0[i]) {  // x is h0: it becomes the second half; o = n0 is the first, from x's old tail
-      first = o, second = x, first_face = new_face, second_face = old_face;
-      t.vertex[o] = t.vertex[x];
-      t.vertex[x] = mid;
-    } else {  // x is h1: it stays the first half; o = n1 leaves the midpoint
-      first = x, second = o, first_face = old_face, second_face = new_face;
-      t.vertex[o] = mid;
-    }
-    t.vertex[p] = mid;
-    t.vertex[q] = corner;
-    t.next[first] = p, t.next[p] = prev, t.next[prev] = first;
-    t.next[second] = nx, t.next[nx] = q, t.next[q] = second;
-    t.face[first] = t.face[p] = t.face[prev] = first_face;
-    t.face[second] = t.face[nx] = t.face[q] = second_face;
-    t.face_halfedge[old_face] = x;
-    t.face_halfedge[new_face] = o;
-  }
-  // flip() of the first split's crossing edge (its halfedge is p, leaving the midpoint).
-  const uint8_t h0 = uint8_t(6 + order[0]), h1 = uint8_t(9 + order[0]);
-  const uint8_t h2 = t.next[h0], h3 = t.next[h2], h4 = t.next[h1], h5 = t.next[h4];
-  const uint8_t c = t.vertex[h3], d = t.vertex[h5];
-  const uint8_t f0 = t.face[h0], f1 = t.face[h1];
-  t.vertex[h0] = d;
-  t.next[h0] = h3, t.next[h3] = h4, t.next[h4] = h0;
-  t.face[h4] = f0;
-  t.face_halfedge[f0] = h0;
-  t.vertex[h1] = c;
-  t.next[h1] = h5, t.next[h5] = h2, t.next[h2] = h1;
-  t.face[h2] = f1;
-  t.face_halfedge[f1] = h1;
-  for (uint8_t g = 0; g < 4; ++g) {
-    uint8_t h = t.face_halfedge[g];
-    for (uint8_t k = 0; k < 3; ++k, h = t.next[h]) t.corner[g][k] = t.vertex[h];
-  }
-  return t;
-}
-
-// The order of three ranks as an index: bit 0 = r0 < r1, bit 1 = r1 < r2, bit 2 = r0 < r2 (codes 2 and 5 cannot
-// happen for distinct ranks).
-unsigned order_code(uint32_t r0, uint32_t r1, uint32_t r2) {
-  return unsigned(r0 < r1) | unsigned(r1 < r2) << 1 | unsigned(r0 < r2) << 2;
-}
-
-// The 64 cases (order code x side bits), replayed once.
-const TriangleCase& triangle_case(unsigned order, unsigned sides) {
-  static const std::vector<TriangleCase> table = [] {
-    std::vector<TriangleCase> cases(64);
-    for (unsigned code = 0; code < 8; ++code) {
-      uint8_t order_of[3] = {0, 1, 2};
-      // Find a permutation whose comparisons give this code; impossible codes keep the identity.
-      const uint8_t perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-      for (const auto& perm : perms) {
-        uint32_t r[3];
-        for (uint32_t k = 0; k < 3; ++k) r[perm[k]] = k;  // perm[k] is split k-th
-        if (order_code(r[0], r[1], r[2]) == code) std::copy(perm, perm + 3, order_of);
-      }
-      for (unsigned bits = 0; bits < 8; ++bits) {
-        const bool side_h0[3] = {(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0};
-        cases[code * 8 + bits] = replay_case(order_of, side_h0);
-      }
-    }
-    return cases;
-  }();
-  return table[order * 8 + sides];
-}
-
 // The order pass_triangles takes the triangles in, and where it puts their faces: the triangle in row r (its
 // face_at_row[r]) puts its four faces in rows 4r to 4r + 3. The next level reads next_face_at_row (when there is
 // one), the mesh keeps rows (after the last level). Neighbours on the surface come close in the rows, so the
@@ -309,28 +230,37 @@ struct RowOrder {
 // Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
 // and the four faces' places in the row order.
 void pass_triangles(Level& L, int threads, const RowOrder& order) {
-  (void)triangle_case(0, 0);  // build the table before the threads start
+  const loop_cases::TriangleCase* cases = loop_cases::triangle_cases();  // made before the threads start
   parallel_for(threads, order.count, [&](size_t begin, size_t end) {
     const MeshStorage::View& m = L.m;
     const uint32_t* face_at = order.face_at_row;
     for (size_t row = begin; row < end; ++row) {
       // The chain row -> face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for
       // later rows now, one link per stage.
-      if (row + 32 < end) __builtin_prefetch(&m.face_halfedge[face_at[row + 32]]);
-      if (row + 24 < end) __builtin_prefetch(&m.h[m.face_halfedge[face_at[row + 24]].index]);
+      if (row + 32 < end) memory_hints::prefetch(&m.face_halfedge[face_at[row + 32]]);
+      if (row + 24 < end) memory_hints::prefetch_record(&m.h[m.face_halfedge[face_at[row + 24]].index]);
       if (row + 16 < end) {
         const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[row + 16]].index];
-        __builtin_prefetch(&m.h[x0.next.index]);
-        __builtin_prefetch(&L.plan[x0.edge.index]);
+        memory_hints::prefetch_record(&m.h[x0.next.index]);
+        memory_hints::prefetch(&L.plan[x0.edge.index]);
       }
       if (row + 8 < end) {
         const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[row + 8]].index].next.index];
-        __builtin_prefetch(&m.h[x1.next.index]);
-        __builtin_prefetch(&L.plan[x1.edge.index]);
+        memory_hints::prefetch_record(&m.h[x1.next.index]);
+        memory_hints::prefetch(&L.plan[x1.edge.index]);
       }
       if (row + 4 < end) {
         const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
-        __builtin_prefetch(&L.plan[x2.edge.index]);
+        memory_hints::prefetch(&L.plan[x2.edge.index]);
+      }
+      if (row + 2 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
+        uint32_t x = m.face_halfedge[face_at[row + 2]].index;
+        for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
+          const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
+          memory_hints::prefetch_for_write(&m.h[n0]);
+          memory_hints::prefetch_for_write(&m.h[n0 + 5]);
+          memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
+        }
       }
       const size_t f = face_at[row];
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
@@ -359,7 +289,8 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
         edge_id[3 + i] = edge_id[6 + i] = ea + (side_h0 ? 1 : 2);
         face_id[1 + i] = L.first_face(e) + (side_h0 ? 0 : 1);
       }
-      const TriangleCase& c = triangle_case(order_code(rank[0], rank[1], rank[2]), sides);
+      const loop_cases::TriangleCase& c =
+          cases[loop_cases::case_index(loop_cases::order_code(rank[0], rank[1], rank[2]), sides)];
       for (uint32_t s = 0; s < 3; ++s) {  // the original halfedges keep their twin and edge
         HalfedgeRecord& r = m.h[id[s]];
         r.next = HalfedgeId(id[c.next[s]]);
@@ -376,15 +307,16 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
       if (order.next_face_at_row) {
         for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = face_id[g];
       }
-      if (order.rows) {
+      if (order.rows) {  // one 64-byte line, written past the caches: the rows are read only after Loop
         for (uint32_t g = 0; g < 4; ++g) {
-          order.rows[first_row + g] =
-              TriangleRow{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
-                           VertexId(vertex_id[c.corner[g][2]])},
-                          FaceId::face(face_id[g])};
+          const TriangleRow row_of_face{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
+                                         VertexId(vertex_id[c.corner[g][2]])},
+                                        FaceId::face(face_id[g])};
+          memory_hints::stream_store(&order.rows[first_row + g], &row_of_face);
         }
       }
     }
+    memory_hints::stream_fence();
   });
 }
 

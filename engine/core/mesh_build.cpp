@@ -243,8 +243,8 @@ void refuse_split_fans(const PolygonMesh& in, const Corners& c, const std::vecto
 
 namespace build_detail {
 
-size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
-                    const std::vector<uint32_t>& open_incoming, HalfedgeMesh& mesh) {
+size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> open_incoming,
+                    HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const auto num_interior = static_cast<uint32_t>(in.indices.size());
   const auto num_halfedges = static_cast<uint32_t>(m.h.size());

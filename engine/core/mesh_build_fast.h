@@ -4,7 +4,7 @@
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
+#include <span>
 
 #include "core/halfedge_mesh.h"
 #include "core/mesh_build.h"
@@ -19,8 +19,9 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
 
 // The first step after the twins are known, for the fast builder and for subdivision's refine_mesh: halfedge h of
 // face f is corner h of `in` (next around the face, twin from `twin`, its vertex, face f), every face's halfedge its
-// first corner's, all live; room for `num_halfedges` (the interior ones, then the boundary ones finish_build fills).
-void write_face_halfedges(const PolygonMesh& in, const std::vector<uint32_t>& twin, size_t num_halfedges,
+// first corner's, all live; each interior halfedge's edge unset (invalid); `num_halfedges` slots (the interior ones,
+// then the boundary ones, left for finish_build to write in full).
+void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, size_t num_halfedges,
                           HalfedgeMesh& mesh);
 
 // What both builders do once every interior halfedge has its next, twin (kInvalidIndex when open), vertex and face
@@ -28,8 +29,8 @@ void write_face_halfedges(const PolygonMesh& in, const std::vector<uint32_t>& tw
 // edges in order of their first halfedge; vertex positions, halfedges and liveness; live counts. `twin` holds the
 // interior twins (kInvalidIndex when open) and open_incoming[v] the open halfedge arriving at v. Returns the number
 // of input vertices no face uses.
-size_t finish_build(const PolygonMesh& in, const std::vector<uint32_t>& twin,
-                    const std::vector<uint32_t>& open_incoming, HalfedgeMesh& mesh);
+size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> open_incoming,
+                    HalfedgeMesh& mesh);
 
 // The checked builder (mesh_build.cpp): the reference result, and the MeshError that names what is wrong.
 HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report);

@@ -14,6 +14,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/memory_hints.h"
 #include "core/mesh_storage.h"
 #include "core/parallel_for.h"
 
@@ -166,8 +167,9 @@ bool triangle_term_from(const HalfedgeMesh& mesh, HalfedgeId h0, glm::dvec3& out
 // arithmetic, as face_normal uses it), to its three corners' sums. Only for a mesh proven valid with triangle faces.
 // After subdivision a face's halfedges and corners lie far apart in the arrays, so the chain face -> h0 -> h1 -> h2
 // and the corners' positions and sums are prefetched a few faces ahead, one link per stage (dead faces are skipped
-// there too: their halfedge may be any id). The prefetches are written out: GCC 12 dropped all six when they sat
-// in a helper lambda (a call with no effect it can see), and the pass ran 1.7x slower.
+// there too: their halfedge may be any id). The prefetches are written out at each stage (memory_hints.h's inline
+// calls, which GCC 12 keeps: the object code has all of them): it dropped all six when they sat in a helper lambda
+// (a call with no effect it can see), and the pass ran 1.7x slower.
 void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dvec3* sums) {
   constexpr size_t kAhead = 32;
   const auto live = [&](size_t f) { return f < end && mesh.alive(FaceId::face(uint32_t(f))); };
@@ -175,18 +177,18 @@ void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dve
     return mesh.record(mesh.halfedge(FaceId::face(uint32_t(f))));
   };
   for (size_t f = begin; f < end; ++f) {
-    if (live(f + 2 * kAhead)) __builtin_prefetch(&first(f + 2 * kAhead));
+    if (live(f + 2 * kAhead)) memory_hints::prefetch(&first(f + 2 * kAhead));
     if (live(f + kAhead)) {
       const HalfedgeRecord& r0 = first(f + kAhead);
-      __builtin_prefetch(&mesh.record(r0.next));
-      __builtin_prefetch(&mesh.position(r0.vertex));
-      __builtin_prefetch(&sums[r0.vertex.index]);
+      memory_hints::prefetch(&mesh.record(r0.next));
+      memory_hints::prefetch(&mesh.position(r0.vertex));
+      memory_hints::prefetch(&sums[r0.vertex.index]);
     }
     if (live(f + kAhead / 2)) {
       const HalfedgeRecord& r1 = mesh.record(first(f + kAhead / 2).next);
-      __builtin_prefetch(&mesh.record(r1.next));
-      __builtin_prefetch(&mesh.position(r1.vertex));
-      __builtin_prefetch(&sums[r1.vertex.index]);
+      memory_hints::prefetch(&mesh.record(r1.next));
+      memory_hints::prefetch(&mesh.position(r1.vertex));
+      memory_hints::prefetch(&sums[r1.vertex.index]);
     }
     if (!live(f)) continue;
     const HalfedgeRecord& r0 = first(f);
@@ -207,8 +209,8 @@ void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t beg
   for (size_t r = begin; r < end; ++r) {
     if (r + kAhead < end) {
       for (VertexId c : rows[r + kAhead].corner) {
-        __builtin_prefetch(&mesh.position(c));
-        __builtin_prefetch(&sums[c.index]);
+        memory_hints::prefetch(&mesh.position(c));
+        memory_hints::prefetch(&sums[c.index]);
       }
     }
     const VertexId* c = rows[r].corner;

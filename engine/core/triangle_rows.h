@@ -21,6 +21,8 @@ struct TriangleRow {
   FaceId face;
 };
 
+static_assert(sizeof(TriangleRow) == 16, "four rows fill one 64-byte cache line (Loop writes them so)");
+
 using TriangleRows = MeshArray<TriangleRow>;
 
 }  // namespace meshedit

@@ -66,6 +66,15 @@ TEST(MeshBuildFast, StepsAsideForEveryBadInputAndTheCheckedPathNamesIt) {
       with_faces(points(5), {{0, 1, 2}, {1, 0, 3}, {0, 1, 4}}),  // three faces on one edge
       with_faces(points(3), {{0, 1, 2}, {0, 2, 1}}),             // repeated face
       with_faces(points(5), {{0, 1, 2}, {0, 3, 4}}),             // bow-tie at vertex 0
+      with_faces(points(4), {{0, 1, 2, 3}, {0, 3, 2, 1}}),       // repeated quad
+      // two closed tetrahedra sharing vertex 0: every edge has its twin, but 0 has two fans
+      with_faces(points(7), {{0, 2, 1}, {0, 1, 3}, {0, 3, 2}, {1, 2, 3}, {0, 5, 4}, {0, 4, 6}, {0, 6, 5}, {4, 5, 6}}),
+      // a repeated triangle glued inside a bigger mesh (the torus's first face, reversed, on top of it)
+      [] {
+        PolygonMesh p = make_torus(6, 5);
+        p.add_face({p.indices[0], p.indices[2], p.indices[1]});
+        return p;
+      }(),
   };
   for (const PolygonMesh& p : bad) {
     HalfedgeMesh fast;
