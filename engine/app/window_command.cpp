@@ -70,15 +70,13 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   };
   auto run = std::make_shared<WindowRun>(script ? read_actions(*script) : std::vector<ScriptedAction>{},
                                          EditorApp::kStartTitle, width, height, /*fit_to_screen=*/!size);
-  ActionPlayer& player = run->player;
-  GlfwWindow& window = run->window;
-  EditorApp& app = run->app;
-  window.set_lazy(!player.active());  // scripted runs step one action per frame
-  app.apply_settings(settings);
+  run->window.set_lazy(!run->player.active());  // scripted runs step one action per frame
+  run->app.apply_settings(settings);
   // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
-  if (!player.active()) app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
-  app.show_start_mesh();                 // out of memory: an empty window that says so (editor_app.h)
-  if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
+  if (!run->player.active()) run->app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
+  run->app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
+  // On failure the cube (or the empty start) stays and the status line says why.
+  if (!args.empty()) run->app.open(args[0]);
 
   const auto frame = [run] {
     ActionPlayer& player = run->player;
@@ -87,7 +85,9 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     if (window.should_close() || app.quit_requested()) return false;
     window.set_lazy(!player.active() && !app.animating());
     if (const auto resize = app.take_window_size_request()) window.set_size(resize->first, resize->second);
-    if (app.take_look_change() | window.take_content_scale_changed()) {  // both read: each clears its flag
+    const bool look_changed = app.take_look_change();  // both taken: each clears its flag
+    const bool scale_changed = window.take_content_scale_changed();
+    if (look_changed || scale_changed) {
       const FontsLoaded fonts = window.apply_look(app.settings().font_px, app.settings().theme);
       if (!fonts.warning.empty()) std::cerr << "meshedit: " << fonts.warning << "\n";
       app.fonts_applied(fonts);
