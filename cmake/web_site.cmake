@@ -21,7 +21,9 @@ target_link_options(meshedit PRIVATE
   ${packaged}
   -sALLOW_MEMORY_GROWTH=1
   -sINITIAL_MEMORY=67108864
-  -sTOTAL_STACK=5242880)
+  -sTOTAL_STACK=5242880
+  # web/index.html writes the files the user hands the page with FS and gives their paths to the program with ccall.
+  "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','FS']")
 # The packaged folders are read at link time: a change in them relinks the page.
 file(GLOB_RECURSE packaged_files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lessons/*" "${PROJECT_SOURCE_DIR}/shaders/*"
      "${PROJECT_SOURCE_DIR}/assets/*" "${PROJECT_SOURCE_DIR}/scripts/student/*"

@@ -1,4 +1,5 @@
-// The desktop host of the window (see window_host.h): GLFW's own loop, monitor work area, content scale and errors.
+// The desktop host of the window (see window_host.h): GLFW's own loop, monitor work area, content scale and errors;
+// the window reads and writes the disk itself, so files need no handing over.
 #include <GLFW/glfw3.h>
 
 #include <algorithm>
@@ -51,5 +52,13 @@ std::string host_no_window_hint() {
   return std::string(display && *display ? "" : "; DISPLAY is not set") +
          ". Without a display, try `meshedit demo` or `meshedit render`";
 }
+
+bool host_has_file_picker() { return false; }
+
+void host_show_file_picker() {}
+
+std::vector<std::string> host_take_received_files() { return {}; }
+
+std::string host_hand_over(const std::filesystem::path&) { return ""; }
 
 }  // namespace meshedit
