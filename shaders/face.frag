@@ -1,10 +1,15 @@
-#version 330 core
 // Mesh faces (one triangle slot per face, see render/slot_geometry.h), shaded flat (the face's Newell normal) or Phong (interpolated area-weighted vertex
 // normals, plus a highlight). Back sides get their own colour so an inside-out face shows. Hovered,
 // selected and changed faces are tinted: hovered and selected by id (uniforms), changed by a flag per
 // face (a buffer texture), so a selection change never touches the big buffers.
 in vec3 v_world;
 in vec3 v_normal;
+#if MESHEDIT_HAS_PRIMITIVE_ID
+#define primitive_id gl_PrimitiveID
+#else
+flat in int v_triangle;  // face.vert: the triangle's number where GLSL has no gl_PrimitiveID
+#define primitive_id v_triangle
+#endif
 
 uniform bool u_extra;                     // false: gl_PrimitiveID is the face slot (the first triangle of each face)
 uniform usamplerBuffer u_extra_faces;     // true: the face slot of each later fan triangle of a polygon
@@ -24,8 +29,8 @@ uniform vec4 u_changed_colour;
 out vec4 o_colour;
 
 void main() {
-  uint face = u_extra ? texelFetch(u_extra_faces, gl_PrimitiveID).r : uint(gl_PrimitiveID);
-  vec3 n = texelFetch(u_face_normals, int(face)).xyz;
+  uint face = u_extra ? buffer_fetch(u_extra_faces, primitive_id).r : uint(primitive_id);
+  vec3 n = buffer_fetch(u_face_normals, int(face)).xyz;
   if (dot(n, n) < 0.25) {
     // A degenerate face has no normal of its own: use the triangle's, turned to its front side.
     vec3 facing = cross(dFdx(v_world), dFdy(v_world));
@@ -43,7 +48,7 @@ void main() {
     base = mix(base, u_selected_colour, 0.8);
   } else if (face == u_hovered) {
     base = mix(base, u_hovered_colour, 0.6);
-  } else if (texelFetch(u_changed, int(face)).r != 0u) {
+  } else if (buffer_fetch(u_changed, int(face)).r != 0u) {
     base = mix(base, u_changed_colour, 0.7);
   }
 

@@ -1,4 +1,3 @@
-#version 330 core
 // Id pass for segments (edges, halfedge arrows) and points (vertices): kind bits | element index.
 flat in uint v_id;
 uniform uint u_kind_bits;

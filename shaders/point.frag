@@ -1,4 +1,3 @@
-#version 330 core
 // Round points with a dark rim, so a white vertex still shows on a light face.
 flat in vec4 v_colour;
 

@@ -1,4 +1,3 @@
-#version 330 core
 // Points (mesh vertices, overlay points) as round sprites of a size in pixels. Colour and size come
 // from the element's state (u_element_colours) or per-point attributes (overlays); in the id pass
 // (u_pick_size > 0) every point has that size.
@@ -49,7 +48,7 @@ void main() {
     } else if (a_id == u_hovered) {
       colour = u_hovered_colour;
       size = u_highlight_size;
-    } else if (texelFetch(u_changed, int(a_id)).r != 0u) {
+    } else if (buffer_fetch(u_changed, int(a_id)).r != 0u) {
       colour = u_changed_colour;
       size = u_highlight_size;
     }

@@ -1,4 +1,3 @@
-#version 330 core
 // Segments and overlays: the colour chosen in the vertex shader.
 flat in vec4 v_colour;
 

@@ -1,4 +1,3 @@
-#version 330 core
 // Line segments of any width, each drawn as two triangles spread across it in screen space (core
 // profile has no wide lines). Used for mesh edges, halfedge arrows and overlay polylines.
 // No vertex attributes: vertex gl_VertexID belongs to segment gl_VertexID / 6 (or / 2 as GL_LINES),
@@ -42,8 +41,8 @@ void main() {
   int per_segment = u_lines ? 2 : 6;
   int segment = gl_VertexID / per_segment;
   int corner = u_lines ? 2 * (gl_VertexID - segment * 2) : kCorners[gl_VertexID - segment * 6];
-  uvec4 t0 = texelFetch(u_segments, 2 * segment);
-  uvec4 t1 = texelFetch(u_segments, 2 * segment + 1);
+  uvec4 t0 = buffer_fetch(u_segments, 2 * segment);
+  uvec4 t1 = buffer_fetch(u_segments, 2 * segment + 1);
   vec3 a_start = uintBitsToFloat(t0.xyz);
   vec3 a_end = uintBitsToFloat(uvec3(t0.w, t1.xy));
   uint a_id = t1.z;
@@ -58,7 +57,7 @@ void main() {
   vec4 colour;
   float width;
   if (!u_element_colours) {
-    uvec2 style = texelFetch(u_styles, segment).xy;
+    uvec2 style = buffer_fetch(u_styles, segment).xy;
     colour = vec4(uvec4(style.x, style.x >> 8, style.x >> 16, style.x >> 24) & 255u) / 255.0;
     width = uintBitsToFloat(style.y);
   } else {
@@ -70,7 +69,7 @@ void main() {
     } else if (a_id == u_hovered) {
       colour = u_hovered_colour;
       width = u_highlight_width;
-    } else if (texelFetch(u_changed, int(a_id)).r != 0u) {
+    } else if (buffer_fetch(u_changed, int(a_id)).r != 0u) {
       colour = u_changed_colour;
       width = u_highlight_width;
     } else if (u_show_boundary && (a_flags & 1u) != 0u) {

@@ -2,6 +2,7 @@
 #include "app/action_player.h"
 
 #include <stdexcept>
+#include <string>
 
 #include "app/action_verbs.h"
 #include "app/editor_app.h"
@@ -14,10 +15,29 @@ namespace {
 // run in the step after the frame that follows the action before them, not in that action's step.
 bool reads_a_drawn_frame(const ScriptedAction& a) { return a.verb == "expect-gpu-update" || a.verb == "expect-mine"; }
 
+// Whether the status line contains the words of a wait-message after its number of frames.
+bool status_contains(EditorApp& app, const ScriptedAction& a) {
+  std::string text;
+  for (size_t i = 1; i < a.args.size(); ++i) text += (i > 1 ? " " : "") + a.args[i];
+  return app.document().message.text.find(text) != std::string::npos;
+}
+
 }  // namespace
 
 bool ActionPlayer::step(EditorApp& app) {
-  if (wait_frames_ > 0) {
+  if (waiting_for_message_) {
+    bool arrived = false;
+    run_guarded(app.document(), [&] {
+      const ScriptedAction& a = *waiting_for_message_;
+      arrived = status_contains(app, a);
+      if (!arrived && --wait_frames_ > 0) return;
+      waiting_for_message_ = nullptr;
+      wait_frames_ = 0;
+      if (!arrived) fail(a, "the status line is '" + app.document().message.text + "' after " + a.args[0] + " frames");
+      arrived = true;  // the wait is over either way
+    });
+    if (!arrived) return true;
+  } else if (wait_frames_ > 0) {
     --wait_frames_;
     return true;
   }
@@ -36,6 +56,7 @@ bool ActionPlayer::step(EditorApp& app) {
       }
     });
     if (quit) return false;
+    if (waiting_for_message_) return true;  // what follows a wait-message runs after the message arrived
     const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0 &&
                                !reads_a_drawn_frame(actions_[next_]);
     if (!checks_follow) return true;
@@ -52,6 +73,14 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
   if (a.verb == "quit") return false;
   if (a.verb == "frames") {
     wait_frames_ = std::stoi(a.args[0]);
+    return true;
+  }
+  if (a.verb == "wait-message") {
+    const int frames = std::stoi(a.args[0]);
+    if (a.args.size() < 2 || frames < 1) throw std::runtime_error("wait-message takes a number of frames and a text");
+    if (status_contains(app, a)) return true;
+    wait_frames_ = frames;
+    waiting_for_message_ = &a;
     return true;
   }
   const ActionVerb* verb = find_action_verb(a.verb);

@@ -13,6 +13,7 @@
 
 #include "app/editor_app.h"
 #include "app/layout_report.h"
+#include "app/window_host.h"
 #include "document/document_actions.h"
 #include "io/file_access.h"
 
@@ -129,6 +130,12 @@ void throw_message(EditorApp& app) { throw std::runtime_error(app.document().mes
 
 std::string open(EditorApp& app, const Action& a) {
   if (!app.open(a.args[0])) throw_message(app);
+  return "";
+}
+
+std::string open_picker(EditorApp&, const Action&) {
+  if (!host_has_file_picker()) throw std::runtime_error("this window has no file picker of its own (use open PATH)");
+  host_show_file_picker();
   return "";
 }
 
@@ -390,6 +397,10 @@ std::string expect_gpu_update(EditorApp& app, const Action& a) {
 // Every verb, its words after it, what it does, and its handler; the usage texts are the verbs' documentation.
 const ActionVerb kVerbs[] = {
     {"frames", 1, "frames N   the next N frames pass with no action", nullptr},
+    {"wait-message", -1,
+     "wait-message N TEXT...   waits, a frame at a time, until the status line contains TEXT (what arrives from "
+     "outside the script, such as a file the page receives); fails after N frames without it",
+     nullptr},
     {"quit", 0, "quit   closes the window (the script's end does too)", nullptr},
     {"key", 1,
      "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "
@@ -409,6 +420,10 @@ const ActionVerb kVerbs[] = {
      window_size},
     {"layout-json", 1, "layout-json PATH   writes the window's layout as JSON (app/layout_report.h)", write_layout},
     {"open", 1, "open PATH   File > Open", open},
+    {"open-picker", 0,
+     "open-picker   File > Open mesh from this computer: the page's file picker, whose file opens when the browser "
+     "hands it over (wait-message); fails where the window has no picker of its own (the desktop)",
+     open_picker},
     {"open-repaired", 0, "open-repaired   File > Open a repaired copy of the mesh file `open` last refused",
      open_repaired},
     {"save", 1, "save PATH   File > Save as", save},

@@ -5,15 +5,16 @@
 
 #include <cstdio>
 
-#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include "app/mesh_loading.h"
+#include "app/window_host.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "document/exception_report.h"
 #include "io/file_error.h"
 #include "io/mesh_file.h"
+#include "render/gl_api.h"
 #include "render/image_file.h"
 #include "render/mesh_geometry.h"
 #include "render/render_error.h"
@@ -52,7 +53,8 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   try {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     write_png(path, width, height, read_pixels({width, height}));
-    message(Severity::Info, "screenshot saved to " + path.string());
+    const std::string handed = host_hand_over(path);  // a page's browser downloads it
+    message(Severity::Info, "screenshot " + (handed.empty() ? "saved to " + path.string() : handed));
   } catch (const std::exception& e) {
     report_exception(doc_, e);  // called outside the frame guard (between rendering and the swap): never throws
   }

@@ -20,6 +20,7 @@
 
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
+#include "app/window_host.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_repair.h"
@@ -232,6 +233,7 @@ bool EditorApp::save(const std::filesystem::path& path) {
     std::deque<std::string> recent = with_recent(recent_, path.string());
     std::string text = "saved " + path.string();
     save_mesh(path, to_polygon_mesh(doc_.mesh));
+    if (const std::string handed = host_hand_over(path); !handed.empty()) text = "saved and " + handed;
     // Nothing from here on can fail: a file written is a file reported saved.
     recent_.swap(recent);
     set_message(doc_, Severity::Info, std::move(text));

@@ -7,13 +7,13 @@
 //          view);
 //   right  mesh view: tabs Pointers, Inspector (while a lesson has the left column) and Exercises;
 //          curve view: the curve's controls and its levels; patch view: the patch controls and the evaluation table.
-#include <epoxy/gl.h>
 #include <imgui.h>
 
 #include <algorithm>
 #include <cmath>
 
 #include "app/editor_app.h"
+#include "render/gl_api.h"
 
 namespace meshedit {
 namespace {

@@ -11,6 +11,7 @@
 #include "app/editor_app.h"
 #include "app/key_bindings.h"
 #include "app/mesh_loading.h"
+#include "app/window_host.h"
 #include "document/document_actions.h"
 #include "document/subdivision_actions.h"
 #include "ui/theme.h"
@@ -79,6 +80,8 @@ void EditorApp::draw_menu_bar() {
 void EditorApp::draw_file_menu() {
   using K = KeyCommand;
   if (!ImGui::BeginMenu("File")) return;
+  // A page reaches the student's disk only through the browser's picker; Open... lists the packaged files there.
+  if (host_has_file_picker() && ImGui::MenuItem("Open mesh from this computer...")) host_show_file_picker();
   key_menu_item("Open...", K::Open);
   if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
     for (const std::string& path : std::deque<std::string>(recent_)) {
@@ -219,6 +222,13 @@ void EditorApp::draw_open_panel() {
   }
   ImGui::SameLine();
   if (ImGui::Button("Assets")) open_path_input_ = assets_dir().string();
+  if (host_has_file_picker()) {
+    ImGui::SameLine();
+    if (ImGui::Button("From this computer...")) {
+      host_show_file_picker();
+      show_open_panel_ = false;
+    }
+  }
   if (mode_ == ViewMode::Mesh) {
     input_path("save as", save_path_input_);
     ImGui::SameLine();

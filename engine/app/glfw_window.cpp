@@ -1,8 +1,8 @@
-// GLFW window + GL 3.3 core context + ImGui backends (see glfw_window.h).
+// GLFW window + GL 3.3 core context (WebGL 2 in a page) + ImGui backends (see glfw_window.h).
 #include "app/glfw_window.h"
 
-// libepoxy's gl.h comes before every other GL header (GLFW's included).
-#include <epoxy/gl.h>
+// The GL header (render/gl_api.h) comes before every other GL header (GLFW's included).
+#include "render/gl_api.h"
 
 #include <GLFW/glfw3.h>
 #include <imgui.h>
@@ -11,20 +11,14 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <stdexcept>
 #include <utility>
 
+#include "app/window_host.h"
 #include "ui/theme.h"
 
 namespace meshedit {
 namespace {
-
-std::string last_glfw_error() {
-  const char* description = nullptr;
-  glfwGetError(&description);
-  return description ? description : "unknown GLFW error";
-}
 
 // A width and height from one of GLFW's size getters (the window's, in screen coordinates, or its framebuffer's).
 std::pair<int, int> size_of(void (*get)(GLFWwindow*, int*, int*), GLFWwindow* window) {
@@ -36,30 +30,16 @@ std::pair<int, int> size_of(void (*get)(GLFWwindow*, int*, int*), GLFWwindow* wi
 }  // namespace
 
 GlfwWindow::GlfwWindow(const std::string& title, int width, int height, bool fit_to_screen) {
-  if (!glfwInit()) {
-    const char* display = std::getenv("DISPLAY");
-    throw std::runtime_error("cannot open a window (" + last_glfw_error() + ")" +
-                             (display && *display ? "" : "; DISPLAY is not set") +
-                             ". Without a display, try `meshedit demo` or `meshedit render`");
-  }
+  if (!glfwInit()) throw std::runtime_error("cannot open a window (" + host_last_error() + ")" + host_no_window_hint());
   glfwWindowHint(GLFW_CONTEXT_VERSION_MAJOR, 3);
   glfwWindowHint(GLFW_CONTEXT_VERSION_MINOR, 3);
   glfwWindowHint(GLFW_OPENGL_PROFILE, GLFW_OPENGL_CORE_PROFILE);
   glfwWindowHint(GLFW_OPENGL_FORWARD_COMPAT, GLFW_TRUE);
   glfwWindowHint(GLFW_SAMPLES, 4);
-  if (fit_to_screen) {
-    if (GLFWmonitor* monitor = glfwGetPrimaryMonitor()) {
-      int x = 0, y = 0, w = 0, h = 0;
-      glfwGetMonitorWorkarea(monitor, &x, &y, &w, &h);
-      if (w > 0 && h > 0) {
-        width = std::min(width, w);
-        height = std::min(height, h);
-      }
-    }
-  }
+  host_window_size(width, height, fit_to_screen);
   window_ = glfwCreateWindow(width, height, title.c_str(), nullptr, nullptr);
   if (!window_) {
-    const std::string why = last_glfw_error();
+    const std::string why = host_last_error();
     glfwTerminate();
     throw std::runtime_error("cannot create an OpenGL 3.3 core window: " + why);
   }
@@ -85,7 +65,7 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height, bool fit
   glfwSetCursorEnterCallback(window_, [](GLFWwindow* w, int) { note_input(w); });
   glfwSetFramebufferSizeCallback(window_, [](GLFWwindow* w, int, int) { note_input(w); });
   glfwSetWindowRefreshCallback(window_, [](GLFWwindow* w) { note_input(w); });
-  glfwSetWindowContentScaleCallback(window_, [](GLFWwindow* w, float, float) {
+  host_watch_content_scale(window_, [](GLFWwindow* w, float, float) {
     static_cast<GlfwWindow*>(glfwGetWindowUserPointer(w))->content_scale_changed_ = true;
     note_input(w);
   });
@@ -95,7 +75,7 @@ GlfwWindow::GlfwWindow(const std::string& title, int width, int height, bool fit
   ImGui::GetIO().IniFilename = nullptr;  // layout comes from code, not from a file beside the binary
   apply_theme(ImGui::GetStyle(), Theme::Dark);
   ImGui_ImplGlfw_InitForOpenGL(window_, true);
-  ImGui_ImplOpenGL3_Init("#version 330 core");
+  ImGui_ImplOpenGL3_Init(gl::kGlslVersionLine);
 }
 
 GlfwWindow::~GlfwWindow() {
@@ -118,7 +98,8 @@ void GlfwWindow::begin_frame() {
   constexpr int kSettleFrames = 3;
   constexpr double kIdleTimeoutSeconds = 5.0;  // a redraw now and then, even with no input
   last_wait_ms_ = 0.0f;
-  if (lazy_ && quiet_frames_ >= kSettleFrames) {
+  host_follow_page(window_);
+  if (lazy_ && host_may_wait_for_input() && quiet_frames_ >= kSettleFrames) {
     const double start = glfwGetTime();
     while (!input_seen_ && glfwGetTime() - start < kIdleTimeoutSeconds && !should_close()) {
       glfwWaitEventsTimeout(kIdleTimeoutSeconds - (glfwGetTime() - start));
@@ -167,9 +148,7 @@ float GlfwWindow::pixels_per_coordinate() const {
 }
 
 float GlfwWindow::ui_scale() const {
-  float sx = 1.0f, sy = 1.0f;
-  glfwGetWindowContentScale(window_, &sx, &sy);
-  const float scale = std::max(sx, 0.5f) / pixels_per_coordinate();
+  const float scale = std::max(host_content_scale(window_), 0.5f) / pixels_per_coordinate();
   return std::isfinite(scale) ? std::clamp(scale, 0.5f, 4.0f) : 1.0f;
 }
 

@@ -1,6 +1,7 @@
 // GlfwWindow: one OS window with an OpenGL 3.3 core context and Dear ImGui set up on it (GLFW and
-// OpenGL3 backends). RAII: the constructor creates everything or throws std::runtime_error with a
-// message a user can act on ("no display: ..."); the destructor tears it all down in reverse order.
+// OpenGL3 backends); in the web build, the page's canvas with a WebGL 2 context (what differs: window_host.h).
+// RAII: the constructor creates everything or throws std::runtime_error with a message a user can act on ("no
+// display: ..."); the destructor tears it all down in reverse order.
 //
 // Input is read through ImGui's io each frame (keys, mouse, wheel), so the app has one input path;
 // files dropped on the window are queued and handed out by take_dropped_files().

@@ -9,12 +9,15 @@
 #include <cstdio>
 #include <filesystem>
 #include <iostream>
+#include <memory>
+#include <utility>
 
 #include "app/action_player.h"
 #include "app/cli_commands.h"
 #include "app/editor_app.h"
 #include "app/glfw_window.h"
 #include "app/scripted_actions.h"
+#include "app/window_host.h"
 #include "document/exception_report.h"
 
 namespace meshedit {
@@ -53,45 +56,66 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
                width > 16384 || height > 16384)) {
     throw UsageError("--size must look like 1280x800");
   }
-  ActionPlayer player(script ? read_actions(*script) : std::vector<ScriptedAction>{}, std::cerr);
-
-  GlfwWindow window(EditorApp::kStartTitle, width, height, /*fit_to_screen=*/!size);
-  window.set_lazy(!player.active());  // scripted runs step one action per frame
-  EditorApp app;
-  app.apply_settings(settings);
+  // Everything the frames use lives on the heap: in a page the browser runs the frames after this call has returned
+  // (window_host.h).
+  struct WindowRun {
+    WindowRun(std::vector<ScriptedAction> actions, const std::string& title, int w, int h, bool fit)
+        : player(std::move(actions), std::cerr), window(title, w, h, fit) {}
+    ActionPlayer player;
+    GlfwWindow window;
+    EditorApp app;
+    std::chrono::steady_clock::time_point last = std::chrono::steady_clock::now();
+    float frame_ms = 0.0f;
+    int status = 0;
+  };
+  auto run = std::make_shared<WindowRun>(script ? read_actions(*script) : std::vector<ScriptedAction>{},
+                                         EditorApp::kStartTitle, width, height, /*fit_to_screen=*/!size);
+  run->window.set_lazy(!run->player.active());  // scripted runs step one action per frame
+  run->app.apply_settings(settings);
   // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
-  if (!player.active()) app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
-  app.show_start_mesh();                 // out of memory: an empty window that says so (editor_app.h)
-  if (!args.empty()) app.open(args[0]);  // on failure the cube (or the empty start) stays and the status line says why
+  if (!run->player.active()) run->app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
+  run->app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
+  // On failure the cube (or the empty start) stays and the status line says why.
+  if (!args.empty()) run->app.open(args[0]);
 
-  auto last = std::chrono::steady_clock::now();
-  float frame_ms = 0.0f;
-  while (!window.should_close() && !app.quit_requested()) {
+  const auto frame = [run] {
+    ActionPlayer& player = run->player;
+    GlfwWindow& window = run->window;
+    EditorApp& app = run->app;
+    if (window.should_close() || app.quit_requested()) return false;
     window.set_lazy(!player.active() && !app.animating());
     if (const auto resize = app.take_window_size_request()) window.set_size(resize->first, resize->second);
-    if (app.take_look_change() | window.take_content_scale_changed()) {  // both read: each clears its flag
+    const bool look_changed = app.take_look_change();  // both taken: each clears its flag
+    const bool scale_changed = window.take_content_scale_changed();
+    if (look_changed || scale_changed) {
       const FontsLoaded fonts = window.apply_look(app.settings().font_px, app.settings().theme);
       if (!fonts.warning.empty()) std::cerr << "meshedit: " << fonts.warning << "\n";
       app.fonts_applied(fonts);
     }
     window.begin_frame();
     app.open_dropped(window.take_dropped_files());
+    app.open_dropped(host_take_received_files());  // a page's picked and dropped files (window_host.h)
     if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
-    app.frame(window.framebuffer_width(), window.framebuffer_height(), frame_ms);
+    app.frame(window.framebuffer_width(), window.framebuffer_height(), run->frame_ms);
     run_guarded(app.document(), [&] { window.set_title(app.title()); });  // outside the frame guard; allocates
     window.end_frame([&] { app.write_pending_screenshot(window.framebuffer_width(), window.framebuffer_height()); });
     const auto now = std::chrono::steady_clock::now();
     // The frame's own work: the time waiting for input is not the view's cost (the quality governor reads this).
-    frame_ms = std::max(0.0f, std::chrono::duration<float, std::milli>(now - last).count() - window.last_wait_ms());
-    last = now;
-    if (player.active() && !player.step(app)) break;
-  }
-  save_settings(settings_file, app, window, /*remember_size=*/!size);
-  if (player.active()) {
-    out << "actions: " << (player.failures() == 0 ? "all expectations held" : "some expectations failed") << "\n";
-    return player.failures() == 0 ? 0 : 3;
-  }
-  return 0;
+    run->frame_ms =
+        std::max(0.0f, std::chrono::duration<float, std::milli>(now - run->last).count() - window.last_wait_ms());
+    run->last = now;
+    return !(player.active() && !player.step(app));
+  };
+  const auto finish = [run, settings_file, remember_size = !size, &out] {
+    save_settings(settings_file, run->app, run->window, remember_size);
+    if (run->player.active()) {
+      out << "actions: " << (run->player.failures() == 0 ? "all expectations held" : "some expectations failed")
+          << "\n";
+      run->status = run->player.failures() == 0 ? 0 : 3;
+    }
+  };
+  run_frame_loop(frame, finish);
+  return run->status;
 }
 
 }  // namespace meshedit

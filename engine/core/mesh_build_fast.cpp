@@ -75,7 +75,7 @@ struct Outgoing {
   const uint64_t* find(uint32_t v, uint32_t u) const {
     const uint64_t* first = keys.data() + start[v];
     const uint64_t* last = keys.data() + start[v + 1];
-    if (last - first > kSortedAbove) {
+    if (count(v) > kSortedAbove) {
       first = std::lower_bound(first, last, uint64_t(u) << 32);
       return first != last && key_head(*first) == u ? first : nullptr;
     }
@@ -89,7 +89,7 @@ struct Outgoing {
   bool heads_distinct(uint32_t v) const {
     const uint64_t* first = keys.data() + start[v];
     const uint64_t* last = keys.data() + start[v + 1];
-    if (last - first > kSortedAbove) {
+    if (count(v) > kSortedAbove) {
       return std::adjacent_find(first, last, [](uint64_t a, uint64_t b) { return key_head(a) == key_head(b); }) == last;
     }
     for (const uint64_t* i = first; i != last; ++i) {

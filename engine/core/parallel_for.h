@@ -32,10 +32,15 @@ namespace meshedit {
 inline constexpr size_t kMinItemsPerThread = 16384;
 
 // The machine's cores, at least 1: the threads a whole-mesh pass started by the user (L in the window, `meshedit
-// subdivide`, the renderer's build) runs on, and the default number of `meshedit grade` jobs.
+// subdivide`, the renderer's build) runs on, and the default number of `meshedit grade` jobs. 1 in a build without
+// threads (MESHEDIT_ONE_THREAD: the web page, engine/core/CMakeLists.txt), where no std::thread can start.
 inline int hardware_threads() {
+#if defined(MESHEDIT_ONE_THREAD)
+  return 1;
+#else
   const unsigned cores = std::thread::hardware_concurrency();
   return cores == 0 ? 1 : static_cast<int>(cores);
+#endif
 }
 
 inline size_t chunk_count(int threads, size_t n) {

@@ -1,14 +1,14 @@
 // Shortest round-trip printing of doubles, counts with their nouns, byte sizes (see value_format.h).
 #include "core/value_format.h"
 
-#include <charconv>
+#include "core/number_chars.h"
 
 namespace meshedit {
 
 void append_number(std::string& out, double x) {
   char buffer[32];  // the longest shortest form is 24 characters ("-2.2250738585072014e-308")
-  const auto [end, error] = std::to_chars(buffer, buffer + sizeof buffer, x);
-  if (error != std::errc()) {
+  char* const end = shortest_chars(buffer, buffer + sizeof buffer, x);
+  if (end == nullptr) {
     out += '?';
     return;
   }

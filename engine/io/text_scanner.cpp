@@ -6,6 +6,7 @@
 #include <limits>
 #include <system_error>
 
+#include "core/number_chars.h"
 #include "io/file_error.h"
 
 namespace meshedit {
@@ -34,14 +35,14 @@ NumberStatus to_real(std::string_view text, double& out) {
   if (text.size() > 1 && text[0] == '+' && text[1] != '-' && text[1] != '+') text.remove_prefix(1);
   if (text.empty()) return NumberStatus::NotANumber;
   double value = 0;
-  const auto [end, ec] = std::from_chars(text.data(), text.data() + text.size(), value, std::chars_format::general);
+  bool out_of_range = false;
+  const char* end = parse_chars(text.data(), text.data() + text.size(), value, out_of_range);
   if (end != text.data() + text.size()) return NumberStatus::NotANumber;
-  if (ec == std::errc::result_out_of_range) {
+  if (out_of_range) {
     if (!has_negative_exponent(text)) return NumberStatus::OutOfRange;
     out = text[0] == '-' ? -0.0 : 0.0;
     return NumberStatus::Ok;
   }
-  if (ec != std::errc()) return NumberStatus::NotANumber;
   if (!std::isfinite(value)) return NumberStatus::NotFinite;
   out = value;
   return NumberStatus::Ok;

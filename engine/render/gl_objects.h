@@ -8,7 +8,7 @@
 
 #include <utility>
 
-#include <epoxy/gl.h>
+#include "render/gl_api.h"
 
 namespace meshedit::gl {
 

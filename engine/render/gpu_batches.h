@@ -11,11 +11,10 @@
 #include <cstddef>
 #include <cstdint>
 
-#include <epoxy/gl.h>
-
 #include <glm/mat4x4.hpp>
 
 #include "render/camera.h"
+#include "render/gl_api.h"
 #include "render/gl_objects.h"
 #include "render/mesh_geometry.h"
 #include "render/shader_library.h"

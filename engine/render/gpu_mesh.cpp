@@ -42,6 +42,7 @@ GpuMesh::GpuMesh()
     glBindBuffer(GL_ELEMENT_ARRAY_BUFFER, vao == face_vao_.get() ? triangles_.get() : extra_triangles_.get());
   }
   glBindVertexArray(0);
+  if (!kHasPrimitiveId) pull_ = std::make_unique<Pull>();
 }
 
 void GpuMesh::upload(const SlotGeometry& g) {
@@ -59,6 +60,14 @@ void GpuMesh::upload(const SlotGeometry& g) {
   allocate_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), g.extra_triangles.size() * sizeof(uint32_t),
                   g.extra_triangles.data(), g.extra_triangles.size() * sizeof(uint32_t));
   glBindVertexArray(0);
+  if (pull_) {
+    pull_->positions.allocate(vertex_slots_ * sizeof(glm::vec3), g.positions.data(), vertices * sizeof(glm::vec3));
+    pull_->normals.allocate(vertex_slots_ * sizeof(glm::vec3), g.smooth_normals.data(), vertices * sizeof(glm::vec3));
+    pull_->corners.allocate(face_slots_ * 3 * sizeof(uint32_t), g.triangles.data(),
+                            g.triangles.size() * sizeof(uint32_t));
+    pull_->extra_corners.allocate(g.extra_triangles.size() * sizeof(uint32_t), g.extra_triangles.data(),
+                                  g.extra_triangles.size() * sizeof(uint32_t));
+  }
   extra_faces_.allocate(g.extra_faces.size() * sizeof(uint32_t), g.extra_faces.data(),
                         g.extra_faces.size() * sizeof(uint32_t));
   face_normals.allocate(face_slots_ * sizeof(glm::vec4), g.face_normals.data(), faces * sizeof(glm::vec4));
@@ -86,6 +95,9 @@ void GpuMesh::apply(const SlotPatch& p) {
         for (size_t i = 0; i < run.size(); ++i) positions[i] = run[i].position;
         write_buffer(GL_ARRAY_BUFFER, positions_.get(), first * sizeof(glm::vec3), positions.data(),
                      positions.size() * sizeof(glm::vec3));
+        if (pull_) {
+          pull_->positions.write(first * sizeof(glm::vec3), positions.data(), positions.size() * sizeof(glm::vec3));
+        }
       });
   using Normal = std::pair<uint32_t, glm::vec3>;
   for_each_run<Normal, glm::vec3>(
@@ -93,6 +105,7 @@ void GpuMesh::apply(const SlotPatch& p) {
       [&](uint32_t first, const std::vector<glm::vec3>& run) {
         write_buffer(GL_ARRAY_BUFFER, normals_.get(), first * sizeof(glm::vec3), run.data(),
                      run.size() * sizeof(glm::vec3));
+        if (pull_) pull_->normals.write(first * sizeof(glm::vec3), run.data(), run.size() * sizeof(glm::vec3));
       });
   std::vector<std::pair<uint32_t, const FacePatch*>> faces;
   faces.reserve(p.faces.size());
@@ -110,6 +123,9 @@ void GpuMesh::apply(const SlotPatch& p) {
         }
         write_buffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get(), first * 3 * sizeof(uint32_t), triangles.data(),
                      triangles.size() * 3 * sizeof(uint32_t));
+        if (pull_) {
+          pull_->corners.write(first * 3 * sizeof(uint32_t), triangles.data(), triangles.size() * 3 * sizeof(uint32_t));
+        }
         face_normals.write(first * sizeof(glm::vec4), normals.data(), normals.size() * sizeof(glm::vec4));
       });
   using Extra = std::pair<uint32_t, std::array<uint32_t, 3>>;
@@ -119,6 +135,9 @@ void GpuMesh::apply(const SlotPatch& p) {
       [&](uint32_t first, const std::vector<std::array<uint32_t, 3>>& run) {
         write_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), first * 3 * sizeof(uint32_t), run.data(),
                      run.size() * 3 * sizeof(uint32_t));
+        if (pull_) {
+          pull_->extra_corners.write(first * 3 * sizeof(uint32_t), run.data(), run.size() * 3 * sizeof(uint32_t));
+        }
       });
   glBindVertexArray(0);
   using Edge = std::pair<uint32_t, EdgeSegment>;
@@ -149,6 +168,10 @@ void GpuMesh::apply_arrows(const SlotPatch& p) {
 }
 
 void GpuMesh::draw_triangles(GLint extra_location, GLuint unit) const {
+  if (pull_) {
+    draw_pulled_triangles(extra_location, unit);
+    return;
+  }
   glUniform1i(extra_location, 0);
   glBindVertexArray(face_vao_.get());
   glDrawElements(GL_TRIANGLES, GLsizei(face_count_ * 3), GL_UNSIGNED_INT, nullptr);
@@ -181,21 +204,38 @@ void GpuMesh::read(SlotGeometry& out, std::vector<EdgeSegment>* slot_arrows) con
   glBindVertexArray(extra_vao_.get());
   read_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), extra_count_ * 3, out.extra_triangles);
   glBindVertexArray(0);
-  read_buffer(GL_TEXTURE_BUFFER, extra_faces_.buffer(), extra_count_, out.extra_faces);
-  read_buffer(GL_TEXTURE_BUFFER, face_normals.buffer(), face_count_, out.face_normals);
-  read_buffer(GL_TEXTURE_BUFFER, edges.buffer(), edges.count(), out.edges);
+  read_buffer(kBufferTextureBinding, extra_faces_.buffer(), extra_count_, out.extra_faces);
+  read_buffer(kBufferTextureBinding, face_normals.buffer(), face_count_, out.face_normals);
+  read_buffer(kBufferTextureBinding, edges.buffer(), edges.count(), out.edges);
   std::vector<EdgeSegment> boundary;
-  read_buffer(GL_TEXTURE_BUFFER, boundary_edges.buffer(), boundary_edges.count(), boundary);
+  read_buffer(kBufferTextureBinding, boundary_edges.buffer(), boundary_edges.count(), boundary);
   out.boundary_edges.clear();
   for (const EdgeSegment& s : boundary) out.boundary_edges.push_back(s.edge);
-  if (slot_arrows != nullptr) read_buffer(GL_TEXTURE_BUFFER, arrows.buffer(), arrows.count(), *slot_arrows);
-  glBindBuffer(GL_TEXTURE_BUFFER, 0);
+  if (slot_arrows != nullptr) read_buffer(kBufferTextureBinding, arrows.buffer(), arrows.count(), *slot_arrows);
+  glBindBuffer(kBufferTextureBinding, 0);
 }
 
 size_t GpuMesh::bytes() const {
   return vertex_slots_ * 2 * sizeof(glm::vec3) + face_slots_ * 3 * sizeof(uint32_t) +
          extra_count_ * 4 * sizeof(uint32_t) + face_normals.bytes() + edges.bytes() + boundary_edges.bytes() +
-         arrows.bytes() + points.bytes();
+         arrows.bytes() + points.bytes() +
+         (pull_ ? pull_->corners.bytes() + pull_->extra_corners.bytes() + pull_->positions.bytes() +
+                      pull_->normals.bytes()
+                : 0);
+}
+
+void GpuMesh::draw_pulled_triangles(GLint extra_location, GLuint unit) const {
+  pull_->positions.bind(kPullUnits[1]);
+  pull_->normals.bind(kPullUnits[2]);
+  glBindVertexArray(pull_->no_attributes.get());
+  glUniform1i(extra_location, 0);
+  pull_->corners.bind(kPullUnits[0]);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(face_count_ * 3));
+  if (extra_count_ == 0) return;
+  extra_faces_.bind(unit);
+  glUniform1i(extra_location, 1);
+  pull_->extra_corners.bind(kPullUnits[0]);
+  glDrawArrays(GL_TRIANGLES, 0, GLsizei(extra_count_ * 3));
 }
 
 }  // namespace meshedit::gl

@@ -9,10 +9,14 @@
 //   upload) once per eighth of its size. fits() says whether a patch needs more room than there is.
 // - Draw calls cover the slots in use only; hidden slots draw nothing (0 0 0 triangles, flagged segments, invalid
 //   point ids), so no per-frame work depends on what an edit left behind.
+// - Where GLSL has no gl_PrimitiveID (GLES 3, render/gl_api.h), the positions, normals and both triangle lists are
+//   also kept as buffer textures (pull_), written with the same bytes at the same offsets as their buffers, and the
+//   faces are drawn without vertex arrays: shaders/face.vert pulls triangle t's corners by gl_VertexID.
 #pragma once
 
 #include <cstddef>
 #include <cstdint>
+#include <memory>
 #include <vector>
 
 #include "render/gl_objects.h"
@@ -36,8 +40,11 @@ class GpuMesh {
 
   // Draws every face triangle of the bound program: the first triangle of each face slot (gl_PrimitiveID = the
   // face slot), then the packed later triangles of polygons (the face from u_extra_faces by gl_PrimitiveID), setting
-  // the program's `u_extra` uniform (at `extra_location`) to tell them apart. Binds u_extra_faces to `unit`.
+  // the program's `u_extra` uniform (at `extra_location`) to tell them apart. Binds u_extra_faces to `unit`, and
+  // without gl_PrimitiveID the pulled corners, positions and normals to kPullUnits (the program's u_corners,
+  // u_positions and u_normals).
   void draw_triangles(GLint extra_location, GLuint unit) const;
+  static constexpr GLuint kPullUnits[3] = {4, 5, 6};
 
   BufferTexture face_normals{GL_RGBA32F};
   SegmentBatch edges, boundary_edges, arrows;
@@ -52,6 +59,13 @@ class GpuMesh {
   VertexArray face_vao_, extra_vao_;
   Buffer positions_, normals_, triangles_, extra_triangles_;
   BufferTexture extra_faces_{GL_R32UI};
+  // Without gl_PrimitiveID only: the face data again as buffer textures.
+  struct Pull {
+    BufferTexture corners{GL_RGB32UI}, extra_corners{GL_RGB32UI}, positions{GL_RGB32F}, normals{GL_RGB32F};
+    VertexArray no_attributes = make_vertex_array();
+  };
+  std::unique_ptr<Pull> pull_;
+  void draw_pulled_triangles(GLint extra_location, GLuint unit) const;
   size_t vertex_slots_ = 0, face_slots_ = 0;  // allocated
   size_t face_count_ = 0, extra_count_ = 0;   // in use (face slots, packed triangles)
 };

@@ -28,12 +28,12 @@
 #include <string>
 #include <vector>
 
-#include <epoxy/gl.h>
 #include <glm/geometric.hpp>
 #include <glm/gtc/type_ptr.hpp>
 
 #include "core/finite.h"
 #include "core/parallel_for.h"
+#include "render/gl_api.h"
 #include "render/gl_objects.h"
 #include "render/gpu_batches.h"
 #include "render/gpu_mesh.h"
@@ -145,6 +145,10 @@ constexpr float kBackOffsetFactor = 16.0f;
 void draw_triangles(const gl::GpuMesh& mesh, const ShaderProgram& program, bool front_only) {
   const GLint extra = program.uniform("u_extra");
   glUniform1i(program.uniform("u_extra_faces"), 3);
+  // The pulled face data where GLSL has no gl_PrimitiveID (gpu_mesh.h); natively the program has no such uniforms.
+  glUniform1i(program.uniform("u_corners"), GLint(gl::GpuMesh::kPullUnits[0]));
+  glUniform1i(program.uniform("u_positions"), GLint(gl::GpuMesh::kPullUnits[1]));
+  glUniform1i(program.uniform("u_normals"), GLint(gl::GpuMesh::kPullUnits[2]));
   glEnable(GL_POLYGON_OFFSET_FILL);
   glPolygonOffset(1.0f, 1.0f);
   glFrontFace(GL_CCW);  // faces are counter-clockwise seen from outside (core/primitives.h)
@@ -184,9 +188,7 @@ struct MeshRenderer::Impl {
         point_pick(shaders.program("point.vert", "id.frag")),
         changed{gl::BufferTexture(GL_R8UI), gl::BufferTexture(GL_R8UI), gl::BufferTexture(GL_R8UI),
                 gl::BufferTexture(GL_R8UI)} {
-    GLint max_texels = 0;
-    glGetIntegerv(GL_MAX_TEXTURE_BUFFER_SIZE, &max_texels);
-    max_buffer_texels = size_t(std::max(max_texels, 0));
+    max_buffer_texels = gl::max_buffer_texture_texels();
     glGetIntegerv(GL_SAMPLES, &stats.framebuffer_samples);
   }
 
@@ -631,15 +633,15 @@ void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const View
   glDepthFunc(GL_LEQUAL);
   glDepthMask(GL_TRUE);
   glDisable(GL_CULL_FACE);
-  glEnable(GL_PROGRAM_POINT_SIZE);
-  // Drawn single-sampled into a multisampled framebuffer when the options say so.
-  const bool multisample = glIsEnabled(GL_MULTISAMPLE) == GL_TRUE;
-  const bool single_sample = multisample && !options.multisampling;
+  gl::enable_program_point_size();
+  // Drawn single-sampled into a multisampled framebuffer when the options say so (and the GL can switch).
+  const bool multisample = gl::multisample_on();
+  const bool single_sample = multisample && !options.multisampling && gl::kCanSwitchMultisample;
   glGetIntegerv(GL_SAMPLES, &r.stats.framebuffer_samples);
-  if (single_sample) glDisable(GL_MULTISAMPLE);
+  if (single_sample) gl::set_multisample(false);
   r.draw_faces(uniforms, camera, options, highlights);
   r.draw_lines_and_points(uniforms, options, highlights);
-  if (single_sample) glEnable(GL_MULTISAMPLE);
+  if (single_sample) gl::set_multisample(true);
   r.stats.multisampled = multisample && !single_sample;
   glBindVertexArray(0);
   glUseProgram(0);
@@ -667,7 +669,7 @@ ElementRef MeshRenderer::pick(const OrbitCamera& camera, Viewport viewport, int 
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
     glDisable(GL_CULL_FACE);
-    glEnable(GL_PROGRAM_POINT_SIZE);
+    gl::enable_program_point_size();
     r.draw_ids(gl::camera_uniforms(camera, viewport), halfedges, faces_only);
     glBindVertexArray(0);
     glUseProgram(0);

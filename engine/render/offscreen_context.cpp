@@ -1,12 +1,12 @@
-// The surfaceless EGL context (see offscreen_context.h). libepoxy resolves both the EGL entry points
-// and, once the context is current, the GL ones, so the same renderer code runs under GLFW and here.
+// The surfaceless EGL context (see offscreen_context.h; desktop build only). libepoxy resolves both the EGL entry
+// points and, once the context is current, the GL ones, so the same renderer code runs under GLFW and here.
 #include "render/offscreen_context.h"
 
 #include <cstdio>
 
 #include <epoxy/egl.h>
-#include <epoxy/gl.h>
 
+#include "render/gl_api.h"
 #include "render/render_error.h"
 
 namespace meshedit {

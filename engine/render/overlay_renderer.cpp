@@ -5,9 +5,9 @@
 #include <algorithm>
 #include <cmath>
 
-#include <epoxy/gl.h>
 #include <glm/gtc/type_ptr.hpp>
 
+#include "render/gl_api.h"
 #include "render/gpu_batches.h"
 
 namespace meshedit {
@@ -76,7 +76,7 @@ void OverlayRenderer::draw(const OrbitCamera& camera, Viewport viewport, const O
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LEQUAL);
   }
-  glEnable(GL_PROGRAM_POINT_SIZE);
+  gl::enable_program_point_size();
   r.segment.use();
   gl::set_camera(r.segment, uniforms);
   glUniform1i(r.segment.uniform("u_segments"), 1);

@@ -5,8 +5,7 @@
 #include <cstdio>
 #include <string>
 
-#include <epoxy/gl.h>
-
+#include "render/gl_api.h"
 #include "render/render_error.h"
 
 namespace meshedit {

@@ -5,9 +5,8 @@
 #include <cstdlib>
 #include <utility>
 
-#include <epoxy/gl.h>
-
 #include "core/file_bytes.h"
+#include "render/gl_api.h"
 #include "render/render_error.h"
 
 namespace meshedit {
@@ -33,8 +32,9 @@ std::string program_log(GLuint program) {
 
 GLuint compile(GLenum type, const std::string& source, const std::filesystem::path& path) {
   const GLuint shader = glCreateShader(type);
-  const char* text = source.c_str();
-  glShaderSource(shader, 1, &text, nullptr);
+  // The files have no #version line: the dialect's prologue (gl_api.h) comes first, then the file from its line 1.
+  const char* texts[2] = {gl::kGlslPrologue, source.c_str()};
+  glShaderSource(shader, 2, texts, nullptr);
   glCompileShader(shader);
   GLint ok = GL_FALSE;
   glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);

@@ -6,7 +6,8 @@
 //   2. <directory of the running binary>/shaders (an installed or copied layout);
 //   3. <source tree>/shaders (MESHEDIT_SOURCE_DIR, compiled in: a build tree finds its sources).
 // A missing file is a RenderError listing every path that was tried; a compile or link error is a
-// RenderError quoting the file names and the driver's log. Shaders are GLSL 330 core.
+// RenderError quoting the file names and the driver's log. Shaders are GLSL 330 core or GLSL ES 3.00 (WebGL 2),
+// written once without a #version line: the loader puts the running GL's prologue first (render/gl_api.h).
 // Building programs needs a current OpenGL 3.3 core context; finding and reading files does not.
 #pragma once
 

@@ -1,0 +1,34 @@
+# The web build's output, a static site in <build>/site (included by engine/app/CMakeLists.txt under emscripten):
+#   index.html (web/index.html: the page, its canvas and its start-up), meshedit.js, meshedit.wasm and meshedit.data,
+# the last holding the files the program reads, packaged under MESHEDIT_DATA_DIR (/meshedit) as in the source tree
+# (lessons/, shaders/, assets/, scripts/student/, scripts/exercises/), and the two DejaVu fonts where the window
+# looks for them natively. Any static file server serves the folder as it is.
+set(site_dir "${PROJECT_BINARY_DIR}/site")
+set_target_properties(meshedit PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${site_dir}" SUFFIX ".js")
+
+set(MESHEDIT_FONT_FILES /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
+    /usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf CACHE STRING "The window's two fonts, packaged in the page")
+
+set(packaged "")  # SHELL: keeps CMake from merging the repeated --preload-file options
+foreach(folder lessons shaders assets scripts/student scripts/exercises)
+  list(APPEND packaged "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/${folder}@${MESHEDIT_DATA_DIR}/${folder}")
+endforeach()
+foreach(font IN LISTS MESHEDIT_FONT_FILES)
+  list(APPEND packaged "SHELL:--preload-file ${font}@${font}")
+endforeach()
+
+target_link_options(meshedit PRIVATE
+  ${packaged}
+  -sALLOW_MEMORY_GROWTH=1
+  -sINITIAL_MEMORY=67108864
+  -sTOTAL_STACK=5242880
+  # web/index.html writes the files the user hands the page with FS and gives their paths to the program with ccall.
+  "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','FS']")
+# The packaged folders are read at link time: a change in them relinks the page.
+file(GLOB_RECURSE packaged_files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lessons/*" "${PROJECT_SOURCE_DIR}/shaders/*"
+     "${PROJECT_SOURCE_DIR}/assets/*" "${PROJECT_SOURCE_DIR}/scripts/student/*"
+     "${PROJECT_SOURCE_DIR}/scripts/exercises/*")
+set_property(TARGET meshedit APPEND PROPERTY LINK_DEPENDS ${packaged_files})
+
+# The page itself: copied at configure time, and again whenever it changes (configure_file makes CMake watch it).
+configure_file("${PROJECT_SOURCE_DIR}/web/index.html" "${site_dir}/index.html" COPYONLY)

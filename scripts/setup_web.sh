@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Installs what the web build (docs/WEB.md) needs on top of scripts/setup.sh's packages, and only what is missing,
+# so running it twice is harmless: Debian's emscripten (the compiler, its GLFW/WebGL ports and its Node.js tools),
+# Chromium to open the page headless, and python3 to serve the site locally. The pinned upstream sources the build
+# compiles (ImGui, Lua, tinyxml2) are not packages: the build takes them from MESHEDIT_VENDOR_DIR or downloads them.
+set -euo pipefail
+here="$(dirname "$0")"
+
+"$here/setup.sh"
+
+packages=(
+  emscripten
+  chromium
+  python3
+)
+
+"$here/install_missing.sh" setup_web "${packages[@]}"

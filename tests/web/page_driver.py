@@ -1,0 +1,228 @@
+#!/usr/bin/env python3
+"""page_driver.py: opens the web page in headless Chromium and drives it over the DevTools protocol (a pipe, the
+standard library only), in real time, until the page's test hook reports the verdict of its ?actions= script.
+
+    page_driver.py URL [--pick FILE] [--drop FILE] [--download NAME --downloads DIR] [--screenshot PNG]
+
+--pick FILE answers the page's file picker with FILE when the program opens it (the script's `open-picker`): the
+  browser's own chooser is intercepted and given the file, as a person choosing it would. Until it opens, the page
+  gets a user gesture every poll, as a click would give it (a browser shows a picker only shortly after one).
+--drop FILE drops FILE on the middle of the page once the program has drawn its first frame, as a person dragging
+  it from a file manager does.
+--download NAME expects the page to download a PNG named NAME into DIR, and checks it is a PNG of the canvas's size.
+--screenshot PNG keeps what the page shows when the script has ended.
+
+Prints what the program printed (<pre id="log">), the first frame's time and the verdict. Exit status: 0 when the
+page said "actions: all expectations held" (and the download, if asked for, arrived whole); 1 otherwise.
+"""
+import argparse
+import base64
+import json
+import os
+import select
+import struct
+import subprocess
+import sys
+import tempfile
+import time
+
+CHROMIUM = ["chromium", "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+            "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
+            "--window-size=1280,800", "--remote-debugging-pipe"]
+
+
+class Browser:
+    """Chromium with its DevTools protocol on fds 3 (commands in) and 4 (replies and events out)."""
+
+    def __init__(self, profile):
+        commands_r, self.commands = os.pipe()
+        self.replies, replies_w = os.pipe()
+
+        def on_fds_3_and_4():
+            os.dup2(commands_r, 3)
+            os.dup2(replies_w, 4)
+
+        self.process = subprocess.Popen(CHROMIUM + ["--user-data-dir=" + profile, "about:blank"],
+                                        stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                                        preexec_fn=on_fds_3_and_4, pass_fds=(3, 4))
+        os.close(commands_r)
+        os.close(replies_w)
+        self.buffer = b""
+        self.last_id = 0
+        self.events = []
+
+    def send(self, method, params=None, session=None):
+        self.last_id += 1
+        message = {"id": self.last_id, "method": method, "params": params or {}}
+        if session:
+            message["sessionId"] = session
+        os.write(self.commands, json.dumps(message).encode() + b"\0")
+        return self.last_id
+
+    def receive(self, timeout):
+        """The next message, or None after `timeout` seconds without one."""
+        deadline = time.monotonic() + timeout
+        while b"\0" not in self.buffer:
+            left = deadline - time.monotonic()
+            if left <= 0 or not select.select([self.replies], [], [], left)[0]:
+                return None
+            chunk = os.read(self.replies, 1 << 20)
+            if not chunk:
+                raise RuntimeError("chromium closed its DevTools pipe")
+            self.buffer += chunk
+        message, _, self.buffer = self.buffer.partition(b"\0")
+        return json.loads(message)
+
+    def call(self, method, params=None, session=None, timeout=30):
+        wanted = self.send(method, params, session)
+        deadline = time.monotonic() + timeout
+        while True:
+            message = self.receive(max(0.0, deadline - time.monotonic()))
+            if message is None:
+                raise RuntimeError(method + ": no reply in %d s" % timeout)
+            if message.get("id") == wanted:
+                if "error" in message:
+                    raise RuntimeError(method + ": " + message["error"].get("message", str(message["error"])))
+                return message.get("result", {})
+            if "method" in message:
+                self.events.append(message)
+
+    def take_events(self, timeout):
+        message = self.receive(timeout)
+        while message is not None:
+            if "method" in message:
+                self.events.append(message)
+            message = self.receive(0)
+        events, self.events = self.events, []
+        return events
+
+    def close(self):
+        try:
+            self.send("Browser.close")
+            self.process.wait(timeout=10)
+        except Exception:
+            self.process.kill()
+            self.process.wait()
+
+
+PAGE_STATE = """JSON.stringify({
+  actions: document.body.dataset.actions || '',
+  firstFrameMs: document.body.dataset.firstFrameMs || '',
+  log: (document.getElementById('log') || {}).textContent || '',
+  width: document.getElementById('canvas').width,
+  height: document.getElementById('canvas').height,
+  cssWidth: window.innerWidth,
+  cssHeight: window.innerHeight})"""
+
+
+def png_size(path):
+    with open(path, "rb") as f:
+        head = f.read(24)
+    if len(head) < 24 or head[:8] != b"\x89PNG\r\n\x1a\n" or head[12:16] != b"IHDR":
+        return None
+    return struct.unpack(">II", head[16:24])
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
+    parser.add_argument("url")
+    parser.add_argument("--pick")
+    parser.add_argument("--drop")
+    parser.add_argument("--download")
+    parser.add_argument("--downloads")
+    parser.add_argument("--screenshot")
+    parser.add_argument("--timeout", type=float, default=120.0)
+    args = parser.parse_args()
+    if args.download and not args.downloads:
+        parser.error("--download needs --downloads DIR")
+
+    profile = tempfile.TemporaryDirectory()
+    browser = Browser(profile.name)
+    ok = False
+    try:
+        target = browser.call("Target.createTarget", {"url": "about:blank"})["targetId"]
+        session = browser.call("Target.attachToTarget", {"targetId": target, "flatten": True})["sessionId"]
+        browser.call("Page.enable", session=session)
+        browser.call("Runtime.enable", session=session)
+        if args.pick:
+            browser.call("Page.setInterceptFileChooserDialog", {"enabled": True}, session)
+        if args.download:
+            os.makedirs(args.downloads, exist_ok=True)
+            stale = os.path.join(args.downloads, args.download)
+            if os.path.exists(stale):
+                os.remove(stale)
+            browser.call("Browser.setDownloadBehavior",
+                         {"behavior": "allow", "downloadPath": os.path.abspath(args.downloads), "eventsEnabled": True})
+        browser.call("Page.navigate", {"url": args.url}, session)
+
+        deadline = time.monotonic() + args.timeout
+        state = {}
+        picked = dropped = False
+        download_done = False
+        while time.monotonic() < deadline:
+            for event in browser.take_events(0.25):
+                method, params = event["method"], event.get("params", {})
+                if method == "Page.fileChooserOpened" and args.pick and not picked:
+                    browser.call("DOM.setFileInputFiles",
+                                 {"files": [os.path.abspath(args.pick)], "backendNodeId": params["backendNodeId"]},
+                                 session)
+                    picked = True
+                    print("page_driver: the page's file picker opened; picked " + args.pick)
+                elif method == "Runtime.exceptionThrown":
+                    details = params.get("exceptionDetails", {})
+                    print("page_driver: uncaught in the page: " +
+                          details.get("exception", {}).get("description", details.get("text", "")))
+                elif method == "Browser.downloadProgress" and params.get("state") == "completed":
+                    download_done = True
+            reply = browser.call("Runtime.evaluate", {"expression": PAGE_STATE, "returnByValue": True}, session)
+            state = json.loads(reply["result"].get("value") or "{}")
+            if state.get("actions"):
+                break
+            if not state.get("firstFrameMs"):
+                continue
+            if args.pick and not picked:
+                browser.call("Runtime.evaluate", {"expression": "0", "userGesture": True}, session)
+            if args.drop and not dropped:
+                x, y = state["cssWidth"] / 2, state["cssHeight"] / 2
+                data = {"items": [], "files": [os.path.abspath(args.drop)], "dragOperationsMask": 1}
+                for kind in ("dragEnter", "dragOver", "drop"):
+                    browser.call("Input.dispatchDragEvent", {"type": kind, "x": x, "y": y, "data": data}, session)
+                dropped = True
+                print("page_driver: dropped " + args.drop + " on the page")
+
+        print(state.get("log", "").rstrip())
+        if state.get("firstFrameMs"):
+            print("page_driver: first frame %s ms after the page started" % state["firstFrameMs"])
+        verdict = state.get("actions") or "no verdict in %d s" % args.timeout
+        print("page_driver: " + verdict)
+        ok = verdict == "actions: all expectations held"
+
+        if args.screenshot:
+            shot = browser.call("Page.captureScreenshot", {"format": "png"}, session)
+            with open(args.screenshot, "wb") as f:
+                f.write(base64.b64decode(shot["data"]))
+        if args.download:
+            path = os.path.join(args.downloads, args.download)
+            wait_until = time.monotonic() + 15
+            while not download_done and time.monotonic() < wait_until:
+                for event in browser.take_events(0.25):
+                    if event["method"] == "Browser.downloadProgress" and event["params"].get("state") == "completed":
+                        download_done = True
+            size = png_size(path) if download_done and os.path.exists(path) else None
+            canvas = (state.get("width"), state.get("height"))
+            if size is None:
+                print("page_driver: no PNG downloaded as " + path)
+                ok = False
+            elif size != canvas:
+                print("page_driver: %s is %dx%d, the canvas %sx%s" % ((path,) + size + canvas))
+                ok = False
+            else:
+                print("page_driver: downloaded %s, a %dx%d PNG (the canvas's size)" % ((path,) + size))
+    finally:
+        browser.close()
+        profile.cleanup()
+    return 0 if ok else 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
