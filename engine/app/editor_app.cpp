@@ -33,6 +33,7 @@ EditorApp::EditorApp()
   lesson_host_ = std::make_unique<WindowLessonHost>(*this);
   lesson_ = make_lesson_runner();
   lesson_panel_.lessons_dir = lessons_dir();
+  lesson_panel_.lessons_editable = host_files_on_users_disk();
   refresh_lessons(lesson_panel_);
   lesson_panel_.reload = [this](LessonRunner&) { return reload_lesson(); };
   lesson_panel_.show_your_turn = [this] { show_your_turn_mine(); };

@@ -47,6 +47,10 @@ std::string host_last_error();
 // The words a user needs when no window can be opened.
 std::string host_no_window_hint();
 
+// Whether the program's files (lessons, exercises) are files on the user's disk, which the user can edit in an editor
+// of their own and the program reloads. A page's files are packaged into its in-memory file system instead.
+bool host_files_on_users_disk();
+
 // Whether the host has a file picker of its own for the user's disk (a page: the browser's). The desktop has none:
 // the window's Open panel reads the disk itself.
 bool host_has_file_picker();

@@ -53,6 +53,8 @@ std::string host_no_window_hint() {
          ". Without a display, try `meshedit demo` or `meshedit render`";
 }
 
+bool host_files_on_users_disk() { return true; }
+
 bool host_has_file_picker() { return false; }
 
 void host_show_file_picker() {}

@@ -112,6 +112,8 @@ std::string host_last_error() { return "the browser gave no WebGL 2 context"; }
 
 std::string host_no_window_hint() { return ". This page needs a browser with WebGL 2"; }
 
+bool host_files_on_users_disk() { return false; }
+
 bool host_has_file_picker() { return true; }
 
 void host_show_file_picker() {

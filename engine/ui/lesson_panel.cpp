@@ -28,8 +28,12 @@ ImVec4 error_colour() { return im_colour(ui_palette().error); }
 ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }
 
 void draw_lesson_list(LessonPanelState& state) {
-  ImGui::TextWrapped("Pick a lesson. Each one is a Lua file in %s; edit it and save, and the lesson reloads.",
-                     state.lessons_dir.string().c_str());
+  if (state.lessons_editable) {
+    ImGui::TextWrapped("Pick a lesson. Each one is a Lua file in %s; edit it and save, and the lesson reloads.",
+                       state.lessons_dir.string().c_str());
+  } else {
+    ImGui::TextWrapped("Pick a lesson.");
+  }
   ImGui::Separator();
   if (state.lesson_files.empty()) ImGui::TextDisabled("(no lessons found)");
   for (const fs::path& file : state.lesson_files) {

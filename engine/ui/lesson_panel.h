@@ -41,7 +41,8 @@ struct LessonPanelState {
   static constexpr double kReloadCheckSeconds = 0.5;
 
   bool open = true;
-  std::filesystem::path lessons_dir;                // where the lesson list comes from
+  std::filesystem::path lessons_dir;  // where the lesson list comes from
+  bool lessons_editable = true;  // lessons_dir is on the user's disk, to edit and save (not a page's packaged files)
   std::vector<std::filesystem::path> lesson_files;  // *.lua in lessons_dir, sorted; filled by refresh_lessons
   std::optional<std::filesystem::path> requested;   // a lesson the user picked from the list this frame
   std::filesystem::file_time_type loaded_time{};
