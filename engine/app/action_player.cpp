@@ -56,7 +56,7 @@ bool ActionPlayer::step(EditorApp& app) {
       }
     });
     if (quit) return false;
-    if (waiting_for_message_) return true;  // what follows a wait-message runs after the message arrived
+    if (waiting_for_message_ || wait_frames_ > 0) return true;  // what follows a wait runs after it
     const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0 &&
                                !reads_a_drawn_frame(actions_[next_]);
     if (!checks_follow) return true;

@@ -4,9 +4,10 @@
 // Invariants: an action that throws, out of memory included, counts as a failed expectation (counted before it is
 // logged with its source line, and logged without a copy of its message) and the script goes on with the next
 // action; step() runs between frames, outside the frame guard, so it never throws: whatever escapes an action and its
-// report is an Error in the status line (document/exception_report.h). `frames N` makes the next N steps wait; checks
-// (`expect-*`) run in the step of the action before them, so they need no frame of their own, except the checks of
-// what a drawn frame computed (expect-gpu-update, expect-mine), which run after the frame that follows that action.
+// report is an Error in the status line (document/exception_report.h). `frames N` makes the next N steps wait.
+// Checks (`expect-*`) run in the step of the action before them, so they need no frame of their own, except the checks
+// of what a drawn frame computed (expect-gpu-update, expect-mine), which run after the frame that follows that action,
+// and the checks after a wait (`frames`, `wait-message`), which run once it is over.
 // `wait-message N TEXT` holds the script until the status line contains TEXT (what arrives from outside, such as a
 // file the page receives), checked once per frame, and fails after N frames without it.
 #pragma once
