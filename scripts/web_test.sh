@@ -6,8 +6,8 @@
 # real time over the DevTools protocol, with the DRIVER OPTIONS (--pick FILE, --drop FILE, --download NAME: a file
 # for the page's picker, a file dropped on the page, a PNG the page must download), and reads the verdict from the
 # page. Passes when the page reports "actions: all expectations held". Keeps the page's last screenshot, its
-# downloads and the server's log in build-web/test/. Exit status: 0 passed, 1 failed, 77 skipped (no emscripten or
-# no chromium: CTest's skip code).
+# downloads and the server's log in build-web/test/. Exit status: 0 passed, 1 failed, 77 skipped (no emscripten, no
+# chromium, or neither ../shared/vendor nor a network to fetch the pinned sources: CTest's skip code).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 actions="${1:-tests/web/lesson4_flip.txt}"
@@ -18,6 +18,12 @@ name=$(basename "$actions" .txt)
 for tool in emcmake chromium python3; do
   command -v "$tool" >/dev/null || { echo "web_test: skipped: no $tool (scripts/setup_web.sh installs it)"; exit 77; }
 done
+# The pinned ImGui, Lua and tinyxml2 sources come from ../shared/vendor, or else from upstream (scripts/web.sh).
+if [ ! -d ../shared/vendor ] && ! python3 -c 'import urllib.request; urllib.request.urlopen("https://github.com", timeout=10)' \
+  2>/dev/null; then
+  echo "web_test: skipped: no ../shared/vendor and no way to download the pinned sources"
+  exit 77
+fi
 
 ./scripts/web.sh --no-serve >/dev/null
 out=build-web/test
