@@ -202,7 +202,7 @@ void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dve
   }
 }
 
-// The term of row r's triangle, taken from its first corner as add_face_terms takes it.
+// The term of a row's triangle, taken from its first corner as add_face_terms takes it.
 glm::dvec3 row_term(const HalfedgeMesh& mesh, const TriangleRow& row) {
   const VertexId* c = row.corner;
   return corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
