@@ -277,7 +277,7 @@ void zero_sums(std::vector<glm::dvec3>& sums, size_t vertices, int threads) {
     return;
   }
   parallel_for(threads, vertices,
-               [&](size_t begin, size_t end) { std::fill(sums.begin() + begin, sums.begin() + end, glm::dvec3(0.0)); });
+               [&](size_t begin, size_t end) { std::fill(sums.data() + begin, sums.data() + end, glm::dvec3(0.0)); });
 }
 
 // vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
