@@ -22,6 +22,8 @@ target_link_options(meshedit PRIVATE
   -sALLOW_MEMORY_GROWTH=1
   -sINITIAL_MEMORY=67108864
   -sTOTAL_STACK=5242880
+  # The browser's storage (IndexedDB) for the student's saved files: web/index.html mounts it at /kept.
+  -lidbfs.js
   # web/index.html writes the files the user hands the page with FS and gives their paths to the program with ccall.
   "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','FS']")
 # The packaged folders are read at link time: a change in them relinks the page.

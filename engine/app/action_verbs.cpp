@@ -291,6 +291,12 @@ std::string run_exercise(EditorApp& app, const Action&) {
       .reason;
 }
 
+std::string run_mine_fails(EditorApp& app, const Action& a) {
+  const Check run = app.exercises().run_mine(app.document(), app.selection());
+  if (run) return "Run mine ran";
+  return expect_contains(a, run.reason, "Run mine was refused with");
+}
+
 std::string replay_start(EditorApp& app, const Action&) { return app.exercises().start_replay(app.document()).reason; }
 
 std::string replay_step(EditorApp& app, const Action& a) {
@@ -308,6 +314,46 @@ std::string expect_exercise_run(EditorApp& app, const Action& a) {
                                     "): " + (run->mine ? run->report.summary() : "the reference alone")
                               : std::string("none");
   return expect_contains(a, got, "the Exercises tab's last run is");
+}
+
+std::string editor_open(EditorApp& app, const Action&) {
+  app.show_student_code();
+  return "";
+}
+
+std::string editor_set_line(EditorApp& app, const Action& a) {
+  const size_t line = std::stoul(a.args.at(0));
+  Action text = a;
+  text.args.erase(text.args.begin());
+  if (!app.student_edit().set_line(line, rest_of_line(text))) {
+    return "the editor's file has no line " + a.args[0];
+  }
+  return "";
+}
+
+std::string editor_save(EditorApp& app, const Action&) { return app.save_student_code().reason; }
+
+std::string expect_editor_line(EditorApp& app, const Action& a) {
+  const std::string& text = app.student_edit().text();
+  size_t start = 0;
+  for (size_t at = 1, line = std::stoul(a.args.at(0)); at < line; ++at) {
+    start = text.find('\n', start);
+    if (start == std::string::npos) return "the editor's file has no line " + a.args[0];
+    start += 1;
+  }
+  const std::string line = text.substr(start, text.find('\n', start) - start);
+  Action rest = a;
+  rest.args.erase(rest.args.begin());
+  return expect_contains(rest, line, "line " + a.args[0] + " is");
+}
+
+std::string expect_editor_error(EditorApp& app, const Action& a) {
+  const std::optional<size_t> line = app.student_code_error_line();
+  const std::string got = line ? std::to_string(*line) : "none";
+  if (got != a.args.at(0)) return "the editor marks line " + got + " (" + app.student_code_error() + ")";
+  Action rest = a;
+  rest.args.erase(rest.args.begin());
+  return expect_contains(rest, app.student_code_error(), "the editor's error is");
 }
 
 std::string expect_mine(EditorApp& app, const Action& a) {
@@ -463,10 +509,25 @@ const ActionVerb kVerbs[] = {
      "read from (curve and patch: where the views' \"mine\", key M, reads them)",
      exercise},
     {"run-mine", 0, "run-mine   the Exercises tab's Run mine", run_exercise<true>},
+    {"run-mine-fails", -1,
+     "run-mine-fails TEXT...   the Exercises tab's Run mine, refused with a reason containing TEXT", run_mine_fails},
     {"run-reference", 0, "run-reference   the Exercises tab's Run the reference", run_exercise<false>},
     {"replay-start", 0, "replay-start   starts the replay of the last run's writes", replay_start},
     {"replay-step", 1, "replay-step K   the replay at write K", replay_step},
     {"replay-finish", 0, "replay-finish   ends the replay", replay_finish},
+    {"editor-open", 0, "editor-open   View > Your code: the active exercise's student file in the editor tab",
+     editor_open},
+    {"editor-set-line", -1,
+     "editor-set-line N TEXT...   line N of the editor's text becomes TEXT (one past the last adds a line), unsaved",
+     editor_set_line},
+    {"editor-save", 0, "editor-save   the editor's Save (Ctrl+S): writes the student file, which the exercise loads",
+     editor_save},
+    {"expect-editor-line", -1, "expect-editor-line N TEXT...   line N of the editor's text contains TEXT",
+     expect_editor_line},
+    {"expect-editor-error", -1,
+     "expect-editor-error N|none [TEXT...]   the editor marks line N as the line of its file's error (none: no "
+     "line), and the error contains TEXT",
+     expect_editor_error},
     {"expect-selected", 1, "expect-selected h12   the selection is that element", expect_selected},
     {"expect-field", 3, "expect-field h0 next h3   the field of a live element holds that value", expect_field},
     {"expect-changed", 2, "expect-changed h0 next   the last operation changed that cell", expect_changed},

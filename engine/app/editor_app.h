@@ -55,6 +55,7 @@
 #include "document/mesh_document.h"
 #include "document/selection.h"
 #include "document/settings.h"
+#include "document/student_edit.h"
 #include "document/subdivision_actions.h"
 #include "document/window_layout.h"
 #include "render/camera.h"
@@ -73,6 +74,7 @@
 #include "ui/pointer_tables.h"
 #include "ui/script_console.h"
 #include "ui/status_bar.h"
+#include "ui/student_editor.h"
 
 namespace meshedit {
 
@@ -188,6 +190,24 @@ class EditorApp {
   void run_console(const std::string& code);
   const ScriptConsole& console() const { return console_; }
   ExerciseSession& exercises() { return exercises_; }
+  // The "Your code" tab (app/editor_student_code.cpp): the active exercise's student file as its editor shows it, and
+  // its save, which the Exercises tab then loads as any save of the file (an Info, or a Warning with the error when the
+  // saved file does not load). The page's host then keeps the file in the browser's storage (host_keep_file).
+  StudentEdit& student_edit();
+  Check save_student_code();
+  // The error the editor marks: the file's load error, else the last mine run's error; and the line it names.
+  std::string student_code_error();
+  std::optional<size_t> student_code_error_line();
+  StudentEditorState& student_editor() { return student_editor_; }
+  // The files a page's student picked or dropped (host_take_received_files): a .lua named as a file of the student
+  // folder replaces that file (kept, and loaded as a save is; the status line names it); the rest open as dropped
+  // files do.
+  void receive_files(const std::vector<std::string>& paths);
+  // File > Download your file: the editor's file, saved first when it has unsaved changes, handed to the user
+  // (host_hand_over: a page's browser downloads it).
+  void download_student_code();
+  // View > Your code: opens the tab and the right column, the tab in front next frame.
+  void show_student_code();
   // The curve view's state (what a lesson reads with curve_t() and curve_points(); the `curve-t` action sets its t).
   CurveEditorState& curve_editor() { return curve_; }
   const CurveEditorState& curve_editor() const { return curve_; }
@@ -294,6 +314,9 @@ class EditorApp {
   Check run_loop(bool one_phase);
   void take_lesson_request();          // a lesson picked from the list, or "Lessons" (back to the list), this frame
   void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
+  void draw_student_code_tab();        // the "Your code" tab's contents (editor_student_code.cpp)
+  // In a page (no editor of the student's own), opening the Exercises tab opens "Your code" beside it.
+  void open_student_code_with_exercises();
 
   ShaderLibrary shaders_;
   std::unique_ptr<MeshRenderer> mesh_renderer_;
@@ -330,6 +353,9 @@ class EditorApp {
   ElementRef lesson_selection_;  // the selection the lesson last heard about
   ExerciseSession exercises_;
   ExercisePanelState exercise_panel_;
+  StudentEdit student_edit_;
+  StudentEditorState student_editor_;
+  bool exercises_were_open_ = false;  // the Exercises tab was open last frame (open_student_code_with_exercises)
   BezierMine bezier_mine_;
   ScriptConsole console_;
   ConsolePanelState console_panel_;
@@ -360,7 +386,7 @@ class EditorApp {
   float font_pixels_ = Settings::kDefaultFontPx;
   WindowLayout layout_;
   UiProbe probe_;
-  enum class RightTab { None, Tables, Inspector, Exercises, Repairs };
+  enum class RightTab { None, Tables, Inspector, Exercises, Code, Repairs };
   RightTab select_tab_ = RightTab::None;  // a tab to bring to the front at the next frame (I, X)
   // The view in framebuffer pixels: x and y from the framebuffer's top-left corner.
   struct PixelRect {

@@ -153,6 +153,11 @@ void EditorApp::draw_right_column() {
       draw_exercise_panel_contents(exercises_, exercise_panel_, doc_, selection_);
       ImGui::EndTabItem();
     }
+    open_student_code_with_exercises();
+    if (student_editor_.open && tab("Your code", RightTab::Code, &student_editor_.open)) {
+      draw_student_code_tab();
+      ImGui::EndTabItem();
+    }
     if (!repairs_.empty() && repairs_tab_open_ && tab("Repairs", RightTab::Repairs, &repairs_tab_open_)) {
       draw_repairs_tab();
       ImGui::EndTabItem();

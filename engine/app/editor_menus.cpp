@@ -92,6 +92,13 @@ void EditorApp::draw_file_menu() {
   if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
   if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
   if (ImGui::MenuItem("Screenshot", shortcut_of(K::Screenshot))) request_screenshot("meshedit-screenshot.png");
+  // A page's student files live in the browser: these take them to and from the student's disk for submission.
+  if (!host_files_on_users_disk()) {
+    ImGui::Separator();
+    const std::string name = exercises_.file().filename().string();
+    if (ImGui::MenuItem(("Download your " + name).c_str())) download_student_code();
+    if (ImGui::MenuItem("Upload your .lua from this computer...")) host_show_file_picker();
+  }
   ImGui::Separator();
   key_menu_item("Quit", K::Quit);
   ImGui::EndMenu();
@@ -155,6 +162,10 @@ void EditorApp::draw_view_menu() {
   key_menu_item("Inspector", K::Inspector, true, inspector_.open);
   ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
   key_menu_item("Exercises: mine vs reference", K::ToggleExercises, true, exercise_panel_.open);
+  if (ImGui::MenuItem("Your code (the exercise's file)", nullptr, student_editor_.open)) {
+    if (student_editor_.open) student_editor_.open = false;
+    else show_student_code();
+  }
   key_menu_item("Lua console", K::Console, true, console_panel_.open);
   if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
     const std::pair<const char*, UpAxisChoice> choices[] = {

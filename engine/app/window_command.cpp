@@ -94,7 +94,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     }
     window.begin_frame();
     app.open_dropped(window.take_dropped_files());
-    app.open_dropped(host_take_received_files());  // a page's picked and dropped files (window_host.h)
+    app.receive_files(host_take_received_files());  // a page's picked and dropped files (window_host.h)
     if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
     app.frame(window.framebuffer_width(), window.framebuffer_height(), run->frame_ms);
     run_guarded(app.document(), [&] { window.set_title(app.title()); });  // outside the frame guard; allocates

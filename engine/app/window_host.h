@@ -69,4 +69,10 @@ std::vector<std::string> host_take_received_files();
 // line ("downloaded as NAME"), and throws std::runtime_error when the browser could not start the download.
 std::string host_hand_over(const std::filesystem::path& written);
 
+// Keeps a file the user changed in the program (the student's code, saved in the window's editor) where it outlives
+// the program. On the desktop it is on the user's disk already: returns "". In a page the browser's storage
+// (IndexedDB) keeps the page's student folder, and web/index.html puts it back before the program starts; this
+// returns the words for the status line ("kept in this browser") and starts the write, which finishes a moment later.
+std::string host_keep_file(const std::filesystem::path& written);
+
 }  // namespace meshedit

@@ -63,4 +63,6 @@ std::vector<std::string> host_take_received_files() { return {}; }
 
 std::string host_hand_over(const std::filesystem::path&) { return ""; }
 
+std::string host_keep_file(const std::filesystem::path&) { return ""; }
+
 }  // namespace meshedit

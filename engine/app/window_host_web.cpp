@@ -3,7 +3,8 @@
 // sizes are both the canvas's size in device pixels, and mouse positions arrive in those pixels too.
 // Files: web/index.html owns the page's file picker (<input id="open-file">) and the drop on the page; it writes each
 // file the user hands over into /uploads and calls meshedit_receive_file. Downloads are made here from the file's
-// bytes in the in-memory file system.
+// bytes in the in-memory file system. The student's saved files are copied into the browser's storage (IndexedDB,
+// mounted by web/index.html at /kept), which the page puts back over the packaged scripts/student at its next start.
 #include <GLFW/glfw3.h>
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
@@ -40,6 +41,21 @@ EM_JS(char*, page_download, (const char* path, const char* name, const char* typ
     link.click();
     link.remove();
     setTimeout(() => URL.revokeObjectURL(link.href), 60000);
+    return allocateUTF8("");
+  } catch (e) {
+    return allocateUTF8(String(e && e.message ? e.message : e));
+  }
+});
+// Copies the file at `path` into the browser's storage (web/index.html mounts IndexedDB at /kept and puts its
+// student/ files back over the packaged ones before the program starts) and starts the write; "" when it started.
+EM_JS(char*, page_keep_file, (const char* path), {
+  try {
+    const from = UTF8ToString(path);
+    FS.mkdirTree('/kept/student');
+    FS.writeFile('/kept/student/' + from.split('/').pop(), FS.readFile(from));
+    FS.syncfs(false, (error) => {
+      if (error) err('meshedit: the browser did not keep ' + from + ': ' + error);
+    });
     return allocateUTF8("");
   } catch (e) {
     return allocateUTF8(String(e && e.message ? e.message : e));
@@ -128,6 +144,12 @@ std::string host_hand_over(const std::filesystem::path& written) {
   std::unique_ptr<char, void (*)(void*)> failure(page_download(written.c_str(), name.c_str(), type), std::free);
   if (failure && *failure) throw std::runtime_error("the browser could not download " + name + ": " + failure.get());
   return "downloaded as " + name;
+}
+
+std::string host_keep_file(const std::filesystem::path& written) {
+  std::unique_ptr<char, void (*)(void*)> failure(page_keep_file(written.c_str()), std::free);
+  if (failure && *failure) return "not kept in this browser: " + std::string(failure.get());
+  return "kept in this browser";
 }
 
 }  // namespace meshedit

@@ -3,6 +3,7 @@
 standard library only), in real time, until the page's test hook reports the verdict of its ?actions= script.
 
     page_driver.py URL [--pick FILE] [--drop FILE] [--download NAME --downloads DIR] [--screenshot PNG]
+                       [--then ACTIONS]
 
 --pick FILE answers the page's file picker with FILE when the program opens it (the script's `open-picker`): the
   browser's own chooser is intercepted and given the file, as a person choosing it would. Until it opens, the page
@@ -11,6 +12,8 @@ standard library only), in real time, until the page's test hook reports the ver
   it from a file manager does.
 --download NAME expects the page to download a PNG named NAME into DIR, and checks it is a PNG of the canvas's size.
 --screenshot PNG keeps what the page shows when the script has ended.
+--then ACTIONS loads the page again, once its script held, in the same browser profile (its storage kept, as a
+  student's reload keeps it), with the actions of the file ACTIONS in place of the URL's, and waits for their verdict.
 
 Prints what the program printed (<pre id="log">), the first frame's time and the verdict. Exit status: 0 when the
 page said "actions: all expectations held" (and the download, if asked for, arrived whole); 1 otherwise.
@@ -25,6 +28,7 @@ import subprocess
 import sys
 import tempfile
 import time
+import urllib.parse
 
 CHROMIUM = ["chromium", "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
             "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
@@ -132,6 +136,7 @@ def main():
     parser.add_argument("--downloads")
     parser.add_argument("--screenshot")
     parser.add_argument("--timeout", type=float, default=120.0)
+    parser.add_argument("--then")
     args = parser.parse_args()
     if args.download and not args.downloads:
         parser.error("--download needs --downloads DIR")
@@ -196,6 +201,29 @@ def main():
         verdict = state.get("actions") or "no verdict in %d s" % args.timeout
         print("page_driver: " + verdict)
         ok = verdict == "actions: all expectations held"
+
+        # --then ACTIONS: the page loaded again in the same browser profile (its storage kept), with those actions.
+        if ok and args.then:
+            with open(args.then) as f:
+                again = f.read()
+            url = urllib.parse.urlsplit(args.url)
+            query = [(k, v) for k, v in urllib.parse.parse_qsl(url.query, keep_blank_values=True) if k != "actions"]
+            query.append(("actions", again))
+            url = url._replace(query=urllib.parse.urlencode(query, quote_via=urllib.parse.quote))
+            print("page_driver: the page loaded again with " + args.then)
+            browser.call("Page.navigate", {"url": urllib.parse.urlunsplit(url)}, session)
+            state = {}
+            deadline = time.monotonic() + args.timeout
+            while time.monotonic() < deadline:
+                browser.take_events(0.25)
+                reply = browser.call("Runtime.evaluate", {"expression": PAGE_STATE, "returnByValue": True}, session)
+                state = json.loads(reply["result"].get("value") or "{}")
+                if state.get("actions"):
+                    break
+            print(state.get("log", "").rstrip())
+            verdict = state.get("actions") or "no verdict in %d s" % args.timeout
+            print("page_driver: after loading again: " + verdict)
+            ok = verdict == "actions: all expectations held"
 
         if args.screenshot:
             shot = browser.call("Page.captureScreenshot", {"format": "png"}, session)

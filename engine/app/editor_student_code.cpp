@@ -1,0 +1,110 @@
+// The "Your code" tab: the active exercise's student file in the window's editor (ui/student_editor.h), saved where
+// the Exercises tab's StudentFile watches it, so the next run of mine, its comparison and its replay run the new code.
+#include <new>
+
+#include <imgui.h>
+
+#include "app/editor_app.h"
+#include "app/window_host.h"
+#include "core/file_bytes.h"
+#include "document/exception_report.h"
+#include "io/file_access.h"
+
+namespace meshedit {
+
+StudentEdit& EditorApp::student_edit() {
+  student_edit_.follow(exercises_.file());
+  return student_edit_;
+}
+
+std::string EditorApp::student_code_error() {
+  exercises_.ensure_loaded();  // a stat of the file when nothing changed
+  if (!exercises_.load_error().empty()) return exercises_.load_error();
+  const std::optional<ExerciseRun>& run = exercises_.last_run();
+  if (run && run->mine && run->exercise == exercises_.exercise()) return run->report.mine.error;
+  return "";
+}
+
+std::optional<size_t> EditorApp::student_code_error_line() {
+  return error_line_in(student_code_error(), exercises_.file().filename().string());
+}
+
+Check EditorApp::save_student_code() {
+  try {
+    StudentEdit& edit = student_edit();
+    const std::string name = edit.path().filename().string();
+    if (Check saved = edit.save(); !saved) {
+      message(Severity::Error, "not saved: " + saved.reason);
+      return saved;
+    }
+    std::string kept = host_keep_file(edit.path());
+    if (!exercises_.ensure_loaded()) {
+      message(Severity::Warning, "saved " + name + ", which does not load: " + exercises_.load_error());
+    } else {
+      message(Severity::Info, "saved " + name + (kept.empty() ? "" : " (" + kept + ")") + ": Run mine runs it");
+    }
+    return Check::yes();
+  } catch (const std::bad_alloc& e) {
+    report_exception(doc_, e);
+    return Check::no(kMemoryRanOut);
+  }
+}
+
+void EditorApp::receive_files(const std::vector<std::string>& paths) {
+  std::vector<std::string> others;
+  for (const std::string& path : paths) {
+    const std::filesystem::path received(path);
+    const std::filesystem::path target = exercises_.folder() / received.filename();
+    std::error_code error;
+    if (lowercase_extension(received) != ".lua" || !std::filesystem::is_regular_file(target, error)) {
+      others.push_back(path);
+      continue;
+    }
+    const std::string name = target.filename().string();
+    FileBytes bytes = read_file_bytes(received, size_t(1) << 24);
+    std::string failure = bytes.ok() ? write_file_bytes(target, bytes.bytes) : bytes.error;
+    if (!failure.empty()) {
+      message(Severity::Error, name + " from this computer was not taken: " + failure);
+      continue;
+    }
+    const std::string kept = host_keep_file(target);
+    if (student_edit().path() == target) student_edit_.reread();
+    show_student_code();
+    const bool loads = exercises_.file() != target || exercises_.ensure_loaded();
+    message(loads ? Severity::Info : Severity::Warning,
+            name + " from this computer replaced your " + name + (kept.empty() ? "" : " (" + kept + ")") +
+                (loads ? "" : ", which does not load: " + exercises_.load_error()));
+  }
+  if (!others.empty()) open_dropped(others);
+}
+
+void EditorApp::download_student_code() {
+  StudentEdit& edit = student_edit();
+  if (edit.dirty() && !save_student_code()) return;
+  try {
+    const std::string words = host_hand_over(edit.path());
+    message(Severity::Info, words.empty() ? "your file is " + edit.path().string() : words);
+  } catch (const std::exception& e) {
+    report_exception(doc_, e);
+  }
+}
+
+void EditorApp::show_student_code() {
+  student_editor_.open = true;
+  settings_.layout.right_open = true;
+  select_tab_ = RightTab::Code;
+}
+
+void EditorApp::open_student_code_with_exercises() {
+  if (exercise_panel_.open && !exercises_were_open_ && !host_files_on_users_disk()) student_editor_.open = true;
+  exercises_were_open_ = exercise_panel_.open;
+}
+
+void EditorApp::draw_student_code_tab() {
+  probe_.record_last_item("code-tab");  // the tab is in front (tests)
+  const std::string error = student_code_error();
+  const std::optional<size_t> line = student_code_error_line();
+  if (draw_student_editor_contents(student_edit(), student_editor_, error, line)) save_student_code();
+}
+
+}  // namespace meshedit

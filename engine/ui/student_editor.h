@@ -1,0 +1,34 @@
+// The "Your code" panel: the student file of the active exercise (flip.lua...) in an editor with its line numbers in a
+// gutter, the line a load or run error names marked in the error colour with the message under the editor, and Save
+// (the button, or Ctrl+S while the editor has the keyboard). The page's student has no other editor; on the desktop
+// it sits beside any editor of the student's own.
+//
+// Invariants:
+// - The panel edits StudentEdit's text and reports a save request; it writes nothing itself: the caller saves, which
+//   the Exercises tab's StudentFile then loads as it loads any save.
+// - A new error's line is scrolled into sight once.
+// - Per frame it costs one pass over the text (line count and widest line) plus the visible lines' numbers.
+#pragma once
+
+#include <cstddef>
+#include <optional>
+#include <string>
+
+#include "document/student_edit.h"
+
+namespace meshedit {
+
+struct StudentEditorState {
+  bool open = false;
+  float save_x = -1.0f;  // where Save was drawn in the last frame, its centre (tests click it)
+  float save_y = -1.0f;
+  size_t lines_drawn = 0;    // line numbers drawn in the gutter in the last frame (tests)
+  std::string scrolled_for;  // the error the box last scrolled to (once per new error, so the student can scroll on)
+};
+
+// Draws the panel into the current window or tab. `error` is the last load or run error ("" when none), and
+// `error_line` the line of the file it names. Returns true when the student asked to save this frame.
+bool draw_student_editor_contents(StudentEdit& edit, StudentEditorState& state, const std::string& error,
+                                  std::optional<size_t> error_line);
+
+}  // namespace meshedit

@@ -1,0 +1,107 @@
+// The "Your code" tab in the real window under Xvfb, on lesson 4 with a copy of scripts/student/flip.lua: text typed
+// into the editor runs only once saved (the save is written to the file, which the Exercises tab loads as it loads any
+// save), a correct flip saved there is what Run mine runs and replays, and an error, at load or at run time, marks the
+// line it names. At 1280x800 and 1024x640.
+#include <gtest/gtest.h>
+
+#include <fstream>
+#include <sstream>
+
+#include "app/window_test_support.h"
+#include "support/test_support.h"
+
+namespace meshedit {
+namespace {
+
+using testing::run_window;
+using testing::WindowRun;
+using testing::XServer;
+namespace fs = std::filesystem;
+
+// A flip that matches the reference, on one line (the scripted actions give a line's words).
+constexpr char kFlipLine[] =
+    "local h0=e.halfedge local h1=h0.twin if h0.face:is_boundary() or h1.face:is_boundary() then return nil end "
+    "local h2=h0.next local h3=h2.next local h4=h1.next local h5=h4.next local a=h0.vertex local b=h1.vertex "
+    "local c=h3.vertex local d=h5.vertex local f0=h0.face local f1=h1.face h0.next=h3 h3.next=h4 h4.next=h0 "
+    "h1.next=h5 h5.next=h2 h2.next=h1 h0.vertex=d h1.vertex=c h4.face=f0 h2.face=f1 f0.halfedge=h0 "
+    "f1.halfedge=h1 if a.halfedge==h0 then a.halfedge=h4 end if b.halfedge==h1 then b.halfedge=h2 end return e";
+
+std::string read_text(const fs::path& file) {
+  std::ifstream in(file);
+  std::ostringstream text;
+  text << in.rdbuf();
+  return text.str();
+}
+
+// A copy of the template in dir/student, and the number of its `return nil` line (the body of flip_edge).
+size_t copy_template(const fs::path& dir) {
+  fs::create_directories(dir / "student");
+  fs::copy_file(testing::source_dir() / "scripts" / "student" / "flip.lua", dir / "student" / "flip.lua",
+                fs::copy_options::overwrite_existing);
+  std::istringstream lines(read_text(dir / "student" / "flip.lua"));
+  size_t number = 0;
+  for (std::string line; std::getline(lines, line);) {
+    number += 1;
+    if (line == "  return nil") return number;
+  }
+  return 0;
+}
+
+std::string start(const fs::path& dir, size_t line) {
+  return "frames 3\nkey X\nexercise flip " + (dir / "student").string() +
+         "\neditor-open\nframes 2\nexpect-editor-line " + std::to_string(line) +
+         " return nil\nexpect-editor-error none\n";
+}
+
+TEST(WindowStudentEditor, ASavedEditIsWhatRunMineRunsAndReplays) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const size_t line = copy_template(dir);
+  ASSERT_GT(line, 0u) << "scripts/student/flip.lua has no '  return nil' line";
+  const std::string n = std::to_string(line);
+  const std::string actions = start(dir, line) +
+                              // Typed but not saved: Run mine still runs the template.
+                              "editor-set-line " + n + " " + kFlipLine +
+                              "\nselect e0\nrun-mine\nexpect-exercise-run changed nothing\n"
+                              // Saved: the same run is the reference's flip, and its writes replay.
+                              "editor-save\nexpect-message saved flip.lua\nexpect-editor-error none\n"
+                              "select e0\nrun-mine\nexpect-exercise-run same as the reference\n"
+                              "replay-start\nexpect-field h0 next h1\nreplay-step 1\nexpect-field h0 next h2\n"
+                              "replay-finish\nexpect-field h0 vertex v3\nexpect-field h3 vertex v2\nexpect-valid\n"
+                              "frames 2\nscreenshot " +
+                              (dir / "saved.png").string() + "\nframes 2\nquit\n";
+  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  EXPECT_NE(read_text(dir / "student" / "flip.lua").find(kFlipLine), std::string::npos) << "the save was not written";
+}
+
+TEST(WindowStudentEditor, AnErrorMarksTheLineItNames) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const size_t line = copy_template(dir);
+  ASSERT_GT(line, 0u);
+  const std::string n = std::to_string(line);
+  const std::string actions =
+      start(dir, line) +
+      // A syntax error: the file does not load, and its line is marked.
+      "editor-set-line " + n + " return nil nil )\neditor-save\nexpect-message does not load\n" +
+      "expect-editor-error " + n + " flip.lua:" + n + ":\nselect e0\nrun-mine-fails flip.lua:" + n +
+      ":\nframes 2\nscreenshot " + (dir / "syntax.png").string() +
+      "\nframes 2\n"
+      // An error at run time: the file loads, Run mine fails on that line, and the line is marked.
+      "editor-set-line " +
+      n + " error(\"not yet\")\neditor-save\nexpect-editor-error none\nselect e0\nrun-mine-fails not yet\n" +
+      "expect-editor-error " + n + " not yet\n" +
+      // Fixed: no line is marked.
+      "editor-set-line " + n + " " + kFlipLine + "\neditor-save\nselect e0\nrun-mine\nexpect-editor-error none\nquit\n";
+  const WindowRun run =
+      run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir, "1024x640");
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+}
+
+}  // namespace
+}  // namespace meshedit

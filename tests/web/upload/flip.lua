@@ -1,0 +1,70 @@
+-- Part 4: edge flip.
+--
+-- YOUR TASK
+--   Write flip_edge(mesh, e). `e` is an edge handle. If e lies between two triangles, turn it inside the quad
+--   they form (a-b becomes d-c, names below) by rewriting pointers, and return e. Create nothing, delete
+--   nothing: the same 6 halfedges, 5 edges (e and the 4 around the quad), 2 faces and 4 vertices are reused.
+--   If e is on the boundary (h0.face or h1.face is a boundary loop) do NOTHING and return nil. The reference
+--   also refuses (returns nil) when a face beside e is not a triangle or when c and d are already joined by
+--   an edge (the flip would make a second edge c-d).
+--
+-- THE NAMES (the same as in the lessons and the reference, engine/core/mesh_ops.h)
+--   h0 = e.halfedge, h1 = h0.twin; a = h0.vertex, b = h1.vertex (h0 runs a->b, h1 runs b->a).
+--   f0 = h0.face holds the triangle (a, b, c): h0 (a->b), h2 = h0.next (b->c), h3 = h2.next (c->a).
+--   f1 = h1.face holds the triangle (b, a, d): h1 (b->a), h4 = h1.next (a->d), h5 = h4.next (d->b).
+--   Faces are counter-clockwise seen from outside.
+--
+--                  c                                  c
+--                 / \                                /|\
+--             h3 /   \ h2                        h3 / | \ h2
+--               /  f0 \                            /  |  \
+--              /  h0-> \                          / f0|f1 \
+--             a ------- b          flip(e)       a   |   b       h0 runs d->c (in f0),
+--              \ <-h1  /          -------->       \  |  /        h1 runs c->d (in f1)
+--             h4\  f1 / h5                       h4\ | / h5
+--                \   /                              \|/
+--                 \ /                                |
+--                  d                                  d
+--
+--   Afterwards (what the reference does; twins and edges never change):
+--     f0 = (d, c, a): h0 d->c, h3 c->a, h4 a->d    h0.next = h3, h3.next = h4, h4.next = h0
+--     f1 = (c, d, b): h1 c->d, h5 d->b, h2 b->c    h1.next = h5, h5.next = h2, h2.next = h1
+--     h0.vertex = d, h1.vertex = c; h4.face = f0, h2.face = f1; f0.halfedge = h0, f1.halfedge = h1.
+--     a and b may have pointed at h0 / h1, which no longer leave them: then a.halfedge = h4, b.halfedge = h2.
+--     (Leave a vertex's halfedge alone otherwise: a boundary vertex keeps its boundary halfedge.)
+--   Read every handle you need BEFORE you write any pointer: after h0.next = h3, h0.next is no longer h2.
+--
+-- THE COURSE'S LETTERS
+--   The CS184 handout names the same diamond differently: it flips the edge b-c between the triangles
+--   (a, b, c) and (c, b, d) into (a, d, c) and (a, b, d). Its triangle (a, b, c) is our f0; letter by letter:
+--
+--     course   a  b  c  d      flips b-c to a-d;  (a, b, c), (c, b, d)  ->  (a, d, c), (a, b, d)
+--     ours     c  a  b  d      flips a-b to c-d;  f0 (a, b, c), f1 (b, a, d)  ->  f1 (c, d, b), f0 (d, c, a)
+--
+-- THE CLASSIC BUG: FORGETTING A FACE'S OR A VERTEX'S HALFEDGE
+--   Rewriting the six next pointers, h0.vertex, h1.vertex, h4.face and h2.face is not all. Before the flip,
+--   f0.halfedge may be h2, which is now in f1 (f1.halfedge may be h4, now in f0), and a.halfedge may be h0,
+--   which now leaves d (b.halfedge may be h1, now leaving c). Forget f0.halfedge / f1.halfedge or
+--   a.halfedge / b.halfedge and the flip looks right whenever they pointed elsewhere, then breaks on another
+--   edge: drawing or walking that face or vertex goes wrong. Validation names it (with ids for these names):
+--   "f0.halfedge is h2, but h2.face is f1", "a.halfedge is h0, but h0 leaves d". Try several edges of the
+--   cube, and flip the same edge four times: every halfedge's pointers are back where they started.
+--
+-- WHAT YOU MAY USE
+--   Reading: h.next h.twin h.vertex h.edge h.face, v.halfedge, e.halfedge, f.halfedge, f:is_boundary(),
+--   f:degree(), v:neighbors() (for w in c:neighbors() do ... end), a == b to compare handles, tostring(h).
+--   Writing: h.next = x, h.twin = x, h.vertex = v, h.edge = e, h.face = f, v.halfedge = h, f.halfedge = h,
+--   e.halfedge = h, or all five of a halfedge at once: h:set_neighbors(next, twin, vertex, edge, face).
+--   print(...) shows up in the console. mesh:flip(e) is the reference (not for use in your answer).
+--
+-- CHECKING
+--   "mine" runs your function on a copy of the mesh, validates it (a pointer you forgot shows up as above),
+--   compares it with the reference flip and lists every pointer that differs. You can replay your pointer
+--   writes one by one.
+
+function flip_edge(mesh, e)
+  -- TODO: read h0..h5, a..d, f0, f1; refuse boundary edges; then rewrite the pointers listed above.
+  local h0=e.halfedge local h1=h0.twin if h0.face:is_boundary() or h1.face:is_boundary() then return nil end local h2=h0.next local h3=h2.next local h4=h1.next local h5=h4.next local a=h0.vertex local b=h1.vertex local c=h3.vertex local d=h5.vertex local f0=h0.face local f1=h1.face h0.next=h3 h3.next=h4 h4.next=h0 h1.next=h5 h5.next=h2 h2.next=h1 h0.vertex=d h1.vertex=c h4.face=f0 h2.face=f1 f0.halfedge=h0 f1.halfedge=h1 if a.halfedge==h0 then a.halfedge=h4 end if b.halfedge==h1 then b.halfedge=h2 end return e
+end
+
+return { flip_edge = flip_edge }
