@@ -103,7 +103,7 @@ void EditorApp::open_student_code_with_exercises() {
 void EditorApp::draw_student_code_tab() {
   probe_.record_last_item("code-tab");  // the tab is in front (tests)
   const std::string error = student_code_error();
-  const std::optional<size_t> line = student_code_error_line();
+  const std::optional<size_t> line = error_line_in(error, exercises_.file().filename().string());
   if (draw_student_editor_contents(student_edit(), student_editor_, error, line)) save_student_code();
 }
 
