@@ -17,9 +17,7 @@ bool reads_a_drawn_frame(const ScriptedAction& a) { return a.verb == "expect-gpu
 
 // Whether the status line contains the words of a wait-message after its number of frames.
 bool status_contains(EditorApp& app, const ScriptedAction& a) {
-  std::string text;
-  for (size_t i = 1; i < a.args.size(); ++i) text += (i > 1 ? " " : "") + a.args[i];
-  return app.document().message.text.find(text) != std::string::npos;
+  return app.document().message.text.find(a.words(1)) != std::string::npos;
 }
 
 }  // namespace

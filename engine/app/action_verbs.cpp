@@ -22,15 +22,9 @@ namespace {
 
 using Action = ScriptedAction;
 
-std::string rest_of_line(const Action& a) {
-  std::string line;
-  for (const auto& w : a.args) line += (line.empty() ? "" : " ") + w;
-  return line;
-}
-
-// "" when `got` contains the action's text, else `what` followed by the text found.
-std::string expect_contains(const Action& a, const std::string& got, const std::string& what) {
-  return got.find(rest_of_line(a)) == std::string::npos ? what + " '" + got + "'" : "";
+// "" when `got` contains `wanted`, else `what` followed by the text found.
+std::string expect_contains(const std::string& wanted, const std::string& got, const std::string& what) {
+  return got.find(wanted) == std::string::npos ? what + " '" + got + "'" : "";
 }
 
 ElementRef element_argument(const std::string& text) {
@@ -197,7 +191,7 @@ std::string screenshot(EditorApp& app, const Action& a) {
 }
 
 std::string console(EditorApp& app, const Action& a) {
-  app.run_console(rest_of_line(a));
+  app.run_console(a.words());
   return "";
 }
 
@@ -220,12 +214,12 @@ std::string lesson_back(EditorApp& app, const Action&) {
 }
 
 std::string lesson_button(EditorApp& app, const Action& a) {
-  return app.lesson().deliver(LessonEvent::button(rest_of_line(a))) ? "" : "the lesson is not waiting for it";
+  return app.lesson().deliver(LessonEvent::button(a.words())) ? "" : "the lesson is not waiting for it";
 }
 
 template <bool Choose>
 std::string lesson_reply(EditorApp& app, const Action& a) {
-  const std::string text = rest_of_line(a);
+  const std::string text = a.words();
   if (app.lesson().deliver(Choose ? LessonEvent::choice(text) : LessonEvent::value(text))) return "";
   return "the lesson is not asking for it (it waits for " + app.lesson().waiting_for().describe() + ")";
 }
@@ -239,7 +233,7 @@ std::string expect_lesson_feedback(EditorApp& app, const Action& a) {
   if (!wait.is_question() && wait.kind != LessonWait::Kind::YourTurn) {
     return "the lesson asks no question (it waits for " + wait.describe() + ")";
   }
-  if (got.empty() || got.find(rest_of_line(a)) == std::string::npos) {
+  if (got.empty() || got.find(a.words()) == std::string::npos) {
     return std::string(Hint ? "the hint shown is '" : "the feedback is '") + got + "'";
   }
   return "";
@@ -254,7 +248,7 @@ std::string expect_lesson_step(EditorApp& app, const Action& a) {
 
 std::string expect_lesson_said(EditorApp& app, const Action& a) {
   for (const std::string& block : app.lesson().said()) {
-    if (block.find(rest_of_line(a)) != std::string::npos) return "";
+    if (block.find(a.words()) != std::string::npos) return "";
   }
   return "the current step did not say it";
 }
@@ -263,7 +257,7 @@ std::string expect_lesson_live(EditorApp& app, const Action& a) {
   std::string texts;
   for (const LessonLive& live : app.lesson().lives()) {
     const std::string& shown = live.error.empty() ? live.text : live.error;
-    if (shown.find(rest_of_line(a)) != std::string::npos) return "";
+    if (shown.find(a.words()) != std::string::npos) return "";
     texts += (texts.empty() ? "'" : ", '") + shown + "'";
   }
   return "the live texts are " + (texts.empty() ? std::string("none") : texts);
@@ -294,7 +288,7 @@ std::string run_exercise(EditorApp& app, const Action&) {
 std::string run_mine_fails(EditorApp& app, const Action& a) {
   const Check run = app.exercises().run_mine(app.document(), app.selection());
   if (run) return "Run mine ran";
-  return expect_contains(a, run.reason, "Run mine was refused with");
+  return expect_contains(a.words(), run.reason, "Run mine was refused with");
 }
 
 std::string replay_start(EditorApp& app, const Action&) { return app.exercises().start_replay(app.document()).reason; }
@@ -313,7 +307,7 @@ std::string expect_exercise_run(EditorApp& app, const Action& a) {
   const std::string got = run ? run->label + " (" + run->input.describe(run->exercise) +
                                     "): " + (run->mine ? run->report.summary() : "the reference alone")
                               : std::string("none");
-  return expect_contains(a, got, "the Exercises tab's last run is");
+  return expect_contains(a.words(), got, "the Exercises tab's last run is");
 }
 
 std::string editor_open(EditorApp& app, const Action&) {
@@ -323,9 +317,7 @@ std::string editor_open(EditorApp& app, const Action&) {
 
 std::string editor_set_line(EditorApp& app, const Action& a) {
   const size_t line = std::stoul(a.args.at(0));
-  Action text = a;
-  text.args.erase(text.args.begin());
-  if (!app.student_edit().set_line(line, rest_of_line(text))) {
+  if (!app.student_edit().set_line(line, a.words(1))) {
     return "the editor's file has no line " + a.args[0];
   }
   return "";
@@ -334,26 +326,16 @@ std::string editor_set_line(EditorApp& app, const Action& a) {
 std::string editor_save(EditorApp& app, const Action&) { return app.save_student_code().reason; }
 
 std::string expect_editor_line(EditorApp& app, const Action& a) {
-  const std::string& text = app.student_edit().text();
-  size_t start = 0;
-  for (size_t at = 1, line = std::stoul(a.args.at(0)); at < line; ++at) {
-    start = text.find('\n', start);
-    if (start == std::string::npos) return "the editor's file has no line " + a.args[0];
-    start += 1;
-  }
-  const std::string line = text.substr(start, text.find('\n', start) - start);
-  Action rest = a;
-  rest.args.erase(rest.args.begin());
-  return expect_contains(rest, line, "line " + a.args[0] + " is");
+  const std::optional<std::string_view> line = app.student_edit().line(std::stoul(a.args.at(0)));
+  if (!line) return "the editor's file has no line " + a.args[0];
+  return expect_contains(a.words(1), std::string(*line), "line " + a.args[0] + " is");
 }
 
 std::string expect_editor_error(EditorApp& app, const Action& a) {
   const std::optional<size_t> line = app.student_code_error_line();
   const std::string got = line ? std::to_string(*line) : "none";
   if (got != a.args.at(0)) return "the editor marks line " + got + " (" + app.student_code_error() + ")";
-  Action rest = a;
-  rest.args.erase(rest.args.begin());
-  return expect_contains(rest, app.student_code_error(), "the editor's error is");
+  return expect_contains(a.words(1), app.student_code_error(), "the editor's error is");
 }
 
 std::string expect_mine(EditorApp& app, const Action& a) {
@@ -362,7 +344,7 @@ std::string expect_mine(EditorApp& app, const Action& a) {
   if (!(curve ? mine.curve_on() : app.mode() == ViewMode::Patches && mine.patch_on())) {
     return "no \"mine\" switch is on in the view on screen";
   }
-  return expect_contains(a, curve ? mine.curve().message : mine.patch().message, "the mine line is");
+  return expect_contains(a.words(), curve ? mine.curve().message : mine.patch().message, "the mine line is");
 }
 
 // ---- checks ----------------------------------------------------------------------------------------------------
@@ -404,7 +386,7 @@ std::string expect_changed(EditorApp& app, const Action& a) {
 }
 
 std::string expect_message(EditorApp& app, const Action& a) {
-  return expect_contains(a, app.document().message.text, "status line is");
+  return expect_contains(a.words(), app.document().message.text, "status line is");
 }
 
 std::string expect_valid(EditorApp& app, const Action&) {
@@ -414,7 +396,7 @@ std::string expect_valid(EditorApp& app, const Action&) {
 
 std::string expect_console(EditorApp& app, const Action& a) {
   const auto& entries = app.console().entries();
-  return expect_contains(a, entries.empty() ? "" : entries.back().text, "the console's last line is");
+  return expect_contains(a.words(), entries.empty() ? "" : entries.back().text, "the console's last line is");
 }
 
 std::string expect_up_axis(EditorApp& app, const Action& a) {
@@ -423,9 +405,7 @@ std::string expect_up_axis(EditorApp& app, const Action& a) {
   const std::string got(up_axis_name(app.camera().up_axis()));
   const std::string status(app.status_up_axis());
   if (got != wanted + " up") return "the camera is " + got + " (status bar: '" + status + "')";
-  std::string text;
-  for (size_t i = 1; i < a.args.size(); ++i) text += (text.empty() ? "" : " ") + a.args[i];
-  return status.find(text) == std::string::npos ? "the status bar says '" + status + "'" : "";
+  return status.find(a.words(1)) == std::string::npos ? "the status bar says '" + status + "'" : "";
 }
 
 std::string expect_gpu_update(EditorApp& app, const Action& a) {

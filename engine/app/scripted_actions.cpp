@@ -9,6 +9,12 @@
 
 namespace meshedit {
 
+std::string ScriptedAction::words(size_t first) const {
+  std::string text;
+  for (size_t i = first; i < args.size(); ++i) text += (i > first ? " " : "") + args[i];
+  return text;
+}
+
 std::vector<ScriptedAction> parse_actions(const std::string& text, const std::string& name) {
   std::vector<ScriptedAction> actions;
   std::istringstream lines(text);

@@ -15,6 +15,8 @@ struct ScriptedAction {
   std::string verb;
   std::vector<std::string> args;
   std::string source;  // "script.txt:12", for messages
+  // The arguments from args[first] on, joined by single spaces ("" when there are none): a verb's text argument.
+  std::string words(size_t first = 0) const;
 };
 
 // Parses a script; throws std::runtime_error("script.txt:4: unknown action 'klick'") on a bad line.

@@ -25,21 +25,33 @@ void StudentEdit::read() {
   if (!file.ok()) text_.clear();
 }
 
-bool StudentEdit::set_line(size_t line, std::string_view text) {
-  if (line == 0) return false;
+std::optional<size_t> StudentEdit::line_start(size_t line) const {
+  if (line == 0) return std::nullopt;
   size_t start = 0;
   for (size_t at = 1; at < line; ++at) {
     const size_t end = text_.find('\n', start);
-    if (end == std::string::npos) {
-      if (at + 1 != line) return false;  // past one beyond the last line
-      text_ += '\n';
-      start = text_.size();
-      break;
-    }
+    if (end == std::string::npos) return std::nullopt;
     start = end + 1;
   }
-  const size_t end = text_.find('\n', start);
-  text_.replace(start, end == std::string::npos ? std::string::npos : end - start, text);
+  return start;
+}
+
+std::optional<std::string_view> StudentEdit::line(size_t line) const {
+  const std::optional<size_t> start = line_start(line);
+  if (!start) return std::nullopt;
+  const size_t end = text_.find('\n', *start);
+  return std::string_view(text_).substr(*start, end == std::string::npos ? std::string::npos : end - *start);
+}
+
+bool StudentEdit::set_line(size_t line, std::string_view text) {
+  std::optional<size_t> start = line_start(line);
+  if (!start && line > 1 && line_start(line - 1)) {  // one past the last line: a new line
+    text_ += '\n';
+    start = text_.size();
+  }
+  if (!start) return false;
+  const size_t end = text_.find('\n', *start);
+  text_.replace(*start, end == std::string::npos ? std::string::npos : end - *start, text);
   dirty_ = true;
   return true;
 }

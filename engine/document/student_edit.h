@@ -35,6 +35,8 @@ class StudentEdit {
   void mark_edited() { dirty_ = true; }
   bool dirty() const { return dirty_; }
   const std::string& read_error() const { return read_error_; }
+  // Line `line` of text() (1 the first), without its newline; nullopt when there is no such line.
+  std::optional<std::string_view> line(size_t line) const;
   // Replaces line `line` (1 the first; one past the last appends a line) with `text`; false when there is no such line.
   bool set_line(size_t line, std::string_view text);
   // Writes text() to path(); on success the text is clean and its stamp is the file's.
@@ -42,6 +44,9 @@ class StudentEdit {
 
  private:
   void read();
+  // Where line `line` (1 the first) starts in text_; nullopt when there is no such line. A text ending in a newline
+  // has an empty last line, as the editor shows it.
+  std::optional<size_t> line_start(size_t line) const;
   std::filesystem::path path_;
   std::string text_;
   std::string read_error_;

@@ -40,6 +40,22 @@ TEST(StudentEdit, ReplacesALineSavesAndFollowsTheFileWhileClean) {
   EXPECT_EQ(edit.text(), "-- changed elsewhere, longer\nreturn {}");
 }
 
+TEST(StudentEdit, ReadsALineAsTheEditorNumbersThem) {
+  const fs::path file = testing::scratch_dir() / "split.lua";
+  std::ofstream(file) << "local a = 1\n\nreturn a\n";
+  StudentEdit edit;
+  edit.follow(file);
+  EXPECT_EQ(edit.line(0), std::nullopt);
+  EXPECT_EQ(edit.line(1), "local a = 1");
+  EXPECT_EQ(edit.line(2), "");
+  EXPECT_EQ(edit.line(3), "return a");
+  EXPECT_EQ(edit.line(4), "");  // after the last newline: the empty line the editor shows
+  EXPECT_EQ(edit.line(5), std::nullopt);
+  ASSERT_TRUE(edit.set_line(5, "-- added"));
+  EXPECT_EQ(edit.line(5), "-- added");
+  EXPECT_EQ(edit.text(), "local a = 1\n\nreturn a\n\n-- added");
+}
+
 TEST(StudentEdit, AMissingFileShowsEmptyWithItsErrorAndSaveSaysWhyNot) {
   const fs::path dir = testing::scratch_dir();
   StudentEdit edit;
