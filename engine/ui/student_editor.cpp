@@ -1,5 +1,6 @@
-// The "Your code" panel (see student_editor.h): a gutter of line numbers beside ImGui's multiline text box, which
-// scrolls itself; the gutter follows the box's scroll, read from the box's child window.
+// The "Your code" panel (see student_editor.h): a gutter of line numbers beside a child window (the code view) that
+// scrolls around ImGui's multiline text box, made the size of the text so that the box itself never scrolls; the
+// gutter follows the view's scroll, and the view follows the box's text cursor (ImGui's input state, imgui_internal.h).
 #include "ui/student_editor.h"
 
 #include <algorithm>
@@ -36,103 +37,159 @@ TextShape shape_of(const std::string& text) {
   return shape;
 }
 
-// The child window ImGui's InputTextMultiline made for `label` in the current window (1.86 names it
-// "PARENT/LABEL_ID"), or null before its first frame.
-ImGuiWindow* text_box_window(const char* label) {
-  ImGuiWindow* parent = ImGui::GetCurrentWindow();
-  const ImGuiID id = parent->GetID(label);
-  char name[512];
-  std::snprintf(name, sizeof name, "%s/%s_%08X", parent->Name, label, id);
-  return ImGui::FindWindowByName(name);
+// Where the text cursor of the box `box_id` is, in pixels from the text's top-left corner; nullopt when the box is not
+// being edited or the cursor has not moved and the text not changed since the last call.
+std::optional<ImVec2> moved_cursor(ImGuiID box_id, StudentEditorState& state, float line_height) {
+  const ImGuiInputTextState* edit = ImGui::GetInputTextState(box_id);
+  if (!edit) {
+    state.cursor_seen = state.length_seen = -1;
+    return std::nullopt;
+  }
+  const int cursor = std::min(edit->Stb.cursor, edit->CurLenW);
+  if (cursor == state.cursor_seen && edit->CurLenW == state.length_seen) return std::nullopt;
+  state.cursor_seen = cursor;
+  state.length_seen = edit->CurLenW;
+  const ImFont* font = ImGui::GetFont();
+  ImVec2 at(0.0f, 0.0f);
+  for (int i = 0; i < cursor; ++i) {
+    const ImWchar c = edit->TextW[i];
+    if (c == '\n') {
+      at = ImVec2(0.0f, at.y + line_height);
+    } else {
+      at.x += font->GetCharAdvance(c);
+    }
+  }
+  return at;
+}
+
+// Scrolls the current window (the code view) so that the cursor at `cursor` (from the text's top-left corner, which
+// sits `padding` inside the view's content) is in sight, with a few characters of margin sideways.
+void keep_in_sight(ImVec2 cursor, ImVec2 padding, ImVec2 visible, float line_height) {
+  const float margin = ImGui::GetFont()->GetCharAdvance(' ') * 4.0f;
+  const float x = cursor.x + padding.x, y = cursor.y + padding.y;
+  const float scroll_x = ImGui::GetScrollX(), scroll_y = ImGui::GetScrollY();
+  if (x < scroll_x + margin) ImGui::SetScrollX(std::max(0.0f, x - margin));
+  if (x > scroll_x + visible.x - margin) ImGui::SetScrollX(x - visible.x + margin);
+  if (y < scroll_y) ImGui::SetScrollY(std::max(0.0f, y - padding.y));
+  if (y + line_height > scroll_y + visible.y) ImGui::SetScrollY(y + line_height + padding.y - visible.y);
+}
+
+// The line numbers of the lines in sight, beside the view whose text starts at `text_top` (screen y, scrolled); the
+// error line's number in the error colour on a band.
+void draw_gutter(ImVec2 origin, ImVec2 size, float text_top, size_t lines, std::optional<size_t> error_line) {
+  const Palette& palette = ui_palette();
+  const float line_height = ImGui::GetTextLineHeight();
+  const float spacing = ImGui::GetStyle().ItemSpacing.x;
+  ImDrawList* draw = ImGui::GetWindowDrawList();
+  draw->PushClipRect(origin, ImVec2(origin.x + size.x, origin.y + size.y), true);
+  const size_t first = size_t(std::max(0.0f, (origin.y - text_top) / line_height));
+  const size_t last = std::min(lines, first + size_t(size.y / line_height) + 2);
+  char number[24];
+  for (size_t line = first + 1; line <= last; ++line) {
+    const float y = text_top + float(line - 1) * line_height;
+    const bool wrong = error_line && *error_line == line;
+    if (wrong) {
+      draw->AddRectFilled(ImVec2(origin.x, y), ImVec2(origin.x + size.x, y + line_height),
+                          im_colour_u32(palette.error, 0.35f));
+    }
+    std::snprintf(number, sizeof number, "%zu", line);
+    const float x = origin.x + size.x - spacing - ImGui::CalcTextSize(number).x;
+    draw->AddText(ImVec2(x, y), wrong ? im_colour_u32(palette.error) : ImGui::GetColorU32(ImGuiCol_TextDisabled),
+                  number);
+  }
+  draw->PopClipRect();
+}
+
+// The file's name, whether it is saved, and Save; true when Save was clicked.
+bool draw_header(const StudentEdit& edit) {
+  const std::string name = edit.path().filename().string();
+  ImGui::TextUnformatted(name.empty() ? "no exercise" : name.c_str());
+  ImGui::SameLine();
+  ImGui::TextDisabled(edit.dirty() ? "(not saved)" : "(saved)");
+  ImGui::SameLine();
+  const bool save = ImGui::Button("Save");
+  ImGui::SameLine();
+  ImGui::TextDisabled("Ctrl+S");
+  if (!edit.read_error().empty()) ImGui::TextColored(im_colour(ui_palette().error), "%s", edit.read_error().c_str());
+  return save;
+}
+
+// The code view: a child window that scrolls both ways around a text box the size of the text. Returns true when the
+// student pressed Ctrl+S in the box; `text_top` is the screen y of the text's first line, scrolled.
+bool draw_code_view(StudentEdit& edit, StudentEditorState& state, const TextShape& shape, ImVec2 size,
+                    const std::string& error, std::optional<size_t> error_line, float& text_top) {
+  const ImGuiStyle& style = ImGui::GetStyle();
+  const float line_height = ImGui::GetTextLineHeight();
+  ImGui::PushStyleColor(ImGuiCol_ChildBg, im_colour(ui_palette().neutrals.canvas));
+  ImGui::PushStyleVar(ImGuiStyleVar_WindowPadding, ImVec2(0.0f, 0.0f));
+  ImGui::BeginChild("##code view", size, true, ImGuiWindowFlags_HorizontalScrollbar);
+  const ImVec2 visible = ImGui::GetContentRegionAvail();
+  const float char_width = ImGui::GetFont()->GetCharAdvance(' ');
+  const ImVec2 text_size(std::max(visible.x, float(shape.widest + 2) * char_width + style.FramePadding.x * 2.0f),
+                         std::max(visible.y, float(shape.lines) * line_height + style.FramePadding.y * 2.0f));
+  state.text_width = text_size.x;
+  state.view_width = visible.x;
+  const char* label = "##student code";
+  const ImGuiID box_id = ImGui::GetID(label);
+  ImGui::PushStyleColor(ImGuiCol_FrameBg, ImVec4(0.0f, 0.0f, 0.0f, 0.0f));  // the view's own background shows
+  if (ImGui::InputTextMultiline(label, &edit.text_for_editing(), text_size,
+                                ImGuiInputTextFlags_AllowTabInput | ImGuiInputTextFlags_NoHorizontalScroll)) {
+    edit.mark_edited();
+  }
+  ImGui::PopStyleColor();
+  const ImVec2 box_min = ImGui::GetItemRectMin();
+  text_top = box_min.y + style.FramePadding.y;
+  // Ctrl+S while the box has the keyboard (the GLFW backend's key indices: a letter is its ASCII capital).
+  const bool save = ImGui::GetActiveID() == box_id && ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed('S', false);
+  if (const std::optional<ImVec2> cursor = moved_cursor(box_id, state, line_height)) {
+    keep_in_sight(*cursor, style.FramePadding, visible, line_height);
+  }
+  if (error.empty()) {
+    state.scrolled_for.clear();
+  } else if (error_line && error != state.scrolled_for) {
+    ImGui::SetScrollY(std::max(0.0f, float(*error_line - 1) * line_height - visible.y / 3.0f));
+    state.scrolled_for = error;
+  }
+  // The error line's band, under the text (the box's own window draws over the view's).
+  if (error_line && *error_line <= shape.lines) {
+    const float y = text_top + float(*error_line - 1) * line_height;
+    ImGui::GetWindowDrawList()->AddRectFilled(ImVec2(box_min.x, y), ImVec2(box_min.x + text_size.x, y + line_height),
+                                              im_colour_u32(ui_palette().error, 0.25f));
+  }
+  ImGui::EndChild();
+  ImGui::PopStyleVar();
+  ImGui::PopStyleColor();
+  return save;
 }
 
 }  // namespace
 
 bool draw_student_editor_contents(StudentEdit& edit, StudentEditorState& state, const std::string& error,
                                   std::optional<size_t> error_line) {
-  const Palette& palette = ui_palette();
-  bool save = false;
-  const std::string name = edit.path().filename().string();
-  ImGui::TextUnformatted(name.empty() ? "no exercise" : name.c_str());
-  ImGui::SameLine();
-  ImGui::TextDisabled(edit.dirty() ? "(not saved)" : "(saved)");
-  ImGui::SameLine();
-  if (ImGui::Button("Save")) save = true;
-  const ImVec2 save_min = ImGui::GetItemRectMin(), save_max = ImGui::GetItemRectMax();
-  state.save_x = (save_min.x + save_max.x) * 0.5f;
-  state.save_y = (save_min.y + save_max.y) * 0.5f;
-  ImGui::SameLine();
-  ImGui::TextDisabled("Ctrl+S");
-  if (!edit.read_error().empty()) ImGui::TextColored(im_colour(palette.error), "%s", edit.read_error().c_str());
-
+  bool save = draw_header(edit);
   ImGui::PushFont(mono_font());
-  const float line_height = ImGui::GetTextLineHeight();
   const TextShape shape = shape_of(edit.text());
-  char number[24];
-  std::snprintf(number, sizeof number, "%zu", std::max<size_t>(shape.lines, 99));
-  const float gutter = ImGui::CalcTextSize(number).x + ImGui::GetStyle().ItemSpacing.x * 2.0f;
-  // The message under the editor: a few wrapped lines, kept in sight below the box.
+  char widest_number[24];
+  std::snprintf(widest_number, sizeof widest_number, "%zu", std::max<size_t>(shape.lines, 99));
+  const float gutter = ImGui::CalcTextSize(widest_number).x + ImGui::GetStyle().ItemSpacing.x * 2.0f;
+  // The message under the editor: a few wrapped lines, kept in sight below the view.
   const float message_height = error.empty() ? 0.0f : ImGui::GetTextLineHeightWithSpacing() * 4.0f;
   const ImVec2 avail = ImGui::GetContentRegionAvail();
-  const float box_height = std::max(line_height * 4.0f, avail.y - message_height);
+  const float view_height = std::max(ImGui::GetTextLineHeight() * 4.0f, avail.y - message_height);
   const ImVec2 origin = ImGui::GetCursorScreenPos();
-  ImGui::Dummy(ImVec2(gutter, box_height));
+  ImGui::Dummy(ImVec2(gutter, view_height));
   ImGui::SameLine(0.0f, 0.0f);
-  const char* label = "##student code";
-  const ImGuiID box_id = ImGui::GetID(label);
-  if (ImGui::InputTextMultiline(label, &edit.text_for_editing(), ImVec2(avail.x - gutter, box_height),
-                                ImGuiInputTextFlags_AllowTabInput)) {
-    edit.mark_edited();
-  }
-  // Ctrl+S while the box has the keyboard (the GLFW backend's key indices: a letter is its ASCII capital).
-  const ImGuiIO& io = ImGui::GetIO();
-  if (ImGui::GetActiveID() == box_id && io.KeyCtrl && ImGui::IsKeyPressed('S', false)) save = true;
-
-  // The gutter: the numbers of the lines in sight, at the box's scroll; the error line in the error colour, and a
-  // band across the box on that line.
-  ImGuiWindow* box = text_box_window(label);
-  if (error.empty()) {
-    state.scrolled_for.clear();
-  } else if (box && error_line && error != state.scrolled_for) {
-    ImGui::SetScrollY(box, std::max(0.0f, float(*error_line - 1) * line_height - box_height / 3.0f));
-    state.scrolled_for = error;
-  }
-  const float scroll = box ? box->Scroll.y : 0.0f;
-  const float top = origin.y + ImGui::GetStyle().FramePadding.y;
-  ImDrawList* draw = ImGui::GetWindowDrawList();
-  draw->PushClipRect(origin, ImVec2(origin.x + gutter, origin.y + box_height), true);
-  const size_t first = size_t(std::max(0.0f, scroll / line_height));
-  const size_t last = std::min(shape.lines, first + size_t(box_height / line_height) + 2);
-  state.lines_drawn = 0;
-  for (size_t line = first + 1; line <= last; ++line) {
-    const float y = top + float(line - 1) * line_height - scroll;
-    const bool wrong = error_line && *error_line == line;
-    if (wrong)
-      draw->AddRectFilled(ImVec2(origin.x, y), ImVec2(origin.x + gutter, y + line_height),
-                          im_colour_u32(palette.error, 0.35f));
-    std::snprintf(number, sizeof number, "%zu", line);
-    const float x = origin.x + gutter - ImGui::GetStyle().ItemSpacing.x - ImGui::CalcTextSize(number).x;
-    draw->AddText(ImVec2(x, y), wrong ? im_colour_u32(palette.error) : ImGui::GetColorU32(ImGuiCol_TextDisabled),
-                  number);
-    state.lines_drawn += 1;
-  }
-  draw->PopClipRect();
-  if (error_line && box && *error_line <= shape.lines) {
-    const float y = top + float(*error_line - 1) * line_height - scroll;
-    ImDrawList* box_draw = box->DrawList;
-    box_draw->PushClipRect(box->InnerClipRect.Min, box->InnerClipRect.Max, true);
-    box_draw->AddRectFilled(ImVec2(box->Pos.x, y), ImVec2(box->Pos.x + box->Size.x, y + line_height),
-                            im_colour_u32(palette.error, 0.25f));
-    box_draw->PopClipRect();
-  }
+  float text_top = origin.y;
+  save |= draw_code_view(edit, state, shape, ImVec2(avail.x - gutter, view_height), error, error_line, text_top);
+  draw_gutter(origin, ImVec2(gutter, view_height), text_top, shape.lines, error_line);
   ImGui::PopFont();
 
   if (!error.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     if (error_line) {
-      ImGui::TextColored(im_colour(palette.error), "line %zu: %s", *error_line, error.c_str());
+      ImGui::TextColored(im_colour(ui_palette().error), "line %zu: %s", *error_line, error.c_str());
     } else {
-      ImGui::TextColored(im_colour(palette.error), "%s", error.c_str());
+      ImGui::TextColored(im_colour(ui_palette().error), "%s", error.c_str());
     }
     ImGui::PopTextWrapPos();
   }

@@ -6,8 +6,12 @@
 // Invariants:
 // - The panel edits StudentEdit's text and reports a save request; it writes nothing itself: the caller saves, which
 //   the Exercises tab's StudentFile then loads as it loads any save.
+// - The code scrolls both ways in a view of its own: the text box is as wide as the widest line and as tall as the
+//   text, so a long line is never cut off, and the view follows the text cursor as it moves. The gutter follows the
+//   view's vertical scroll.
 // - A new error's line is scrolled into sight once.
-// - Per frame it costs one pass over the text (line count and widest line) plus the visible lines' numbers.
+// - Per frame it costs one pass over the text (line count and widest line), one over the text before the cursor
+//   when it moved, plus the visible lines' numbers.
 #pragma once
 
 #include <cstddef>
@@ -20,10 +24,11 @@ namespace meshedit {
 
 struct StudentEditorState {
   bool open = false;
-  float save_x = -1.0f;  // where Save was drawn in the last frame, its centre (tests click it)
-  float save_y = -1.0f;
-  size_t lines_drawn = 0;    // line numbers drawn in the gutter in the last frame (tests)
-  std::string scrolled_for;  // the error the box last scrolled to (once per new error, so the student can scroll on)
+  std::string scrolled_for;  // the error the view last scrolled to (once per new error, so the student can scroll on)
+  int cursor_seen = -1;      // the text cursor and text length the view last followed
+  int length_seen = -1;
+  float text_width = 0.0f;  // the text box's width in the last frame: the widest line fits in it
+  float view_width = 0.0f;  // the width of the view it scrolls in
 };
 
 // Draws the panel into the current window or tab. `error` is the last load or run error ("" when none), and
