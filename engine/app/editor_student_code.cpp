@@ -1,5 +1,6 @@
 // The "Your code" tab: the active exercise's student file in the window's editor (ui/student_editor.h), saved where
 // the Exercises tab's StudentFile watches it, so the next run of mine, its comparison and its replay run the new code.
+// Unsaved text is never run; in a page it is kept as a draft (window_host.h) and taken back after a reload.
 #include <new>
 
 #include <imgui.h>
@@ -13,8 +14,36 @@
 namespace meshedit {
 
 StudentEdit& EditorApp::student_edit() {
+  const bool other_file = student_edit_.path() != exercises_.file();
   student_edit_.follow(exercises_.file());
+  if (other_file) take_back_student_draft();
   return student_edit_;
+}
+
+void EditorApp::take_back_student_draft() {
+  const std::string name = student_edit_.path().filename().string();
+  if (name.empty()) return;
+  std::optional<std::string> draft = host_kept_draft(name);
+  if (draft && student_edit_.take_draft(std::move(*draft))) {
+    message(Severity::Info, "your unsaved changes to " + name + " are back in Your code: Save keeps them");
+  }
+}
+
+void EditorApp::keep_student_draft() {
+  const StudentEdit& edit = student_edit_;
+  const double now = ImGui::GetTime();
+  if (edit.changes() != draft_.changes_seen) {
+    draft_.changes_seen = edit.changes();
+    draft_.changed_at = now;
+  }
+  if (draft_.changes_kept == draft_.changes_seen || now - draft_.changed_at < 0.5 || edit.path().empty()) return;
+  draft_.changes_kept = draft_.changes_seen;
+  const std::string name = edit.path().filename().string();
+  if (!edit.dirty()) {
+    host_drop_draft(name);
+  } else if (const std::string failure = host_keep_draft(name, edit.text()); !failure.empty()) {
+    message(Severity::Warning, "your unsaved changes to " + name + " are not kept: " + failure);
+  }
 }
 
 std::string EditorApp::student_code_error() {
@@ -37,6 +66,7 @@ Check EditorApp::save_student_code() {
       message(Severity::Error, "not saved: " + saved.reason);
       return saved;
     }
+    host_drop_draft(name);
     std::string kept = host_keep_file(edit.path());
     if (!exercises_.ensure_loaded()) {
       message(Severity::Warning, "saved " + name + ", which does not load: " + exercises_.load_error());
@@ -67,6 +97,7 @@ void EditorApp::receive_files(const std::vector<std::string>& paths) {
       message(Severity::Error, name + " from this computer was not taken: " + failure);
       continue;
     }
+    host_drop_draft(name);
     const std::string kept = host_keep_file(target);
     if (student_edit().path() == target) student_edit_.reread();
     show_student_code();

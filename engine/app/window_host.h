@@ -13,6 +13,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -74,5 +75,14 @@ std::string host_hand_over(const std::filesystem::path& written);
 // (IndexedDB) keeps the page's student folder, and web/index.html puts it back before the program starts; this
 // returns the words for the status line ("kept in this browser") and starts the write, which finishes a moment later.
 std::string host_keep_file(const std::filesystem::path& written);
+
+// Drafts: the student's unsaved text of a student file (`name`: flip.lua), kept where a page reloaded or closed by
+// mistake finds it again. In a page the browser's storage keeps them beside the saved files (written a moment after
+// the call); the desktop keeps none (its student files are on the user's disk, and its window closes on purpose).
+// host_keep_draft returns "" when kept (or not kept by design), else what went wrong; host_kept_draft gives the
+// draft kept for `name`, or nullopt; host_drop_draft forgets it (the file was saved or replaced).
+std::string host_keep_draft(const std::string& name, const std::string& text);
+std::optional<std::string> host_kept_draft(const std::string& name);
+void host_drop_draft(const std::string& name);
 
 }  // namespace meshedit

@@ -65,4 +65,10 @@ std::string host_hand_over(const std::filesystem::path&) { return ""; }
 
 std::string host_keep_file(const std::filesystem::path&) { return ""; }
 
+std::string host_keep_draft(const std::string&, const std::string&) { return ""; }
+
+std::optional<std::string> host_kept_draft(const std::string&) { return std::nullopt; }
+
+void host_drop_draft(const std::string&) {}
+
 }  // namespace meshedit

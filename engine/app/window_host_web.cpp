@@ -4,7 +4,8 @@
 // Files: web/index.html owns the page's file picker (<input id="open-file">) and the drop on the page; it writes each
 // file the user hands over into /uploads and calls meshedit_receive_file. Downloads are made here from the file's
 // bytes in the in-memory file system. The student's saved files are copied into the browser's storage (IndexedDB,
-// mounted by web/index.html at /kept), which the page puts back over the packaged scripts/student at its next start.
+// mounted by web/index.html at /kept), which the page puts back over the packaged scripts/student at its next start;
+// drafts (the editor's unsaved text) are kept in /kept/drafts, which only the editor reads.
 #include <GLFW/glfw3.h>
 #include <emscripten/emscripten.h>
 #include <emscripten/html5.h>
@@ -19,6 +20,7 @@
 #include <vector>
 
 #include "app/window_host.h"
+#include "core/file_bytes.h"
 
 // The page's JavaScript (clang-format would space its operators as C++).
 // clang-format off
@@ -61,6 +63,12 @@ EM_JS(char*, page_keep_file, (const char* path), {
     return allocateUTF8(String(e && e.message ? e.message : e));
   }
 });
+// Writes /kept (the browser's storage) back to IndexedDB; the write finishes a moment later.
+EM_JS(void, page_sync_kept, (), {
+  FS.syncfs(false, (error) => {
+    if (error) err('meshedit: the browser did not keep the files of /kept: ' + error);
+  });
+});
 // clang-format on
 
 namespace meshedit {
@@ -86,6 +94,10 @@ std::pair<int, int> viewport_pixels() {
   const double ratio = emscripten_get_device_pixel_ratio();
   return {std::max(1, int(std::lround(css_w * ratio))), std::max(1, int(std::lround(css_h * ratio)))};
 }
+
+// Where the page keeps drafts: a folder of the browser's storage that web/index.html mounts (not put back over the
+// packaged files: a draft is unsaved text, taken back by the editor only).
+const std::filesystem::path kDraftFolder = "/kept/drafts";
 
 std::vector<std::string>& received_files() {
   static std::vector<std::string> files;
@@ -150,6 +162,28 @@ std::string host_keep_file(const std::filesystem::path& written) {
   std::unique_ptr<char, void (*)(void*)> failure(page_keep_file(written.c_str()), std::free);
   if (failure && *failure) return "not kept in this browser: " + std::string(failure.get());
   return "kept in this browser";
+}
+
+std::string host_keep_draft(const std::string& name, const std::string& text) {
+  std::error_code error;
+  std::filesystem::create_directories(kDraftFolder, error);
+  if (error) return "this browser keeps no drafts: " + error.message();
+  if (std::string failure = write_file_bytes(kDraftFolder / name, text); !failure.empty()) return failure;
+  page_sync_kept();
+  return "";
+}
+
+std::optional<std::string> host_kept_draft(const std::string& name) {
+  std::error_code error;
+  if (!std::filesystem::is_regular_file(kDraftFolder / name, error)) return std::nullopt;
+  FileBytes draft = read_file_bytes(kDraftFolder / name, size_t(1) << 24);
+  if (!draft.ok()) return std::nullopt;
+  return std::move(draft.bytes);
+}
+
+void host_drop_draft(const std::string& name) {
+  std::error_code error;
+  if (std::filesystem::remove(kDraftFolder / name, error)) page_sync_kept();
 }
 
 }  // namespace meshedit

@@ -18,6 +18,7 @@ void StudentEdit::follow(const std::filesystem::path& path) {
 }
 
 void StudentEdit::read() {
+  changes_ += 1;
   stamp_ = file_stamp(path_);
   FileBytes file = read_file_bytes(path_, size_t(1) << 24);
   text_ = std::move(file.bytes);
@@ -52,7 +53,14 @@ bool StudentEdit::set_line(size_t line, std::string_view text) {
   if (!start) return false;
   const size_t end = text_.find('\n', *start);
   text_.replace(*start, end == std::string::npos ? std::string::npos : end - *start, text);
-  dirty_ = true;
+  mark_edited();
+  return true;
+}
+
+bool StudentEdit::take_draft(std::string draft) {
+  if (draft == text_) return false;
+  text_ = std::move(draft);
+  mark_edited();
   return true;
 }
 

@@ -10,6 +10,7 @@
 //   renamed over the old one) and says why not. Nothing here throws but std::bad_alloc.
 #pragma once
 
+#include <cstdint>
 #include <filesystem>
 #include <optional>
 #include <string>
@@ -32,7 +33,16 @@ class StudentEdit {
   const std::filesystem::path& path() const { return path_; }
   const std::string& text() const { return text_; }
   std::string& text_for_editing() { return text_; }  // the editor's buffer; call mark_edited() after a change
-  void mark_edited() { dirty_ = true; }
+  void mark_edited() {
+    dirty_ = true;
+    changes_ += 1;
+  }
+  // How many times text() changed (an edit, a read, a draft taken): a keeper of copies compares it with the last it
+  // saw.
+  uint64_t changes() const { return changes_; }
+  // Takes `draft`, the student's unsaved text of this file from before (a page reloaded), as unsaved changes; false,
+  // and nothing changes, when it is the text already shown.
+  bool take_draft(std::string draft);
   bool dirty() const { return dirty_; }
   const std::string& read_error() const { return read_error_; }
   // Line `line` of text() (1 the first), without its newline; nullopt when there is no such line.
@@ -52,6 +62,7 @@ class StudentEdit {
   std::string read_error_;
   FileStamp stamp_;  // the file's stamp when last read or written
   bool dirty_ = false;
+  uint64_t changes_ = 0;
 };
 
 // The line a Lua error names in `file_name` ("flip.lua:3: unexpected symbol" -> 3, also "[string \"flip.lua\"]:3:"

@@ -56,6 +56,28 @@ TEST(StudentEdit, ReadsALineAsTheEditorNumbersThem) {
   EXPECT_EQ(edit.text(), "local a = 1\n\nreturn a\n\n-- added");
 }
 
+TEST(StudentEdit, ADraftTakenBackIsUnsavedTextAndEveryChangeIsCounted) {
+  const fs::path file = testing::scratch_dir() / "flip.lua";
+  std::ofstream(file) << "return nil\n";
+  StudentEdit edit;
+  edit.follow(file);
+  const uint64_t read = edit.changes();
+  EXPECT_GT(read, 0u);
+  EXPECT_FALSE(edit.take_draft("return nil\n"));  // the text already shown: nothing to take
+  EXPECT_FALSE(edit.dirty());
+  EXPECT_EQ(edit.changes(), read);
+  ASSERT_TRUE(edit.take_draft("return e\n"));
+  EXPECT_TRUE(edit.dirty());
+  EXPECT_EQ(edit.text(), "return e\n");
+  EXPECT_EQ(edit.changes(), read + 1);
+  ASSERT_TRUE(edit.set_line(1, "return {}"));
+  EXPECT_EQ(edit.changes(), read + 2);
+  ASSERT_TRUE(edit.save());
+  EXPECT_EQ(edit.changes(), read + 2);  // saving changes the file, not the text
+  edit.reread();
+  EXPECT_EQ(edit.changes(), read + 3);
+}
+
 TEST(StudentEdit, AMissingFileShowsEmptyWithItsErrorAndSaveSaysWhyNot) {
   const fs::path dir = testing::scratch_dir();
   StudentEdit edit;

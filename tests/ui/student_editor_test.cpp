@@ -76,7 +76,9 @@ class StudentEditorTest : public ::testing::Test {
     panel.edit.follow(long_file());
     for (int i = 0; i < 2; ++i) imgui.frame([&] { panel.draw(); });
   }
-  void draw() { imgui.frame([&] { panel.draw(); }); }
+  void draw() {
+    imgui.frame([&] { panel.draw(); });
+  }
   ui_testing::ImGuiHarness imgui;
   Panel panel;
 };
