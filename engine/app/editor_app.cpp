@@ -109,7 +109,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   if (mode_ == ViewMode::Curve) draw_curve_canvas_window();  // before the levels table: it computes the levels
   draw_labels(layout_.view.x, layout_.view.y, layout_.view.width, layout_.view.height, viewport());
   draw_columns();
-  keep_student_draft();
+  keep_student_drafts();
   draw_open_panel();
   draw_help_panel();
 }

@@ -36,6 +36,7 @@
 #include <cstdint>
 #include <deque>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -315,10 +316,10 @@ class EditorApp {
   void take_lesson_request();          // a lesson picked from the list, or "Lessons" (back to the list), this frame
   void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
   void draw_student_code_tab();        // the "Your code" tab's contents (editor_student_code.cpp)
-  // Per frame: the editor's unsaved text is kept as a draft (host_keep_draft) once it has rested half a second, and
-  // its draft forgotten once the text is clean again; a file the editor opens takes back the draft kept for it.
-  void keep_student_draft();
-  void take_back_student_draft();
+  // Per frame: each edited file's unsaved text is kept as a draft (host_keep_draft) once it has rested half a second,
+  // and its draft forgotten once the text is clean again; a file the editor first shows takes back its kept draft.
+  void keep_student_drafts();
+  void take_back_student_draft(StudentEdit& edit);
   // In a page (no editor of the student's own), opening the Exercises tab opens "Your code" beside it.
   void open_student_code_with_exercises();
 
@@ -357,14 +358,17 @@ class EditorApp {
   ElementRef lesson_selection_;  // the selection the lesson last heard about
   ExerciseSession exercises_;
   ExercisePanelState exercise_panel_;
-  StudentEdit student_edit_;
   StudentEditorState student_editor_;
   bool exercises_were_open_ = false;  // the Exercises tab was open last frame (open_student_code_with_exercises)
-  struct DraftKeeping {
-    uint64_t changes_seen = 0;  // StudentEdit::changes() last frame
+  // The student files the Your code tab has shown, by path: unsaved text stays with its file while the student
+  // switches exercises, and each file's draft is kept on its own (keep_student_drafts).
+  struct EditedStudentFile {
+    StudentEdit edit;
+    uint64_t changes_seen = 0;  // edit.changes() last frame
     uint64_t changes_kept = 0;  // ... when its draft was last kept or forgotten
     double changed_at = 0.0;    // ImGui's time when they last changed
-  } draft_;
+  };
+  std::map<std::filesystem::path, EditedStudentFile> student_files_;
   BezierMine bezier_mine_;
   ScriptConsole console_;
   ConsolePanelState console_panel_;

@@ -14,35 +14,37 @@
 namespace meshedit {
 
 StudentEdit& EditorApp::student_edit() {
-  const bool other_file = student_edit_.path() != exercises_.file();
-  student_edit_.follow(exercises_.file());
-  if (other_file) take_back_student_draft();
-  return student_edit_;
+  const auto [shown, first_time] = student_files_.try_emplace(exercises_.file());
+  StudentEdit& edit = shown->second.edit;
+  edit.follow(exercises_.file());
+  if (first_time) take_back_student_draft(edit);
+  return edit;
 }
 
-void EditorApp::take_back_student_draft() {
-  const std::string name = student_edit_.path().filename().string();
+void EditorApp::take_back_student_draft(StudentEdit& edit) {
+  const std::string name = edit.path().filename().string();
   if (name.empty()) return;
   std::optional<std::string> draft = host_kept_draft(name);
-  if (draft && student_edit_.take_draft(std::move(*draft))) {
+  if (draft && edit.take_draft(std::move(*draft))) {
     message(Severity::Info, "your unsaved changes to " + name + " are back in Your code: Save keeps them");
   }
 }
 
-void EditorApp::keep_student_draft() {
-  const StudentEdit& edit = student_edit_;
+void EditorApp::keep_student_drafts() {
   const double now = ImGui::GetTime();
-  if (edit.changes() != draft_.changes_seen) {
-    draft_.changes_seen = edit.changes();
-    draft_.changed_at = now;
-  }
-  if (draft_.changes_kept == draft_.changes_seen || now - draft_.changed_at < 0.5 || edit.path().empty()) return;
-  draft_.changes_kept = draft_.changes_seen;
-  const std::string name = edit.path().filename().string();
-  if (!edit.dirty()) {
-    host_drop_draft(name);
-  } else if (const std::string failure = host_keep_draft(name, edit.text()); !failure.empty()) {
-    message(Severity::Warning, "your unsaved changes to " + name + " are not kept: " + failure);
+  for (auto& [path, file] : student_files_) {
+    if (file.edit.changes() != file.changes_seen) {
+      file.changes_seen = file.edit.changes();
+      file.changed_at = now;
+    }
+    if (file.changes_kept == file.changes_seen || now - file.changed_at < 0.5 || path.empty()) continue;
+    file.changes_kept = file.changes_seen;
+    const std::string name = path.filename().string();
+    if (!file.edit.dirty()) {
+      host_drop_draft(name);
+    } else if (const std::string failure = host_keep_draft(name, file.edit.text()); !failure.empty()) {
+      message(Severity::Warning, "your unsaved changes to " + name + " are not kept: " + failure);
+    }
   }
 }
 
@@ -99,7 +101,7 @@ void EditorApp::receive_files(const std::vector<std::string>& paths) {
     }
     host_drop_draft(name);
     const std::string kept = host_keep_file(target);
-    if (student_edit().path() == target) student_edit_.reread();
+    if (const auto shown = student_files_.find(target); shown != student_files_.end()) shown->second.edit.reread();
     show_student_code();
     const bool loads = exercises_.file() != target || exercises_.ensure_loaded();
     message(loads ? Severity::Info : Severity::Warning,

@@ -77,6 +77,28 @@ TEST(WindowStudentEditor, ASavedEditIsWhatRunMineRunsAndReplays) {
   EXPECT_NE(read_text(dir / "student" / "flip.lua").find(kFlipLine), std::string::npos) << "the save was not written";
 }
 
+TEST(WindowStudentEditor, UnsavedTextStaysWithItsFileWhileTheStudentSwitchesExercises) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const size_t line = copy_template(dir);
+  ASSERT_GT(line, 0u);
+  fs::copy_file(testing::source_dir() / "scripts" / "student" / "split.lua", dir / "student" / "split.lua");
+  const std::string n = std::to_string(line);
+  const std::string folder = (dir / "student").string();
+  const std::string actions =
+      start(dir, line) + "editor-set-line " + n + " return e -- typed in flip.lua\n" + "exercise split " + folder +
+      "\nframes 2\nexpect-editor-line 1 edge split\n" + "editor-set-line 1 -- typed in split.lua\n" + "exercise flip " +
+      folder + "\nframes 2\nexpect-editor-line " + n + " return e -- typed in flip.lua\n" + "exercise split " + folder +
+      "\nframes 2\nexpect-editor-line 1 -- typed in split.lua\n" + "quit\n";
+  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  EXPECT_EQ(read_text(dir / "student" / "flip.lua"),
+            read_text(testing::source_dir() / "scripts" / "student" / "flip.lua"))
+      << "unsaved text was written";
+}
+
 TEST(WindowStudentEditor, AnErrorMarksTheLineItNames) {
   XServer x;
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
