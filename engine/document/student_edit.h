@@ -67,6 +67,8 @@ class StudentEdit {
 
 // The line a Lua error names in `file_name` ("flip.lua:3: unexpected symbol" -> 3, also "[string \"flip.lua\"]:3:"
 // and a path ending in the name); nullopt when the message names no line of that file.
+// Lua gives an error's place only in its text (the parser's syntax errors, and luaL_where's "file:line:" before a run
+// error), so the line is read from there; what kind of failure it was is ScriptError's typed fields' business.
 std::optional<size_t> error_line_in(std::string_view error, std::string_view file_name);
 
 }  // namespace meshedit
