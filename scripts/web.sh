@@ -1,16 +1,18 @@
 #!/usr/bin/env bash
-# web.sh [--no-serve] [PORT]: builds the web page (emscripten, the "web" preset: build-web/site) and serves it on
-# http://localhost:PORT/ (default 8080) with python3's static file server until interrupted. Prints the size of the
-# .wasm and .data files. Needs scripts/setup_web.sh's packages; the pinned ImGui, Lua and tinyxml2 archives come
+# web.sh [--no-serve | --measure] [PORT]: builds the web page (emscripten, the "web" preset: build-web/site) and serves
+# it on http://localhost:PORT/ (default 8080) with python3's static file server until interrupted. Prints the size of
+# the .wasm, .data and .js files. --measure serves nothing: it opens lesson 4 in headless Chromium (scripts/web_test.sh)
+# and prints the time from the page's start to its first frame and the median time between the frames after it. Needs scripts/setup_web.sh's packages; the pinned ImGui, Lua and tinyxml2 archives come
 # from ../shared/vendor when it exists, else from upstream (MESHEDIT_VENDOR_DIR, cmake/web.cmake).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
 serve=1
-if [ "${1:-}" = "--no-serve" ]; then
-  serve=0
-  shift
-fi
+measure=0
+case "${1:-}" in
+  --no-serve) serve=0; shift ;;
+  --measure) serve=0; measure=1; shift ;;
+esac
 port="${1:-8080}"
 
 command -v emcmake >/dev/null || { echo "web.sh: no emscripten (run scripts/setup_web.sh)" >&2; exit 1; }
@@ -32,6 +34,14 @@ for f in meshedit.wasm meshedit.data meshedit.js; do
   echo "web.sh: $f: $bytes bytes ($((bytes / 1024)) KiB)"
 done
 echo "web.sh: the site is $site (index.html, meshedit.js, meshedit.wasm, meshedit.data): copy it to any static host"
+
+if [ "$measure" = 1 ]; then
+  actions=$(mktemp)
+  trap 'rm -f "$actions"' EXIT
+  printf 'frames 40\nquit\n' >"$actions"
+  ./scripts/web_test.sh "$actions" lessons/4_edge_flip.lua | grep -E '^page_driver: (first frame|frames )' |
+    sed 's/^page_driver/web.sh/'
+fi
 
 if [ "$serve" = 1 ]; then
   echo "web.sh: serving on http://localhost:$port/ (Ctrl-C stops)"

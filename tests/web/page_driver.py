@@ -112,6 +112,7 @@ class Browser:
 PAGE_STATE = """JSON.stringify({
   actions: document.body.dataset.actions || '',
   firstFrameMs: document.body.dataset.firstFrameMs || '',
+  frameMs: document.body.dataset.frameMs || '',
   log: (document.getElementById('log') || {}).textContent || '',
   width: document.getElementById('canvas').width,
   height: document.getElementById('canvas').height,
@@ -198,6 +199,8 @@ def main():
         print(state.get("log", "").rstrip())
         if state.get("firstFrameMs"):
             print("page_driver: first frame %s ms after the page started" % state["firstFrameMs"])
+        if state.get("frameMs"):
+            print("page_driver: frames %s ms apart (median of 30)" % state["frameMs"])
         verdict = state.get("actions") or "no verdict in %d s" % args.timeout
         print("page_driver: " + verdict)
         ok = verdict == "actions: all expectations held"
