@@ -3,11 +3,12 @@
 # --no-serve), serves it on a free localhost port, and opens FILE (default lessons/4_edge_flip.lua; "" for the start
 # screen, the window with no file) in headless Chromium (SwiftShader WebGL) with the actions of ACTIONS (default
 # tests/web/lesson4_flip.txt, the verbs of `meshedit FILE --actions`). tests/web/page_driver.py drives the page in
-# real time over the DevTools protocol, with the DRIVER OPTIONS (--pick FILE, --drop FILE, --download NAME: a file
-# for the page's picker, a file dropped on the page, a PNG the page must download), and reads the verdict from the
-# page. Passes when the page reports "actions: all expectations held". Keeps the page's last screenshot, its
-# downloads and the server's log in build-web/test/. Exit status: 0 passed, 1 failed, 77 skipped (no emscripten, no
-# chromium, or neither ../shared/vendor nor a network to fetch the pinned sources: CTest's skip code).
+# real time over the DevTools protocol, with the DRIVER OPTIONS (--pick FILE, --drop FILE, --download NAME: a file for
+# the page's picker, a file dropped on the page, a file the page must download; --ready, --click-panel, --keys,
+# --viewport...: see page_driver.py), and reads the verdict from the page. Passes when the page reports "actions: all
+# expectations held". Keeps the page's last screenshot, its downloads and the server's log in build-web/test/. Exit
+# status: 0 passed, 1 failed, 77 skipped (no emscripten, no chromium, or neither ../shared/vendor nor a network to
+# fetch the pinned sources: CTest's skip code).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 actions="${1:-tests/web/lesson4_flip.txt}"

@@ -253,6 +253,12 @@ std::string expect_lesson_said(EditorApp& app, const Action& a) {
   return "the current step did not say it";
 }
 
+std::string expect_lesson_error(EditorApp& app, const Action& a) {
+  const std::string& error = app.lesson().error();
+  if (error.empty()) return "the lesson has no error";
+  return expect_contains(a.words(), error, "the lesson's error is");
+}
+
 std::string expect_lesson_live(EditorApp& app, const Action& a) {
   std::string texts;
   for (const LessonLive& live : app.lesson().lives()) {
@@ -324,6 +330,11 @@ std::string editor_set_line(EditorApp& app, const Action& a) {
 }
 
 std::string editor_save(EditorApp& app, const Action&) { return app.save_student_code().reason; }
+
+std::string editor_download(EditorApp& app, const Action&) {
+  app.download_student_code();
+  return "";
+}
 
 std::string expect_editor_line(EditorApp& app, const Action& a) {
   const std::optional<std::string_view> line = app.student_edit().line(std::stoul(a.args.at(0)));
@@ -502,6 +513,10 @@ const ActionVerb kVerbs[] = {
      editor_set_line},
     {"editor-save", 0, "editor-save   the editor's Save (Ctrl+S): writes the student file, which the exercise loads",
      editor_save},
+    {"editor-download", 0,
+     "editor-download   File > Download your FILE.lua: saves the editor's text if it changed, then hands the student "
+     "file over (a page's browser downloads it; the desktop's status line names where it is)",
+     editor_download},
     {"expect-editor-line", -1, "expect-editor-line N TEXT...   line N of the editor's text contains TEXT",
      expect_editor_line},
     {"expect-editor-error", -1,
@@ -532,6 +547,10 @@ const ActionVerb kVerbs[] = {
      expect_lesson_feedback<false>},
     {"expect-lesson-hint", -1, "expect-lesson-hint TEXT...   the question's hint is shown, and contains TEXT",
      expect_lesson_feedback<true>},
+    {"expect-lesson-error", -1,
+     "expect-lesson-error TEXT...   the lesson's error (a file that does not load, a step that failed or was "
+     "stopped), as its panel shows it, contains TEXT",
+     expect_lesson_error},
     {"expect-lesson-live", -1,
      "expect-lesson-live TEXT...   a live() text of the step contains TEXT, as the last "
      "frame evaluated it",

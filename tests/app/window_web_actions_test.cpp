@@ -2,8 +2,9 @@
 // in the desktop window under Xvfb: the same checks hold in both. The page starts in its packaged source tree, so the
 // lesson 4 script names the student folder relative to the top of a checkout; here that folder is the source tree's.
 // The page's files from the student's disk arrive as /uploads/NAME; here the same files open from tests/web, through
-// the same open path, with the same counts and the same message naming the bad file. Also the two verbs those
-// scripts add: wait-message waits frames for the status line, and open-picker fails where the window has no picker.
+// the same open path, with the same counts and the same message naming the bad file; the runaway student files and the
+// broken lessons the page is given stop with the same messages here. Also the two verbs those scripts add:
+// wait-message waits frames for the status line, and open-picker fails where the window has no picker.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -72,6 +73,37 @@ TEST(WindowWebActions, TheWebPagesFilesFromDiskOpenAsOnTheDesktop) {
   ASSERT_NE(dropped.find("expect-message " + (web / "bad_face.obj").string() + ":5:"), std::string::npos) << dropped;
   run = run_window(x.display(), web / "bad_face.obj", dropped, dir);
   EXPECT_EQ(run.status, 0) << run.output;
+}
+
+// The page is given each runaway flip.lua by a drop over its student folder; here the exercise reads it from its own
+// folder in tests/web/runaway_student, and the same Run mine fails with the same message on the same line.
+TEST(WindowWebActions, TheWebPagesRunawayStudentFilesStopAsOnTheDesktop) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  for (const std::string runaway : {"loop", "recursion", "allocation"}) {
+    const std::string checks = checks_after_arrival("student_runaway_" + runaway + ".txt");
+    ASSERT_NE(checks.find("run-mine-fails flip.lua:"), std::string::npos) << checks;
+    const fs::path folder = testing::source_dir() / "tests" / "web" / "runaway_student" / runaway;
+    const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua",
+                                     "frames 3\nkey X\nexercise flip " + folder.string() + "\n" + checks, dir);
+    EXPECT_EQ(run.status, 0) << runaway << ": " << run.output;
+  }
+}
+
+// The page is given each broken lesson by a drop; here it is the window's file, and its messages are the same.
+TEST(WindowWebActions, TheWebPagesBrokenLessonsStopAsOnTheDesktop) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  for (const std::string broken : {"syntax_error", "endless_step"}) {
+    const std::string checks = checks_after_arrival("lesson_" + broken + ".txt");
+    ASSERT_NE(checks.find("expect-lesson-error " + broken + ".lua:7:"), std::string::npos) << checks;
+    const WindowRun run =
+        run_window(x.display(), testing::source_dir() / "tests" / "web" / "broken_lesson" / (broken + ".lua"),
+                   "frames 2\n" + checks, dir);
+    EXPECT_EQ(run.status, 0) << broken << ": " << run.output;
+  }
 }
 
 TEST(WindowWebActions, WaitMessageWaitsFramesForTheStatusLineAndFailsWithoutIt) {

@@ -2,21 +2,32 @@
 """page_driver.py: opens the web page in headless Chromium and drives it over the DevTools protocol (a pipe, the
 standard library only), in real time, until the page's test hook reports the verdict of its ?actions= script.
 
-    page_driver.py URL [--pick FILE] [--drop FILE] [--download NAME --downloads DIR] [--screenshot PNG]
-                       [--then ACTIONS]
+    page_driver.py URL [--pick FILE] [--drop FILE] [--download NAME --downloads DIR [--download-contains TEXT]]
+                       [--ready PATH] [--click-panel NAME] [--keys KEY...] [--viewport WxH] [--screenshot PNG]
+                       [--timeout S] [--then ACTIONS]
 
 --pick FILE answers the page's file picker with FILE when the program opens it (the script's `open-picker`): the
   browser's own chooser is intercepted and given the file, as a person choosing it would. Until it opens, the page
   gets a user gesture every poll, as a click would give it (a browser shows a picker only shortly after one).
---drop FILE drops FILE on the middle of the page once the program has drawn its first frame, as a person dragging
-  it from a file manager does.
---download NAME expects the page to download a PNG named NAME into DIR, and checks it is a PNG of the canvas's size.
+--drop FILE drops FILE on the middle of the page once the program has drawn its first frame (or once the script is
+  ready, with --ready), as a person dragging it from a file manager does.
+--download NAME expects the page to download a file named NAME into DIR: a .png must be a PNG of the canvas's size;
+  with --download-contains TEXT, the downloaded bytes must contain TEXT (a student's .lua).
+--ready PATH: the drop, the click and the keys wait until the script has written PATH in the page's file system (its
+  `layout-json PATH`), the moment it is ready for what comes from outside; it then waits for them with wait-message.
+--click-panel NAME clicks the middle of the panel NAME of that layout ("right column"), as a person's mouse does.
+--keys KEY... then presses the keys (ctrl+S: Control held, S pressed and released, Control released), each a key
+  event the browser delivers to the page as a person's typing arrives, a few frames apart.
+--viewport WxH makes the page's viewport W x H CSS pixels at a device pixel ratio of 1 (the canvas W x H pixels),
+  as a desktop window of that size; headless Chromium's own is smaller than its window.
 --screenshot PNG keeps what the page shows when the script has ended.
+--timeout S: the seconds the script may take (120); a page busy in one long frame answers no poll until it ends.
 --then ACTIONS loads the page again, once its script held, in the same browser profile (its storage kept, as a
   student's reload keeps it), with the actions of the file ACTIONS in place of the URL's, and waits for their verdict.
 
 Prints what the program printed (<pre id="log">), the first frame's time and the verdict. Exit status: 0 when the
-page said "actions: all expectations held" (and the download, if asked for, arrived whole); 1 otherwise.
+page said "actions: all expectations held" (and the download, if asked for, arrived as expected, and the input asked
+for was given); 1 otherwise.
 """
 import argparse
 import base64
@@ -29,6 +40,8 @@ import sys
 import tempfile
 import time
 import urllib.parse
+
+import page_input
 
 CHROMIUM = ["chromium", "--headless=new", "--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
             "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync",
@@ -128,6 +141,22 @@ def png_size(path):
     return struct.unpack(">II", head[16:24])
 
 
+def check_download(path, canvas, contains):
+    """"" when the downloaded file at `path` is what was asked for, else what is wrong with it."""
+    if path.endswith(".png"):
+        size = png_size(path)
+        if size is None:
+            return "%s is no PNG" % path
+        if size != canvas:
+            return "%s is %dx%d, the canvas %sx%s" % ((path,) + size + canvas)
+        return ""
+    with open(path, "rb") as f:
+        data = f.read()
+    if contains is not None and contains.encode() not in data:
+        return "%s (%d bytes) does not contain '%s'" % (path, len(data), contains)
+    return ""
+
+
 def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("url")
@@ -135,12 +164,19 @@ def main():
     parser.add_argument("--drop")
     parser.add_argument("--download")
     parser.add_argument("--downloads")
+    parser.add_argument("--download-contains")
+    parser.add_argument("--ready")
+    parser.add_argument("--click-panel")
+    parser.add_argument("--keys", nargs="+", default=[])
+    parser.add_argument("--viewport")
     parser.add_argument("--screenshot")
     parser.add_argument("--timeout", type=float, default=120.0)
     parser.add_argument("--then")
     args = parser.parse_args()
     if args.download and not args.downloads:
         parser.error("--download needs --downloads DIR")
+    if args.click_panel and not args.ready:
+        parser.error("--click-panel needs --ready PATH, the layout it reads the panel from")
 
     profile = tempfile.TemporaryDirectory()
     browser = Browser(profile.name)
@@ -159,11 +195,17 @@ def main():
                 os.remove(stale)
             browser.call("Browser.setDownloadBehavior",
                          {"behavior": "allow", "downloadPath": os.path.abspath(args.downloads), "eventsEnabled": True})
+        if args.viewport:
+            width, height = (int(n) for n in args.viewport.split("x"))
+            browser.call("Emulation.setDeviceMetricsOverride",
+                         {"width": width, "height": height, "deviceScaleFactor": 1, "mobile": False}, session)
         browser.call("Page.navigate", {"url": args.url}, session)
 
         deadline = time.monotonic() + args.timeout
         state = {}
-        picked = dropped = False
+        picked = False
+        outside_input = bool(args.drop or args.click_panel or args.keys)
+        given = False
         download_done = False
         while time.monotonic() < deadline:
             for event in browser.take_events(0.25):
@@ -180,7 +222,9 @@ def main():
                           details.get("exception", {}).get("description", details.get("text", "")))
                 elif method == "Browser.downloadProgress" and params.get("state") == "completed":
                     download_done = True
-            reply = browser.call("Runtime.evaluate", {"expression": PAGE_STATE, "returnByValue": True}, session)
+            # A frame that runs a long script (a runaway stopped by its budget) holds the page: wait it out.
+            reply = browser.call("Runtime.evaluate", {"expression": PAGE_STATE, "returnByValue": True}, session,
+                                 timeout=max(30.0, deadline - time.monotonic()))
             state = json.loads(reply["result"].get("value") or "{}")
             if state.get("actions"):
                 break
@@ -188,13 +232,27 @@ def main():
                 continue
             if args.pick and not picked:
                 browser.call("Runtime.evaluate", {"expression": "0", "userGesture": True}, session)
-            if args.drop and not dropped:
+            if not outside_input or given:
+                continue
+            layout = page_input.read_page_file(browser, session, args.ready) if args.ready else ""
+            if args.ready and not layout:
+                continue
+            if args.drop:
                 x, y = state["cssWidth"] / 2, state["cssHeight"] / 2
                 data = {"items": [], "files": [os.path.abspath(args.drop)], "dragOperationsMask": 1}
                 for kind in ("dragEnter", "dragOver", "drop"):
                     browser.call("Input.dispatchDragEvent", {"type": kind, "x": x, "y": y, "data": data}, session)
-                dropped = True
                 print("page_driver: dropped " + args.drop + " on the page")
+            if args.click_panel:
+                x, y = page_input.panel_middle(layout, args.click_panel)
+                css_per_pixel = state["cssWidth"] / state["width"]  # the layout counts the canvas's pixels
+                x, y = x * css_per_pixel, y * css_per_pixel
+                page_input.click(browser, session, x, y)
+                print("page_driver: clicked the middle of the %s at %d, %d" % (args.click_panel, x, y))
+            for key in args.keys:
+                page_input.press_key(browser, session, key)
+                print("page_driver: pressed " + key)
+            given = True
 
         print(state.get("log", "").rstrip())
         if state.get("firstFrameMs"):
@@ -204,6 +262,9 @@ def main():
         verdict = state.get("actions") or "no verdict in %d s" % args.timeout
         print("page_driver: " + verdict)
         ok = verdict == "actions: all expectations held"
+        if outside_input and not given:
+            print("page_driver: the script never became ready for the input asked for (%s)" % args.ready)
+            ok = False
 
         # --then ACTIONS: the page loaded again in the same browser profile (its storage kept), with those actions.
         if ok and args.then:
@@ -239,16 +300,17 @@ def main():
                 for event in browser.take_events(0.25):
                     if event["method"] == "Browser.downloadProgress" and event["params"].get("state") == "completed":
                         download_done = True
-            size = png_size(path) if download_done and os.path.exists(path) else None
             canvas = (state.get("width"), state.get("height"))
-            if size is None:
-                print("page_driver: no PNG downloaded as " + path)
+            wrong = check_download(path, canvas, args.download_contains) if download_done and os.path.exists(
+                path) else "nothing downloaded as " + path
+            if wrong:
+                print("page_driver: " + wrong)
                 ok = False
-            elif size != canvas:
-                print("page_driver: %s is %dx%d, the canvas %sx%s" % ((path,) + size + canvas))
-                ok = False
+            elif path.endswith(".png"):
+                print("page_driver: downloaded %s, a %dx%d PNG (the canvas's size)" % ((path,) + canvas))
             else:
-                print("page_driver: downloaded %s, a %dx%d PNG (the canvas's size)" % ((path,) + size))
+                print("page_driver: downloaded %s (%d bytes)%s" % (path, os.path.getsize(path), "" if
+                      args.download_contains is None else ", which contains '%s'" % args.download_contains))
     finally:
         browser.close()
         profile.cleanup()
