@@ -336,6 +336,26 @@ std::string editor_download(EditorApp& app, const Action&) {
   return "";
 }
 
+std::string unsaved_code(EditorApp& app, const Action& a) {
+  using Answer = EditorApp::UnsavedCodeAnswer;
+  static const std::pair<const char*, Answer> kAnswers[] = {
+      {"save", Answer::SaveAndQuit}, {"discard", Answer::QuitWithoutSaving}, {"keep", Answer::KeepEditing}};
+  for (const auto& [word, answer] : kAnswers) {
+    if (a.args[0] != word) continue;
+    if (!app.asking_about_unsaved_code()) return "the Unsaved code dialog is not open";
+    app.answer_unsaved_code(answer);
+    return "";
+  }
+  throw std::runtime_error("unsaved-code takes save, discard or keep");
+}
+
+std::string expect_unsaved_code(EditorApp& app, const Action& a) {
+  if (!app.asking_about_unsaved_code()) return "the Unsaved code dialog is not open";
+  std::string names;
+  for (const std::string& name : app.unsaved_student_files()) names += (names.empty() ? "" : ", ") + name;
+  return expect_contains(a.words(), names, "the dialog names");
+}
+
 std::string expect_editor_line(EditorApp& app, const Action& a) {
   const std::optional<std::string_view> line = app.student_edit().line(std::stoul(a.args.at(0)));
   if (!line) return "the editor's file has no line " + a.args[0];
@@ -517,6 +537,13 @@ const ActionVerb kVerbs[] = {
      "editor-download   File > Download your FILE.lua: saves the editor's text if it changed, then hands the student "
      "file over (a page's browser downloads it; the desktop's status line names where it is)",
      editor_download},
+    {"unsaved-code", 1,
+     "unsaved-code save|discard|keep   answers the Unsaved code dialog (a close with unsaved text in Your code): Save "
+     "and quit, Quit without saving, Keep editing",
+     unsaved_code},
+    {"expect-unsaved-code", -1,
+     "expect-unsaved-code TEXT...   the Unsaved code dialog is open, and the files it names contain TEXT",
+     expect_unsaved_code},
     {"expect-editor-line", -1, "expect-editor-line N TEXT...   line N of the editor's text contains TEXT",
      expect_editor_line},
     {"expect-editor-error", -1,

@@ -112,6 +112,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   keep_student_drafts();
   draw_open_panel();
   draw_help_panel();
+  draw_unsaved_code_dialog();
 }
 
 void EditorApp::draw_mesh_view() {

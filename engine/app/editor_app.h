@@ -224,6 +224,15 @@ class EditorApp {
   void write_pending_screenshot(int width, int height);
 
   bool quit_requested() const { return quit_requested_; }
+  // Whether the window may close now (its close button, Ctrl+Q, File > Quit). Not while Your code holds unsaved text
+  // of a file on the user's disk: then the Unsaved code dialog asks, and the window closes once the student chose
+  // (answer_unsaved_code). A page never asks: its unsaved text is kept as a draft (window_host.h).
+  bool may_close();
+  enum class UnsavedCodeAnswer { SaveAndQuit, QuitWithoutSaving, KeepEditing };
+  void answer_unsaved_code(UnsavedCodeAnswer answer);
+  bool asking_about_unsaved_code() const { return show_unsaved_code_; }
+  // The names of the student files whose editor text is not saved (flip.lua...), in path order.
+  std::vector<std::string> unsaved_student_files() const;
   // A new size for the window (the `window-size` action): the window loop applies it before the next frame.
   void request_window_size(int width, int height) { window_size_request_ = {width, height}; }
   std::optional<std::pair<int, int>> take_window_size_request() { return std::exchange(window_size_request_, {}); }
@@ -287,8 +296,9 @@ class EditorApp {
   void key_menu_item(const char* label, KeyCommand command, bool enabled = true, bool checked = false);
   void draw_open_panel();
   void draw_help_panel();
-  void draw_repairs_tab();   // the Repairs tab's rows (editor_repairs.cpp)
-  void draw_repair_spots();  // every current spot highlighted over the mesh
+  void draw_unsaved_code_dialog();  // editor_menus.cpp, with the other dialogs
+  void draw_repairs_tab();          // the Repairs tab's rows (editor_repairs.cpp)
+  void draw_repair_spots();         // every current spot highlighted over the mesh
   // After open() failed: remembers `path` for open_repaired() when `repairable`, and says so in the message.
   void offer_repair(const std::filesystem::path& path, bool repairable) noexcept;
   void message(Severity severity, const std::string& text);
@@ -384,8 +394,10 @@ class EditorApp {
 
   bool show_open_panel_ = false;
   bool show_help_ = false;
-  std::string repairable_path_;  // the mesh file open() last refused as not a manifold
-  RepairMarks repairs_;          // the Repairs tab: the last repaired copy's changes and their spots
+  bool show_unsaved_code_ = false;  // the Unsaved code dialog is up (may_close)
+  bool close_confirmed_ = false;    // the student chose to quit with (or after saving) the unsaved code
+  std::string repairable_path_;     // the mesh file open() last refused as not a manifold
+  RepairMarks repairs_;             // the Repairs tab: the last repaired copy's changes and their spots
   bool repairs_tab_open_ = false;
   size_t repair_row_clicked_ = SIZE_MAX;  // the row last clicked (shown selected while the spots are current)
   std::string open_path_input_;

@@ -82,6 +82,37 @@ Check EditorApp::save_student_code() {
   }
 }
 
+std::vector<std::string> EditorApp::unsaved_student_files() const {
+  std::vector<std::string> names;
+  for (const auto& [path, file] : student_files_) {
+    if (file.edit.dirty()) names.push_back(path.filename().string());
+  }
+  return names;
+}
+
+bool EditorApp::may_close() {
+  if (close_confirmed_ || !host_files_on_users_disk() || unsaved_student_files().empty()) return true;
+  quit_requested_ = false;
+  show_unsaved_code_ = true;
+  return false;
+}
+
+void EditorApp::answer_unsaved_code(UnsavedCodeAnswer answer) {
+  show_unsaved_code_ = false;
+  if (answer == UnsavedCodeAnswer::KeepEditing) return;
+  if (answer == UnsavedCodeAnswer::SaveAndQuit) {
+    for (auto& [path, file] : student_files_) {
+      if (!file.edit.dirty()) continue;
+      if (Check saved = file.edit.save(); !saved) {
+        message(Severity::Error, "not saved, so the window stays open: " + saved.reason);
+        return;
+      }
+    }
+  }
+  close_confirmed_ = true;
+  quit_requested_ = true;
+}
+
 void EditorApp::receive_files(const std::vector<std::string>& paths) {
   std::vector<std::string> others;
   for (const std::string& path : paths) {

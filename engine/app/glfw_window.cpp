@@ -92,6 +92,8 @@ void GlfwWindow::note_input(GLFWwindow* w) {
 
 bool GlfwWindow::should_close() const { return glfwWindowShouldClose(window_); }
 
+void GlfwWindow::cancel_close() { glfwSetWindowShouldClose(window_, GLFW_FALSE); }
+
 void GlfwWindow::begin_frame() {
   // ImGui needs a couple of frames after an input to settle hover states and animations. X delivers
   // events that are not input (ImGui's cursor updates cause some), so only the callbacks below count.

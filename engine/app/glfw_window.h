@@ -31,6 +31,8 @@ class GlfwWindow {
   GlfwWindow& operator=(const GlfwWindow&) = delete;
 
   bool should_close() const;
+  // Takes back a close the user asked for (the window's close button), so the next frames run (the app asks first).
+  void cancel_close();
   // Waits for input when the last frames were idle (see set_lazy), polls events, starts an ImGui frame.
   void begin_frame();
   // How long the last begin_frame() waited for input, in milliseconds (0 when it only polled).

@@ -82,7 +82,10 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     ActionPlayer& player = run->player;
     GlfwWindow& window = run->window;
     EditorApp& app = run->app;
-    if (window.should_close() || app.quit_requested()) return false;
+    if (window.should_close() || app.quit_requested()) {
+      if (app.may_close()) return false;
+      window.cancel_close();  // the app asks about unsaved code first
+    }
     window.set_lazy(!player.active() && !app.animating());
     if (const auto resize = app.take_window_size_request()) window.set_size(resize->first, resize->second);
     const bool look_changed = app.take_look_change();  // both taken: each clears its flag

@@ -99,6 +99,49 @@ TEST(WindowStudentEditor, UnsavedTextStaysWithItsFileWhileTheStudentSwitchesExer
       << "unsaved text was written";
 }
 
+// Ctrl+Q with unsaved text in Your code asks first: Keep editing keeps the window and the text; Save and quit writes
+// the file and closes. The actions after a close never run, so one that cannot hold shows the window stayed open.
+TEST(WindowStudentEditor, QuittingWithUnsavedCodeAsksAndSaveAndQuitWritesIt) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const size_t line = copy_template(dir);
+  ASSERT_GT(line, 0u);
+  const std::string n = std::to_string(line);
+  const std::string actions =
+      start(dir, line) + "editor-set-line " + n + " return e -- typed\n" +
+      "key ctrl+Q\nframes 2\nexpect-unsaved-code flip.lua\nframes 1\nscreenshot " + (dir / "asking.png").string() +
+      "\nframes 2\nunsaved-code keep\nframes 2\n" + "expect-editor-line " + n + " return e -- typed\n" +
+      "key ctrl+Q\nframes 2\nunsaved-code save\nframes 3\n" + "expect-message the window was still open\n";
+  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  EXPECT_NE(read_text(dir / "student" / "flip.lua").find("return e -- typed"), std::string::npos)
+      << "Save and quit did not write the file";
+  EXPECT_TRUE(fs::exists(dir / "asking.png"));
+}
+
+TEST(WindowStudentEditor, QuitWithoutSavingClosesAndLeavesTheFile) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const size_t line = copy_template(dir);
+  ASSERT_GT(line, 0u);
+  const std::string before = read_text(dir / "student" / "flip.lua");
+  const std::string actions = start(dir, line) + "editor-set-line " + std::to_string(line) +
+                              " return e -- typed\nkey ctrl+Q\nframes 2\nunsaved-code discard\nframes 3\n" +
+                              "expect-message the window was still open\n";
+  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  EXPECT_EQ(read_text(dir / "student" / "flip.lua"), before);
+  // With nothing unsaved, Ctrl+Q closes at once.
+  const WindowRun saved =
+      run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua",
+                 start(dir, line) + "key ctrl+Q\nframes 3\nexpect-message the window was still open\n", dir);
+  EXPECT_EQ(saved.status, 0) << saved.output;
+}
+
 TEST(WindowStudentEditor, AnErrorMarksTheLineItNames) {
   XServer x;
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
