@@ -48,7 +48,7 @@ constexpr KeyBinding kKeyBindings[] = {
     {C::Screenshot, GLFW_KEY_P, false, false, V::Everywhere, false, "P", "screenshot (a PNG in the current folder)"},
     {C::Open, GLFW_KEY_O, true, false, V::Everywhere, false, "Ctrl+O", "open a file (or drop one on the window)"},
     {C::Quit, GLFW_KEY_Q, true, false, V::Everywhere, false, "Ctrl+Q",
-     "quit (the window's size and columns are remembered)"},
+     "quit (the window's size and columns are remembered; unsaved code in Your code is asked about first)"},
     {C::Help, GLFW_KEY_F1, false, false, V::Everywhere, false, "F1", "this list of keys"},
     {C::FoldLeft, GLFW_KEY_LEFT_BRACKET, false, false, V::Everywhere, false, "[",
      "fold or unfold the left column (the lesson)"},
