@@ -1,6 +1,7 @@
 // The "Your code" tab: the active exercise's student file in the window's editor (ui/student_editor.h), saved where
 // the Exercises tab's StudentFile watches it, so the next run of mine, its comparison and its replay run the new code.
 // Unsaved text is never run; in a page it is kept as a draft (window_host.h) and taken back after a reload.
+#include <algorithm>
 #include <new>
 
 #include <imgui.h>
@@ -90,8 +91,10 @@ std::vector<std::string> EditorApp::unsaved_student_files() const {
   return names;
 }
 
-bool EditorApp::may_close() {
-  if (close_confirmed_ || !host_files_on_users_disk() || unsaved_student_files().empty()) return true;
+bool EditorApp::may_close() {  // called outside the frame's guard: allocates nothing
+  const bool unsaved = std::any_of(student_files_.begin(), student_files_.end(),
+                                   [](const auto& shown) { return shown.second.edit.dirty(); });
+  if (close_confirmed_ || !host_files_on_users_disk() || !unsaved) return true;
   quit_requested_ = false;
   show_unsaved_code_ = true;
   return false;
