@@ -227,38 +227,6 @@ struct RowOrder {
   TriangleRow* rows;            // the output's rows, or null
 };
 
-// Pass 3's reads and writes ahead of `row` (rows up to `end`): the chain row -> face -> x0 -> x1 -> x2 and each side's
-// plan are dependent cache misses, started for later rows now, one link per stage; the new halfedges and faces two
-// rows ahead are fetched for writing.
-void prefetch_rows_ahead(const Level& L, const uint32_t* face_at, size_t row, size_t end) {
-  const MeshStorage::View& m = L.m;
-  if (row + 32 < end) memory_hints::prefetch(&m.face_halfedge[face_at[row + 32]]);
-  if (row + 24 < end) memory_hints::prefetch_record(&m.h[m.face_halfedge[face_at[row + 24]].index]);
-  if (row + 16 < end) {
-    const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[row + 16]].index];
-    memory_hints::prefetch_record(&m.h[x0.next.index]);
-    memory_hints::prefetch(&L.plan[x0.edge.index]);
-  }
-  if (row + 8 < end) {
-    const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[row + 8]].index].next.index];
-    memory_hints::prefetch_record(&m.h[x1.next.index]);
-    memory_hints::prefetch(&L.plan[x1.edge.index]);
-  }
-  if (row + 4 < end) {
-    const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
-    memory_hints::prefetch(&L.plan[x2.edge.index]);
-  }
-  if (row + 2 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
-    uint32_t x = m.face_halfedge[face_at[row + 2]].index;
-    for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
-      const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
-      memory_hints::prefetch_for_write(&m.h[n0]);
-      memory_hints::prefetch_for_write(&m.h[n0 + 5]);
-      memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
-    }
-  }
-}
-
 // Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
 // and the four faces' places in the row order.
 void pass_triangles(Level& L, int threads, const RowOrder& order) {
@@ -267,7 +235,33 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
     const MeshStorage::View& m = L.m;
     const uint32_t* face_at = order.face_at_row;
     for (size_t row = begin; row < end; ++row) {
-      prefetch_rows_ahead(L, face_at, row, end);
+      // The chain row -> face -> x0 -> x1 -> x2 and each side's plan are dependent cache misses: start them for
+      // later rows now, one link per stage.
+      if (row + 32 < end) memory_hints::prefetch(&m.face_halfedge[face_at[row + 32]]);
+      if (row + 24 < end) memory_hints::prefetch_record(&m.h[m.face_halfedge[face_at[row + 24]].index]);
+      if (row + 16 < end) {
+        const HalfedgeRecord& x0 = m.h[m.face_halfedge[face_at[row + 16]].index];
+        memory_hints::prefetch_record(&m.h[x0.next.index]);
+        memory_hints::prefetch(&L.plan[x0.edge.index]);
+      }
+      if (row + 8 < end) {
+        const HalfedgeRecord& x1 = m.h[m.h[m.face_halfedge[face_at[row + 8]].index].next.index];
+        memory_hints::prefetch_record(&m.h[x1.next.index]);
+        memory_hints::prefetch(&L.plan[x1.edge.index]);
+      }
+      if (row + 4 < end) {
+        const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
+        memory_hints::prefetch(&L.plan[x2.edge.index]);
+      }
+      if (row + 2 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
+        uint32_t x = m.face_halfedge[face_at[row + 2]].index;
+        for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
+          const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
+          memory_hints::prefetch_for_write(&m.h[n0]);
+          memory_hints::prefetch_for_write(&m.h[n0 + 5]);
+          memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
+        }
+      }
       const size_t f = face_at[row];
       uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
       unsigned sides = 0;
