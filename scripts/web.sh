@@ -2,8 +2,9 @@
 # web.sh [--no-serve | --measure] [PORT]: builds the web page (emscripten, the "web" preset: build-web/site) and serves
 # it on http://localhost:PORT/ (default 8080) with python3's static file server until interrupted. Prints the size of
 # the .wasm, .data and .js files. --measure serves nothing: it opens lesson 4 in headless Chromium (scripts/web_test.sh)
-# and prints the time from the page's start to its first frame and the median time between the frames after it. Needs scripts/setup_web.sh's packages; the pinned ImGui, Lua and tinyxml2 archives come
-# from ../shared/vendor when it exists, else from upstream (MESHEDIT_VENDOR_DIR, cmake/web.cmake).
+# and prints the time from the page's start to its first frame and the median time between the frames after it.
+# Needs scripts/setup_web.sh's packages; the pinned ImGui, Lua and tinyxml2 archives come from ../shared/vendor when it
+# exists, else from upstream (MESHEDIT_VENDOR_DIR, cmake/web.cmake).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
