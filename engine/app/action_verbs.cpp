@@ -351,9 +351,7 @@ std::string unsaved_code(EditorApp& app, const Action& a) {
 
 std::string expect_unsaved_code(EditorApp& app, const Action& a) {
   if (!app.asking_about_unsaved_code()) return "the Unsaved code dialog is not open";
-  std::string names;
-  for (const std::string& name : app.unsaved_student_files()) names += (names.empty() ? "" : ", ") + name;
-  return expect_contains(a.words(), names, "the dialog names");
+  return expect_contains(a.words(), app.unsaved_student_files(), "the dialog names");
 }
 
 std::string expect_editor_line(EditorApp& app, const Action& a) {

@@ -231,8 +231,9 @@ class EditorApp {
   enum class UnsavedCodeAnswer { SaveAndQuit, QuitWithoutSaving, KeepEditing };
   void answer_unsaved_code(UnsavedCodeAnswer answer);
   bool asking_about_unsaved_code() const { return show_unsaved_code_; }
-  // The names of the student files whose editor text is not saved (flip.lua...), in path order.
-  std::vector<std::string> unsaved_student_files() const;
+  // The names of the student files whose editor text is not saved, in path order, as the dialog names them
+  // ("flip.lua, split.lua"); "" when none.
+  std::string unsaved_student_files() const;
   // A new size for the window (the `window-size` action): the window loop applies it before the next frame.
   void request_window_size(int width, int height) { window_size_request_ = {width, height}; }
   std::optional<std::pair<int, int>> take_window_size_request() { return std::exchange(window_size_request_, {}); }

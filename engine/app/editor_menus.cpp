@@ -312,9 +312,7 @@ void EditorApp::draw_unsaved_code_dialog() {
   const float em = ImGui::GetFontSize();
   // Closed by its X: the student keeps editing.
   if (!begin_dialog("Unsaved code", show_unsaved_code_, ImVec2(30 * em, 8 * em))) return;
-  std::string names;
-  for (const std::string& name : unsaved_student_files()) names += (names.empty() ? "" : ", ") + name;
-  ImGui::TextWrapped("Your code has changes you have not saved: %s.", names.c_str());
+  ImGui::TextWrapped("Your code has changes you have not saved: %s.", unsaved_student_files().c_str());
   std::optional<UnsavedCodeAnswer> answer;
   if (ImGui::Button("Save and quit")) answer = UnsavedCodeAnswer::SaveAndQuit;
   ImGui::SameLine();

@@ -83,10 +83,10 @@ Check EditorApp::save_student_code() {
   }
 }
 
-std::vector<std::string> EditorApp::unsaved_student_files() const {
-  std::vector<std::string> names;
+std::string EditorApp::unsaved_student_files() const {
+  std::string names;
   for (const auto& [path, file] : student_files_) {
-    if (file.edit.dirty()) names.push_back(path.filename().string());
+    if (file.edit.dirty()) names += (names.empty() ? "" : ", ") + path.filename().string();
   }
   return names;
 }
