@@ -53,13 +53,30 @@ std::string start(const fs::path& dir, size_t line) {
          " return nil\nexpect-editor-error none\n";
 }
 
-TEST(WindowStudentEditor, ASavedEditIsWhatRunMineRunsAndReplays) {
+// Each test: an X server (skipped without one), a scratch folder holding a copy of the template, and the number of its
+// `return nil` line (n, as text for the scripts).
+class WindowStudentEditor : public ::testing::Test {
+ protected:
+  void SetUp() override {
+    if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+    line = copy_template(dir);
+    ASSERT_GT(line, 0u) << "scripts/student/flip.lua has no '  return nil' line";
+    n = std::to_string(line);
+  }
+  // Plays `actions` in the window on lesson 4, and expects it to end with every expectation held.
+  WindowRun play(const std::string& actions, const std::string& size = "1280x800") {
+    WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir, size);
+    EXPECT_EQ(run.status, 0) << run.output;
+    EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+    return run;
+  }
   XServer x;
-  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
   const fs::path dir = testing::scratch_dir();
-  const size_t line = copy_template(dir);
-  ASSERT_GT(line, 0u) << "scripts/student/flip.lua has no '  return nil' line";
-  const std::string n = std::to_string(line);
+  size_t line = 0;
+  std::string n;
+};
+
+TEST_F(WindowStudentEditor, ASavedEditIsWhatRunMineRunsAndReplays) {
   const std::string actions = start(dir, line) +
                               // Typed but not saved: Run mine still runs the template.
                               "editor-set-line " + n + " " + kFlipLine +
@@ -71,29 +88,19 @@ TEST(WindowStudentEditor, ASavedEditIsWhatRunMineRunsAndReplays) {
                               "replay-finish\nexpect-field h0 vertex v3\nexpect-field h3 vertex v2\nexpect-valid\n"
                               "frames 2\nscreenshot " +
                               (dir / "saved.png").string() + "\nframes 2\nquit\n";
-  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  play(actions);
   EXPECT_NE(read_text(dir / "student" / "flip.lua").find(kFlipLine), std::string::npos) << "the save was not written";
 }
 
-TEST(WindowStudentEditor, UnsavedTextStaysWithItsFileWhileTheStudentSwitchesExercises) {
-  XServer x;
-  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
-  const fs::path dir = testing::scratch_dir();
-  const size_t line = copy_template(dir);
-  ASSERT_GT(line, 0u);
+TEST_F(WindowStudentEditor, UnsavedTextStaysWithItsFileWhileTheStudentSwitchesExercises) {
   fs::copy_file(testing::source_dir() / "scripts" / "student" / "split.lua", dir / "student" / "split.lua");
-  const std::string n = std::to_string(line);
   const std::string folder = (dir / "student").string();
   const std::string actions =
       start(dir, line) + "editor-set-line " + n + " return e -- typed in flip.lua\n" + "exercise split " + folder +
       "\nframes 2\nexpect-editor-line 1 edge split\n" + "editor-set-line 1 -- typed in split.lua\n" + "exercise flip " +
       folder + "\nframes 2\nexpect-editor-line " + n + " return e -- typed in flip.lua\n" + "exercise split " + folder +
       "\nframes 2\nexpect-editor-line 1 -- typed in split.lua\n" + "quit\n";
-  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  play(actions);
   EXPECT_EQ(read_text(dir / "student" / "flip.lua"),
             read_text(testing::source_dir() / "scripts" / "student" / "flip.lua"))
       << "unsaved text was written";
@@ -101,54 +108,30 @@ TEST(WindowStudentEditor, UnsavedTextStaysWithItsFileWhileTheStudentSwitchesExer
 
 // Ctrl+Q with unsaved text in Your code asks first: Keep editing keeps the window and the text; Save and quit writes
 // the file and closes. The actions after a close never run, so one that cannot hold shows the window stayed open.
-TEST(WindowStudentEditor, QuittingWithUnsavedCodeAsksAndSaveAndQuitWritesIt) {
-  XServer x;
-  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
-  const fs::path dir = testing::scratch_dir();
-  const size_t line = copy_template(dir);
-  ASSERT_GT(line, 0u);
-  const std::string n = std::to_string(line);
+TEST_F(WindowStudentEditor, QuittingWithUnsavedCodeAsksAndSaveAndQuitWritesIt) {
   const std::string actions =
       start(dir, line) + "editor-set-line " + n + " return e -- typed\n" +
       "key ctrl+Q\nframes 2\nexpect-unsaved-code flip.lua\nframes 1\nscreenshot " + (dir / "asking.png").string() +
       "\nframes 2\nunsaved-code keep\nframes 2\n" + "expect-editor-line " + n + " return e -- typed\n" +
       "key ctrl+Q\nframes 2\nunsaved-code save\nframes 3\n" + "expect-message the window was still open\n";
-  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  play(actions);
   EXPECT_NE(read_text(dir / "student" / "flip.lua").find("return e -- typed"), std::string::npos)
       << "Save and quit did not write the file";
   EXPECT_TRUE(fs::exists(dir / "asking.png"));
 }
 
-TEST(WindowStudentEditor, QuitWithoutSavingClosesAndLeavesTheFile) {
-  XServer x;
-  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
-  const fs::path dir = testing::scratch_dir();
-  const size_t line = copy_template(dir);
-  ASSERT_GT(line, 0u);
+TEST_F(WindowStudentEditor, QuitWithoutSavingClosesAndLeavesTheFile) {
   const std::string before = read_text(dir / "student" / "flip.lua");
-  const std::string actions = start(dir, line) + "editor-set-line " + std::to_string(line) +
+  const std::string actions = start(dir, line) + "editor-set-line " + n +
                               " return e -- typed\nkey ctrl+Q\nframes 2\nunsaved-code discard\nframes 3\n" +
                               "expect-message the window was still open\n";
-  const WindowRun run = run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir);
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  play(actions);
   EXPECT_EQ(read_text(dir / "student" / "flip.lua"), before);
   // With nothing unsaved, Ctrl+Q closes at once.
-  const WindowRun saved =
-      run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua",
-                 start(dir, line) + "key ctrl+Q\nframes 3\nexpect-message the window was still open\n", dir);
-  EXPECT_EQ(saved.status, 0) << saved.output;
+  play(start(dir, line) + "key ctrl+Q\nframes 3\nexpect-message the window was still open\n");
 }
 
-TEST(WindowStudentEditor, AnErrorMarksTheLineItNames) {
-  XServer x;
-  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
-  const fs::path dir = testing::scratch_dir();
-  const size_t line = copy_template(dir);
-  ASSERT_GT(line, 0u);
-  const std::string n = std::to_string(line);
+TEST_F(WindowStudentEditor, AnErrorMarksTheLineItNames) {
   const std::string actions =
       start(dir, line) +
       // A syntax error: the file does not load, and its line is marked.
@@ -162,10 +145,7 @@ TEST(WindowStudentEditor, AnErrorMarksTheLineItNames) {
       "expect-editor-error " + n + " not yet\n" +
       // Fixed: no line is marked.
       "editor-set-line " + n + " " + kFlipLine + "\neditor-save\nselect e0\nrun-mine\nexpect-editor-error none\nquit\n";
-  const WindowRun run =
-      run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", actions, dir, "1024x640");
-  EXPECT_EQ(run.status, 0) << run.output;
-  EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+  play(actions, "1024x640");
 }
 
 }  // namespace
