@@ -127,7 +127,7 @@ void EditorApp::receive_files(const std::vector<std::string>& paths) {
       continue;
     }
     const std::string name = target.filename().string();
-    FileBytes bytes = read_file_bytes(received, size_t(1) << 24);
+    FileBytes bytes = read_file_bytes(received, kMaxStudentFileBytes);
     std::string failure = bytes.ok() ? write_file_bytes(target, bytes.bytes) : bytes.error;
     if (!failure.empty()) {
       message(Severity::Error, name + " from this computer was not taken: " + failure);

@@ -176,7 +176,7 @@ std::string host_keep_draft(const std::string& name, const std::string& text) {
 std::optional<std::string> host_kept_draft(const std::string& name) {
   std::error_code error;
   if (!std::filesystem::is_regular_file(kDraftFolder / name, error)) return std::nullopt;
-  FileBytes draft = read_file_bytes(kDraftFolder / name, size_t(1) << 24);
+  FileBytes draft = read_file_bytes(kDraftFolder / name, kMaxStudentFileBytes);
   if (!draft.ok()) return std::nullopt;
   return std::move(draft.bytes);
 }

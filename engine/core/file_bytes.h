@@ -23,6 +23,8 @@ namespace meshedit {
 // The largest file MeshEdit reads: a teaching editor has no use for more (at the vertex and corner limits of
 // io/io_limits.h the mesh alone is about 0.5 GB).
 inline constexpr size_t kMaxReadFileBytes = size_t(1) << 30;  // 1 GiB
+// The largest student Lua file the window's editor takes: one it opens, a page's kept draft, a .lua dropped on it.
+inline constexpr size_t kMaxStudentFileBytes = size_t(1) << 24;  // 16 MiB
 
 struct FileBytes {
   std::string bytes;

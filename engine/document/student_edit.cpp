@@ -20,7 +20,7 @@ void StudentEdit::follow(const std::filesystem::path& path) {
 void StudentEdit::read() {
   changes_ += 1;
   stamp_ = file_stamp(path_);
-  FileBytes file = read_file_bytes(path_, size_t(1) << 24);
+  FileBytes file = read_file_bytes(path_, kMaxStudentFileBytes);
   text_ = std::move(file.bytes);
   read_error_ = file.ok() ? "" : path_.filename().string() + ": " + file.error;
   if (!file.ok()) text_.clear();
