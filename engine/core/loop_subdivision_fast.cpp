@@ -253,8 +253,8 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
         const HalfedgeRecord& x2 = m.h[m.h[m.h[m.face_halfedge[face_at[row + 4]].index].next.index].next.index];
         memory_hints::prefetch(&L.plan[x2.edge.index]);
       }
-      if (row + 2 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
-        uint32_t x = m.face_halfedge[face_at[row + 2]].index;
+      if (row + 4 < end) {  // the new halfedges (six per side, written three by each triangle) and faces ahead
+        uint32_t x = m.face_halfedge[face_at[row + 4]].index;
         for (int i = 0; i < 3; ++i, x = m.h[x].next.index) {
           const uint32_t e = m.h[x].edge.index, n0 = L.first_halfedge(e);
           memory_hints::prefetch_for_write(&m.h[n0]);
