@@ -185,6 +185,12 @@ std::string animate_edits(EditorApp& app, const Action& a) {
   return "";
 }
 
+std::string quality(EditorApp& app, const Action& a) {
+  if (a.args[0] != "full" && a.args[0] != "auto") throw std::runtime_error("quality takes full or auto");
+  app.hold_full_quality(a.args[0] == "full");
+  return "";
+}
+
 std::string screenshot(EditorApp& app, const Action& a) {
   app.request_screenshot(a.args[0]);
   return "";
@@ -498,6 +504,10 @@ const ActionVerb kVerbs[] = {
      "animate-edits on|off   flip, split, collapse and their undo and redo play for a quarter "
      "second, whatever the settings say; a scripted run starts with them off",
      animate_edits},
+    {"quality", 1,
+     "quality full|auto   the mesh view draws with multisampling, wireframe and back sides whatever its frames cost "
+     "(full: for pictures compared across machines), or as the quality governor chooses (auto, the start)",
+     quality},
     {"console", -1, "console LUA CODE...   runs the code in the Lua console", console},
     {"curve-t", 1, "curve-t T   the curve view's t, as its slider sets it", curve_t},
     {"lesson-next", 0, "lesson-next   the lesson's Next", lesson_next},

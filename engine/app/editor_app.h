@@ -152,6 +152,8 @@ class EditorApp {
   // always (a scripted run's `animate-edits on`).
   enum class EditAnimationPolicy { Never, AsSettingSays, Always };
   void set_edit_animation_policy(EditAnimationPolicy policy) { edit_animation_policy_ = policy; }
+  // The mesh view at full quality whatever its frames cost (true), or the quality governor's choice (false).
+  void hold_full_quality(bool hold) { view_quality_.hold_full(hold, view_options_); }
   bool edits_animate() const;
   const EditAnimator& edit_animator() const { return edit_animator_; }
 

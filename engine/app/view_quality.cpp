@@ -7,7 +7,7 @@
 namespace meshedit {
 
 void ViewQuality::frame_started(float last_frame_ms) {
-  if (drew_) governor_.measured(double(last_frame_ms));
+  if (drew_ && !held_full_) governor_.measured(double(last_frame_ms));
   drew_ = false;
 }
 
@@ -19,10 +19,17 @@ void ViewQuality::follow_mesh(uint64_t generation, size_t triangles, const Rende
   generation_ = generation;
   triangles_ = triangles;
   if (other_document) users_wireframe_ = false;
-  governor_.reset(is_large_mesh(triangles, style) ? kQualitySteps : 0);
+  governor_.reset(!held_full_ && is_large_mesh(triangles, style) ? kQualitySteps : 0);
   QualitySteps steps = governor_.steps();
   steps.wireframe = !users_wireframe_;
   governor_.set_steps(steps);
+  write_wireframe(options);
+  update_note();
+}
+
+void ViewQuality::hold_full(bool hold, ViewOptions& options) {
+  held_full_ = hold;
+  if (hold) governor_.reset(0);
   write_wireframe(options);
   update_note();
 }

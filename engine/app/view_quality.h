@@ -44,6 +44,11 @@ class ViewQuality {
   // returns the options to draw with (multisampling and back sides as the level says).
   ViewOptions options_to_draw(ViewOptions& options, const RenderStats& stats);
 
+  // Held: every frame draws at full quality, whatever it costs (the governor hears no frame times and starts each mesh
+  // at level 0); a scripted run that compares pictures holds it. Let go: the governor measures again from here.
+  void hold_full(bool hold, ViewOptions& options);
+  bool held_full() const { return held_full_; }
+
   const std::string& note() const { return note_; }
   const QualityGovernor& governor() const { return governor_; }
   bool wireframe_is_users() const { return users_wireframe_; }
@@ -59,6 +64,7 @@ class ViewQuality {
   bool users_wireframe_ = false;
   bool wireframe_written_ = true;  // what this class last wrote into options.wireframe
   bool drew_ = false;              // this frame drew the mesh (options_to_draw ran)
+  bool held_full_ = false;         // hold_full: full quality, no frame heard
   ViewOptions last_options_;       // as options_to_draw last saw them
   std::string note_;
 };

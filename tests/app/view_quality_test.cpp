@@ -63,6 +63,31 @@ TEST(ViewQuality, SlowFramesDropMultisamplingThenTheWireframeAndTheNoteSaysSo) {
   EXPECT_TRUE(view.options.back_sides);
 }
 
+TEST(ViewQuality, HeldAtFullQualitySlowFramesAndALargeMeshDropNothingUntilLetGo) {
+  View view;
+  view.frame(0.0f);
+  view.frames(62.0f, 7);
+  ASSERT_FALSE(view.options.wireframe);  // dropped before the hold
+  view.quality.hold_full(true, view.options);
+  EXPECT_TRUE(view.options.wireframe);  // taken back at once
+  EXPECT_EQ(view.quality.note(), "");
+  ViewOptions drawn = view.frames(62.0f, 10);
+  EXPECT_TRUE(drawn.multisampling);
+  EXPECT_TRUE(drawn.wireframe);
+  EXPECT_TRUE(drawn.back_sides);
+
+  view.stats = closed_mesh(5000000);  // a mesh that would start cheap
+  drawn = view.frames(62.0f, 3);
+  EXPECT_TRUE(drawn.multisampling);
+  EXPECT_TRUE(drawn.wireframe);
+  EXPECT_EQ(view.quality.note(), "");
+
+  view.quality.hold_full(false, view.options);
+  drawn = view.frames(62.0f, 4);  // heard again: three slow frames drop a step
+  EXPECT_FALSE(drawn.multisampling);
+  EXPECT_EQ(view.quality.note(), "frame 62 ms: multisampling off");
+}
+
 TEST(ViewQuality, OnlyFramesThatDrewTheMeshAreHeard) {
   View view;
   view.frame(0.0f);
