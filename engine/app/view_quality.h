@@ -47,7 +47,6 @@ class ViewQuality {
   // Held: every frame draws at full quality, whatever it costs (the governor hears no frame times and starts each mesh
   // at level 0); a scripted run that compares pictures holds it. Let go: the governor measures again from here.
   void hold_full(bool hold, ViewOptions& options);
-  bool held_full() const { return held_full_; }
 
   const std::string& note() const { return note_; }
   const QualityGovernor& governor() const { return governor_; }
