@@ -170,8 +170,7 @@ size_t HalfedgeMesh::memory_bytes() const {
          v_halfedge_.capacity() * sizeof(HalfedgeId) + v_position_.capacity() * sizeof(glm::dvec3) +
          v_alive_.memory_bytes() + e_halfedge_.capacity() * sizeof(HalfedgeId) + e_alive_.memory_bytes() +
          f_halfedge_.capacity() * sizeof(HalfedgeId) + f_alive_.memory_bytes() +
-         b_halfedge_.capacity() * sizeof(HalfedgeId) + b_alive_.memory_bytes() +
-         (rows_ ? rows_->capacity() * sizeof(TriangleRow) : 0);
+         b_halfedge_.capacity() * sizeof(HalfedgeId) + b_alive_.memory_bytes() + (rows_ ? rows_->memory_bytes() : 0);
 }
 
 namespace {

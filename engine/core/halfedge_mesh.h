@@ -287,7 +287,7 @@ class HalfedgeMesh {
     *this = std::move(replacement);
     bump_version_above(seen);
   }
-  // Memory held by the arrays and the triangle rows, in bytes (capacity, not size).
+  // Memory held by the arrays and the triangle rows (with the seam they keep), in bytes (capacity, not size).
   size_t memory_bytes() const;
 
   // True while the mesh is unchanged since a builder or an operation that checks its result declared it a valid

@@ -11,6 +11,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <memory>
 
 #include <glm/geometric.hpp>
 
@@ -208,9 +209,6 @@ glm::dvec3 row_term(const HalfedgeMesh& mesh, const TriangleRow& row) {
   return corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
 }
 
-// One bit per vertex slot.
-using VertexBits = MeshArray<uint64_t>;
-
 bool bit(const uint64_t* bits, VertexId v) { return (bits[v.index >> 6] >> (v.index & 63)) & 1u; }
 
 // A row whose term some of its corners take only after every run is done: bit k of `corners` for corner k.
@@ -241,32 +239,6 @@ void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t beg
     }
     if (on_seam != 0) deferred->push_back({static_cast<uint32_t>(r), on_seam});
   }
-}
-
-// The vertices that rows of more than one run touch, one run per chunk of parallel_chunks(threads, rows.size()).
-VertexBits seam_between_runs(const TriangleRows& rows, size_t vertices, int threads) {
-  const size_t words = (vertices + 63) / 64;
-  std::vector<VertexBits> touched(chunk_count(threads, rows.size()));
-  parallel_chunks(threads, rows.size(), [&](size_t run, size_t begin, size_t end) {
-    VertexBits& bits = touched[run];
-    bits.assign(words, 0);
-    for (size_t r = begin; r < end; ++r) {
-      for (VertexId c : rows[r].corner) bits[c.index >> 6] |= uint64_t(1) << (c.index & 63);
-    }
-  });
-  VertexBits seam;
-  seam.resize_for_overwrite(words);
-  parallel_for(threads, words, [&](size_t begin, size_t end) {
-    for (size_t w = begin; w < end; ++w) {
-      uint64_t seen = 0, more_than_once = 0;
-      for (const VertexBits& bits : touched) {
-        more_than_once |= seen & bits[w];
-        seen |= bits[w];
-      }
-      seam[w] = more_than_once;
-    }
-  });
-  return seam;
 }
 
 // Every entry of `sums` zero, `vertices` of them.
@@ -308,8 +280,9 @@ void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& norma
 // The same over the mesh's triangle rows, which list the same faces with the same first corners: the same terms
 // again, added in row order, into one array of sums on any number of threads. Each thread takes one run of rows, a
 // patch of the surface, so runs share few vertices (2.5 thousand of 3.2 million after three levels of Loop on a
-// torus). Those (the seam) are left out while the runs add their terms and get them afterwards, run by run, each
-// run's in row order: every vertex gets its terms in row order, so the bits do not depend on the thread count.
+// torus). Those (the seam, which the rows make once and keep) are left out while the runs add their terms and get
+// them afterwards, run by run, each run's in row order: every vertex gets its terms in row order, so the bits do not
+// depend on the thread count.
 void row_order_normals(const HalfedgeMesh& mesh, const TriangleRows& rows, std::vector<glm::dvec3>& normals,
                        int threads) {
   const size_t vertices = mesh.vertex_capacity();
@@ -317,10 +290,10 @@ void row_order_normals(const HalfedgeMesh& mesh, const TriangleRows& rows, std::
   if (chunk_count(threads, rows.size()) <= 1) {
     add_row_terms(mesh, rows.data(), 0, rows.size(), normals.data(), nullptr, nullptr);
   } else {
-    const VertexBits seam = seam_between_runs(rows, vertices, threads);
+    const std::shared_ptr<const VertexBits> seam = rows.seam_between_runs(threads, vertices);
     std::vector<std::vector<SeamRow>> deferred(chunk_count(threads, rows.size()));
     parallel_chunks(threads, rows.size(), [&](size_t run, size_t begin, size_t end) {
-      add_row_terms(mesh, rows.data(), begin, end, normals.data(), seam.data(), &deferred[run]);
+      add_row_terms(mesh, rows.data(), begin, end, normals.data(), seam->data(), &deferred[run]);
     });
     for (const std::vector<SeamRow>& run : deferred) {
       for (const SeamRow& late : run) {

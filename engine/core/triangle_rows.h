@@ -5,11 +5,20 @@
 // by patch while the stable ids scatter neighbours across the arrays. A whole-mesh pass that reads the rows
 // (vertex_normals) then finds each vertex in cache for all of its faces.
 //
+// A pass on several threads gives each thread one run of consecutive rows; the vertices that more than one run
+// touches (the seam between the runs' patches) need their terms added in order after the runs. The rows keep the
+// seam they were last asked for, so a pass repeated on the same connectivity (normals while vertices move) finds it
+// made.
+//
 // Invariants: the rows list every live face exactly once, with the corners its halfedge cycle has; a mesh keeps its
 // rows only while its connectivity is the one they were made from (HalfedgeMesh::triangle_rows): every mutation
-// other than a position, and every direct access through MeshStorage, drops them. Rows are immutable once made, so
-// copies of a mesh share them.
+// other than a position, and every direct access through MeshStorage, drops them. Rows are immutable once made
+// (the kept seam is derived from them alone), so copies of a mesh share them, from any thread.
 #pragma once
+
+#include <cstdint>
+#include <memory>
+#include <mutex>
 
 #include "core/ids.h"
 #include "core/mesh_array.h"
@@ -23,6 +32,31 @@ struct TriangleRow {
 
 static_assert(sizeof(TriangleRow) == 16, "four rows fill one 64-byte cache line (Loop writes them so)");
 
-using TriangleRows = MeshArray<TriangleRow>;
+// One bit per vertex slot: bit (i & 63) of word i >> 6 for vertex i.
+using VertexBits = MeshArray<uint64_t>;
+
+// The rows themselves are the array (Loop fills it through MeshArray's interface before it is shared).
+class TriangleRows : public MeshArray<TriangleRow> {
+ public:
+  TriangleRows() = default;
+  TriangleRows(const TriangleRows&) = delete;
+  TriangleRows& operator=(const TriangleRows&) = delete;
+
+  // The vertices, of slots [0, vertices), that rows of more than one run touch, for the runs
+  // parallel_chunks(threads, size()) cuts the rows into; none (all bits clear) for a single run. Made on `threads`
+  // threads on the first call for a run count and vertex count, then kept until another is asked for.
+  std::shared_ptr<const VertexBits> seam_between_runs(int threads, size_t vertices) const;
+
+  // The rows' bytes and the kept seam's.
+  size_t memory_bytes() const;
+
+ private:
+  struct Seam {
+    size_t runs = 0, vertices = 0;
+    std::shared_ptr<const VertexBits> bits;
+  };
+  mutable std::mutex seam_mutex_;  // guards seam_
+  mutable Seam seam_;
+};
 
 }  // namespace meshedit

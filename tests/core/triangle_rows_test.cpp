@@ -1,11 +1,14 @@
 // The triangle rows Loop subdivision leaves on its result (triangle_rows.h): every face once with the corners of its
 // own cycle, each face's four children in four consecutive rows in the order of the rows before (so a second call
 // continues the first's order), the same for one call or several and for any thread count; kept while only
-// positions change and shared by copies; dropped by any other change. Normals on the rows agree with vertex_normal.
+// positions change and shared by copies; dropped by any other change. The seam between runs of rows is the vertices
+// two runs share, made once and kept. Normals on the rows agree with vertex_normal.
 #include <algorithm>
 #include <array>
+#include <memory>
 #include <set>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <gtest/gtest.h>
@@ -15,6 +18,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/normals.h"
+#include "core/parallel_for.h"
 #include "core/primitives.h"
 #include "support/random_edits.h"
 
@@ -148,6 +152,49 @@ TEST(TriangleRows, KeptWhilePositionsMoveAndSharedByCopiesDroppedByAnyOtherChang
   EXPECT_EQ(undone.triangle_rows(), nullptr);
   ASSERT_TRUE(history.redo(undone));
   EXPECT_TRUE(rows_list_every_face(undone));
+}
+
+// The seam for the runs a pass on `threads` threads cuts the rows into: each vertex's bit set exactly when rows of two
+// runs or more have it as a corner (counted here run by run), none for one run. Made once per run count and kept
+// with the rows, by the mesh and its copies; several threads asking at once get the same bits.
+TEST(TriangleRows, TheSeamIsEveryVertexTwoRunsShareMadeOnceAndKept) {
+  HalfedgeMesh mesh = build_halfedge_mesh(make_torus_with_faces(20000));
+  ASSERT_TRUE(loop_subdivide(mesh, LoopWeights::Loop, 1, 1));
+  const TriangleRows& rows = *mesh.triangle_rows();
+  const size_t vertices = mesh.vertex_capacity();
+  for (int threads : {2, 3, 1, 2}) {
+    const size_t runs = chunk_count(threads, rows.size());
+    std::vector<std::set<size_t>> runs_of(vertices);
+    for (size_t run = 0; run < runs; ++run) {
+      for (size_t r = chunk_begin(run, runs, rows.size()); r < chunk_begin(run + 1, runs, rows.size()); ++r) {
+        for (VertexId c : rows[r].corner) runs_of[c.index].insert(run);
+      }
+    }
+    const std::shared_ptr<const VertexBits> seam = rows.seam_between_runs(threads, vertices);
+    ASSERT_EQ(seam->size(), (vertices + 63) / 64);
+    size_t on_seam = 0;
+    for (size_t v = 0; v < vertices; ++v) {
+      const bool bit = ((*seam)[v >> 6] >> (v & 63)) & 1u;
+      EXPECT_EQ(bit, runs_of[v].size() > 1) << "v" << v << ", " << threads << " threads";
+      on_seam += bit ? 1 : 0;
+    }
+    if (runs > 1) EXPECT_GT(on_seam, 0u) << threads << " threads";
+    else EXPECT_EQ(on_seam, 0u);
+    EXPECT_EQ(rows.seam_between_runs(threads, vertices), seam) << "kept";
+    const HalfedgeMesh copy = mesh;
+    EXPECT_EQ(copy.triangle_rows()->seam_between_runs(threads, vertices), seam) << "kept for copies";
+  }
+
+  HalfedgeMesh fresh = build_halfedge_mesh(make_torus_with_faces(20000));
+  ASSERT_TRUE(loop_subdivide(fresh, LoopWeights::Loop, 1, 1));
+  std::vector<std::shared_ptr<const VertexBits>> asked(4);
+  std::vector<std::thread> askers;
+  for (size_t i = 0; i < asked.size(); ++i) {
+    askers.emplace_back([&, i] { asked[i] = fresh.triangle_rows()->seam_between_runs(2, vertices); });
+  }
+  for (std::thread& t : askers) t.join();
+  const std::shared_ptr<const VertexBits> first = rows.seam_between_runs(2, vertices);
+  for (const std::shared_ptr<const VertexBits>& bits : asked) EXPECT_TRUE(*bits == *first);
 }
 
 // After Loop and a vertex moved, the rows still serve vertex_normals: each vertex's normal as vertex_normal gives it,
