@@ -244,8 +244,8 @@ void refuse_split_fans(const PolygonMesh& in, const Corners& c, const std::vecto
 
 namespace build_detail {
 
-size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> edge_of,
-                    std::span<const uint32_t> open_incoming, HalfedgeMesh& mesh) {
+size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> open_incoming,
+                    HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const auto num_interior = static_cast<uint32_t>(in.indices.size());
   const auto num_halfedges = static_cast<uint32_t>(m.h.size());
@@ -279,7 +279,7 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
   // Each edge's first halfedge (number_edges).
   m.e_halfedge.reserve(num_halfedges / 2);
   for (uint32_t h = 0; h < num_interior; ++h) {
-    if (edge_of[h] == m.e_halfedge.size()) m.e_halfedge.push_back(HalfedgeId(h));
+    if (h_[h].edge.index == m.e_halfedge.size()) m.e_halfedge.push_back(HalfedgeId(h));
   }
   m.e_alive.assign(m.e_halfedge.size(), true);
 
@@ -316,7 +316,7 @@ HalfedgeMesh build_checked(const PolygonMesh& in, BuildReport* report) {
   HalfedgeMesh mesh;
   const MeshArray<uint32_t> edge_of = number_edges(twin);
   fill_interior(in, c, twin, edge_of, num_halfedges, mesh);
-  const size_t unused = finish_build(in, twin, edge_of, open_incoming, mesh);
+  const size_t unused = finish_build(in, twin, open_incoming, mesh);
   refuse_split_fans(in, c, open_incoming, mesh);
   if (report) report->unused_vertices = unused;
   return mesh;

@@ -196,20 +196,24 @@ MeshArray<uint32_t> number_edges(std::span<const uint32_t> twin) {
   return edge_of;
 }
 
-void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, std::span<const uint32_t> edge_of,
-                          size_t num_halfedges, HalfedgeMesh& mesh) {
+void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin, size_t num_halfedges,
+                          HalfedgeMesh& mesh) {
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize_for_overwrite(num_halfedges);  // interior records written here, boundary ones by finish_build
   m.h_alive.assign(num_halfedges, true);
   HalfedgeRecord* h_ = m.h.data();
   m.f_halfedge.resize_for_overwrite(in.num_faces());  // every face's written below
   m.f_alive.assign(in.num_faces(), true);
+  uint32_t next_edge = 0;
   for (uint32_t f = 0; f < in.num_faces(); ++f) {
     const uint32_t begin = in.face_offsets[f], end = in.face_offsets[f + 1];
     m.f_halfedge[f] = HalfedgeId(begin);
     for (uint32_t h = begin; h < end; ++h) {
-      h_[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(twin[h]), VertexId(in.indices[h]),
-                             EdgeId(edge_of[h]), FaceId::face(f)};
+      // number_edges' numbering: halfedges are written in id order, so a lower twin's record already has its edge.
+      const uint32_t t = twin[h];  // kNone (open) is above every halfedge
+      const uint32_t edge = t > h ? next_edge++ : h_[t].edge.index;
+      h_[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(t), VertexId(in.indices[h]),
+                             EdgeId(edge), FaceId::face(f)};
     }
   }
 }
@@ -249,8 +253,7 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
   const uint32_t num_halfedges = num_interior + num_boundary;
   if (num_halfedges >= kNone / 2) return false;
 
-  const MeshArray<uint32_t> edge_of = number_edges(twin);
-  write_face_halfedges(in, twin, edge_of, num_halfedges, mesh);
+  write_face_halfedges(in, twin, num_halfedges, mesh);
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const HalfedgeRecord* h_ = m.h.data();
 
@@ -268,7 +271,7 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
                 : every_fan_whole(out, twin, open_incoming, [h_](uint32_t h) { return h_[h].next.index; });
   if (!fans_whole) return false;
 
-  const size_t unused = finish_build(in, twin, edge_of, open_incoming, mesh);
+  const size_t unused = finish_build(in, twin, open_incoming, mesh);
   unused_vertices = unused;
   // Vouched only as valid as validate() would find it: triangles, every vertex used, every position finite.
   const bool finite_positions =

@@ -170,9 +170,8 @@ HalfedgeMesh refine_mesh(const HalfedgeMesh& mesh, RefineRule rule, const Refine
   }
 
   HalfedgeMesh refined;
-  const MeshArray<uint32_t> edge_of = build_detail::number_edges(twin);
-  build_detail::write_face_halfedges(polygons, twin, edge_of, num_interior + num_boundary, refined);
-  const size_t unused = build_detail::finish_build(polygons, twin, edge_of, open_incoming, refined);
+  build_detail::write_face_halfedges(polygons, twin, num_interior + num_boundary, refined);
+  const size_t unused = build_detail::finish_build(polygons, twin, open_incoming, refined);
   // Vouched as the builder vouches: all triangles, every vertex used, every position finite.
   const bool finite_positions =
       std::all_of(positions.begin(), positions.end(), [](const glm::dvec3& p) { return finite(p); });
