@@ -61,9 +61,20 @@ struct Level {
   uint32_t face_side(uint32_t e) const { return plan[e].face_side; }
 };
 
-// Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded).
-void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_edges) {
+// Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded). On a closed mesh
+// (no boundary loop, so no halfedge of a valid mesh lies on one) it reads no halfedge: every edge's face side is its
+// own halfedge and none is on a boundary; with no dead edge either, each edge's rank is its id, in one pass.
+void plan_edges(Level& L, int threads, const HalfedgeMesh& mesh, uint32_t& live_edges, uint32_t& boundary_edges) {
   resize_for_overwrite(L.plan, L.e0);  // every entry is written below, dead edges' too
+  const bool closed = mesh.num_boundaries() == 0;
+  if (closed && mesh.num_edges() == L.e0) {
+    parallel_for(threads, L.e0, [&](size_t begin, size_t end) {
+      for (size_t e = begin; e < end; ++e) L.plan[e] = EdgePlan{uint32_t(e), 0, L.m.edge_halfedge[e].index};
+    });
+    live_edges = L.e0;
+    boundary_edges = 0;
+    return;
+  }
   const size_t chunks = chunk_count(threads, L.e0);
   std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
@@ -72,9 +83,12 @@ void plan_edges(Level& L, int threads, uint32_t& live_edges, uint32_t& boundary_
       L.plan[e] = EdgePlan{};
       if (!(*L.m.edge_alive)[e]) continue;
       ++n;
-      const uint32_t h = L.m.edge_halfedge[e].index, t = L.m.h[h].twin.index;
+      const uint32_t h = L.m.edge_halfedge[e].index;
+      L.plan[e].face_side = h;
+      if (closed) continue;
+      const uint32_t t = L.m.h[h].twin.index;
       const bool h_on_loop = L.m.h[h].face.is_boundary();
-      L.plan[e].face_side = h_on_loop ? t : h;
+      if (h_on_loop) L.plan[e].face_side = t;
       if (h_on_loop || L.m.h[t].face.is_boundary()) {
         ++b;
         L.plan[e].boundary_before = kBoundaryFlag;
@@ -346,7 +360,7 @@ bool subdivide_level(HalfedgeMesh& mesh, LoopWeights weights, int threads, Scrat
   Level L{mesh.vertex_capacity(), mesh.halfedge_capacity(), mesh.edge_capacity(),
           mesh.face_capacity(),   MeshStorage::view(mesh),  scratch.plan};
   uint32_t live_edges = 0, boundary_edges = 0;
-  plan_edges(L, threads, live_edges, boundary_edges);
+  plan_edges(L, threads, mesh, live_edges, boundary_edges);
   MeshStorage::grow(mesh, L.v0 + live_edges, L.h0 + 6 * live_edges - 2 * boundary_edges,
                     L.e0 + 3 * live_edges - boundary_edges, L.f0 + 2 * live_edges - boundary_edges);
   L.m = MeshStorage::view(mesh);
