@@ -241,6 +241,79 @@ struct RowOrder {
   TriangleRow* rows;            // the output's rows, or null
 };
 
+// Every id one original triangle's rewrite needs: its 12 halfedges (x0..x2, then o, p, q per side), its 4 faces, its
+// 6 vertices (corners, then the midpoints of its sides), each new halfedge's twin and edge, and its case.
+struct TriangleIds {
+  uint32_t id[12], face_id[4], vertex_id[6], twin_id[9], edge_id[9];
+  const loop_cases::TriangleCase* c;
+};
+
+// The ids of the triangle of face f: its three sides' splits, as the plan places them.
+inline void triangle_ids(const Level& L, const loop_cases::TriangleCase* cases, size_t f, TriangleIds& t) {
+  const MeshStorage::View& m = L.m;
+  uint32_t rank[3];
+  unsigned sides = 0;
+  t.id[0] = m.face_halfedge[f].index;
+  t.id[1] = m.h[t.id[0]].next.index;
+  t.id[2] = m.h[t.id[1]].next.index;
+  t.face_id[0] = uint32_t(f);
+  for (uint32_t i = 0; i < 3; ++i) {
+    const HalfedgeRecord& x = m.h[t.id[i]];
+    const uint32_t e = x.edge.index;
+    const EdgePlan& p = L.plan[e];
+    const bool side_h0 = p.face_side == t.id[i];
+    sides |= unsigned(side_h0) << i;
+    rank[i] = p.rank;
+    t.vertex_id[i] = x.vertex.index;
+    t.vertex_id[3 + i] = L.vertex_of(e);
+    const uint32_t n0 = L.first_halfedge(e), ea = L.first_edge(e);
+    t.id[3 + i] = side_h0 ? n0 : n0 + 1;      // o: n0 or n1, on ea
+    t.id[6 + i] = side_h0 ? n0 + 2 : n0 + 4;  // p: n2 or n4, on ec or ed
+    t.id[9 + i] = t.id[6 + i] + 1;            // q: n3 or n5
+    t.twin_id[i] = side_h0 ? n0 + 1 : n0;
+    t.twin_id[3 + i] = t.id[9 + i];
+    t.twin_id[6 + i] = t.id[6 + i];
+    t.edge_id[i] = ea;
+    t.edge_id[3 + i] = t.edge_id[6 + i] = ea + (side_h0 ? 1 : 2);
+    t.face_id[1 + i] = L.first_face(e) + (side_h0 ? 0 : 1);
+  }
+  t.c = &cases[loop_cases::case_index(loop_cases::order_code(rank[0], rank[1], rank[2]), sides)];
+}
+
+// Writes the triangle's 12 halfedges and its 4 faces' halfedges from its case.
+inline void write_triangle(const MeshStorage::View& m, const TriangleIds& t) {
+  const loop_cases::TriangleCase& c = *t.c;
+  for (uint32_t s = 0; s < 3; ++s) {  // the original halfedges keep their twin and edge
+    HalfedgeRecord& r = m.h[t.id[s]];
+    r.next = HalfedgeId(t.id[c.next[s]]);
+    r.face = FaceId::face(t.face_id[c.face[s]]);
+    r.vertex = VertexId(t.vertex_id[c.vertex[s]]);
+  }
+  for (uint32_t s = 3; s < 12; ++s) {  // new halfedges: every field, in one store each
+    m.h[t.id[s]] =
+        HalfedgeRecord{HalfedgeId(t.id[c.next[s]]), HalfedgeId(t.twin_id[s - 3]), VertexId(t.vertex_id[c.vertex[s]]),
+                       EdgeId(t.edge_id[s - 3]), FaceId::face(t.face_id[c.face[s]])};
+  }
+  for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[t.face_id[g]] = HalfedgeId(t.id[c.face_halfedge[g]]);
+}
+
+// The triangle in row `row` puts its four faces in rows 4 row .. 4 row + 3 of the next level's order or the rows.
+inline void write_rows(const RowOrder& order, size_t row, const TriangleIds& t) {
+  const size_t first_row = 4 * row;
+  if (order.next_face_at_row) {
+    for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = t.face_id[g];
+  }
+  if (order.rows) {  // one 64-byte line, written past the caches: the rows are read only after Loop
+    const loop_cases::TriangleCase& c = *t.c;
+    for (uint32_t g = 0; g < 4; ++g) {
+      const TriangleRow row_of_face{{VertexId(t.vertex_id[c.corner[g][0]]), VertexId(t.vertex_id[c.corner[g][1]]),
+                                     VertexId(t.vertex_id[c.corner[g][2]])},
+                                    FaceId::face(t.face_id[g])};
+      memory_hints::stream_store(&order.rows[first_row + g], &row_of_face);
+    }
+  }
+}
+
 // Pass 3: every original triangle's 12 halfedges (next, face, vertex) and its 4 faces' halfedges, from its case,
 // and the four faces' places in the row order.
 void pass_triangles(Level& L, int threads, const RowOrder& order) {
@@ -276,59 +349,10 @@ void pass_triangles(Level& L, int threads, const RowOrder& order) {
           memory_hints::prefetch_for_write(&m.face_halfedge[L.first_face(e)]);
         }
       }
-      const size_t f = face_at[row];
-      uint32_t id[12], face_id[4], vertex_id[6], rank[3], twin_id[9], edge_id[9];
-      unsigned sides = 0;
-      id[0] = m.face_halfedge[f].index;
-      id[1] = m.h[id[0]].next.index;
-      id[2] = m.h[id[1]].next.index;
-      face_id[0] = uint32_t(f);
-      for (uint32_t i = 0; i < 3; ++i) {
-        const HalfedgeRecord& x = m.h[id[i]];
-        const uint32_t e = x.edge.index;
-        const EdgePlan& p = L.plan[e];
-        const bool side_h0 = p.face_side == id[i];
-        sides |= unsigned(side_h0) << i;
-        rank[i] = p.rank;
-        vertex_id[i] = x.vertex.index;
-        vertex_id[3 + i] = L.vertex_of(e);
-        const uint32_t n0 = L.first_halfedge(e), ea = L.first_edge(e);
-        id[3 + i] = side_h0 ? n0 : n0 + 1;      // o: n0 or n1, on ea
-        id[6 + i] = side_h0 ? n0 + 2 : n0 + 4;  // p: n2 or n4, on ec or ed
-        id[9 + i] = id[6 + i] + 1;              // q: n3 or n5
-        twin_id[i] = side_h0 ? n0 + 1 : n0;
-        twin_id[3 + i] = id[9 + i];
-        twin_id[6 + i] = id[6 + i];
-        edge_id[i] = ea;
-        edge_id[3 + i] = edge_id[6 + i] = ea + (side_h0 ? 1 : 2);
-        face_id[1 + i] = L.first_face(e) + (side_h0 ? 0 : 1);
-      }
-      const loop_cases::TriangleCase& c =
-          cases[loop_cases::case_index(loop_cases::order_code(rank[0], rank[1], rank[2]), sides)];
-      for (uint32_t s = 0; s < 3; ++s) {  // the original halfedges keep their twin and edge
-        HalfedgeRecord& r = m.h[id[s]];
-        r.next = HalfedgeId(id[c.next[s]]);
-        r.face = FaceId::face(face_id[c.face[s]]);
-        r.vertex = VertexId(vertex_id[c.vertex[s]]);
-      }
-      for (uint32_t s = 3; s < 12; ++s) {  // new halfedges: every field, in one store each
-        m.h[id[s]] =
-            HalfedgeRecord{HalfedgeId(id[c.next[s]]), HalfedgeId(twin_id[s - 3]), VertexId(vertex_id[c.vertex[s]]),
-                           EdgeId(edge_id[s - 3]), FaceId::face(face_id[c.face[s]])};
-      }
-      for (uint32_t g = 0; g < 4; ++g) m.face_halfedge[face_id[g]] = HalfedgeId(id[c.face_halfedge[g]]);
-      const size_t first_row = 4 * row;
-      if (order.next_face_at_row) {
-        for (uint32_t g = 0; g < 4; ++g) order.next_face_at_row[first_row + g] = face_id[g];
-      }
-      if (order.rows) {  // one 64-byte line, written past the caches: the rows are read only after Loop
-        for (uint32_t g = 0; g < 4; ++g) {
-          const TriangleRow row_of_face{{VertexId(vertex_id[c.corner[g][0]]), VertexId(vertex_id[c.corner[g][1]]),
-                                         VertexId(vertex_id[c.corner[g][2]])},
-                                        FaceId::face(face_id[g])};
-          memory_hints::stream_store(&order.rows[first_row + g], &row_of_face);
-        }
-      }
+      TriangleIds t;
+      triangle_ids(L, cases, face_at[row], t);
+      write_triangle(m, t);
+      write_rows(order, row, t);
     }
     memory_hints::stream_fence();
   });
