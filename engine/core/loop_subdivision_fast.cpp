@@ -61,59 +61,68 @@ struct Level {
   uint32_t face_side(uint32_t e) const { return plan[e].face_side; }
 };
 
-// Ranks the live edges and counts boundary edges before each (two passes per chunk when threaded). On a closed mesh
-// (no boundary loop, so no halfedge of a valid mesh lies on one) it reads no halfedge: every edge's face side is its
-// own halfedge and none is on a boundary; with no dead edge either, each edge's rank is its id, in one pass.
+// A boundary edge and its face side: split()'s h0, the edge's halfedge unless that lies on a boundary loop.
+struct BoundarySide {
+  uint32_t edge, face_side;
+};
+
+// Every boundary edge once, by edge id, found by walking the boundary loops (few halfedges; none on a closed mesh).
+std::vector<BoundarySide> boundary_sides(const Level& L, const HalfedgeMesh& mesh) {
+  std::vector<BoundarySide> sides;
+  for (FaceId loop : mesh.boundaries()) {
+    mesh.for_each_face_halfedge(loop, [&](HalfedgeId b) {
+      const uint32_t e = L.m.h[b.index].edge.index, h = L.m.edge_halfedge[e].index;
+      sides.push_back({e, L.m.h[h].face.is_boundary() ? L.m.h[h].twin.index : h});
+    });
+  }
+  std::sort(sides.begin(), sides.end(), [](const BoundarySide& a, const BoundarySide& b) { return a.edge < b.edge; });
+  // An edge with both sides on loops was seen twice.
+  sides.erase(std::unique(sides.begin(), sides.end(),
+                          [](const BoundarySide& a, const BoundarySide& b) { return a.edge == b.edge; }),
+              sides.end());
+  return sides;
+}
+
+// Ranks the live edges and counts boundary edges before each, reading no halfedge but the boundary loops'. With no
+// dead edge an edge's rank is its id and this is one pass; otherwise a first pass counts each chunk's live edges.
 void plan_edges(Level& L, int threads, const HalfedgeMesh& mesh, uint32_t& live_edges, uint32_t& boundary_edges) {
   resize_for_overwrite(L.plan, L.e0);  // every entry is written below, dead edges' too
-  const bool closed = mesh.num_boundaries() == 0;
-  if (closed && mesh.num_edges() == L.e0) {
-    parallel_for(threads, L.e0, [&](size_t begin, size_t end) {
-      for (size_t e = begin; e < end; ++e) L.plan[e] = EdgePlan{uint32_t(e), 0, L.m.edge_halfedge[e].index};
-    });
-    live_edges = L.e0;
-    boundary_edges = 0;
-    return;
-  }
+  const std::vector<BoundarySide> sides = boundary_sides(L, mesh);
   const size_t chunks = chunk_count(threads, L.e0);
-  std::vector<uint32_t> live(chunks + 1, 0), bound(chunks + 1, 0);
+  std::vector<uint32_t> live_before(chunks + 1, 0);
+  const bool any_dead = mesh.num_edges() != L.e0;
+  if (!any_dead) {
+    for (size_t c = 0; c <= chunks; ++c) live_before[c] = uint32_t(chunk_begin(c, chunks, L.e0));
+  } else {
+    parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
+      uint32_t n = 0;
+      for (size_t e = begin; e < end; ++e) n += (*L.m.edge_alive)[e] ? 1 : 0;
+      live_before[chunk + 1] = n;
+    });
+    for (size_t c = 0; c < chunks; ++c) live_before[c + 1] += live_before[c];
+  }
   parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
-    uint32_t n = 0, b = 0;
+    EdgePlan* plan = L.plan.data();
+    const HalfedgeId* edge_halfedge = L.m.edge_halfedge;
+    const AliveFlags& alive = *L.m.edge_alive;
+    auto side =
+        std::lower_bound(sides.begin(), sides.end(), begin, [](const BoundarySide& s, size_t e) { return s.edge < e; });
+    uint32_t n = live_before[chunk], before = uint32_t(side - sides.begin());
+    size_t next_boundary = side != sides.end() ? side->edge : end;
     for (size_t e = begin; e < end; ++e) {
-      L.plan[e] = EdgePlan{};
-      if (!(*L.m.edge_alive)[e]) continue;
-      ++n;
-      const uint32_t h = L.m.edge_halfedge[e].index;
-      L.plan[e].face_side = h;
-      if (closed) continue;
-      const uint32_t t = L.m.h[h].twin.index;
-      const bool h_on_loop = L.m.h[h].face.is_boundary();
-      if (h_on_loop) L.plan[e].face_side = t;
-      if (h_on_loop || L.m.h[t].face.is_boundary()) {
-        ++b;
-        L.plan[e].boundary_before = kBoundaryFlag;
+      if (any_dead && !alive[e]) {
+        plan[e] = EdgePlan{};
+      } else if (e == next_boundary) {
+        plan[e] = EdgePlan{n++, before++ | kBoundaryFlag, side->face_side};
+        ++side;
+        next_boundary = side != sides.end() ? side->edge : end;
+      } else {
+        plan[e] = EdgePlan{n++, before, edge_halfedge[e].index};
       }
     }
-    live[chunk + 1] = n;
-    bound[chunk + 1] = b;
   });
-  for (size_t c = 0; c < chunks; ++c) {
-    live[c + 1] += live[c];
-    bound[c + 1] += bound[c];
-  }
-  parallel_chunks(threads, L.e0, [&](size_t chunk, size_t begin, size_t end) {
-    uint32_t n = live[chunk], b = bound[chunk];
-    for (size_t e = begin; e < end; ++e) {
-      if (!(*L.m.edge_alive)[e]) continue;
-      EdgePlan& p = L.plan[e];
-      p.rank = n++;
-      const bool on_boundary = p.boundary();
-      p.boundary_before = b | (on_boundary ? kBoundaryFlag : 0);
-      b += on_boundary ? 1 : 0;
-    }
-  });
-  live_edges = live[chunks];
-  boundary_edges = bound[chunks];
+  live_edges = live_before[chunks];
+  boundary_edges = uint32_t(sides.size());
 }
 
 // Pass 1: each old vertex's new position (into `points`, read by nobody else) and its new halfedge. The rings are

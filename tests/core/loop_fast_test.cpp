@@ -52,6 +52,18 @@ TEST(LoopFast, SameAsPhasesWithTwoThreads) {
   }
 }
 
+// Dead edges and a boundary on a mesh big enough for two chunks: the boundary edges found on the loops are counted in
+// the chunk that holds them.
+TEST(LoopFast, SameAsPhasesWithTwoThreadsAfterRandomEdits) {
+  for (uint32_t seed = 1; seed <= 2; ++seed) {
+    HalfedgeMesh m = build_halfedge_mesh(make_grid(150, 120));
+    testing::random_local_edits(m, seed, 200);
+    ASSERT_TRUE(validate(m).ok());
+    SCOPED_TRACE("seed " + std::to_string(seed));
+    EXPECT_TRUE(testing::loop_paths_agree(m, LoopWeights::Loop, 1, 2));
+  }
+}
+
 // Random flips, splits and collapses leave dead slots among the ids and an irregular order of edges around each
 // face, so the triangles' edges are split in every order and from both sides.
 TEST(LoopFast, SameAsPhasesAfterRandomEdits) {
