@@ -209,8 +209,6 @@ glm::dvec3 row_term(const HalfedgeMesh& mesh, const TriangleRow& row) {
   return corner_term(mesh.position(c[0]), mesh.position(c[1]), mesh.position(c[2]));
 }
 
-bool bit(const uint64_t* bits, VertexId v) { return (bits[v.index >> 6] >> (v.index & 63)) & 1u; }
-
 // A row whose term some of its corners take only after every run is done: bit k of `corners` for corner k.
 struct SeamRow {
   uint32_t row;
@@ -234,7 +232,7 @@ void add_row_terms(const HalfedgeMesh& mesh, const TriangleRow* rows, size_t beg
     const glm::dvec3 term = row_term(mesh, rows[r]);
     uint8_t on_seam = 0;
     for (int k = 0; k < 3; ++k) {
-      if (seam != nullptr && bit(seam, c[k])) on_seam |= uint8_t(1u << k);
+      if (seam != nullptr && vertex_bit(seam, c[k])) on_seam |= uint8_t(1u << k);
       else sums[c[k].index] += term;
     }
     if (on_seam != 0) deferred->push_back({static_cast<uint32_t>(r), on_seam});

@@ -15,18 +15,18 @@ namespace {
 // The seam made from scratch: each run marks the vertices its rows touch, then a vertex is on the seam where two
 // runs' marks meet.
 VertexBits make_seam(const TriangleRows& rows, int threads, size_t vertices) {
-  const size_t words = (vertices + 63) / 64;
+  const size_t words = (vertices + 63) / 64, runs = chunk_count(threads, rows.size());
   VertexBits seam;
-  if (chunk_count(threads, rows.size()) <= 1) {
+  if (runs <= 1) {
     seam.assign(words, 0);
     return seam;
   }
-  std::vector<VertexBits> touched(chunk_count(threads, rows.size()));
+  std::vector<VertexBits> touched(runs);
   parallel_chunks(threads, rows.size(), [&](size_t run, size_t begin, size_t end) {
     VertexBits& bits = touched[run];
     bits.assign(words, 0);
     for (size_t r = begin; r < end; ++r) {
-      for (VertexId c : rows[r].corner) bits[c.index >> 6] |= uint64_t(1) << (c.index & 63);
+      for (VertexId c : rows[r].corner) set_vertex_bit(bits.data(), c);
     }
   });
   seam.resize_for_overwrite(words);

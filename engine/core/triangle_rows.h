@@ -35,6 +35,9 @@ static_assert(sizeof(TriangleRow) == 16, "four rows fill one 64-byte cache line 
 // One bit per vertex slot: bit (i & 63) of word i >> 6 for vertex i.
 using VertexBits = MeshArray<uint64_t>;
 
+inline bool vertex_bit(const uint64_t* bits, VertexId v) { return (bits[v.index >> 6] >> (v.index & 63)) & 1u; }
+inline void set_vertex_bit(uint64_t* bits, VertexId v) { bits[v.index >> 6] |= uint64_t(1) << (v.index & 63); }
+
 // The rows themselves are the array (Loop fills it through MeshArray's interface before it is shared).
 class TriangleRows : public MeshArray<TriangleRow> {
  public:

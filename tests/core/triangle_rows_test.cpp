@@ -174,7 +174,7 @@ TEST(TriangleRows, TheSeamIsEveryVertexTwoRunsShareMadeOnceAndKept) {
     ASSERT_EQ(seam->size(), (vertices + 63) / 64);
     size_t on_seam = 0;
     for (size_t v = 0; v < vertices; ++v) {
-      const bool bit = ((*seam)[v >> 6] >> (v & 63)) & 1u;
+      const bool bit = vertex_bit(seam->data(), VertexId(uint32_t(v)));
       EXPECT_EQ(bit, runs_of[v].size() > 1) << "v" << v << ", " << threads << " threads";
       on_seam += bit ? 1 : 0;
     }
