@@ -1,8 +1,8 @@
-// How far this machine's memory lets more threads go: the rate at which one thread, and then `threads` threads at
-// once, read a buffer much bigger than the caches. A pass that waits on memory (Loop, normals on a big mesh) can
-// scale over threads only as far as this does, so peer_bench prints it beside its "N threads over one" lines.
-// Measured, never assumed: on a machine with one memory channel per core the ratio is near the thread count, on a
-// virtual machine sharing its host's channels it can be far below.
+// How far this machine's memory lets more threads go: how long one thread, and then `threads` threads at once, take
+// to read buffers much bigger than the caches. A pass that waits on memory (Loop, normals on a big mesh) can scale
+// over threads only as far as this does. peer_bench times the two reads as jobs in the same rounds as ours on one
+// and on several threads, so both ratios see the same host: on a virtual machine whose neighbours share the host's
+// memory channels, the reads' own ratio moves from run to run. Measured, never assumed.
 #pragma once
 
 #include <algorithm>
@@ -10,40 +10,48 @@
 #include <thread>
 #include <vector>
 
-#include "bench/bench_support.h"
-
 namespace meshedit::bench {
 
-struct ReadRates {
-  double one_thread_gbs = 0.0;
-  double all_threads_gbs = 0.0;  // summed over the threads
-};
+class MemoryReadProbe {
+ public:
+  // One buffer of `mib` MiB per thread, written once here so its pages are in place before any read is timed.
+  explicit MemoryReadProbe(int threads, size_t mib = 256)
+      : buffers_(size_t(std::max(threads, 1)), std::vector<uint64_t>((mib << 20) / sizeof(uint64_t), 1)),
+        sums_(buffers_.size()) {}
 
-// Each thread sums its own `mib`-MiB buffer; the best of `reps` runs, one thread and all threads interleaved.
-inline ReadRates measure_read_rates(int threads, int reps, size_t mib = 256) {
-  const size_t words = (mib << 20) / sizeof(uint64_t);
-  std::vector<std::vector<uint64_t>> buffers(size_t(std::max(threads, 1)), std::vector<uint64_t>(words, 1));
-  std::vector<uint64_t> sums(buffers.size());
-  const auto read = [&](size_t t) {
-    uint64_t sum = 0;
-    for (uint64_t word : buffers[t]) sum += word;
-    sums[t] = sum;  // kept, so the reads are not optimised away
-  };
-  const auto all = [&] {
+  int threads() const { return int(buffers_.size()); }
+
+  // The first thread reads its buffer.
+  void read_on_one_thread() { read(0); }
+
+  // Every thread reads its own buffer at the same time: threads() times the bytes of read_on_one_thread.
+  void read_on_all_threads() {
     std::vector<std::thread> others;
-    for (size_t t = 1; t < buffers.size(); ++t) others.emplace_back(read, t);
+    for (size_t t = 1; t < buffers_.size(); ++t) others.emplace_back([this, t] { read(t); });
     read(0);
     for (std::thread& other : others) other.join();
-  };
-  double one_ms = 1e300, all_ms = 1e300;
-  for (int i = 0; i < reps; ++i) {
-    one_ms = std::min(one_ms, min_ms(
-                                  1, [] {}, [&] { read(0); }));
-    all_ms = std::min(all_ms, min_ms(
-                                  1, [] {}, all));
   }
-  const double gb = double(mib << 20) / 1e9;
-  return {gb / one_ms * 1e3, gb * double(buffers.size()) / all_ms * 1e3};
-}
+
+  // How many times the bytes per ms all threads read against one, from the two reads' times.
+  double scaling(double one_thread_ms, double all_threads_ms) const {
+    return double(threads()) * one_thread_ms / all_threads_ms;
+  }
+
+  // GB/s of the one-thread read and of the all-threads read (summed over the threads) from their times.
+  double one_thread_gbs(double ms) const { return gb_per_buffer() / ms * 1e3; }
+  double all_threads_gbs(double ms) const { return gb_per_buffer() * double(threads()) / ms * 1e3; }
+
+ private:
+  double gb_per_buffer() const { return double(buffers_[0].size() * sizeof(uint64_t)) / 1e9; }
+
+  void read(size_t t) {
+    uint64_t sum = 0;
+    for (uint64_t word : buffers_[t]) sum += word;
+    sums_[t] = sum;  // kept, so the reads are not optimised away
+  }
+
+  std::vector<std::vector<uint64_t>> buffers_;
+  std::vector<uint64_t> sums_;
+};
 
 }  // namespace meshedit::bench
