@@ -3,6 +3,15 @@
 // the step's coroutine (its errors point at the lesson's lines, and each resume has the runtime's budget). The
 // questions (lesson_questions.cpp) and what follows the view (lesson_displays.cpp) are defined from here too; what
 // all of them share is lesson_api_support.h.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   the prelude                kPrelude: wait_for and animate, written in Lua over the helpers the prelude calls
+//   wait_for's table           read_target, default_hint, parse_wait (a wait_for table into a LessonWait)
+//   points, curves, patches    push_points_table, read_points, userdata_name, show_curve, read_patch, for_each_element
+//   the globals                api_lesson, api_step, api_say, show_up_axis and api_show, api_highlight, api_label,
+//                              api_clear, api_camera, api_view, api_current_mesh, api_lesson_file, api_selection
+//   helpers the prelude calls  api_check_wait, api_wait, api_check_animate, api_frame: wait_for's and animate's yields
+//   public functions           lesson_where, push_element_value, open_lesson_api, clear_step_display
 #include "script/lesson_api.h"
 
 #include <cmath>
@@ -27,6 +36,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- the prelude -----------------------------------------------------------------------------------
 
 constexpr const char* kPrelude = R"lua(local api = __lesson_api
 __lesson_api = nil
@@ -57,6 +68,8 @@ function animate(seconds, fn)
   end
 end
 )lua";
+
+// ---- wait_for's table ------------------------------------------------------------------------------
 
 // The value of wait_for{click=...} / {selection=...}: "any", a kind name, an id, or a handle.
 void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
@@ -150,7 +163,8 @@ LessonWait parse_wait(lua_State* L, int index) {
   return wait;
 }
 
-// ---- points, curves, patches ------------------------------------------------------------------------
+// ---- points, curves, patches -----------------------------------------------------------------------
+
 // The `points` field of a curve or patch userdata (from the Bézier bindings), or the table itself.
 void push_points_table(lua_State* L, int index) {
   if (lua_type(L, index) == LUA_TUSERDATA) lua_getfield(L, index, "points");
@@ -226,7 +240,7 @@ void for_each_element(lua_State* L, int index, const char* call, Fn fn) {
   fn(check_element(L, index, call));
 }
 
-// ---- the globals ------------------------------------------------------------------------------------
+// ---- the globals -----------------------------------------------------------------------------------
 
 int api_lesson(lua_State* L) {
   require_loading(L, "lesson{}");
@@ -441,7 +455,7 @@ int api_selection(lua_State* L) {
   return 1;
 }
 
-// ---- helpers the prelude calls ------------------------------------------------------------------------
+// ---- helpers the prelude calls ---------------------------------------------------------------------
 
 int api_check_wait(lua_State* L) {
   require_step_thread(L, "wait_for()");
@@ -482,6 +496,8 @@ int api_frame(lua_State* L) {
 }
 
 }  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
 
 std::string lesson_where(lua_State* L, int first_level) {
   lua_Debug ar;

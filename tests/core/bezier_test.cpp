@@ -1,5 +1,19 @@
 // Bézier curves, patches and patch tessellation: exact de Casteljau pyramids, the row-then-column patch
 // order, welding ids, and the project's teapot asset building into a half-edge mesh.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                                  kNaN, kInf, the Bernstein forms (bernstein_curve, bernstein_patch),
+//                                            grid_patch, lopsided_patch, expect_near, outgoing_count, read_bez
+//   curves                                   de Casteljau levels and steps in 2D and 3D (hand-worked pyramid, Bernstein
+//                                            form, endpoints, non-finite input), split_curve
+//   patches                                  evaluate_patch and its steps: rows at u then the column at v, the
+//                                            Bernstein sum, corners, exact bilinear points
+//   tessellation: one patch                  a flat patch's documented grid, ids and triangles; the default resolution
+//   tessellation: welding                    shared edges welded (within the tolerance, parametrised backwards),
+//                                            collapsed rows around an apex, surfaces touching at a point or oppositely
+//                                            oriented cut apart
+//   tessellation: hostile input              non-finite or huge coordinates, a patch that is one point, bad resolutions
+//   the shipped assets and the course files  teapot.bez at every resolution, the curve assets, the course's .bez files
 #include <gtest/gtest.h>
 
 #include <array>
@@ -23,6 +37,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 using glm::dvec2;
 using glm::dvec3;
@@ -296,7 +312,7 @@ TEST(BezierPatchEval, NonFiniteInputDoesNotCrash) {
   EXPECT_EQ(evaluate_patch_steps(lopsided_patch(), 0.5, kInf).column_levels.size(), 4u);
 }
 
-// ---- tessellation ----------------------------------------------------------------------------------
+// ---- tessellation: one patch -----------------------------------------------------------------------
 
 TEST(PatchTessellation, OneFlatPatchGivesTheDocumentedGrid) {
   const uint32_t n = 4;
@@ -341,6 +357,8 @@ TEST(PatchTessellation, DefaultResolutionIsSixteen) {
   EXPECT_EQ(mesh.num_faces(), 2u * 16u * 16u);
   EXPECT_EQ(mesh.positions[17 * 5 + 3], evaluate_patch(patch, 3 / 16.0, 5 / 16.0));
 }
+
+// ---- tessellation: welding -------------------------------------------------------------------------
 
 TEST(PatchTessellation, SharedEdgeIsWeldedAndBuilds) {
   const uint32_t n = 2;
@@ -480,6 +498,8 @@ TEST(PatchTessellation, OppositelyOrientedNeighbourIsCutFree) {
   EXPECT_TRUE(validate(m).ok()) << validate(m).summary();
   EXPECT_EQ(m.num_boundaries(), 2u);
 }
+
+// ---- tessellation: hostile input -------------------------------------------------------------------
 
 TEST(PatchTessellation, NonFiniteControlPointsDoNotThrow) {
   std::array<BezierPatch, 2> patches = {grid_patch({0, 0, 0}, {1, 0, 0}, {0, 2, 0}),

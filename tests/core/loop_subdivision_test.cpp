@@ -8,6 +8,17 @@
 //     Course u = 3/16 (n = 3) else 3/(8n);  Loop u = beta / n, beta = 5/8 - (3/8 + cos(2 pi / n) / 4)^2
 //   interior edge point: 3/8 (a + b) + 1/8 (c + d);  boundary edge point: (a + b) / 2
 //   boundary vertex: 3/4 p + 1/8 (left + right boundary neighbours)
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                     near, valid, the two weight sets (course_u, loop_u), interior_rule, edge_rule,
+//                               neighbours, find_edge, vertex_on_edge, counts
+//   phases and counts           run_phases_and_check (what each phase promises) on closed meshes; exact counts
+//   positions on closed meshes  the tetrahedron, the cube and the icosahedron worked by hand for both weight sets
+//   positions with a boundary   the flat grid, boundary rules that ignore the interior, a fan with a valence-50 centre
+//   phases against one call     the four phases give the mesh loop_subdivide gives
+//   refusals                    quads, a broken mesh, a valid mesh split cannot handle: refused, nothing changed; the
+//                               empty mesh
+//   repeated levels             three levels of the torus with their counts
 #include <algorithm>
 #include <cmath>
 #include <numbers>
@@ -26,6 +37,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 constexpr double kTol = 1e-12;
 
@@ -103,6 +116,8 @@ struct Counts {
   size_t v, e, f;
 };
 Counts counts(const HalfedgeMesh& m) { return {m.num_vertices(), m.num_edges(), m.num_faces()}; }
+
+// ---- phases and counts -----------------------------------------------------------------------------
 
 // Runs the four phases one by one on a closed or bounded triangle mesh, checking what each promises.
 void run_phases_and_check(HalfedgeMesh& m, LoopWeights weights) {
@@ -223,6 +238,8 @@ TEST(LoopSubdivision, ClosedMeshCountsAreExact) {
   }
 }
 
+// ---- positions on closed meshes --------------------------------------------------------------------
+
 TEST(LoopSubdivision, TetrahedronShrinksToAQuarter) {
   // Valence 3 everywhere, u = 3/16 for both weight sets; the other three vertices sum to -p, so
   // p' = (1 - 9/16) p - 3/16 p = p / 4. Edge a-b: c + d = -(a + b), so the point is (a + b) / 4.
@@ -321,6 +338,8 @@ TEST(LoopSubdivision, IcosahedronVerticesLandOnTwoSpheres) {
   }
 }
 
+// ---- positions with a boundary ---------------------------------------------------------------------
+
 TEST(LoopSubdivision, FlatGridStaysFlatAndFollowsTheBoundaryRules) {
   // make_grid(2,2): v(j*3 + i) = (i, j, 0); 9 vertices, 16 edges, 8 triangles, one boundary loop.
   const HalfedgeMesh original = build_halfedge_mesh(make_grid(2, 2));
@@ -395,6 +414,8 @@ TEST(LoopSubdivision, FanWithValenceFiftyCentre) {
   }
 }
 
+// ---- phases against one call -----------------------------------------------------------------------
+
 TEST(LoopSubdivision, PhasesAndOneCallGiveTheSameMesh) {
   for (const PolygonMesh& p : {make_cube(), make_grid(3, 2), make_torus(6, 5), make_fan(9)}) {
     for (LoopWeights w : {LoopWeights::Course, LoopWeights::Loop}) {
@@ -410,6 +431,8 @@ TEST(LoopSubdivision, PhasesAndOneCallGiveTheSameMesh) {
     }
   }
 }
+
+// ---- refusals --------------------------------------------------------------------------------------
 
 TEST(LoopSubdivision, RefusesQuadsNamingTheFaceAndChangesNothing) {
   HalfedgeMesh m = build_halfedge_mesh(make_cube_quads());
@@ -496,6 +519,8 @@ TEST(LoopSubdivision, EmptyMeshIsANoOp) {
   EXPECT_EQ(m.num_vertices(), 0u);
   EXPECT_EQ(m.num_faces(), 0u);
 }
+
+// ---- repeated levels -------------------------------------------------------------------------------
 
 TEST(LoopSubdivision, TorusTwoAndThreeLevels) {
   HalfedgeMesh m = build_halfedge_mesh(make_torus(8, 6));  // V 48, E 144, F 96

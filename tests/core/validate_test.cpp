@@ -9,6 +9,22 @@
 //   v0.halfedge h0, v1 h1, v2 h2, v3 h4; fans: v0 h0 h3 h6, v1 h1 h9 h5, v2 h2 h7 h11, v3 h4 h8 h10
 // Single triangle {0,1,2}: f0 = h0 0->1, h1 1->2, h2 2->0; b0 = h3 1->0, h4 0->2, h5 2->1 (next h3 h4 h5);
 //   twins h0-h3 (e0), h1-h5 (e1), h2-h4 (e2); v0.halfedge h4, v1 h3, v2 h5.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   fixtures                                       listing, tetrahedron, triangle, two_triangles_sharing_v0; every
+//                                                  fixture valid; invariant_name
+//   DeadReference                                  dead, past-the-end and missing references in every field
+//   TwinOfTwin and TwinEdge                        twins that do not pair up or lie on different edges; an edge of four
+//                                                  halfedges
+//   FaceCycle                                      next-cycles that do not close, halfedges in the wrong face, faces
+//                                                  and loops of two halfedges
+//   NextNotPermutation, VertexHalfedge, VertexFan  a shared next, vertex halfedges leaving another vertex, fans that do
+//                                                  not close, hourglasses, a vertex on the boundary twice
+//   Orphan and NonFinitePosition                   elements no halfedge uses, a triangle turned into a boundary loop;
+//                                                  NaN and infinite positions
+//   report order, cap and summary                  the cap keeps the first in order and counts all; summary()
+//   hostile meshes                                 expect_well_formed; every twin itself, one huge rho, random
+//                                                  corruptions (many at once, 10k single ones of the torus)
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -23,6 +39,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- fixtures --------------------------------------------------------------------------------------
 
 // One line per violation: "<invariant> <element>: <message>".
 std::string listing(const ValidationReport& report) {
@@ -82,7 +100,7 @@ TEST(Validate, InvariantNames) {
   EXPECT_STREQ(invariant_name(Invariant::NonFinitePosition), "non-finite position");
 }
 
-// ---- DeadReference --------------------------------------------------------------------------------
+// ---- DeadReference ---------------------------------------------------------------------------------
 
 TEST(Validate, FaceHalfedgeDead) {
   HalfedgeMesh m = tetrahedron();
@@ -161,7 +179,7 @@ TEST(Validate, DeletedHalfedge) {
             "next not permutation h1: no live halfedge has h1 as its next\n");
 }
 
-// ---- TwinOfTwin and TwinEdge --------------------------------------------------------------------------
+// ---- TwinOfTwin and TwinEdge -----------------------------------------------------------------------
 
 TEST(Validate, TwinOfTwin) {
   HalfedgeMesh m = tetrahedron();
@@ -210,7 +228,7 @@ TEST(Validate, EdgeWithFourHalfedges) {
   EXPECT_EQ(listing(validate(m)), "twin edge e0: e0 has 4 halfedges (h0 h4 h5 h9); an edge has exactly two\n");
 }
 
-// ---- FaceCycle ------------------------------------------------------------------------------------------
+// ---- FaceCycle -------------------------------------------------------------------------------------
 
 TEST(Validate, NextFormsRho) {
   // f1: h3 -> h4 -> h5 -> h4 never returns to h3.
@@ -272,7 +290,7 @@ TEST(Validate, BoundaryLoopOfTwoHalfedges) {
             "vertex fan v2: v2's fan does not close: h2.twin is h4, whose next h3 leaves v1, not v2\n");
 }
 
-// ---- NextNotPermutation, VertexHalfedge, VertexFan --------------------------------------------------------
+// ---- NextNotPermutation, VertexHalfedge, VertexFan -------------------------------------------------
 
 TEST(Validate, NextSharedByTwo) {
   HalfedgeMesh m = tetrahedron();
@@ -349,7 +367,7 @@ TEST(Validate, VertexOnOneBoundaryLoopTwice) {
             "may leave a vertex\n");
 }
 
-// ---- Orphan -------------------------------------------------------------------------------------------------
+// ---- Orphan and NonFinitePosition ------------------------------------------------------------------
 
 TEST(Validate, NewElementsWithNoConnections) {
   HalfedgeMesh m = tetrahedron();
@@ -400,8 +418,6 @@ TEST(Validate, TriangleTurnedIntoABoundaryLoop) {
             "orphan e2: e2 is orphaned: both its sides are boundary loops (b1 and b0)\n");
 }
 
-// ---- NonFinitePosition --------------------------------------------------------------------------------------
-
 TEST(Validate, NonFinitePositions) {
   HalfedgeMesh m = tetrahedron();
   m.set_position(VertexId(1), {0, std::numeric_limits<double>::quiet_NaN(), 1});
@@ -411,7 +427,7 @@ TEST(Validate, NonFinitePositions) {
             "non-finite position v3: v3.position is (-inf, 0.5, 2)\n");
 }
 
-// ---- report order, cap and summary --------------------------------------------------------------------------
+// ---- report order, cap and summary -----------------------------------------------------------------
 
 TEST(Validate, CapKeepsTheFirstInOrderAndCountsAll) {
   HalfedgeMesh m = tetrahedron();
@@ -436,6 +452,8 @@ TEST(Validate, CapKeepsTheFirstInOrderAndCountsAll) {
   EXPECT_EQ(validate(m).summary(), "1 problem; first: v0.halfedge is h1, but h1 leaves v1");
 }
 
+// ---- hostile meshes --------------------------------------------------------------------------------
+
 // Sorted by (invariant, element) and capped: what every report must look like.
 void expect_well_formed(const ValidationReport& report, size_t cap) {
   EXPECT_EQ(report.violations.size(), std::min(report.total, cap));
@@ -446,8 +464,6 @@ void expect_well_formed(const ValidationReport& report, size_t cap) {
   }
   for (const Violation& v : report.violations) EXPECT_FALSE(v.message.empty());
 }
-
-// ---- hostile meshes -----------------------------------------------------------------------------------------
 
 TEST(Validate, EveryTwinIsItselfOnABigMesh) {
   HalfedgeMesh m = build_halfedge_mesh(make_torus(40, 20));

@@ -3,6 +3,23 @@
 // several inputs (cube, icosahedron, a grid with boundary, the teapot tessellated, several t and (u, v));
 // buggy variants of the solutions (mistakes students really make) are caught with messages that name the mistake;
 // loading, errors, limits, printing and the edit recording behave as exercises.h says.
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                                student_file, solution_file, variant (a solution with edits), from_text,
+//                                          mesh_of, teapot, meshes, curves, text_of, starts_with
+//   catalogue                              the six exercises in order, find_exercise, ExerciseInput::describe
+//   templates                              the templates (scripts/student) define their function, reported different
+//   correct solutions                      expect_identical; each solution identical to the reference on every input;
+//                                          runs never change the input
+//   buggy variants: curve, patch, normals  a dropped last point, swapped weights, too many points, u and v swapped,
+//                                          unit, inward or unnormalised normals
+//   buggy variants: flip and split         edge_where; forgotten face and vertex halfedges, a flipped boundary edge,
+//                                          the other rotation, a split vertex in the wrong place or pointing across, a
+//                                          wrong face, boundary edges left unsplit
+//   buggy variants: upsample               wrong flips or none, integer division, positions written to the wrong
+//                                          vertices, splitting that never ends
+//   loading, errors, output, recording     functions from the returned table or globals, load and run errors, caps, a
+//                                          normal that changes the mesh, print and recorded edits, refusals, bad input
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -26,6 +43,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 using Mesh = std::shared_ptr<const HalfedgeMesh>;
 
@@ -88,7 +107,7 @@ std::string text_of(const ExerciseReport& r) {
 
 bool starts_with(const std::string& s, const std::string& prefix) { return s.rfind(prefix, 0) == 0; }
 
-// ---- catalogue ----------------------------------------------------------------------------------------------
+// ---- catalogue -------------------------------------------------------------------------------------
 
 TEST(Exercises, CatalogueListsTheSixInOrder) {
   const auto all = all_exercises();
@@ -109,7 +128,7 @@ TEST(Exercises, CatalogueListsTheSixInOrder) {
             "2 points, t = 0.25");
 }
 
-// ---- templates ----------------------------------------------------------------------------------------------
+// ---- templates -------------------------------------------------------------------------------------
 
 TEST(Exercises, TemplatesDefineTheFunctionAndAreReportedDifferent) {
   const Mesh cube = mesh_of(make_cube());
@@ -153,7 +172,7 @@ TEST(Exercises, TemplatesDefineTheFunctionAndAreReportedDifferent) {
   }
 }
 
-// ---- correct solutions --------------------------------------------------------------------------------------
+// ---- correct solutions -----------------------------------------------------------------------------
 
 void expect_identical(StudentCode& code, Exercise e, const ExerciseInput& input) {
   SCOPED_TRACE(input.describe(e));
@@ -266,7 +285,7 @@ TEST(Exercises, RunsNeverChangeTheInput) {
   EXPECT_TRUE(cube->same_as(copy));
 }
 
-// ---- buggy variants -----------------------------------------------------------------------------------------
+// ---- buggy variants: curve, patch, normals ---------------------------------------------------------
 
 TEST(Exercises, CurveStepDroppingTheLastPoint) {
   auto code = variant(Exercise::CurveStep, {{"for i = 1, #points - 1 do", "for i = 1, #points - 2 do"}});
@@ -351,6 +370,8 @@ TEST(Exercises, NormalsInwardsAndNotNormalised) {
   ASSERT_FALSE(s.differences.empty());
   EXPECT_NE(s.differences[0].find("points the right way but has length"), std::string::npos) << text_of(s);
 }
+
+// ---- buggy variants: flip and split ----------------------------------------------------------------
 
 // An interior edge whose h0 = e.halfedge is also a.halfedge (so forgetting a.halfedge breaks validity), or
 // one whose f0.halfedge is h2 = h0.next (which the flip moves to f1, so forgetting f0.halfedge does).
@@ -504,6 +525,8 @@ TEST(Exercises, SplitIgnoringBoundaryEdgesIsToldTheReferenceSplitsThem) {
             "in the course)");
 }
 
+// ---- buggy variants: upsample ----------------------------------------------------------------------
+
 TEST(Exercises, UpsampleFlippingWithOneEndpointCheck) {
   auto code =
       variant(Exercise::Upsample,
@@ -580,7 +603,7 @@ TEST(Exercises, UpsampleSplittingNewEdgesNeverEnds) {
   EXPECT_TRUE(starts_with(r.differences[1], "upsample did not finish: split only the edges of the original mesh"));
 }
 
-// ---- loading, errors, output, recording ---------------------------------------------------------------------
+// ---- loading, errors, output, recording ------------------------------------------------------------
 
 TEST(Exercises, FunctionsMayComeFromTheReturnedTableOrGlobals) {
   const auto input = ExerciseInput::curve_step(curves()[0], 0.3);

@@ -2,6 +2,17 @@
 // right event, Back and reload rebuild the scene, and every kind of failure (syntax error, runtime error,
 // runaway loop, missing file, host exception) becomes error() with file:line while the runner keeps working.
 // Lesson files are written to the test's scratch folder as "lesson.lua", so messages read "lesson.lua:LINE:".
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                Strings, State, write_lesson, small_budget
+//   steps, say, the scene  steps in order and what each said, the title, the scene calls reaching the host (show,
+//                          highlight, label, camera, view), curves and patches, current_mesh and selection
+//   waits                  wait_for a key, a click, a selection, a condition or a button; animate
+//   navigation and reload  Back, Next past a waiting step, go_to, reload keeping the step index
+//   errors                 syntax errors on load and reload, runtime errors, errors in conditions and animations,
+//                          misused calls, scene calls at the top level, no steps, a missing file
+//   limits                 the instruction and memory budgets, a lesson's own memory error, a budget for each resume
+//   the host and print     ThrowingHost, ReentrantHost: a host exception, calls back into the runner; print's callback
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -20,6 +31,8 @@
 namespace meshedit {
 namespace {
 
+// ---- helpers ---------------------------------------------------------------------------------------
+
 using Strings = std::vector<std::string>;
 using State = LessonRunner::StepState;
 
@@ -36,7 +49,7 @@ LuaLimits small_budget(uint64_t instructions) {
   return limits;
 }
 
-// ---- steps, say, the scene ----------------------------------------------------------------------------
+// ---- steps, say, the scene -------------------------------------------------------------------------
 
 TEST(LessonRunner, RunsStepsInOrderAndKeepsWhatEachSaid) {
   const auto dir = testing::scratch_dir();
@@ -227,7 +240,7 @@ end)
   EXPECT_EQ(runner.said(), (Strings{"4 e3 userdata 4"})) << runner.error();
 }
 
-// ---- waits ----------------------------------------------------------------------------------------------
+// ---- waits -----------------------------------------------------------------------------------------
 
 TEST(LessonRunner, WaitForKeyBlocksUntilThatKey) {
   HeadlessHost host;
@@ -379,7 +392,7 @@ end)
   EXPECT_EQ(runner.said(), (Strings{"0 0.25 0.5 0.75 1", "instant 1"}));
 }
 
-// ---- navigation and reload ------------------------------------------------------------------------------
+// ---- navigation and reload -------------------------------------------------------------------------
 
 TEST(LessonRunner, BackRerunsThePreviousStepWithTheHostCleared) {
   HeadlessHost host;
@@ -466,7 +479,7 @@ step("B only", function() say("b only") end)
   EXPECT_EQ(runner.said(), (Strings{"b only"}));
 }
 
-// ---- failures ---------------------------------------------------------------------------------------------
+// ---- errors ----------------------------------------------------------------------------------------
 
 TEST(LessonRunner, ASyntaxErrorOnReloadKeepsTheOldLessonRunning) {
   const auto dir = testing::scratch_dir();
@@ -631,6 +644,8 @@ TEST(LessonRunner, AMissingFileIsALoadError) {
   EXPECT_EQ(runner.said(), (Strings{"found"}));
 }
 
+// ---- limits ----------------------------------------------------------------------------------------
+
 TEST(LessonRunner, AnEndlessLoopInAStepStopsWithTheBudgetMessage) {
   HeadlessHost host;
   LessonRunner runner(host, small_budget(1'000'000));
@@ -707,6 +722,8 @@ end)
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
   EXPECT_EQ(runner.said(), (Strings{"done"}));
 }
+
+// ---- the host and print ----------------------------------------------------------------------------
 
 class ThrowingHost : public HeadlessHost {
  public:

@@ -2,6 +2,21 @@
 // step (run_lesson_headless, as CI's `meshedit lesson --headless` does) and says the numbers the core gives;
 // driven step by step on a HeadlessHost, the labels and highlights name the right elements, and each check
 // waits until the mesh on screen really is right (a wrong edit leaves the step waiting).
+//
+// Map of this file (each part starts at its `// ---- name` banner):
+//   helpers                            contains, lesson_path, run_headless (a lesson through every step), said,
+//                                      colour_of, label_of, step_index, edit_screen, diamond
+//   part 4: edge flip                  the transcript (changed fields, the forgetful flip), the diagram's labels, the
+//                                      flip's check
+//   part 5: edge split                 the transcript naming the new elements (a boundary split too), labels on the
+//                                      screen mesh
+//   part 6: Loop subdivision           the transcript's counts and distances, each phase's screen mesh, the Shift+L
+//                                      step, the pre-split fix
+//   part 7: Catmull-Clark subdivision  lesson_number, lesson_point, lesson_counts, quad_grid, edge_between; the
+//                                      transcript's points, counts and levels; the arrow to the vertex point, the
+//                                      linear and Catmull-Clark cubes side by side
+//   bring your own mesh                bowtie, fin, flipped, all_three, refusal_of, expect_report; the transcript's
+//                                      refusals, repairs, up axes and counts; subdividing the student's mesh
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -35,6 +50,8 @@
 
 namespace meshedit {
 namespace {
+
+// ---- helpers ---------------------------------------------------------------------------------------
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 
@@ -101,7 +118,7 @@ HalfedgeMesh diamond() {
   return build_halfedge_mesh(polygons);
 }
 
-// ---- part 4: edge flip ----
+// ---- part 4: edge flip -----------------------------------------------------------------------------
 
 TEST(LessonsB, EdgeFlipPassesHeadlessAndListsTheChangedFields) {
   const std::string text = run_headless("4_edge_flip", 6);
@@ -192,7 +209,7 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
   EXPECT_EQ(host.highlights().size(), 10u);
 }
 
-// ---- part 5: edge split ----
+// ---- part 5: edge split ----------------------------------------------------------------------------
 
 TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
   const std::string text = run_headless("5_edge_split", 7);
@@ -248,7 +265,7 @@ TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
   EXPECT_EQ(screen->vertex(screen->twin(screen->halfedge(EdgeId(7)))), VertexId(3));
 }
 
-// ---- part 6: Loop subdivision ----
+// ---- part 6: Loop subdivision ----------------------------------------------------------------------
 
 TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
   const std::string text = run_headless("6_loop_subdivision", 11);
@@ -435,7 +452,7 @@ TEST(LessonsB, PreSplitWaitsForAllSixDiagonals) {
   EXPECT_TRUE(contains(said(runner), "All 8 corners are 0.5954 from the centre")) << said(runner);
 }
 
-// ---- part 7: Catmull-Clark subdivision ----
+// ---- part 7: Catmull-Clark subdivision -------------------------------------------------------------
 
 // A number as lesson 7 prints it: at most four decimals, trailing zeros dropped, never "-0".
 std::string lesson_number(double x) {
@@ -646,7 +663,7 @@ TEST(LessonsB, CatmullClarkVertexPointArrowIsTheCoresAndTheLastStepShowsBoth) {
   EXPECT_EQ(label_of(host, VertexId(right)), "Catmull-Clark");
 }
 
-// ---- bring your own mesh ----
+// ---- bring your own mesh ---------------------------------------------------------------------------
 
 // The lesson's three broken pieces (lessons/byo_mesh.lua: BOWTIE, FIN, FLIPPED), as polygons with 0-based corners.
 PolygonMesh bowtie() {
