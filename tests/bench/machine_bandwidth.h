@@ -1,8 +1,9 @@
-// How far this machine's memory lets more threads go: how long one thread, and then `threads` threads at once, take
-// to read buffers much bigger than the caches. A pass that waits on memory (Loop, normals on a big mesh) can scale
-// over threads only as far as this does. peer_bench times the two reads as jobs in the same rounds as ours on one
-// and on several threads, so both ratios see the same host: on a virtual machine whose neighbours share the host's
-// memory channels, the reads' own ratio moves from run to run. Measured, never assumed.
+// How far this machine's memory bandwidth lets more threads go: how long one thread, and then `threads` threads at
+// once, take to read buffers much bigger than the caches. peer_bench times the two reads as jobs in the same rounds
+// as ours on one and on several threads and prints them beside ours' ratio, as context: on a virtual machine whose
+// neighbours share the host's memory channels, the reads' own ratio moves from run to run. It bounds a pass that
+// streams; a pass that waits on memory latency (Loop, normals on a big mesh) can scale further. Measured, never
+// assumed.
 #pragma once
 
 #include <algorithm>

@@ -415,7 +415,7 @@ int main(int argc, char** argv) {
           "GB/s on %d: %.2fx (target >= 1.8x: %s)\n",
           o.threads, row.label.substr(0, row.label.rfind(" (")).c_str(), speedup,
           reads->one_thread_gbs(row.read_one_thread_ms), reads->all_threads_gbs(row.read_all_threads_ms), o.threads,
-          machine, thread_scaling_status(speedup, machine, 1.8, judging).c_str());
+          machine, ratio_status(speedup, 1.8, judging).c_str());
     }
   }
   CatmullClarkOptions catmull_clark;

@@ -1,8 +1,7 @@
 // The one table peer_bench prints: a row per measurement, ours against OpenMesh and CGAL, the ratios
 // peer/ours and whether each row's target ratio is met. Whether a target is met is judged only on a quiet machine
 // (Judging: the load average at the start at most 1): on a busy one the peers pay for the load differently, and
-// the status says the run was not judged. A speed-up over threads is judged only when the machine's own memory
-// reads, timed in the same rounds, scaled at least as far as its target (thread_scaling_status).
+// the status says the run was not judged.
 #pragma once
 
 #include <cmath>
@@ -19,7 +18,7 @@ struct TableRow {
   double ours = NAN;
   double ours_threads = NAN;  // ours with --threads N, NAN if not measured
   // The machine's memory read (machine_bandwidth.h) on one thread and on --threads threads, timed in the same rounds
-  // as ours_threads (NAN if not measured): how far a pass that waits on memory could scale in those rounds.
+  // as ours_threads (NAN if not measured): how far the host let a streaming pass scale in those rounds.
   double read_one_thread_ms = NAN, read_all_threads_ms = NAN;
   double peer[kPeerSlots] = {NAN, NAN};
   std::string peer_note[kPeerSlots];       // why a peer has no number ("absent", "mismatch")
@@ -39,10 +38,7 @@ void print_table(const std::vector<TableRow>& rows, int threads, const Judging& 
 // "met", "NOT met", "n/a ...", or "not judged (load ...)" for one row.
 std::string row_status(const TableRow& row, const Judging& judging);
 
-// The status of ours' speed-up over threads against a target, given the machine's own memory reads' speed-up in the
-// same rounds, as row_status words it ("met", "NOT met", "not judged (load ...)"); also not judged when the reads
-// themselves scale less than the target (a neighbour on the host is taking the memory channels, so no pass that waits
-// on memory could meet it).
-std::string thread_scaling_status(double ours, double machine_reads, double target, const Judging& judging);
+// The status of a ratio against a target, as row_status words it: "met", "NOT met" or "not judged (load ...)".
+std::string ratio_status(double ratio, double target, const Judging& judging);
 
 }  // namespace meshedit::bench
