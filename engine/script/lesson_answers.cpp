@@ -4,9 +4,10 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
-#include <fstream>
 #include <iterator>
+#include <utility>
 
+#include "core/file_bytes.h"
 #include "core/subdivision_phases.h"
 
 namespace meshedit {
@@ -39,10 +40,11 @@ constexpr const char* kAnswerNames =
     "key, click, selection, button, flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate, "
     "open_repaired, choose, answer, curve_t or your_turn";
 
+// The answers file's text, read under the size cap; not a regular file or unreadable: "<path>: <why>".
 std::string read_text(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw ScriptError("cannot open " + path.string());
-  return std::string((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  FileBytes file = read_file_bytes(path);
+  if (!file.ok()) throw ScriptError(path.string() + ": " + file.error);
+  return std::move(file.bytes);
 }
 
 std::string number_text(double value) {

@@ -132,6 +132,23 @@ TEST(LessonHeadless, ALessonThatDoesNotLoadFails) {
   EXPECT_EQ(outcome.steps, 0u);
 }
 
+TEST(LessonHeadless, AnAnswersPathThatIsNoFileIsAnErrorNamingIt) {
+  const auto dir = testing::scratch_dir();
+  const auto lesson = write_file(dir, "lesson.lua", "step('A', function() end)\n");
+  std::ostringstream out;
+  const auto fails_with = [&](const std::filesystem::path& answers, const std::string& why) {
+    try {
+      run_lesson_headless(lesson, answers, out);
+      ADD_FAILURE() << "no error for " << answers;
+    } catch (const ScriptError& e) {
+      EXPECT_EQ(std::string(e.what()), answers.string() + ": " + why);
+    }
+  };
+  fails_with(dir / "missing.lua", "cannot open: No such file or directory");
+  fails_with(dir, "cannot open: Is a directory");              // it would read as an empty chunk
+  fails_with("/dev/zero", "cannot open: not a regular file");  // it would never end
+}
+
 TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   const auto dir = testing::scratch_dir();
   const auto lesson = write_file(dir, "lesson.lua", "step('A', function() end)\n");
