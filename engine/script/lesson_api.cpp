@@ -523,21 +523,19 @@ void push_element_value(lua_State* L, LessonHost& host, ElementRef element) {
 }
 
 void open_lesson_api(LuaRuntime& runtime, LessonScript& script) {
-  lua_State* L = runtime.state();
-  lua_pushglobaltable(L);
-  set_function(L, script, "lesson", lesson_guarded<api_lesson>);
-  set_function(L, script, "step", lesson_guarded<api_step>);
-  set_function(L, script, "say", lesson_guarded<api_say>);
-  set_function(L, script, "show", lesson_guarded<api_show>);
-  set_function(L, script, "highlight", lesson_guarded<api_highlight>);
-  set_function(L, script, "label", lesson_guarded<api_label>);
-  set_function(L, script, "clear", lesson_guarded<api_clear>);
-  set_function(L, script, "camera", lesson_guarded<api_camera>);
-  set_function(L, script, "view", lesson_guarded<api_view>);
-  set_function(L, script, "current_mesh", lesson_guarded<api_current_mesh>);
-  set_function(L, script, "selection", lesson_guarded<api_selection>);
-  set_function(L, script, "lesson_file", lesson_guarded<api_lesson_file>);
-  lua_pop(L, 1);
+  set_globals(runtime, script,
+              {{"lesson", lesson_guarded<api_lesson>},
+               {"step", lesson_guarded<api_step>},
+               {"say", lesson_guarded<api_say>},
+               {"show", lesson_guarded<api_show>},
+               {"highlight", lesson_guarded<api_highlight>},
+               {"label", lesson_guarded<api_label>},
+               {"clear", lesson_guarded<api_clear>},
+               {"camera", lesson_guarded<api_camera>},
+               {"view", lesson_guarded<api_view>},
+               {"current_mesh", lesson_guarded<api_current_mesh>},
+               {"selection", lesson_guarded<api_selection>},
+               {"lesson_file", lesson_guarded<api_lesson_file>}});
   open_prelude_functions(runtime, script, "__lesson_api",
                          {{"check_wait", lesson_guarded<api_check_wait>},
                           {"wait", lesson_guarded<api_wait>},

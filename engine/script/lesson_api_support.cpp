@@ -201,18 +201,32 @@ glm::vec3 read_colour(lua_State* L, int index) {
   raise(L, "expected a colour (a name like \"red\", \"#rrggbb\" or {r, g, b}), got " + type_name(L, index));
 }
 
-void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f) {
-  lua_pushlightuserdata(L, &script);
-  lua_pushcclosure(L, f, 1);
-  lua_setfield(L, -2, name);
+namespace {
+
+// Sets a field of the table on top of the stack for each of `functions`, bound to `script`.
+void set_functions(lua_State* L, LessonScript& script, std::initializer_list<LessonFunction> functions) {
+  for (const LessonFunction& f : functions) {
+    lua_pushlightuserdata(L, &script);
+    lua_pushcclosure(L, f.function, 1);
+    lua_setfield(L, -2, f.name);
+  }
+}
+
+}  // namespace
+
+void set_globals(LuaRuntime& runtime, LessonScript& script, std::initializer_list<LessonFunction> functions) {
+  lua_State* L = runtime.state();
+  lua_pushglobaltable(L);
+  set_functions(L, script, functions);
+  lua_pop(L, 1);
 }
 
 void open_prelude_functions(LuaRuntime& runtime, LessonScript& script, const char* table,
-                            std::initializer_list<PreludeFunction> functions, const char* prelude) {
+                            std::initializer_list<LessonFunction> functions, const char* prelude) {
   lua_State* L = runtime.state();
   lua_pushglobaltable(L);
   lua_newtable(L);
-  for (const PreludeFunction& f : functions) set_function(L, script, f.name, f.function);
+  set_functions(L, script, functions);
   lua_setfield(L, -2, table);
   lua_pop(L, 1);
   runtime.run_string(prelude, kLessonPreludeName);

@@ -1,10 +1,11 @@
 // What the files defining the lesson globals share (internal to engine/script: lesson_api.cpp, lesson_questions.cpp,
-// lesson_displays.cpp): the script state behind each global, errors that start with the lesson's `file:line:`, the
-// phase checks, and the readers of the arguments every global takes the same way (elements, points, colours).
+// lesson_displays.cpp, lesson_your_turn.cpp, scripted_exercise.cpp): the script state behind each global, errors that
+// start with the lesson's `file:line:`, the phase checks, and the readers of the arguments every global takes the same
+// way (elements, points, colours).
 //
 // Invariants:
-// - Every global is a C closure with the LessonScript as its one upvalue (set_function), wrapped in lesson_guarded so
-//   no C++ exception crosses a Lua frame.
+// - Every global is a C closure with the LessonScript as its one upvalue (set_globals), wrapped in lesson_guarded so
+//   no C++ exception crosses a Lua frame. Each file lists its globals in one table, as Lua's luaL_Reg lists do.
 // - raise() never returns and never throws a C++ exception: it is a Lua error whose message starts with the lesson's
 //   line (the innermost frame outside the API's own Lua preludes, all named kLessonPreludeName).
 // - The readers only read: they raise for a bad argument and change nothing.
@@ -75,18 +76,17 @@ glm::vec3 read_colour(lua_State* L, int index);
 // The colour a name gives (the dark theme's swatch), or nullopt.
 std::optional<glm::vec3> named_colour(const std::string& name);
 
-// Sets field `name` of the table on top of the stack to `f` bound to `script`.
-void set_function(lua_State* L, LessonScript& script, const char* name, lua_CFunction f);
-
-// A C function a Lua prelude of the lesson API calls (bound to the script, lesson_guarded already applied).
-struct PreludeFunction {
+// A C function of the lesson API: a global, or one a Lua prelude calls (lesson_guarded already applied).
+struct LessonFunction {
   const char* name;
   lua_CFunction function;
 };
+// Sets a global for each of `functions`, bound to `script`.
+void set_globals(LuaRuntime& runtime, LessonScript& script, std::initializer_list<LessonFunction> functions);
 // Sets the global `table` to a table of `functions` bound to `script`, then runs `prelude` (named kLessonPreludeName),
 // which takes the table and clears the global (`local api = TABLE; TABLE = nil`). Throws ScriptError if the prelude
 // fails.
 void open_prelude_functions(LuaRuntime& runtime, LessonScript& script, const char* table,
-                            std::initializer_list<PreludeFunction> functions, const char* prelude);
+                            std::initializer_list<LessonFunction> functions, const char* prelude);
 
 }  // namespace meshedit

@@ -289,14 +289,12 @@ void evaluate_marker(lua_State* L, LessonScript& script, LessonPlot& plot) {
 }
 
 void open_lesson_displays(LuaRuntime& runtime, LessonScript& script) {
-  lua_State* L = runtime.state();
-  lua_pushglobaltable(L);
-  set_function(L, script, "live", lesson_guarded<api_live>);
-  set_function(L, script, "plot", lesson_guarded<api_plot>);
-  set_function(L, script, "arrow", lesson_guarded<api_arrow>);
-  set_function(L, script, "curve_t", lesson_guarded<api_curve_t>);
-  set_function(L, script, "curve_points", lesson_guarded<api_curve_points>);
-  lua_pop(L, 1);
+  set_globals(runtime, script,
+              {{"live", lesson_guarded<api_live>},
+               {"plot", lesson_guarded<api_plot>},
+               {"arrow", lesson_guarded<api_arrow>},
+               {"curve_t", lesson_guarded<api_curve_t>},
+               {"curve_points", lesson_guarded<api_curve_points>}});
 }
 
 }  // namespace meshedit
