@@ -14,6 +14,7 @@
 #include "app/window_host.h"
 #include "document/document_actions.h"
 #include "document/subdivision_actions.h"
+#include "io/mesh_file.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -244,7 +245,7 @@ void EditorApp::draw_open_panel() {
     input_path("save as", save_path_input_);
     ImGui::SameLine();
     if (ImGui::Button("Save") && !save_path_input_.empty()) save(save_path_input_);
-    ImGui::TextDisabled(".obj, .gltf, .glb, .ply or .stl");
+    ImGui::TextDisabled("%s", list_extensions(writable_extensions(), ", ", " or ").c_str());
   }
   ImGui::Separator();
 

@@ -3,23 +3,9 @@
 
 #include <algorithm>
 
-#include "io/file_access.h"
+#include "io/mesh_file.h"
 
 namespace meshedit {
-namespace {
-
-std::optional<UpAxis> table_up_axis(std::string_view extension) {
-  for (const FormatUpAxis& entry : kFormatUpAxes) {
-    if (entry.extension == extension) return entry.up_axis;
-  }
-  return std::nullopt;
-}
-
-}  // namespace
-
-std::optional<UpAxis> format_up_axis(const std::filesystem::path& path) {
-  return table_up_axis(lowercase_extension(path));
-}
 
 FileUpAxis collada_up_axis(const DaeAsset& asset) {
   if (std::find(kMistaggedExporters.begin(), kMistaggedExporters.end(), asset.authoring_tool) !=
@@ -27,7 +13,7 @@ FileUpAxis collada_up_axis(const DaeAsset& asset) {
     return {UpAxis::Z, UpAxisSource::CourseExporter};
   }
   if (asset.up_axis_tagged) return {asset.up_axis, UpAxisSource::FileTag};
-  return {table_up_axis(".dae").value_or(UpAxis::Y), UpAxisSource::Format};
+  return {format_up_axis("file.dae").value_or(UpAxis::Y), UpAxisSource::Format};
 }
 
 }  // namespace meshedit

@@ -3,12 +3,11 @@
 //
 // The rule:
 // - A format that does not say (every one but COLLADA) has the up axis of the files people make in it, from
-//   one data table, kFormatUpAxes: Y for .obj (Blender's and most tools' default export), .gltf/.glb (Y-up by
-//   the glTF spec) and .ply (the Stanford scans, the bunny, the dragon and the Buddha, stand on Y, and
-//   MeshLab keeps a scan's axes); Z for .stl (made for 3D printing and CAD, whose build plate is the XY
-//   plane: slicers and CAD tools are Z-up), .off (ModelNet's aligned shapes stand on Z) and .bez (the Utah
-//   teapot's patches, Z-up since Newell). A format not in the table has none (format_up_axis gives
-//   nullopt): a new reader gets an entry there, nowhere else.
+//   the one table of formats (mesh_file.cpp, kFormats; format_up_axis in mesh_file.h): Y for .obj (Blender's and most
+//   tools' default export), .gltf/.glb (Y-up by the glTF spec) and .ply (the Stanford scans, the bunny, the dragon and
+//   the Buddha, stand on Y, and MeshLab keeps a scan's axes); Z for .stl (made for 3D printing and CAD, whose build
+//   plate is the XY plane: slicers and CAD tools are Z-up), .off (ModelNet's aligned shapes stand on Z) and .bez (the
+//   Utah teapot's patches, Z-up since Newell). A curve (.bzc) has none: it is drawn in its plane.
 // - A COLLADA file says, in <asset>/<up_axis> (Y_UP when absent, COLLADA's default); the rule trusts it,
 //   except for the exporters in kMistaggedExporters, whose files are Z-up whatever their tag says.
 //   The one there, "modo 801 [Build 77509], Mac OS X 10.9.3 (10.9.3)", wrote every CS184 course .dae that is
@@ -22,30 +21,12 @@
 #pragma once
 
 #include <array>
-#include <filesystem>
-#include <optional>
 #include <string_view>
 
 #include "core/up_axis.h"
 #include "io/dae_reader.h"
 
 namespace meshedit {
-
-struct FormatUpAxis {
-  std::string_view extension;  // lower case, with its dot
-  UpAxis up_axis;
-};
-
-inline constexpr std::array<FormatUpAxis, 8> kFormatUpAxes = {{
-    {".obj", UpAxis::Y},
-    {".gltf", UpAxis::Y},
-    {".glb", UpAxis::Y},
-    {".ply", UpAxis::Y},
-    {".stl", UpAxis::Z},
-    {".off", UpAxis::Z},
-    {".dae", UpAxis::Y},  // COLLADA's default, for a file without <up_axis>; collada_up_axis reads the tag
-    {".bez", UpAxis::Z},
-}};
 
 // <authoring_tool> strings (whole) of exporters that tag Z-up geometry Y_UP.
 inline constexpr std::array<std::string_view, 1> kMistaggedExporters = {
@@ -54,7 +35,7 @@ inline constexpr std::array<std::string_view, 1> kMistaggedExporters = {
 
 // Where a file's up axis came from (the window's status bar says it).
 enum class UpAxisSource {
-  Format,          // the format's entry in kFormatUpAxes
+  Format,          // the format's entry in the table of formats
   FileTag,         // the COLLADA file's <up_axis>
   CourseExporter,  // the file's exporter is in kMistaggedExporters: Z whatever the tag says
   Lesson           // a lesson's show(mesh, {up = ...}), for a mesh it read from a file
@@ -65,8 +46,6 @@ struct FileUpAxis {
   UpAxisSource source = UpAxisSource::Format;
 };
 
-// The table's up axis for the path's extension (compared case-insensitively), or nullopt when it has none.
-std::optional<UpAxis> format_up_axis(const std::filesystem::path& path);
 // A COLLADA file's up axis from its <asset>, by the rule above.
 FileUpAxis collada_up_axis(const DaeAsset& asset);
 

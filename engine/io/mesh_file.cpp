@@ -1,8 +1,11 @@
-// Dispatch by extension (see mesh_file.h): the only place that knows which reader or writer serves
-// which extension. Extensions compare case-insensitively (".OBJ" is ".obj").
+// Dispatch by extension (see mesh_file.h): kFormats is the only list of the formats, which reader and writer serve
+// each and which axis is up in its files; the messages, the extension lists and the dispatch all read it. Extensions
+// compare case-insensitively (".OBJ" is ".obj").
 #include "io/mesh_file.h"
 
 #include <optional>
+#include <string_view>
+#include <utility>
 
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
@@ -20,60 +23,120 @@
 namespace meshedit {
 namespace {
 
-constexpr const char* kReadable =
-    "MeshEdit reads .obj, .dae, .gltf, .glb, .ply, .stl and .off (meshes), .bez (Bézier patches) and .bzc "
-    "(Bézier curves)";
-constexpr const char* kWritable = "MeshEdit writes meshes as .obj, .gltf, .glb, .ply or .stl";
+// ---- the formats -----------------------------------------------------------------------------------
+
+// Each format's reader fills its kind's part of a LoadedFile (and what else the format tells).
+void read_obj_file(const std::filesystem::path& path, LoadedFile& loaded) { loaded.mesh = read_obj(path); }
+void read_dae_file_with_axis(const std::filesystem::path& path, LoadedFile& loaded) {
+  DaeFile dae = read_dae_file(path);
+  loaded.mesh = std::move(dae.mesh);
+  loaded.up_axis = collada_up_axis(dae.asset);
+}
+void read_gltf_welded(const std::filesystem::path& path, LoadedFile& loaded) {
+  loaded.mesh = read_gltf(path);
+  loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
+}
+void read_ply_welded(const std::filesystem::path& path, LoadedFile& loaded) {
+  loaded.mesh = read_ply(path);
+  loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
+}
+void read_stl_file(const std::filesystem::path& path, LoadedFile& loaded) { loaded.mesh = read_stl(path); }
+void read_off_file(const std::filesystem::path& path, LoadedFile& loaded) { loaded.mesh = read_off(path); }
+void read_bez_file(const std::filesystem::path& path, LoadedFile& loaded) { loaded.patches = read_bez(path); }
+void read_bzc_file(const std::filesystem::path& path, LoadedFile& loaded) { loaded.curve = read_bzc(path); }
+
+struct Format {
+  std::string_view extension;  // lower case, with its dot
+  FileKind kind;
+  std::optional<UpAxis> up_axis;  // when the file does not say (file_up_axis.h gives each reason); none for a curve
+  void (*read)(const std::filesystem::path&, LoadedFile&);
+  void (*write)(const std::filesystem::path&, const PolygonMesh&);  // nullptr: MeshEdit does not write it
+};
+
+// Every format MeshEdit reads or writes, in the order messages and help list them.
+constexpr Format kFormats[] = {
+    {".obj", FileKind::Mesh, UpAxis::Y, read_obj_file, write_obj},
+    {".dae", FileKind::Mesh, UpAxis::Y, read_dae_file_with_axis, nullptr},  // Y: COLLADA's default without <up_axis>
+    {".gltf", FileKind::Mesh, UpAxis::Y, read_gltf_welded, write_gltf},
+    {".glb", FileKind::Mesh, UpAxis::Y, read_gltf_welded, write_glb},
+    {".ply", FileKind::Mesh, UpAxis::Y, read_ply_welded, write_ply},
+    {".stl", FileKind::Mesh, UpAxis::Z, read_stl_file, write_stl},
+    {".off", FileKind::Mesh, UpAxis::Z, read_off_file, nullptr},
+    {".bez", FileKind::Patches, UpAxis::Z, read_bez_file, nullptr},
+    {".bzc", FileKind::Curve, std::nullopt, read_bzc_file, nullptr},
+};
+
+const Format* find_format(const std::filesystem::path& path) {
+  const std::string ext = lowercase_extension(path);
+  for (const Format& format : kFormats) {
+    if (format.extension == ext) return &format;
+  }
+  return nullptr;
+}
+
+// ---- messages --------------------------------------------------------------------------------------
 
 std::string describe_extension(const std::filesystem::path& path) {
   const std::string ext = path.extension().string();
   return ext.empty() ? "file has no extension" : "unsupported file type '" + ext + "'";
 }
 
-std::optional<FileKind> kind_of_extension(const std::string& ext) {
-  for (const char* mesh_ext : {".obj", ".dae", ".gltf", ".glb", ".ply", ".stl", ".off"}) {
-    if (ext == mesh_ext) return FileKind::Mesh;
-  }
-  if (ext == ".bez") return FileKind::Patches;
-  if (ext == ".bzc") return FileKind::Curve;
-  return std::nullopt;
+// "MeshEdit reads .obj, ... and .off (meshes), .bez (Bézier patches) and .bzc (Bézier curves)"
+std::string readable_text() {
+  const auto group = [](FileKind kind, const char* what) {
+    return list_extensions(readable_extensions(kind), ", ", " and ") + " (" + what + ")";
+  };
+  return "MeshEdit reads " + group(FileKind::Mesh, "meshes") + ", " + group(FileKind::Patches, "Bézier patches") +
+         " and " + group(FileKind::Curve, "Bézier curves");
 }
 
 }  // namespace
 
-FileKind file_kind(const std::filesystem::path& path) {
-  if (const auto kind = kind_of_extension(lowercase_extension(path))) return *kind;
-  throw FileError(path.string(), "", describe_extension(path) + "; " + kReadable);
+// ---- public functions ------------------------------------------------------------------------------
+
+std::vector<std::string> readable_extensions(FileKind kind) {
+  std::vector<std::string> extensions;
+  for (const Format& format : kFormats) {
+    if (format.kind == kind) extensions.emplace_back(format.extension);
+  }
+  return extensions;
 }
 
-bool is_readable(const std::filesystem::path& path) { return kind_of_extension(lowercase_extension(path)).has_value(); }
+std::vector<std::string> writable_extensions() {
+  std::vector<std::string> extensions;
+  for (const Format& format : kFormats) {
+    if (format.write) extensions.emplace_back(format.extension);
+  }
+  return extensions;
+}
+
+std::string list_extensions(const std::vector<std::string>& extensions, std::string_view separator,
+                            std::string_view last_separator) {
+  std::string text;
+  for (size_t i = 0; i < extensions.size(); ++i) {
+    if (i > 0) text += i + 1 == extensions.size() ? last_separator : separator;
+    text += extensions[i];
+  }
+  return text;
+}
+
+std::optional<UpAxis> format_up_axis(const std::filesystem::path& path) {
+  const Format* format = find_format(path);
+  return format ? format->up_axis : std::nullopt;
+}
+
+FileKind file_kind(const std::filesystem::path& path) {
+  if (const Format* format = find_format(path)) return format->kind;
+  throw FileError(path.string(), "", describe_extension(path) + "; " + readable_text());
+}
+
+bool is_readable(const std::filesystem::path& path) { return find_format(path) != nullptr; }
 
 LoadedFile load_file(const std::filesystem::path& path) {
   LoadedFile loaded;
   loaded.kind = file_kind(path);
   loaded.up_axis = {format_up_axis(path).value_or(UpAxis::Z), UpAxisSource::Format};
-  const std::string ext = lowercase_extension(path);
-  if (ext == ".obj") {
-    loaded.mesh = read_obj(path);
-  } else if (ext == ".dae") {
-    DaeFile dae = read_dae_file(path);
-    loaded.mesh = std::move(dae.mesh);
-    loaded.up_axis = collada_up_axis(dae.asset);
-  } else if (ext == ".gltf" || ext == ".glb") {
-    loaded.mesh = read_gltf(path);
-    loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
-  } else if (ext == ".ply") {
-    loaded.mesh = read_ply(path);
-    loaded.joined_vertices = weld_repeated_positions(loaded.mesh);
-  } else if (ext == ".stl") {
-    loaded.mesh = read_stl(path);
-  } else if (ext == ".off") {
-    loaded.mesh = read_off(path);
-  } else if (ext == ".bez") {
-    loaded.patches = read_bez(path);
-  } else {
-    loaded.curve = read_bzc(path);
-  }
+  find_format(path)->read(path, loaded);
   return loaded;
 }
 
@@ -85,20 +148,13 @@ PolygonMesh load_mesh(const std::filesystem::path& path) {
 }
 
 void save_mesh(const std::filesystem::path& path, const PolygonMesh& mesh) {
-  const std::string ext = lowercase_extension(path);
-  if (ext == ".obj") {
-    write_obj(path, mesh);
-  } else if (ext == ".gltf") {
-    write_gltf(path, mesh);
-  } else if (ext == ".glb") {
-    write_glb(path, mesh);
-  } else if (ext == ".ply") {
-    write_ply(path, mesh);
-  } else if (ext == ".stl") {
-    write_stl(path, mesh);
-  } else {
-    throw FileError(path.string(), "", describe_extension(path) + " for saving; " + kWritable);
+  const Format* format = find_format(path);
+  if (!format || !format->write) {
+    throw FileError(path.string(), "",
+                    describe_extension(path) + " for saving; MeshEdit writes meshes as " +
+                        list_extensions(writable_extensions(), ", ", " or "));
   }
+  format->write(path, mesh);
 }
 
 }  // namespace meshedit

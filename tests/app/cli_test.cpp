@@ -36,6 +36,13 @@ TEST(Cli, HelpAndUnknownCommand) {
   const CommandRun help = meshedit({"--help"});
   EXPECT_EQ(help.status, 0);
   EXPECT_NE(help.out.find("subdivide IN -n LEVELS"), std::string::npos);
+  // convert's formats are the table's (io/mesh_file.h): meshes and patches in, what save_mesh writes out.
+  std::vector<std::string> in = readable_extensions(FileKind::Mesh);
+  in.push_back(readable_extensions(FileKind::Patches).at(0));
+  EXPECT_NE(help.out.find("(" + list_extensions(in, " ", " ") + " -> " +
+                          list_extensions(writable_extensions(), " ", " ") + ")"),
+            std::string::npos)
+      << help.out;
   const CommandRun bad = meshedit({"frobnicate"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(bad.err, "meshedit: unknown command 'frobnicate' (see meshedit --help)\n");

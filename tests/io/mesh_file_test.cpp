@@ -1,5 +1,5 @@
-// Dispatch by extension: every kind, case-insensitive extensions, unknown extensions, missing and
-// unreadable files, and saving.
+// Dispatch by extension: the lists of formats, every kind, case-insensitive extensions, unknown extensions, missing
+// and unreadable files, and saving; the docs and the web page's file picker list the table's formats.
 #include "io/mesh_file.h"
 
 #include <gtest/gtest.h>
@@ -12,6 +12,58 @@
 
 namespace meshedit {
 namespace {
+
+std::vector<std::string> joined(std::vector<std::string> a, const std::vector<std::string>& b) {
+  a.insert(a.end(), b.begin(), b.end());
+  return a;
+}
+
+// The text with every run of spaces and line breaks made one space, so a list wrapped across lines still matches.
+std::string one_line(const std::string& text) {
+  std::string out;
+  for (char c : text) {
+    const bool space = c == ' ' || c == '\n';
+    if (space && (out.empty() || out.back() == ' ')) continue;
+    out += space ? ' ' : c;
+  }
+  return out;
+}
+
+TEST(MeshFile, TheListsOfFormatsComeFromTheTable) {
+  using V = std::vector<std::string>;
+  EXPECT_EQ(readable_extensions(FileKind::Mesh), (V{".obj", ".dae", ".gltf", ".glb", ".ply", ".stl", ".off"}));
+  EXPECT_EQ(readable_extensions(FileKind::Patches), V{".bez"});
+  EXPECT_EQ(readable_extensions(FileKind::Curve), V{".bzc"});
+  EXPECT_EQ(writable_extensions(), (V{".obj", ".gltf", ".glb", ".ply", ".stl"}));
+  for (FileKind kind : {FileKind::Mesh, FileKind::Patches, FileKind::Curve}) {
+    for (const std::string& ext : readable_extensions(kind)) EXPECT_EQ(file_kind("a" + ext), kind) << ext;
+  }
+  EXPECT_EQ(list_extensions(writable_extensions(), ", ", " or "), ".obj, .gltf, .glb, .ply or .stl");
+  EXPECT_EQ(list_extensions({".bez"}, ", ", " or "), ".bez");
+  EXPECT_EQ(list_extensions({}, ", ", " or "), "");
+}
+
+// Each page that lists the formats lists the table's, in its order, so a new reader cannot be left out of them.
+TEST(MeshFile, TheDocsAndTheWebPageListTheTablesFormats) {
+  const auto text = [](const char* file) { return one_line(testing::read_text(testing::source_dir() / file)); };
+  const std::vector<std::string> meshes = readable_extensions(FileKind::Mesh),
+                                 patches = readable_extensions(FileKind::Patches),
+                                 curves = readable_extensions(FileKind::Curve), written = writable_extensions();
+  const std::string read_meshes = list_extensions(meshes, " ", " "), write = list_extensions(written, " ", " ");
+  const std::string converted = list_extensions(joined(meshes, patches), " ", " ");
+  EXPECT_NE(text("README.md").find("`" + converted + "` to `" + write + "`"), std::string::npos);
+  EXPECT_NE(text("docs/COMMANDS.md").find(converted + " -> " + write), std::string::npos);
+  EXPECT_NE(text("docs/COMMANDS.md").find("`" + read_meshes + "` and written to `" + write + "`"), std::string::npos);
+  EXPECT_NE(text("docs/WINDOW.md").find("a mesh (`" + read_meshes + "`)"), std::string::npos);
+  EXPECT_NE(text("docs/ARCHITECTURE.md")
+                .find("readers of `" + list_extensions(joined(joined(meshes, patches), curves), " ", " ") +
+                      "`, writers of `" + write + "`"),
+            std::string::npos);
+  // The page's file picker: every file the app reads, glTF's .bin buffers and lessons.
+  const std::string accept =
+      list_extensions(joined(joined(joined(meshes, {".bin"}), patches), joined(curves, {".lua"})), ",", ",");
+  EXPECT_NE(text("web/index.html").find("accept=\"" + accept + "\""), std::string::npos) << accept;
+}
 
 TEST(MeshFile, KindsFollowTheExtensionInAnyCase) {
   EXPECT_EQ(file_kind("a.obj"), FileKind::Mesh);
