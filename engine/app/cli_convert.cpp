@@ -7,12 +7,10 @@
 
 #include "app/cli_commands.h"
 #include "app/mesh_loading.h"
-#include "core/catmull_clark.h"
-#include "core/linear_subdivision.h"
-#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/parallel_for.h"
+#include "core/subdivision_phases.h"
 
 namespace meshedit {
 namespace {
@@ -44,7 +42,7 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   const auto output = take_option(args, "--output", "-o");
   const std::optional<std::string> weights_option = take_option(args, "--weights");
   const std::string weights_name = weights_option.value_or("course");
-  const std::string scheme = take_option(args, "--scheme").value_or("loop");
+  const std::string scheme_text = take_option(args, "--scheme").value_or("loop");
   reject_unknown_options(args);
   if (args.size() != 1) throw UsageError("subdivide takes one input file");
   if (!levels_text) throw UsageError("subdivide needs -n LEVELS");
@@ -52,10 +50,9 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   if (weights_name != "course" && weights_name != "loop") {
     throw UsageError("--weights must be 'course' or 'loop', not '" + weights_name + "'");
   }
-  if (scheme != "loop" && scheme != "catmull-clark" && scheme != "linear") {
-    throw UsageError("--scheme must be 'loop', 'catmull-clark' or 'linear', not '" + scheme + "'");
-  }
-  if (weights_option && scheme != "loop") throw UsageError("--weights is for --scheme loop only");
+  const std::optional<SubdivisionScheme> scheme = scheme_named(scheme_text);
+  if (!scheme) throw UsageError("--scheme must be " + std::string(scheme_names()) + ", not '" + scheme_text + "'");
+  if (weights_option && scheme != SubdivisionScheme::Loop) throw UsageError("--weights is for --scheme loop only");
   const LoopWeights weights = weights_name == "loop" ? LoopWeights::Loop : LoopWeights::Course;
   const int levels = parse_count(*levels_text, "-n", 10);
 
@@ -72,13 +69,11 @@ int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out) 
   out << args[0] << ": " << mesh.num_vertices() << " vertices, " << mesh.num_faces() << " faces\n";
   for (int level = 1; level <= levels; ++level) {
     const auto start = std::chrono::steady_clock::now();
-    const Check done = scheme == "catmull-clark" ? catmull_clark_subdivide(mesh)
-                       : scheme == "linear"      ? linear_subdivide(mesh)
-                                                 : loop_subdivide(mesh, weights, 1, hardware_threads());
+    const Check done = subdivide(mesh, *scheme, weights, 1, hardware_threads());
     if (!done) throw MeshError(args[0] + ": cannot subdivide: " + done.reason);
     out << "level " << level << ": " << mesh.num_vertices() << " vertices, " << mesh.num_edges() << " edges, "
         << mesh.num_faces() << " faces (" << milliseconds_since(start) << " ms, "
-        << (scheme == "loop" ? weights_name + " weights" : scheme) << ")\n";
+        << (scheme == SubdivisionScheme::Loop ? weights_name + " weights" : scheme_text) << ")\n";
   }
   save_mesh(*output, to_polygon_mesh(mesh));
   out << "wrote " << *output << "\n";

@@ -7,31 +7,48 @@
 namespace meshedit {
 namespace {
 
+Check loop_levels(HalfedgeMesh& mesh, LoopWeights weights, int levels, int threads) {
+  return loop_subdivide(mesh, weights, levels, threads);
+}
+Check catmull_clark_levels(HalfedgeMesh& mesh, LoopWeights, int levels, int) {
+  return catmull_clark_subdivide(mesh, levels);
+}
+Check linear_levels(HalfedgeMesh& mesh, LoopWeights, int levels, int) { return linear_subdivide(mesh, levels); }
+
 struct SchemeRow {
   SubdivisionScheme scheme;
   const char* name;
   const char* title;
+  int phases;
   std::string labels[5];  // by phase, 1-based; labels[0] unused
+  // The whole scheme in one call (subdivide): the weights are Loop's only, the threads Loop's only.
+  Check (*subdivide)(HalfedgeMesh& mesh, LoopWeights weights, int levels, int threads);
 };
 
-// One row per scheme: its name and its phases' labels, made when the program starts.
+// One row per scheme: its name, its phases' labels and its one call, made when the program starts.
 const SchemeRow kSchemes[] = {
     {SubdivisionScheme::Loop,
      "loop",
      "Loop",
+     4,
      {"", "Loop 1/4: compute new positions", "Loop 2/4: split every original edge",
-      "Loop 3/4: flip new edges joining an old and a new vertex", "Loop 4/4: move every vertex to its new position"}},
+      "Loop 3/4: flip new edges joining an old and a new vertex", "Loop 4/4: move every vertex to its new position"},
+     loop_levels},
     {SubdivisionScheme::CatmullClark,
      "catmull-clark",
      "Catmull-Clark",
+     3,
      {"", "Catmull-Clark 1/3: compute face, edge and vertex points",
       "Catmull-Clark 2/3: split every face into quads (nothing moves yet)",
-      "Catmull-Clark 3/3: move every vertex to its point"}},
+      "Catmull-Clark 3/3: move every vertex to its point"},
+     catmull_clark_levels},
     {SubdivisionScheme::Linear,
      "linear",
      "Linear",
+     2,
      {"", "Linear 1/2: compute edge midpoints and face centres",
-      "Linear 2/2: split every face (triangles in four, other faces into quads)"}},
+      "Linear 2/2: split every face (triangles in four, other faces into quads)"},
+     linear_levels},
 };
 
 const SchemeRow& row(SubdivisionScheme scheme) {
@@ -58,15 +75,22 @@ std::optional<SubdivisionScheme> scheme_named(std::string_view name) {
   return std::nullopt;
 }
 
-const char* scheme_names() { return "\"loop\", \"catmull-clark\" or \"linear\""; }
+const char* scheme_names() {
+  static const std::string names = [] {
+    std::string text;
+    const size_t n = std::size(kSchemes);
+    for (size_t i = 0; i < n; ++i) {
+      text += std::string(i == 0 ? "" : i + 1 == n ? " or " : ", ") + "\"" + kSchemes[i].name + "\"";
+    }
+    return text;
+  }();
+  return names.c_str();
+}
 
-int phase_count(SubdivisionScheme scheme) {
-  switch (scheme) {
-    case SubdivisionScheme::Loop: return 4;
-    case SubdivisionScheme::CatmullClark: return 3;
-    case SubdivisionScheme::Linear: return 2;
-  }
-  return 0;
+int phase_count(SubdivisionScheme scheme) { return row(scheme).phases; }
+
+Check subdivide(HalfedgeMesh& mesh, SubdivisionScheme scheme, LoopWeights weights, int levels, int threads) {
+  return row(scheme).subdivide(mesh, weights, levels, threads);
 }
 
 const std::string& phase_label(SubdivisionScheme scheme, int phase) {

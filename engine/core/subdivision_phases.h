@@ -7,7 +7,9 @@
 //                  move every vertex;
 //   Linear         2 phases (linear_subdivision.h): compute midpoints and centres, split every face.
 // Phase 1 only computes: it reads the mesh and changes nothing. Each later phase changes the mesh. After the last
-// phase the next is phase 1 again.
+// phase the next is phase 1 again. One table in subdivision_phases.cpp lists the schemes: the names the shell, Lua
+// and the answers files take, the phases' labels, and the one-call subdivision (subdivide) the shell and the
+// headless answers run.
 //
 // Invariants:
 // - The phases in turn give the mesh the scheme's one-call subdivision gives, id for id (the core's tests hold
@@ -45,6 +47,10 @@ const char* scheme_title(SubdivisionScheme scheme);
 // "\"loop\", \"catmull-clark\" or \"linear\"": for the messages that refuse another name.
 const char* scheme_names();
 int phase_count(SubdivisionScheme scheme);
+// The scheme's whole subdivision, `levels` times, in one call: loop_subdivide (with `weights`, on `threads`),
+// catmull_clark_subdivide or linear_subdivide.
+Check subdivide(HalfedgeMesh& mesh, SubdivisionScheme scheme, LoopWeights weights = LoopWeights::Course, int levels = 1,
+                int threads = 1);
 // "Catmull-Clark 2/3: split every face into quads (nothing moves yet)"; phase in 1..phase_count.
 const std::string& phase_label(SubdivisionScheme scheme, int phase);
 

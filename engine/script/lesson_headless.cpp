@@ -14,9 +14,6 @@
 
 #include <lua.hpp>
 
-#include "core/catmull_clark.h"
-#include "core/linear_subdivision.h"
-#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/mesh_repair.h"
@@ -406,9 +403,7 @@ class HeadlessDriver {
     Check check;
     if (answer.kind == Answer::Kind::Subdivide) {  // L, or the Subdivide menu's schemes
       out_ << "  > subdivide" << (answer.value == "loop" ? "" : " " + answer.value);
-      if (answer.value == "catmull-clark") check = catmull_clark_subdivide(*mesh);
-      else if (answer.value == "linear") check = linear_subdivide(*mesh);
-      else check = loop_subdivide(*mesh);
+      check = subdivide(*mesh, scheme_named(answer.value).value_or(SubdivisionScheme::Loop));
     } else if (answer.kind == Answer::Kind::Triangulate) {  // Edit > Triangulate
       out_ << "  > triangulate";
       check = triangulate_mesh(*mesh).check;

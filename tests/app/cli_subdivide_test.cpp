@@ -71,7 +71,9 @@ TEST(CliSubdivide, WrongSchemeOrLoopOnlyWeightsAreUsageErrors) {
   const CommandRun bad = meshedit(
       {"subdivide", (dir / "cube.obj").string(), "-n", "1", "--scheme", "butterfly", "-o", (dir / "o.obj").string()});
   EXPECT_NE(bad.status, 0);
-  EXPECT_NE(bad.err.find("--scheme must be 'loop', 'catmull-clark' or 'linear'"), std::string::npos) << bad.err;
+  EXPECT_NE(bad.err.find("--scheme must be \"loop\", \"catmull-clark\" or \"linear\", not 'butterfly'"),
+            std::string::npos)
+      << bad.err;
   const CommandRun weights = meshedit({"subdivide", (dir / "cube.obj").string(), "-n", "1", "--scheme", "linear",
                                        "--weights", "loop", "-o", (dir / "o.obj").string()});
   EXPECT_NE(weights.status, 0);

@@ -139,6 +139,32 @@ TEST(SubdivisionPhases, NamesAndLabels) {
   EXPECT_EQ(phase_label(SubdivisionScheme::CatmullClark, 3), "Catmull-Clark 3/3: move every vertex to its point");
   EXPECT_EQ(phase_label(SubdivisionScheme::Linear, 1), "Linear 1/2: compute edge midpoints and face centres");
   EXPECT_EQ(SubdivisionPhases(SubdivisionScheme::Linear).next_label(), phase_label(SubdivisionScheme::Linear, 1));
+  EXPECT_STREQ(scheme_names(), "\"loop\", \"catmull-clark\" or \"linear\"");
+  EXPECT_EQ(phase_count(SubdivisionScheme::Loop), 4);
+  EXPECT_EQ(phase_count(SubdivisionScheme::CatmullClark), 3);
+  EXPECT_EQ(phase_count(SubdivisionScheme::Linear), 2);
+}
+
+// subdivide(mesh, scheme) is the scheme's own call, with Loop's weights and levels passed through.
+TEST(SubdivisionPhases, SubdivideByNameIsEachSchemesOwnCall) {
+  const HalfedgeMesh start = build_halfedge_mesh(make_cube());
+  HalfedgeMesh loop = start, loop_expected = start;
+  ASSERT_TRUE(subdivide(loop, SubdivisionScheme::Loop, LoopWeights::Loop, 2, 2));
+  ASSERT_TRUE(loop_subdivide(loop_expected, LoopWeights::Loop, 2));
+  EXPECT_TRUE(loop.same_as(loop_expected));
+  HalfedgeMesh course = start, course_expected = start;  // by default one level with the course's weights
+  ASSERT_TRUE(subdivide(course, SubdivisionScheme::Loop));
+  ASSERT_TRUE(loop_subdivide(course_expected, LoopWeights::Course));
+  EXPECT_TRUE(course.same_as(course_expected));
+  HalfedgeMesh cc = start, cc_expected = start;
+  ASSERT_TRUE(subdivide(cc, SubdivisionScheme::CatmullClark, LoopWeights::Course, 2));
+  ASSERT_TRUE(catmull_clark_subdivide(cc_expected, 2));
+  EXPECT_TRUE(cc.same_as(cc_expected));
+  HalfedgeMesh linear = start, linear_expected = start;
+  ASSERT_TRUE(subdivide(linear, SubdivisionScheme::Linear));
+  ASSERT_TRUE(linear_subdivide(linear_expected));
+  EXPECT_TRUE(linear.same_as(linear_expected));
+  EXPECT_FALSE(linear.same_as(cc));
 }
 
 }  // namespace
