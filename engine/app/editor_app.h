@@ -217,8 +217,8 @@ class EditorApp {
   // The "mine" switches of the curve and patch views (M), with their results.
   BezierMine& bezier_mine() { return bezier_mine_; }
 
-  // Saves the current mesh (in any format save_mesh writes); reports the outcome in the status line. A page's browser then downloads
-  // the file (host_hand_over, window_host.h), as it does a screenshot.
+  // Saves the current mesh (in any format save_mesh writes); reports the outcome in the status line. A page's browser
+  // then downloads the file (host_hand_over, window_host.h), as it does a screenshot.
   bool save(const std::filesystem::path& path);
   // Asks for a PNG of the whole window (3D view and panels) after the current frame is drawn.
   void request_screenshot(const std::filesystem::path& path) { screenshot_path_ = path; }
