@@ -37,14 +37,7 @@ std::map<std::string, std::string> run_facts(const std::string& script) {
   return facts;
 }
 
-// The file's words with its line breaks, comment marks (-- --- //) and runs of spaces each made one space, so a
-// sentence reads the same wherever the file wraps it.
-std::string words_of(const std::string& relative_path) {
-  const std::string text = testing::read_text(testing::source_dir() / relative_path);
-  static const std::regex breaks(R"(\s*\n\s*(--+|//)?\s*)");
-  static const std::regex spaces(R"(\s+)");
-  return std::regex_replace(std::regex_replace(text, breaks, " "), spaces, " ");
-}
+using testing::words_of;
 
 bool contains(const std::string& text, const std::string& part) { return text.find(part) != std::string::npos; }
 

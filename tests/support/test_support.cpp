@@ -7,6 +7,7 @@
 #include <cstdlib>
 #include <fstream>
 #include <iterator>
+#include <regex>
 #include <sstream>
 
 namespace meshedit::testing {
@@ -25,6 +26,13 @@ std::string read_text(const std::filesystem::path& path) {
   std::ifstream in(path, std::ios::binary);
   EXPECT_TRUE(in.good()) << path;
   return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+std::string words_of(const std::string& relative_path) {
+  const std::string text = read_text(source_dir() / relative_path);
+  static const std::regex breaks(R"(\s*\n\s*(--+|//)?\s*)");
+  static const std::regex spaces(R"(\s+)");
+  return std::regex_replace(std::regex_replace(text, breaks, " "), spaces, " ");
 }
 
 std::filesystem::path scratch_dir() {

@@ -19,6 +19,10 @@ std::filesystem::path source_dir();
 // The whole file as bytes; a failed expectation (and "") if it cannot be opened.
 std::string read_text(const std::filesystem::path& path);
 
+// The words of a file under source_dir(), its line breaks, comment marks (-- --- //) and runs of spaces each made one
+// space, so a sentence or a list reads the same wherever the file wraps it.
+std::string words_of(const std::string& relative_path);
+
 // A fresh empty directory under the system temp dir, unique to the running test and process (a second call in the
 // same test empties it again).
 std::filesystem::path scratch_dir();
