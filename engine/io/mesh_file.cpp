@@ -90,6 +90,12 @@ std::string readable_text() {
          " and " + group(FileKind::Curve, "Bézier curves");
 }
 
+// The format of a file MeshEdit reads, or a FileError naming the path and listing what it reads.
+const Format& readable_format(const std::filesystem::path& path) {
+  if (const Format* format = find_format(path)) return *format;
+  throw FileError(path.string(), "", describe_extension(path) + "; " + readable_text());
+}
+
 }  // namespace
 
 // ---- public functions ------------------------------------------------------------------------------
@@ -125,18 +131,16 @@ std::optional<UpAxis> format_up_axis(const std::filesystem::path& path) {
   return format ? format->up_axis : std::nullopt;
 }
 
-FileKind file_kind(const std::filesystem::path& path) {
-  if (const Format* format = find_format(path)) return format->kind;
-  throw FileError(path.string(), "", describe_extension(path) + "; " + readable_text());
-}
+FileKind file_kind(const std::filesystem::path& path) { return readable_format(path).kind; }
 
 bool is_readable(const std::filesystem::path& path) { return find_format(path) != nullptr; }
 
 LoadedFile load_file(const std::filesystem::path& path) {
+  const Format& format = readable_format(path);
   LoadedFile loaded;
-  loaded.kind = file_kind(path);
-  loaded.up_axis = {format_up_axis(path).value_or(UpAxis::Z), UpAxisSource::Format};
-  find_format(path)->read(path, loaded);
+  loaded.kind = format.kind;
+  loaded.up_axis = {format.up_axis.value_or(UpAxis::Z), UpAxisSource::Format};
+  format.read(path, loaded);
   return loaded;
 }
 
