@@ -178,7 +178,7 @@ handout's. The handout flips the edge **b-c** between its triangles (a, b, c) an
     options = { "f0", "f1" },
     answer = "f1",
     feedback = {
-      f0 = "Our f0 ends up as (d, c, a), which is the handout's (d, b, a): its (a, b, d), not (a, d, c).",
+      f0 = "Our f0 ends up as (d, c, a), which is the handout's (d, a, b): its (a, b, d), not (a, d, c).",
       f1 = "Its (a, d, c) is our (c, d, b): f1 after the flip.",
     },
     hint = "Turn each of the handout's letters into ours first: its a is our c, its d our d, its c our b.",

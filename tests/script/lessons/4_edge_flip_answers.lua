@@ -7,7 +7,7 @@ return {
                       {click = "h4", feedback = "other face"}, {click = "e0", feedback = "not a halfedge"},
                       {click = "h1"} },
   ["The course's letters"] = { {click = "h0", feedback = "not an edge"}, {click = "e1", feedback = "handout calls"},
-                               {click = "e0"}, {choose = "f0", feedback = "not (a, d, c)"}, {choose = "f1"} },
+                               {click = "e0"}, {choose = "f0", feedback = "handout's (d, a, b): its (a, b, d), not (a, d, c)"}, {choose = "f1"} },
   ["Predict the flip"] = { {choose = "h2", feedback = "before the flip"}, {choose = "h1", feedback = "twin"},
                            {choose = "h4", feedback = "must start at c"}, {choose = "h3"},
                            {click = "h1", feedback = "other way"}, {click = "h4"} },
