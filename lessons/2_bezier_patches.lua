@@ -108,7 +108,8 @@ To evaluate the patch at (u, v), use de Casteljau twice:
         return "x is right; the height is not: run the steps on z too, 0, 2, 2, 0."
       end
     end,
-    hint = "It is part 1's cubic with z for y: x goes 0, 1, 2, 3, and z goes 0, 2, 2, 0.",
+    hint = "Its heights 0, 2, 2, 0 are part 1's y values, so z is part 1's y at 0.25; x goes 0, 1, 2, 3, evenly "
+      .. "spaced, so x = 3u.",
   }
   local e = hill:evaluation(0.25, 0.5)
   local rows = {}
@@ -174,8 +175,9 @@ triangles. At **resolution** n, each patch is cut into n by n small squares.]]
     hint = "Count the corners along one side of 8 squares in a row first.",
   }
   say [[
-Move the **resolution** slider and watch the panel's count of vertices and triangles follow; switch the
-**control nets** on to see the grey points that shape the pot.]]
+Move the **resolution** slider and watch the panel's count of vertices and triangles follow. The **control net**
+box (on at the start) draws the nets that shape the pot, grey for every patch but the probed one; untick it to see
+the surface alone.]]
 end)
 
 step("Where patches meet", function()
@@ -220,8 +222,10 @@ step("Your turn", function()
 # Your code
 
 Open `scripts/student/patch.lua` and write `evaluate(patch, u, v)`. `patch.points` holds the 16 control
-points row by row (`patch.points[row * 4 + col + 1]`). Use your curve step from part 1: four rows at **u**,
-then the column at **v**. The lesson runs it on the hill at u = 0.25, v = 0.5, the point you computed by hand,
+points row by row (`patch.points[row * 4 + col + 1]`). Evaluate the four rows at **u**, then the column at
+**v**, with de Casteljau steps as in part 1. Each exercise file runs on its own (in the window and in grading,
+`patch.lua` is loaded alone), so part 1's `evaluate_step` is not there to call: copy it into `patch.lua` as a
+local function. The lesson runs it on the hill at u = 0.25, v = 0.5, the point you computed by hand,
 each time you save the file, and compares it with the reference; a Lua error shows its `patch.lua:LINE`.]]
   your_turn {
     exercise = "patch",

@@ -2,7 +2,9 @@
 #include "script/student_api.h"
 
 #include <algorithm>
+#include <cstring>
 #include <span>
+#include <string>
 
 #include <lua.hpp>
 
@@ -47,6 +49,52 @@ int refuse(lua_State* L) {
 void push_refusal(lua_State* L, const char* name) {
   lua_pushstring(L, hidden_api_message(name).c_str());
   lua_pushcclosure(L, refuse, 1);
+}
+
+// The exercise whose function is `name` ("evaluate_step" -> curve), or nullptr.
+const ExerciseInfo* exercise_of_function(const char* name) {
+  for (const ExerciseInfo& info : all_exercises()) {
+    if (std::strcmp(info.function, name) == 0) return &info;
+  }
+  return nullptr;
+}
+
+// Called in place of another exercise file's function (upvalues: its name, the calling file's name).
+int explain_other_file(lua_State* L) {
+  const ExerciseInfo* owner = exercise_of_function(lua_tostring(L, lua_upvalueindex(1)));
+  const std::string message = other_file_message(owner->function, owner->file, lua_tostring(L, lua_upvalueindex(2)));
+  return luaL_error(L, "%s", message.c_str());
+}
+
+// The globals' __index: read from a Lua file that is not the function's own, another exercise's function reads as
+// explain_other_file; anything else (C code's reads included) as nil.
+int globals_index(lua_State* L) {
+  const char* name = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : nullptr;
+  const ExerciseInfo* owner = name != nullptr ? exercise_of_function(name) : nullptr;
+  lua_Debug caller{};
+  if (owner == nullptr || lua_getstack(L, 1, &caller) == 0 || lua_getinfo(L, "S", &caller) == 0 ||
+      std::strcmp(caller.what, "C") == 0 || std::strcmp(caller.short_src, owner->file) == 0) {
+    lua_pushnil(L);
+    return 1;
+  }
+  lua_pushvalue(L, 2);
+  lua_pushstring(L, caller.short_src);
+  lua_pushcclosure(L, explain_other_file, 2);
+  return 1;
+}
+
+// Gives the globals a metatable whose __index is globals_index, unless student code gave them one of its own.
+void guide_other_files_functions(lua_State* L) {
+  lua_pushglobaltable(L);
+  if (lua_getmetatable(L, -1) == 0) {
+    lua_createtable(L, 0, 1);
+    lua_pushcfunction(L, globals_index);
+    lua_setfield(L, -2, "__index");
+    lua_setmetatable(L, -2);
+  } else {
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
 }
 
 // Pushes the stash, making it on the first call from the module and the mesh methods as they are then.
@@ -102,6 +150,12 @@ const ExerciseApi& exercise_api(Exercise exercise) {
   return exercise == Exercise::Upsample ? upsample : none;
 }
 
+std::string other_file_message(const std::string& function, const std::string& owner_file, const std::string& file) {
+  return function + " is " + owner_file + "'s function, and each exercise file runs on its own (in the window and " +
+         "in grading, where " + file + " is loaded alone), so " + file + " cannot call it: copy the function into " +
+         file + ", as a local function";
+}
+
 std::string hidden_api_message(const std::string& name) {
   using Entries = std::span<const ApiEntry>;
   for (Entries list : {Entries(kHideable), Entries(kFileEntries)}) {
@@ -132,6 +186,7 @@ void set_student_api(lua_State* L, std::span<const std::string> allowed) {
     else push_refusal(L, e.name);
     lua_rawset(L, e.method ? methods : module);
   }
+  guide_other_files_functions(L);
   lua_settop(L, top);
 }
 

@@ -15,6 +15,12 @@
 // - set_student_api may be called again on the same state (the window runs several exercises on one loaded file):
 //   each call shows or hides every hideable entry by the list it is given. The real functions are kept in a
 //   registry table, which student code cannot reach (no debug library).
+// - Another exercise's function that the student's file does not define (evaluate_step read in patch.lua) is not
+//   nil but a function that raises other_file_message, with the caller's "file.lua:LINE: " in front: each file
+//   runs in a state of its own, and the error says so instead of "attempt to call a nil value". Only a read from
+//   Lua code of another file than the function's own that finds no global of that name sees it (the globals'
+//   __index); the owner's own file, rawget and C code (the window's and the grader's lookups of the student's
+//   functions) still find nil.
 // - Patches reach student code as plain tables {points = {16 vec3}} (push_student_patch), in the window as in
 //   grading: no reference evaluation comes with them.
 #pragma once
@@ -45,6 +51,11 @@ const ExerciseApi& exercise_api(Exercise exercise);
 // "mesh:flip is hidden from your code (in the window and in grading): it is what flip_edge does, so write the
 // pointer updates yourself". For any name, hideable or a file function ("meshedit.load").
 std::string hidden_api_message(const std::string& name);
+
+// "evaluate_step is curve.lua's function, and each exercise file runs on its own (in the window and in grading,
+// where patch.lua is loaded alone), so patch.lua cannot call it: copy the function into patch.lua, as a local
+// function": what a student's file is told when it calls another exercise's function it does not define.
+std::string other_file_message(const std::string& function, const std::string& owner_file, const std::string& file);
 
 // Removes the file functions and shows exactly the hideable entries in `allowed` (the others raise). The meshedit
 // module (with its Bézier part) must be open. Raises a Lua error if the bindings cannot be restricted; call in

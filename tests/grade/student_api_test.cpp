@@ -51,6 +51,50 @@ TEST(StudentApi, MeshFlipInsideFlipEdgeIsRefusedAlikeInTheWindowAndInGrading) {
   EXPECT_EQ(report.tests[0].output.rfind("Error: " + refusal + "\n", 0), 0u) << report.tests[0].output;
 }
 
+// A patch.lua that calls part 1's evaluate_step, which only curve.lua defines; line 5 calls it.
+constexpr const char* kPatchWithPartOnesStep =
+    "function evaluate(patch, u, v)\n"
+    "  local rows = {}\n"
+    "  for r = 0, 3 do\n"
+    "    local row = {patch.points[r * 4 + 1], patch.points[r * 4 + 2], patch.points[r * 4 + 3], patch.points[r * 4 + "
+    "4]}\n"
+    "    while #row > 1 do row = evaluate_step(row, u) end\n"
+    "    rows[#rows + 1] = row[1]\n"
+    "  end\n"
+    "  return rows[1]\n"
+    "end\n";
+
+TEST(StudentApi, CallingAnotherExercisesFunctionSaysEachFileRunsAloneInBoth) {
+  const std::string error = "patch.lua:5: " + other_file_message("evaluate_step", "curve.lua", "patch.lua");
+  EXPECT_EQ(error,
+            "patch.lua:5: evaluate_step is curve.lua's function, and each exercise file runs on its own (in the "
+            "window and in grading, where patch.lua is loaded alone), so patch.lua cannot call it: copy the "
+            "function into patch.lua, as a local function");
+
+  // The window: the patch view's check (and lesson 2's your_turn) of the sheet at (0.25, 0.5).
+  const fs::path file = testing::scratch_dir() / "patch.lua";
+  testing::write_text(file, kPatchWithPartOnesStep);
+  auto code = load_student_file(file);
+  EXPECT_FALSE(code->defines(Exercise::CurveStep));  // the guide is no definition
+  BezierPatch sheet;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) sheet.at(r, c) = glm::dvec3(c, r, 0.0);
+  }
+  const ExerciseReport window =
+      check_exercise(*code, Exercise::PatchEvaluate, ExerciseInput::patch_point(sheet, 0.25, 0.5));
+  EXPECT_FALSE(window.mine.ran);
+  EXPECT_EQ(window.mine.error, error);
+
+  // The grader: the patch suite's first test, the same file.
+  auto suite = Suite::load(grading_dir() / "suites" / "patch.lua");
+  const GradeReport report =
+      grade(*suite, testing::submission_of({{"patch.lua", kPatchWithPartOnesStep}}), testing::quick_options());
+  EXPECT_EQ(report.score, 0.0);
+  ASSERT_FALSE(report.tests.empty());
+  EXPECT_EQ(report.tests[0].end, RunEnd::Error);
+  EXPECT_EQ(report.tests[0].output.rfind("Error: " + error + "\n", 0), 0u) << report.tests[0].output;
+}
+
 TEST(StudentApi, UpsampleMayUseTheReferenceFlipAndSplitInBoth) {
   EXPECT_EQ(exercise_api(Exercise::Upsample).allow_api, (std::vector<std::string>{"mesh:flip", "mesh:split"}));
   EXPECT_EQ(exercise_api(Exercise::Upsample).reference, (std::vector<std::string>{"flip_edge", "split_edge"}));
