@@ -2,10 +2,12 @@
 -- app's Shift+L steps through, engine/core/loop_subdivision.h), telling old from new by flags set as it splits,
 -- as scripts/student/upsample.lua asks. Each phase step asks first: the vertex count, u at degree 6, which edges
 -- to split, which edge to flip (a pick on the split cube: the halves of a split edge are the trap), why the
--- positions come first. Then the student runs the app's phases with Shift+L, each checked against the Lua ones,
--- explains the cube's lopsided result before pre-splitting fixes it, predicts which corner stays sharper and
--- where a boundary corner goes, and ends with their own upsample.lua run by your_turn on a cube and a tetrahedron
--- (every vertex of degree 3).
+-- positions come first. Then the student runs the app's phases with Shift+L, each checked against the Lua ones;
+-- explains the cube's lopsided result and predicts which corners end nearer the centre before the lesson says
+-- why; makes every corner's degree the same with flips and splits of their own (told when a flip makes it worse)
+-- before the diagonal pre-split is shown; keeps a corner sharp to a target distance by editing near it before the
+-- lesson says how; predicts where a boundary corner goes; and ends with their own upsample.lua run by your_turn on
+-- a cube and a tetrahedron (every vertex of degree 3).
 -- CI runs it headless:
 --   meshedit lesson lessons/6_loop_subdivision.lua --headless \
 --     --answers tests/script/lessons/6_loop_subdivision_answers.lua --student tests/script/solutions
@@ -25,6 +27,20 @@ local function counts(mesh)
 end
 
 local function fmt(x) return string.format("%.4f", x) end
+
+-- The degrees a mesh's vertices have, smallest first: "4 or 6", "3".
+local function degrees_of(mesh)
+  local seen, list = {}, {}
+  for v in mesh:vertices() do
+    if not seen[v:degree()] then
+      seen[v:degree()] = true
+      list[#list + 1] = v:degree()
+    end
+  end
+  table.sort(list)
+  if #list == 1 then return tostring(list[1]) end
+  return table.concat(list, ", ", 1, #list - 1) .. " or " .. list[#list]
+end
 
 -- ---- the four phases, on a closed triangle mesh, course weights ----
 
@@ -198,11 +214,11 @@ only stores numbers):
   plot {
     title = "n u, the neighbours' total weight", x = { 3, 12 }, y = { 0, 1 }, samples = 90,
     curves = {
-      { label = "course: u = 3/(8n), 3/16 at n = 3", colour = "blue",
+      { label = "course: n u, with u = 3/(8n) (3/16 at n = 3)", colour = "blue",
         fn = function(n) return n < 3.5 and 9 / 16 or 3 / 8 end },
-      { label = "Loop's own beta(n)", colour = "orange",
+      { label = "Loop's own: n beta(n)", colour = "orange",
         fn = function(n) return 5 / 8 - (3 / 8 + 1 / 4 * math.cos(2 * math.pi / n)) ^ 2 end },
-      { label = "u = 1/n (no weight kept)", colour = "grey", fn = function() return 1 end },
+      { label = "n u with u = 1/n (no weight kept)", colour = "grey", fn = function() return 1 end },
     },
   }
   say("The yellow vertex `v0` has " .. v0:degree() .. " neighbours, so u = " .. fmt(state.u[0]) .. ": it will go from "
@@ -386,6 +402,28 @@ After each press this lesson compares the mesh on screen with its own Lua phases
     .. "faces by four, so stop after four or five.")
 end)
 
+-- The degrees of corners v0..v7 of `mesh`, and the smallest and largest of them.
+local function corner_degrees(mesh)
+  local degrees, lo, hi = {}, math.huge, 0
+  for i = 0, 7 do
+    local n = mesh:vertex(i):degree()
+    degrees[i] = n
+    lo, hi = math.min(lo, n), math.max(hi, n)
+  end
+  return degrees, lo, hi
+end
+
+-- The mean distance from the centre, after two steps of L, of the corners whose degree on `mesh` is `n`.
+local function mean_corner_distance(mesh, subdivided, n)
+  local sum, count = 0, 0
+  for i = 0, 7 do
+    if mesh:vertex(i):degree() == n then
+      sum, count = sum + subdivided:vertex(i).position:length(), count + 1
+    end
+  end
+  return sum / count
+end
+
 step("The cube's lopsided result", function()
   local mesh = meshedit.cube()
   local subdivided = mesh:copy()
@@ -408,23 +446,104 @@ step("The cube's lopsided result", function()
       ["Splitting in id order"] = "Phase 1 computes every "
         .. "position from the original mesh before the first split, so the order of the splits cannot move "
         .. "anything; it only decides the new ids.",
-      ["Corners at different distances"] = "They are: every corner of the "
+      ["Corners at different distances"] = "They are not: every corner of the "
         .. "cube is " .. fmt(mesh:vertex(0).position:length()) .. " from the centre before subdividing. Look at "
         .. "how each corner is connected instead.",
       [right] = "Right: the cube's 12 triangles cut each square face along one diagonal.",
     },
     hint = "The rule for an old vertex depends on one number per vertex. Is it the same at every corner?",
   }
-  for i = 0, 7 do
-    label(subdivided:vertex(i), "degree " .. mesh:vertex(i):degree())
-    highlight(subdivided:vertex(i), mesh:vertex(i):degree() == 6 and "orange" or "yellow")
-  end
-  local degrees = {}
-  for i = 0, 7 do degrees[#degrees + 1] = tostring(mesh:vertex(i):degree()) end
+  local degrees, low, high = corner_degrees(mesh)
+  for i = 0, 7 do label(subdivided:vertex(i), "degree " .. degrees[i]) end
+  local at_high, at_low = mean_corner_distance(mesh, subdivided, high), mean_corner_distance(mesh, subdivided, low)
+  local high_option, low_option = "The degree-" .. high .. " corners", "The degree-" .. low .. " corners"
+  local nearer, farther = high_option, low_option
+  if at_low < at_high then nearer, farther = low_option, high_option end
+  local pull = meshedit.vec3(0, 0, 0)
+  for w in mesh:vertex(0):neighbors() do pull = pull + w.position end
+  pull = pull / mesh:vertex(0):degree()
+  choose {
+    "Each corner is labelled with its degree on the cube before subdividing. After the two steps, which corners "
+      .. "are nearer the centre?",
+    options = { high_option, low_option, "All at the same distance" },
+    answer = nearer,
+    feedback = {
+      [farther] = "They stay farther out. Corner v0 (degree " .. degrees[0] .. ") is joined to three corners along "
+        .. "the cube's edges and to others across the faces' diagonals, and its neighbours average to "
+        .. tostring(pull) .. ": how far is that from the centre?",
+      ["All at the same distance"] = "They are not: the corners are between " .. fmt(lo) .. " and " .. fmt(hi)
+        .. " from the centre, and the degrees on their labels differ.",
+      [nearer] = "Yes: after two steps the degree-" .. high .. " corners are " .. fmt(at_high) .. " from the centre "
+        .. "on average, the degree-" .. low .. " ones " .. fmt(at_low) .. ".",
+    },
+    hint = "A corner moves towards the average of its neighbours. Where is that average for v0, and where for a "
+      .. "corner of degree " .. low .. "?",
+  }
+  for i = 0, 7 do highlight(subdivided:vertex(i), degrees[i] == high and "orange" or "yellow") end
+  local list = {}
+  for i = 0, 7 do list[#list + 1] = tostring(degrees[i]) end
   say("Its 12 triangles come from cutting each square face along one diagonal, so the corners do not all have the "
-    .. "same number of neighbours: the degrees of v0 to v7 are " .. table.concat(degrees, ", ") .. ". The weights "
-    .. "depend on that number, so corners with different degrees move differently (orange: degree 6, yellow: "
-    .. "fewer).")
+    .. "same number of neighbours: the degrees of v0 to v7 are " .. table.concat(list, ", ") .. ". The weights "
+    .. "depend on that number, and so does what they average: v0's " .. degrees[0] .. " neighbours average to "
+    .. tostring(pull) .. ", the centre itself, so it is pulled straight in (orange: degree " .. high .. ", yellow: "
+    .. "degree " .. low .. ").")
+end)
+
+-- What the student's last edit did to the corners' degrees: a line for the live text.
+local function degree_report(degrees, lo, hi, before_spread, flips_only)
+  local list = {}
+  for i = 0, 7 do list[#list + 1] = "v" .. i .. " " .. degrees[i] end
+  local now = "Degrees now: " .. table.concat(list, ", ") .. "."
+  if hi - lo > before_spread then
+    return now .. " That made it worse: the corners now range from " .. lo .. " to " .. hi .. ", against "
+      .. before_spread .. " apart before. A flip takes one neighbour from each end of the edge and gives one to each "
+      .. "corner across."
+  end
+  if flips_only >= 3 then
+    return now .. " Flips alone cannot do it: they keep 8 vertices and 18 edges, so the degrees always add up to "
+      .. "36, which is 4.5 per corner. Something must add a vertex."
+  end
+  return now
+end
+
+step("Make every corner alike", function()
+  local cube = meshedit.cube()
+  show(cube)
+  camera "fit"
+  view { halfedges = false, wireframe = true }  -- edges to select, no arrows over them
+  local degrees, lo, hi = corner_degrees(cube)
+  local function label_corners(mesh)
+    clear()
+    for i = 0, 7 do label(mesh:vertex(i), "v" .. i .. ": " .. degrees[i]) end
+  end
+  label_corners(cube)
+  say [[
+Fix the input, not the rules: change the cube so that **all 8 corners have the same degree**. Select an edge and
+press **F** to flip it or **S** to split it, as in parts 4 and 5, as often as you like. The labels give each
+corner's degree, and they and the line below follow your edits.]]
+  local status = "Degrees now: the corners range from " .. lo .. " to " .. hi .. "."
+  live(function() return status end)
+  local last, spread, flips_only = cube, hi - lo, 0
+  while true do
+    local mesh = wait_for {
+      hint = "Flip (F) or split (S) edges until every corner has the same degree",
+      condition = function()
+        local m = current_mesh()
+        if m and m:num_vertices() >= 8 and #m:diff(last) > 0 then return m end
+        return false
+      end,
+    }
+    last = mesh
+    if mesh:num_vertices() == 8 then flips_only = flips_only + 1 else flips_only = 0 end
+    degrees, lo, hi = corner_degrees(mesh)
+    label_corners(mesh)
+    if lo == hi then break end
+    status = degree_report(degrees, lo, hi, spread, flips_only)
+    spread = hi - lo
+  end
+  status = "Every corner has degree " .. lo .. ": " .. counts(last) .. "."
+  say [[
+Done: no corner is special any more. The next step shows one way that treats every face alike.]]
 end)
 
 step("The pre-split fix", function()
@@ -436,7 +555,7 @@ step("The pre-split fix", function()
     highlight(e, "yellow")
     ids[#ids + 1] = "`" .. tostring(e) .. "`"
   end
-  say("The fix: make every face the same before subdividing. Split each of the six yellow diagonals ("
+  say("A fix that treats every face alike: split each of the six yellow diagonals ("
     .. table.concat(ids, ", ") .. "): select one, press **S**, and repeat. Each square face then has a vertex in "
     .. "its middle joined to all four of its corners, and every corner has 6 neighbours.")
   local split = wait_for {
@@ -483,47 +602,79 @@ local function corner_run(presplit)
   return mesh, radii
 end
 
+-- The distance to aim for in "Sharp corners": halfway between where v7 ends on the plain cube and where it ends
+-- with its edges split first, after three steps, rounded down to a hundredth.
+local function sharp_target(plain, presplit) return math.floor((plain + presplit) / 2 * 100) / 100 end
+
 step("Sharp corners", function()
   local cube = meshedit.cube()
   local _, plain = corner_run(false)
-  local mesh, sharp = corner_run(true)
-  show(mesh)
+  local _, sharp = corner_run(true)
+  local target = sharp_target(plain[3], sharp[3])
+  show(cube)
   camera "fit"
-  highlight(mesh:vertex(7), "yellow")
-  label(mesh:vertex(7), "corner v7")
-  highlight(mesh:vertex(0), "orange")
-  label(mesh:vertex(0), "corner v0")
+  view { halfedges = false, wireframe = true }
+  highlight(cube:vertex(7), "yellow")
+  label(cube:vertex(7), "corner v7")
   say [[
 Loop subdivision **approximates**: old vertices move toward their neighbours, so a cube's sharp corners are
 rounded away, and the mesh shrinks inside its control mesh.]]
   say("Every corner starts " .. fmt(cube:vertex(7).position:length()) .. " from the centre. On the plain cube, "
     .. "corner `v7` is " .. fmt(plain[1]) .. ", " .. fmt(plain[2]) .. " and " .. fmt(plain[3])
     .. " away after one, two and three steps.")
-  say [[
-On screen is a cube on which every edge at corner v7 (yellow) was split before three steps of L; corner v0
-(orange) was left alone.]]
-  local right = "v7 (its edges split first)"
+  say("Your goal: change the cube so that after **three** steps of L, corner `v7` is still at least **"
+    .. string.format("%.2f", target) .. "** from the centre. Flip (F) and split (S) edges of the cube, without "
+    .. "pressing L, then press **Check**: the lesson subdivides a copy three times and measures v7.")
+  local status = "Press Check when your edits are done."
+  live(function() return status end)
+  local reached
+  while not reached do
+    wait_for { button = "Check", hint = "Edit the cube near v7, then press Check" }
+    local mesh = current_mesh()
+    if not mesh or mesh:num_faces() > 200 or not mesh:validate() then
+      status = "That is not an edited cube (was L pressed?): press Back for a fresh one."
+    else
+      local copy = mesh:copy()
+      for _ = 1, 3 do copy:loop_subdivide() end
+      local r = copy:vertex(7).position:length()
+      if r >= target then
+        reached = copy
+        status = "Reached: after three steps v7 is " .. fmt(r) .. " from the centre."
+      elseif #mesh:diff(cube) == 0 then
+        status = "That is the plain cube: v7 ends " .. fmt(r) .. " from the centre. What would keep v7's "
+          .. "neighbours close to it?"
+      else
+        status = "After three steps v7 is " .. fmt(r) .. " from the centre (the plain cube's: " .. fmt(plain[3])
+          .. "); the goal is " .. string.format("%.2f", target) .. ". Which of your edits touch v7's neighbours?"
+      end
+    end
+  end
+  show(reached)
+  camera "fit"
+  clear()
+  highlight(reached:vertex(7), "yellow")
+  label(reached:vertex(7), "corner v7")
+  local right = "Its neighbours are nearer to it"
   choose {
-    "Which corner is now farther from the centre, the sharper one: v7, whose edges were split first, or v0, "
-      .. "which was left alone?",
-    options = { right, "v0 (untouched)", "Both the same" },
+    "Why does v7 stay farther out now?",
+    options = { right, "Its degree went up", "The splits gave it a weight of its own" },
     answer = right,
     feedback = {
-      ["v0 (untouched)"] = "v0's averages run over neighbours at the far ends of whole cube edges, "
-        .. "and they pull it in. How far are v7's neighbours after its edges were split?",
-      ["Both the same"] = "The rules are the same, but what they average is "
-        .. "not: after the splits v7's neighbours sit halfway along its edges, v0's at their far ends.",
-      [right] = "v7: its neighbours are close to it, so its averages barely move it.",
+      ["Its degree went up"] = "Its degree is not what moves it: for any degree above 3 its neighbours weigh 3/8 "
+        .. "together, however many there are (a split of an edge at v7 even keeps v7's degree: it joins v7 to the "
+        .. "new vertex instead of the far end). What changed is where its neighbours are.",
+      ["The splits gave it a weight of its own"] = "The rules are the same for every vertex; only what they average "
+        .. "changed.",
+      [right] = "Yes: v7 moves toward the average of its neighbours, and they now sit close to it.",
     },
-    hint = "A vertex moves toward the average of its neighbours. Where are v7's neighbours, and where are v0's?",
+    hint = "A vertex moves toward the average of its neighbours. Where are v7's neighbours after your splits?",
   }
-  say("After the same three steps `v7` is still " .. fmt(sharp[3]) .. " from the centre, while the untouched corner "
-    .. "`v0` is at " .. fmt(mesh:vertex(0).position:length()) .. ".")
+  say("With every edge at v7 split first, v7 ends " .. fmt(sharp[3]) .. " from the centre after three steps, "
+    .. "against " .. fmt(plain[3]) .. " on the plain cube.")
   say [[
 To keep a corner sharper, give the mesh more vertices near it before subdividing: the averages near it then run
 over points close to it, so it rounds off less. Real creases need an extension of the rules (crease edges with
-their own weights), which is beyond this assignment. Try it: split the edges around a corner with S, then press
-L a few times.]]
+their own weights), which is beyond this assignment.]]
 end)
 
 step("A mesh with a boundary", function()
@@ -578,7 +729,7 @@ step("Your own upsample", function()
   camera "fit"
   local right = "Flags set while splitting"
   choose {
-    "In your upsample, how will phase 3 find the edges to flip? Flags: is_new_edge set for m-c and m-d as you split, the halves a-m and m-b left unmarked.",
+    "In your upsample, how will phase 3 tell the edges to flip from the others?",
     options = { "Ids past the original count", "One old end and one new end",
       right },
     answer = right,
@@ -593,7 +744,7 @@ step("Your own upsample", function()
     hint = "Think back to the edges you could click in phase 3 that were not the answer.",
   }
   say [[
-Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same phases, with the flags
+Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same work in five steps (its steps 1 and 2 are phase 1 here), with the flags
 (is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra credit. The lesson runs your `upsample` on a
 copy of this cube each time you save the file and compares the result with the reference's: it names the
 vertices that moved to the wrong place, the weight they moved with, and the edges flipped wrongly. An upsample
@@ -607,9 +758,9 @@ that never ends is stopped, at the line it was running.]]
   local tetrahedron = meshedit.tetrahedron()
   show(tetrahedron)
   camera "fit"
-  say [[
-Right on the cube, whose vertices have 4, 5 or 6 neighbours. Every vertex of a tetrahedron has 3, the one degree
-where u is not 3 / (8n): the lesson runs yours on it next.]]
+  say("Right on the cube, whose vertices have " .. degrees_of(cube) .. " neighbours. Every vertex of a tetrahedron "
+    .. "has " .. degrees_of(tetrahedron) .. ", the one degree where u is not 3 / (8n): the lesson runs yours on it "
+    .. "next.")
   your_turn {
     exercise = "upsample",
     mesh = tetrahedron,

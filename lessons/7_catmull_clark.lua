@@ -1,7 +1,8 @@
 -- Part 7: Catmull-Clark subdivision, beside part 6 (Loop). On a cube of six quads the student predicts a face
 -- point, an edge point and where a corner goes by the vertex rule (F + 2R + (n - 3) P) / n, then the counts
 -- after one level, what the rule makes of triangles (a tetrahedron), the boundary rules on a grid of quads, and
--- how linear subdivision differs (nothing moves). Every step asks before it tells; each likely wrong answer is
+-- how linear subdivision differs (nothing moves). Every step asks before it tells: where the face point goes, which
+-- points the edge point averages and which way a corner moves come before each rule; each likely wrong answer is
 -- named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() and
 -- mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
 -- runs the window's Subdivide menu twice: the whole level, and then its three phases one at a time, each checked
@@ -144,12 +145,13 @@ Loop subdivision (part 6) needs triangles. **Catmull-Clark** takes any polygons:
 n quads. From the old mesh it makes a **face point** per face, an **edge point** per edge and a **vertex point**
 per old vertex (where that vertex moves). The window's **Subdivide** menu runs it whole, or a phase at a time.]]
   say("On screen: the unit cube centred at 0 as **six quads** (" .. counts(cube) .. "), its corners at (±"
-    .. num(half.x) .. ", ±" .. num(half.y) .. ", ±" .. num(half.z) .. "). A face point is the **centroid** of "
-    .. "the face's corners. The yellow face is the top, where z = " .. num(centroid(top).z) .. ".")
+    .. num(half.x) .. ", ±" .. num(half.y) .. ", ±" .. num(half.z) .. "). The yellow face is the top, where z = "
+    .. num(centroid(top).z) .. ".")
   local right = face_point(cube, top)
   local sum = centroid(top) * top:degree()
   answer {
-    "Where is the yellow face's face point? Give x, y, z.",
+    "A face point stands for its whole face, and no corner of the face counts more than another. Where would you "
+      .. "put the yellow face's? Give x, y, z.",
     point = { right.x, right.y, right.z },
     feedback = function(p)
       if p:length() < 1e-3 then
@@ -164,8 +166,9 @@ per old vertex (where that vertex moves). The window's **Subdivide** menu runs i
     hint = "Add up the four corners and divide by four.",
   }
   label(top, "face point")
-  say("The core puts it at " .. point(right) .. ": the centre of the top. Every face gets one; on the cube they "
-    .. "are the centres of the six sides.")
+  say("The core puts it at " .. point(right) .. ": the centre of the top. That is the rule: a face point is the "
+    .. "**centroid** of the face's corners, their sum divided by their number. Every face gets one; on the cube "
+    .. "they are the centres of the six sides.")
 end)
 
 step("Edge points", function()
@@ -181,9 +184,26 @@ step("Edge points", function()
   label(e, tostring(e))
   label(h.face, "face point")
   label(h.twin.face, "face point")
-  say("An **edge point** is the mean of four points: the edge's two ends and the face points of the two faces "
-    .. "beside it. The orange edge " .. tostring(e) .. " runs from " .. point(a) .. " to " .. point(b) .. "; the "
-    .. "two faces beside it have face points " .. point(f0) .. " and " .. point(f1) .. ".")
+  say("Each edge gets an **edge point**, a new vertex near the edge. The orange edge " .. tostring(e) .. " runs "
+    .. "from " .. point(a) .. " to " .. point(b) .. "; the two faces beside it have the face points "
+    .. point(f0) .. " and " .. point(f1) .. ".")
+  local both = "The two ends and the two face points"
+  choose {
+    "The edge point should lie near the edge, but also feel the two faces beside it, so that the new mesh is "
+      .. "smoother than the old. Which points would you average?",
+    options = { "The two ends: the midpoint", both, "The two face points only", "Every corner of the two faces" },
+    answer = both,
+    feedback = {
+      ["The two ends: the midpoint"] = "The midpoint feels only the edge: a sharp edge between two faces would stay "
+        .. "exactly as sharp. (That is the rule on a boundary edge, where there is only one face.)",
+      ["The two face points only"] = "The face points alone forget where the edge itself is: every edge of a face "
+        .. "would feel the same two points and lose its place.",
+      ["Every corner of the two faces"] = "The faces' corners are what their face points already sum up; counting "
+        .. "them again weighs the far corners as much as the edge's own ends.",
+      [both] = "Yes: the edge point is the mean of those four points, (a + b + f0 + f1) / 4.",
+    },
+    hint = "It must depend on the edge and on each face beside it. Which points stand for those?",
+  }
   local right = edge_point(cube, e)
   local midpoint = (a + b) / 2
   answer {
@@ -227,6 +247,24 @@ step("Vertex points", function()
   local F, R = mean(faces), mean(midpoints)
   highlight(v, "yellow")
   label(v, "v0, n = " .. n)
+  local inwards = "Towards the centre, along the diagonal"
+  choose {
+    "Catmull-Clark moves every old vertex too, to its vertex point, an average of points around it. Where will "
+      .. "the yellow corner v0 go?",
+    options = { "It stays where it is", inwards, "Away from the centre", "Onto one of its faces' face points" },
+    answer = inwards,
+    feedback = {
+      ["It stays where it is"] = "Then the cube's corners would stay sharp at every level. Catmull-Clark "
+        .. "approximates: the averages pull every old vertex in.",
+      ["Away from the centre"] = "Every point around v0, its faces' face points and its edges' midpoints, lies "
+        .. "inside the corner; an average of them cannot move it out.",
+      ["Onto one of its faces' face points"] = "v0 has three faces alike; an average treats them the same, so it "
+        .. "cannot pick one. And it would jump much too far.",
+      [inwards] = "Yes: the points it averages all lie inside the corner, and the cube's symmetry keeps it on "
+        .. "the diagonal. How far it goes is what the rule below says.",
+    },
+    hint = "An average of points can only land among them. Where are the points around v0?",
+  }
   say [[
 An old vertex P with n edges moves to its **vertex point**
 
@@ -275,8 +313,8 @@ step("Counting after one level", function()
   local after = catmull_clark(cube)
   local sides = 0
   for f in cube:faces() do sides = sides + f:degree() end
-  say("One level keeps every old vertex (moved to its vertex point) and adds a vertex at every edge point and "
-    .. "every face point. The cube has V = " .. V .. ", E = " .. E .. " and F = " .. F .. ".")
+  say("One level keeps every old vertex, moved to its vertex point. The cube has V = " .. V .. ", E = " .. E
+    .. " and F = " .. F .. ".")
   local right = (V + E + F) .. " = V + E + F"
   assert(after:num_vertices() == V + E + F, "the core's vertex count is not V + E + F")
   local options = { right, (V + E) .. " = V + E", (V + F) .. " = V + F", (4 * F) .. " = 4F" }
@@ -346,7 +384,7 @@ step("The app's phases", function()
   say [[
 The **Subdivide** menu also runs Catmull-Clark **one phase at a time**, as Shift+L does for Loop:
 1. **compute** every face, edge and vertex point from the cube as it is; nothing changes yet;
-2. **split** every face into quads: new vertices at the edges' midpoints and the faces' centroids, nothing moves;
+2. **split** every face into quads, with a new vertex on every edge and in every face;
 3. **move** every vertex to its point.]]
   local midpoint = "At the edge's midpoint " .. point((a + b) / 2)
   local edge_point_option = "At its edge point " .. point(edge_point(cube, e))
@@ -476,6 +514,21 @@ step("Boundary rules", function()
       if left then right = other.position else left = other.position end
     end
   end
+  local along = "Itself and its two neighbours along the boundary"
+  choose {
+    "The yellow corner is on the boundary too. Which points should its rule use, so that the border stays a curve "
+      .. "of its own?",
+    options = { along, "Itself and all its neighbours", "Itself, its neighbours and its face's face point" },
+    answer = along,
+    feedback = {
+      ["Itself and all its neighbours"] = "A neighbour inside the mesh would pull the border inwards, and the border "
+        .. "would depend on the inside. Only the points on the border itself may count.",
+      ["Itself, its neighbours and its face's face point"] = "The face point lies inside the mesh: the border would "
+        .. "then depend on the faces, as the edge point you just found does not.",
+      [along] = "Yes: the same rule as a curve's, from the points of the border alone.",
+    },
+    hint = "The edge point of a boundary edge used the edge alone. Do the same for a vertex.",
+  }
   say("A boundary vertex P moves to 3/4 P + 1/8 of its two neighbours **along the boundary**. The yellow corner's "
     .. "are " .. point(left) .. " and " .. point(right) .. ".")
   local right_vertex = vertex_point(grid, corner)
@@ -518,7 +571,7 @@ step("Linear subdivision beside it", function()
     .. "its face's centroid.")
   local ratio = smooth:vertex(0).position:length() / cube:vertex(0).position:length()
   local right = "Where it was"
-  local options = { right, (fraction(ratio) or num(ratio)) .. " of the way to the centre", "At a face centroid" }
+  local options = { right, (fraction(1 - ratio) or num(1 - ratio)) .. " of the way to the centre", "At a face centroid" }
   choose {
     "After one level of linear subdivision, where is the corner v0?",
     options = options,

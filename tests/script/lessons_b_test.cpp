@@ -268,7 +268,7 @@ TEST(LessonsB, EdgeSplitLabelsTheNewElementsOnTheScreenMesh) {
 // ---- part 6: Loop subdivision ----------------------------------------------------------------------
 
 TEST(LessonsB, LoopSubdivisionPassesHeadlessWithTheCoresCounts) {
-  const std::string text = run_headless("6_loop_subdivision", 11);
+  const std::string text = run_headless("6_loop_subdivision", 12);
   EXPECT_TRUE(contains(text,
                        "The yellow vertex v0 has 6 neighbours, so u = 0.0625: it will go from (-0.5, -0.5, "
                        "-0.5) to (-0.3125, -0.3125, -0.3125)."))
@@ -630,6 +630,8 @@ TEST(LessonsB, CatmullClarkVertexPointArrowIsTheCoresAndTheLastStepShowsBoth) {
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
   EXPECT_EQ(label_of(host, VertexId(0)), "v0, n = 3");
   EXPECT_EQ(colour_of(host, VertexId(0)), colour_hex(kDarkSwatches.yellow));
+  ASSERT_TRUE(runner.deliver(LessonEvent::choice("Towards the centre, along the diagonal")));  // asked first
+  ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << runner.error();
   runner.deliver(LessonEvent::value("-0.5, -0.5, -0.5"));  // the corner where it was
   ASSERT_EQ(runner.step_state(), LessonRunner::StepState::Waiting) << "a wrong answer keeps the step waiting";
   EXPECT_TRUE(host.arrows().empty());
