@@ -1,5 +1,5 @@
 -- The welcome lesson: what MeshEdit is for, how to look around, how to pick elements, and the keys every
--- later lesson uses. CI runs it headless with scripted answers:
+-- later lesson uses (the student flips an edge with one of them). CI runs it headless with scripted answers:
 --   meshedit lesson lessons/welcome.lua --headless --answers tests/script/lessons/welcome_answers.lua
 
 lesson {
@@ -24,7 +24,8 @@ The lessons follow the parts of the assignment:
 - **Bézier patches**, the surfaces the Utah teapot is made of
 - **half-edge meshes**: walking around faces and vertices, and vertex normals
 - **edge flip** and **edge split**, the two local operations
-- **Loop subdivision**, which turns a coarse mesh into a smooth one]]
+- **Loop subdivision**, which turns a coarse mesh into a smooth one
+- and, beyond the assignment, **Catmull-Clark** subdivision and **bringing your own mesh**]]
   say [[
 On screen is a cube made of 12 triangles, stored as a half-edge mesh. Press **Next** when you are ready.]]
 end)
@@ -73,23 +74,41 @@ With something selected, press **N** to go to the *next* halfedge. (From a verte
 vertex's own halfedge, then its next.)]]
   wait_for { key = "N", hint = "Press N to walk to the next halfedge" }
   say [[
-Press **N** two more times: the cube's faces are triangles, so after three steps you are back where
-you started. Then press **T** to jump to the *twin*, into the neighbouring face. **V**, **E** and **H**
+Press **N** two more times: the cube's faces are triangles, so three presses bring you back to the halfedge
+you started from (from a vertex: its own halfedge). Then press **T** to jump to the *twin*, into the neighbouring face. **V**, **E** and **H**
 take you to the vertex, the edge and back to a halfedge. This walking is exactly what your code will do.]]
 end)
 
+-- The two vertices edge `id` of `mesh` joins, as "v1 and v2".
+local function ends_of(mesh, id)
+  local h = mesh:edge(id).halfedge
+  return tostring(h.vertex) .. " and " .. tostring(h.twin.vertex)
+end
+
 step("Keys for the parts ahead", function()
-  highlight(cube:edge(0), "orange")
-  label(cube:edge(0), "e0")
+  show(cube)
+  local diagonal = 2  -- e2 cuts the bottom square into two triangles
+  highlight(cube:edge(diagonal), "orange")
+  label(cube:edge(diagonal), "e2")
+  say("Some keys change the mesh. Try one: the orange edge e2, the diagonal of the bottom square, joins "
+    .. ends_of(cube, diagonal) .. ". **Click** it to select it, then press **F** and watch which corners it joins "
+    .. "afterwards.")
+  wait_for { selection = "e2", hint = "Click the orange edge e2" }
+  wait_for { key = "F", hint = "Press F to flip e2" }
+  local flipped = current_mesh()
+  if flipped and ends_of(flipped, diagonal) ~= ends_of(cube, diagonal) then
+    say("e2 now joins " .. ends_of(flipped, diagonal) .. ": it turned inside its two triangles to join their other "
+      .. "two corners, the square's other diagonal. That was an **edge flip**, part 4 of the assignment.")
+  end
   say [[
-These keys change the mesh. Every change can be undone with **Ctrl+Z** (and redone with **Ctrl+Y**):
+Every change can be undone with **Ctrl+Z** (and redone with **Ctrl+Y**). The keys that change the mesh:
 
 - **F** flips the selected edge: it turns to join the other two corners of its two triangles
 - **S** splits the selected edge: a new vertex in its middle, joined to the opposite corners
 - **L** runs one step of Loop subdivision; **Shift+L** runs it one phase at a time
 - **C** collapses the selected edge into a single vertex]]
   say [[
-The pointer tables below the view show every `next`, `twin`, `vertex`, `edge` and `face`: after an
+The pointer tables in the right column (the **Pointers** tab) show every `next`, `twin`, `vertex`, `edge` and `face`: after an
 edit, the cells that changed are highlighted. Press **F1** any time for the list of keys.]]
   say [[
 That is all you need. Open the lesson list to start with **de Casteljau's algorithm**.]]

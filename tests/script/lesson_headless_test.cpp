@@ -1,4 +1,5 @@
-// run_lesson_headless in process: the welcome lesson with its answers file passes every step; scripted edits
+// run_lesson_headless in process: the welcome lesson with its answers file passes every step; every shipped lesson
+// has the student act in two thirds of its steps; scripted edits
 // reach the mesh the lesson reads; a wait with no answer, a Lua error and a bad answers file fail with one
 // line naming the file, line and step.
 #include <gtest/gtest.h>
@@ -14,6 +15,7 @@
 #include "core/primitives.h"
 #include "core/value_format.h"
 #include "script/lesson_headless.h"
+#include "script/lesson_runner.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -42,6 +44,16 @@ TEST(LessonHeadless, TheWelcomeLessonPassesWithItsAnswers) {
   EXPECT_TRUE(contains(text, "  > click v0\n")) << text;
   // The lesson read the clicked vertex from the mesh on screen: v0 of the cube has degree 6.
   EXPECT_TRUE(contains(text, "  You picked v0. 6 edges meet there")) << text;
+  // The flip of step 5 is the core's: e2 of the cube, the bottom square's diagonal v0-v3, joins the triangles'
+  // other corners after.
+  HalfedgeMesh cube = build_halfedge_mesh(make_cube());
+  ASSERT_TRUE(flip(cube, EdgeId(2)).ok());
+  const HalfedgeId h = cube.halfedge(EdgeId(2));
+  EXPECT_TRUE(contains(text, "the diagonal of the bottom square, joins v3 and v0.")) << text;
+  EXPECT_TRUE(contains(text, "  > selection e2\n  > flip e2\n  > key F\n")) << text;
+  EXPECT_TRUE(contains(text, "e2 now joins " + format_id(cube.vertex(h)) + " and " +
+                                 format_id(cube.vertex(cube.twin(h))) + ": it turned inside its two triangles"))
+      << text;
   EXPECT_FALSE(contains(text, "**")) << "markdown is printed as plain text";
   EXPECT_FALSE(contains(text, "not awaited")) << text;
   EXPECT_EQ(text.substr(text.size() - std::string("\n5 steps passed\n").size()), "\n5 steps passed\n");
@@ -56,6 +68,36 @@ step("Flip it", function()
   say("e7 now joins " .. tostring(h.vertex) .. " and " .. tostring(h.twin.vertex))
 end)
 )lua";
+
+// Every shipped lesson asks the student to act in at least two thirds of its steps: run headless with its answers
+// and the correct solutions, a step the student acts in has an answer line ("  > ...") in the transcript; a step
+// that only shows (its Continue pressed by the run itself) has none.
+TEST(LessonHeadless, EveryLessonWaitsForTheStudentInTwoThirdsOfItsSteps) {
+  const auto source = testing::source_dir();
+  size_t lessons = 0;
+  for (const auto& entry : std::filesystem::directory_iterator(source / "lessons")) {
+    if (entry.path().extension() != ".lua") continue;
+    const auto answers = source / "tests" / "script" / "lessons" / (entry.path().stem().string() + "_answers.lua");
+    ASSERT_TRUE(std::filesystem::exists(answers)) << entry.path() << " has no answers file";
+    std::ostringstream out;
+    const HeadlessOutcome outcome = run_lesson_headless(entry.path(), answers, out, LessonRunner::default_limits(),
+                                                        source / "tests" / "script" / "solutions");
+    const std::string text = out.str();
+    ASSERT_EQ(outcome.failure, "") << text;
+    size_t acted = 0;
+    for (size_t at = text.find("\nstep "); at != std::string::npos;) {
+      const size_t next = text.find("\nstep ", at + 1);
+      const std::string body = text.substr(at, next == std::string::npos ? std::string::npos : next - at);
+      acted += body.find("\n  > ") != std::string::npos ? 1 : 0;
+      at = next;
+    }
+    EXPECT_GE(acted * 3, outcome.steps * 2)
+        << entry.path().filename() << ": the student acts in " << acted << " of " << outcome.steps << " steps\n"
+        << text;
+    ++lessons;
+  }
+  EXPECT_GE(lessons, 9u);
+}
 
 TEST(LessonHeadless, ScriptedEditsChangeTheMeshTheLessonReads) {
   const auto dir = testing::scratch_dir();
