@@ -1,7 +1,9 @@
 -- Part 1: Bézier curves by de Casteljau's algorithm: the levels at a parameter t (level 0 is the control points,
 -- level k comes after k steps), the curve traced as t moves, splitting a curve in two, the Bernstein weights and the
--- derivative. Each step asks the student to predict or to act before it shows; every number the lesson prints is
--- computed by the project's own Bézier code (meshedit.curve), so the text never drifts from what the curve view draws.
+-- derivative. Each step asks the student to predict or to act before it shows; the numbers the lesson prints are
+-- computed by the project's own Bézier code (meshedit.curve), so the text never drifts from what the curve view
+-- draws, except a few worked values of this curve written in its text (3/8, t = 1/3, the polygon's length 6.47 and
+-- quarter point (0.72, 1.45), C'(0.5) = (4.5, 0)), each checked against the core by tests/script/lessons_a_test.cpp.
 -- The last step runs the student's own evaluate_step (your_turn) at t = 0.25, where swapped weights show.
 -- CI runs it headless:
 --   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/script/lessons/1_de_casteljau_answers.lua \
@@ -139,7 +141,8 @@ Each step turns the points of one level into the next, one point fewer. Level 0 
     feedback = {
       ["5"] = "5 is level 0, the control points themselves, before any step.",
       ["4"] = "4 is level 1, after one step: off by one. Level 2 comes after two steps.",
-      ["2"] = "2 is level 3: counting the control points as level 1 puts you one level too far.",
+      ["2"] = "2 is level 3, after three steps: one step too many. Level k is not k points; it is what is left "
+        .. "after k steps, each removing one point.",
       ["3"] = "Yes: 5, then 4 after one step, then 3 after two.",
     },
     hint = "Each step removes one point. Level 0 has 5.",
@@ -320,8 +323,8 @@ C(t)**: it is the tangent. Press **E** twice to draw level 2 and drag t.]]
     if #levels < 3 then return "(the curve needs 3 control points or more)" end
     local two = levels[#levels - 1]
     local d = (two[2] - two[1]) * (#c.points - 1)
-    return string.format("At t = %.2f the level-2 points are %s and %s: C'(t) = %d x their difference = %s.",
-      t, pt(two[1]), pt(two[2]), #c.points - 1, pt(d))
+    return string.format("At t = %.2f the level-%d points are %s and %s: C'(t) = %d x their difference = %s.",
+      t, #levels - 2, pt(two[1]), pt(two[2]), #c.points - 1, pt(d))
   end)
   wait_for { key = "E", hint = "Press E to draw the next level" }
 end)

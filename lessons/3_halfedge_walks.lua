@@ -1,8 +1,8 @@
 -- Part 3: walking the half-edge structure (around a face with h.next, why a face list cannot find a vertex's
 -- neighbours without reading every face, around a vertex with h.twin.next, along a boundary loop), then
 -- area-weighted vertex normals (on a fan where the weighting changes the answer) and flat vs smooth shading.
--- Each step asks before it tells: the student clicks h.next or h.twin.next, counts, or predicts the normal,
--- and every wrong answer is told what it is. Every walk is done on the mesh on screen and every highlight and
+-- Each step asks or has the student act before it tells: the student clicks h.next or h.twin.next, counts, walks
+-- a boundary loop, predicts the normal or switches the shading, and every wrong answer is told what it is. Every walk is done on the mesh on screen and every highlight and
 -- label marks the element the walk reached, so what the student sees is what the pointers say. The last step
 -- runs the student's own vertex_normal (your_turn) on the fan. CI runs it headless:
 --   meshedit lesson lessons/3_halfedge_walks.lua --headless \
@@ -155,7 +155,7 @@ every mesh operation asks: which vertices are the **neighbours of ]] .. tostring
   say("All 12: a face list answers in time that grows with the **whole mesh**, and a mesh operation asks this for "
     .. "every vertex it touches. A half-edge mesh stores, with each element, the pointers to its neighbours: from "
     .. "`v.halfedge` the walk `h = h.twin.next` reaches the " .. count .. " halfedges leaving " .. tostring(v)
-    .. " (blue), one per neighbour, and nothing else: time that grows with its degree only. The next step walks it.")
+    .. " (sky blue), one per neighbour, and nothing else: time that grows with its degree only. The next step walks it.")
 end)
 
 step("Around a vertex", function()
@@ -172,7 +172,7 @@ step("Around a vertex", function()
   say(string.gsub([[
 # Around a vertex
 
-A vertex knows one halfedge that **starts** at it, `v.halfedge`: the blue arrow **h**, leaving **V**. To reach
+A vertex knows one halfedge that **starts** at it, `v.halfedge`: the sky-blue arrow **h**, leaving **V**. To reach
 the next one around V, go across with `h.twin` (it ends at V) and then take `.next` (it starts at V again, in
 the neighbouring face).]], "V", tostring(v)))
   -- The walk's order, to tell a student who clicked a later halfedge of the walk how far round it is.
@@ -248,7 +248,7 @@ step("Along a boundary", function()
 # Along a boundary
 
 A mesh with holes or edges, like this flat grid, has **boundary halfedges**: the halfedges on the outer
-side of its edge, with no face. MeshEdit keeps them in a **boundary loop** (`b0`), so `h.next` still works
+side of its edges, in no face. MeshEdit keeps them in a **boundary loop** (`b0`), so `h.next` still works
 and walks along the boundary.]]
   say("The green halfedges are the walk along `next` from " .. tostring(start) .. ": " .. count
     .. " steps around the grid and back to the start, one per boundary edge.")
@@ -346,8 +346,8 @@ step("Your turn", function()
 # Your code
 
 Open `scripts/student/normals.lua` and write `vertex_normal(v)`: walk around `v` with `h = h.twin.next`,
-add the cross products of the faces you meet (skip boundary halfedges, which have no face) and return the sum
-normalized. The lesson runs it on the fan's vertex **v** each time you save the file and compares it with the
+add the cross products of the faces you meet (skip boundary halfedges: their `h.face` is a boundary loop,
+`h.face:is_boundary()`, not a face) and return the sum normalized. The lesson runs it on the fan's vertex **v** each time you save the file and compares it with the
 reference's area-weighted normal: the plain average of unit normals is named as such, and a Lua error shows its
 `normals.lua:LINE`.]]
   your_turn {

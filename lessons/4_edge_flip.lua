@@ -143,7 +143,8 @@ Yes: h0.next is **h2**. The rest of the names follow the same walk:
 - around f1 = (b, a, d): h1, then **h4** (a to d), then **h5** (d to b), back to h1
 - **h6** to **h9** are the twins of h2 to h5: they run around the outside, on the boundary loop]]
   say [[
-Click any element and press **I**: the inspector shows its next, twin, vertex, edge and face.]]
+Click any element and press **I**: the inspector shows every field it stores (for a halfedge: next, twin, vertex,
+edge and face).]]
 end)
 
 step("The course's letters", function()
@@ -257,7 +258,7 @@ step("The pointers that are easy to forget", function()
   say [[
 The list above is not all. This is the same diamond, but its faces and vertices store other halfedges, as
 they may (any halfedge of the face, any halfedge leaving the vertex): **f0.halfedge = h2** (orange),
-f1.halfedge = h4, **a.halfedge = h0** (blue) and b.halfedge = h1. The flip moves exactly those halfedges away.]]
+f1.halfedge = h4, **a.halfedge = h0** (sky blue) and b.halfedge = h1. The flip moves exactly those halfedges away.]]
   pick {
     "After the flip h2 is in f1. Click a halfedge f0.halfedge may point to after the flip.",
     answer = function(element)

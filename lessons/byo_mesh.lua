@@ -168,12 +168,14 @@ step("A fin and a flipped face", function()
   label(fin_fixed:vertex(1), "1")
   say [[
 Three triangles on the edge from vertex 0 to vertex 1, a **fin**: face 0 runs 0 to 1, face 1 runs 1 to 0 and
-face 2 runs 0 to 1 again. The repair keeps the edge for the first face and the first later face that runs the other
-way, and gives each other face corners of its own there (it *detaches* it).]]
+face 2 runs 0 to 1 again. An edge keeps only two faces, one each way; the repair gives each other face corners of
+its own there (it *detaches* it).]]
   choose {
     "Which face does the repair detach?",
     options = { "face 0", "face 1", "face 2" }, answer = "face " .. detached,
     feedback = {
+      ["face " .. detached] = "Yes: the repair keeps the edge for the first face and the first later face that runs "
+        .. "the other way.",
       ["face 0"] = "Face 0 is the first face on the edge: it keeps it.",
       ["face 1"] = "Face 1 runs 1 to 0, against face 0: the two are a proper pair, and it keeps the edge.",
     },
@@ -191,12 +193,14 @@ way, and gives each other face corners of its own there (it *detaches* it).]]
   label(flip_fixed:vertex(0), "0")
   label(flip_fixed:vertex(1), "1")
   say [[
-Now two triangles on one edge that **both** run from vertex 0 to vertex 1: one of them faces the wrong way. The
-repair turns faces to agree with the lowest face of their piece, unless more of them already face the other way.]]
+Now two triangles on one edge that **both** run from vertex 0 to vertex 1: one of them faces the wrong way, and
+the repair turns it.]]
   choose {
     "Which face does the repair reverse?",
     options = { "face 0", "face 1", "neither: it is refused" }, answer = "face " .. reversed,
     feedback = {
+      ["face " .. reversed] = "Yes: the repair turns faces to agree with the lowest face of their piece, unless more "
+        .. "of them already face the other way.",
       ["face 0"] = "Face 0 is the lowest face of the piece, and the two are one each: the others follow face 0.",
       ["neither: it is refused"] = "from_polygons refuses it; meshedit.repair and Open a repaired copy fix it.",
     },

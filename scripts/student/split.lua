@@ -40,8 +40,9 @@
 --   Boundary edge (f1 a boundary loop; h0 is then the halfedge of e inside the face): make m, ea, ec, g0,
 --   n0..n3 in the same order, and no ed, g1, n4, n5. f0 becomes f0 and g0 as above; f1 (the loop) is not
 --   split, it only gets one halfedge longer: h1 (b->m).next = n1, and n1 = (next: the halfedge that followed
---   h1 before, twin n0, vertex m, edge ea, face f1). The loop's halfedge stays as it was. m.halfedge = n1
---   puts m's halfedge on the loop, as every boundary vertex's halfedge must be.
+--   h1 before, twin n0, vertex m, edge ea, face f1). The loop's halfedge stays as it was. m.halfedge = n1, as
+--   on an interior edge (the reference's choice, which puts it on the loop). The course lets a boundary vertex's
+--   halfedge be any halfedge leaving it, and the checker only asks that m's run along the split edge (n1 or h0).
 --
 -- WHAT YOU MAY USE
 --   Everything from flip.lua, plus mesh:new_vertex(position), mesh:new_edge(), mesh:new_face(),

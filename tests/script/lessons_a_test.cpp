@@ -5,11 +5,14 @@
 // teapot lesson uses to find assets/teapot.bez.
 #include <gtest/gtest.h>
 
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <set>
 #include <sstream>
 #include <string>
+
+#include <glm/geometric.hpp>
 
 #include "core/bezier.h"
 #include "core/mesh_build.h"
@@ -86,6 +89,33 @@ TEST(LessonsA, DeCasteljauPassesEveryStep) {
   EXPECT_TRUE(contains(r.text, "> your turn curve.lua: right\n\n  Your evaluate_step gives the reference's level 1."))
       << r.text;
   EXPECT_TRUE(contains(r.text, "meshedit grade --suite tests/grading/suites/curve.lua")) << r.text;
+}
+
+// The few values lesson 1 writes out in its text are the curve's own: C(0.75), the control polygon's length and
+// its quarter point, B1(0.5), where B1 peaks, and C'(0.5) from the level-2 points.
+TEST(LessonsA, DeCasteljauWorkedValuesAreTheCurvesOwn) {
+  const std::vector<glm::dvec2> points = {{0, 0}, {1, 2}, {3, 2}, {4, 0}};
+  const Headless r = run("1_de_casteljau");
+  const glm::dvec2 three_quarters = evaluate_curve(points, 0.75);
+  char text[96];
+  std::snprintf(text, sizeof text, "(%.3f, %.3f) is C(0.75)", three_quarters.x, three_quarters.y);
+  EXPECT_TRUE(contains(r.text, text)) << text;
+  double length = 0.0;
+  for (size_t i = 1; i < points.size(); ++i) length += glm::distance(points[i - 1], points[i]);
+  const glm::dvec2 quarter = points[0] + (points[1] - points[0]) * (length / 4.0 / glm::distance(points[0], points[1]));
+  ASSERT_LT(length / 4.0, glm::distance(points[0], points[1])) << "the quarter point is on the first side";
+  std::snprintf(text, sizeof text, "(%.2f long: a quarter of it is still on its first side, near (%.2f, %.2f))", length,
+                quarter.x, quarter.y);
+  EXPECT_TRUE(contains(r.text, text)) << text << "\n" << r.text;
+  const auto b1 = [](double t) { return 3.0 * t * (1.0 - t) * (1.0 - t); };
+  EXPECT_DOUBLE_EQ(b1(0.5), 3.0 / 8.0);
+  EXPECT_TRUE(contains(r.text, "Yes: 3/8.")) << r.text;
+  for (double t : {1.0 / 3.0 - 1e-3, 1.0 / 3.0 + 1e-3}) EXPECT_LT(b1(t), b1(1.0 / 3.0));  // B1 peaks at 1/3
+  EXPECT_TRUE(contains(r.text, "Yes, t = 1/3.")) << r.text;
+  const auto levels = de_casteljau_levels(std::span<const glm::dvec2>(points), 0.5);
+  const glm::dvec2 derivative = 3.0 * (levels[2][1] - levels[2][0]);
+  std::snprintf(text, sizeof text, "(%g, %g): the top of the arch", derivative.x, derivative.y);
+  EXPECT_TRUE(contains(r.text, text)) << text;
 }
 
 TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndItsHodograph) {
