@@ -514,7 +514,7 @@ step("Make every corner alike", function()
   local degrees, lo, hi = corner_degrees(cube)
   local function label_corners(mesh)
     clear()
-    for i = 0, 7 do label(mesh:vertex(i), "v" .. i .. ": " .. degrees[i]) end
+    for i = 0, 7 do label(mesh:vertex(i), "degree " .. degrees[i]) end
   end
   label_corners(cube)
   say [[

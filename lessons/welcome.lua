@@ -87,17 +87,17 @@ end
 
 step("Keys for the parts ahead", function()
   show(cube)
-  local diagonal = 2  -- e2 cuts the bottom square into two triangles
+  local diagonal = 11  -- e11 cuts the front square (y = -0.5, facing the start view) into two triangles
   highlight(cube:edge(diagonal), "orange")
-  label(cube:edge(diagonal), "e2")
-  say("Some keys change the mesh. Try one: the orange edge e2, the diagonal of the bottom square, joins "
+  label(cube:edge(diagonal), "e11")
+  say("Some keys change the mesh. Try one: the orange edge e11, the diagonal of the front square, joins "
     .. ends_of(cube, diagonal) .. ". **Click** it to select it, then press **F** and watch which corners it joins "
     .. "afterwards.")
-  wait_for { selection = "e2", hint = "Click the orange edge e2" }
-  wait_for { key = "F", hint = "Press F to flip e2" }
+  wait_for { selection = "e11", hint = "Click the orange edge e11" }
+  wait_for { key = "F", hint = "Press F to flip e11" }
   local flipped = current_mesh()
   if flipped and ends_of(flipped, diagonal) ~= ends_of(cube, diagonal) then
-    say("e2 now joins " .. ends_of(flipped, diagonal) .. ": it turned inside its two triangles to join their other "
+    say("e11 now joins " .. ends_of(flipped, diagonal) .. ": it turned inside its two triangles to join their other "
       .. "two corners, the square's other diagonal. That was an **edge flip**, part 4 of the assignment.")
   end
   say [[

@@ -44,14 +44,14 @@ TEST(LessonHeadless, TheWelcomeLessonPassesWithItsAnswers) {
   EXPECT_TRUE(contains(text, "  > click v0\n")) << text;
   // The lesson read the clicked vertex from the mesh on screen: v0 of the cube has degree 6.
   EXPECT_TRUE(contains(text, "  You picked v0. 6 edges meet there")) << text;
-  // The flip of step 5 is the core's: e2 of the cube, the bottom square's diagonal v0-v3, joins the triangles'
+  // The flip of step 5 is the core's: e11 of the cube, the front square's diagonal v5-v0, joins the triangles'
   // other corners after.
   HalfedgeMesh cube = build_halfedge_mesh(make_cube());
-  ASSERT_TRUE(flip(cube, EdgeId(2)).ok());
-  const HalfedgeId h = cube.halfedge(EdgeId(2));
-  EXPECT_TRUE(contains(text, "the diagonal of the bottom square, joins v3 and v0.")) << text;
-  EXPECT_TRUE(contains(text, "  > selection e2\n  > flip e2\n  > key F\n")) << text;
-  EXPECT_TRUE(contains(text, "e2 now joins " + format_id(cube.vertex(h)) + " and " +
+  ASSERT_TRUE(flip(cube, EdgeId(11)).ok());
+  const HalfedgeId h = cube.halfedge(EdgeId(11));
+  EXPECT_TRUE(contains(text, "the diagonal of the front square, joins v5 and v0.")) << text;
+  EXPECT_TRUE(contains(text, "  > selection e11\n  > flip e11\n  > key F\n")) << text;
+  EXPECT_TRUE(contains(text, "e11 now joins " + format_id(cube.vertex(h)) + " and " +
                                  format_id(cube.vertex(cube.twin(h))) + ": it turned inside its two triangles"))
       << text;
   EXPECT_FALSE(contains(text, "**")) << "markdown is printed as plain text";

@@ -4,5 +4,5 @@ return {
   [2] = { {key = "W"} },
   [3] = { {click = "v0"} },
   [4] = { {key = "N"} },
-  [5] = { {selection = "e2"}, {flip = "e2"}, {key = "F"} },
+  [5] = { {selection = "e11"}, {flip = "e11"}, {key = "F"} },
 }
