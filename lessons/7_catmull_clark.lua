@@ -1,9 +1,10 @@
 -- Part 7: Catmull-Clark subdivision, beside part 6 (Loop). On a cube of six quads the student predicts a face
 -- point, an edge point and where a corner goes by the vertex rule (F + 2R + (n - 3) P) / n, then the counts
--- after one level, what the rule makes of triangles (a tetrahedron), the boundary rules on a grid of quads, and
--- how linear subdivision differs (nothing moves). Every step asks before it tells: where the face point goes, which
--- points the edge point averages and which way a corner moves come before each rule; each likely wrong answer is
--- named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() and
+-- after one level, what the rule makes of triangles (a tetrahedron), the boundary rules on a grid of quads, how
+-- linear subdivision differs (nothing moves), and the student's own level (scripts/exercises/catmull_clark.lua:
+-- linear subdivision, then the rules; run by your_turn on the cube). Every step asks before it tells: where the
+-- face point goes, which points the edge point averages and which way a corner moves come before each rule; each
+-- likely wrong answer is named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() and
 -- mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
 -- runs the window's Subdivide menu twice: the whole level, and then its three phases one at a time, each checked
 -- against the lesson's own phases.
@@ -607,4 +608,47 @@ step("Linear subdivision beside it", function()
     .. num(cube:vertex(0).position:length()) .. " from the centre; after three levels it is "
     .. num(levels:vertex(0).position:length()) .. " from it, and there are " .. levels:num_faces()
     .. " quads). Try both in the window's **Subdivide** menu.")
+end)
+
+step("Your own Catmull-Clark", function()
+  local cube = quad_cube()
+  show(cube)
+  camera "fit"
+  view { halfedges = false, labels = false }
+  local linear = cube:copy()
+  assert(linear:linear_subdivide())
+  local right = "Linear subdivision first, then move every vertex"
+  choose {
+    "You have seen that linear subdivision makes Catmull-Clark's quads with every new vertex at a midpoint or a "
+      .. "centroid. How could your own code do one level of Catmull-Clark?",
+    options = { right, "Move the old vertices first, then subdivide", "Subdivide, then move only the old vertices" },
+    answer = right,
+    feedback = {
+      ["Move the old vertices first, then subdivide"] = "Then the midpoints and centroids linear subdivision places "
+        .. "would come from the moved corners, and the edge and face points would be wrong: the rules read the "
+        .. "mesh before anything moves.",
+      ["Subdivide, then move only the old vertices"] = "The edge vertices move too: from the midpoint to the edge "
+        .. "point, pulled toward the two faces. Only the face vertices stay, at their faces' centroids.",
+      [right] = "Yes: mesh:linear_subdivide() makes the quads, and each vertex's rule can be read from its "
+        .. "neighbours in the refined mesh, as long as every new position is computed before any moves.",
+    },
+    hint = "Which phase of the Subdivide menu's Catmull-Clark is exactly linear subdivision?",
+  }
+  say("Linear subdivision gives " .. counts(linear) .. ", every vertex where phase 2 put it. Now write it: open "
+    .. "**scripts/student/catmull_clark.lua**. It gives the rules as they read in the refined mesh (an edge vertex "
+    .. "goes to the mean of its four neighbours, an old vertex to (F + 2R + (n - 3) P) / n with R the mean of its "
+    .. "neighbours). The lesson runs your `catmull_clark_level` on a copy of this cube each time you save the file "
+    .. "and compares every vertex with the core's level.")
+  your_turn {
+    exercise = "catmull_clark",
+    mesh = cube,
+    hint = "Remember the old ids, call mesh:linear_subdivide(), compute every new position into a table, then move "
+      .. "them all.",
+  }
+  say [[
+Your level is the core's. The **Exercises** tab (**X**, choose **catmull_clark**, **Run mine**) runs it on any
+mesh without triangles that you open (File > Open); try one with a boundary for the boundary rules. From a
+terminal, the exercise's own suite grades it:
+
+    meshedit grade --suite scripts/exercises/catmull_clark.lua --submission scripts/student]]
 end)

@@ -28,6 +28,8 @@ const ApiEntry kHideable[] = {
     {"mesh:split", true, "split", "it is what split_edge does, so write the pointer updates yourself"},
     {"mesh:collapse", true, "collapse", "it is a reference operation that no exercise uses"},
     {"mesh:loop_subdivide", true, "loop_subdivide", "it is what upsample does, so write the five steps yourself"},
+    {"mesh:catmull_clark", true, "catmull_clark",
+     "it is what catmull_clark_level does, so move the vertices yourself after mesh:linear_subdivide()"},
     {"meshedit.curve", false, "curve",
      "it evaluates curves for you; evaluate_step and evaluate are yours to write with vec3 arithmetic"},
     {"meshedit.patch", false, "patch", "it evaluates patches for you; evaluate is yours to write with vec3 arithmetic"},

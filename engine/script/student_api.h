@@ -7,9 +7,10 @@
 //   meshedit.load_patches and mesh:save (besides what LuaRuntime's sandbox leaves out: io, os.execute, require,
 //   debug, bytecode, string.dump).
 // - Hidden unless allowed: the operations that are exercises or their references, mesh:flip, mesh:split,
-//   mesh:collapse, mesh:loop_subdivide, meshedit.curve and meshedit.patch (hideable_api_names()). The window
-//   allows what exercise_api(exercise) lists for the exercise it runs; a grading test allows what its suite lists
-//   (allow_api). The shipped suites list the same as exercise_api (tests/grade/student_api_test.cpp).
+//   mesh:collapse, mesh:loop_subdivide, mesh:catmull_clark, meshedit.curve and meshedit.patch
+//   (hideable_api_names()). The window allows what exercise_api(exercise) lists for the exercise it runs; a grading
+//   test allows what its suite lists (allow_api). The shipped suites list the same as exercise_api
+//   (tests/grade/student_api_test.cpp).
 // - A hidden or removed entry is not nil but a function that raises hidden_api_message(name), with the caller's
 //   "file.lua:LINE: " in front: the same words whichever state runs the code.
 // - set_student_api may be called again on the same state (the window runs several exercises on one loaded file):
@@ -36,7 +37,8 @@ struct lua_State;
 
 namespace meshedit {
 
-// "mesh:flip", "mesh:split", "mesh:collapse", "mesh:loop_subdivide", "meshedit.curve", "meshedit.patch".
+// "mesh:flip", "mesh:split", "mesh:collapse", "mesh:loop_subdivide", "mesh:catmull_clark", "meshedit.curve",
+// "meshedit.patch".
 const std::vector<std::string>& hideable_api_names();
 bool is_hideable_api(const std::string& name);
 

@@ -65,6 +65,47 @@ TEST(ScriptedExerciseGrading, ABuggySubmissionIsToldWhatTheWindowSays) {
       << report.tests[2].output;
 }
 
+// The Catmull-Clark exercise (scripts/exercises/catmull_clark.lua): the correct level scores every point, the one
+// that moves vertices as it computes them is told so in the window's words, a mesh with triangles is refused (the
+// solution changes nothing), and the core's level is hidden from the student's code.
+TEST(ScriptedExerciseGrading, CatmullClarkSolutionScoresAndMovingInPlaceIsNamed) {
+  const fs::path cc = testing::source_dir() / "scripts" / "exercises" / "catmull_clark.lua";
+  auto suite = Suite::load(cc);
+  const std::string correct = read_text(testing::source_dir() / "tests" / "script" / "solutions" / "catmull_clark.lua");
+  const GradeReport right =
+      grade(*suite, testing::submission_of({{"catmull_clark.lua", correct}}), testing::quick_options());
+  ASSERT_EQ(right.tests.size(), 3u);
+  EXPECT_EQ(right.failed(), 0u) << right.tests[0].output << right.tests[1].output << right.tests[2].output;
+  EXPECT_EQ(right.score, 5.0);
+
+  const fs::path buggy = testing::grading_dir() / "scripted" / "catmull_clark_moves_in_place.lua";
+  const GradeReport wrong =
+      grade(*suite, testing::submission_of({{"catmull_clark.lua", read_text(buggy)}}), testing::quick_options());
+  EXPECT_EQ(wrong.score, 1.0) << "only the refused pyramid passes";
+  const std::optional<Exercise> id = find_exercise("catmull_clark");
+  ASSERT_TRUE(id.has_value());
+  const ScriptedFixture& cube = scripted_exercise(*id)->fixtures()[0];
+  const fs::path dir = testing::scratch_dir();
+  fs::copy_file(buggy, dir / "catmull_clark.lua");
+  auto code = load_student_file(dir / "catmull_clark.lua");
+  const ExerciseReport window = check_exercise(*code, *id, ExerciseInput::whole_mesh(cube.mesh));
+  ASSERT_FALSE(window.differences.empty());
+  EXPECT_EQ(window.differences[0].rfind("your vertices read neighbours you had already moved", 0), 0u)
+      << window.differences[0];
+  EXPECT_NE(wrong.tests[0].output.find("FAILED: a cube of six quads: " + window.differences[0]), std::string::npos)
+      << wrong.tests[0].output;
+
+  const GradeReport cheat = grade(*suite,
+                                  testing::submission_of({{"catmull_clark.lua",
+                                                           "function catmull_clark_level(mesh)\n"
+                                                           "  return mesh:catmull_clark()\nend\n"}}),
+                                  testing::quick_options());
+  EXPECT_EQ(cheat.score, 0.0);
+  EXPECT_NE(cheat.tests[0].output.find("catmull_clark.lua:2: mesh:catmull_clark is hidden from your code"),
+            std::string::npos)
+      << cheat.tests[0].output;
+}
+
 TEST(ScriptedExerciseGrading, TheCommandLineGradesTheDefinitionFile) {
   if (!fs::exists(MESHEDIT_BINARY)) GTEST_SKIP() << "meshedit not built";
   const fs::path dir = testing::scratch_dir();

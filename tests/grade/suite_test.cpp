@@ -94,7 +94,7 @@ TEST(Suite, DeclarationErrorsNameTheLine) {
             "upsample, vertex_normal, evaluate_step, evaluate)");
   EXPECT_EQ(load_error("suite{ allow_api = {'mesh:save'} }"),
             "the suite did not load: suite.lua:1: allow_api: unknown entry 'mesh:save' (there are: mesh:flip, "
-            "mesh:split, mesh:collapse, mesh:loop_subdivide, meshedit.curve, meshedit.patch)");
+            "mesh:split, mesh:collapse, mesh:loop_subdivide, mesh:catmull_clark, meshedit.curve, meshedit.patch)");
   EXPECT_EQ(load_error("test{ name = 't', time_limit = 0, run = function() end }"),
             "the suite did not load: suite.lua:1: field 'time_limit' must be between 0.01 and 600.0");
   EXPECT_EQ(load_error("suite{ name = 'empty' }"), "the suite suite.lua declares no test");

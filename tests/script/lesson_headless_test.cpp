@@ -16,6 +16,7 @@
 #include "core/value_format.h"
 #include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
+#include "script/scripted_exercise.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -74,6 +75,7 @@ end)
 // that only shows (its Continue pressed by the run itself) has none.
 TEST(LessonHeadless, EveryLessonWaitsForTheStudentInTwoThirdsOfItsSteps) {
   const auto source = testing::source_dir();
+  ASSERT_EQ(load_exercise_folder(source / "scripts" / "exercises"), std::vector<std::string>{});  // as the CLI does
   size_t lessons = 0;
   for (const auto& entry : std::filesystem::directory_iterator(source / "lessons")) {
     if (entry.path().extension() != ".lua") continue;

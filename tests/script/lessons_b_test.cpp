@@ -46,6 +46,7 @@
 #include "script/headless_host.h"
 #include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
+#include "script/scripted_exercise.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -60,8 +61,10 @@ std::filesystem::path lesson_path(const std::string& name) {
 }
 
 // Runs lessons/NAME.lua headless with tests/script/lessons/NAME_answers.lua and the correct solutions as the student's
-// folder (your_turn); expects every step to pass with every answer awaited and used. Returns the transcript.
+// folder (your_turn) and the exercises of scripts/exercises registered, as `meshedit lesson` registers them; expects
+// every step to pass with every answer awaited and used. Returns the transcript.
 std::string run_headless(const std::string& name, size_t steps) {
+  EXPECT_EQ(load_exercise_folder(testing::source_dir() / "scripts" / "exercises"), std::vector<std::string>{});
   std::ostringstream out;
   const auto answers = testing::source_dir() / "tests" / "script" / "lessons" / (name + "_answers.lua");
   const HeadlessOutcome outcome = run_lesson_headless(lesson_path(name), answers, out, LessonRunner::default_limits(),
@@ -502,7 +505,7 @@ EdgeId edge_between(const HalfedgeMesh& mesh, VertexId a, VertexId b) {
 // back from mesh:catmull_clark() by the documented id layout), and every count, the linear mesh and the three
 // levels are the core's too.
 TEST(LessonsB, CatmullClarkPassesHeadlessWithTheCoresPoints) {
-  const std::string text = run_headless("7_catmull_clark", 8);
+  const std::string text = run_headless("7_catmull_clark", 9);
   const HalfedgeMesh cube = build_halfedge_mesh(make_cube_quads());
   const OpResult<CatmullClarkState> state = catmull_clark_compute_points(cube);
   ASSERT_TRUE(state.ok());

@@ -214,7 +214,7 @@ TEST(ScriptedExercise, ABrokenDefinitionIsNamedAtItsLine) {
             "reference, diagnose, hint, fixtures)");
   EXPECT_EQ(load_error(head + reference + "  takes = \"edge\", allow = { \"mesh:fly\" } }\n"),
             "bad.lua:1: exercise: allow[1] must be one of mesh:flip, mesh:split, mesh:collapse, mesh:loop_subdivide, "
-            "meshedit.curve, meshedit.patch, got 'mesh:fly'");
+            "mesh:catmull_clark, meshedit.curve, meshedit.patch, got 'mesh:fly'");
   EXPECT_EQ(load_error(head + reference +
                        "  takes = \"edge\",\n  fixtures = { { mesh = meshedit.cube(), "
                        "element = \"v0\" } } }\n"),

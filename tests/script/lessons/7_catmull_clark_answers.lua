@@ -36,6 +36,9 @@ return {
     {choose = "Itself and its two neighbours along the boundary"},
     {answer = {0, 0}, feedback = "moves too"}, {answer = {0.25, 0.25}, feedback = "1/8"},
     {answer = "0.125, 0.125"} },
+  ["Your own Catmull-Clark"] = {
+    {choose = "Move the old vertices first, then subdivide", feedback = "read the mesh before anything moves"},
+    {choose = "Linear subdivision first, then move every vertex"}, {your_turn = "right"} },
   ["Linear subdivision beside it"] = { {choose = "4/9 of the way to the centre", feedback = "vertex point"},
     {choose = "At a face centroid", feedback = "new vertices"}, {choose = "Where it was"} },
 }
