@@ -348,7 +348,8 @@ step("Your turn", function()
 Open `scripts/student/normals.lua` and write `vertex_normal(v)`: walk around `v` with `h = h.twin.next`,
 add the cross products of the faces you meet (skip boundary halfedges, which have no face) and return the sum
 normalized. The lesson runs it on the fan's vertex **v** each time you save the file and compares it with the
-reference's area-weighted normal: the plain average of unit normals is named as such, and a Lua error shows its
+reference's area-weighted normal: the plain average of unit normals, a face left out or counted alone, a cross
+product taken the wrong way round are named as such, with the faces they concern, and a Lua error shows its
 `normals.lua:LINE`.]]
   your_turn {
     exercise = "normals",

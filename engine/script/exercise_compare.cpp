@@ -1,9 +1,9 @@
 // compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake before the
 // raw differences (the students' real mistakes: a step that drops the last point or swaps the weights, u and v
-// swapped, unweighted normals, forgotten halfedge pointers, a next pointer left as it was that breaks a face cycle,
-// a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong weights or misplaced positions in
-// Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
-// so a failure there reads like the window.
+// swapped, a normal made of the wrong faces, weights or orientation, forgotten halfedge pointers, a next pointer left
+// as it was that breaks a face cycle, a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong
+// weights or misplaced positions in Loop subdivision, a loop that never ends). The grader checks through this same
+// code (grade/exercise_expectation.h), so a failure there reads like the window.
 //
 // Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
 // input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
@@ -12,7 +12,8 @@
 // Map of this file (each part starts at its `// ---- name` banner):
 //   messages                       Messages (the capped list a verdict fills), bitwise_equal, close
 //   curve step                     compare_curve: a dropped last point, swapped weights
-//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (unweighted normals)
+//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (what a wrong normal is made of:
+//                                  normal_diagnosis.h)
 //   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
 //   flip                           compare_flip
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
@@ -31,11 +32,11 @@
 
 #include "core/history.h"
 #include "core/mesh_compare.h"
-#include "core/normals.h"
 #include "core/value_format.h"
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
+#include "script/normal_diagnosis.h"
 #include "script/scripted_exercise.h"
 #include "script/upsample_runaway.h"
 
@@ -149,49 +150,14 @@ void compare_patch(const ExerciseInput& input, ExerciseReport& report, Messages&
   }
 }
 
-// The unit normal if each face counted once, whatever its area; and the area-weighted one counting boundary
-// loops as faces (two plausible wrong answers).
-glm::dvec3 unweighted_normal(const HalfedgeMesh& mesh, VertexId v, bool with_loops_weighted, bool& ok) {
-  glm::dvec3 sum(0.0);
-  ok = mesh.for_each_outgoing(v, [&](HalfedgeId h) {
-    const FaceId f = mesh.face(h);
-    if (!mesh.alive(f)) return;
-    if (with_loops_weighted) {
-      sum += 2.0 * face_area(mesh, f) * face_normal(mesh, f);
-    } else if (!f.is_boundary()) {
-      sum += face_normal(mesh, f);
-    }
-  });
-  const double length = glm::length(sum);
-  return length > 0.0 ? sum / length : sum;
-}
-
+// A wrong normal is explained by what it is made of (normal_diagnosis.h); the mesh must not change.
 void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const glm::dvec3 got = report.mine.points[0];
   const glm::dvec3 want = report.reference.points[0];
-  constexpr double kTolerance = 1e-9;
   const HalfedgeMesh& mesh = *input.mesh;
-  const VertexId v(input.element.index);
   const double d = glm::distance(got, want);
-  if (!(d <= kTolerance)) {
-    const double length = glm::length(got);
-    bool ok = false;
-    if (std::abs(length - 1.0) > 1e-6 && length > 0.0 && close(got / length, want, 1e-6)) {
-      out.add("your normal " + pos(got) + " points the right way but has length " + format_number(length) +
-              "; normalise it (n:normalized())");
-    } else if (close(got, -want, kTolerance)) {
-      out.add("your normal " + pos(got) + " points inwards (the reference's is " + pos(want) +
-              "): take the cross product of the edges in the face's order, (p1 - p0):cross(p2 - p0)");
-    } else if (const glm::dvec3 unit = unweighted_normal(mesh, v, false, ok);
-               ok && close(got, unit, 1e-9) && !close(unit, want, 1e-9)) {
-      out.add("your normal " + pos(got) + " is the average of the faces' unit normals; the reference " + pos(want) +
-              " weights each face by its area: add the cross products themselves, then normalise");
-    } else if (const glm::dvec3 loops = unweighted_normal(mesh, v, true, ok);
-               ok && mesh.is_boundary(v) && close(got, loops, 1e-9)) {
-      out.add("your normal " + pos(got) + " counts the boundary loop as a face; skip faces with f:is_boundary()");
-    } else {
-      out.add("your normal " + pos(got) + " differs from the reference's " + pos(want) + " by " + format_number(d));
-    }
+  if (std::string wrong = explain_vertex_normal(mesh, VertexId(input.element.index), got, want); !wrong.empty()) {
+    out.add(std::move(wrong));
   }
   if (report.mine.mesh && !report.mine.mesh->same_as(mesh)) {
     const std::vector<FieldChange> changes = diff(mesh, *report.mine.mesh);

@@ -165,6 +165,12 @@ const std::vector<BuggyCase>& buggy_cases() {
       {"curve_swapped_weights", {"the weights are swapped"}},
       {"patch_columns_first", {"u and v are swapped"}},
       {"normals_unit_average", {"is the average of the faces' unit normals; the reference"}},
+      // The lesson's fan is regular in its angles: angle weights and unit normals give the same normal there.
+      {"normals_angle_weighted",
+       {"on this mesh that is also the normalised sum of the unit normals of the 6 faces around v0, each weighted by "
+        "its face's angle at v0"}},
+      {"normals_last_face_only", {"is the normal of f1 alone, one of the 6 faces around v0"}},
+      {"normals_skips_a_face", {"leaves out f1, one of the 6 faces around v0; the reference"}},
       // The diamond's middle edge is flipped right; the boundary edge a-c must be left alone.
       {"flip_boundary", {"right", "the reference does not flip e2 (e2 is on the boundary"}},
       {"flip_breaks_face_cycle",
