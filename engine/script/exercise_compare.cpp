@@ -17,7 +17,8 @@
 //   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
 //   flip                           compare_flip
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
-//   upsample                       diagnose_upsample and its diagnoses, compare_upsample
+//   upsample                       diagnose_upsample and its diagnoses (flips: loop_flip_diagnosis.h),
+//                                  compare_upsample
 //   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
 //   runs that failed               add_run_failure: an error or a limit, with its hint
 //   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
@@ -35,6 +36,7 @@
 #include "core/value_format.h"
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
+#include "script/loop_flip_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
 #include "script/normal_diagnosis.h"
 #include "script/scripted_exercise.h"
@@ -456,47 +458,6 @@ void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Me
   }
 }
 
-// With every vertex matched, the edges yours has and the reference does not, by the age of their ends: each kind is
-// a different wrong flip.
-void diagnose_extra_edges(const HalfedgeMesh& before, const HalfedgeMesh& mine, const MeshComparison& c,
-                          Messages& out) {
-  if (!c.unmatched_vertices.empty() || !c.unmatched_reference.empty() || c.extra_edges.empty()) return;
-  enum Ends { kOldAndNew, kBothOld, kBothNew, kEndsKinds };
-  const uint32_t old_capacity = before.vertex_capacity();
-  size_t count[kEndsKinds] = {};
-  EdgeId example[kEndsKinds];
-  for (EdgeId e : c.extra_edges) {
-    const HalfedgeId h = mine.halfedge(e);
-    if (!mine.alive(h) || !mine.alive(mine.twin(h))) continue;
-    const uint32_t x = mine.vertex(h).index, y = mine.vertex(mine.twin(h)).index;
-    if (x >= c.vertex_map.size() || y >= c.vertex_map.size()) continue;
-    const bool x_old = c.vertex_map[x].index < old_capacity, y_old = c.vertex_map[y].index < old_capacity;
-    const Ends kind = x_old && y_old ? kBothOld : (!x_old && !y_old ? kBothNew : kOldAndNew);
-    if (count[kind]++ == 0) example[kind] = e;
-  }
-  const auto ends = [&](EdgeId e) {
-    const HalfedgeId h = mine.halfedge(e);
-    return format_id(e) + " (" + format_id(mine.vertex(h)) + " " + format_id(mine.vertex(mine.twin(h))) + ")";
-  };
-  if (count[kBothOld] > 0) {
-    out.add(std::to_string(count[kBothOld]) + " of your edges join two original vertices, e.g. " +
-            ends(example[kBothOld]) +
-            ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end "
-            "(check both ends)");
-  }
-  if (count[kBothNew] > 0) {
-    const std::string what = " of your edges join two new vertices where the reference has none, e.g. ";
-    out.add(std::to_string(count[kBothNew]) + what + ends(example[kBothNew]) +
-            ": an edge that was not new (a half of a split edge) was flipped");
-  }
-  if (count[kOldAndNew] > 0) {
-    const std::string what = " of your edges join an original and a new vertex where the reference has none, e.g. ";
-    out.add(std::to_string(count[kOldAndNew]) + what + ends(example[kOldAndNew]) +
-            ": every new edge (one that cuts across an old face) that joins an old and a new vertex must be flipped, "
-            "once");
-  }
-}
-
 // Likely mistakes, from where your vertices are and which edges you have that the reference does not.
 void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
                        double tolerance, Messages& out) {
@@ -509,7 +470,7 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
   for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
   for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
   diagnose_coinciding_vertices(mine, at_origin, out);
-  diagnose_extra_edges(before, mine, c, out);
+  for (std::string& m : diagnose_loop_flips(before, mine, reference, c)) out.add(std::move(m));
 }
 
 void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {

@@ -98,6 +98,13 @@ const std::vector<Case>& cases() {
        "an edge that was not new (a half of a split edge) was flipped"},
       {"upsample_integer_division.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "4 of the 4 original vertices kept their old positions"},
+      {"upsample_marks_by_handle.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
+       "your upsample flipped none of the 4 new edges the reference flips: 4 of your edges still join an original "
+       "and a new vertex"},
+      {"upsample_one_way_test.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
+       "the old/new test accepts one order only (a old and b new, but not a new and b old"},
+      {"upsample_flags_halves.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
+       "your upsample flipped 1 of the 4 new edges the reference flips", 1},
       {"upsample_splits_new_edges.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "upsample did not finish: split only the edges of the original mesh", 1},
       {"upsample_wrong_vertices.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },

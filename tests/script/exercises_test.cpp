@@ -16,8 +16,8 @@
 //   buggy variants: flip and split         edge_where; forgotten face and vertex halfedges, a flipped boundary edge,
 //                                          the other rotation, a split vertex in the wrong place or pointing across, a
 //                                          wrong face, boundary edges left unsplit
-//   buggy variants: upsample               wrong flips or none, integer division, positions written to the wrong
-//                                          vertices, splitting that never ends
+//   buggy variants: upsample               wrong flips, none or some (counted, with their causes), integer division,
+//                                          positions written to the wrong vertices, splitting that never ends
 //   loading, errors, output, recording     functions from the returned table or globals, load and run errors, caps, a
 //                                          normal that changes the mesh, print and recorded edits, refusals, bad input
 #include <gtest/gtest.h>
@@ -547,11 +547,53 @@ TEST(Exercises, UpsampleNotFlippingAtAll) {
   const ExerciseReport r = check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_cube())));
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
-  // The cube: 18 edges, 12 faces; each face's cross edge that should have been flipped stays.
+  // The cube: 18 edges, 12 faces; each face's cross edge that should have been flipped stays. Nothing flipped: marks
+  // that never match are the likeliest cause, then the one-way test (flags on the halves would have flipped halves).
   EXPECT_TRUE(starts_with(r.differences[0],
-                          "12 of your edges join an original and a new vertex where the reference "
-                          "has none, e.g. e"))
+                          "your upsample flipped none of the 12 new edges the reference flips: 12 of your edges "
+                          "still join an original and a new vertex across an old face, e.g. e"))
       << text_of(r);
+  const std::string& d = r.differences[0];
+  const size_t marks = d.find(
+                   "The usual causes, most likely first: the marks never match (a table keyed by the "
+                   "handle"),
+               one_way = d.find("; the old/new test accepts one order only"),
+               flags = d.find("; or the flags were set on the wrong edges");
+  EXPECT_NE(marks, std::string::npos) << d;
+  EXPECT_LT(marks, one_way) << d;
+  EXPECT_NE(flags, std::string::npos) << d;
+  EXPECT_LT(one_way, flags) << d;
+}
+
+TEST(Exercises, UpsampleMarkingNewEdgesByHandle) {
+  // A table keyed by the handle: every read of e makes another handle, so new_edge[e] never finds the mark.
+  auto code = variant(Exercise::Upsample, {{"new_edge[h.edge.id] = true", "new_edge[h.edge] = true"},
+                                           {"if new_edge[e.id] then", "if new_edge[e] then"}});
+  const ExerciseReport r =
+      check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
+  EXPECT_FALSE(r.equal);
+  ASSERT_FALSE(r.differences.empty());
+  EXPECT_TRUE(starts_with(r.differences[0],
+                          "your upsample flipped none of the 20 new edges the reference flips: 20 "
+                          "of your edges still join an original and a new vertex"))
+      << text_of(r);
+  EXPECT_NE(r.differences[0].find("key them by e.id and m.id"), std::string::npos) << text_of(r);
+}
+
+TEST(Exercises, UpsampleFlippingOnlySomeNewEdges) {
+  // Half the flips made: counted from the connectivity, with the one-way test as the likeliest cause.
+  auto code = variant(Exercise::Upsample, {{"if new_edge[e.id] then", "if new_edge[e.id] and e.id % 2 == 0 then"}});
+  const ExerciseReport r = check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_cube())));
+  EXPECT_FALSE(r.equal);
+  ASSERT_FALSE(r.differences.empty());
+  const std::string& d = r.differences[0];
+  EXPECT_TRUE(starts_with(d, "your upsample flipped ")) << text_of(r);
+  EXPECT_EQ(d.find("your upsample flipped none"), std::string::npos) << d;
+  EXPECT_NE(d.find(" of the 12 new edges the reference flips: "), std::string::npos) << d;
+  EXPECT_NE(d.find("The usual causes, most likely first: the old/new test accepts one order only (a old and b new, "
+                   "but not a new and b old"),
+            std::string::npos)
+      << d;
 }
 
 TEST(Exercises, UpsampleWithIntegerDivision) {

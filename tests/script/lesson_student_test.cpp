@@ -183,7 +183,12 @@ const std::vector<BuggyCase>& buggy_cases() {
       // Upsample runs on the cube, then on the tetrahedron (every vertex of degree 3).
       {"upsample_flip_one_check", {"a new edge whose ends were both new was flipped"}},
       {"upsample_flips_split_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
+      {"upsample_flags_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
       {"upsample_integer_division", {"8 of the 8 original vertices kept their old positions"}},
+      {"upsample_marks_by_handle",
+       {"your upsample flipped none of the 12 new edges the reference flips: 12 of your edges still join an original "
+        "and a new vertex"}},
+      {"upsample_one_way_test", {"the old/new test accepts one order only (a old and b new, but not a new and b old"}},
       {"upsample_splits_new_edges", {"upsample did not finish: split only the edges of the original mesh"}},
       {"upsample_wrong_vertices", {"a position computed for a new vertex (step 2) was written to an original one"}},
       {"upsample_wrong_weight", {"right", "moved as if u = 0.125"}},
