@@ -17,8 +17,8 @@
 //   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
 //   flip                           compare_flip
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
-//   upsample                       diagnose_upsample and its diagnoses (flips: loop_flip_diagnosis.h),
-//                                  compare_upsample
+//   upsample                       diagnose_upsample and its diagnoses (zero weights first:
+//                                  loop_zero_weight_diagnosis.h; flips: loop_flip_diagnosis.h), compare_upsample
 //   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
 //   runs that failed               add_run_failure: an error or a limit, with its hint
 //   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
@@ -38,6 +38,7 @@
 #include "script/loop_boundary_diagnosis.h"
 #include "script/loop_flip_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
+#include "script/loop_zero_weight_diagnosis.h"
 #include "script/normal_diagnosis.h"
 #include "script/scripted_exercise.h"
 #include "script/upsample_runaway.h"
@@ -410,14 +411,15 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
 
 // ---- upsample ---------------------------------------------------------------------------------------------
 
-// Zero weights put vertices at the origin. Returns how many of yours are there.
-size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, Messages& out) {
+// Zero weights put vertices at the origin. Returns how many of yours are there; says so when `tell`.
+size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, bool tell,
+                             Messages& out) {
   size_t at_origin = 0, reference_at_origin = 0;
   for (VertexId v : mine.vertices()) at_origin += close(mine.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   for (VertexId v : reference.vertices()) {
     reference_at_origin += close(reference.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   }
-  if (at_origin >= 2 && at_origin > reference_at_origin) {
+  if (tell && at_origin >= 2 && at_origin > reference_at_origin) {
     out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
             "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
   }
@@ -464,10 +466,15 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
   const HalfedgeMesh& reference = *report.reference.mesh;
-  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, out);
-  diagnose_unmoved_originals(before, mine, reference, tolerance, out);
+  // A weight integer division made 0 is told first, before a later step is blamed for what it did.
+  const ZeroLoopWeights zero = diagnose_zero_loop_weights(before, mine, tolerance);
+  for (const std::string& m : zero.messages) out.add(m);
+  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, !zero.origin_told, out);
+  if (!zero.originals_unmoved) diagnose_unmoved_originals(before, mine, reference, tolerance, out);
   // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
-  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance, zero.origin_told)) {
+    out.add(std::move(m));
+  }
   for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
   diagnose_coinciding_vertices(mine, at_origin, out);
   for (std::string& m : diagnose_loop_flips(before, mine, reference, c)) out.add(std::move(m));

@@ -97,7 +97,12 @@ const std::vector<Case>& cases() {
       {"upsample_flips_split_halves.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "an edge that was not new (a half of a split edge) was flipped"},
       {"upsample_integer_division.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
-       "4 of the 4 original vertices kept their old positions"},
+       "your weight u is 0 for degree 3 (in Lua 3 // 16 is 0, an integer division: write 3 / 16): 4 of the 4 "
+       "original vertices kept their old positions"},
+      {"upsample_integer_edge_weights.lua", "6.1",
+       [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
+       "your edge weights 3/8 and 1/8 are 0 (in Lua 3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and "
+       "1 / 8)"},
       {"upsample_marks_by_handle.lua", "6.1", [] { return ExerciseInput::whole_mesh(mesh_of(make_tetrahedron())); },
        "your upsample flipped none of the 4 new edges the reference flips: 4 of your edges still join an original "
        "and a new vertex"},

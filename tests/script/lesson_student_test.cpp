@@ -184,7 +184,12 @@ const std::vector<BuggyCase>& buggy_cases() {
       {"upsample_flip_one_check", {"a new edge whose ends were both new was flipped"}},
       {"upsample_flips_split_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
       {"upsample_flags_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
-      {"upsample_integer_division", {"8 of the 8 original vertices kept their old positions"}},
+      {"upsample_integer_division",
+       {"your weight u is 0 for degrees other than 3 (in Lua 3 // (8 * n) is 0, an integer division: write "
+        "3 / (8 * n)): 8 of the 8 original vertices kept their old positions"}},
+      {"upsample_integer_edge_weights",
+       {"your edge weights 3/8 and 1/8 are 0 (in Lua 3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and "
+        "1 / 8)"}},
       {"upsample_marks_by_handle",
        {"your upsample flipped none of the 12 new edges the reference flips: 12 of your edges still join an original "
         "and a new vertex"}},
