@@ -2,8 +2,8 @@
 -- neighbours without reading every face, around a vertex with h.twin.next, along a boundary loop), then
 -- area-weighted vertex normals (on a fan where the weighting changes the answer) and flat vs smooth shading.
 -- Each step asks or has the student act before it tells: the student clicks h.next or h.twin.next, counts, walks
--- a boundary loop, predicts the normal or switches the shading, and every wrong answer is told what it is. Every walk is done on the mesh on screen and every highlight and
--- label marks the element the walk reached, so what the student sees is what the pointers say. The last step
+-- a boundary loop, predicts the normal or switches the shading, and every wrong answer is told what it is. Every
+-- walk is done on the mesh on screen and every highlight and label marks the element the walk reached, so what the student sees is what the pointers say. The last step
 -- runs the student's own vertex_normal (your_turn) on the fan. CI runs it headless:
 --   meshedit lesson lessons/3_halfedge_walks.lua --headless \
 --     --answers tests/script/lessons/3_halfedge_walks_answers.lua --student tests/script/solutions
@@ -155,7 +155,8 @@ every mesh operation asks: which vertices are the **neighbours of ]] .. tostring
   say("All 12: a face list answers in time that grows with the **whole mesh**, and a mesh operation asks this for "
     .. "every vertex it touches. A half-edge mesh stores, with each element, the pointers to its neighbours: from "
     .. "`v.halfedge` the walk `h = h.twin.next` reaches the " .. count .. " halfedges leaving " .. tostring(v)
-    .. " (sky blue), one per neighbour, and nothing else: time that grows with its degree only. The next step walks it.")
+    .. " (sky blue), one per neighbour, and nothing else: time that grows with its degree only. The next step walks "
+    .. "it.")
 end)
 
 step("Around a vertex", function()
@@ -347,9 +348,10 @@ step("Your turn", function()
 
 Open `scripts/student/normals.lua` and write `vertex_normal(v)`: walk around `v` with `h = h.twin.next`,
 add the cross products of the faces you meet (skip boundary halfedges: their `h.face` is a boundary loop,
-`h.face:is_boundary()`, not a face) and return the sum normalized. The lesson runs it on the fan's vertex **v** each time you save the file and compares it with the
-reference's area-weighted normal: the plain average of unit normals is named as such, and a Lua error shows its
-`normals.lua:LINE`.]]
+`h.face:is_boundary()`, not a face) and return the sum normalized. The lesson runs it on the fan's vertex **v**
+each time you save the file and compares it with the reference's area-weighted normal: the plain average of unit
+normals, a face left out or counted alone, a cross product taken the wrong way round are named as such, with the
+faces they concern, and a Lua error shows its `normals.lua:LINE`.]]
   your_turn {
     exercise = "normals",
     mesh = mesh,

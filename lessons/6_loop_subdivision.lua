@@ -744,11 +744,12 @@ step("Your own upsample", function()
     hint = "Think back to the edges you could click in phase 3 that were not the answer.",
   }
   say [[
-Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same work in five steps (its steps 1 and 2 are phase 1 here), with the flags
-(is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra credit. The lesson runs your `upsample` on a
-copy of this cube each time you save the file and compares the result with the reference's: it names the
-vertices that moved to the wrong place, the weight they moved with, and the edges flipped wrongly. An upsample
-that never ends is stopped, at the line it was running.]]
+Now write it: open **scripts/student/upsample.lua** in your editor. It lists the same work in five steps (its
+steps 1 and 2 are phase 1 here), with the flags (is_new[v.id], is_new_edge[e.id]) and the boundary rules as extra
+credit. The lesson runs your `upsample` on a copy of this cube each time you save the file and compares the
+result with the reference's: it names the vertices that moved to the wrong place, the weight they moved with (a
+weight like 3 // 16 is 0 in Lua), the edges flipped wrongly, and how many of the new edges you flipped against how
+many the reference flips. An upsample that never ends is stopped, at the line it was running.]]
   your_turn {
     exercise = "upsample",
     mesh = cube,

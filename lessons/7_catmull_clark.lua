@@ -4,8 +4,8 @@
 -- linear subdivision differs (nothing moves), and the student's own level (scripts/exercises/catmull_clark.lua:
 -- linear subdivision, then the rules; run by your_turn on the cube). Every step asks before it tells: where the
 -- face point goes, which points the edge point averages and which way a corner moves come before each rule; each
--- likely wrong answer is named in its feedback. Every number the lesson prints comes from the core: mesh:catmull_clark() and
--- mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
+-- likely wrong answer is named in its feedback. Every number the lesson prints comes from the core:
+-- mesh:catmull_clark() and mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
 -- runs the window's Subdivide menu twice: the whole level, and then its three phases one at a time, each checked
 -- against the lesson's own phases.
 -- CI runs it headless (tests/script/lessons_b_test.cpp):
@@ -572,7 +572,8 @@ step("Linear subdivision beside it", function()
     .. "its face's centroid.")
   local ratio = smooth:vertex(0).position:length() / cube:vertex(0).position:length()
   local right = "Where it was"
-  local options = { right, (fraction(1 - ratio) or num(1 - ratio)) .. " of the way to the centre", "At a face centroid" }
+  local travelled = fraction(1 - ratio) or num(1 - ratio)
+  local options = { right, travelled .. " of the way to the centre", "At a face centroid" }
   choose {
     "After one level of linear subdivision, where is the corner v0?",
     options = options,

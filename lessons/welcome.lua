@@ -75,8 +75,8 @@ vertex's own halfedge, then its next.)]]
   wait_for { key = "N", hint = "Press N to walk to the next halfedge" }
   say [[
 Press **N** two more times: the cube's faces are triangles, so three presses bring you back to the halfedge
-you started from (from a vertex: its own halfedge). Then press **T** to jump to the *twin*, into the neighbouring face. **V**, **E** and **H**
-take you to the vertex, the edge and back to a halfedge. This walking is exactly what your code will do.]]
+you started from (from a vertex: its own halfedge). Then press **T** to jump to the *twin*, into the
+neighbouring face. **V**, **E** and **H** take you to the vertex, the edge and back to a halfedge. This walking is exactly what your code will do.]]
 end)
 
 -- The two vertices edge `id` of `mesh` joins, as "v1 and v2".
@@ -108,8 +108,8 @@ Every change can be undone with **Ctrl+Z** (and redone with **Ctrl+Y**). The key
 - **L** runs one step of Loop subdivision; **Shift+L** runs it one phase at a time
 - **C** collapses the selected edge into a single vertex]]
   say [[
-The pointer tables in the right column (the **Pointers** tab) show every `next`, `twin`, `vertex`, `edge` and `face`: after an
-edit, the cells that changed are highlighted. Press **F1** any time for the list of keys.]]
+The pointer tables in the right column (the **Pointers** tab) show every `next`, `twin`, `vertex`, `edge` and
+`face`: after an edit, the cells that changed are highlighted. Press **F1** any time for the list of keys.]]
   say [[
 That is all you need. Open the lesson list to start with **de Casteljau's algorithm**.]]
 end)

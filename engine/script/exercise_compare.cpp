@@ -1,9 +1,9 @@
 // compare() for the six exercises (exercises.h): the verdict, and diagnoses that name the likely mistake before the
 // raw differences (the students' real mistakes: a step that drops the last point or swaps the weights, u and v
-// swapped, unweighted normals, forgotten halfedge pointers, a next pointer left as it was that breaks a face cycle,
-// a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong weights or misplaced positions in
-// Loop subdivision, a loop that never ends). The grader checks through this same code (grade/exercise_expectation.h),
-// so a failure there reads like the window.
+// swapped, a normal made of the wrong faces, weights or orientation, forgotten halfedge pointers, a next pointer left
+// as it was that breaks a face cycle, a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong
+// weights or misplaced positions in Loop subdivision, a loop that never ends). The grader checks through this same
+// code (grade/exercise_expectation.h), so a failure there reads like the window.
 //
 // Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
 // input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
@@ -12,11 +12,13 @@
 // Map of this file (each part starts at its `// ---- name` banner):
 //   messages                       Messages (the capped list a verdict fills), bitwise_equal, close
 //   curve step                     compare_curve: a dropped last point, swapped weights
-//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (unweighted normals)
+//   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (what a wrong normal is made of:
+//                                  normal_diagnosis.h)
 //   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
 //   flip                           compare_flip
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
-//   upsample                       diagnose_upsample and its diagnoses, compare_upsample
+//   upsample                       diagnose_upsample and its diagnoses (zero weights first:
+//                                  loop_zero_weight_diagnosis.h; flips: loop_flip_diagnosis.h), compare_upsample
 //   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
 //   runs that failed               add_run_failure: an error or a limit, with its hint
 //   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
@@ -31,11 +33,13 @@
 
 #include "core/history.h"
 #include "core/mesh_compare.h"
-#include "core/normals.h"
 #include "core/value_format.h"
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
+#include "script/loop_flip_diagnosis.h"
 #include "script/loop_position_diagnosis.h"
+#include "script/loop_zero_weight_diagnosis.h"
+#include "script/normal_diagnosis.h"
 #include "script/scripted_exercise.h"
 #include "script/upsample_runaway.h"
 
@@ -149,49 +153,14 @@ void compare_patch(const ExerciseInput& input, ExerciseReport& report, Messages&
   }
 }
 
-// The unit normal if each face counted once, whatever its area; and the area-weighted one counting boundary
-// loops as faces (two plausible wrong answers).
-glm::dvec3 unweighted_normal(const HalfedgeMesh& mesh, VertexId v, bool with_loops_weighted, bool& ok) {
-  glm::dvec3 sum(0.0);
-  ok = mesh.for_each_outgoing(v, [&](HalfedgeId h) {
-    const FaceId f = mesh.face(h);
-    if (!mesh.alive(f)) return;
-    if (with_loops_weighted) {
-      sum += 2.0 * face_area(mesh, f) * face_normal(mesh, f);
-    } else if (!f.is_boundary()) {
-      sum += face_normal(mesh, f);
-    }
-  });
-  const double length = glm::length(sum);
-  return length > 0.0 ? sum / length : sum;
-}
-
+// A wrong normal is explained by what it is made of (normal_diagnosis.h); the mesh must not change.
 void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const glm::dvec3 got = report.mine.points[0];
   const glm::dvec3 want = report.reference.points[0];
-  constexpr double kTolerance = 1e-9;
   const HalfedgeMesh& mesh = *input.mesh;
-  const VertexId v(input.element.index);
   const double d = glm::distance(got, want);
-  if (!(d <= kTolerance)) {
-    const double length = glm::length(got);
-    bool ok = false;
-    if (std::abs(length - 1.0) > 1e-6 && length > 0.0 && close(got / length, want, 1e-6)) {
-      out.add("your normal " + pos(got) + " points the right way but has length " + format_number(length) +
-              "; normalise it (n:normalized())");
-    } else if (close(got, -want, kTolerance)) {
-      out.add("your normal " + pos(got) + " points inwards (the reference's is " + pos(want) +
-              "): take the cross product of the edges in the face's order, (p1 - p0):cross(p2 - p0)");
-    } else if (const glm::dvec3 unit = unweighted_normal(mesh, v, false, ok);
-               ok && close(got, unit, 1e-9) && !close(unit, want, 1e-9)) {
-      out.add("your normal " + pos(got) + " is the average of the faces' unit normals; the reference " + pos(want) +
-              " weights each face by its area: add the cross products themselves, then normalise");
-    } else if (const glm::dvec3 loops = unweighted_normal(mesh, v, true, ok);
-               ok && mesh.is_boundary(v) && close(got, loops, 1e-9)) {
-      out.add("your normal " + pos(got) + " counts the boundary loop as a face; skip faces with f:is_boundary()");
-    } else {
-      out.add("your normal " + pos(got) + " differs from the reference's " + pos(want) + " by " + format_number(d));
-    }
+  if (std::string wrong = explain_vertex_normal(mesh, VertexId(input.element.index), got, want); !wrong.empty()) {
+    out.add(std::move(wrong));
   }
   if (report.mine.mesh && !report.mine.mesh->same_as(mesh)) {
     const std::vector<FieldChange> changes = diff(mesh, *report.mine.mesh);
@@ -442,14 +411,15 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
 
 // ---- upsample ---------------------------------------------------------------------------------------------
 
-// Zero weights put vertices at the origin. Returns how many of yours are there.
-size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, Messages& out) {
+// Zero weights put vertices at the origin. Returns how many of yours are there; says so when `tell`.
+size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& reference, double tolerance, bool tell,
+                             Messages& out) {
   size_t at_origin = 0, reference_at_origin = 0;
   for (VertexId v : mine.vertices()) at_origin += close(mine.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   for (VertexId v : reference.vertices()) {
     reference_at_origin += close(reference.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   }
-  if (at_origin >= 2 && at_origin > reference_at_origin) {
+  if (tell && at_origin >= 2 && at_origin > reference_at_origin) {
     out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
             "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
   }
@@ -490,60 +460,24 @@ void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Me
   }
 }
 
-// With every vertex matched, the edges yours has and the reference does not, by the age of their ends: each kind is
-// a different wrong flip.
-void diagnose_extra_edges(const HalfedgeMesh& before, const HalfedgeMesh& mine, const MeshComparison& c,
-                          Messages& out) {
-  if (!c.unmatched_vertices.empty() || !c.unmatched_reference.empty() || c.extra_edges.empty()) return;
-  enum Ends { kOldAndNew, kBothOld, kBothNew, kEndsKinds };
-  const uint32_t old_capacity = before.vertex_capacity();
-  size_t count[kEndsKinds] = {};
-  EdgeId example[kEndsKinds];
-  for (EdgeId e : c.extra_edges) {
-    const HalfedgeId h = mine.halfedge(e);
-    if (!mine.alive(h) || !mine.alive(mine.twin(h))) continue;
-    const uint32_t x = mine.vertex(h).index, y = mine.vertex(mine.twin(h)).index;
-    if (x >= c.vertex_map.size() || y >= c.vertex_map.size()) continue;
-    const bool x_old = c.vertex_map[x].index < old_capacity, y_old = c.vertex_map[y].index < old_capacity;
-    const Ends kind = x_old && y_old ? kBothOld : (!x_old && !y_old ? kBothNew : kOldAndNew);
-    if (count[kind]++ == 0) example[kind] = e;
-  }
-  const auto ends = [&](EdgeId e) {
-    const HalfedgeId h = mine.halfedge(e);
-    return format_id(e) + " (" + format_id(mine.vertex(h)) + " " + format_id(mine.vertex(mine.twin(h))) + ")";
-  };
-  if (count[kBothOld] > 0) {
-    out.add(std::to_string(count[kBothOld]) + " of your edges join two original vertices, e.g. " +
-            ends(example[kBothOld]) +
-            ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end "
-            "(check both ends)");
-  }
-  if (count[kBothNew] > 0) {
-    const std::string what = " of your edges join two new vertices where the reference has none, e.g. ";
-    out.add(std::to_string(count[kBothNew]) + what + ends(example[kBothNew]) +
-            ": an edge that was not new (a half of a split edge) was flipped");
-  }
-  if (count[kOldAndNew] > 0) {
-    const std::string what = " of your edges join an original and a new vertex where the reference has none, e.g. ";
-    out.add(std::to_string(count[kOldAndNew]) + what + ends(example[kOldAndNew]) +
-            ": every new edge (one that cuts across an old face) that joins an old and a new vertex must be flipped, "
-            "once");
-  }
-}
-
 // Likely mistakes, from where your vertices are and which edges you have that the reference does not.
 void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report, const MeshComparison& c,
                        double tolerance, Messages& out) {
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
   const HalfedgeMesh& reference = *report.reference.mesh;
-  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, out);
-  diagnose_unmoved_originals(before, mine, reference, tolerance, out);
+  // A weight integer division made 0 is told first, before a later step is blamed for what it did.
+  const ZeroLoopWeights zero = diagnose_zero_loop_weights(before, mine, tolerance);
+  for (const std::string& m : zero.messages) out.add(m);
+  const size_t at_origin = diagnose_zero_weights(mine, reference, tolerance, !zero.origin_told, out);
+  if (!zero.originals_unmoved) diagnose_unmoved_originals(before, mine, reference, tolerance, out);
   // A position written to the wrong vertex, or a wrong weight (named with the weight it was).
-  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance)) out.add(std::move(m));
+  for (std::string& m : diagnose_loop_positions(before, mine, reference, tolerance, zero.origin_told)) {
+    out.add(std::move(m));
+  }
   for (std::string& m : diagnose_loop_boundary(before, mine, tolerance)) out.add(std::move(m));
   diagnose_coinciding_vertices(mine, at_origin, out);
-  diagnose_extra_edges(before, mine, c, out);
+  for (std::string& m : diagnose_loop_flips(before, mine, reference, c)) out.add(std::move(m));
 }
 
 void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {

@@ -87,13 +87,15 @@ struct EdgeRule {
   std::string example;
 };
 
-std::string edge_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance) {
+std::string edge_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance,
+                                bool origin_explained) {
   EdgeRule rules[] = {{"the midpoint of the edge it splits, (a + b) / 2", 0.5, 0.0},
                       {"1/8 (a + b) + 3/8 (c + d): the weights are swapped", 1.0 / 8.0, 3.0 / 8.0},
                       {"the average of the four corners, (a + b + c + d) / 4", 0.25, 0.25}};
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
     if (w.index < old_capacity) continue;
+    if (origin_explained && close(yours.position(w), glm::dvec3(0.0), tolerance)) continue;
     const std::vector<VertexId> old_neighbours = original_neighbours(before, yours, w);
     bool done = false;
     for (size_t i = 0; i < old_neighbours.size() && !done; ++i) {
@@ -169,11 +171,12 @@ std::string misplaced_message(const HalfedgeMesh& before, const HalfedgeMesh& yo
 }  // namespace
 
 std::vector<std::string> diagnose_loop_positions(const HalfedgeMesh& before, const HalfedgeMesh& yours,
-                                                 const HalfedgeMesh& reference, double tolerance) {
+                                                 const HalfedgeMesh& reference, double tolerance,
+                                                 bool origin_explained) {
   std::vector<std::string> out;
   if (std::string m = misplaced_message(before, yours, reference, tolerance); !m.empty()) out.push_back(m);
   if (std::string m = vertex_weight_message(before, yours, reference, tolerance); !m.empty()) out.push_back(m);
-  if (std::string m = edge_weight_message(before, yours, tolerance); !m.empty()) out.push_back(m);
+  if (std::string m = edge_weight_message(before, yours, tolerance, origin_explained); !m.empty()) out.push_back(m);
   return out;
 }
 

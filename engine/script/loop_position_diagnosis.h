@@ -2,7 +2,7 @@
 // positions written to the wrong vertices. Part of the upsample comparison (exercise_compare.cpp), so the window
 // and the grader (which compares through the same code) say it alike.
 //
-//   diagnose_loop_positions(before, yours, reference, tolerance)
+//   diagnose_loop_positions(before, yours, reference, tolerance, origin_explained)
 //     -> {"your original vertex v0 (degree 3) moved as if u = 0.125 ...; the course's u for degree 3 is 3/16 ..."}
 //
 // Invariants:
@@ -14,7 +14,9 @@
 //   the average of a, b, c, d). An original vertex of yours that sits where the reference puts a new vertex was
 //   given a new vertex's position.
 // - At most one message per rule (the first vertex in id order, and how many share the mistake); boundary
-//   vertices and edges are left out (their rules are extra credit: loop_boundary_diagnosis.h).
+//   vertices and edges are left out (their rules are extra credit: loop_boundary_diagnosis.h). With
+//   `origin_explained` (weights of 0 put them there: loop_zero_weight_diagnosis.h), new vertices at (0, 0, 0) are
+//   not fitted to the wrong edge rules, one of which may pass through the origin too.
 // - Reads every mesh through bounded walks only; `yours` should be valid (the caller checks first).
 #pragma once
 
@@ -26,6 +28,7 @@
 namespace meshedit {
 
 std::vector<std::string> diagnose_loop_positions(const HalfedgeMesh& before, const HalfedgeMesh& yours,
-                                                 const HalfedgeMesh& reference, double tolerance);
+                                                 const HalfedgeMesh& reference, double tolerance,
+                                                 bool origin_explained);
 
 }  // namespace meshedit

@@ -16,8 +16,9 @@
 //   buggy variants: flip and split         edge_where; forgotten face and vertex halfedges, a flipped boundary edge,
 //                                          the other rotation, a split vertex in the wrong place or pointing across, a
 //                                          wrong face, boundary edges left unsplit
-//   buggy variants: upsample               wrong flips or none, integer division, positions written to the wrong
-//                                          vertices, splitting that never ends
+//   buggy variants: upsample               wrong flips, none or some (counted, with their causes), integer division
+//                                          (each weight blamed), positions written to the wrong vertices, splitting
+//                                          that never ends
 //   loading, errors, output, recording     functions from the returned table or globals, load and run errors, caps, a
 //                                          normal that changes the mesh, print and recorded edits, refusals, bad input
 #include <gtest/gtest.h>
@@ -547,11 +548,53 @@ TEST(Exercises, UpsampleNotFlippingAtAll) {
   const ExerciseReport r = check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_cube())));
   EXPECT_FALSE(r.equal);
   ASSERT_FALSE(r.differences.empty());
-  // The cube: 18 edges, 12 faces; each face's cross edge that should have been flipped stays.
+  // The cube: 18 edges, 12 faces; each face's cross edge that should have been flipped stays. Nothing flipped: marks
+  // that never match are the likeliest cause, then the one-way test (flags on the halves would have flipped halves).
   EXPECT_TRUE(starts_with(r.differences[0],
-                          "12 of your edges join an original and a new vertex where the reference "
-                          "has none, e.g. e"))
+                          "your upsample flipped none of the 12 new edges the reference flips: 12 of your edges "
+                          "still join an original and a new vertex across an old face, e.g. e"))
       << text_of(r);
+  const std::string& d = r.differences[0];
+  const size_t marks = d.find(
+                   "The usual causes, most likely first: the marks never match (a table keyed by the "
+                   "handle"),
+               one_way = d.find("; the old/new test accepts one order only"),
+               flags = d.find("; or the flags were set on the wrong edges");
+  EXPECT_NE(marks, std::string::npos) << d;
+  EXPECT_LT(marks, one_way) << d;
+  EXPECT_NE(flags, std::string::npos) << d;
+  EXPECT_LT(one_way, flags) << d;
+}
+
+TEST(Exercises, UpsampleMarkingNewEdgesByHandle) {
+  // A table keyed by the handle: every read of e makes another handle, so new_edge[e] never finds the mark.
+  auto code = variant(Exercise::Upsample, {{"new_edge[h.edge.id] = true", "new_edge[h.edge] = true"},
+                                           {"if new_edge[e.id] then", "if new_edge[e] then"}});
+  const ExerciseReport r =
+      check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
+  EXPECT_FALSE(r.equal);
+  ASSERT_FALSE(r.differences.empty());
+  EXPECT_TRUE(starts_with(r.differences[0],
+                          "your upsample flipped none of the 20 new edges the reference flips: 20 "
+                          "of your edges still join an original and a new vertex"))
+      << text_of(r);
+  EXPECT_NE(r.differences[0].find("key them by e.id and m.id"), std::string::npos) << text_of(r);
+}
+
+TEST(Exercises, UpsampleFlippingOnlySomeNewEdges) {
+  // Half the flips made: counted from the connectivity, with the one-way test as the likeliest cause.
+  auto code = variant(Exercise::Upsample, {{"if new_edge[e.id] then", "if new_edge[e.id] and e.id % 2 == 0 then"}});
+  const ExerciseReport r = check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_cube())));
+  EXPECT_FALSE(r.equal);
+  ASSERT_FALSE(r.differences.empty());
+  const std::string& d = r.differences[0];
+  EXPECT_TRUE(starts_with(d, "your upsample flipped ")) << text_of(r);
+  EXPECT_EQ(d.find("your upsample flipped none"), std::string::npos) << d;
+  EXPECT_NE(d.find(" of the 12 new edges the reference flips: "), std::string::npos) << d;
+  EXPECT_NE(d.find("The usual causes, most likely first: the old/new test accepts one order only (a old and b new, "
+                   "but not a new and b old"),
+            std::string::npos)
+      << d;
 }
 
 TEST(Exercises, UpsampleWithIntegerDivision) {
@@ -562,10 +605,69 @@ TEST(Exercises, UpsampleWithIntegerDivision) {
       check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
   EXPECT_FALSE(r.equal);
   ASSERT_GE(r.differences.size(), 2u) << text_of(r);
+  // The weights are blamed, not step 5: the new vertices moved (to the origin), so step 5 ran.
   EXPECT_EQ(r.differences[0],
-            "30 of your vertices are at (0, 0, 0): a weight that should not be zero is (in Lua "
-            "3 // 8 is 0, an integer division; write 3 / 8)");
-  EXPECT_TRUE(starts_with(r.differences[1], "12 of the 12 original vertices kept their old positions")) << text_of(r);
+            "your weight u is 0 for degrees other than 3 (in Lua 3 // (8 * n) is 0, an integer division: write "
+            "3 / (8 * n)): 12 of the 12 original vertices kept their old positions while your new vertices moved; an "
+            "original vertex moves to (1 - n u) p + u (sum of the neighbours), u = 3/16 for degree 3, else 3 / (8 n) "
+            "(if your u is not 0, step 5 must move the original vertices too)");
+  EXPECT_TRUE(starts_with(r.differences[1],
+                          "your edge weights 3/8 and 1/8 are 0 (in Lua 3 // 8 and 1 // 8 are 0, integer divisions: "
+                          "write 3 / 8 and 1 / 8): 30 of your new vertices, e.g. v12 on the edge v"))
+      << text_of(r);
+  EXPECT_EQ(text_of(r).find("step 5 must move them to the positions of step 1"), std::string::npos) << text_of(r);
+  EXPECT_EQ(text_of(r).find("a weight that should not be zero"), std::string::npos) << text_of(r);
+}
+
+TEST(Exercises, UpsampleWithOneIntegerDivisionWeight) {
+  // Only the branch for degrees other than 3: on a triangular bipyramid the two poles (degree 3) move right, the three
+  // vertices of the equator (degree 4) stay.
+  PolygonMesh bipyramid;
+  for (const glm::dvec3& p : {glm::dvec3(0, 0, 1.5), glm::dvec3(1, 0, 0), glm::dvec3(-0.4, 1, 0.1),
+                              glm::dvec3(-0.6, -0.9, 0), glm::dvec3(0.1, 0, -1)}) {
+    bipyramid.add_vertex(p);
+  }
+  for (const auto& f :
+       std::vector<std::vector<uint32_t>>{{0, 1, 2}, {0, 2, 3}, {0, 3, 1}, {4, 2, 1}, {4, 3, 2}, {4, 1, 3}}) {
+    bipyramid.add_face(f);
+  }
+  auto u = variant(Exercise::Upsample, {{"3 / (8 * n)", "3 // (8 * n)"}});
+  const ExerciseReport r = check_exercise(*u, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(bipyramid)));
+  ASSERT_FALSE(r.differences.empty());
+  EXPECT_TRUE(starts_with(r.differences[0],
+                          "your weight u is 0 for degrees other than 3 (in Lua 3 // (8 * n) is 0, an integer "
+                          "division: write 3 / (8 * n)): 3 of the 5 original vertices kept their old positions"))
+      << text_of(r);
+  // The edge's 1/8 alone: the new vertices sit at 3/8 (a + b).
+  auto eighth = variant(Exercise::Upsample, {{"1 / 8 * (c + d)", "1 // 8 * (c + d)"}});
+  const ExerciseReport s =
+      check_exercise(*eighth, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_icosahedron())));
+  ASSERT_FALSE(s.differences.empty());
+  EXPECT_TRUE(starts_with(s.differences[0],
+                          "your edge weight 1/8 is 0 (in Lua 1 // 8 is 0, an integer division: write 1 / 8): 30 of "
+                          "your new vertices, e.g. v12 on the edge v"))
+      << text_of(s);
+  EXPECT_NE(s.differences[0].find(", are at 3/8 (a + b) instead of 3/8 (a + b) + 1/8 (c + d)"), std::string::npos)
+      << text_of(s);
+}
+
+TEST(Exercises, UpsampleWithIntegerDivisionOnTheBoundary) {
+  auto code =
+      variant(Exercise::Upsample, {{"0.75 * p + 0.125 * (rim[1] + rim[2])", "3 // 4 * p + 0.125 * (rim[1] + rim[2])"},
+                                   {"edge_position[e.id] = 0.5 * (a + b)", "edge_position[e.id] = 1 // 2 * (a + b)"}});
+  // The grid's corner v0 is at the origin, where 1/8 (a + b) is the course's position too: the other 7 are named.
+  const ExerciseReport r =
+      check_exercise(*code, Exercise::Upsample, ExerciseInput::whole_mesh(mesh_of(make_grid(2, 2))));
+  ASSERT_GE(r.differences.size(), 2u) << text_of(r);
+  EXPECT_TRUE(starts_with(r.differences[0],
+                          "your boundary vertex weight 3/4 is 0 (in Lua 3 // 4 is 0, an integer division: write "
+                          "3 / 4): 7 of your boundary vertices, e.g. v1, are at 1/8 (a + b) instead of 3/4 p + 1/8 "
+                          "(a + b)"))
+      << text_of(r);
+  EXPECT_TRUE(starts_with(r.differences[1],
+                          "your boundary edge weight 1/2 is 0 (in Lua 1 // 2 is 0, an integer division: write 1 / 2): "
+                          "8 of your new vertices on boundary edges, e.g. v"))
+      << text_of(r);
 }
 
 TEST(Exercises, UpsampleWritingPositionsToTheWrongVertices) {

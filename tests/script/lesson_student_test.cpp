@@ -165,6 +165,12 @@ const std::vector<BuggyCase>& buggy_cases() {
       {"curve_swapped_weights", {"the weights are swapped"}},
       {"patch_columns_first", {"u and v are swapped"}},
       {"normals_unit_average", {"is the average of the faces' unit normals; the reference"}},
+      // The lesson's fan is regular in its angles: angle weights and unit normals give the same normal there.
+      {"normals_angle_weighted",
+       {"on this mesh that is also the normalised sum of the unit normals of the 6 faces around v0, each weighted by "
+        "its face's angle at v0"}},
+      {"normals_last_face_only", {"is the normal of f1 alone, one of the 6 faces around v0"}},
+      {"normals_skips_a_face", {"leaves out f1, one of the 6 faces around v0; the reference"}},
       // The diamond's middle edge is flipped right; the boundary edge a-c must be left alone.
       {"flip_boundary", {"right", "the reference does not flip e2 (e2 is on the boundary"}},
       {"flip_breaks_face_cycle",
@@ -177,7 +183,17 @@ const std::vector<BuggyCase>& buggy_cases() {
       // Upsample runs on the cube, then on the tetrahedron (every vertex of degree 3).
       {"upsample_flip_one_check", {"a new edge whose ends were both new was flipped"}},
       {"upsample_flips_split_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
-      {"upsample_integer_division", {"8 of the 8 original vertices kept their old positions"}},
+      {"upsample_flags_halves", {"an edge that was not new (a half of a split edge) was flipped"}},
+      {"upsample_integer_division",
+       {"your weight u is 0 for degrees other than 3 (in Lua 3 // (8 * n) is 0, an integer division: write "
+        "3 / (8 * n)): 8 of the 8 original vertices kept their old positions"}},
+      {"upsample_integer_edge_weights",
+       {"your edge weights 3/8 and 1/8 are 0 (in Lua 3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and "
+        "1 / 8)"}},
+      {"upsample_marks_by_handle",
+       {"your upsample flipped none of the 12 new edges the reference flips: 12 of your edges still join an original "
+        "and a new vertex"}},
+      {"upsample_one_way_test", {"the old/new test accepts one order only (a old and b new, but not a new and b old"}},
       {"upsample_splits_new_edges", {"upsample did not finish: split only the edges of the original mesh"}},
       {"upsample_wrong_vertices", {"a position computed for a new vertex (step 2) was written to an original one"}},
       {"upsample_wrong_weight", {"right", "moved as if u = 0.125"}},

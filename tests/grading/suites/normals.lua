@@ -1,7 +1,9 @@
 -- Grading suite for part 3, vertex_normal(v) in normals.lua: the area-weighted unit normal (the normalised sum of
 -- the cross products (p1 - p0) x (p2 - p0) of the faces around v, boundary loops skipped). Each normal is checked
 -- by expect.exercise, the window's own check: the core's vertex_normal as the reference, and the window's
--- diagnosis (an average of unit normals, an inward or unnormalised normal, a boundary loop counted as a face).
+-- diagnosis (what a wrong normal is made of: an average of unit normals or angle-weighted normals, a face left out
+-- or counted alone, a cross product taken the wrong way round, a missing normalisation, a boundary loop counted as
+-- a face, each naming the faces it concerns).
 suite{ name = "vertex_normal", files = {"normals.lua"}, time_limit = 5, memory_mb = 64 }
 
 local vec3 = meshedit.vec3

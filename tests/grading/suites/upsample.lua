@@ -1,11 +1,12 @@
 -- Grading suite for part 6, upsample(mesh) in upsample.lua: Loop subdivision in place. Each level is checked by
 -- expect.exercise, the window's own check: the core's Loop subdivision with the course's weights as the reference,
--- the comparison up to renumbering, and the window's diagnosis (a wrong weight, named; edges flipped that were not
--- new, or halves of split edges; positions written to the wrong vertices). The reference flip and split are given
--- to the student's code (flip_edge, split_edge, mesh:flip, mesh:split: the window gives upsample the same), so a
--- mistake in parts 4 and 5 is not paid for twice. Partial credit per base test: 20% for a valid mesh, 40% when the
--- element counts are right too, all of it for the right shape. The boundary rules are extra credit in the course:
--- test 6.4 adds its point on top of the base points, all or nothing.
+-- the comparison up to renumbering, and the window's diagnosis (a wrong weight, named, and one that integer
+-- division made 0; edges flipped that were not new, or halves of split edges; new edges left unflipped, counted
+-- against the reference's flips, with their likely causes; positions written to the wrong vertices). The reference
+-- flip and split are given to the student's code (flip_edge, split_edge, mesh:flip, mesh:split: the window gives
+-- upsample the same), so a mistake in parts 4 and 5 is not paid for twice. Partial credit per base test: 20% for a
+-- valid mesh, 40% when the element counts are right too, all of it for the right shape. The boundary rules are
+-- extra credit in the course: test 6.4 adds its point on top of the base points, all or nothing.
 suite{ name = "upsample", files = {"upsample.lua"}, time_limit = 5, memory_mb = 128,
        reference = {"flip_edge", "split_edge"}, allow_api = {"mesh:flip", "mesh:split"} }
 
