@@ -3,8 +3,9 @@
 -- area-weighted vertex normals (on a fan where the weighting changes the answer) and flat vs smooth shading.
 -- Each step asks or has the student act before it tells: the student clicks h.next or h.twin.next, counts, walks
 -- a boundary loop, predicts the normal or switches the shading, and every wrong answer is told what it is. Every
--- walk is done on the mesh on screen and every highlight and label marks the element the walk reached, so what the student sees is what the pointers say. The last step
--- runs the student's own vertex_normal (your_turn) on the fan. CI runs it headless:
+-- walk is done on the mesh on screen and every highlight and label marks the element the walk reached, so what the
+-- student sees is what the pointers say. The last step runs the student's own vertex_normal (your_turn) on the fan.
+-- CI runs it headless:
 --   meshedit lesson lessons/3_halfedge_walks.lua --headless \
 --     --answers tests/script/lessons/3_halfedge_walks_answers.lua --student tests/script/solutions
 

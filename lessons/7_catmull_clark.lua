@@ -5,9 +5,9 @@
 -- linear subdivision, then the rules; run by your_turn on the cube). Every step asks before it tells: where the
 -- face point goes, which points the edge point averages and which way a corner moves come before each rule; each
 -- likely wrong answer is named in its feedback. Every number the lesson prints comes from the core:
--- mesh:catmull_clark() and mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h), positions read back. The student
--- runs the window's Subdivide menu twice: the whole level, and then its three phases one at a time, each checked
--- against the lesson's own phases.
+-- mesh:catmull_clark() and mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h),
+-- positions read back. The student runs the window's Subdivide menu twice: the whole level, and then its three
+-- phases one at a time, each checked against the lesson's own phases.
 -- CI runs it headless (tests/script/lessons_b_test.cpp):
 --   meshedit lesson lessons/7_catmull_clark.lua --headless --answers tests/script/lessons/7_catmull_clark_answers.lua
 -- Invariants: every step builds its meshes afresh (Back runs a step again); the core numbers a level's new

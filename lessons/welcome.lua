@@ -76,7 +76,8 @@ vertex's own halfedge, then its next.)]]
   say [[
 Press **N** two more times: the cube's faces are triangles, so three presses bring you back to the halfedge
 you started from (from a vertex: its own halfedge). Then press **T** to jump to the *twin*, into the
-neighbouring face. **V**, **E** and **H** take you to the vertex, the edge and back to a halfedge. This walking is exactly what your code will do.]]
+neighbouring face. **V**, **E** and **H** take you to the vertex, the edge and back to a halfedge. This walking
+is exactly what your code will do.]]
 end)
 
 -- The two vertices edge `id` of `mesh` joins, as "v1 and v2".
