@@ -5,7 +5,8 @@
 -- shows), predicts how many fields a flip changes in an 80x70 grid of 11200 triangles (then sees the count the core's
 -- flip gives, by m:diff, against the 3 x 11200 corners a rebuild of the face list writes), flips the edge with F, and
 -- the lesson checks every answer on the mesh on screen. The last step runs the student's own flip_edge
--- (scripts/student/flip.lua) with your_turn on that diamond and on its boundary edge, and waits until each is right.
+-- (scripts/student/flip.lua) with your_turn on that diamond, on its boundary edge and on the big grid's edge (where
+-- the Exercises tab's locality check applies), and waits until each is right.
 -- CI runs it headless, with the correct solutions and with buggy ones (tests/script/lesson_student_test.cpp):
 --   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua \
 --     --student tests/script/solutions
@@ -480,5 +481,15 @@ the mesh as it is (and return nothing). The lesson runs yours on a-c next.]]
     element = names.h7.edge,
     hint = "If the face of e.halfedge or of its twin is a boundary face (f:is_boundary()), return before any write.",
   }
-  say "Your `flip_edge` leaves a boundary edge alone, as the reference does."
+  say("Your `flip_edge` leaves a boundary edge alone, as the reference does. Last, the yellow edge in the middle "
+    .. "of the grid of " .. big:num_faces() .. " triangles (step \"One flip in a big mesh\"): the lesson runs "
+    .. "yours there and counts the elements it touches, as the Exercises tab and the grader do.")
+  your_turn {
+    exercise = "flip",
+    mesh = big,
+    element = big_edge,
+    hint = "Walk from e.halfedge: in a triangle the halfedge before h0 is h0.next.next. A loop over the mesh's "
+      .. "halfedges, or a copy or a validate() of the whole mesh, touches every element of it.",
+  }
+  say "Your `flip_edge` changes the big grid as the reference does, touching only the elements around the edge."
 end)

@@ -201,6 +201,8 @@ TEST(LessonsB, EdgeFlipPassesHeadlessAskingHowManyFieldsAFlipInABigMeshChanges) 
                                  std::to_string((33600 + changes.size() / 2) / changes.size()) + " times as many"))
       << text;
   EXPECT_LT(text.find(question), text.find(told));
+  // The last step runs the student's flip on that edge of the big grid too: the solution is right there.
+  EXPECT_TRUE(contains(text, "as the Exercises tab and the grader do.\n  > your turn flip.lua: right\n")) << text;
 }
 
 TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
@@ -272,6 +274,9 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
 
 TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
   const std::string text = run_headless("5_edge_split", 7);
+  // The last step runs the student's split on the middle edge of a grid of 11200 triangles too: the solution is right.
+  EXPECT_TRUE(contains(text, "Last, the middle edge of a grid of 11200 triangles")) << text;
+  EXPECT_TRUE(contains(text, "as the Exercises tab and the grader do.\n  > your turn split.lua: right\n")) << text;
   EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
       << text;
   EXPECT_TRUE(contains(text,

@@ -1,5 +1,5 @@
 -- Scripted answers for lessons/4_edge_flip.lua (run with --student tests/script/solutions, whose flip_edge is
--- right: the last step expects your_turn = "right", on the diamond and on its boundary edge): each
+-- right: the last step expects your_turn = "right", on the diamond, its boundary edge and the big grid): each
 -- question answered wrong (with the words its feedback must contain), then right. The builder's ids for the
 -- diagram's names: h0 = h0, h1 = h3, h2 = h1, h3 = h2, h4 = h4, h5 = h5, h6 = h6, h7 = h9, h8 = h8, h9 = h7;
 -- a, b, c, d = v0..v3; e = e0.
@@ -22,5 +22,5 @@ return {
                                  {answer = 10} },
   ["Flip it yourself"] = { {selection = "e0"}, {flip = "e0"} },
   ["Before and after, pointer by pointer"] = { {answer = 2, feedback = "traded faces"}, {answer = 4},
-                                               {your_turn = "right"}, {your_turn = "right"} },
+                                               {your_turn = "right"}, {your_turn = "right"}, {your_turn = "right"} },
 }
