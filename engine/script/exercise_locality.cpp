@@ -23,8 +23,8 @@ std::set<uint32_t> corners_at(const HalfedgeMesh& mesh, EdgeId e) {
   return corners;
 }
 
-// "changes 10 fields of 8 elements", "creates 12 elements and changes 9 fields of 6 others", "changes nothing": what
-// the reference did to the input, counted from its mesh.
+// "changes 12 fields of 8 elements", "creates 12 elements and changes 9 fields of 7 elements it had", "changes
+// nothing": what the reference did to the input, counted from its mesh (a field is one changed value of m:diff).
 std::string reference_changes(const HalfedgeMesh& before, const HalfedgeMesh& after) {
   const std::vector<FieldChange> changes = diff(before, after);
   std::set<ElementRef> created, changed;
