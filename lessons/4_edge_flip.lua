@@ -2,13 +2,17 @@
 -- "diamond"). Every element gets the name the core's diagram gives it (engine/core/mesh_ops.h). Each step asks
 -- before it tells: the student clicks h0.next, finds the course's edge, predicts the pointers a flip sets (on a
 -- diamond whose faces and vertices point at the halfedges the flip moves, so the classic "forgot f0.halfedge" bug
--- shows), flips the edge with F, and the lesson checks every answer on the mesh on screen. The last step runs the
--- student's own flip_edge (scripts/student/flip.lua) on that diamond with your_turn, and waits until it is right.
+-- shows), predicts how many fields a flip changes in an 80x70 grid of 11200 triangles (then sees the count the core's
+-- flip gives, by m:diff, against the 3 x 11200 corners a rebuild of the face list writes), flips the edge with F, and
+-- the lesson checks every answer on the mesh on screen. The last step runs the student's own flip_edge
+-- (scripts/student/flip.lua) with your_turn on that diamond, on its boundary edge and on the big grid's edge (where
+-- the Exercises tab's locality check applies), and waits until each is right.
 -- CI runs it headless, with the correct solutions and with buggy ones (tests/script/lesson_student_test.cpp):
 --   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua \
 --     --student tests/script/solutions
--- Invariant: every name is found by walking from h0 = e0.halfedge, never assumed from storage order, so the
--- labels stay right whatever order the builder numbers halfedges in.
+-- Invariants: every name is found by walking from h0 = e0.halfedge, never assumed from storage order, so the
+-- labels stay right whatever order the builder numbers halfedges in; the big grid's edge is found by where it is;
+-- every count the text gives is counted at run time (the question asks before the count is said).
 
 lesson {
   title = "Part 4: Edge flip",
@@ -77,6 +81,18 @@ local function rigged_diamond()
   return m
 end
 local rigged = rigged_diamond()
+
+-- A grid of 80 x 70 squares, each cut in two by a diagonal: 11200 triangles. `big_edge` is the diagonal from the
+-- vertex at (40, 35) to the one at (41, 36), found by where it is.
+local function diagonal_at(mesh, x, y)
+  for edge in mesh:edges() do
+    local p, q = edge.halfedge.vertex.position, edge.halfedge.twin.vertex.position
+    if p.x > q.x then p, q = q, p end
+    if p.x == x and p.y == y and q.x == x + 1 and q.y == y + 1 then return edge end
+  end
+end
+local big = meshedit.grid(80, 70)
+local big_edge = diagonal_at(big, 40, 35)
 
 -- The clicked element in the diagram's words, for feedback: "h4 (id h4)", "the edge b-c".
 local function what(element)
@@ -311,14 +327,81 @@ there and breaks on the next edge. So: after the next, vertex and face pointers,
 **f1.halfedge = h1**, and a.halfedge = h4 if it was h0, b.halfedge = h2 if it was h1.]]
 end)
 
+step("One flip in a big mesh", function()
+  local faces, halfedges = big:num_faces(), big:num_halfedges()
+  -- The flip, on a copy, before asking: every field whose value differs afterwards, by m:diff.
+  local flipped = big:copy()
+  assert(flipped:flip(flipped:element(tostring(big_edge))))
+  local changes = flipped:diff(big)
+  local count = #changes
+  local corners = 3 * faces  -- what a rebuild of the face list writes
+  show(big)
+  view { labels = false, halfedges = false }
+  local h = big_edge.halfedge
+  camera { target = (h.vertex.position + h.twin.vertex.position) * 0.5, distance = 10, pitch = 55 }
+  highlight(big_edge, "yellow")
+  say("# A flip in a big mesh\n\nThis grid has **" .. faces .. " triangles** (80 by 70 squares, each cut in "
+    .. "two), " .. halfedges .. " halfedges. The yellow edge in its middle is a diagonal like e: two triangles "
+    .. "share it. A program that keeps only a list of triangles changes one by writing the list again; the "
+    .. "halfedge mesh is built for the other way.")
+  answer {
+    "Flip the yellow edge: how many fields of the mesh change (a field is one pointer of one element, such as "
+      .. "h0.next or f0.halfedge)?",
+    number = count,
+    tolerance = 4,
+    feedback = function(value)
+      if value >= faces / 4 then
+        return "That is about every element: a rebuild of the face list rewrites every face's corners (3 x "
+          .. faces .. " = " .. corners .. " numbers). A flip only rewires the two triangles at the edge."
+      end
+      if value < count then
+        return "The diagonal's two halfedges change (h0.vertex and h1.vertex), but so do the next pointers of all "
+          .. "six halfedges of the two triangles, and the face of the two halfedges that move."
+      end
+      return "Nothing outside the two triangles at the edge changes, and only some fields inside them: count the "
+        .. "after-list of \"Predict the flip\" and the pointers of \"The pointers that are easy to forget\"."
+    end,
+    hint = "The diamond's flip changed the next, vertex and face pointers of its list, and some face and vertex "
+      .. "pointers. Does the rest of the mesh matter?",
+  }
+  show(flipped)
+  local kinds, order_of_kinds = {}, { "halfedge", "vertex", "edge", "face" }
+  local plural_of = { halfedge = "halfedges", vertex = "vertices", edge = "edges", face = "faces" }
+  for _, change in ipairs(changes) do
+    local kind = flipped:element(change.element).kind
+    kinds[kind] = kinds[kind] or {}
+    kinds[kind][change.element] = true
+    highlight(change.element, "orange")
+  end
+  local parts, elements = {}, 0
+  for _, kind in ipairs(order_of_kinds) do
+    local n = 0
+    for _ in pairs(kinds[kind] or {}) do n = n + 1 end
+    if n > 0 then parts[#parts + 1] = n .. " " .. (n == 1 and kind or plural_of[kind]) end
+    elements = elements + n
+  end
+  say("The flip changed **" .. count .. " fields** (each a field of one element whose value differs after the "
+    .. "flip, as m:diff lists them) of " .. elements .. " elements: " .. table.concat(parts, ", ")
+    .. ", all in the two triangles at the edge (orange); the other " .. (faces - 2)
+    .. " triangles keep every field. Writing the face list again instead writes 3 corners of each of the "
+    .. faces .. " faces, **" .. corners .. " numbers**, about " .. math.floor(corners / count + 0.5)
+    .. " times as many, before the halfedges are built from it again; and that grows with the mesh, where the "
+    .. "flip's count does not.")
+  say [[
+That is why the course writes flips and splits on a halfedge mesh: each is a fixed handful of pointers, found by
+walking from e.halfedge. Your `flip_edge` is held to it: on a mesh this big the Exercises tab and the grader count
+the elements it touches (reads or writes), and one that loops over `mesh:halfedges()` to find a halfedge, or reads
+the whole mesh with `mesh:copy()` or `mesh:validate()`, is wrong even when the mesh it leaves is right.]]
+end)
+
 step("Flip it yourself", function()
   show(rigged)
   camera { fit = true, pitch = 55 }
   view { labels = false, halfedges = true }
   label_all(names)
   highlight(names.e, "yellow")
-  say("This is the diamond of the last step, with f0.halfedge = h2 and a.halfedge = h0. Click the yellow edge "
-    .. "**e** (its id is `" .. tostring(names.e) .. "`) to select it.")
+  say("This is the diamond of \"The pointers that are easy to forget\", with f0.halfedge = h2 and a.halfedge = h0. "
+    .. "Click the yellow edge **e** (its id is `" .. tostring(names.e) .. "`) to select it.")
   wait_for { selection = tostring(names.e), hint = "Click the edge between a and b" }
   say [[
 Now press **F** to flip it.]]
@@ -399,5 +482,15 @@ the mesh as it is (and return nothing). The lesson runs yours on a-c next.]]
     element = names.h7.edge,
     hint = "If the face of e.halfedge or of its twin is a boundary face (f:is_boundary()), return before any write.",
   }
-  say "Your `flip_edge` leaves a boundary edge alone, as the reference does."
+  say("Your `flip_edge` leaves a boundary edge alone, as the reference does. Last, the yellow edge in the middle "
+    .. "of the grid of " .. big:num_faces() .. " triangles (step \"One flip in a big mesh\"): the lesson runs "
+    .. "yours there and counts the elements it touches, as the Exercises tab and the grader do.")
+  your_turn {
+    exercise = "flip",
+    mesh = big,
+    element = big_edge,
+    hint = "Walk from e.halfedge: in a triangle the halfedge before h0 is h0.next.next. A loop over the mesh's "
+      .. "halfedges, or a copy or a validate() of the whole mesh, touches every element of it.",
+  }
+  say "Your `flip_edge` changes the big grid as the reference does, touching only the elements around the edge."
 end)

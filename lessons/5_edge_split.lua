@@ -3,7 +3,8 @@
 -- which halfedge runs m to b afterwards, m's halfedge, which of h0's fields change, the boundary split's faces and
 -- what a split does to V - E + F. After each split the lesson names the new elements, as engine/core/mesh_ops.h
 -- documents them, lists every pointer the split wrote, and checks the mesh on screen. The last step runs the
--- student's own split_edge (your_turn) on a lopsided diamond, where the corners' average is not the midpoint.
+-- student's own split_edge (your_turn) on a lopsided diamond, where the corners' average is not the midpoint, then
+-- on the middle edge of an 80x70 grid (11200 triangles), where one that walks the whole mesh is told so.
 -- CI runs it headless:
 --   meshedit lesson lessons/5_edge_split.lua --headless --answers tests/script/lessons/5_edge_split_answers.lua \
 --     --student tests/script/solutions
@@ -352,8 +353,27 @@ not hold its halfedge.]]
     hint = "m goes at the midpoint of a and b; after the split every face is a triangle of three halfedges whose "
       .. "next pointers close the cycle, and each one's face is that triangle.",
   }
+  -- A grid of 80 x 70 squares, each cut in two, and its diagonal with its midpoint at (40.5, 35.5), found by
+  -- where it is.
+  local big = meshedit.grid(80, 70)
+  local middle
+  for edge in big:edges() do
+    local mid = (edge.halfedge.vertex.position + edge.halfedge.twin.vertex.position) * 0.5
+    if mid == meshedit.vec3(40.5, 35.5, 0) then middle = edge end
+  end
+  say("Your `split_edge` gives the reference's answer, up to the order you made the new elements in. Last, the "
+    .. "middle edge of a grid of " .. big:num_faces() .. " triangles: a split changes a fixed handful of elements "
+    .. "whatever the mesh's size, and the lesson counts the elements yours touches (reads or writes), as the "
+    .. "Exercises tab and the grader do.")
+  your_turn {
+    exercise = "split",
+    mesh = big,
+    element = middle,
+    hint = "Walk from e.halfedge to the two triangles at e; a loop over the mesh, or a copy or a validate() of the "
+      .. "whole mesh, touches every element of it.",
+  }
   say [[
-Your `split_edge` gives the reference's answer, up to the order you made the new elements in. Splitting a
-boundary edge is extra credit: the Exercises tab (**X**, **Run mine**) checks it on any boundary edge you select,
-and the grading suite's boundary tests count as extra credit.]]
+Your `split_edge` splits the big grid's edge as the reference does, touching only the elements around it.
+Splitting a boundary edge is extra credit: the Exercises tab (**X**, **Run mine**) checks it on any boundary edge
+you select, and the grading suite's boundary tests count as extra credit.]]
 end)

@@ -132,6 +132,7 @@ int expect_exercise(lua_State* L) {
     }
   }
   read_returned_value(L, kReturned, *exercise, mine.mesh, mine);
+  if (mine.mesh) mine.touched = recorder.touches_of(mine.mesh.get());
   const ExerciseReport report = compare(*exercise, input, std::move(mine), run_reference(*exercise, input));
   const std::string detail =
       report.equal ? "same as the reference" : first_items(report.differences, report.total_differences);

@@ -101,6 +101,23 @@ bool TestRecorder::record(bool passed, std::string message) {
   return passed;
 }
 
+void TestRecorder::note_touches(const std::shared_ptr<const HalfedgeMesh>& mesh, const TouchCount& count) {
+  for (auto& [watched, touched] : touches_) {
+    if (watched.lock() == mesh) {
+      touched = count;
+      return;
+    }
+  }
+  touches_.emplace_back(mesh, count);
+}
+
+std::optional<TouchCount> TestRecorder::touches_of(const HalfedgeMesh* mesh) const {
+  for (const auto& [watched, touched] : touches_) {
+    if (!watched.expired() && watched.lock().get() == mesh) return touched;
+  }
+  return std::nullopt;
+}
+
 std::string describe_value(lua_State* L, int index) {
   index = lua_absindex(L, index);
   switch (lua_type(L, index)) {

@@ -28,10 +28,14 @@
 #pragma once
 
 #include <cstddef>
+#include <memory>
+#include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "grade/grade_types.h"
+#include "script/touch_recorder.h"
 
 struct lua_State;
 
@@ -44,8 +48,14 @@ class TestRecorder {
   void set_fraction(double fraction) { run_.fraction = fraction; }
   TestRun& run() { return run_; }
 
+  // What the student's latest call given `mesh` touched of it (the host notes each call's); expect.exercise reads it.
+  void note_touches(const std::shared_ptr<const HalfedgeMesh>& mesh, const TouchCount& count);
+  // That count for `mesh`, or none when no student call was given it in this test.
+  std::optional<TouchCount> touches_of(const HalfedgeMesh* mesh) const;
+
  private:
   TestRun& run_;
+  std::vector<std::pair<std::weak_ptr<const HalfedgeMesh>, TouchCount>> touches_;
 };
 
 // Pushes a new `expect` table. Its functions find the recorder through *current, which the host sets for

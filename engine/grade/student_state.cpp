@@ -35,6 +35,17 @@ int setup(lua_State* L) {
   return 0;
 }
 
+// The meshes of suite[first .. first + nargs - 1] that are meshes or elements of one, each once, in argument order.
+std::vector<std::shared_ptr<HalfedgeMesh>> meshes_among(lua_State* suite, int first, int nargs) {
+  std::vector<std::shared_ptr<HalfedgeMesh>> meshes;
+  for (int i = first; i < first + nargs; ++i) {
+    std::shared_ptr<HalfedgeMesh> mesh = to_mesh(suite, i);
+    if (const Handle* h = mesh ? nullptr : test_handle(suite, i)) mesh = h->mesh();
+    if (mesh && std::find(meshes.begin(), meshes.end(), mesh) == meshes.end()) meshes.push_back(std::move(mesh));
+  }
+  return meshes;
+}
+
 struct Call {
   StudentState* self;
   const std::string* name;
@@ -166,9 +177,18 @@ int StudentState::call(const std::string& name, lua_State* suite, int first, int
   lua_State* L = runtime_.state();
   const int base = lua_gettop(L);
   Call c{this, &name, suite, first, nargs, false};
+  std::vector<std::unique_ptr<TouchRecorder>> touches;
+  for (const std::shared_ptr<HalfedgeMesh>& mesh : meshes_among(suite, first, nargs)) {
+    touches.push_back(std::make_unique<TouchRecorder>(L, mesh));
+  }
   lua_pushcfunction(L, call_trampoline);
   lua_pushlightuserdata(L, &c);
   const int n = runtime_.call(1, LUA_MULTRET);
+  last_call_touches_.clear();
+  for (const std::unique_ptr<TouchRecorder>& recorder : touches) {
+    recorder->stop();
+    last_call_touches_.push_back({recorder->mesh(), recorder->count()});
+  }
   struct Restore {
     lua_State* L;
     int base;

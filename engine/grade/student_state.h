@@ -15,14 +15,18 @@
 // - Reference functions (reference_functions.h) are set before the files load and again after, so a
 //   student's own definition of the same name does not replace them.
 // - What the student prints is kept (capped) for the test's output; nothing reaches stdout.
+// - Each call counts what it touched of every mesh it was given (an argument that is a mesh or an element of one;
+//   script/touch_recorder.h), so expect.exercise holds a flip or a split to the window's locality bound.
 #pragma once
 
 #include <cstddef>
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "grade/submission.h"
 #include "script/lua_runtime.h"
+#include "script/touch_recorder.h"
 
 struct lua_State;
 
@@ -39,6 +43,12 @@ struct StudentOptions {
 class LoadFailure : public ScriptError {
  public:
   LoadFailure(const std::string& message, Limit limit) : ScriptError(message, limit) {}
+};
+
+// What one call touched of one mesh it was given.
+struct MeshTouches {
+  std::shared_ptr<const HalfedgeMesh> mesh;
+  TouchCount count;
 };
 
 class StudentState {
@@ -58,6 +68,9 @@ class StudentState {
   // BridgeError (an argument or result that cannot cross). `suite` must be in protected mode.
   int call(const std::string& name, lua_State* suite, int first, int nargs);
 
+  // What the last call that returned touched of each mesh it was given, in argument order.
+  const std::vector<MeshTouches>& last_call_touches() const { return last_call_touches_; }
+
   const std::string& output() const { return output_; }
   bool output_truncated() const { return runtime_.print_truncated(); }
 
@@ -70,6 +83,7 @@ class StudentState {
   LuaRuntime runtime_;
   StudentOptions options_;
   std::string output_;
+  std::vector<MeshTouches> last_call_touches_;
   int returned_tables_ref_ = -2;  // registry ref of the list of tables the files returned (LUA_NOREF = -2)
 };
 

@@ -371,6 +371,12 @@ struct SuiteApi {
     return *s.current_;
   }
 
+  // Hands what the student's call touched of each mesh it was given to the test's recorder (expect.exercise).
+  static void note_touches(Suite& s, const StudentState& student) {
+    if (!s.recorder_slot_) return;
+    for (const MeshTouches& t : student.last_call_touches()) s.recorder_slot_->note_touches(t.mesh, t.count);
+  }
+
   // student.NAME(...): the submission's function, run in its sandbox.
   static int call_named(lua_State* L, const std::string& name, int first) {
     Suite::Context& c = context(L);
@@ -381,6 +387,7 @@ struct SuiteApi {
     bool failed = false;
     try {
       n = c.student->call(name, L, first, nargs);
+      note_touches(suite_of(L), *c.student);
     } catch (const ScriptError& e) {
       error = e.what();
       limit = e.limit();

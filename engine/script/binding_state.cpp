@@ -10,6 +10,7 @@
 #include "core/value_format.h"
 #include "script/edit_recorder.h"
 #include "script/lua_runtime.h"
+#include "script/touch_recorder.h"
 
 namespace meshedit {
 namespace {
@@ -45,6 +46,7 @@ void begin_change(lua_State* L, BindingState& state, const std::shared_ptr<Halfe
 }
 
 void end_change(lua_State* L, BindingState& state, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit) {
+  if (!state.touch_recorders.empty()) note_change(state, mesh.get(), edit);
   if (!state.recorders.empty()) notify_recorders(state, L, mesh.get(), edit);
   if (state.journals.empty()) return;
   if (EditJournal* journal = find_journal(state, mesh, false)) journal->after_change(*mesh, std::move(edit));
@@ -54,6 +56,7 @@ void end_change(lua_State* L, BindingState& state, const std::shared_ptr<Halfedg
 
 BindingState::~BindingState() {
   for (EditRecorder* recorder : recorders) recorder->detach();
+  for (TouchRecorder* recorder : touch_recorders) recorder->detach();
 }
 
 void open_binding_state(lua_State* L) {

@@ -1,7 +1,7 @@
 // BindingState: the C++ side of the `meshedit` module that belongs to one Lua state (internal to
 // engine/script): its limits, the C++ memory its scripts' mesh copies hold, the undo journal of each mesh it
 // changed, and the recorders listening to it. Every change a script makes passes through begin_change and
-// end_change below, so the journals and recorders see all of them.
+// end_change below, so the journals and recorders see all of them; the touch recorders also hear of every handle made.
 //
 // Invariants:
 // - One BindingState per state, owned by a userdata in the registry: it dies with lua_close, and then
@@ -31,6 +31,7 @@ struct lua_State;
 namespace meshedit {
 
 class EditRecorder;
+class TouchRecorder;
 
 struct StorageAccount {
   size_t used = 0;
@@ -44,7 +45,8 @@ struct BindingState {
 
   MeshLimits limits;
   std::shared_ptr<StorageAccount> storage = std::make_shared<StorageAccount>();
-  std::vector<EditRecorder*> recorders;  // recording now, oldest first
+  std::vector<EditRecorder*> recorders;         // recording now, oldest first
+  std::vector<TouchRecorder*> touch_recorders;  // counting touches now (touch_recorder.h), oldest first
   std::unordered_map<const HalfedgeMesh*, JournalSlot> journals;
 
   BindingState() = default;
@@ -81,7 +83,7 @@ std::string room_refusal(lua_State* L, const HalfedgeMesh& mesh, size_t count);
 // recorder listening to the mesh is full.
 void begin_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, bool operation);
 // After the change: hands its record to the journal and to the recorders listening to `mesh` (filling
-// `where` for them).
+// `where` for them), and tells the touch recorders watching it.
 void end_change(lua_State* L, const std::shared_ptr<HalfedgeMesh>& mesh, RecordedEdit edit);
 // True when a recorder listens to `mesh` (so an edit worth a copy of the mesh is worth making).
 bool recorded(lua_State* L, const HalfedgeMesh* mesh);

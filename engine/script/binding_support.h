@@ -3,7 +3,9 @@
 //
 // Invariants:
 // - A MeshBox holds a shared_ptr to its HalfedgeMesh that never changes after the box is made (restore and
-//   undo replace the mesh's contents, never the pointer).
+//   undo replace the mesh's contents, never the pointer), and the BindingState of its own Lua state, which
+//   outlives every handle made on the box (the state's BindingState is made first and finalized last), so making
+//   a handle tells the state's touch recorders without a registry lookup.
 // - A Handle is plain data (no destructor, no __gc): the MeshBox it points to is the userdata stored as the
 //   handle's user value 1, so the box (and with it the mesh) lives at least as long as the handle, and
 //   `box` never dangles while the handle can be reached. A handle whose element is dead or past the end is
@@ -31,8 +33,11 @@ namespace meshedit {
 
 inline constexpr const char* kMeshType = "mesh";
 
+struct BindingState;
+
 struct MeshBox {
   const std::shared_ptr<HalfedgeMesh> mesh;
+  BindingState* const state;  // the BindingState of the Lua state the box lives in (nullptr if it has none)
 };
 
 struct Handle {

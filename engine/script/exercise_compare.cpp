@@ -2,8 +2,9 @@
 // raw differences (the students' real mistakes: a step that drops the last point or swaps the weights, u and v
 // swapped, a normal made of the wrong faces, weights or orientation, forgotten halfedge pointers, a next pointer left
 // as it was that breaks a face cycle, a flipped boundary edge, a split vertex at the wrong place, wrong flips, wrong
-// weights or misplaced positions in Loop subdivision, a loop that never ends). The grader checks through this same
-// code (grade/exercise_expectation.h), so a failure there reads like the window.
+// weights or misplaced positions in Loop subdivision, a loop that never ends, a flip or a split that walks the whole
+// mesh). The grader checks through this same code (grade/exercise_expectation.h), so a failure there reads like the
+// window.
 //
 // Tolerances: points within points_tolerance of the input, normals within 1e-9, meshes within mesh_tolerance of the
 // input (both in core/mesh_compare.h: 1e-9 scaled by the input's size); "identical" means bit for bit and, for
@@ -14,7 +15,8 @@
 //   curve step                     compare_curve: a dropped last point, swapped weights
 //   patch point and vertex normal  compare_patch (u and v swapped), compare_normal (what a wrong normal is made of:
 //                                  normal_diagnosis.h)
-//   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes
+//   meshes: shared checks          validation, unchanged next pointers, the comparison, pointer and boundary notes,
+//                                  the locality bound (exercise_locality.h)
 //   flip                           compare_flip
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
 //   upsample                       diagnose_upsample and its diagnoses (zero weights first:
@@ -34,6 +36,7 @@
 #include "core/history.h"
 #include "core/mesh_compare.h"
 #include "core/value_format.h"
+#include "script/exercise_locality.h"
 #include "script/exercises.h"
 #include "script/loop_boundary_diagnosis.h"
 #include "script/loop_flip_diagnosis.h"
@@ -283,6 +286,12 @@ void note_boundary_convention(ExerciseReport& report) {
   }
 }
 
+// A flip or a split that touched more of a big mesh than its edge's neighbourhood (exercise_locality.h).
+void add_locality(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
+  std::string message = locality_failure(exercise, input, report.mine, report.reference);
+  if (!message.empty()) out.add(std::move(message));
+}
+
 // Refused by the reference (`what` is "flip e3", "split e3", "subdivide this mesh"): mine must change nothing
 // and return nil.
 void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const std::string& what, const char* function,
@@ -303,6 +312,7 @@ void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const s
 
 void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
+    add_locality(Exercise::FlipEdge, input, report, out);
     return compare_refusal(input, report, "flip " + format_id(input.element), "flip_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
@@ -335,6 +345,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
   if (report.mine.validation->ok()) {
     add_comparison(compare_meshes(mine, *report.reference.mesh, {mesh_tolerance(before), 20}), out);
   }
+  add_locality(Exercise::FlipEdge, input, report, out);
   report.equal = !out.any();
   if (report.equal) {
     note_pointer_differences(report, "a correct flip of " + format_id(e) + " (" + turn + ")");
@@ -346,6 +357,7 @@ void compare_flip(const ExerciseInput& input, ExerciseReport& report, Messages& 
 
 void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   if (!report.reference.refused.empty()) {
+    add_locality(Exercise::SplitEdge, input, report, out);
     return compare_refusal(input, report, "split " + format_id(input.element), "split_edge", out);
   }
   const HalfedgeMesh& before = *input.mesh;
@@ -402,6 +414,7 @@ void compare_split(const ExerciseInput& input, ExerciseReport& report, Messages&
     }
   }
   if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
+  add_locality(Exercise::SplitEdge, input, report, out);
   report.equal = !out.any();
   if (report.equal) {
     note_pointer_differences(report, "a correct split of " + format_id(e));

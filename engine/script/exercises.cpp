@@ -31,10 +31,12 @@
 #include "script/bezier_bindings.h"
 #include "script/binding_support.h"
 #include "script/edit_recorder.h"
+#include "script/exercise_locality.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
 #include "script/scripted_exercise.h"
 #include "script/student_api.h"
+#include "script/touch_recorder.h"
 #include "script/upsample_runaway.h"
 #include "script/vec3_bindings.h"
 
@@ -492,6 +494,10 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
     return out;
   }
   const int function = lua_gettop(L);
+  // Counting starts before the arguments are pushed, so the element handed over counts as touched, as the grader
+  // counts the arguments of a student's call.
+  std::optional<TouchRecorder> touches;
+  if (has_locality_bound(exercise) && out.mesh) touches.emplace(L, out.mesh);
   push_arguments(L, exercise, input, out.mesh);
   const int arguments = lua_gettop(L);
   lua_newtable(L);
@@ -533,6 +539,10 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   if (recorder) {
     recorder->stop();
     out.edits = recorder->take_edits();
+  }
+  if (touches) {
+    touches->stop();
+    out.touched = touches->count();
   }
   luaL_unref(L, LUA_REGISTRYINDEX, closure);
   lua_rawgeti(L, LUA_REGISTRYINDEX, results_ref);

@@ -27,6 +27,9 @@
 //   identical on every input the tests use.
 // - Messages name elements with format_id, say "yours" and "the reference", and put the likely mistake first. The
 //   grader records the same messages (expect.exercise), so the window and the grader say the same thing.
+// - A flip or a split must do a constant amount of work: on a big mesh, one that touches more elements than
+//   exercise_locality.h allows is not equal to the reference, whatever mesh it leaves. run_mine counts what a flip or
+//   a split touched (ExerciseOutcome::touched); the grader counts the student's calls the same way.
 #pragma once
 
 #include <cstddef>
@@ -45,6 +48,7 @@
 #include "core/halfedge_mesh.h"
 #include "core/validate.h"
 #include "script/lua_runtime.h"
+#include "script/touch_recorder.h"
 
 namespace meshedit {
 
@@ -103,7 +107,9 @@ struct ExerciseOutcome {
   std::string refused;                 // reference only: the core's reason when it refuses (flip of a boundary edge...)
   std::optional<ValidationReport> validation;  // mesh exercises, after the call
   std::vector<RecordedEdit> edits;             // mine on a mesh, when RunOptions::record_edits (an upsample: always)
-  std::vector<std::string> output;             // what print() wrote during the call (capped)
+  std::optional<TouchCount> touched;  // mine, for the exercises held to a bound (exercise_locality.h): what the run
+                                      // touched of its mesh
+  std::vector<std::string> output;    // what print() wrote during the call (capped)
 };
 
 struct RunOptions {

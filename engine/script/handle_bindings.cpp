@@ -8,6 +8,7 @@
 //   to, and one of the five handle metatables; nothing else has those metatables (they are protected by
 //   __metatable), so test_handle's metatable check is what makes the bytes a Handle.
 // - Handles have no __gc: making one is one allocation, and the collector frees it like a table.
+// - Every handle is made by new_handle, so the touch recorders (touch_recorder.h) hear of each one.
 #include <new>
 #include <string>
 
@@ -15,6 +16,7 @@
 #include "script/binding_support.h"
 #include "script/handle_context.h"
 #include "script/mesh_bindings.h"
+#include "script/touch_recorder.h"
 
 namespace meshedit {
 namespace {
@@ -36,9 +38,10 @@ int handle_eq(lua_State* L) {
   return 1;
 }
 
-// Pushes a new handle of the valid `ref` on `box`, without its user value yet.
+// Pushes a new handle of the valid `ref` on `box`, without its user value yet, and tells the touch recorders.
 void new_handle(lua_State* L, MeshBox* box, ElementRef ref) {
   new (lua_newuserdatauv(L, sizeof(Handle), 1)) Handle{box, ref.index, ref.kind};
+  if (box->state && !box->state->touch_recorders.empty()) note_touch(*box->state, box->mesh.get(), ref);
 }
 
 // Sets the metatable of the new handle on top: the value at `metatable`, or ref.kind's by name when 0.

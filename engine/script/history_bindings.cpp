@@ -21,6 +21,7 @@
 #include "core/value_format.h"
 #include "script/binding_state.h"
 #include "script/binding_support.h"
+#include "script/touch_recorder.h"
 
 namespace meshedit {
 namespace {
@@ -50,6 +51,7 @@ int snapshot_tostring(lua_State* L) {
 
 int mesh_snapshot(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);
+  note_whole_mesh_read(L, box.mesh.get(), "mesh:snapshot()");
   std::shared_ptr<const HalfedgeMesh> state = copy_mesh(L, *box.mesh);
   auto* snapshot = static_cast<Snapshot*>(lua_newuserdatauv(L, sizeof(Snapshot), 0));
   new (snapshot) Snapshot{std::move(state), box.mesh};
@@ -85,6 +87,7 @@ int mesh_undo(lua_State* L) {
   begin_change(L, box.mesh, false);
   const std::optional<std::string> label = Undo ? journal->undo(*box.mesh) : journal->redo(*box.mesh);
   if (!label) return 1;
+  note_whole_mesh_read(L, box.mesh.get(), Undo ? "mesh:undo()" : "mesh:redo()");
   if (recorded(L, box.mesh.get())) {
     RecordedEdit edit;
     edit.what = EditKind::Operation;
@@ -187,6 +190,8 @@ int mesh_diff(lua_State* L) {
   if (const Snapshot* snapshot = test_snapshot(L, 2)) before = snapshot->state.get();
   else if (const auto* other = static_cast<MeshBox*>(luaL_testudata(L, 2, kMeshType))) before = other->mesh.get();
   else return luaL_typeerror(L, 2, "snapshot or mesh");
+  note_whole_mesh_read(L, box.mesh.get(), "mesh:diff()");
+  note_whole_mesh_read(L, before, "mesh:diff()");
   lua_newtable(L);
   DiffWriter out{L};
   write_diff(out, *before, *box.mesh);

@@ -49,6 +49,7 @@
 #include "script/bezier_bindings.h"
 #include "script/binding_state.h"
 #include "script/binding_support.h"
+#include "script/touch_recorder.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -144,6 +145,7 @@ int mesh_count(lua_State* L) {
 
 int mesh_validate(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);
+  note_whole_mesh_read(L, box.mesh.get(), "mesh:validate()");
   const ValidationReport report = validate(*box.mesh);
   lua_pushboolean(L, report.ok());
   lua_createtable(L, 0, 3);
@@ -182,6 +184,7 @@ int mesh_alive(lua_State* L) {
 
 int mesh_copy(lua_State* L) {
   MeshBox& box = check_mesh(L, 1);
+  note_whole_mesh_read(L, box.mesh.get(), "mesh:copy()");
   push_mesh(L, copy_mesh(L, *box.mesh));
   return 1;
 }
@@ -252,7 +255,7 @@ void set_string_field(lua_State* L, const char* key, const std::string& value) {
 
 void push_mesh(lua_State* L, std::shared_ptr<HalfedgeMesh> mesh) {
   auto* box = static_cast<MeshBox*>(lua_newuserdatauv(L, sizeof(MeshBox), 0));
-  new (box) MeshBox{std::move(mesh)};
+  new (box) MeshBox{std::move(mesh), find_binding_state(L)};
   luaL_setmetatable(L, kMeshType);
 }
 

@@ -10,6 +10,7 @@
 #include <lua.hpp>
 
 #include "script/binding_support.h"
+#include "script/touch_recorder.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -32,6 +33,7 @@ void push_list(lua_State* L, const char* name, const Range& range, Fill fill) {
 
 int mesh_tables(lua_State* L) {
   const HalfedgeMesh& m = *check_mesh(L, 1).mesh;
+  note_whole_mesh_read(L, &m, "mesh:tables()");
   lua_createtable(L, 0, 5);
   push_list(L, "vertices", m.vertices(), [&](VertexId v) {
     set_id(L, "halfedge", m.halfedge(v));

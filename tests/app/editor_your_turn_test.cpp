@@ -63,7 +63,7 @@ TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercis
   ASSERT_TRUE(app_->open(testing::source_dir() / "lessons" / "4_edge_flip.lua")) << app_->lesson().error();
   frames(2);
   LessonRunner& lesson = app_->lesson();
-  lesson.go_to(5);  // "Before and after, pointer by pointer": a question, then the your_turn
+  lesson.go_to(6);  // "Before and after, pointer by pointer": a question, then the your_turn
   ASSERT_TRUE(lesson.deliver(LessonEvent::value("4"))) << lesson.error();
   frames(3);
   ASSERT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurn) << lesson.error();

@@ -68,11 +68,11 @@ void run_lesson_four(const std::string& screen) {
   std::ostringstream actions;
   actions << "frames 2\n"
           << "exercise flip " << student.string() << "\n";
-  for (int i = 0; i < 5; ++i) actions << "lesson-next\n";
+  for (int i = 0; i < 6; ++i) actions << "lesson-next\n";
   actions << "frames 1\n"
           << "lesson-answer 4\n"
           << "frames 2\n"
-          << "expect-lesson-step 6 waiting\n"
+          << "expect-lesson-step 7 waiting\n"
           << "expect-lesson-feedback " << report.differences[0] << "\n"
           << "lesson-show-mine\n"
           << "frames 2\n"
@@ -81,7 +81,7 @@ void run_lesson_four(const std::string& screen) {
           << report.differences[0] << "\n"
           << "expect-field " << format_id(f0) << " halfedge " << format_id(h2) << "\n"
           << expect_every_pointer(mine)
-          << "expect-lesson-step 6 waiting\n"  // the button leaves the step waiting on the student's file
+          << "expect-lesson-step 7 waiting\n"  // the button leaves the step waiting on the student's file
           << "screenshot " << shot.string() << "\n"
           << "frames 2\n"
           << "quit\n";

@@ -1,8 +1,9 @@
 // The window's exercise session: the replay shows exactly replay(before, edits, k) with the k-th write as the only
 // highlighted cell and adds no history, and is dropped when the document changes elsewhere; a saved file is
 // reloaded; a syntax error names file:line and changes nothing; a student's own "memory ran out" is the student's
-// error; the selection must fit the exercise; an upsample runs on the whole mesh; show_state keeps history. Runs read
-// through the Exercises tab's pointer table are tested with the panel (ui/exercise_panel_test.cpp).
+// error; the selection must fit the exercise; a flip that loops over a big mesh is told so; an upsample runs on the
+// whole mesh; show_state keeps history. Runs read through the Exercises tab's pointer table are tested with the
+// panel (ui/exercise_panel_test.cpp).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -218,6 +219,32 @@ TEST(ExerciseSession, TheSelectionMustFitTheExercise) {
   EXPECT_EQ(session.last_run()->label, "mine: normal v3");
   EXPECT_TRUE(session.last_run()->report.equal);
   EXPECT_EQ(doc.history.undo_depth(), 0u);  // a normal changes no pointer
+}
+
+// The Exercises tab's verdict is compare()'s, locality bound included: a flip that loops over the halfedges of an
+// 80x70 grid first is wrong there, in the words the grader uses, and its writes still replay.
+TEST(ExerciseSession, AFlipThatLoopsOverABigMeshIsToldHowManyElementsItTouched) {
+  MeshDocument doc = make_document(build_halfedge_mesh(make_grid(80, 70)));
+  EdgeId middle;
+  for (EdgeId e : doc.mesh.edges()) {
+    const glm::dvec3 p = doc.mesh.position(doc.mesh.vertex(doc.mesh.halfedge(e)));
+    const glm::dvec3 q = doc.mesh.position(doc.mesh.vertex(doc.mesh.twin(doc.mesh.halfedge(e))));
+    if (p + q == glm::dvec3(81, 71, 0)) middle = e;  // the diagonal from (40, 35) to (41, 36)
+  }
+  ASSERT_TRUE(middle.valid());
+  const std::filesystem::path folder = testing::scratch_dir();
+  write_file(folder / "flip.lua", solution_flip_with("  for h in mesh:halfedges() do end", false));
+  ExerciseSession session(folder);
+  Selection selection = select(middle);
+  ASSERT_TRUE(session.run_mine(doc, selection).ok) << doc.message.text;
+  const ExerciseReport& report = session.last_run()->report;
+  ASSERT_FALSE(report.equal);
+  ASSERT_EQ(report.differences.size(), 1u) << report.summary();
+  EXPECT_EQ(report.differences[0].rfind("your flip_edge touched ", 0), 0u) << report.differences[0];
+  EXPECT_NE(report.differences[0].find(" elements of a mesh of 11200 faces (it wrote "), std::string::npos)
+      << report.differences[0];
+  EXPECT_GT(report.mine.touched->elements, doc.mesh.num_halfedges());
+  EXPECT_TRUE(session.can_replay(doc));
 }
 
 TEST(ExerciseSession, UpsampleRunsOnTheWholeMeshAndReplaysItsCreations) {

@@ -75,7 +75,9 @@ TEST(CliGrade, AFailingSubmissionIsStillAGradingThatWorked) {
       run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission bob --results out/r.json --tap");
   EXPECT_EQ(o.status, 0) << o.err;
   // With --tap, stdout is TAP only.
-  EXPECT_EQ(o.out.rfind("TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles\n", 0), 0u)
+  EXPECT_EQ(o.out.rfind(
+                "TAP version 14\n1..5\nnot ok 1 - 4.1 flip the middle edge of two triangles, then one amid 11200\n", 0),
+            0u)
       << o.out;
   EXPECT_TRUE(ends_with(o.out, "# score 2 / 10\n# 1 passed, 4 failed\n")) << o.out;
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "out" / "r.json")).at("score"), 2.0);

@@ -6,8 +6,8 @@
 // Map of this file (each part starts at its `// ---- name` banner):
 //   helpers                            contains, lesson_path, run_headless (a lesson through every step), said,
 //                                      colour_of, label_of, step_index, edit_screen, diamond
-//   part 4: edge flip                  the transcript (changed fields, the forgetful flip), the diagram's labels, the
-//                                      flip's check
+//   part 4: edge flip                  the transcript (changed fields, the forgetful flip, the fields a flip in a
+//                                      big grid changes), the diagram's labels, the flip's check
 //   part 5: edge split                 the transcript naming the new elements (a boundary split too), labels on the
 //                                      screen mesh
 //   part 6: Loop subdivision           the transcript's counts and distances, each phase's screen mesh, the Shift+L
@@ -24,13 +24,16 @@
 #include <filesystem>
 #include <iterator>
 #include <memory>
+#include <set>
 #include <sstream>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include <glm/geometric.hpp>
 
 #include "core/catmull_clark.h"
+#include "core/history.h"
 #include "core/linear_subdivision.h"
 #include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
@@ -124,8 +127,8 @@ HalfedgeMesh diamond() {
 // ---- part 4: edge flip -----------------------------------------------------------------------------
 
 TEST(LessonsB, EdgeFlipPassesHeadlessAndListsTheChangedFields) {
-  const std::string text = run_headless("4_edge_flip", 6);
-  EXPECT_EQ(text.rfind("Part 4: Edge flip (4_edge_flip.lua, 6 steps)\n", 0), 0u) << text;
+  const std::string text = run_headless("4_edge_flip", 7);
+  EXPECT_EQ(text.rfind("Part 4: Edge flip (4_edge_flip.lua, 7 steps)\n", 0), 0u) << text;
   EXPECT_TRUE(contains(text, "  > selection e0\n")) << text;
   EXPECT_TRUE(contains(text, "  > flip e0\n\n  Flipped. e now runs from d to c, and the mesh still passes validation."))
       << text;
@@ -145,6 +148,64 @@ TEST(LessonsB, EdgeFlipPassesHeadlessAndListsTheChangedFields) {
     EXPECT_TRUE(contains(text, std::string("  ") + line + "\n")) << line << "\n" << text;
   }
   EXPECT_TRUE(contains(text, "> click h3: wrong: That is h1 = h0.twin")) << text;
+}
+
+// The lesson's big grid: 80 x 70 squares, each cut in two; its diagonal from the vertex at (40, 35) to (41, 36).
+EdgeId big_grid_diagonal(const HalfedgeMesh& big) {
+  for (EdgeId e : big.edges()) {
+    glm::dvec3 p = big.position(big.vertex(big.halfedge(e))), q = big.position(big.vertex(big.twin(big.halfedge(e))));
+    if (p.x > q.x) std::swap(p, q);
+    if (p == glm::dvec3(40, 35, 0) && q == glm::dvec3(41, 36, 0)) return e;
+  }
+  return {};
+}
+
+TEST(LessonsB, EdgeFlipPassesHeadlessAskingHowManyFieldsAFlipInABigMeshChanges) {
+  const std::string text = run_headless("4_edge_flip", 7);
+  // What the core's flip of that diagonal changes, counted as the lesson counts it (m:diff), kind by kind.
+  const HalfedgeMesh big = build_halfedge_mesh(make_grid(80, 70));
+  HalfedgeMesh flipped = big;
+  ASSERT_TRUE(flip(flipped, big_grid_diagonal(big)).ok());
+  const std::vector<FieldChange> changes = diff(big, flipped);
+  std::set<ElementRef> halfedges, vertices, faces;
+  for (const FieldChange& c : changes) {
+    if (c.element.kind == ElementKind::Halfedge) halfedges.insert(c.element);
+    if (c.element.kind == ElementKind::Vertex) vertices.insert(c.element);
+    if (c.element.kind == ElementKind::Face) faces.insert(c.element);
+  }
+  ASSERT_EQ(halfedges.size() + vertices.size() + faces.size(), 8u);  // the two triangles' own elements, no edge
+  ASSERT_EQ(vertices.size(), 1u);
+  ASSERT_EQ(faces.size(), 1u);
+  const std::string count = std::to_string(changes.size());
+
+  const std::string question =
+      "  ? Flip the yellow edge: how many fields of the mesh change (a field is one pointer of one element, such as "
+      "h0.next or f0.halfedge)?\n";
+  EXPECT_TRUE(contains(text, "This grid has 11200 triangles (80 by 70 squares, each cut in two), 33900 halfedges."))
+      << text;
+  EXPECT_TRUE(contains(text, question)) << text;
+  // Too few: what else a flip rewrites; about the mesh's size: that is a rebuild of the face list.
+  EXPECT_TRUE(contains(text,
+                       "  > answer 2: wrong: The diagonal's two halfedges change (h0.vertex and h1.vertex), but so "
+                       "do the next pointers of all six halfedges of the two triangles"))
+      << text;
+  EXPECT_TRUE(contains(text,
+                       "  > answer 33600: wrong: That is about every element: a rebuild of the face list rewrites "
+                       "every face's corners (3 x 11200 = 33600 numbers)."))
+      << text;
+  EXPECT_TRUE(contains(text, "  > answer 10: right\n")) << text;
+  // Then, and only then, the count the core gives, the elements, and the face list's 3 x 11200 corners.
+  const std::string told = "The flip changed " + count +
+                           " fields (each a field of one element whose value differs after the flip, as m:diff lists "
+                           "them) of 8 elements: 6 halfedges, 1 vertex, 1 face, all in the two triangles at the edge "
+                           "(orange); the other 11198 triangles keep every field.";
+  EXPECT_TRUE(contains(text, told)) << text;
+  EXPECT_TRUE(contains(text, "writes 3 corners of each of the 11200 faces, 33600 numbers, about " +
+                                 std::to_string((33600 + changes.size() / 2) / changes.size()) + " times as many"))
+      << text;
+  EXPECT_LT(text.find(question), text.find(told));
+  // The last step runs the student's flip on that edge of the big grid too: the solution is right there.
+  EXPECT_TRUE(contains(text, "as the Exercises tab and the grader do.\n  > your turn flip.lua: right\n")) << text;
 }
 
 TEST(LessonsB, EdgeFlipLabelsEveryElementWithTheDiagramsName) {
@@ -216,6 +277,9 @@ TEST(LessonsB, EdgeFlipWaitsUntilTheEdgeReallyJoinsCAndD) {
 
 TEST(LessonsB, EdgeSplitPassesHeadlessNamingTheNewElements) {
   const std::string text = run_headless("5_edge_split", 7);
+  // The last step runs the student's split on the middle edge of a grid of 11200 triangles too: the solution is right.
+  EXPECT_TRUE(contains(text, "Last, the middle edge of a grid of 11200 triangles")) << text;
+  EXPECT_TRUE(contains(text, "as the Exercises tab and the grader do.\n  > your turn split.lua: right\n")) << text;
   EXPECT_TRUE(contains(text, "The new vertex m is v4 at (0, 0, 0), the midpoint of a and b. It has 4 neighbours"))
       << text;
   EXPECT_TRUE(contains(text,

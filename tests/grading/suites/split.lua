@@ -1,8 +1,9 @@
 -- Grading suite for part 5, split_edge(mesh, e) in split.lua: returns the new vertex at the midpoint, or nil for
 -- an edge beside a non-triangle. Every split is checked by expect.exercise, the window's own check: the core's split
 -- as the reference, validate(), the comparison up to renumbering (the ids a split allocates are the student's
--- choice), and the window's diagnosis. Splitting boundary edges is extra credit in the course: test 5.4 adds its
--- point on top of the base points.
+-- choice), and the window's diagnosis, which on a big mesh includes a split that touches far more than the two
+-- triangles at its edge. Splitting boundary edges is extra credit in the course: test 5.4 adds its point on top of
+-- the base points.
 suite{ name = "split_edge", files = {"split.lua"}, time_limit = 5, memory_mb = 64 }
 
 local vec3 = meshedit.vec3
@@ -26,10 +27,19 @@ local function edge_at(mesh, p)
   end
 end
 
-test{ number = "5.1", name = "split the middle edge of two triangles", points = 2,
+-- 11200 triangles: a split_edge that loops over the mesh touches thousands of elements there, where a split changes a
+-- handful (the window's locality bound, engine/script/exercise_locality.h). Its middle diagonal, found by where it is.
+local big = meshedit.grid(80, 70)
+local big_edge = edge_at(big, vec3(40.5, 35.5, 0))
+
+test{ number = "5.1", name = "split the middle edge of two triangles, then one amid 11200", points = 2,
   run = function(student, expect)
-    local _, mine = check_split(student, expect, meshedit.grid(1, 1), 2, "split_edge(e2) of a 1x1 grid")
+    local right, mine = check_split(student, expect, meshedit.grid(1, 1), 2, "split_edge(e2) of a 1x1 grid")
     expect.counts(mine, {vertices = 5, edges = 8, faces = 4, halfedges = 16}, "after split_edge(e2)")
+    if right then
+      check_split(student, expect, big, big_edge.id,
+                  "split_edge(" .. tostring(big_edge) .. ") in the middle of an 80x70 grid (11200 triangles)")
+    end
   end }
 
 test{ number = "5.2", name = "split each edge of a cube (one at a time)", points = 3, partial = true,

@@ -12,5 +12,5 @@ return {
   ["Split a boundary edge"] = { {choose = "2", feedback = "boundary loop, not a triangle"}, {choose = "1"},
     {selection = "e0"}, {split = "e0"} },
   ["Flip and split together"] = { {answer = 6, feedback = "minus sign"}, {answer = 0} },
-  ["Your turn"] = { {your_turn = "right"} },
+  ["Your turn"] = { {your_turn = "right"}, {your_turn = "right"} },
 }
