@@ -469,6 +469,7 @@ the file and it runs again; the lesson goes on when yours gives the reference's 
     exercise = "flip",
     mesh = rigged,
     element = names.e,
+    names = names,  -- a wrong verdict lists the diagram's names of the ids it mentions
     hint = "After the flip f0 holds h0, h3, h4 and f1 holds h1, h5, h2: set each face's and each vertex's halfedge "
       .. "to one that is still in it or still leaves it.",
   }
@@ -480,6 +481,7 @@ the mesh as it is (and return nothing). The lesson runs yours on a-c next.]]
     exercise = "flip",
     mesh = rigged,
     element = names.h7.edge,
+    names = names,
     hint = "If the face of e.halfedge or of its twin is a boundary face (f:is_boundary()), return before any write.",
   }
   say("Your `flip_edge` leaves a boundary edge alone, as the reference does. Last, the yellow edge in the middle "

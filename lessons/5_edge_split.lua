@@ -338,6 +338,11 @@ step("Your turn", function()
   camera "fit"
   local n = names_of(lopsided:edge(0))
   for _, name in ipairs(order) do label(n[name], name) end
+  -- The names a wrong verdict lists beside the ids: the old elements, and m, the one new vertex (split makes it
+  -- first, so its id is the next one); the new edges, faces and halfedges are named by what they join, since a
+  -- split that makes them in another order gives them other ids.
+  local diagram = { m = "v" .. lopsided:num_vertices() }
+  for name, element in pairs(n) do diagram[name] = element end
   say [[
 # Your code
 
@@ -350,6 +355,7 @@ not hold its halfedge.]]
     exercise = "split",
     mesh = lopsided,
     element = n.e,
+    names = diagram,
     hint = "m goes at the midpoint of a and b; after the split every face is a triangle of three halfedges whose "
       .. "next pointers close the cycle, and each one's face is that triangle.",
   }

@@ -12,7 +12,9 @@
 
 #include <lua.hpp>
 
+#include "core/ids.h"
 #include "script/bezier_bindings.h"
+#include "script/diagram_names.h"
 #include "script/exercises.h"
 #include "script/file_stamp.h"
 #include "script/lesson_api_support.h"
@@ -149,6 +151,7 @@ constexpr const char* kInputMeta = "meshedit.your_turn_input";
 struct HeldInput {
   Exercise exercise;
   ExerciseInput input;
+  DiagramNames names;  // names = {...}: the diagram's name of each storage id (diagram_names.h)
 };
 
 int held_input_gc(lua_State* L) {
@@ -158,6 +161,33 @@ int held_input_gc(lua_State* L) {
 
 HeldInput& check_held_input(lua_State* L, int index) {
   return *static_cast<HeldInput*>(luaL_checkudata(L, index, kInputMeta));
+}
+
+// names = {a = v2, h0 = "h3", ...} at `index`: each diagram name with its element (a handle or an id), as storage id
+// and diagram name.
+DiagramNames read_names(lua_State* L, int index) {
+  DiagramNames names;
+  lua_getfield(L, index, "names");
+  if (lua_isnil(L, -1)) {
+    lua_pop(L, 1);
+    return names;
+  }
+  if (!lua_istable(L, -1)) raise(L, "your_turn: names must be a table from the diagram's names to elements");
+  const int table = lua_gettop(L);
+  lua_pushnil(L);
+  while (lua_next(L, table) != 0) {
+    if (lua_type(L, -2) != LUA_TSTRING) raise(L, "your_turn: names' keys are the diagram's names, strings");
+    const std::string name = lua_tostring(L, -2);
+    const std::string id = luaL_tolstring(L, -1, nullptr);
+    lua_pop(L, 1);
+    if (!parse_element(id)) {
+      raise(L, "your_turn: names." + name + " must be an element (a handle or an id like \"h3\"), got " + id);
+    }
+    names.emplace_back(id, name);
+    lua_pop(L, 1);
+  }
+  lua_pop(L, 1);
+  return names;
 }
 
 // The wrong verdict's words: compare()'s first differences, the likely mistake first.
@@ -182,14 +212,15 @@ int api_check(lua_State* L) {
     raise(L, "your_turn: expected a table like your_turn{ exercise = \"flip\", mesh = m, element = \"e0\" }, got " +
                  type_name(L, 1));
   }
-  check_fields(L, 1, "your_turn", {"exercise", "mesh", "element", "points", "t", "patch", "u", "v", "hint"});
+  check_fields(L, 1, "your_turn", {"exercise", "mesh", "element", "points", "t", "patch", "u", "v", "hint", "names"});
   lua_getfield(L, 1, "hint");
   if (!lua_isnil(L, -1) && lua_type(L, -1) != LUA_TSTRING) raise(L, "your_turn: hint must be a string");
   lua_pop(L, 1);
   const Exercise exercise = read_exercise(L, 1);
   ExerciseInput input = read_input(L, 1, exercise);
+  DiagramNames names = read_names(L, 1);
   void* memory = lua_newuserdatauv(L, sizeof(HeldInput), 0);
-  new (memory) HeldInput{exercise, std::move(input)};
+  new (memory) HeldInput{exercise, std::move(input), std::move(names)};
   if (luaL_newmetatable(L, kInputMeta)) {
     lua_pushcfunction(L, held_input_gc);
     lua_setfield(L, -2, "__gc");
@@ -222,7 +253,12 @@ int api_run(lua_State* L) {
     std::unique_ptr<StudentCode> code = load_student_file(file, script.student_limits);
     const ExerciseReport report = check_exercise(*code, held.exercise, held.input);
     verdict.right = report.equal;
-    if (!report.equal) verdict.feedback = diagnosis(report);
+    if (!report.equal) {
+      verdict.feedback = diagnosis(report);
+      if (std::string legend = diagram_legend(verdict.feedback, held.names); !legend.empty()) {
+        verdict.feedback += "\n" + legend;
+      }
+    }
   } catch (const ScriptError& error) {  // the file does not load: its own file:line
     verdict.feedback = error.what();
   }

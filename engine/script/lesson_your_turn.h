@@ -7,6 +7,8 @@
 //       exercise: "curve" (points = {...}, t =), "patch" (patch = meshedit.patch(...), u =, v =), "normals" (mesh =,
 //       element = a vertex), "flip" / "split" (mesh =, element = an edge), "upsample" (mesh =), or the name of an
 //       exercise registered from scripts/exercises (scripted_exercise.h: mesh =, and element = what it takes).
+//       names = {a = v2, h0 = "h3", ...} (optional): the diagram's names of elements of the mesh, which a wrong
+//       verdict lists beside the storage ids it mentions (diagram_names.h).
 //       -> true once the student's function gives the reference's answer. Until then the step waits: the panel shows
 //          the diagnosis, and the file runs again each time it is saved.
 //

@@ -176,7 +176,9 @@ const std::vector<BuggyCase>& buggy_cases() {
       {"flip_breaks_face_cycle",
        {"h5.next is still h3 after your flip_edge, as before the call; the reference changes it: that pointer breaks "
         "the face cycle"}},
-      {"flip_forgets_faces", {"f0.halfedge is h1, but h1.face is f1"}},
+      // Lesson 4's verdict ends with the diagram's labels of the ids it names (the builder's h1 is the diagram's h2);
+      // the words before them are the grader's (window_grader_agreement_test.cpp).
+      {"flip_forgets_faces", {"(the diagram's labels: h1 is labelled h2)"}},
       {"flip_forgets_vertices", {"v0.halfedge is h0, but h0 leaves v3"}},
       // Right on the diamond and its boundary edge; the big grid's edge is where looping over the mesh shows.
       {"flip_scans_the_mesh",

@@ -8,9 +8,11 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <memory>
 #include <string>
 #include <vector>
 
+#include "core/ids.h"
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "script/exercises.h"
@@ -102,6 +104,46 @@ TEST(LessonYourTurn, AWrongFlipWaitsWithTheDiagnosisAndASaveRunsItAgain) {
   EXPECT_EQ(runner.said(), std::vector<std::string>{"the grid is as it was"});
 }
 
+// names = {...}: a wrong verdict ends with the diagram's labels of the ids it mentions, in the order it mentions
+// them, and keeps the diagnosis word for word; ids it does not mention, and ids labelled as themselves, are left out.
+TEST(LessonYourTurn, DiagramNamesAreListedBesideTheIdsTheVerdictMentions) {
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  // Forgets the faces' halfedges: "f0.halfedge is h0, but h0.face is f1".
+  write(dir / "student" / "flip.lua",
+        testing::read_text(testing::source_dir() / "tests" / "grading" / "students" / "flip_forgets_faces.lua"));
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  ASSERT_TRUE(runner.load(write(dir / "lesson.lua", R"lua(local grid = meshedit.grid(1, 1)
+step("Your turn", function()
+  show(grid)
+  your_turn { exercise = "flip", mesh = grid, element = "e2",
+    names = { x = grid:halfedge(0), g = "f1", f0 = "f0", far = "v3" } }
+end)
+)lua")))
+      << runner.error();
+  ASSERT_EQ(runner.step_state(), State::Waiting) << runner.error();
+  auto mine = load_student_file(dir / "student" / "flip.lua");
+  const auto grid = std::make_shared<const HalfedgeMesh>(build_halfedge_mesh(make_grid(1, 1)));
+  const ExerciseReport report = check_exercise(*mine, Exercise::FlipEdge, ExerciseInput::edge(grid, EdgeId(2)));
+  ASSERT_EQ(report.differences.size(), 1u);
+  EXPECT_EQ(report.differences[0],
+            "after your flip_edge the mesh is not valid (1 problem): f0.halfedge is h0, but "
+            "h0.face is f1");
+  EXPECT_EQ(runner.waiting_for().feedback,
+            report.differences[0] + "\n(the diagram's labels: h0 is labelled x, f1 is labelled g)");
+
+  // A names value that is no element is an error at the lesson's line.
+  LessonRunner bad(host);
+  bad.set_student_folder(dir / "student");
+  ASSERT_TRUE(bad.load(write(dir / "bad.lua", R"lua(step("Your turn", function()
+  your_turn { exercise = "flip", mesh = meshedit.grid(1, 1), element = "e2", names = { a = 3 } }
+end)
+)lua")));
+  EXPECT_EQ(bad.error(), "bad.lua:2: your_turn: names.a must be an element (a handle or an id like \"h3\"), got 3");
+}
+
 TEST(LessonYourTurn, ARunawayLoopIsStoppedByTheStudentLimitsAndSaidSo) {
   const fs::path dir = testing::scratch_dir();
   fs::create_directories(dir / "student");
@@ -152,7 +194,7 @@ TEST(LessonYourTurn, BadArgumentsFailTheStepAtTheLessonsLine) {
              "lesson.lua:3: your_turn: the flip exercise needs mesh = a mesh, got nil");
   fails_with("your_turn { exercise = 'flip', mesh = m, edge = 'e2' }",
              "lesson.lua:3: your_turn: unknown field 'edge' (fields: exercise, mesh, element, points, t, patch, u, v, "
-             "hint)");
+             "hint, names)");
   runner.set_student_folder({});
   fails_with("your_turn { exercise = 'upsample', mesh = m }",
              "lesson.lua:3: your_turn: no student folder (meshedit lesson FILE --headless --student DIR)");
