@@ -1,9 +1,10 @@
 -- Part 1: Bézier curves by de Casteljau's algorithm: the levels at a parameter t (level 0 is the control points,
--- level k comes after k steps), the curve traced as t moves, splitting a curve in two, the Bernstein weights and the
--- derivative. Each step asks the student to predict or to act before it shows; the numbers the lesson prints are
--- computed by the project's own Bézier code (meshedit.curve), so the text never drifts from what the curve view
--- draws, except a few worked values of this curve written in its text (3/8, t = 1/3, the polygon's length 6.47 and
--- quarter point (0.72, 1.45), C'(0.5) = (4.5, 0)), each checked against the core by tests/script/lessons_a_test.cpp.
+-- level k comes after k steps), the curve traced as t moves, a curve of six control points at every level (the
+-- write-up's figure), splitting a curve in two, the Bernstein weights and the derivative. Each step asks the
+-- student to predict or to act before it shows; the numbers the lesson prints are computed by the project's own
+-- Bézier code (meshedit.curve), so the text never drifts from what the curve view draws, except a few worked values
+-- of this curve written in its text (3/8, t = 1/3, the polygon's length 6.47 and quarter point (0.72, 1.45),
+-- C'(0.5) = (4.5, 0)), each checked against the core by tests/script/lessons_a_test.cpp.
 -- The last step runs the student's own evaluate_step (your_turn) at t = 0.25, where swapped weights show.
 -- CI runs it headless:
 --   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/script/lessons/1_de_casteljau_answers.lua \
@@ -187,6 +188,45 @@ at the view's t, and follow it.]]
   }
   say("Yes, C(0.25) = " .. pt(quarter) .. ". That is not a quarter of the way along the control polygon (6.47 long:"
     .. " a quarter of it is still on its first side, near (0.72, 1.45)): the curve moves at its own speed.")
+end)
+
+-- A curve of six control points, as the assignment's write-up asks for one: a wave that crosses its own chord.
+local six = meshedit.curve { {0, 0, 0}, {1, 3, 0}, {2.5, -1, 0}, {3.5, 3.5, 0}, {5, -0.5, 0}, {6, 1.5, 0} }
+
+step("Six points, every level", function()
+  show(six)
+  say [[
+The write-up asks for a curve of **six** control points with every level of de Casteljau drawn. Here is one: a
+quintic, degree 5.]]
+  answer {
+    "How many times must you press E, from the control points alone, until the view shows the curve's point?",
+    number = #six.points - 1,
+    tolerance = 0,
+    feedback = function(value)
+      if value == #six.points then
+        return "Six would be one step past the point: each step removes one point, and six points reach one after "
+          .. "five steps."
+      end
+      if value == 3 then return "Three steps take a cubic, four points, to its point; this curve has six." end
+      if value == 1 then return "One step gives level 1, five points: each step removes only one." end
+    end,
+    hint = "Level k has 6 - k points. Which k leaves one?",
+  }
+  local presses = 0
+  live(function()
+    local t = curve_t()
+    if not t then return "(the curve view is not on screen)" end
+    return string.format("**t = %.2f**\n\n%s", t, level_lines(on_screen(), t))
+  end)
+  say "Now press **E** five times, one level at a time, and watch each level's points slide along the last one's sides."
+  while presses < #six.points - 1 do
+    wait_for { key = "E", hint = "Press E: level " .. (presses + 1) .. " of " .. (#six.points - 1) }
+    presses = presses + 1
+  end
+  local t = curve_t() or 0.5
+  say("Every level at t = " .. string.format("%.2f", t) .. ": " .. #six:levels(t) .. " levels from the 6 control "
+    .. "points down to C(t) = " .. pt(six:evaluate(t)) .. ". Drag t and the whole pyramid follows; press **C** to "
+    .. "draw the curve through all its points. That picture, at two or three values of t, is the write-up's.")
 end)
 
 step("Splitting a curve", function()

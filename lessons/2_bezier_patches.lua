@@ -1,5 +1,6 @@
 -- Part 2: Bézier patches: a 4x4 grid of control points, evaluated as four curves in u (the rows) and then
--- one curve in v (the column through the row points); then the Utah teapot, 32 such patches. Each step asks the
+-- one curve in v (the column through the row points); the normal at (u, v) from the two tangents, on the probe the
+-- student moves; then the Utah teapot, 32 such patches, and what makes two of them meet smoothly. Each step asks the
 -- student to predict before it shows, and names the likely mistakes (u and v swapped, rows and columns swapped). Numbers come
 -- from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from assets/teapot.bez,
 -- found next to this file with lesson_file(). The last step runs the student's own evaluate (your_turn) at the
@@ -24,6 +25,11 @@ local hill = meshedit.patch(hill_points)
 
 local function pt(p)
   return string.format("(%g, %g, %g)", p.x, p.y, p.z)
+end
+
+-- A unit vector with three decimals: "(-0.647, 0.144, 0.749)".
+local function unit(n)
+  return string.format("(%.3f, %.3f, %.3f)", n.x, n.y, n.z)
 end
 
 local function near(p, q, tolerance)
@@ -152,6 +158,91 @@ Doing the columns in v first and then a row in u gives the very same point; Mesh
 order, rows first.]]
 end)
 
+-- The patch with rows and columns swapped: its rows are `patch`'s columns.
+local function transposed(patch)
+  local points = {}
+  for r = 0, 3 do
+    for c = 0, 3 do points[c * 4 + r + 1] = patch.points[r * 4 + c + 1] end
+  end
+  return meshedit.patch(points)
+end
+
+-- The tangents at (u, v) as lesson 1 found a curve's: 3 times the difference of the last level's two points, for
+-- the column curve through the rows at u (along v) and for the row curve through the columns at v (along u); their
+-- cross product, normalised, is the normal.
+local function tangents(patch, u, v)
+  local along_v = patch:evaluation(u, v).column_levels[3]
+  local along_u = transposed(patch):evaluation(v, u).column_levels[3]
+  local tu, tv = (along_u[2] - along_u[1]) * 3, (along_v[2] - along_v[1]) * 3
+  return tu, tv, tu:cross(tv):normalized()
+end
+
+step("The normal at (u, v)", function()
+  show(hill)
+  camera "fit"
+  local top = hill:evaluate(0.5, 0.5)
+  local tu, tv, n = tangents(hill, 0.5, 0.5)
+  say [[
+Shading a patch needs its **normal** at every (u, v). Lesson 1 found a curve's tangent in its last level: 3 times
+the difference of the two level-2 points. A patch has a curve through every point in each direction: the column
+curve (along v) and the row curve through the four columns at v (along u), so it has two tangents.]]
+  local up = "Straight up"
+  choose {
+    "At the top of the hill, (u, v) = (0.5, 0.5), which way does the normal point?",
+    options = { up, "Along u, the way the rows run", "Toward the corner (0, 0)" },
+    answer = up,
+    feedback = {
+      ["Along u, the way the rows run"] = "Along u is a tangent: it lies in the surface. The normal is square to "
+        .. "both tangents.",
+      ["Toward the corner (0, 0)"] = "The hill is the same seen from every side of its middle, so at the middle "
+        .. "nothing picks out one corner.",
+      [up] = "Yes: at the top both tangents are level, so the normal, square to both, points straight up.",
+    },
+    hint = "The normal is square to the surface. How does the surface lie at the very top of the hill?",
+  }
+  arrow(top, top + n, "blue")
+  say("At (0.5, 0.5) the tangents are Tu = " .. pt(tu) .. " and Tv = " .. pt(tv) .. "; their cross product, "
+    .. "normalised, is n = " .. unit(n) .. " (blue arrow, from P = " .. pt(top) .. ").")
+  live(function()
+    local u, v = patch_uv()
+    if not u then return "(the patch view is not on screen)" end
+    local a, b, normal = tangents(hill, u, v)
+    return string.format("At the probe (u, v) = (%.2f, %.2f): Tu = %s, Tv = %s, n = %s", u, v, pt(a), pt(b),
+      unit(normal))
+  end)
+  say [[
+Now move the probe (the **u** and **v** sliders of the Patches panel, on the right) onto the slope: **u below
+0.3**, with v between 0.3 and 0.7.]]
+  local u = wait_for {
+    hint = "Drag u below 0.3, v between 0.3 and 0.7",
+    condition = function()
+      local pu, pv = patch_uv()
+      if pu and pu < 0.3 and pv >= 0.3 and pv <= 0.7 then return pu end
+      return false
+    end,
+  }
+  local _, v = patch_uv()
+  local p = hill:evaluate(u, v)
+  local _, _, slope = tangents(hill, u, v)
+  clear()
+  arrow(p, p + slope, "blue")
+  local down = "Away from the top, toward u = 0"
+  choose {
+    "The blue arrow is the normal at your probe. Which way does it lean?",
+    options = { down, "Toward the top", "It points straight up" },
+    answer = slope.x < 0 and down or "Toward the top",
+    feedback = {
+      ["Toward the top"] = "The slope rises toward the top, so a normal square to it tips back, away from the top.",
+      ["It points straight up"] = string.format("Its x is %.3f: not 0. Only where the surface is level does it "
+        .. "point straight up.", slope.x),
+      [down] = "Yes: the surface rises toward the top, and the normal, square to it, tips the other way.",
+    },
+    hint = "Picture a ramp rising to the right: which way does a stick standing square to it lean?",
+  }
+  say("At (" .. string.format("%.2f, %.2f", u, v) .. ") the normal is " .. unit(slope) .. ". Phong shading in part 3 "
+    .. "uses normals like these; here each comes straight from the two tangents.")
+end)
+
 step("The Utah teapot", function()
   local patches = meshedit.load_patches(lesson_file("../assets/teapot.bez"))
   show(patches)
@@ -211,9 +302,27 @@ Why do 32 separate patches look like one smooth pot? Look at one edge of a patch
     .. " and the curve of its first row gives " .. pt(on_curve) .. ". "
     .. (on_patch == on_curve and "The same point." or "They differ!"))
   say [[
-Two patches that share the four points of an edge therefore share the whole edge: no gaps. The
-teapot's modeller also kept, along most edges, the control points on either side in line, so the surface
-turns smoothly from one patch to the next.]]
+Two patches that share the four points of an edge therefore share the whole edge: no gaps.]]
+  local smooth = "The points next to the edge, on both sides, in line with it"
+  choose {
+    "No gap is not yet smooth: the surface could still fold along the edge. What else must the two patches' "
+      .. "control points do for the surface to turn smoothly across it?",
+    options = { smooth, "Share their four corners", "Nothing more: a shared edge is smooth" },
+    answer = smooth,
+    feedback = {
+      ["Share their four corners"] = "Sharing the edge's four points already makes them share its corners; the "
+        .. "question is what happens across the edge, not along it.",
+      ["Nothing more: a shared edge is smooth"] = "Two curves can meet at a point and still make a corner there: "
+        .. "lesson 1's tangent at t = 0 is 3 (P1 - P0), set by the point next to the end.",
+      [smooth] = "Yes: across the edge, each column curve's tangent at its end is 3 (P1 - P0), set by the row next "
+        .. "to the edge. When the row before the edge on one patch, the edge and the row after it on the other lie "
+        .. "in line (and evenly spaced), the tangents across the edge agree and the surface turns smoothly.",
+    },
+    hint = "Think of lesson 1: what sets a curve's tangent at its first point?",
+  }
+  say [[
+The teapot's modeller kept, along most edges, the control points on either side in line, so the surface turns
+smoothly from one patch to the next.]]
 end)
 
 step("Your turn", function()

@@ -208,6 +208,7 @@ void EditorApp::draw_patch_view() {
     }
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
+  draw_lesson_arrows();  // a lesson's arrows (a patch normal) over the surface, as over a mesh
 }
 
 void EditorApp::apply_view_request(const ViewRequest& request) {

@@ -214,6 +214,7 @@ class EditorApp {
   // The curve view's state (what a lesson reads with curve_t() and curve_points(); the `curve-t` action sets its t).
   CurveEditorState& curve_editor() { return curve_; }
   const CurveEditorState& curve_editor() const { return curve_; }
+  const PatchViewState& patch_view() const { return patches_; }
   // The "mine" switches of the curve and patch views (M), with their results.
   BezierMine& bezier_mine() { return bezier_mine_; }
 
@@ -320,7 +321,8 @@ class EditorApp {
   bool apply_key(int key, KeyMods mods);
   bool run_key_command(KeyCommand command);  // what a row of app/key_bindings.h does; whether it did something
   void press(KeyCommand command);            // handle_key with the command's key: what a menu item for it does
-  void draw_lesson_marks();                  // the lesson's highlights (its labels: draw_labels)
+  void draw_lesson_marks();                  // the lesson's highlights and arrows (its labels: draw_labels)
+  void draw_lesson_arrows();                 // the lesson's arrows, over the mesh view or the patch view
   void draw_edit_animation();                // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);

@@ -159,6 +159,11 @@ void EditorApp::draw_lesson_marks() {
     add_highlight(overlay, mesh, element, rgba);
   }
   overlay_renderer_->draw(camera_, viewport(), overlay);
+  draw_lesson_arrows();
+}
+
+void EditorApp::draw_lesson_arrows() {
+  const LessonMarks& marks = lesson_host_->marks();
   if (marks.arrows.empty()) return;
   // Arrows (normals, directions) as solid where the mesh does not hide them, and faint where it does: a normal on the
   // far side of a closed mesh shows as what it is.

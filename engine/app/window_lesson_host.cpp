@@ -1,6 +1,8 @@
 // WindowLessonHost: see window_lesson_host.h.
 #include "app/window_lesson_host.h"
 
+#include <algorithm>
+
 #include "app/editor_app.h"
 
 namespace meshedit {
@@ -55,6 +57,12 @@ std::optional<CurveReading> WindowLessonHost::curve_reading() const {
   if (app_.mode() != ViewMode::Curve) return std::nullopt;
   const CurveEditorState& curve = app_.curve_editor();
   return CurveReading{curve.t, curve.curve.control_points};
+}
+
+std::optional<PatchReading> WindowLessonHost::patch_reading() const {
+  if (app_.mode() != ViewMode::Patches) return std::nullopt;
+  const PatchViewState& patches = app_.patch_view();
+  return PatchReading{patches.u, patches.v, static_cast<size_t>(std::max(patches.selected_patch, 0))};
 }
 
 }  // namespace meshedit

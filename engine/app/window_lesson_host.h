@@ -7,7 +7,8 @@
 //   the student's view.
 // - Highlights, labels and arrows live in LessonMarks until clear_annotations() (each step start); ids that are not
 //   in the shown mesh are kept but draw nothing. Arrows are drawn over the mesh view only.
-// - curve_reading() reads the curve view the student sees (its t and control points) while it is on screen.
+// - curve_reading() reads the curve view the student sees (its t and control points) while it is on screen, and
+//   patch_reading() the patch view's (u, v) probe while the patch view is.
 #pragma once
 
 #include <string>
@@ -49,6 +50,7 @@ class WindowLessonHost : public LessonHost {
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override;
   std::optional<CurveReading> curve_reading() const override;
+  std::optional<PatchReading> patch_reading() const override;
 
   const LessonMarks& marks() const { return marks_; }
 

@@ -64,6 +64,7 @@ void HeadlessHost::show_curve(const BezierCurve& curve) {
 void HeadlessHost::show_patches(const std::vector<BezierPatch>& patches) {
   calls_.push_back("show_patches " + std::to_string(patches.size()));
   patches_ = patches;
+  patch_probe_ = {};
   curve_.reset();
   shown_mesh_.reset();
   screen_mesh_.reset();
@@ -95,6 +96,16 @@ void HeadlessHost::clear_annotations() {
 std::optional<CurveReading> HeadlessHost::curve_reading() const {
   if (!curve_) return std::nullopt;
   return CurveReading{curve_t_, curve_->control_points};
+}
+
+std::optional<PatchReading> HeadlessHost::patch_reading() const {
+  if (patches_.empty()) return std::nullopt;
+  return patch_probe_;
+}
+
+void HeadlessHost::set_patch_uv(double u, double v) {
+  if (!std::isnan(u)) patch_probe_.u = std::clamp(u, 0.0, 1.0);
+  if (!std::isnan(v)) patch_probe_.v = std::clamp(v, 0.0, 1.0);
 }
 
 void HeadlessHost::set_curve_t(double t) {

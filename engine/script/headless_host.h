@@ -14,7 +14,9 @@
 // - current_mesh() always returns a fresh copy, so the runner and a lesson can never change this host's
 //   state through it.
 // - The curve view's t starts at 0.5 with each shown curve, as the window's does; set_curve_t clamps it to [0, 1] and
-//   ignores NaN, as the window's slider. curve_reading() is nullopt while no curve is shown.
+//   ignores NaN, as the window's slider. curve_reading() is nullopt while no curve is shown. Likewise the patch view's
+//   probe starts at (0.5, 0.5) with each shown set of patches (set_patch_uv), and patch_reading() is nullopt while
+//   none is shown.
 #pragma once
 
 #include <map>
@@ -41,11 +43,13 @@ class HeadlessHost : public LessonHost {
   std::shared_ptr<HalfedgeMesh> current_mesh() const override;
   ElementRef current_selection() const override { return selection_; }
   std::optional<CurveReading> curve_reading() const override;
+  std::optional<PatchReading> patch_reading() const override;
 
   // ---- what a test (or the headless command) does in the student's place ----
   void set_current_mesh(std::shared_ptr<HalfedgeMesh> mesh) { screen_mesh_ = std::move(mesh); }
   void set_selection(ElementRef element) { selection_ = element; }
   void set_curve_t(double t);
+  void set_patch_uv(double u, double v);  // each clamped to [0, 1]; NaN ignored, as the patch view's sliders
 
   // ---- what was asked ----
   const std::vector<std::string>& calls() const { return calls_; }
@@ -75,6 +79,7 @@ class HeadlessHost : public LessonHost {
   std::map<ElementRef, std::string> labels_;
   std::vector<Arrow> arrows_;
   double curve_t_ = 0.5;
+  PatchReading patch_probe_;
   std::vector<CameraRequest> cameras_;
   ElementRef selection_;
 };

@@ -34,11 +34,12 @@ const AnswerField kAnswerFields[] = {{"key", Kind::Key},
                                      {"choose", Kind::Choose},
                                      {"answer", Kind::Value},
                                      {"curve_t", Kind::CurveT},
+                                     {"patch_uv", Kind::PatchUv},
                                      {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
     "key, click, selection, button, flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate, "
-    "open_repaired, choose, answer, curve_t or your_turn";
+    "open_repaired, choose, answer, curve_t, patch_uv or your_turn";
 
 // The answers file's text, read under the size cap; not a regular file or unreadable: "<path>: <why>".
 std::string read_text(const std::filesystem::path& path) {
@@ -66,6 +67,20 @@ std::string value_text(lua_State* L, const std::string& where) {
     lua_rawgeti(L, -1, i);
     if (lua_type(L, -1) != LUA_TNUMBER) throw ScriptError(usage);
     text += (text.empty() ? "" : ", ") + number_text(lua_tonumber(L, -1));
+    lua_pop(L, 1);
+  }
+  return text;
+}
+
+// The value at the top of the stack as a patch_uv answer, {u, v}: "0.25 0.5".
+std::string patch_uv_text(lua_State* L, const std::string& where) {
+  const std::string usage = where + ": patch_uv must be {u, v}, two numbers from 0 to 1";
+  if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) throw ScriptError(usage);
+  std::string text;
+  for (lua_Integer i = 1; i <= 2; ++i) {
+    lua_rawgeti(L, -1, i);
+    if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) throw ScriptError(usage);
+    text += (text.empty() ? "" : " ") + number_text(lua_tonumber(L, -1));
     lua_pop(L, 1);
   }
   return text;
@@ -109,6 +124,8 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
       if (answer.kind != Kind::Triangulate) answer.value = "loop";
     } else if (answer.kind == Kind::Value) {
       answer.value = value_text(L, where);
+    } else if (answer.kind == Kind::PatchUv) {
+      answer.value = patch_uv_text(L, where);
     } else if (answer.kind == Kind::CurveT) {
       if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
         throw ScriptError(where + ": curve_t must be a number from 0 to 1");
@@ -140,7 +157,7 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
 bool ScriptedAnswer::is_edit() const {
   return kind == Kind::Flip || kind == Kind::Split || kind == Kind::Collapse || kind == Kind::Subdivide ||
          kind == Kind::SubdividePhase || kind == Kind::Triangulate || kind == Kind::OpenRepaired ||
-         kind == Kind::CurveT;
+         kind == Kind::CurveT || kind == Kind::PatchUv;
 }
 
 ScriptedAnswers read_scripted_answers(const std::filesystem::path& path, const LuaLimits& limits) {

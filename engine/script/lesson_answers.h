@@ -17,8 +17,8 @@
 // repaired copy of that file, a path from the lesson's folder)); each of these menu commands also tells the lesson
 // its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
 // ({choose = "h4"} for choose{}; a click answers pick{};
-// {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), and {curve_t = 0.25} (the curve view's t,
-// as its slider sets it).
+// {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), {curve_t = 0.25} (the curve view's t,
+// as its slider sets it) and {patch_uv = {0.25, 0.5}} (the patch view's probe, as its u and v sliders set it).
 //
 // A choose, click or answer may also carry `feedback = "words"`: the answer must then be judged wrong, with feedback
 // containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
@@ -60,15 +60,17 @@ struct ScriptedAnswer {
     Choose,
     Value,
     CurveT,
+    PatchUv,
     YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...
-  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right"; the scheme of
-                      // subdivide and subdivide_phase ("loop" for loop_phase)
+  std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right", "0.25 0.5"
+                      // (patch_uv); the scheme of subdivide and subdivide_phase ("loop" for loop_phase)
   std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
 
-  bool is_edit() const;  // an edit of the scene (flip ... subdivide_phase, curve_t): always used, never "not awaited"
+  bool is_edit() const;  // an edit of the scene (flip ... subdivide_phase, curve_t, patch_uv): always used, never
+                         // "not awaited"
 };
 using ScriptedAnswerList = std::deque<ScriptedAnswer>;
 

@@ -33,8 +33,8 @@
 // Invariants:
 // - `lesson{}` and `step()` are accepted only while the file's top level runs (phase Loading); scene calls
 //   (say, show, highlight, label, clear, camera, arrow, live, plot) and waits and questions only while a step runs
-//   (phase Step); the calls that only read the view (current_mesh, selection, curve_t, curve_points) also while a
-//   live block or a plot's marker is evaluated (phase Live). Anything else is a Lua error naming the call.
+//   (phase Step); the calls that only read the view (current_mesh, selection, curve_t, curve_points, patch_uv) also
+//   while a live block or a plot's marker is evaluated (phase Live). Anything else is a Lua error naming the call.
 // - Every error raised here starts with the lesson's `file:line:` (the innermost frame that is not the API's
 //   own Lua prelude), so the panel can point at the line the author wrote.
 // - wait_for and animate yield only from the step's own coroutine (`step_thread`); before yielding they set

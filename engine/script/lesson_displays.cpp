@@ -1,4 +1,4 @@
-// live, plot, arrow, curve_t and curve_points (see lesson_displays.h).
+// live, plot, arrow, curve_t, curve_points and patch_uv (see lesson_displays.h).
 #include "script/lesson_displays.h"
 
 #include <algorithm>
@@ -267,6 +267,19 @@ int api_curve_points(lua_State* L) {
   return 1;
 }
 
+int api_patch_uv(lua_State* L) {
+  require_reading(L, "patch_uv()");
+  const std::optional<PatchReading> patch = script_of(L).host->patch_reading();
+  if (!patch) {
+    lua_pushnil(L);
+    return 1;
+  }
+  lua_pushnumber(L, patch->u);
+  lua_pushnumber(L, patch->v);
+  lua_pushinteger(L, static_cast<lua_Integer>(patch->selected_patch) + 1);
+  return 3;
+}
+
 }  // namespace
 
 void evaluate_live(lua_State* L, LessonScript& script, LessonLive& live) {
@@ -294,7 +307,8 @@ void open_lesson_displays(LuaRuntime& runtime, LessonScript& script) {
                {"plot", lesson_guarded<api_plot>},
                {"arrow", lesson_guarded<api_arrow>},
                {"curve_t", lesson_guarded<api_curve_t>},
-               {"curve_points", lesson_guarded<api_curve_points>}});
+               {"curve_points", lesson_guarded<api_curve_points>},
+               {"patch_uv", lesson_guarded<api_patch_uv>}});
 }
 
 }  // namespace meshedit

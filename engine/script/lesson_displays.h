@@ -1,5 +1,5 @@
 // The lesson globals that show things which follow the view, and read it: live text, plots in the panel, arrows in
-// the scene, and the curve view's t and control points.
+// the scene, the curve view's t and control points, and the patch view's probe.
 //
 // Lua API:
 //   live(function() return "t = " .. string.format("%.2f", curve_t()) end)
@@ -14,9 +14,12 @@
 //                                step's other marks (default colour: the last-edit colour)
 //   curve_t()      -> the curve view's t, or nil when the curve view is not on screen
 //   curve_points() -> the curve view's control points as vec3 (z = 0), as the student left them, or nil
+//   patch_uv()     -> u, v, i: the patch view's probe and the probed patch's index in the shown list (from 1), or nil
+//                     when the patch view is not on screen
 //
 // Invariants:
-// - A live function or a marker runs in phase Live: it may read (selection, current_mesh, curve_t, curve_points) but
+// - A live function or a marker runs in phase Live: it may read (selection, current_mesh, curve_t, curve_points,
+//   patch_uv) but
 //   not change anything (say, show, highlight, wait_for... are errors naming the call).
 // - An error in a live function or a marker is kept with its block as "lesson.lua:LINE: message" (the place live() or
 //   plot{} was called when the message has none) and stops that block for the rest of the step; the step goes on. A
@@ -29,7 +32,7 @@
 
 namespace meshedit {
 
-// Defines live, plot, arrow, curve_t and curve_points in `runtime`, bound to `script`.
+// Defines live, plot, arrow, curve_t, curve_points and patch_uv in `runtime`, bound to `script`.
 void open_lesson_displays(LuaRuntime& runtime, LessonScript& script);
 
 // Evaluates `live` (or the marker of `plot`) on thread L in phase Live, setting its text (marker) or its error. Raises

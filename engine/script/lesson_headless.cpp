@@ -300,6 +300,15 @@ class HeadlessDriver {
         }
         break;
       }
+      case Answer::Kind::PatchUv: {
+        if (!host_.patch_reading()) return with_step("answer patch_uv: no patches on screen", step_name_);
+        char* rest = nullptr;
+        const double u = std::strtod(answer.value.c_str(), &rest);
+        host_.set_patch_uv(u, std::strtod(rest, nullptr));
+        out_ << "  > patch u, v = " << host_.patch_reading()->u << ", " << host_.patch_reading()->v;
+        used = true;
+        break;
+      }
       case Answer::Kind::CurveT: {
         if (!host_.curve_reading()) return with_step("answer curve_t: no curve on screen", step_name_);
         host_.set_curve_t(std::strtod(answer.value.c_str(), nullptr));

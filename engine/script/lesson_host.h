@@ -51,6 +51,13 @@ struct CurveReading {
   std::vector<glm::dvec2> control_points;  // as the student left them (dragged, added, removed)
 };
 
+// What the patch view shows, for a lesson that reads it (patch_uv()).
+struct PatchReading {
+  double u = 0.5;  // the (u, v) probe, each in [0, 1]
+  double v = 0.5;
+  size_t selected_patch = 0;  // the probed patch's index in the shown list
+};
+
 struct ViewRequest {
   std::optional<bool> halfedges;  // the halfedge arrows inside their faces
   std::optional<bool> wireframe;
@@ -86,6 +93,8 @@ class LessonHost {
   virtual ElementRef current_selection() const = 0;
   // The curve view's t and control points, or nullopt when the curve view is not on screen.
   virtual std::optional<CurveReading> curve_reading() const = 0;
+  // The patch view's probe, or nullopt when the patch view is not on screen.
+  virtual std::optional<PatchReading> patch_reading() const = 0;
 };
 
 }  // namespace meshedit

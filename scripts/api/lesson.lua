@@ -1,8 +1,8 @@
 ---@meta lesson
 -- LuaLS type descriptions of the globals a lesson file sees (engine/script/lesson_api.h), for editors only.
 -- A lesson also has the whole `meshedit` module (meshedit.lua). lesson{} and step() only at the top level;
--- the others only while a step runs (lesson_file anywhere; selection, current_mesh, curve_t and curve_points also
--- inside a live() function or a plot's marker).
+-- the others only while a step runs (lesson_file anywhere; selection, current_mesh, curve_t, curve_points and
+-- patch_uv also inside a live() function or a plot's marker).
 
 ---@class LessonInfo
 ---@field title? string defaults to the file's stem
@@ -184,8 +184,8 @@ function live(fn) end
 ---@param spec PlotSpec
 function plot(spec) end
 
----An arrow over the mesh view, from one point to another (the shown mesh's coordinates), cleared with the step's
----other marks. Solid where the mesh does not hide it, faint where it does.
+---An arrow over the mesh view or the patch view, from one point to another (the shown mesh's or patches'
+---coordinates), cleared with the step's other marks. Solid where the mesh does not hide it, faint where it does.
 ---@param from point
 ---@param to point
 ---@param colour? Colour default: the last-edit colour (vermillion)
@@ -199,3 +199,10 @@ function curve_t() end
 ---when the curve view is not on screen.
 ---@return vec3[]?
 function curve_points() end
+
+---The patch view's (u, v) probe and the probed patch's index in the shown list (from 1), or nil when the patch view
+---is not on screen.
+---@return number? u
+---@return number? v
+---@return integer? patch
+function patch_uv() end

@@ -207,8 +207,8 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   };
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
-             "collapse, subdivide, subdivide_phase, loop_phase, triangulate, open_repaired, choose, answer, curve_t or "
-             "your_turn)");
+             "collapse, subdivide, subdivide_phase, loop_phase, triangulate, open_repaired, choose, answer, curve_t, "
+             "patch_uv or your_turn)");
   fails_with("return { [1] = { {subdivide = 'butterfly'} } }\n",
              "answers.lua: step 1, answer 1: subdivide must be true or \"loop\", \"catmull-clark\" or \"linear\", got "
              "'butterfly'");

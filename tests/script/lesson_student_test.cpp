@@ -60,7 +60,7 @@ struct Lesson {
   size_t steps;
 };
 const std::vector<Lesson> kLessons = {
-    {"curve", "1_de_casteljau", 9}, {"patch", "2_bezier_patches", 6}, {"normals", "3_halfedge_walks", 7},
+    {"curve", "1_de_casteljau", 10}, {"patch", "2_bezier_patches", 7}, {"normals", "3_halfedge_walks", 7},
     {"flip", "4_edge_flip", 7},     {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 12},
 };
 

@@ -52,8 +52,8 @@ std::filesystem::path lesson_path(const std::string& stem) {
 TEST(LessonsA, DeCasteljauPassesEveryStep) {
   const Headless r = run("1_de_casteljau");
   ASSERT_EQ(r.outcome.failure, "") << r.text;
-  EXPECT_EQ(r.outcome.steps, 9u);
-  EXPECT_EQ(r.outcome.passed, 9u);
+  EXPECT_EQ(r.outcome.steps, 10u);
+  EXPECT_EQ(r.outcome.passed, 10u);
   // The levels of (0,0) (1,2) (3,2) (4,0) at the view's t, live: at t = 0.5 first, then at 0.25 after the move.
   EXPECT_TRUE(contains(r.text, "- level 1: (0.5, 1), (2, 2), (3.5, 1)\n")) << r.text;
   EXPECT_TRUE(contains(r.text, "- level 2: (1.25, 1.5), (2.75, 1.5)\n")) << r.text;
@@ -125,7 +125,7 @@ TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndItsHodograph) {
   ASSERT_TRUE(host.shown_curve().has_value());
   EXPECT_EQ(host.shown_curve()->control_points, (std::vector<glm::dvec2>{{0, 0}, {1, 2}, {3, 2}, {4, 0}}));
   // "The hodograph": the derivative's control points, 3 times the differences of the cubic's.
-  runner.go_to(7);
+  runner.go_to(8);
   ASSERT_EQ(runner.error(), "");
   ASSERT_TRUE(host.shown_curve().has_value());
   EXPECT_EQ(host.shown_curve()->control_points, (std::vector<glm::dvec2>{{3, 6}, {6, 0}, {3, -6}}));
@@ -134,8 +134,8 @@ TEST(LessonsA, DeCasteljauShowsTheCurveItTypedAndItsHodograph) {
 TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
   const Headless r = run("2_bezier_patches");
   ASSERT_EQ(r.outcome.failure, "") << r.text;
-  EXPECT_EQ(r.outcome.steps, 6u);
-  EXPECT_EQ(r.outcome.passed, 6u);
+  EXPECT_EQ(r.outcome.steps, 7u);
+  EXPECT_EQ(r.outcome.passed, 7u);
   // The hill at u = 0.25: rows 0 and 3 are flat (z 0), rows 1 and 2 reach z 1.125 at x 0.75; the column
   // (0, 1.125, 1.125, 0) at v = 0.5 is 0.84375.
   EXPECT_TRUE(contains(r.text,
@@ -165,6 +165,34 @@ TEST(LessonsA, BezierPatchesPassesEveryStepAndShowsTheTeapot) {
   EXPECT_FALSE(contains(r.text, "They differ!")) << r.text;
 }
 
+// The normals lesson 2 states are the patch's own: dP/du x dP/dv of the core's evaluation (central differences),
+// normalised, at the top of the hill and at the probe the answers move to.
+TEST(LessonsA, BezierPatchesNormalIsTheCrossProductOfTheCoresTangents) {
+  BezierPatch hill;
+  for (int r = 0; r < 4; ++r) {
+    for (int c = 0; c < 4; ++c) hill.at(r, c) = glm::dvec3(c, r, (r == 1 || r == 2) && (c == 1 || c == 2) ? 2.0 : 0.0);
+  }
+  const auto normal = [&](double u, double v) {
+    constexpr double h = 1e-6;
+    const glm::dvec3 du = (evaluate_patch(hill, u + h, v) - evaluate_patch(hill, u - h, v)) / (2 * h);
+    const glm::dvec3 dv = (evaluate_patch(hill, u, v + h) - evaluate_patch(hill, u, v - h)) / (2 * h);
+    return glm::normalize(glm::cross(du, dv));
+  };
+  const Headless r = run("2_bezier_patches");
+  ASSERT_EQ(r.outcome.failure, "") << r.text;
+  char text[160];
+  for (const auto& [u, v] : {std::pair{0.5, 0.5}, std::pair{0.2, 0.6}}) {
+    const glm::dvec3 n = glm::round(normal(u, v) * 1000.0) / 1000.0 + 0.0;  // no "-0.000" from a difference's noise
+    std::snprintf(text, sizeof text, "(%.3f, %.3f, %.3f)", n.x, n.y, n.z);
+    EXPECT_TRUE(contains(r.text, text)) << text << "\n" << r.text;
+  }
+  std::snprintf(text, sizeof text, "  > patch u, v = 0.2, 0.6\n  [live] At the probe (u, v) = (0.20, 0.60):");
+  EXPECT_TRUE(contains(r.text, text)) << r.text;
+  const glm::dvec3 slope = normal(0.2, 0.6);
+  EXPECT_LT(slope.x, 0.0);  // "Away from the top" is the right answer because the normal really leans that way
+  EXPECT_TRUE(contains(r.text, "> choose Away from the top, toward u = 0: right")) << r.text;
+}
+
 TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
   HeadlessHost host;
   LessonRunner runner(host);
@@ -172,7 +200,7 @@ TEST(LessonsA, BezierPatchesShowsTheTeapotFileItself) {
   ASSERT_EQ(host.shown_patches().size(), 1u);
   EXPECT_EQ(host.shown_patches()[0].points[5], glm::dvec3(1, 1, 2));  // row 1, column 1: raised
   EXPECT_EQ(host.shown_patches()[0].points[4], glm::dvec3(0, 1, 0));  // row 1, column 0: flat edge
-  runner.go_to(3);                                                    // "The Utah teapot"
+  runner.go_to(4);                                                    // "The Utah teapot"
   ASSERT_EQ(runner.error(), "");
   const std::vector<BezierPatch> teapot = read_bez(testing::source_dir() / "assets" / "teapot.bez");
   ASSERT_EQ(teapot.size(), 32u);

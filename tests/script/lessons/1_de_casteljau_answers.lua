@@ -12,6 +12,8 @@ return {
   ["Moving t"] = { {curve_t = 0.25}, {answer = {0.5625, 0.875}, feedback = "level-2 point"},
                    {answer = {2, 1}, feedback = "average"}, {answer = {3.09375, 1.125}, feedback = "swapped"},
                    {answer = {0.90625, 1.125}} },
+  ["Six points, every level"] = { {answer = 6, feedback = "one step past"}, {answer = 3, feedback = "cubic"},
+                                  {answer = 5}, {key = "E"}, {key = "E"}, {key = "E"}, {key = "E"}, {key = "E"} },
   ["Splitting a curve"] = { {choose = "the last point of every level", feedback = "from t to 1"},
                             {choose = "the first point of every level"}, {curve_t = 0.3} },
   ["The weights"] = { {answer = "1/4", feedback = "average"}, {answer = 0.375}, {curve_t = 0.5},
