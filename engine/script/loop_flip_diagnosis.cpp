@@ -130,30 +130,33 @@ std::string unflipped_message(const FlipTallies& t, const HalfedgeMesh& yours) {
   return text + one_way + "; " + marks + "; or " + flags;
 }
 
+// What an edge in neither the split mesh nor the finished reference says, by the age of its ends: the words before
+// the example edge and after it.
+struct WrongFlipWords {
+  Ends ends;
+  const char* joins;
+  const char* because;
+};
+constexpr WrongFlipWords kWrongFlipWords[] = {
+    {kBothOld, " of your edges join two original vertices, e.g. ",
+     ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end (check both "
+     "ends)"},
+    {kBothNew, " of your edges join two new vertices where the reference has none, e.g. ",
+     ": an edge that was not new (a half of a split edge) was flipped; flag only the edges from the new vertex m to "
+     "the corners opposite the split edge (the far ends other than the split edge's own two)"},
+    {kOldAndNew,
+     " of your edges join an original and a new vertex where neither the splits nor the reference's flips make one, "
+     "e.g. ",
+     ": an edge that had to stay was flipped (a half of a split edge, or a new edge between two new vertices)"},
+};
+
 // Edges in neither the split mesh nor the finished reference, by the age of their ends.
 std::vector<std::string> wrong_flip_messages(const FlipTallies& t, const HalfedgeMesh& yours) {
   std::vector<std::string> out;
-  if (const Tally& both_old = t.wrong[kBothOld]; both_old.count > 0) {
-    out.push_back(std::to_string(both_old.count) + " of your edges join two original vertices, e.g. " +
-                  ends_of(yours, both_old.example) +
-                  ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new "
-                  "end (check both ends)");
-  }
-  if (const Tally& both_new = t.wrong[kBothNew]; both_new.count > 0) {
-    out.push_back(std::to_string(both_new.count) +
-                  " of your edges join two new vertices where the reference has none, "
-                  "e.g. " +
-                  ends_of(yours, both_new.example) +
-                  ": an edge that was not new (a half of a split edge) was flipped; flag only the edges from the new "
-                  "vertex m to the corners opposite the split edge (the far ends other than the split edge's own two)");
-  }
-  if (const Tally& old_and_new = t.wrong[kOldAndNew]; old_and_new.count > 0) {
-    out.push_back(std::to_string(old_and_new.count) +
-                  " of your edges join an original and a new vertex where neither the splits nor the reference's "
-                  "flips make one, e.g. " +
-                  ends_of(yours, old_and_new.example) +
-                  ": an edge that had to stay was flipped (a half of a split edge, or a new edge between two new "
-                  "vertices)");
+  for (const WrongFlipWords& words : kWrongFlipWords) {
+    const Tally& tally = t.wrong[words.ends];
+    if (tally.count == 0) continue;
+    out.push_back(std::to_string(tally.count) + words.joins + ends_of(yours, tally.example) + words.because);
   }
   return out;
 }
