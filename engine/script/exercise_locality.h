@@ -5,7 +5,8 @@
 // your_turn and the grader's expect.exercise say the same words.
 //
 //   const std::string why = locality_failure(Exercise::FlipEdge, input, report.mine, report.reference);
-//   // "your flip_edge touched 33907 elements of a mesh of 11200 faces (it wrote 9 of them and only read the rest); ..."
+//   // "your flip_edge touched 33907 elements of a mesh of 11200 faces (it wrote 9 of them and only read the
+//   // rest); ..."
 //
 // What is counted: the distinct elements of the input mesh that "mine" touched, read or written (TouchCount,
 // touch_recorder.h: every handle the student's code got, every element it changed, the whole mesh for a call that

@@ -61,7 +61,7 @@ struct Lesson {
 };
 const std::vector<Lesson> kLessons = {
     {"curve", "1_de_casteljau", 10}, {"patch", "2_bezier_patches", 7}, {"normals", "3_halfedge_walks", 7},
-    {"flip", "4_edge_flip", 7},     {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 12},
+    {"flip", "4_edge_flip", 7},      {"split", "5_edge_split", 7},     {"upsample", "6_loop_subdivision", 12},
 };
 
 void PrintTo(const Lesson& lesson, std::ostream* out) { *out << lesson.stem; }
