@@ -3,12 +3,15 @@
 #include "grade/student_state.h"
 
 #include <algorithm>
+#include <optional>
 
 #include <lua.hpp>
 
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
 #include "script/binding_support.h"
+#include "script/exercise_locality.h"
+#include "script/exercises.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
 #include "script/student_api.h"
@@ -177,14 +180,18 @@ int StudentState::call(const std::string& name, lua_State* suite, int first, int
   lua_State* L = runtime_.state();
   const int base = lua_gettop(L);
   Call c{this, &name, suite, first, nargs, false};
+  // Only the functions held to a locality bound (flip_edge, split_edge) are counted: counting costs a flag per element
+  // of every mesh given and a test per handle made, which no other call needs.
+  last_call_touches_.clear();
   std::vector<std::unique_ptr<TouchRecorder>> touches;
-  for (const std::shared_ptr<HalfedgeMesh>& mesh : meshes_among(suite, first, nargs)) {
-    touches.push_back(std::make_unique<TouchRecorder>(L, mesh));
+  if (const std::optional<Exercise> exercise = find_exercise(name); exercise && has_locality_bound(*exercise)) {
+    for (const std::shared_ptr<HalfedgeMesh>& mesh : meshes_among(suite, first, nargs)) {
+      touches.push_back(std::make_unique<TouchRecorder>(L, mesh));
+    }
   }
   lua_pushcfunction(L, call_trampoline);
   lua_pushlightuserdata(L, &c);
   const int n = runtime_.call(1, LUA_MULTRET);
-  last_call_touches_.clear();
   for (const std::unique_ptr<TouchRecorder>& recorder : touches) {
     recorder->stop();
     last_call_touches_.push_back({recorder->mesh(), recorder->count()});

@@ -15,8 +15,9 @@
 // - Reference functions (reference_functions.h) are set before the files load and again after, so a
 //   student's own definition of the same name does not replace them.
 // - What the student prints is kept (capped) for the test's output; nothing reaches stdout.
-// - Each call counts what it touched of every mesh it was given (an argument that is a mesh or an element of one;
-//   script/touch_recorder.h), so expect.exercise holds a flip or a split to the window's locality bound.
+// - A call of a function held to a locality bound (flip_edge, split_edge: script/exercise_locality.h) counts what it
+//   touched of every mesh it was given (an argument that is a mesh or an element of one; script/touch_recorder.h),
+//   so expect.exercise holds it to the window's bound; other calls count nothing.
 #pragma once
 
 #include <cstddef>
@@ -68,7 +69,8 @@ class StudentState {
   // BridgeError (an argument or result that cannot cross). `suite` must be in protected mode.
   int call(const std::string& name, lua_State* suite, int first, int nargs);
 
-  // What the last call that returned touched of each mesh it was given, in argument order.
+  // What the last call touched of each mesh it was given, in argument order (empty for a call not counted, and after
+  // a call that raised).
   const std::vector<MeshTouches>& last_call_touches() const { return last_call_touches_; }
 
   const std::string& output() const { return output_; }
