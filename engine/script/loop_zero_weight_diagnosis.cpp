@@ -20,6 +20,7 @@ struct ZeroedRule {
   const char* weights;   // "weights 3/8 and 1/8 are"
   const char* lua;       // "3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and 1 / 8"
   const char* position;  // "(0, 0, 0)", "1/8 (c + d)"
+  bool at_origin;        // every weight of the rule is 0: it puts the vertex at (0, 0, 0)
   size_t count = 0;
   std::string example;
   void add(const std::string& text) {
@@ -35,7 +36,7 @@ void tell(const char* rule, const ZeroedRule& z, const char* vertices, const cha
   out.messages.push_back("your " + std::string(rule) + " " + z.weights + " 0 (in Lua " + z.lua +
                          "): " + std::to_string(z.count) + " of your " + vertices + ", e.g. " + z.example +
                          ", are at " + z.position + " instead of " + course);
-  out.origin_told = out.origin_told || std::string(z.position) == "(0, 0, 0)";
+  out.origin_told = out.origin_told || z.at_origin;
 }
 
 // Which zeroed rule q fits: the one with every weight zeroed first (nullptr: none).
@@ -49,11 +50,11 @@ ZeroedRule* fit(ZeroedRule* rules, const glm::dvec3* positions, size_t n, const 
 // New vertices of interior and boundary edges; returns whether step 5 visibly ran (a new vertex of an interior edge
 // of `before` is at none of its edges' midpoints).
 bool edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance, ZeroLoopWeights& out) {
-  ZeroedRule interior[] = {
-      {"weights 3/8 and 1/8 are", "3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and 1 / 8", "(0, 0, 0)"},
-      {"weight 3/8 is", "3 // 8 is 0, an integer division: write 3 / 8", "1/8 (c + d)"},
-      {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/8 (a + b)"}};
-  ZeroedRule boundary[] = {{"weight 1/2 is", "1 // 2 is 0, an integer division: write 1 / 2", "(0, 0, 0)"}};
+  ZeroedRule interior[] = {{"weights 3/8 and 1/8 are",
+                            "3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and 1 / 8", "(0, 0, 0)", true},
+                           {"weight 3/8 is", "3 // 8 is 0, an integer division: write 3 / 8", "1/8 (c + d)", false},
+                           {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/8 (a + b)", false}};
+  ZeroedRule boundary[] = {{"weight 1/2 is", "1 // 2 is 0, an integer division: write 1 / 2", "(0, 0, 0)", true}};
   bool moved = false;
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
@@ -97,10 +98,10 @@ bool edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double
 
 void boundary_vertex_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance,
                               ZeroLoopWeights& out) {
-  ZeroedRule rules[] = {
-      {"weights 3/4 and 1/8 are", "3 // 4 and 1 // 8 are 0, integer divisions: write 3 / 4 and 1 / 8", "(0, 0, 0)"},
-      {"weight 3/4 is", "3 // 4 is 0, an integer division: write 3 / 4", "1/8 (a + b)"},
-      {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/4 p"}};
+  ZeroedRule rules[] = {{"weights 3/4 and 1/8 are", "3 // 4 and 1 // 8 are 0, integer divisions: write 3 / 4 and 1 / 8",
+                         "(0, 0, 0)", true},
+                        {"weight 3/4 is", "3 // 4 is 0, an integer division: write 3 / 4", "1/8 (a + b)", false},
+                        {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/4 p", false}};
   for (VertexId v : before.vertices()) {
     if (!yours.alive(v)) continue;
     const VertexRing ring = vertex_ring(before, v);
