@@ -129,6 +129,9 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
   const LessonWait& wait = runner.waiting_for();
   if (wait.is_question()) {
     draw_lesson_question(runner, state.answer_box, state.probe);
+    // A wrong answer: its feedback and the hint come into sight, once (a short panel would hide them below).
+    if (state.scrolled_judgements != runner.judgements() && !runner.last_judgement().right) ImGui::SetScrollHereY(1.0f);
+    state.scrolled_judgements = runner.judgements();
   } else if (wait.kind == LessonWait::Kind::Button) {
     if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
   } else if (wait.kind == LessonWait::Kind::YourTurn) {  // the student's file gave another answer: why, until saved

@@ -56,6 +56,7 @@ struct LessonPanelState {
   // The your_turn run the step's child last scrolled to: its step, how many runs the step had made, the panel's width.
   size_t scrolled_step = 0, scrolled_runs = 0;
   float scrolled_width = 0.0f;
+  size_t scrolled_judgements = 0;  // the judgements the question's feedback was last scrolled into sight for
 };
 
 // The label of the your_turn's button (the scripted action lesson-show-mine presses it).
