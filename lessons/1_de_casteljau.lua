@@ -50,6 +50,13 @@ local function level_lines(c, t)
   return table.concat(lines, "\n")
 end
 
+-- |C'(t)|: the degree times the distance between the two points of the next-to-last level.
+local function speed(c, t)
+  local levels = c:levels(t)
+  local two = levels[#levels - 1]
+  return ((two[2] - two[1]) * (#c.points - 1)):length()
+end
+
 -- The hodograph: the control points of C'(t), n times the differences of neighbouring control points.
 local function hodograph_points(points)
   local n, out = #points - 1, {}
@@ -157,11 +164,29 @@ end)
 
 step("Moving t", function()
   show(curve)
+  view { curve = true }
   say [[
-For each t the levels end in one point, and together those points are the curve. See it: press **C** to draw
-the curve and **E** three times to draw every level, then drag **t** from 0 to 1 (the slider, or the wheel over
-the view): the last level's point, C(t), runs along the curve. The levels below are those of the curve on screen
-at the view's t, and follow it.]]
+For each t the levels end in one point, and together those points are the curve, drawn now in the view. Before
+you compute one, guess.]]
+  pick {
+    "Click the point of the curve you think is C(0.25), the point at t = 0.25.",
+    on = "curve",
+    answer = 0.25,
+    tolerance = 0.03,
+    feedback = function(t)
+      if t < 0.25 then
+        return string.format("That is C(%.2f), short of C(0.25): t = 0.25 is a quarter of the way in t, and this "
+          .. "curve moves a little faster near its ends, so C(0.25) is a bit more than a quarter of its length.", t)
+      end
+      return string.format("That is C(%.2f), past C(0.25): t = 0.25 is a quarter of the way from P0 in t, so "
+        .. "C(0.25) is near the first end.", t)
+    end,
+    hint = "t runs from 0 at P0 to 1 at P3 along the curve.",
+  }
+  say [[
+Near enough: now compute it. Press **E** three times to draw every level, then drag **t** from 0 to 1 (the slider,
+or the wheel over the view): the last level's point, C(t), runs along the curve. The levels below are those of the
+curve on screen at the view's t, and follow it.]]
   live(function()
     local t = curve_t()
     if not t then return "(the curve view is not on screen)" end
@@ -354,7 +379,26 @@ The curve's **derivative** C'(t) is its velocity: the direction the point moves 
   say [[
 Yes: **C'(0) = 3 (P1 - P0)**. At any t the levels give it too: the last step goes from the first level-2 point to
 the second, so **C'(t) = 3 (second - first level-2 point)**, and the segment between them **touches the curve at
-C(t)**: it is the tangent. Press **E** twice to draw level 2 and drag t.]]
+C(t)**: it is the tangent. The view now draws it as an arrow from C(t), **C'(t) / 3**, as long as that segment
+(**Tangent** in the curve view shows or hides it).]]
+  view { curve = true, tangent = true }
+  local ends, middle = speed(curve, 0), speed(curve, 0.5)
+  choose {
+    "Before you drag t: where is the arrow longest, where the point moves fastest?",
+    options = { "at the ends, t = 0 and 1", "in the middle, t = 0.5", "the same length everywhere" },
+    answer = "at the ends, t = 0 and 1",
+    feedback = {
+      ["in the middle, t = 0.5"] = string.format("At t = 0.5 the arrow is shortest: |C'(0.5)| = %.2f against %.2f "
+        .. "at the ends, the level-2 points %.2f apart there against %.2f at t = 0.", middle, ends, middle / degree,
+        ends / degree),
+      ["the same length everywhere"] = "Only a curve whose control points are evenly spaced on a line moves at one "
+        .. "speed. Drag t and watch the arrow: it shrinks towards the middle.",
+      ["at the ends, t = 0 and 1"] = string.format("Yes: |C'(0)| = 3 |P1 - P0| = %.2f, and |C'(0.5)| = %.2f only.",
+        ends, middle),
+    },
+    hint = "The arrow is C'(t) / 3, the last step's segment. At t = 0 it is P1 - P0.",
+  }
+  say "Drag t and watch the arrow; press **E** twice to draw level 2 and see the arrow lie on its segment."
   live(function()
     local t = curve_t()
     if not t then return "(the curve view is not on screen)" end

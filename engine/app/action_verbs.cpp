@@ -207,6 +207,19 @@ std::string curve_t(EditorApp& app, const Action& a) {
   return "";
 }
 
+std::string patch_uv(EditorApp& app, const Action& a) {
+  if (app.mode() != ViewMode::Patches) throw std::runtime_error("the patch view is not on screen");
+  set_probe(app.patch_view(), std::stod(a.args[0]), std::stod(a.args[1]));
+  return "";
+}
+
+// A click on the canvas away from the control points, taken in the next frame as the mouse's would be.
+std::string curve_click(EditorApp& app, const Action& a) {
+  if (app.mode() != ViewMode::Curve) throw std::runtime_error("the curve view is not on screen");
+  app.curve_editor().clicked = glm::dvec2(std::stod(a.args[0]), std::stod(a.args[1]));
+  return "";
+}
+
 // ---- lessons ---------------------------------------------------------------------------------------------------
 
 std::string lesson_next(EditorApp& app, const Action&) {
@@ -510,6 +523,8 @@ const ActionVerb kVerbs[] = {
      quality},
     {"console", -1, "console LUA CODE...   runs the code in the Lua console", console},
     {"curve-t", 1, "curve-t T   the curve view's t, as its slider sets it", curve_t},
+    {"patch-uv", 2, "patch-uv U V   the patch view's probe, as the Patches panel's u and v sliders set it", patch_uv},
+    {"curve-click", 2, "curve-click X Y   a click in the curve view at that point of the curve's plane", curve_click},
     {"lesson-next", 0, "lesson-next   the lesson's Next", lesson_next},
     {"lesson-back", 0, "lesson-back   the lesson's Back", lesson_back},
     {"lesson-button", -1, "lesson-button LABEL...   presses a button the step shows", lesson_button},

@@ -212,7 +212,10 @@ void EditorApp::draw_patch_view() {
 }
 
 void EditorApp::apply_view_request(const ViewRequest& request) {
-  // Applied when the mesh view next draws, after the shown mesh's size class has set its defaults.
+  // The curve view's parts at once; the mesh view's when it next draws, after the shown mesh's size class has set its
+  // defaults.
+  if (request.curve) curve_.show_curve = *request.curve;
+  if (request.tangent) curve_.show_tangent = *request.tangent;
   pending_view_ = request;
 }
 

@@ -215,6 +215,7 @@ class EditorApp {
   CurveEditorState& curve_editor() { return curve_; }
   const CurveEditorState& curve_editor() const { return curve_; }
   const PatchViewState& patch_view() const { return patches_; }
+  PatchViewState& patch_view() { return patches_; }
   // The "mine" switches of the curve and patch views (M), with their results.
   BezierMine& bezier_mine() { return bezier_mine_; }
 

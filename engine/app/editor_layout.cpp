@@ -206,6 +206,11 @@ void EditorApp::draw_curve_canvas_window() {
   }
   ImGui::End();
   ImGui::PopStyleVar(2);
+  // A click on the curve answers a lesson's pick on the curve; within the pick radius in pixels it is on the curve.
+  if (curve_.clicked && lesson_->loaded()) {
+    lesson_->deliver(LessonEvent::curve_click(*curve_.clicked, kCurvePickRadius / curve_.view.scale));
+  }
+  curve_.clicked.reset();
 }
 
 void EditorApp::change_font_size(int steps) {

@@ -4,7 +4,11 @@
 // split halves and the tessellated surface agree bit for bit.
 #include "core/bezier.h"
 
+#include <algorithm>
+#include <cmath>
 #include <limits>
+
+#include <glm/geometric.hpp>
 
 namespace meshedit {
 namespace {
@@ -91,6 +95,43 @@ glm::dvec3 evaluate_curve(std::span<const glm::dvec3> points, double t) { return
 
 CurveSplit<glm::dvec2> split_curve(std::span<const glm::dvec2> points, double t) { return split_impl(points, t); }
 CurveSplit<glm::dvec3> split_curve(std::span<const glm::dvec3> points, double t) { return split_impl(points, t); }
+
+glm::dvec2 curve_derivative(std::span<const glm::dvec2> points, double t) {
+  if (points.size() < 2) return glm::dvec2(0.0);
+  const std::vector<std::vector<glm::dvec2>> levels = de_casteljau_levels(points, t);
+  const std::vector<glm::dvec2>& last_pair = levels[levels.size() - 2];
+  return static_cast<double>(points.size() - 1) * (last_pair[1] - last_pair[0]);
+}
+
+CurveNearest nearest_on_curve(std::span<const glm::dvec2> points, glm::dvec2 target) {
+  CurveNearest nearest;
+  if (points.empty()) {
+    nearest.point = glm::dvec2(std::numeric_limits<double>::quiet_NaN());
+    nearest.distance = std::numeric_limits<double>::infinity();
+    return nearest;
+  }
+  const auto distance_at = [&](double t) { return glm::length(evaluate_curve(points, t) - target); };
+  int best = 0;
+  double best_distance = std::numeric_limits<double>::infinity();
+  for (int i = 0; i <= kNearestSamples; ++i) {
+    const double d = distance_at(static_cast<double>(i) / kNearestSamples);
+    if (d < best_distance) best = i, best_distance = d;
+  }
+  // Golden-section search between the best sample's neighbours, where the distance has one minimum.
+  double low = std::max(0, best - 1) / static_cast<double>(kNearestSamples);
+  double high = std::min(kNearestSamples, best + 1) / static_cast<double>(kNearestSamples);
+  const double ratio = (std::sqrt(5.0) - 1.0) / 2.0;
+  for (int i = 0; i < 60 && high - low > 1e-12; ++i) {
+    const double a = high - ratio * (high - low), b = low + ratio * (high - low);
+    if (distance_at(a) <= distance_at(b)) high = b;
+    else low = a;
+  }
+  nearest.t = (low + high) / 2.0;
+  if (distance_at(nearest.t) > best_distance) nearest.t = static_cast<double>(best) / kNearestSamples;
+  nearest.point = evaluate_curve(points, nearest.t);
+  nearest.distance = glm::length(nearest.point - target);
+  return nearest;
+}
 
 PatchEvaluation evaluate_patch_steps(const BezierPatch& patch, double u, double v) {
   PatchEvaluation result;

@@ -62,6 +62,22 @@ struct CurveSplit {
 CurveSplit<glm::dvec2> split_curve(std::span<const glm::dvec2> points, double t);
 CurveSplit<glm::dvec3> split_curve(std::span<const glm::dvec3> points, double t);
 
+// C'(t): the degree n times the difference of the two points of the next-to-last level (so the last step's segment
+// is C'(t) / n, the tangent at C(t)). Zero for fewer than 2 control points.
+glm::dvec2 curve_derivative(std::span<const glm::dvec2> points, double t);
+
+// The point of the curve for t in [0, 1] nearest to `target`: its t, the point and the distance to it. The curve is
+// sampled at kNearestSamples + 1 values of t and the nearest sample refined between its neighbours, so the answer is
+// the true nearest point unless two parts of the curve pass within a sample's length of each other. An empty curve
+// gives t = 0, a NaN point and an infinite distance.
+struct CurveNearest {
+  double t = 0.0;
+  glm::dvec2 point{0.0};
+  double distance = 0.0;
+};
+inline constexpr int kNearestSamples = 256;
+CurveNearest nearest_on_curve(std::span<const glm::dvec2> points, glm::dvec2 target);
+
 // ---- patches -------------------------------------------------------------------------------------
 
 // What separable evaluation passes through, for drawing the intermediate points:

@@ -126,10 +126,9 @@ void HeadlessHost::camera(const CameraRequest& request) {
 
 void HeadlessHost::view(const ViewRequest& request) {
   std::string line = "view";
-  const std::pair<const char*, const std::optional<bool>*> parts[] = {{"halfedges", &request.halfedges},
-                                                                      {"wireframe", &request.wireframe},
-                                                                      {"vertices", &request.vertices},
-                                                                      {"labels", &request.labels}};
+  const std::pair<const char*, const std::optional<bool>*> parts[] = {
+      {"halfedges", &request.halfedges}, {"wireframe", &request.wireframe}, {"vertices", &request.vertices},
+      {"labels", &request.labels},       {"curve", &request.curve},         {"tangent", &request.tangent}};
   for (const auto& [name, value] : parts) {
     if (*value) line += std::string(" ") + name + (**value ? "=on" : "=off");
   }

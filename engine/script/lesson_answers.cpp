@@ -35,11 +35,12 @@ const AnswerField kAnswerFields[] = {{"key", Kind::Key},
                                      {"answer", Kind::Value},
                                      {"curve_t", Kind::CurveT},
                                      {"patch_uv", Kind::PatchUv},
+                                     {"curve_click", Kind::CurveClick},
                                      {"your_turn", Kind::YourTurn}};
 
 constexpr const char* kAnswerNames =
     "key, click, selection, button, flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate, "
-    "open_repaired, choose, answer, curve_t, patch_uv or your_turn";
+    "open_repaired, choose, answer, curve_t, patch_uv, curve_click or your_turn";
 
 // The answers file's text, read under the size cap; not a regular file or unreadable: "<path>: <why>".
 std::string read_text(const std::filesystem::path& path) {
@@ -72,9 +73,8 @@ std::string value_text(lua_State* L, const std::string& where) {
   return text;
 }
 
-// The value at the top of the stack as a patch_uv answer, {u, v}: "0.25 0.5".
-std::string patch_uv_text(lua_State* L, const std::string& where) {
-  const std::string usage = where + ": patch_uv must be {u, v}, two numbers from 0 to 1";
+// The value at the top of the stack as two finite numbers, {a, b}: "0.25 0.5"; anything else raises `usage`.
+std::string pair_text(lua_State* L, const std::string& usage) {
   if (!lua_istable(L, -1) || lua_rawlen(L, -1) != 2) throw ScriptError(usage);
   std::string text;
   for (lua_Integer i = 1; i <= 2; ++i) {
@@ -125,7 +125,9 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
     } else if (answer.kind == Kind::Value) {
       answer.value = value_text(L, where);
     } else if (answer.kind == Kind::PatchUv) {
-      answer.value = patch_uv_text(L, where);
+      answer.value = pair_text(L, where + ": patch_uv must be {u, v}, two numbers from 0 to 1");
+    } else if (answer.kind == Kind::CurveClick) {
+      answer.value = pair_text(L, where + ": curve_click must be {x, y}, the point clicked in the curve view");
     } else if (answer.kind == Kind::CurveT) {
       if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
         throw ScriptError(where + ": curve_t must be a number from 0 to 1");
@@ -146,8 +148,8 @@ ScriptedAnswer read_answer(lua_State* L, const std::string& where) {
     throw ScriptError(where + ": feedback goes with your_turn = \"wrong\"");
   }
   if (answer.feedback && answer.kind != Kind::Choose && answer.kind != Kind::Click && answer.kind != Kind::Value &&
-      answer.kind != Kind::YourTurn) {
-    throw ScriptError(where + ": feedback goes with a wrong choose, click, answer or your_turn");
+      answer.kind != Kind::CurveClick && answer.kind != Kind::YourTurn) {
+    throw ScriptError(where + ": feedback goes with a wrong choose, click, answer, curve_click or your_turn");
   }
   return answer;
 }

@@ -18,10 +18,12 @@
 // its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
 // ({choose = "h4"} for choose{}; a click answers pick{};
 // {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), {curve_t = 0.25} (the curve view's t,
-// as its slider sets it) and {patch_uv = {0.25, 0.5}} (the patch view's probe, as its u and v sliders set it).
+// as its slider sets it), {patch_uv = {0.25, 0.5}} (the patch view's probe, as its u and v sliders set it) and
+// {curve_click = {0.9, 1.1}} (a click in the curve view at that point, in the curve's coordinates: it answers
+// pick{on = "curve"}; it counts as on the curve within 2% of the control points' extent).
 //
-// A choose, click or answer may also carry `feedback = "words"`: the answer must then be judged wrong, with feedback
-// containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
+// A choose, click, answer or curve_click may also carry `feedback = "words"`: the answer must then be judged wrong,
+// with feedback containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
 //
 // {your_turn = "right"} and {your_turn = "wrong", feedback = "words"} are not given but expected: the verdict of the
 // step's next your_turn run of the student's file (lesson_your_turn.h) must be that one, with a wrong one's diagnosis
@@ -61,12 +63,13 @@ struct ScriptedAnswer {
     Value,
     CurveT,
     PatchUv,
+    CurveClick,
     YourTurn
   };
   Kind kind = Kind::Key;
   std::string field;  // as written: "key", "click", "answer", ...
   std::string value;  // "F", "v3", "vertex", "Continue", "e7", "h4", "0.375", "0.5, 1", "right", "0.25 0.5"
-                      // (patch_uv); the scheme of subdivide and subdivide_phase ("loop" for loop_phase)
+                      // (patch_uv, curve_click); the scheme of subdivide and subdivide_phase ("loop" for loop_phase)
   std::optional<std::string> feedback;  // the words a wrong answer's feedback must contain
 
   bool is_edit() const;  // an edit of the scene (flip ... subdivide_phase, curve_t, patch_uv): always used, never

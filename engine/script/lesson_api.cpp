@@ -411,12 +411,11 @@ int api_camera(lua_State* L) {
 int api_view(lua_State* L) {
   require_step(L, "view()");
   if (!lua_istable(L, 1)) raise(L, "view: expected a table like {halfedges=true, labels=false}");
-  check_fields(L, 1, "view", {"halfedges", "wireframe", "vertices", "labels"});
+  check_fields(L, 1, "view", {"halfedges", "wireframe", "vertices", "labels", "curve", "tangent"});
   ViewRequest request;
-  const std::pair<const char*, std::optional<bool>*> fields[] = {{"halfedges", &request.halfedges},
-                                                                 {"wireframe", &request.wireframe},
-                                                                 {"vertices", &request.vertices},
-                                                                 {"labels", &request.labels}};
+  const std::pair<const char*, std::optional<bool>*> fields[] = {
+      {"halfedges", &request.halfedges}, {"wireframe", &request.wireframe}, {"vertices", &request.vertices},
+      {"labels", &request.labels},       {"curve", &request.curve},         {"tangent", &request.tangent}};
   for (const auto& [name, out] : fields) {
     lua_getfield(L, 1, name);
     if (!lua_isnil(L, -1)) {

@@ -76,6 +76,7 @@ bool LessonWait::matches(const LessonEvent& event) const {
       return event.kind == LessonEvent::Kind::Choice &&
              std::find(options.begin(), options.end(), event.name) != options.end();
     case Kind::Pick: return event.kind == LessonEvent::Kind::Click && event.element.valid();
+    case Kind::CurvePick: return event.kind == LessonEvent::Kind::CurveClick;
     case Kind::Answer: return event.kind == LessonEvent::Kind::Value;
     default: return false;
   }
@@ -108,6 +109,7 @@ std::string LessonWait::describe() const {
       return "a choice (" + list + ") in '" + question + "'";
     }
     case Kind::Pick: return "a click answering '" + question + "'";
+    case Kind::CurvePick: return "a click on the curve answering '" + question + "'";
     case Kind::Answer: return (components == 1 ? "a number answering '" : "a point answering '") + question + "'";
     case Kind::YourTurn: return "the student's " + name + " to give the reference's answer";
   }

@@ -8,9 +8,9 @@
 // - A wait on an element kind ("vertex") is met by any element of that kind; on an id ("e7") only by it;
 //   "any" (or no kind and no id) by any element.
 // - The questions (choose, pick, answer: lesson_questions.h) take any answer of their kind: a Choice event naming one
-//   of the options, any Click, any Value text. Whether it is right is the lesson's to say: a wrong one leaves the step
-//   waiting on the same question, with `tries` one more (a Value that cannot be read as a number: not counted) and
-//   `feedback` saying what is wrong.
+//   of the options, any Click, any Value text; a pick on the curve view (CurvePick) any CurveClick. Whether it is right
+//   is the lesson's to say: a wrong one leaves the step waiting on the same question, with `tries` one more (a Value
+//   that cannot be read as a number: not counted) and `feedback` saying what is wrong.
 // - A question's hint is held back until the student has tried once (hint_shown); a wait_for's hint is the
 //   instruction itself ("Press F") and shows at once.
 // - A command wait is met by a Command event of the same name: the window sends one whenever the student runs that
@@ -23,6 +23,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <glm/vec2.hpp>
 
 #include "core/ids.h"
 #include "core/subdivision_phases.h"
@@ -53,11 +55,15 @@ const LessonCommand* find_lesson_command(std::string_view name);
 std::string lesson_command_names();
 
 struct LessonEvent {
-  enum class Kind { Key, Click, Selection, Button, Choice, Value, Command };
+  enum class Kind { Key, Click, Selection, Button, Choice, Value, Command, CurveClick };
   Kind kind = Kind::Key;
   std::string name;    // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed,
                        // the command (a kLessonCommands name)
   ElementRef element;  // Click and Selection
+  // CurveClick: where the curve view was clicked (curve coordinates), and how far from the curve (curve units) a
+  // click still counts as on it (the window's pick radius in pixels over the view's scale).
+  glm::dvec2 point{0.0};
+  double radius = 0.0;
 
   static LessonEvent key(std::string name) { return {Kind::Key, std::move(name), {}}; }
   static LessonEvent click(ElementRef element) { return {Kind::Click, {}, element}; }
@@ -66,6 +72,7 @@ struct LessonEvent {
   static LessonEvent choice(std::string option) { return {Kind::Choice, std::move(option), {}}; }
   static LessonEvent value(std::string text) { return {Kind::Value, std::move(text), {}}; }
   static LessonEvent command(std::string name) { return {Kind::Command, std::move(name), {}}; }
+  static LessonEvent curve_click(glm::dvec2 point, double radius) { return {Kind::CurveClick, {}, {}, point, radius}; }
 };
 
 struct LessonWait {
@@ -79,6 +86,7 @@ struct LessonWait {
     Animation,
     Choice,
     Pick,
+    CurvePick,
     Answer,
     YourTurn,
     Command
@@ -105,7 +113,9 @@ struct LessonWait {
   double since_checked = 0.0;
 
   bool waiting() const { return kind != Kind::None; }
-  bool is_question() const { return kind == Kind::Choice || kind == Kind::Pick || kind == Kind::Answer; }
+  bool is_question() const {
+    return kind == Kind::Choice || kind == Kind::Pick || kind == Kind::CurvePick || kind == Kind::Answer;
+  }
   // Whether the panel shows the hint: a question's only after one try; any other wait's at once.
   bool hint_shown() const { return !hint.empty() && (!is_question() || tries > 0); }
   // Whether `event` is what this wait is for (never true for Condition, Animation or None).
@@ -113,10 +123,10 @@ struct LessonWait {
   // Whether the selection being `selected` meets this wait (Selection waits only).
   bool selection_matches(ElementRef selected) const;
   // "key F", "the command linear (Subdivide > Linear subdivision)", "a click on a vertex", "a click on e7", "the
-  // selection of an edge", "the selection of e7",
-  // "a condition", "the Continue button", "an animation (2 s)", "a choice (h1, h2, h4) in 'Which...?'", "a click
-  // answering 'Click...'", "a number answering 'What...?'", "a point answering 'Where...?'", "the student's flip.lua
-  // to give the reference's answer"; "" for None.
+  // selection of an edge", "the selection of e7", "a condition", "the Continue button", "an animation (2 s)", "a
+  // choice (h1, h2, h4) in 'Which...?'", "a click answering 'Click...'", "a click on the curve answering 'Click...'",
+  // "a number answering 'What...?'", "a point answering 'Where...?'", "the student's flip.lua to give the reference's
+  // answer"; "" for None.
   std::string describe() const;
 };
 

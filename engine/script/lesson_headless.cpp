@@ -12,6 +12,7 @@
 #include <iterator>
 #include <map>
 
+#include <glm/common.hpp>
 #include <lua.hpp>
 
 #include "core/mesh_build.h"
@@ -50,6 +51,17 @@ std::optional<ElementRef> resolve_element(const std::string& text, const Headles
     if (mesh->alive(ElementRef(*kind, i))) return ElementRef(*kind, i);
   }
   return std::nullopt;
+}
+
+// How far from the curve a headless curve_click still counts as on it: 2% of the larger side of the control points'
+// bounding box (about the window's pick radius on a curve fitted to its view).
+double headless_click_radius(const std::vector<glm::dvec2>& points) {
+  glm::dvec2 low(0.0), high(0.0);
+  for (size_t i = 0; i < points.size(); ++i) {
+    low = i == 0 ? points[i] : glm::min(low, points[i]);
+    high = i == 0 ? points[i] : glm::max(high, points[i]);
+  }
+  return 0.02 * std::max(high.x - low.x, high.y - low.y);
 }
 
 // "welcome.lua:7: message" -> "welcome.lua:7: step 3 'Title': message" (the step goes after the place).
@@ -307,6 +319,16 @@ class HeadlessDriver {
         host_.set_patch_uv(u, std::strtod(rest, nullptr));
         out_ << "  > patch u, v = " << host_.patch_reading()->u << ", " << host_.patch_reading()->v;
         used = true;
+        break;
+      }
+      case Answer::Kind::CurveClick: {
+        const std::optional<CurveReading> curve = host_.curve_reading();
+        if (!curve) return with_step("answer curve_click: no curve on screen", step_name_);
+        char* rest = nullptr;
+        const double x = std::strtod(answer.value.c_str(), &rest);
+        const glm::dvec2 point(x, std::strtod(rest, nullptr));
+        out_ << "  > curve click " << point.x << ", " << point.y;
+        used = runner_.deliver(LessonEvent::curve_click(point, headless_click_radius(curve->control_points)));
         break;
       }
       case Answer::Kind::CurveT: {

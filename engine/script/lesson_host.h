@@ -62,7 +62,9 @@ struct ViewRequest {
   std::optional<bool> halfedges;  // the halfedge arrows inside their faces
   std::optional<bool> wireframe;
   std::optional<bool> vertices;
-  std::optional<bool> labels;  // the id labels (v3, e5, h12...)
+  std::optional<bool> labels;   // the id labels (v3, e5, h12...)
+  std::optional<bool> curve;    // the curve view's whole curve (its key C)
+  std::optional<bool> tangent;  // the curve view's tangent arrow at C(t)
 };
 
 class LessonHost {

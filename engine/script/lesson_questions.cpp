@@ -23,20 +23,24 @@ constexpr double kDefaultTolerance = 1e-3;
 constexpr const char* kQuestionsPrelude = R"lua(local api = __lesson_questions
 __lesson_questions = nil
 local check, ask, read_answer, record = api.check, api.ask, api.read_answer, api.record
-local type, tostring = type, tostring
+local type, tostring, math, string = type, tostring, math, string
 
 local function text_of(value)
   if value == nil or value == false then return nil end
   return tostring(value)
 end
 
--- Asks until the answer is right; judge(given) -> right, feedback, counted, value.
+-- Asks until the answer is right; judge(what ask returned) -> right, feedback, counted, value, the answer as the
+-- record shows it (the first value ask returned when nil).
 local function until_right(kind, spec, judge)
   local tries, feedback = 0, nil
+  local function judged(given, ...)
+    local right, text, counted, value, shown = judge(given, ...)
+    record(spec, shown or given, right, text)
+    return right, text, counted, value
+  end
   while true do
-    local given = ask(kind, spec, tries, feedback)
-    local right, text, counted, value = judge(given)
-    record(spec, given, right, text)
+    local right, text, counted, value = judged(ask(kind, spec, tries, feedback))
     if right then return value end
     if counted then tries = tries + 1 end
     feedback = text
@@ -52,8 +56,32 @@ function choose(spec)
   end)
 end
 
+-- A click on the curve view: ask gives the t of the curve point nearest the click, that point, and whether the click
+-- was on the curve.
+local function pick_on_curve(spec)
+  local answer, feedback = spec.answer, spec.feedback
+  local tolerance = spec.tolerance or 0.04
+  return until_right("pick", spec, function(t, point, on)
+    local shown = string.format("C(%.2f)", t)
+    if not on then
+      return false, "That click is beside the curve: click on the curve itself.", false, nil, "a click beside the curve"
+    end
+    local right, why
+    if type(answer) == "function" then
+      right, why = answer(t, point)
+    else
+      right = math.abs(t - answer) <= tolerance
+    end
+    if right then return true, text_of(why), true, t, shown end
+    local said = type(feedback) == "function" and feedback(t, point) or nil
+    return false, text_of(said) or text_of(why) or string.format("That is %s, the point of the curve at t = %.2f.",
+      shown, t), true, nil, shown
+  end)
+end
+
 function pick(spec)
   check("pick", spec)
+  if spec.on == "curve" then return pick_on_curve(spec) end
   return until_right("pick", spec, function(element)
     local answer, feedback, id = spec.answer, spec.feedback, tostring(element)
     local right, why
@@ -174,6 +202,43 @@ void read_choice(lua_State* L, int index, LessonWait& wait) {
   lua_pop(L, 1);
 }
 
+// pick{on = "curve", ...}: answer a t in [0, 1] or a function, tolerance in t, feedback a function.
+void read_curve_pick(lua_State* L, int index) {
+  check_fields(L, index, "pick", {"on", "answer", "tolerance", "feedback", "hint"}, true);
+  lua_getfield(L, index, "answer");
+  const bool t_answer = lua_type(L, -1) == LUA_TNUMBER;
+  if (!(t_answer && lua_tonumber(L, -1) >= 0.0 && lua_tonumber(L, -1) <= 1.0) && !lua_isfunction(L, -1)) {
+    raise(L,
+          "pick on the curve: answer must be the t of the point, from 0 to 1, or function(t, point) return ok, "
+          "why end; got " +
+              (t_answer ? std::string(lua_tostring(L, -1)) : "a " + type_name(L, -1)));
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, index, "tolerance");
+  if (!lua_isnil(L, -1) && (lua_type(L, -1) != LUA_TNUMBER || !(lua_tonumber(L, -1) >= 0.0))) {
+    raise(L, "pick on the curve: tolerance must be a number >= 0 (in t), got " + type_name(L, -1));
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, index, "feedback");
+  if (!lua_isnil(L, -1) && !lua_isfunction(L, -1)) {
+    raise(L, "pick on the curve: feedback must be function(t, point) return text end, got " + type_name(L, -1));
+  }
+  lua_pop(L, 1);
+}
+
+// Whether the pick is on the curve view (on = "curve"); raises for any other `on`.
+bool picks_on_curve(lua_State* L, int index) {
+  lua_getfield(L, index, "on");
+  const bool curve = lua_type(L, -1) == LUA_TSTRING && std::string(lua_tostring(L, -1)) == "curve";
+  if (!curve && !lua_isnil(L, -1)) {
+    raise(L, "pick: on must be \"curve\" (a click on the curve view), or left out for a click on the mesh; got " +
+                 (lua_type(L, -1) == LUA_TSTRING ? "'" + std::string(lua_tostring(L, -1)) + "'"
+                                                 : "a " + type_name(L, -1)));
+  }
+  lua_pop(L, 1);
+  return curve;
+}
+
 void read_pick(lua_State* L, int index) {
   check_fields(L, index, "pick", {"answer", "feedback", "hint"}, true);
   lua_getfield(L, index, "answer");
@@ -268,6 +333,9 @@ LessonWait parse_question(lua_State* L, const std::string& kind, int index) {
   if (kind == "choose") {
     wait.kind = LessonWait::Kind::Choice;
     read_choice(L, index, wait);
+  } else if (kind == "pick" && picks_on_curve(L, index)) {
+    wait.kind = LessonWait::Kind::CurvePick;
+    read_curve_pick(L, index);
   } else if (kind == "pick") {
     wait.kind = LessonWait::Kind::Pick;
     read_pick(L, index);

@@ -8,6 +8,10 @@
 //   pick { "Click the halfedge that will be h0.next", answer = h4 | "h4" | function(element) -> ok, why,
 //          feedback = function(element) -> text | { h1 = "...", ... }, hint = "..." }
 //       -> the element clicked (a handle on a copy of the mesh on screen, or its id when no mesh is shown).
+//   pick { "Click the point of the curve at t = 0.25", on = "curve", answer = 0.25 | function(t, point) -> ok, why,
+//          tolerance = 0.04, feedback = function(t, point) -> text, hint = "..." }
+//       -> the t clicked: a click on the curve view answers with the t of the curve point nearest to it (and that
+//          point, a vec3 with z = 0); a number answer is right within `tolerance` (in t, default 0.04).
 //   answer { "What is B1(0.5)?", number = 0.375 | point = {x, y[, z]}, tolerance = 1e-3,
 //            feedback = function(value) -> text, hint = "..." }
 //       -> the number, or a vec3 for a point (z = 0 for a 2D one). The panel shows an input box and Check.
@@ -20,7 +24,8 @@
 //   and `feedback` set to the lesson's text for that answer (a feedback table's entry, the feedback function's
 //   value, a pick answer function's second value), or a default that names the answer and never the right one.
 //   Text typed into answer{} that is not a number (or a point of the right size) is told how to write one, and is not
-//   counted as a try.
+//   counted as a try; so is a click on the curve view that is not on the curve (farther from it than the event's
+//   radius: the window's pick radius in pixels).
 // - `hint` shows only after the first wrong try (LessonWait::hint_shown).
 // - Every judgement is recorded in LessonScript (last_judgement, judgements); a right one also becomes an Answered
 //   block with the question, the answer and the lesson's words on it (a feedback table's entry for the right option

@@ -25,13 +25,16 @@
 #include <algorithm>
 #include <cmath>
 #include <exception>
+#include <optional>
 
 #include <lua.hpp>
 
+#include "core/bezier.h"
 #include "script/exception_text.h"
 #include "script/lesson_api.h"
 #include "script/lesson_displays.h"
 #include "script/lesson_your_turn.h"
+#include "script/vec3_bindings.h"
 
 namespace meshedit {
 namespace {
@@ -450,10 +453,21 @@ void LessonRunner::refresh_live() noexcept {
 
 bool LessonRunner::deliver(const LessonEvent& event) {
   if (!script_ || busy_ || state_ != StepState::Waiting || !script_->wait.matches(event)) return false;
+  std::optional<CurveReading> curve;
+  if (event.kind == LessonEvent::Kind::CurveClick) {
+    curve = host_.curve_reading();
+    if (!curve || curve->control_points.empty()) return false;  // no curve on screen to have clicked
+  }
   try {
-    resume([this, &event](lua_State* L) {
+    resume([this, &event, &curve](lua_State* L) {
       if (event.kind == LessonEvent::Kind::Click || event.kind == LessonEvent::Kind::Selection) {
         push_element_value(L, host_, event.element);
+      } else if (curve) {  // the curve's t nearest the click, its point, and whether the click was on the curve
+        const CurveNearest nearest = nearest_on_curve(curve->control_points, event.point);
+        lua_pushnumber(L, nearest.t);
+        push_vec3(L, glm::dvec3(nearest.point, 0.0));
+        lua_pushboolean(L, nearest.distance <= event.radius);
+        return 3;
       } else {  // a key, a button label, an option, the text typed
         lua_pushstring(L, event.name.c_str());
       }

@@ -117,6 +117,8 @@ void toggle_curve(CurveEditorState& state) { state.show_curve = !state.show_curv
 
 void toggle_split(CurveEditorState& state) { state.show_split = !state.show_split; }
 
+void toggle_tangent(CurveEditorState& state) { state.show_tangent = !state.show_tangent; }
+
 void set_t(CurveEditorState& state, double t) {
   if (std::isnan(t)) return;
   state.t = std::clamp(t, 0.0, 1.0);
@@ -254,6 +256,8 @@ void handle_canvas_input(CurveEditorState& state, const CanvasInput& input) {
   } else if (input.left_pressed && hit >= 0) {
     state.dragged = hit;
     state.drag_offset = state.curve.control_points[hit] - screen_to_curve(state.view, input.mouse);
+  } else if (input.left_pressed && !input.left_double_clicked) {
+    state.clicked = screen_to_curve(state.view, input.mouse);
   } else if (input.right_pressed && hit >= 0) {
     if (remove_point(state, hit)) hit = -1;
   }
@@ -390,6 +394,28 @@ void draw_curve_point(ImDrawList* dl, const CurveView& view, const std::vector<s
   }
 }
 
+// The tangent at C(t): an arrow from C(t) along C'(t) / n (as long as the last step's segment), labelled.
+void draw_tangent(ImDrawList* dl, const CurveEditorState& state) {
+  const auto& points = state.curve.control_points;
+  if (points.size() < 2) return;
+  const double degree = static_cast<double>(points.size() - 1);
+  const glm::dvec2 from = evaluate_curve(state.curve, state.t);
+  const glm::dvec2 to = from + curve_derivative(points, state.t) / degree;
+  const glm::dvec2 a = curve_to_screen(state.view, from), b = curve_to_screen(state.view, to);
+  const ImU32 colour = final_colour();
+  dl->AddLine(to_imvec(a), to_imvec(b), colour, 3.0f);
+  const double length = glm::length(b - a);
+  if (length >= 1.0) {  // the head: a triangle 12 pixels long at `to`
+    const glm::dvec2 along = (b - a) / length, across(-along.y, along.x);
+    const double head = std::min(12.0, length);
+    dl->AddTriangleFilled(to_imvec(b), to_imvec(b - head * along + 0.5 * head * across),
+                          to_imvec(b - head * along - 0.5 * head * across), colour);
+  }
+  char label[32];
+  std::snprintf(label, sizeof label, "C'(t) / %d", static_cast<int>(degree));
+  dl->AddText(ImVec2(static_cast<float>(b.x) + 8.0f, static_cast<float>(b.y) - 8.0f), colour, label);
+}
+
 // The control points (the grabbed and the hovered one marked), and rings on the two halves' control points.
 void draw_control_points(ImDrawList* dl, const CurveEditorState& state, const CurveSplit<glm::dvec2>& halves) {
   const auto& points = state.curve.control_points;
@@ -456,6 +482,7 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   draw_levels(dl, view, levels, yours, wrong_level);
   draw_control_points(dl, state, halves);
   draw_curve_point(dl, view, levels, wrong_level);
+  if (state.show_tangent) draw_tangent(dl, state);
   draw_canvas_text(dl, state, p0, size, shown, yours, mine);
   dl->PopClipRect();
 }
@@ -552,6 +579,10 @@ void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
   same_line_if_room("Split at t");
   bool show_split = state.show_split;
   if (ImGui::Checkbox("Split at t", &show_split)) toggle_split(state);
+  same_line_if_room("Tangent");
+  bool show_tangent = state.show_tangent;
+  if (ImGui::Checkbox("Tangent", &show_tangent)) toggle_tangent(state);
+  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the arrow C'(t) / n from C(t): the last step's segment, moved");
   same_line_if_room("Add point");
   if (ImGui::Button("Add point")) add_point_default(state);
   same_line_if_room("Remove last");

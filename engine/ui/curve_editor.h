@@ -1,5 +1,5 @@
 // The curve view: a 2D Bézier curve whose control points the student drags, adds and removes, with the
-// de Casteljau levels at t revealed one step at a time (E), the full curve (C) and the split at t.
+// de Casteljau levels at t revealed one step at a time (E), the full curve (C), the split at t and the tangent at C(t).
 //
 // Everything the keys and the mouse do is a plain function of CurveEditorState, so it is tested without
 // a window; draw_curve_editor only turns ImGui's input into those calls and draws with ImDrawList.
@@ -17,6 +17,7 @@
 // reference's in the palette's "wrong" colour over the reference's.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <vector>
 
@@ -69,11 +70,15 @@ struct CurveEditorState {
   int levels_shown = 0;              // de Casteljau steps drawn: 0 = control polygon only, n-1 = down to C(t)
   bool show_curve = false;           // C; the course viewer also starts without the curve
   bool show_split = false;           // both halves of the curve cut at t
+  bool show_tangent = false;         // the arrow C'(t) / n from C(t): the last step's segment, moved to start at C(t)
   int hovered = -1;                  // control point under the mouse
   int dragged = -1;                  // control point being moved
   glm::dvec2 drag_offset{0.0, 0.0};  // point minus mouse (curve units) when the drag began: no jump
   CurveRegion region;                // the curve-plane rectangle the canvas shows
   CurveView view;                    // the transform of the last drawn frame; hit tests use it
+  // A left press on the canvas away from every control point (curve coordinates): set by handle_canvas_input, taken
+  // (and reset) by whoever answers clicks on the curve (the app: a lesson's pick on the curve).
+  std::optional<glm::dvec2> clicked;
 };
 
 // A cubic that shows off the construction (its levels do not overlap at t = 0.5).
@@ -90,6 +95,7 @@ void step_level(CurveEditorState& state);
 // C.
 void toggle_curve(CurveEditorState& state);
 void toggle_split(CurveEditorState& state);
+void toggle_tangent(CurveEditorState& state);
 // Clamps to [0, 1]; NaN leaves t unchanged.
 void set_t(CurveEditorState& state, double t);
 // Scroll wheel: t += kCurveScrollStep * offset, clamped. Unlike the course viewer this works at every
@@ -148,7 +154,8 @@ struct CanvasInput {
 // - a drag in progress follows the mouse while the left button is held (even off the canvas), keeping
 //   the offset it started with, and ends when it is released;
 // - over the canvas: a double click on empty canvas adds a point there (add_point); a left press on a
-//   point starts dragging it; a right press on a point removes it (remove_point); the wheel moves t.
+//   point starts dragging it, elsewhere it sets `clicked`; a right press on a point removes it (remove_point); the
+//   wheel moves t.
 // hovered is updated to the point under the mouse (the dragged point while dragging).
 void handle_canvas_input(CurveEditorState& state, const CanvasInput& input);
 

@@ -61,6 +61,7 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
   const LessonWait::Kind kind = wait.kind;
   if (kind == LessonWait::Kind::Choice) draw_choices(runner, wait, probe);
   else if (kind == LessonWait::Kind::Answer) draw_answer_box(runner, box, probe);
+  else if (kind == LessonWait::Kind::CurvePick) ImGui::TextDisabled("(click the curve in the view)");
   else ImGui::TextDisabled("(click it in the view)");
   if (!feedback.empty()) coloured_text(palette.warning, feedback);
   if (!hint.empty()) coloured_text(palette.emphasis, "Hint: " + hint);

@@ -77,8 +77,10 @@ function camera(spec) end
 ---@field wireframe? boolean
 ---@field vertices? boolean
 ---@field labels? boolean the id labels (v3, e5, h12...)
+---@field curve? boolean the curve view's whole curve (its key C)
+---@field tangent? boolean the curve view's tangent arrow C'(t) / n at C(t)
 
----Turns parts of the mesh view on or off; fields left out keep what the student chose.
+---Turns parts of the mesh view and the curve view on or off; fields left out keep what the student chose.
 ---@param spec ViewSpec
 function view(spec) end
 
@@ -115,14 +117,20 @@ function choose(spec) end
 
 ---@class PickSpec
 ---@field [1] string the question ("Click the halfedge that ...")
----@field answer PickAnswer the element (a handle or an id like "h4"), or a function: is this one right, and why
----@field feedback? PickFeedback what to say to a wrong click: a table from ids to text, or a function of it
+---@field on? "curve" a click on the curve view: answer and feedback then take (t, point), the t of the curve point
+---nearest the click and that point, and the pick returns the t
+---@field answer PickAnswer|number|fun(t: number, point: vec3): boolean, string? the element (a handle or an id like
+---"h4"), or a function: is this one right, and why; on the curve: the t, or a function of (t, point)
+---@field tolerance? number on the curve: how far in t a click may be from the answer (default 0.04)
+---@field feedback? PickFeedback|fun(t: number, point: vec3): string? what to say to a wrong click: a table from ids
+---to text, or a function of it
 ---@field hint? string shown only after the first wrong click
 
 ---Asks the student to click an element in the view. A wrong click shows its feedback (the feedback's, then the answer
 ---function's reason, then "Not h2: look again.") and the step keeps waiting; the right one returns.
 ---@param spec PickSpec
----@return Element|string element a handle on a copy of the mesh on screen (its id when no mesh is shown)
+---@return Element|string|number element a handle on a copy of the mesh on screen (its id when no mesh is shown); on
+---the curve, the t clicked
 function pick(spec) end
 
 ---@class AnswerSpec

@@ -3,13 +3,15 @@
 // lesson 4 script names the student folder relative to the top of a checkout; here that folder is the source tree's.
 // The page's files from the student's disk arrive as /uploads/NAME; here the same files open from tests/web, through
 // the same open path, with the same counts and the same message naming the bad file; the runaway student files and the
-// broken lessons the page is given stop with the same messages here. Also the two verbs those scripts add:
+// broken lessons the page is given stop with the same messages here; the lessons' own interactions (a click on the
+// curve, the patch probe, a lesson's Check button) hold the same way. Also the two verbs those scripts add:
 // wait-message waits frames for the status line, and open-picker fails where the window has no picker.
 #include <gtest/gtest.h>
 
 #include <fstream>
 #include <sstream>
 #include <string>
+#include <utility>
 
 #include "app/window_test_support.h"
 #include "support/test_support.h"
@@ -38,6 +40,26 @@ TEST(WindowWebActions, TheWebPagesLessonFourScriptHoldsInTheDesktopWindow) {
       run_window(x.display(), testing::source_dir() / "lessons" / "4_edge_flip.lua", script.str(), dir);
   EXPECT_EQ(run.status, 0) << run.output;
   EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
+}
+
+// The lessons' own interactions the page's scripts drive: lesson 1's click on the curve, lesson 2's probe and lesson
+// 6's Check button, each script played as the page plays it.
+TEST(WindowWebActions, TheWebPagesLessonScriptsHoldInTheDesktopWindow) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const std::pair<const char*, const char*> scripts[] = {{"lesson1_curve_pick.txt", "1_de_casteljau.lua"},
+                                                         {"lesson2_probe.txt", "2_bezier_patches.lua"},
+                                                         {"lesson6_sharp_corners.txt", "6_loop_subdivision.lua"}};
+  for (const auto& [name, lesson] : scripts) {
+    std::ifstream in(testing::source_dir() / "tests" / "web" / name);
+    ASSERT_TRUE(in) << name;
+    std::ostringstream script;
+    script << in.rdbuf();
+    const WindowRun run =
+        run_window(x.display(), testing::source_dir() / "lessons" / lesson, script.str(), testing::scratch_dir());
+    EXPECT_EQ(run.status, 0) << name << ": " << run.output;
+    EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << name << ": " << run.output;
+  }
 }
 
 // The lines of tests/web/NAME that follow the file's arrival in the page (after its wait-message), with the page's

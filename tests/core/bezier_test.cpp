@@ -591,6 +591,42 @@ TEST(TeapotAsset, EveryResolutionBuilds) {
   }
 }
 
+TEST(CurveDerivative, IsTheDegreeTimesTheLastPairsDifference) {
+  // The hodograph of kCubic: 3 (P[i+1] - P[i]), evaluated at t.
+  const std::vector<dvec2> hodograph = {{12, 24}, {12, -24}, {12, 24}};
+  for (double t : {0.0, 0.25, 0.5, 0.9, 1.0}) {
+    const dvec2 d = curve_derivative(kCubic, t), expected = evaluate_curve(hodograph, t);
+    EXPECT_NEAR(d.x, expected.x, 1e-12) << t;
+    EXPECT_NEAR(d.y, expected.y, 1e-12) << t;
+  }
+  EXPECT_EQ(curve_derivative(std::vector<dvec2>{{1, 2}}, 0.5), dvec2(0.0));
+}
+
+TEST(NearestOnCurve, FindsTheParameterOfAPointOnTheCurveAndOfOneBeside) {
+  for (double t : {0.0, 0.1, 0.25, 0.5, 0.8, 1.0}) {
+    const CurveNearest on = nearest_on_curve(kCubic, evaluate_curve(kCubic, t));
+    EXPECT_NEAR(on.t, t, 1e-6);
+    EXPECT_NEAR(on.distance, 0.0, 1e-6);
+  }
+  // Off the curve by 0.5 along the normal at t = 0.3: the same t, at that distance.
+  const dvec2 d = curve_derivative(kCubic, 0.3), normal = dvec2(-d.y, d.x) / glm::length(d);
+  const dvec2 beside = evaluate_curve(kCubic, 0.3) + 0.5 * normal;
+  const CurveNearest near = nearest_on_curve(kCubic, beside);
+  EXPECT_NEAR(near.t, 0.3, 1e-5);
+  EXPECT_NEAR(near.distance, 0.5, 1e-6);
+  EXPECT_NEAR(glm::length(near.point - evaluate_curve(kCubic, 0.3)), 0.0, 1e-4);
+  // Past the end: the end point.
+  const CurveNearest past = nearest_on_curve(kCubic, dvec2(20, 8));
+  EXPECT_EQ(past.t, 1.0);
+  EXPECT_EQ(past.point, dvec2(12, 8));
+}
+
+TEST(NearestOnCurve, AnEmptyCurveHasNoNearPoint) {
+  const CurveNearest none = nearest_on_curve(std::vector<dvec2>{}, dvec2(1, 1));
+  EXPECT_TRUE(std::isnan(none.point.x));
+  EXPECT_EQ(none.distance, kInf);
+}
+
 TEST(CurveAssets, HaveTheirPointCountsInTheUnitSquare) {
   for (const auto& [name, count] : {std::pair{"curve_cubic.bzc", 4u}, std::pair{"curve_quartic.bzc", 5u}}) {
     std::ifstream in(testing::source_dir() / "assets" / name);

@@ -208,7 +208,7 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
   fails_with("return { [1] = { {press = 'F'} } }\n",
              "answers.lua: step 1, answer 1: unknown answer 'press' (use key, click, selection, button, flip, split, "
              "collapse, subdivide, subdivide_phase, loop_phase, triangulate, open_repaired, choose, answer, curve_t, "
-             "patch_uv or your_turn)");
+             "patch_uv, curve_click or your_turn)");
   fails_with("return { [1] = { {subdivide = 'butterfly'} } }\n",
              "answers.lua: step 1, answer 1: subdivide must be true or \"loop\", \"catmull-clark\" or \"linear\", got "
              "'butterfly'");
@@ -217,8 +217,11 @@ TEST(LessonHeadless, ABadAnswersFileIsAnError) {
              "answers.lua: step 1, answer 1: your_turn must be \"right\" or \"wrong\", got 'yes'");
   fails_with("return { [1] = { {your_turn = 'right', feedback = 'twin'} } }\n",
              "answers.lua: step 1, answer 1: feedback goes with your_turn = \"wrong\"");
-  fails_with("return { [1] = { {key = 'F', feedback = 'no'} } }\n",
-             "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click, answer or your_turn");
+  fails_with(
+      "return { [1] = { {key = 'F', feedback = 'no'} } }\n",
+      "answers.lua: step 1, answer 1: feedback goes with a wrong choose, click, answer, curve_click or your_turn");
+  fails_with("return { [1] = { {curve_click = {1}} } }\n",
+             "answers.lua: step 1, answer 1: curve_click must be {x, y}, the point clicked in the curve view");
   fails_with("return { [1] = { {answer = {1}} } }\n",
              "answers.lua: step 1, answer 1: answer must be a number, a text as typed (\"3/8\") or {x, y[, z]}");
   fails_with("return { [1] = { {curve_t = 'half'} } }\n",

@@ -158,6 +158,49 @@ end)
   EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
 }
 
+TEST(LessonQuestions, APickOnTheCurveJudgesTheTOfTheCurvePointNearestTheClick) {
+  HeadlessHost host;
+  LessonRunner runner(host);
+  ASSERT_TRUE(runner.load(write_lesson(R"lua(local c = meshedit.curve { {0, 0, 0}, {1, 2, 0}, {3, 2, 0}, {4, 0, 0} }
+step("By t", function()
+  show(c)
+  local t = pick {
+    "Click C(0.25)", on = "curve", answer = 0.25, hint = "Near P0.",
+    feedback = function(t, p) if t > 0.4 then return string.format("C(%.1f) at (%g, %g)", t, p.x, p.y) end end,
+  }
+  say(string.format("t = %.3f", t))
+end)
+step("By function", function()
+  show(c)
+  pick { "Click the top", on = "curve", answer = function(t) return math.abs(t - 0.5) < 0.01, "the top" end }
+end)
+)lua")))
+      << runner.error();
+  ASSERT_EQ(runner.waiting_for().kind, LessonWait::Kind::CurvePick) << runner.error();
+  EXPECT_FALSE(runner.deliver(LessonEvent::click(ElementRef(VertexId(0)))));  // a click on the mesh is no answer
+  EXPECT_TRUE(runner.deliver(LessonEvent::curve_click({2.0, 1.5}, 0.05)));    // C(0.5)
+  EXPECT_EQ(runner.waiting_for().feedback, "C(0.5) at (2, 1.5)");
+  EXPECT_EQ(runner.waiting_for().tries, 1);
+  EXPECT_TRUE(runner.waiting_for().hint_shown());
+  EXPECT_TRUE(runner.deliver(LessonEvent::curve_click({1.5, 1.8}, 0.05)));  // 0.27 from the curve: not counted
+  EXPECT_EQ(runner.waiting_for().feedback, "That click is beside the curve: click on the curve itself.");
+  EXPECT_EQ(runner.waiting_for().tries, 1);
+  EXPECT_TRUE(runner.deliver(LessonEvent::curve_click({0.33, 0.54}, 0.05)));  // near C(0.1): the default names it
+  EXPECT_EQ(runner.waiting_for().feedback, "That is C(0.10), the point of the curve at t = 0.10.");
+  EXPECT_EQ(runner.waiting_for().tries, 2);
+  EXPECT_TRUE(runner.deliver(LessonEvent::curve_click({0.92, 1.13}, 0.05)));  // within 0.04 of t = 0.25
+  EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
+  ASSERT_EQ(runner.said().size(), 1U);
+  EXPECT_EQ(runner.said()[0].substr(0, 7), "t = 0.2");
+  ASSERT_EQ(runner.answered().size(), 1U);
+  EXPECT_EQ(runner.answered()[0].given, "C(0.25)");
+
+  runner.next();
+  EXPECT_TRUE(runner.deliver(LessonEvent::curve_click({2.0, 1.5}, 0.05)));
+  EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
+  EXPECT_EQ(runner.answered().at(0).feedback, "the top");  // the answer function's reason for a right click
+}
+
 TEST(LessonQuestions, AnswerReadsANumberOrAPointWithinTheTolerance) {
   HeadlessHost host;
   LessonRunner runner(host);
@@ -235,6 +278,10 @@ step("9", function() answer { "q", number = 1, point = { 1, 2 } } end)
 step("10", function() answer { "q", number = 1, tolerance = -1 } end)
 step("11", function() choose "which?" end)
 step("12", function() choose { "q", options = { "a", "a" }, answer = "a" } end)
+step("13", function() pick { "q", on = "patch", answer = 0.5 } end)
+step("14", function() pick { "q", on = "curve", answer = 1.5 } end)
+step("15", function() pick { "q", on = "curve", answer = 0.5, feedback = { h1 = "x" } } end)
+step("16", function() pick { "q", on = "curve", answer = 0.5, tolerance = "wide" } end)
 )lua")));
   const Strings expected = {
       "lesson.lua:1: choose: the question comes first, as text: choose{ \"Which ...?\", ... }, got nil",
@@ -250,6 +297,12 @@ step("12", function() choose { "q", options = { "a", "a" }, answer = "a" } end)
       "lesson.lua:10: answer: tolerance must be a number >= 0, got number",
       "lesson.lua:11: choose: expected a table like choose{ \"the question\", ... }, got string",
       "lesson.lua:12: choose: the option 'a' is given twice",
+      "lesson.lua:13: pick: on must be \"curve\" (a click on the curve view), or left out for a click on the mesh; "
+      "got 'patch'",
+      "lesson.lua:14: pick on the curve: answer must be the t of the point, from 0 to 1, or function(t, point) return "
+      "ok, why end; got 1.5",
+      "lesson.lua:15: pick on the curve: feedback must be function(t, point) return text end, got table",
+      "lesson.lua:16: pick on the curve: tolerance must be a number >= 0 (in t), got string",
   };
   for (size_t i = 0; i < expected.size(); ++i) {
     runner.go_to(i);

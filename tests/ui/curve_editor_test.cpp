@@ -391,6 +391,48 @@ TEST(CurveEditor, CanvasInputAddsRemovesAndScrolls) {
   EXPECT_DOUBLE_EQ(state.t, 0.48);
 }
 
+TEST(CurveEditor, APressAwayFromThePointsIsAClickForWhoeverAnswersIt) {
+  CurveEditorState state = make_curve_editor(square_curve());
+  state.view = view_for(CurveRegion{{0.0, 0.0}, {1.0, 1.0}}, {100.0, 50.0}, {400.0, 300.0});
+  CanvasInput input;
+  input.hovered = input.left_pressed = input.left_down = true;
+  input.mouse = {450.0, 350.0};  // on p1: a drag, no click
+  handle_canvas_input(state, input);
+  EXPECT_EQ(state.dragged, 1);
+  EXPECT_FALSE(state.clicked);
+
+  state = make_curve_editor(square_curve());
+  state.view = view_for(CurveRegion{{0.0, 0.0}, {1.0, 1.0}}, {100.0, 50.0}, {400.0, 300.0});
+  input.mouse = {300.0, 200.0};  // (0.5, 0.5), away from every point
+  handle_canvas_input(state, input);
+  ASSERT_TRUE(state.clicked);
+  EXPECT_NEAR(state.clicked->x, 0.5, 1e-12);
+  EXPECT_NEAR(state.clicked->y, 0.5, 1e-12);
+  EXPECT_EQ(state.curve.control_points.size(), 4u);  // a single click adds nothing
+
+  state.clicked.reset();
+  input.left_double_clicked = true;  // the second press of a double click adds a point and is no click
+  handle_canvas_input(state, input);
+  EXPECT_FALSE(state.clicked);
+  EXPECT_EQ(state.curve.control_points.size(), 5u);
+
+  input = CanvasInput{};
+  input.left_pressed = input.left_down = true;  // off the canvas
+  input.mouse = {300.0, 200.0};
+  state.clicked.reset();
+  handle_canvas_input(state, input);
+  EXPECT_FALSE(state.clicked);
+}
+
+TEST(CurveEditor, TheTangentToggles) {
+  CurveEditorState state = make_curve_editor(square_curve());
+  EXPECT_FALSE(state.show_tangent);
+  toggle_tangent(state);
+  EXPECT_TRUE(state.show_tangent);
+  toggle_tangent(state);
+  EXPECT_FALSE(state.show_tangent);
+}
+
 // ---- ImGui, headless -------------------------------------------------------------------------------
 
 // The shared headless ImGui (ui_test_support.h) at 1024x768, with one frame of the curve editor in a fixed
