@@ -145,7 +145,9 @@ vertices and two faces. The yellow edge in the middle is the one we will flip; c
       if wrong then return wrong end
       local n = name(tostring(element))
       if n == "h0" then return "That is h0 itself; h0.next is the halfedge after it." end
-      if n == "h1" then return "That is h1 = h0.twin: the same edge the other way, in the other face. next stays in h0's face." end
+      if n == "h1" then
+        return "That is h1 = h0.twin: the same edge the other way, in the other face. next stays in h0's face."
+      end
       if n == "h3" then return "That is h3, the halfedge before h0 (h3.next = h0): next starts where h0 ends, at b." end
       if n == "h4" or n == "h5" then return n .. " is in f1, the other face; h0.next stays in f0 with h0." end
     end,
