@@ -1,10 +1,10 @@
 -- Part 2: Bézier patches: a 4x4 grid of control points, evaluated as four curves in u (the rows) and then
 -- one curve in v (the column through the row points); the normal at (u, v) from the two tangents, on the probe the
 -- student moves; then the Utah teapot, 32 such patches, and what makes two of them meet smoothly. Each step asks the
--- student to predict before it shows, and names the likely mistakes (u and v swapped, rows and columns swapped). Numbers come
--- from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from assets/teapot.bez,
--- found next to this file with lesson_file(). The last step runs the student's own evaluate (your_turn) at the
--- (u, v) of the hand computation. CI runs it headless:
+-- student to predict before it shows, and names the likely mistakes (u and v swapped, rows and columns swapped).
+-- Numbers come from the project's Bézier code (meshedit.patch, p:evaluation), and the teapot from
+-- assets/teapot.bez, found next to this file with lesson_file(). The last step runs the student's own evaluate
+-- (your_turn) at the (u, v) of the hand computation. CI runs it headless:
 --   meshedit lesson lessons/2_bezier_patches.lua --headless \
 --     --answers tests/script/lessons/2_bezier_patches_answers.lua --student tests/script/solutions
 

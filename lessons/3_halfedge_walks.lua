@@ -30,8 +30,9 @@ end
 local function same(a, b) return tostring(a) == tostring(b) end
 
 -- The fan of the normals step: an interior vertex (v0, at the origin) with six triangles around it, a roof
--- whose ridge runs along y, away from the front view (z is up). The triangles on the right (+x) are large and slope down to the right,
--- those on the left small and slope down to the left: their unit normals cancel sideways, their areas do not.
+-- whose ridge runs along y, away from the front view (z is up). The triangles on the right (+x) are large and slope
+-- down to the right, those on the left small and slope down to the left: their unit normals cancel sideways, their
+-- areas do not.
 local function fan()
   local points = { { 0, 0, 0 } }
   for k = 0, 5 do
@@ -145,7 +146,8 @@ every mesh operation asks: which vertices are the **neighbours of ]] .. tostring
       end
       if value > 12 then return "The list has only 12 triangles." end
     end,
-    hint = "Could a triangle near the end of the list use " .. tostring(v) .. "? How would you know without reading it?",
+    hint = "Could a triangle near the end of the list use " .. tostring(v)
+      .. "? How would you know without reading it?",
   }
   local count, h = 0, v.halfedge
   repeat
@@ -192,7 +194,9 @@ the neighbouring face).]], "V", tostring(v)))
         return "That is " .. kind_of(e) .. ", not a halfedge: click one of the arrows."
       end
       if same(e, start) then return "That is h itself." end
-      if same(e, start.twin) then return "That is h.twin: it ends at " .. tostring(v) .. ". Take one more step: its next." end
+      if same(e, start.twin) then
+        return "That is h.twin: it ends at " .. tostring(v) .. ". Take one more step: its next."
+      end
       if same(e, start.next) then
         return "That is h.next: it goes on around h's own face, away from " .. tostring(v) .. "."
       end
@@ -303,12 +307,17 @@ its **length is twice the face's area**.]]
     .. "small ones on the left sloping down to the left. The **blue** arrow is the plain average: each face's "
     .. "cross product normalized first, so every face counts the same. It points straight up, " .. vec(plain) .. ".")
   choose {
-    "Now add the cross products as they are, so each face counts by its area, and normalize the sum. Where does that normal point?",
-    options = { "Leaning right, towards the big faces", "Leaning left, towards the small faces", "Straight up, as the blue one" },
+    "Now add the cross products as they are, so each face counts by its area, and normalize the sum. "
+      .. "Where does that normal point?",
+    options = {
+      "Leaning right, towards the big faces", "Leaning left, towards the small faces", "Straight up, as the blue one",
+    },
     answer = "Leaning right, towards the big faces",
     feedback = {
-      ["Leaning left, towards the small faces"] = "The other way: a small face has a short cross product, so it counts for less.",
-      ["Straight up, as the blue one"] = "Only when all the faces have the same area, as on a cube's corner. Here the right-hand faces are bigger.",
+      ["Leaning left, towards the small faces"] =
+        "The other way: a small face has a short cross product, so it counts for less.",
+      ["Straight up, as the blue one"] =
+        "Only when all the faces have the same area, as on a cube's corner. Here the right-hand faces are bigger.",
       ["Leaning right, towards the big faces"] = "The big faces' long cross products outweigh the small ones'.",
     },
     hint = "Which faces have the longest cross products, and which way do their normals lean?",

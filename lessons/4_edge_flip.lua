@@ -27,7 +27,7 @@ local function diamond()
 end
 
 -- The diagram's names, by walking from e's halfedge h0.
-local function names_of(mesh, e)
+local function names_of(e)
   local n = {}
   n.e = e
   n.h0 = e.halfedge
@@ -66,7 +66,7 @@ local function name_by_id(n)
 end
 
 local shape = diamond()
-local names = names_of(shape, shape:edge(0))
+local names = names_of(shape:edge(0))
 local name = name_by_id(names)
 
 -- The same diamond with the faces and a, b pointing at the halfedges a flip takes away from them: f0.halfedge =
@@ -75,7 +75,7 @@ local name = name_by_id(names)
 -- the vertex); the flip has to change all four. Same ids as `shape`, so `names` and `name` hold for it too.
 local function rigged_diamond()
   local m = diamond()
-  local n = names_of(m, m:edge(0))
+  local n = names_of(m:edge(0))
   n.f0.halfedge, n.f1.halfedge = n.h2, n.h4
   n.a.halfedge, n.b.halfedge = n.h0, n.h1
   return m
@@ -145,7 +145,9 @@ vertices and two faces. The yellow edge in the middle is the one we will flip; c
       if wrong then return wrong end
       local n = name(tostring(element))
       if n == "h0" then return "That is h0 itself; h0.next is the halfedge after it." end
-      if n == "h1" then return "That is h1 = h0.twin: the same edge the other way, in the other face. next stays in h0's face." end
+      if n == "h1" then
+        return "That is h1 = h0.twin: the same edge the other way, in the other face. next stays in h0's face."
+      end
       if n == "h3" then return "That is h3, the halfedge before h0 (h3.next = h0): next starts where h0 ends, at b." end
       if n == "h4" or n == "h5" then return n .. " is in f1, the other face; h0.next stays in f0 with h0." end
     end,
@@ -308,7 +310,7 @@ f1.halfedge = h4, **a.halfedge = h0** (sky blue) and b.halfedge = h1. The flip m
   }
   -- A flip that rewrites only the list of the previous step, run on a copy: what validation says of it.
   local broken = rigged:copy()
-  local n = names_of(broken, broken:edge(0))
+  local n = names_of(broken:edge(0))
   n.h0.next, n.h3.next, n.h4.next = n.h3, n.h4, n.h0
   n.h1.next, n.h5.next, n.h2.next = n.h5, n.h2, n.h1
   n.h0.vertex, n.h1.vertex = n.d, n.c
@@ -405,7 +407,7 @@ step("Flip it yourself", function()
   wait_for { selection = tostring(names.e), hint = "Click the edge between a and b" }
   say [[
 Now press **F** to flip it.]]
-  local a, b, c, d = tostring(names.a), tostring(names.b), tostring(names.c), tostring(names.d)
+  local c, d = tostring(names.c), tostring(names.d)
   local result = wait_for {
     hint = "Press F to flip the selected edge",
     condition = function()

@@ -164,7 +164,9 @@ It is done in four phases, and the app's **Shift+L** runs them one at a time (L 
     tolerance = 0.5,
     feedback = function(value)
       if value == 8 then return "8 counts only the old vertices, which stay; every edge split adds one more." end
-      if value == 32 then return "Faces are multiplied by four, vertices are not: the old ones stay and each edge adds one." end
+      if value == 32 then
+        return "Faces are multiplied by four, vertices are not: the old ones stay and each edge adds one."
+      end
       if value == 20 then return "20 = 8 + 12 counts a new vertex per face; phase 2 splits edges, one vertex each." end
       if value == 44 then return "44 = 8 + 36 counts two new vertices per edge: a split adds one." end
     end,

@@ -3,6 +3,7 @@
 -- only. A suite also has the whole `meshedit` module (meshedit.lua).
 
 ---@alias Visibility "visible"|"hidden"|"after_due_date"|"after_published"
+---@alias ReferenceFunction "flip_edge"|"split_edge"|"upsample"|"vertex_normal"|"evaluate_step"|"evaluate"
 
 ---Defaults for every test of the file (all optional).
 ---@class SuiteSpec
@@ -11,7 +12,7 @@
 ---@field time_limit? number seconds
 ---@field memory_mb? number
 ---@field visibility? Visibility
----@field reference? string[] reference functions given to student code: "flip_edge", "split_edge", "upsample", "vertex_normal", "evaluate_step", "evaluate"
+---@field reference? ReferenceFunction[] reference functions given to student code
 ---@field allow_api? string[] exercise operations student code may call: "mesh:flip", "meshedit.curve", ...
 ---@field partial? boolean
 ---@field output_kb? number

@@ -20,10 +20,21 @@ function step(title, body) end
 ---@param markdown string
 function say(markdown) end
 
+---The menu commands a step can wait for (wait_for{command = ...}).
+---@alias MenuCommand
+---| "loop"
+---| "loop-phase"
+---| "catmull-clark"
+---| "catmull-clark-phase"
+---| "linear"
+---| "linear-phase"
+---| "triangulate"
+---| "open-repaired"
+
 ---What a step can wait for (give exactly one of key, command, click, selection, condition, button).
 ---@class WaitSpec
 ---@field key? string "F", "shift+L", "ctrl+Z" (case ignored); returns the key as pressed
----@field command? "loop"|"loop-phase"|"catmull-clark"|"catmull-clark-phase"|"linear"|"linear-phase"|"triangulate"|"open-repaired" a menu command the student runs (from its menu or its key), after it ran; returns its name
+---@field command? MenuCommand a menu command the student runs (from its menu or its key), once run; returns its name
 ---@field click? string|Element "vertex", "e7", "any" or a handle; returns the clicked element
 ---@field selection? string|Element "e7", "edge", "any" or a handle; returns the selected element
 ---@field condition? fun(): any checked now, then once per frame; returns its first truthy value

@@ -56,7 +56,8 @@ test{ number = "5.3", name = "the new vertex's halfedge runs along the split edg
     local m = student.split_edge(grid, grid:edge(2))
     if not expect.truthy(m, "split_edge returns the new vertex") then return end
     local far = m.halfedge.twin.vertex.position
-    expect.truthy(far == ends[1] or far == ends[2], "m.halfedge leads to an end of the split edge, not to " .. tostring(far))
+    expect.truthy(far == ends[1] or far == ends[2],
+      "m.halfedge leads to an end of the split edge, not to " .. tostring(far))
   end }
 
 test{ number = "5.4", name = "boundary edges split only the triangle side", points = 1, partial = true,
@@ -64,7 +65,9 @@ test{ number = "5.4", name = "boundary edges split only the triangle side", poin
   run = function(student, expect)
     local grid = meshedit.grid(2, 2)
     for e in grid:edges() do
-      if e:is_boundary() then check_split(student, expect, grid, e.id, "split_edge(" .. tostring(e) .. ") on the boundary") end
+      if e:is_boundary() then
+        check_split(student, expect, grid, e.id, "split_edge(" .. tostring(e) .. ") on the boundary")
+      end
     end
   end }
 
@@ -76,7 +79,9 @@ test{ number = "5.5", name = "twenty splits in a row on an icosahedron", points 
       local target = reference:edge((step * 11) % reference:num_edges())
       local at = midpoint(target)
       local e = edge_at(mine, at)
-      if not expect(e, "split " .. step .. ": your mesh has an edge with its midpoint at " .. tostring(at)) then return end
+      if not expect(e, "split " .. step .. ": your mesh has an edge with its midpoint at " .. tostring(at)) then
+        return
+      end
       local before = mine:copy()
       local m = student.split_edge(mine, e)
       if not expect.exercise("split_edge", {mesh = before, edge = e.id}, m, mine,

@@ -51,7 +51,8 @@ test{ number = "6.4", name = "a grid with a boundary, one level", points = 1, ex
 test{ number = "6.5", name = "an irregular mesh (vertices of degree 3 to 6)", points = 2, visibility = "hidden",
   run = function(student, expect)
     local mesh = meshedit.from_polygons(
-      {vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, 1, 0), vec3(-1, 0, 0), vec3(0, -1, 0), vec3(0, 0, -1), vec3(0.7, 0.7, 0.2)},
+      {vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, 1, 0), vec3(-1, 0, 0), vec3(0, -1, 0), vec3(0, 0, -1),
+        vec3(0.7, 0.7, 0.2)},
       {{1, 2, 7}, {1, 7, 3}, {1, 3, 4}, {1, 4, 5}, {1, 5, 2}, {6, 7, 2}, {6, 3, 7}, {6, 4, 3}, {6, 5, 4}, {6, 2, 5}})
     check(student, expect, mesh, 1, "irregular mesh")
   end }

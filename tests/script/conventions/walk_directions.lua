@@ -38,7 +38,9 @@ for v in cube:vertices() do
     senses[i] = turn(directions[i], directions[i % #directions + 1], p, tostring(v))
   end
   local sense = single(senses, "the walk around " .. tostring(v))
-  if vertex_sense and sense ~= vertex_sense then error(tostring(v) .. " turns " .. sense .. ", others " .. vertex_sense) end
+  if vertex_sense and sense ~= vertex_sense then
+    error(tostring(v) .. " turns " .. sense .. ", others " .. vertex_sense)
+  end
   vertex_sense = sense
 end
 print("vertex walk: " .. vertex_sense)

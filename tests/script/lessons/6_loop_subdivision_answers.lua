@@ -5,8 +5,8 @@
 -- On the cube after phase 2: e0 and e18 are halves of split original edges (e0 the half m-b, e18 the half a-m of
 -- e0's split), e22 a new edge between two new vertices, e19 a new edge from an old corner to a new vertex.
 return {
-  ["Four phases"] = { {answer = 8, feedback = "every edge split adds one"}, {answer = 32, feedback = "vertices are not"},
-    {answer = 26} },
+  ["Four phases"] = { {answer = 8, feedback = "every edge split adds one"},
+    {answer = 32, feedback = "vertices are not"}, {answer = 26} },
   ["Phase 1: new positions"] = { {answer = "3/16", feedback = "n = 3 only"}, {answer = "1/6", feedback = "n u = 1"},
     {answer = "1/16"} },
   ["Phase 2: split every edge"] = {
