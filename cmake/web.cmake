@@ -44,7 +44,7 @@ meshedit_vendor_source(tinyxml2 tinyxml2-9.0.0.tar.gz
                        https://github.com/leethomason/tinyxml2/archive/refs/tags/9.0.0.tar.gz
                        314a5cd2e21f1deef0a2def58ddbd304e4de2038e1d6ca2bdf45e74c24f13719)
 
-# The header-only libraries: links in the build folder, one per library, and lua.hpp for Lua compiled as C++.
+# The header-only libraries: links in the build folder, one per library.
 set(header_only "${PROJECT_BINARY_DIR}/header_only")
 file(MAKE_DIRECTORY "${header_only}")
 foreach(entry glm nlohmann tiny_gltf.h stb/stb_image.h stb/stb_image_write.h)
@@ -54,13 +54,6 @@ foreach(entry glm nlohmann tiny_gltf.h stb/stb_image.h stb/stb_image_write.h)
   endif()
   file(CREATE_LINK "${MESHEDIT_HEADER_ONLY_DIR}/${entry}" "${header_only}/${link_name}" SYMBOLIC)
 endforeach()
-# Lua compiled as C++ has C++ linkage: lua.hpp includes its headers without extern "C".
-# (file(CONFIGURE) writes it only when its text changes, so a new configure recompiles nothing.)
-file(CONFIGURE OUTPUT "${header_only}/lua.hpp" CONTENT "// Lua 5.4 compiled as C++ (web build): no extern \"C\".
-#include \"lua.h\"
-#include \"lualib.h\"
-#include \"lauxlib.h\"
-")
 
 add_library(meshedit_header_only INTERFACE)
 target_include_directories(meshedit_header_only SYSTEM INTERFACE "${header_only}")
@@ -73,20 +66,9 @@ target_link_libraries(meshedit_header_only_impl PUBLIC meshedit_header_only)
 add_library(meshedit::tinygltf ALIAS meshedit_header_only_impl)
 add_library(meshedit::stb ALIAS meshedit_header_only_impl)
 
-# Lua 5.4.6: the 32 library files (not the lua/luac programs, onelua.c or the test library), compiled as C++ so an
-# error unwinds C++ frames, as Debian's lua5.4-c++ does natively.
-set(lua_files lapi lauxlib lbaselib lcode lcorolib lctype ldblib ldebug ldo ldump lfunc lgc linit liolib llex
-    lmathlib lmem loadlib lobject lopcodes loslib lparser lstate lstring lstrlib ltable ltablib ltm lundump
-    lutf8lib lvm lzio)
-list(TRANSFORM lua_files PREPEND "${lua_SOURCE_DIR}/")
-list(TRANSFORM lua_files APPEND ".c")
-add_library(meshedit_lua STATIC ${lua_files})
-set_source_files_properties(${lua_files} PROPERTIES LANGUAGE CXX)
-target_compile_options(meshedit_lua PRIVATE -x c++ -w)
-# As Debian builds it (and the upstream release makefile): with Lua 5.3's compatibility functions (math.pow...).
-target_compile_definitions(meshedit_lua PUBLIC LUA_COMPAT_5_3)
-target_include_directories(meshedit_lua SYSTEM PUBLIC "${lua_SOURCE_DIR}" "${header_only}")
-add_library(meshedit::lua ALIAS meshedit_lua)
+# Lua 5.4.6 compiled as C++ so an error unwinds C++ frames, as Debian's lua5.4-c++ does natively (lua_sources.cmake).
+include(${CMAKE_CURRENT_LIST_DIR}/lua_sources.cmake)
+meshedit_lua_from_sources("${lua_SOURCE_DIR}")
 
 # tinyxml2 9.0.0: one file.
 add_library(meshedit_tinyxml2 STATIC "${tinyxml2_SOURCE_DIR}/tinyxml2.cpp")
@@ -94,13 +76,10 @@ target_include_directories(meshedit_tinyxml2 SYSTEM PUBLIC "${tinyxml2_SOURCE_DI
 target_compile_options(meshedit_tinyxml2 PRIVATE -w)
 add_library(meshedit::tinyxml2 ALIAS meshedit_tinyxml2)
 
-# Dear ImGui 1.86: the core, imgui_stdlib, and the GLFW and OpenGL3 backends (WebGL 2 through emscripten's GLES3).
-add_library(meshedit_imgui STATIC "${imgui_SOURCE_DIR}/imgui.cpp" "${imgui_SOURCE_DIR}/imgui_draw.cpp"
-            "${imgui_SOURCE_DIR}/imgui_tables.cpp" "${imgui_SOURCE_DIR}/imgui_widgets.cpp"
-            "${imgui_SOURCE_DIR}/imgui_demo.cpp" "${imgui_SOURCE_DIR}/misc/cpp/imgui_stdlib.cpp")
-target_include_directories(meshedit_imgui SYSTEM PUBLIC "${imgui_SOURCE_DIR}" "${imgui_SOURCE_DIR}/misc/cpp")
-target_compile_options(meshedit_imgui PRIVATE -w)
-add_library(meshedit::imgui ALIAS meshedit_imgui)
+# Dear ImGui 1.86: the core, imgui_stdlib, and the GLFW and OpenGL3 backends (WebGL 2 through emscripten's GLES3),
+# below (imgui_sources.cmake).
+include(${CMAKE_CURRENT_LIST_DIR}/imgui_sources.cmake)
+meshedit_imgui_from_sources("${imgui_SOURCE_DIR}")
 
 # The browser's GLFW (emscripten's port) and WebGL 2 with all of OpenGL ES 3.0.
 add_library(meshedit_web_glfw INTERFACE)
@@ -110,12 +89,8 @@ add_library(meshedit_web_gl INTERFACE)
 target_link_options(meshedit_web_gl INTERFACE -sUSE_WEBGL2=1 -sMIN_WEBGL_VERSION=2 -sMAX_WEBGL_VERSION=2 -sFULL_ES3=1)
 add_library(meshedit::gl ALIAS meshedit_web_gl)
 
-add_library(meshedit_imgui_backends STATIC "${imgui_SOURCE_DIR}/backends/imgui_impl_glfw.cpp"
-            "${imgui_SOURCE_DIR}/backends/imgui_impl_opengl3.cpp")
-target_include_directories(meshedit_imgui_backends SYSTEM PUBLIC "${imgui_SOURCE_DIR}/backends")
-target_compile_options(meshedit_imgui_backends PRIVATE -w)
+meshedit_imgui_backends_from_sources("${imgui_SOURCE_DIR}/backends" "${imgui_SOURCE_DIR}/backends" meshedit_imgui)
 # ImGui 1.86 takes emscripten for WebGL 1 (GLES 2, no vertex arrays); the page has WebGL 2, whose GLES 3 the backend
 # then uses with its own vertex array, as on the desktop.
 target_compile_definitions(meshedit_imgui_backends PRIVATE IMGUI_IMPL_OPENGL_ES3)
-target_link_libraries(meshedit_imgui_backends PUBLIC meshedit_imgui meshedit_web_glfw meshedit_web_gl)
-add_library(meshedit::imgui_backends ALIAS meshedit_imgui_backends)
+target_link_libraries(meshedit_imgui_backends PUBLIC meshedit_web_gl)

@@ -59,6 +59,9 @@ const CliCommand kCommands[] = {
      "lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"
      "                                     run a lesson's steps with scripted answers (no window); your_turn\n"
      "                                     runs DIR's files (default scripts/student)"},
+    {"paths", run_paths,
+     "paths                                the folders of the lessons, assets, shaders, student and exercise\n"
+     "                                     files and fonts this meshedit reads (beside it, installed, or the source)"},
     {"help", run_help, "help, --help, -h                     this text"},
     {"-h", run_help, nullptr},
     {"--help", run_help, nullptr},

@@ -32,6 +32,8 @@ int run_grade(const std::vector<std::string>& args, std::ostream& out);
 // `lesson FILE --headless [--answers ANSWERS.lua] [--student DIR]`: every step with scripted answers, your_turn with
 // the student folder DIR; 0 when all pass. UsageError without --headless; ScriptError (a step failed: its file:line).
 int run_lesson(const std::vector<std::string>& args, std::ostream& out);
+// `paths`: the folders of lessons, assets, shaders, student and exercise files and fonts this binary uses.
+int run_paths(const std::vector<std::string>& args, std::ostream& out);
 
 // Argument helpers shared by the commands.
 // Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.

@@ -1,6 +1,7 @@
 // Opening files as half-edge meshes (see mesh_loading.h).
 #include "app/mesh_loading.h"
 
+#include "core/data_folders.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "io/file_error.h"
@@ -32,18 +33,7 @@ LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resol
   return build_from_file(polygons_of(load_file(path), path, patch_resolution), path);
 }
 
-namespace {
-
-std::filesystem::path data_dir(const char* name) {
-  std::error_code ec;
-  const auto beside_binary = std::filesystem::read_symlink("/proc/self/exe", ec).parent_path() / name;
-  if (!ec && std::filesystem::is_directory(beside_binary, ec)) return beside_binary;
-  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / name;
-}
-
-}  // namespace
-
-std::filesystem::path assets_dir() { return data_dir("assets"); }
-std::filesystem::path lessons_dir() { return data_dir("lessons"); }
+std::filesystem::path assets_dir() { return data_folder("assets"); }
+std::filesystem::path lessons_dir() { return data_folder("lessons"); }
 
 }  // namespace meshedit

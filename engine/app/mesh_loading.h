@@ -25,7 +25,7 @@ LoadedMesh load_halfedge_mesh(const std::filesystem::path& path, int patch_resol
 // The polygons of an already-loaded file: a mesh as is, patches tessellated; throws for a curve.
 PolygonMesh polygons_of(const LoadedFile& file, const std::filesystem::path& path, int patch_resolution);
 
-// The assets/ folder: beside the binary (installed layout), else in the source tree.
+// The assets/ folder: beside the binary, in the installed layout or in the source tree (core/data_folders.h).
 std::filesystem::path assets_dir();
 // The lessons/ folder, found the same way.
 std::filesystem::path lessons_dir();

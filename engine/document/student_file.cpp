@@ -5,17 +5,14 @@
 #include <new>
 #include <utility>
 
+#include "core/data_folders.h"
 #include "script/exception_text.h"
 
 namespace meshedit {
 
-std::filesystem::path default_student_folder() {
-  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "scripts" / "student";
-}
+std::filesystem::path default_student_folder() { return data_folder("scripts/student"); }
 
-std::filesystem::path default_exercise_folder() {
-  return std::filesystem::path(MESHEDIT_SOURCE_DIR) / "scripts" / "exercises";
-}
+std::filesystem::path default_exercise_folder() { return data_folder("scripts/exercises"); }
 
 void StudentFile::set_path(std::filesystem::path path) {
   if (path == path_) return;

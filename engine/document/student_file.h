@@ -24,9 +24,9 @@
 
 namespace meshedit {
 
-// <source tree>/scripts/student (the source tree's path is compiled in).
+// scripts/student: beside the binary, in the installed layout or in the source tree (core/data_folders.h).
 std::filesystem::path default_student_folder();
-// <source tree>/scripts/exercises: the exercises defined in Lua (script/scripted_exercise.h) the window and the
+// scripts/exercises, found the same way: the exercises defined in Lua (script/scripted_exercise.h) the window and the
 // lesson command register when they start.
 std::filesystem::path default_exercise_folder();
 

@@ -5,6 +5,7 @@
 #include <cstdlib>
 #include <utility>
 
+#include "core/data_folders.h"
 #include "core/file_bytes.h"
 #include "render/gl_api.h"
 #include "render/render_error.h"
@@ -82,10 +83,7 @@ ShaderLibrary::ShaderLibrary(std::vector<std::filesystem::path> search_dirs) : d
 std::vector<std::filesystem::path> ShaderLibrary::default_search_dirs() {
   std::vector<std::filesystem::path> dirs;
   if (const char* env = std::getenv("MESHEDIT_SHADERS"); env != nullptr && *env != '\0') dirs.emplace_back(env);
-  std::error_code ec;
-  const auto binary = std::filesystem::read_symlink("/proc/self/exe", ec);
-  if (!ec) dirs.push_back(binary.parent_path() / "shaders");
-  dirs.push_back(std::filesystem::path(MESHEDIT_SOURCE_DIR) / "shaders");
+  for (std::filesystem::path& dir : data_folder_candidates("shaders")) dirs.push_back(std::move(dir));
   return dirs;
 }
 

@@ -3,8 +3,8 @@
 //
 // Where shaders are looked for, in order (the first directory holding the file wins, per file):
 //   1. $MESHEDIT_SHADERS, when set;
-//   2. <directory of the running binary>/shaders (an installed or copied layout);
-//   3. <source tree>/shaders (MESHEDIT_SOURCE_DIR, compiled in: a build tree finds its sources).
+//   2. data_folder_candidates("shaders") (core/data_folders.h): beside the running binary, in the installed layout
+//      (<prefix>/share/meshedit/shaders), then in the source tree (compiled in: a build tree finds its sources).
 // A missing file is a RenderError listing every path that was tried; a compile or link error is a
 // RenderError quoting the file names and the driver's log. Shaders are GLSL 330 core or GLSL ES 3.00 (WebGL 2),
 // written once without a #version line: the loader puts the running GL's prologue first (render/gl_api.h).

@@ -4,6 +4,7 @@
 #include <cstring>
 #include <exception>
 
+#include "core/compiler_builtins.h"
 #include "core/palette.h"
 #include "script/binding_support.h"
 #include "script/lua_runtime.h"
@@ -23,7 +24,7 @@ std::string caller_where(lua_State* L) { return lesson_where(L, 1); }
     lua_pushstring(L, kScriptMemoryRanOut);
   }
   lua_error(L);
-  __builtin_unreachable();  // lua_error never returns (it throws in this C++ build of Lua)
+  MESHEDIT_UNREACHABLE();  // lua_error never returns (it throws in this C++ build of Lua)
 }
 
 void require_step(lua_State* L, const char* name) {

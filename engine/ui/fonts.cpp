@@ -8,7 +8,9 @@
 #include <cstring>
 #include <filesystem>
 #include <string>
+#include <system_error>
 
+#include "core/data_folders.h"
 #include "core/file_bytes.h"
 
 namespace meshedit {
@@ -29,12 +31,16 @@ ImFont* add_font(ImFontAtlas& atlas, const fs::path& path, float pixels, ImFontC
   return atlas.AddFontFromMemoryTTF(data, int(bytes.size()), pixels, &config);
 }
 
-fs::path font_dir() {
+}  // namespace
+
+fs::path font_folder() {
   if (const char* dir = std::getenv("MESHEDIT_FONT_DIR"); dir && *dir) return dir;
+  for (const fs::path& dir : data_folder_candidates("fonts")) {
+    std::error_code ec;
+    if (fs::is_regular_file(dir / "DejaVuSans.ttf", ec)) return dir;
+  }
   return "/usr/share/fonts/truetype/dejavu";
 }
-
-}  // namespace
 
 FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
   ImGuiIO& io = ImGui::GetIO();
@@ -45,7 +51,7 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
   out.pixels = font_px * std::max(0.5f, scale) * raster;
   io.FontGlobalScale = 1.0f / raster;
 
-  const fs::path dir = font_dir();
+  const fs::path dir = font_folder();
   const fs::path text = dir / "DejaVuSans.ttf", mono = dir / "DejaVuSansMono.ttf";
   ImFontConfig config;
   config.OversampleH = 2;

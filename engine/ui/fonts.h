@@ -7,9 +7,11 @@
 //   second the monospace one. The caller uploads the atlas again (the window's backend) before the next frame.
 // - mono_font() is never null while an ImGui context exists: the text font stands in when there is no second one.
 // - The font files are looked up in MESHEDIT_FONT_DIR when it is set (tests point it at a folder without them), else
-//   in Debian's folder for fonts-dejavu-core.
+//   in the first fonts/ folder of core/data_folders.h that holds DejaVuSans.ttf (an install copies them into
+//   share/meshedit/fonts), else in Debian's folder for fonts-dejavu-core.
 #pragma once
 
+#include <filesystem>
 #include <string>
 
 struct ImFont;
@@ -29,5 +31,8 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale = 1.0f);
 
 // The monospace font, for ids, pointer tables and code.
 ImFont* mono_font();
+
+// The folder load_fonts reads DejaVuSans.ttf and DejaVuSansMono.ttf from (see the invariants above).
+std::filesystem::path font_folder();
 
 }  // namespace meshedit
