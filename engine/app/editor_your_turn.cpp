@@ -5,6 +5,9 @@
 //     Exercises tab takes the your_turn's exercise and runs mine on it (ExerciseSession::run_mine: the changed pointers
 //     mine vs reference, the validation, the write-by-write replay), and the tab comes to the front of the right
 //     column, scrolled so the changed-pointers table is in sight.
+//   - a scripted exercise on points or a patch: the Exercises tab takes it with the your_turn's input (its control
+//     points or patch and args, ExerciseSession::set_values_input), runs mine on it and comes to the front; the
+//     document is left as it is.
 //   - curve, patch: the input goes into the curve view (its points, its t, every level shown) or the patch view (the
 //     patch, the probe at its (u, v)) with the view's "mine" switch on (document/bezier_mine.h).
 //
@@ -65,6 +68,13 @@ Check EditorApp::show_your_turn_mine() {
       case Exercise::FlipEdge:
       case Exercise::SplitEdge:
       case Exercise::Upsample: break;
+    }
+    if (!is_mesh_exercise(verdict.exercise)) {  // a scripted exercise on points or a patch: the tab's text tables
+      exercises_.finish_replay(doc_);
+      exercises_.set_exercise(verdict.exercise);
+      exercises_.set_values_input(input, "the lesson's input: " + verdict.input);
+      bring_exercises_tab_forward();
+      return exercises_.run_mine(doc_, selection_);
     }
     if (!input.mesh) return Check::no("the your_turn kept no mesh");  // every mesh your_turn keeps one
     exercises_.finish_replay(doc_);

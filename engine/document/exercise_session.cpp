@@ -100,10 +100,41 @@ void ExerciseSession::set_folder(std::filesystem::path folder) {
 }
 
 bool ExerciseSession::set_exercise(Exercise exercise) {
-  if (!is_mesh_exercise(exercise)) return false;
+  if (!is_mesh_exercise(exercise) && !scripted_exercise(exercise)) return false;
   exercise_ = exercise;
+  fixture_ = 0;
+  values_input_.reset();
   student_.set_path(file());
   return true;
+}
+
+bool ExerciseSession::set_fixture(size_t index) {
+  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  if (!scripted || !scripted->takes_values() || index >= scripted->fixtures().size()) return false;
+  fixture_ = index;
+  values_input_.reset();
+  return true;
+}
+
+void ExerciseSession::set_values_input(ExerciseInput input, std::string what) {
+  values_input_ = std::move(input);
+  values_input_name_ = std::move(what);
+}
+
+OpResult<ExerciseInput> ExerciseSession::values_input_for(std::string& what) const {
+  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  if (values_input_) {
+    what = values_input_name_;
+    return {Check::yes(), *values_input_};
+  }
+  if (!scripted || fixture_ >= scripted->fixtures().size()) {
+    return {Check::no(std::string(exercise_info(exercise_).name) + " has no fixture to run on (its definition's "
+                                                                   "fixtures = {...})"),
+            {}};
+  }
+  const ScriptedFixture& fixture = scripted->fixtures()[fixture_];
+  what = fixture.name;
+  return {Check::yes(), scripted->input_of(fixture)};
 }
 
 std::filesystem::path ExerciseSession::file() const { return folder_ / exercise_info(exercise_).file; }
@@ -134,7 +165,10 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
     set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
     return refused;
   }
-  OpResult<ExerciseInput> input = input_for(exercise_, doc, selection);
+  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  const bool on_values = scripted && scripted->takes_values();
+  std::string values_what;
+  OpResult<ExerciseInput> input = on_values ? values_input_for(values_what) : input_for(exercise_, doc, selection);
   if (!input.ok()) {
     // A refusal for lack of memory is an Error: memory to spare might have run it.
     const Severity severity = input.check.reason == kMemoryRanOut ? Severity::Error : Severity::Warning;
@@ -153,7 +187,9 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
   result.exercise = exercise_;
   result.mine = mine;
   result.serial = runs_ + 1;
-  const std::string target = input.value.element.valid() ? " " + format_id(input.value.element) : std::string();
+  const std::string target = on_values                     ? " (" + values_what + ")"
+                             : input.value.element.valid() ? " " + format_id(input.value.element)
+                                                           : std::string();
   result.label = who + std::string(": ") + operation_word(exercise_) + target;
   result.input = input.value;
   try {
@@ -193,7 +229,8 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
     }
   }
   run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
-  run.unchanged_text = result.label + ": nothing changed (" + run.verdict + ")";
+  run.unchanged_text =
+      on_values ? result.label + ": " + run.verdict : result.label + ": nothing changed (" + run.verdict + ")";
   run.returned = failed ? Check::no(outcome.error) : Check::yes();
   if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) run.mesh = *outcome.mesh;  // the report keeps its own
   prepared = std::move(run);

@@ -1,6 +1,7 @@
-// ExerciseSession: the window's "mine vs reference" for the mesh exercises (flip, split, normals, upsample), as
-// plain data (no ImGui): which exercise is active, the student folder, the last report, and the write-by-write
-// replay of the student's operation in the document.
+// ExerciseSession: the window's "mine vs reference" for the mesh exercises (flip, split, normals, upsample) and the
+// scripted ones (scripted_exercise.h), as plain data (no ImGui): which exercise is active, the student folder, the
+// last report, and the write-by-write replay of the student's operation in the document. A scripted exercise on
+// points or a patch runs on one of its fixtures (or on the input a lesson's your_turn gave), not on the document.
 //
 // Invariants:
 // - The student file is read through a StudentFile (student_file.h): loaded again when it is saved, so saving
@@ -9,7 +10,8 @@
 // - run_mine / run_reference never throw and change the document by at most one undoable operation, labelled
 //   "mine: flip e7" / "reference: flip e7" ("mine (error): ..." when the student's function failed half way);
 //   the student's result goes in even when it differs from the reference (validation says what broke). An
-//   unchanged mesh (a refusal, the templates) records nothing.
+//   unchanged mesh (a refusal, the templates) records nothing, nor does a run on points or a patch (the document and
+//   the selection are not read; the status line says the verdict).
 // - They keep document_actions.h's out-of-memory contract: everything that can fail (the input's copy of the mesh,
 //   the run, the label, the status line's text) is made before the document changes, and the run goes in through
 //   apply_operation. When memory runs out before that, or under the student's code (a Lua error flagged
@@ -45,8 +47,8 @@
 
 namespace meshedit {
 
-// The exercises the window runs on its mesh: normals, flip, split, upsample (in the assignment's order), then the
-// scripted ones registered from scripts/exercises (scripted_exercise.h).
+// The exercises the Exercises tab runs: normals, flip, split, upsample (in the assignment's order), then the scripted
+// ones registered from scripts/exercises (scripted_exercise.h), those on points or a patch among them.
 std::vector<Exercise> mesh_exercises();
 
 // The last run (mine or the reference) and what it worked on.
@@ -69,8 +71,15 @@ class ExerciseSession {
   const std::filesystem::path& folder() const { return folder_; }
   void set_folder(std::filesystem::path folder);  // forgets the loaded code (the next run loads afresh)
   Exercise exercise() const { return exercise_; }
-  // Only mesh exercises; anything else is ignored (returns false).
+  // Only mesh exercises and scripted ones; anything else is ignored (returns false). Choosing one goes back to its
+  // first fixture.
   bool set_exercise(Exercise exercise);
+  // A scripted exercise on points or a patch: which of its fixtures the next run uses (false past the last), or the
+  // input a lesson's your_turn gave (`what` names it in the label), until another fixture or exercise is chosen.
+  size_t fixture() const { return fixture_; }
+  bool set_fixture(size_t index);
+  void set_values_input(ExerciseInput input, std::string what);
+  bool has_values_input() const { return values_input_.has_value(); }
   std::filesystem::path file() const;  // folder() / "flip.lua"
 
   // The student file differs from the last load attempt (or there was none).
@@ -123,8 +132,14 @@ class ExerciseSession {
   Check take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept;
   void show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from);
 
+  // The input of a run on points or a patch, or why there is none.
+  OpResult<ExerciseInput> values_input_for(std::string& what) const;
+
   std::filesystem::path folder_;
   Exercise exercise_ = Exercise::FlipEdge;
+  size_t fixture_ = 0;
+  std::optional<ExerciseInput> values_input_;
+  std::string values_input_name_;
   StudentFile student_;
 
   std::optional<ExerciseRun> run_;

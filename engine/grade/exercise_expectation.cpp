@@ -79,7 +79,37 @@ ElementRef element_field(lua_State* L, const char* field, ElementKind kind, cons
   return ref;
 }
 
+// A scripted exercise on points or a patch: {control = points, args = {...}} or {patch = ..., args = {...}}.
+ExerciseInput read_values_input(lua_State* L, const ScriptedExercise& scripted) {
+  lua_getfield(L, kInput, "args");
+  std::vector<ExerciseValue> args;
+  if (const std::string bad = read_argument_values(L, -1, args); !bad.empty()) {
+    luaL_error(L, "expect.exercise: input.args%s%s", bad[0] == '[' ? "" : " ", bad.c_str());
+  }
+  lua_pop(L, 1);
+  if (scripted.input() == ScriptedExercise::Input::Patch) {
+    lua_getfield(L, kInput, "patch");
+    BezierPatch patch;
+    if (const std::string bad = read_patch_points(L, -1, patch); !bad.empty()) {
+      luaL_error(L, "expect.exercise: input.patch %s", bad.c_str());
+    }
+    lua_pop(L, 1);
+    return ExerciseInput::of_patch(patch, std::move(args));
+  }
+  lua_getfield(L, kInput, "control");
+  std::vector<glm::dvec3> points;
+  if (const std::string bad = read_control_points(L, -1, points); !bad.empty()) {
+    luaL_error(L, "expect.exercise: input.control %s", bad.c_str());
+  }
+  lua_pop(L, 1);
+  return ExerciseInput::of_points(std::move(points), std::move(args));
+}
+
 ExerciseInput read_input(lua_State* L, Exercise exercise) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      scripted && scripted->takes_values()) {
+    return read_values_input(L, *scripted);
+  }
   switch (exercise) {
     case Exercise::CurveStep: {
       lua_getfield(L, kInput, "points");

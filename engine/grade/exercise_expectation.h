@@ -10,9 +10,10 @@
 // Arguments: the exercise (its function, name or file: "flip_edge", "flip", "flip.lua"); the input, as a table
 // {points =, t =} (evaluate_step), {patch =, u =, v =} (evaluate; a patch or {points = 16 points}), {mesh =, vertex =}
 // (vertex_normal), {mesh =, edge =} (flip_edge, split_edge), {mesh =} (upsample), {mesh =, element =} or {mesh =} (a
-// scripted exercise registered in this process, scripted_exercise.h, by what it takes), with the mesh as it was before
-// the call and the element as a handle or an id; what the student's function returned; the mesh it worked on (the
-// mesh exercises; nil otherwise); an optional message.
+// scripted exercise registered in this process, scripted_exercise.h, by what it takes; on points or a patch
+// {control = points, args =} or {patch =, args =}), with the mesh as it was before the call and the element as a
+// handle or an id; what the student's function returned; the mesh it worked on (the mesh exercises; nil otherwise);
+// an optional message.
 //
 // Invariants:
 // - The reference is run_reference (the core), on a copy of the input mesh: the suite's meshes are not changed.

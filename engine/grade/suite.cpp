@@ -15,6 +15,7 @@
 #include <optional>
 #include <set>
 #include <type_traits>
+#include <utility>
 
 #include <lua.hpp>
 
@@ -79,9 +80,14 @@ struct Suite::Context {
 
 // A scripted exercise's fixture as a test's run function: the student's function on a copy of the fixture's mesh,
 // checked by expect.exercise against the mesh before the call.
-constexpr const char* kFixtureTest = R"lua(local fixture = ...
-return function(name, call, index, what)
+constexpr const char* kFixtureTest = R"lua(local fixture, values_of = ...
+return function(name, call, index, what, on_values)
   return function(student, expect)
+    if on_values then
+      local input, args = values_of(name, index)
+      local result = student[call](table.unpack(args, 1, args.n))
+      return expect.exercise(name, input, result, nil, what)
+    end
     local before, kind, id = fixture(name, index)
     local mine = before:copy()
     local result
@@ -322,7 +328,8 @@ struct SuiteApi {
       return lua_error(L);
     }
     lua_pushcfunction(L, fixture_of);
-    lua_call(L, 1, 1);  // make_run(name, call, index, what)
+    lua_pushcfunction(L, values_of);
+    lua_call(L, 2, 1);  // make_run(name, call, index, what, on_values)
     const int make_run = lua_gettop(L);
     const std::vector<ScriptedFixture>& fixtures = definition->fixtures();
     for (size_t i = 0; i < fixtures.size(); ++i) {
@@ -339,23 +346,62 @@ struct SuiteApi {
       lua_pushstring(L, info.function);
       lua_pushinteger(L, static_cast<lua_Integer>(i + 1));
       lua_pushstring(L, fixtures[i].name.c_str());
-      lua_call(L, 4, 1);
+      lua_pushboolean(L, definition->takes_values());
+      lua_call(L, 5, 1);
       lua_setfield(L, -2, "run");
       lua_call(L, 1, 0);
     }
     return 0;
   }
 
+  // The fixture `index` of the exercise named at 1 (the index at 2), with its definition; a Lua error when none.
+  static std::pair<std::shared_ptr<const ScriptedExercise>, const ScriptedFixture*> fixture_at(lua_State* L) {
+    const std::optional<Exercise> exercise = find_exercise(luaL_checkstring(L, 1));
+    std::shared_ptr<const ScriptedExercise> definition = exercise ? scripted_exercise(*exercise) : nullptr;
+    const lua_Integer index = luaL_checkinteger(L, 2);
+    if (!definition || index < 1 || static_cast<size_t>(index) > definition->fixtures().size()) {
+      luaL_error(L, "no fixture %d of the exercise %s", int(index), lua_tostring(L, 1));
+    }
+    const ScriptedFixture* fixture = &definition->fixtures()[static_cast<size_t>(index - 1)];
+    return {std::move(definition), fixture};
+  }
+
+  // values_of(name, index) -> the input for expect.exercise ({control =, args =} or {patch =, args =}) and the
+  // arguments of the student's call as a list with n (the input, then the args): fresh tables each, so what the
+  // student's call does to its arguments changes nothing of what the check reads.
+  static int values_of(lua_State* L) {
+    const auto [definition, fixture] = fixture_at(L);
+    const ExerciseInput input = definition->input_of(*fixture);
+    const bool patch = definition->input() == ScriptedExercise::Input::Patch;
+    lua_createtable(L, 0, 2);
+    if (patch) {
+      push_student_patch(L, input.patch);
+    } else {
+      push_exercise_value(L, ExerciseValue::of_points(input.points));
+    }
+    lua_setfield(L, -2, patch ? "patch" : "control");
+    push_exercise_value(L, ExerciseValue::of_list(input.args));
+    lua_setfield(L, -2, "args");
+    lua_newtable(L);
+    int n = 0;
+    std::string error;
+    try {
+      n = definition->push_value_arguments(L, input);
+    } catch (const ScriptError& e) {
+      error = e.what();
+    }
+    if (!error.empty()) return luaL_error(L, "%s", error.c_str());
+    for (int i = n; i >= 1; --i) lua_rawseti(L, -1 - i, i);
+    lua_pushinteger(L, n);
+    lua_setfield(L, -2, "n");
+    return 2;
+  }
+
   // fixture(name, index) -> a copy of the fixture's mesh, the kind of element the exercise takes ("edge") or nil, the
   // element's id or nil.
   static int fixture_of(lua_State* L) {
-    const std::optional<Exercise> exercise = find_exercise(luaL_checkstring(L, 1));
-    const std::shared_ptr<const ScriptedExercise> definition = exercise ? scripted_exercise(*exercise) : nullptr;
-    const lua_Integer index = luaL_checkinteger(L, 2);
-    if (!definition || index < 1 || static_cast<size_t>(index) > definition->fixtures().size()) {
-      return luaL_error(L, "no fixture %d of the exercise %s", int(index), lua_tostring(L, 1));
-    }
-    const ScriptedFixture& fixture = definition->fixtures()[static_cast<size_t>(index - 1)];
+    const auto [definition, found] = fixture_at(L);
+    const ScriptedFixture& fixture = *found;
     push_mesh(L, std::make_shared<HalfedgeMesh>(*fixture.mesh));
     if (!definition->takes()) return 1;
     lua_pushstring(L, kind_name(*definition->takes()));

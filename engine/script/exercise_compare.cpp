@@ -21,7 +21,8 @@
 //   split                          compare_split: where the new vertex is, which pointers were forgotten
 //   upsample                       diagnose_upsample and its diagnoses (zero weights first:
 //                                  loop_zero_weight_diagnosis.h; flips: loop_flip_diagnosis.h), compare_upsample
-//   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h)
+//   scripted exercises             compare_scripted: exercises defined in Lua (scripted_exercise.h), on a mesh or,
+//                                  compare_scripted_values, on points or a patch (value_compare.h)
 //   runs that failed               add_run_failure: an error or a limit, with its hint
 //   public functions               unfinished_run_hint, ExerciseReport::summary, compare (the dispatch)
 #include <algorithm>
@@ -45,6 +46,7 @@
 #include "script/normal_diagnosis.h"
 #include "script/scripted_exercise.h"
 #include "script/upsample_runaway.h"
+#include "script/value_compare.h"
 
 namespace meshedit {
 namespace {
@@ -558,6 +560,35 @@ bool same_element(const HalfedgeMesh& mine, ElementRef a, const HalfedgeMesh& re
   return true;
 }
 
+// Puts the definition's diagnoses before the messages the checks added (called only when something differs).
+void diagnoses_first(const ScriptedExercise& scripted, const ExerciseInput& input, ExerciseReport& report,
+                     Messages& out) {
+  std::vector<std::string> checks = std::move(report.differences);
+  const size_t counted = report.total_differences;
+  report.differences.clear();
+  report.total_differences = 0;
+  for (std::string& m : scripted.diagnose(input, report.mine, report.reference)) out.add(std::move(m));
+  for (std::string& m : checks) out.add(std::move(m));
+  out.count(counted - checks.size());
+}
+
+// An exercise on points or a patch: the returned values item by item (value_compare.h), the definition's diagnoses
+// first.
+void compare_scripted_values(const ScriptedExercise& scripted, const ExerciseInput& input, ExerciseReport& report,
+                             Messages& out) {
+  const ValueComparison c = compare_values(report.mine.value, report.reference.value, scripted.tolerance(input),
+                                           ExerciseReport::kMaxMessages);
+  for (const std::string& d : c.differences) out.add(d);
+  out.count(c.total - c.differences.size());
+  if (out.any()) diagnoses_first(scripted, input, report, out);
+  report.equal = !out.any();
+  report.identical = report.equal && c.identical;
+  if (report.equal && !report.identical) {
+    report.notes.push_back("your values differ from the reference's by at most " + format_number(c.worst) +
+                           " (rounding; accepted)");
+  }
+}
+
 // An exercise defined in Lua: a refusal as for flip; else the definition's diagnoses first (only when something
 // differs), then what breaks the mesh, what it returned, and the surface up to renumbering.
 void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& input, ExerciseReport& report,
@@ -568,6 +599,7 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
     report.equal = false;
     return;
   }
+  if (scripted.takes_values()) return compare_scripted_values(scripted, input, report, out);
   const std::string what = std::string(function) + (input.element.valid() ? " on " + format_id(input.element) : "");
   if (!report.reference.refused.empty()) {
     return compare_refusal(input, report, "change the mesh in " + what, function, out);
@@ -588,16 +620,7 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
     out.add("your " + std::string(function) + " returned " + report.mine.returned + "; the reference returns " +
             report.reference.returned);
   }
-  if (out.any()) {
-    // The definition's diagnoses go first: move the checks' messages after them.
-    std::vector<std::string> checks = std::move(report.differences);
-    const size_t counted = report.total_differences;
-    report.differences.clear();
-    report.total_differences = 0;
-    for (std::string& m : scripted.diagnose(input, report.mine, report.reference)) out.add(std::move(m));
-    for (std::string& m : checks) out.add(std::move(m));
-    out.count(counted - checks.size());
-  }
+  if (out.any()) diagnoses_first(scripted, input, report, out);
   report.equal = !out.any();
   if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
 }

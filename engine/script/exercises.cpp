@@ -128,6 +128,13 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
   int n = 0;
   const auto add = [&] { lua_rawseti(L, -2, ++n); };
   if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    if (scripted->takes_values()) {
+      n = scripted->push_value_arguments(L, input);
+      for (int i = n; i >= 1; --i) lua_rawseti(L, -1 - i, i);
+      lua_pushinteger(L, n);
+      lua_setfield(L, -2, "n");
+      return;
+    }
     push_mesh(L, mesh);
     add();
     if (scripted->takes()) {
@@ -185,6 +192,12 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
   const int top = lua_absindex(L, index);
   out.returned = describe_value(L, top);
   out.ran = true;
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      scripted && scripted->takes_values()) {
+    out.value = read_exercise_value(L, top);
+    out.returned = describe(out.value);
+    return;
+  }
   switch (exercise) {
     case Exercise::CurveStep: {
       if (lua_type(L, top) != LUA_TTABLE) {
@@ -254,8 +267,11 @@ std::optional<Exercise> find_exercise(std::string_view name) {
 }
 
 bool is_mesh_exercise(Exercise e) {
-  return e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge ||
-         e == Exercise::Upsample || scripted_exercise(e) != nullptr;
+  if (e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge || e == Exercise::Upsample) {
+    return true;
+  }
+  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(e);
+  return scripted && !scripted->takes_values();
 }
 
 ExerciseInput ExerciseInput::curve_step(std::vector<glm::dvec3> points, double t) {
@@ -300,6 +316,20 @@ ExerciseInput ExerciseInput::element_of(std::shared_ptr<const HalfedgeMesh> mesh
   return input;
 }
 
+ExerciseInput ExerciseInput::of_points(std::vector<glm::dvec3> points, std::vector<ExerciseValue> args) {
+  ExerciseInput input;
+  input.points = std::move(points);
+  input.args = std::move(args);
+  return input;
+}
+
+ExerciseInput ExerciseInput::of_patch(const BezierPatch& patch, std::vector<ExerciseValue> args) {
+  ExerciseInput input;
+  input.patch = patch;
+  input.args = std::move(args);
+  return input;
+}
+
 std::string ExerciseInput::describe(Exercise exercise) const {
   const auto mesh_text = [&] {
     if (!mesh) return std::string("no mesh");
@@ -313,6 +343,14 @@ std::string ExerciseInput::describe(Exercise exercise) const {
     case Exercise::FlipEdge:
     case Exercise::SplitEdge: return format_id(element) + " of " + mesh_text();
     case Exercise::Upsample: return mesh_text();
+  }
+  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      scripted && scripted->takes_values()) {
+    std::string text = scripted->input() == ScriptedExercise::Input::Patch
+                           ? "a patch of 16 control points"
+                           : plural(points.size(), "control point", "control points");
+    for (size_t i = 0; i < args.size(); ++i) text += (i == 0 ? ", then " : ", ") + value_text(args[i]);
+    return text;
   }
   return element.valid() ? format_id(element) + " of " + mesh_text() : mesh_text();  // scripted
 }

@@ -21,7 +21,9 @@
 //   operations agree by construction. A scripted exercise's reference is its definition's Lua function.
 // - An Exercise is an id in one catalogue: the six named values are the built-in exercises; the values after them
 //   are the scripted exercises registered in this process (scripted_exercise.h). exercise_info, find_exercise and
-//   everything below take both; a scripted exercise works on a mesh (and the element its definition takes).
+//   everything below take both; a scripted exercise works on a mesh (and the element its definition takes), or on
+//   control points or a patch and the values after them (ExerciseInput::args), returning values
+//   (ExerciseOutcome::value).
 // - `equal` is the verdict (the same answer as the reference, up to renumbering and rounding); `identical`
 //   is stronger (bit for bit, pointer for pointer). The correct solutions in tests/script/solutions are
 //   identical on every input the tests use.
@@ -47,6 +49,7 @@
 #include "core/edit_log.h"
 #include "core/halfedge_mesh.h"
 #include "core/validate.h"
+#include "script/exercise_value.h"
 #include "script/lua_runtime.h"
 #include "script/touch_recorder.h"
 
@@ -69,7 +72,8 @@ std::span<const ExerciseInfo> all_exercises();
 const ExerciseInfo& exercise_info(Exercise exercise);
 // By name, file name or function name ("flip", "flip.lua", "flip_edge"), the built-in ones first.
 std::optional<Exercise> find_exercise(std::string_view name);
-// Whether the exercise works on a mesh: normals, flip, split, upsample and every scripted exercise.
+// Whether the exercise works on a mesh: normals, flip, split, upsample and the scripted exercises that take a mesh or
+// one of its elements (not those on points or a patch).
 bool is_mesh_exercise(Exercise exercise);
 
 // What one run works on. Build it with the named constructors; fields not used by the exercise are ignored.
@@ -79,7 +83,8 @@ struct ExerciseInput {
   BezierPatch patch;                         // PatchEvaluate
   double u = 0.5, v = 0.5;                   // PatchEvaluate
   std::shared_ptr<const HalfedgeMesh> mesh;  // the mesh exercises (never changed: runs work on copies)
-  ElementRef element;  // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge; scripted: what it takes
+  ElementRef element;               // VertexNormal: the vertex; FlipEdge, SplitEdge: the edge; scripted: what it takes
+  std::vector<ExerciseValue> args;  // scripted on points (`points`) or a patch (`patch`): what follows the input
 
   static ExerciseInput curve_step(std::vector<glm::dvec3> points, double t);
   static ExerciseInput patch_point(const BezierPatch& patch, double u, double v);
@@ -87,8 +92,11 @@ struct ExerciseInput {
   static ExerciseInput edge(std::shared_ptr<const HalfedgeMesh> mesh, EdgeId e);
   static ExerciseInput whole_mesh(std::shared_ptr<const HalfedgeMesh> mesh);
   static ExerciseInput element_of(std::shared_ptr<const HalfedgeMesh> mesh, ElementRef element);
+  static ExerciseInput of_points(std::vector<glm::dvec3> points, std::vector<ExerciseValue> args);
+  static ExerciseInput of_patch(const BezierPatch& patch, std::vector<ExerciseValue> args);
 
-  // "4 points, t = 0.3", "(u, v) = (0.3, 0.8)", "v3 of a mesh with 12 faces", "e5 of ...", "a mesh with ...".
+  // "4 points, t = 0.3", "(u, v) = (0.3, 0.8)", "v3 of a mesh with 12 faces", "e5 of ...", "a mesh with ...",
+  // "4 control points", "a patch of 16 control points, then 0.5, 0.5".
   std::string describe(Exercise exercise) const;
 };
 
@@ -102,6 +110,7 @@ struct ExerciseOutcome {
   ScriptError::Limit limit = ScriptError::Limit::None;  // the limit or cap that stopped the call, if one did
   std::string returned;            // the first return value, described: "nil", "e5", "a list of 3 points", "(0, 0, 1)"
   std::vector<glm::dvec3> points;  // CurveStep: the step; PatchEvaluate, VertexNormal: the one point
+  ExerciseValue value;             // scripted on points or a patch: what the function returned
   std::shared_ptr<HalfedgeMesh> mesh;  // the mesh after the call (mesh exercises; the copy it ran on)
   ElementRef element;                  // FlipEdge, SplitEdge: the element returned (invalid for nil)
   std::string refused;                 // reference only: the core's reason when it refuses (flip of a boundary edge...)

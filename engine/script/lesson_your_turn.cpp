@@ -108,9 +108,35 @@ std::vector<glm::dvec3> read_points(lua_State* L, int index) {
   return points;
 }
 
+// A scripted exercise on points (control = {...}) or a patch (patch = ...), with args = {...} after it.
+ExerciseInput read_values_input(lua_State* L, int index, const ScriptedExercise& scripted) {
+  const bool patch = scripted.input() == ScriptedExercise::Input::Patch;
+  const std::string name = scripted.info().name;
+  lua_getfield(L, index, "args");
+  std::vector<ExerciseValue> args;
+  if (const std::string bad = read_argument_values(L, -1, args); !bad.empty()) {
+    raise(L, "your_turn: args" + std::string(bad[0] == '[' ? "" : " ") + bad);
+  }
+  lua_pop(L, 1);
+  lua_getfield(L, index, patch ? "patch" : "control");
+  if (lua_isnil(L, -1)) {
+    raise(L, "your_turn: the " + name + " exercise takes " +
+                 (patch ? "patch = (16 points, or meshedit.patch(...))" : "control = {the control points}") +
+                 ", got nil");
+  }
+  BezierPatch points16;
+  std::vector<glm::dvec3> control;
+  const std::string bad = patch ? read_patch_points(L, -1, points16) : read_control_points(L, -1, control);
+  if (!bad.empty()) raise(L, std::string("your_turn: ") + (patch ? "patch " : "control ") + bad);
+  lua_pop(L, 1);
+  return patch ? ExerciseInput::of_patch(points16, std::move(args))
+               : ExerciseInput::of_points(std::move(control), std::move(args));
+}
+
 // The exercise's input, copied out of the table at `index`.
 ExerciseInput read_input(lua_State* L, int index, Exercise exercise) {
   if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+    if (scripted->takes_values()) return read_values_input(L, index, *scripted);
     std::shared_ptr<const HalfedgeMesh> mesh = read_mesh(L, index, exercise);
     if (!scripted->takes()) return ExerciseInput::whole_mesh(std::move(mesh));
     const ElementRef element = read_element(L, index, *mesh, *scripted->takes());
@@ -212,7 +238,8 @@ int api_check(lua_State* L) {
     raise(L, "your_turn: expected a table like your_turn{ exercise = \"flip\", mesh = m, element = \"e0\" }, got " +
                  type_name(L, 1));
   }
-  check_fields(L, 1, "your_turn", {"exercise", "mesh", "element", "points", "t", "patch", "u", "v", "hint", "names"});
+  check_fields(L, 1, "your_turn",
+               {"exercise", "mesh", "element", "points", "t", "patch", "u", "v", "control", "args", "hint", "names"});
   lua_getfield(L, 1, "hint");
   if (!lua_isnil(L, -1) && lua_type(L, -1) != LUA_TSTRING) raise(L, "your_turn: hint must be a string");
   lua_pop(L, 1);

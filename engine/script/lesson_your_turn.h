@@ -6,7 +6,9 @@
 //   your_turn { exercise = "flip", mesh = m, element = m:edge(0) | "e0", hint = "..." }
 //       exercise: "curve" (points = {...}, t =), "patch" (patch = meshedit.patch(...), u =, v =), "normals" (mesh =,
 //       element = a vertex), "flip" / "split" (mesh =, element = an edge), "upsample" (mesh =), or the name of an
-//       exercise registered from scripts/exercises (scripted_exercise.h: mesh =, and element = what it takes).
+//       exercise registered from scripts/exercises (scripted_exercise.h: mesh =, and element = what it takes; for
+//       one on points, control = {{x, y}, ...}, for one on a patch, patch = 16 points or meshedit.patch(...), and
+//       args = {...}, the values passed after them, as its fixtures write them).
 //       names = {a = v2, h0 = "h3", ...} (optional): the diagram's names of elements of the mesh, which a wrong
 //       verdict lists beside the storage ids it mentions (diagram_names.h).
 //       -> true once the student's function gives the reference's answer. Until then the step waits: the panel shows

@@ -259,6 +259,7 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
     }
     ImGui::EndCombo();
   }
+  draw_value_fixture_chooser(session);
   text(session.file().string());
   ImGui::TextDisabled("%s", active.signature);
   if (!session.last_run()) {
@@ -286,9 +287,11 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
                     scripted_exercise(run->exercise))
                        ? pointer_rows(*run, ExercisePanelState::kMaxPointerRows)
                        : std::vector<PointerRow>{};
+      state.value_rows = value_rows(*run);
       state.rows_serial = run->serial;
     }
     update_upsample_phases(*run, state);
+    if (!is_mesh_exercise(run->exercise)) draw_value_tables(*run, state.value_rows);
     draw_pointer_table(state.rows);
     if (std::exchange(state.bring_table_into_view, false) &&
         ImGui::GetCursorScreenPos().y > ImGui::GetWindowPos().y + ImGui::GetWindowHeight()) {
@@ -296,7 +299,8 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
     }
     if (run->mine) draw_replay(session, state, doc);
   } else if (session.load_error().empty()) {
-    ImGui::TextDisabled("select an element and press Run mine");
+    ImGui::TextDisabled(is_mesh_exercise(session.exercise()) ? "select an element and press Run mine"
+                                                             : "choose an input and press Run mine");
   }
   ImGui::PopTextWrapPos();
 }

@@ -1,5 +1,6 @@
-// The "Exercises" panel: choose a mesh exercise, run the student's function ("mine") or the reference on the
-// selection, read the report (verdict, differences, notes, validation of mine, print output, errors with
+// The "Exercises" panel: choose an exercise, run the student's function ("mine") or the reference on the
+// selection (an exercise on points or a patch: on a fixture, its input and both results as text tables,
+// exercise_values_view.h), read the report (verdict, differences, notes, validation of mine, print output, errors with
 // file:line), compare the changed pointers side by side, and replay the student's writes one by one; for upsample,
 // phase by phase (upsample_phases.h), beside the reference's mesh at each phase boundary (upsample_phase_states.h).
 //
@@ -22,6 +23,7 @@
 #include "document/selection.h"
 #include "script/upsample_phase_states.h"
 #include "script/upsample_phases.h"
+#include "ui/exercise_values_view.h"
 
 namespace meshedit {
 
@@ -46,6 +48,7 @@ struct ExercisePanelState {
   bool follow_replay = true;  // scroll the write list to the current write
   uint64_t rows_serial = 0;   // the run the cached rows belong to
   std::vector<PointerRow> rows;
+  std::vector<ValueRow> value_rows;      // an exercise on points or a patch: its results side by side (same run)
   uint64_t phases_serial = 0;            // the run the phases belong to
   std::optional<UpsamplePhases> phases;  // a mine upsample run with recorded writes
   std::optional<UpsamplePhaseStates> phase_states;

@@ -39,17 +39,24 @@ function include(file) end
 ---One fixture of an exercise defined in Lua: one test of its suite.
 ---@class ExerciseFixture
 ---@field name? string the test's name
----@field mesh Mesh the mesh as it is before the call
+---@field mesh? Mesh the mesh as it is before the call (an exercise on a mesh)
 ---@field element? Element|string|integer the element the function takes (a handle, "e7" or 7); not for takes = "mesh"
----@field points? number default 1
+---@field control? point[] takes = "points": the control points ({x, y} or {x, y, z} each)
+---@field patch? point[]|point[][]|Patch takes = "patch": 16 points row by row, 4 rows of 4, or meshedit.patch(...)
+---@field args? any[] takes = "points" or "patch": numbers, points or lists of them, passed after the input
+---@field points? number the test's score, default 1
 
 ---What the definition's diagnose is given when the student's answer differs (copies: changing them changes nothing).
+---On a mesh: before, mine, reference (meshes), element, returned. On points or a patch: input, args, mine, reference
+---(the values returned; one that is not a number, a point or a list of them is nil).
 ---@class ExerciseRun
----@field before Mesh
----@field mine Mesh
----@field reference Mesh
+---@field before? Mesh
+---@field mine Mesh|number|vec3|table|nil
+---@field reference Mesh|number|vec3|table|nil
 ---@field element? Element the input's element, of run.before
----@field returned string what the student's function returned, described
+---@field returned? string what the student's function returned, described (on a mesh)
+---@field input? vec3[]|{points: vec3[]} the control points, or the patch as the function got it
+---@field args? any[] the values passed after the input
 
 ---An exercise defined in Lua alone (a file of scripts/exercises). See scripts/api/README.md.
 ---@class ExerciseSpec
@@ -58,9 +65,10 @@ function include(file) end
 ---@field file string the student's file, "collapse.lua"
 ---@field call string the student's function, "collapse_edge"
 ---@field signature? string "collapse_edge(mesh, e) -> the vertex that remains, or nil"
----@field takes "vertex"|"edge"|"face"|"halfedge"|"mesh"
+---@field takes "vertex"|"edge"|"face"|"halfedge"|"mesh"|"points"|"patch"
 ---@field allow? string[] hideable API the student's code may call: "mesh:flip", ...
----@field reference fun(mesh: Mesh, element?: Element): Element?, string? nil and the mesh unchanged: a refusal
+---@field reference fun(...): any on a mesh (mesh, element?) -> Element?, string? (nil and the mesh unchanged: a refusal); on points or a patch the student's arguments -> the value to compare with
+---@field tolerance? number points or a patch: within how much numbers and points agree (default 1e-9 x the input's size)
 ---@field diagnose? fun(run: ExerciseRun): string|string[]|nil the likely mistakes first
 ---@field hint? string shown under a run that did not finish
 ---@field fixtures? ExerciseFixture[] what grading checks, one test each

@@ -159,12 +159,14 @@ function pick(spec) end
 function answer(spec) end
 
 ---@class YourTurnSpec
----@field exercise "curve"|"patch"|"normals"|"flip"|"split"|"upsample" the student's function to run (scripts/student/)
+---@field exercise string "curve", "patch", "normals", "flip", "split", "upsample" or an exercise of scripts/exercises
+---@field control? point[] an exercise of scripts/exercises on points: the control points
+---@field args? any[] an exercise of scripts/exercises on points or a patch: the values passed after the input
 ---@field mesh? Mesh normals, flip, split, upsample: the mesh (copied when your_turn is called)
 ---@field element? Element|string normals: a vertex; flip, split: an edge (a handle or an id like "e0")
 ---@field points? point[] curve: the points given to evaluate_step
 ---@field t? number curve
----@field patch? Patch patch: meshedit.patch(...)
+---@field patch? Patch patch: meshedit.patch(...) (an exercise of scripts/exercises on a patch: also 16 points)
 ---@field u? number patch
 ---@field v? number patch
 ---@field hint? string shown under the diagnosis while the student's answer is wrong

@@ -89,8 +89,9 @@ TEST(ScriptedExerciseSession, ASavedDefinitionIsReloadedAtTheNextRun) {
   const Check refused = session.run_mine(doc, selection);
   EXPECT_FALSE(refused.ok);
   EXPECT_EQ(refused.reason.rfind("the exercise's definition did not load: collapse.lua:", 0), 0u) << refused.reason;
-  EXPECT_NE(refused.reason.find("exercise: takes must be vertex, edge, face, halfedge or mesh, got 'edges'"),
-            std::string::npos)
+  EXPECT_NE(
+      refused.reason.find("exercise: takes must be vertex, edge, face, halfedge, mesh, points or patch, got 'edges'"),
+      std::string::npos)
       << refused.reason;
   EXPECT_EQ(doc.history.undo_depth(), 0u);
   EXPECT_STREQ(exercise_info(id).title, "Extra: edge collapse");  // the last good version

@@ -194,7 +194,7 @@ TEST(LessonYourTurn, BadArgumentsFailTheStepAtTheLessonsLine) {
              "lesson.lua:3: your_turn: the flip exercise needs mesh = a mesh, got nil");
   fails_with("your_turn { exercise = 'flip', mesh = m, edge = 'e2' }",
              "lesson.lua:3: your_turn: unknown field 'edge' (fields: exercise, mesh, element, points, t, patch, u, v, "
-             "hint, names)");
+             "control, args, hint, names)");
   runner.set_student_folder({});
   fails_with("your_turn { exercise = 'upsample', mesh = m }",
              "lesson.lua:3: your_turn: no student folder (meshedit lesson FILE --headless --student DIR)");

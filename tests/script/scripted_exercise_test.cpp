@@ -207,11 +207,11 @@ TEST(ScriptedExercise, ABrokenDefinitionIsNamedAtItsLine) {
   const std::string reference = "  reference = function(mesh, e) return mesh:collapse(e) end,\n";
   EXPECT_EQ(load_error(head + reference + "}\n"), "bad.lua:1: exercise: takes must be a string, got nil");
   EXPECT_EQ(load_error(head + reference + "  takes = \"edges\" }\n"),
-            "bad.lua:1: exercise: takes must be vertex, edge, face, halfedge or mesh, got 'edges'");
+            "bad.lua:1: exercise: takes must be vertex, edge, face, halfedge, mesh, points or patch, got 'edges'");
   EXPECT_EQ(load_error(head + "  takes = \"edge\" }\n"), "bad.lua:1: exercise: reference must be a function, got nil");
   EXPECT_EQ(load_error(head + reference + "  takes = \"edge\", refrence = 1 }\n"),
             "bad.lua:1: exercise: unknown field 'refrence' (fields: name, title, file, call, signature, takes, allow, "
-            "reference, diagnose, hint, fixtures)");
+            "reference, diagnose, hint, tolerance, fixtures)");
   EXPECT_EQ(load_error(head + reference + "  takes = \"edge\", allow = { \"mesh:fly\" } }\n"),
             "bad.lua:1: exercise: allow[1] must be one of mesh:flip, mesh:split, mesh:collapse, mesh:loop_subdivide, "
             "mesh:catmull_clark, meshedit.curve, meshedit.patch, got 'mesh:fly'");
