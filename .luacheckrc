@@ -39,7 +39,7 @@ local lesson_globals = {
 -- the exercises defined in Lua (scripts/exercises/*.lua, their `call`).
 local student_functions = {
   "evaluate_step", "evaluate", "vertex_normal", "flip_edge", "split_edge", "upsample", "collapse_edge",
-  "catmull_clark_level",
+  "catmull_clark_level", "hodograph", "patch_normal",
 }
 
 -- A grading suite's globals (engine/grade/suite.cpp, Suite::from_text): suite{}, test{}, include(), exercise{}

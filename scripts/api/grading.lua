@@ -67,8 +67,10 @@ function include(file) end
 ---@field signature? string "collapse_edge(mesh, e) -> the vertex that remains, or nil"
 ---@field takes "vertex"|"edge"|"face"|"halfedge"|"mesh"|"points"|"patch"
 ---@field allow? string[] hideable API the student's code may call: "mesh:flip", ...
----@field reference fun(...): any on a mesh (mesh, element?) -> Element?, string? (nil and the mesh unchanged: a refusal); on points or a patch the student's arguments -> the value to compare with
----@field tolerance? number points or a patch: within how much numbers and points agree (default 1e-9 x the input's size)
+---@field reference fun(...): any on a mesh (mesh, element?) -> Element?, string? (nil and the mesh unchanged: a
+---refusal); on points or a patch the student's arguments -> the value to compare with
+---@field tolerance? number points or a patch: within how much numbers and points agree (default 1e-9 x the input's
+---size)
 ---@field diagnose? fun(run: ExerciseRun): string|string[]|nil the likely mistakes first
 ---@field hint? string shown under a run that did not finish
 ---@field fixtures? ExerciseFixture[] what grading checks, one test each
