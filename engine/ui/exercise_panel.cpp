@@ -76,7 +76,8 @@ void draw_report(const ExerciseRun& run) {
   const size_t shown = std::min(report.differences.size(), kDifferencesShown);
   for (size_t i = 0; i < shown; ++i) coloured(failed_colour(), "- " + report.differences[i]);
   if (report.total_differences > shown &&
-      ImGui::TreeNode("differences", "%zu more differences", report.total_differences - shown)) {
+      ImGui::TreeNode("differences", "%zu more difference%s", report.total_differences - shown,
+                      report.total_differences - shown == 1 ? "" : "s")) {
     for (size_t i = shown; i < report.differences.size(); ++i) coloured(failed_colour(), "- " + report.differences[i]);
     if (report.total_differences > report.differences.size())
       text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
