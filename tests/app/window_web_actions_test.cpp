@@ -42,21 +42,30 @@ TEST(WindowWebActions, TheWebPagesLessonFourScriptHoldsInTheDesktopWindow) {
   EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << run.output;
 }
 
-// The lessons' own interactions the page's scripts drive: lesson 1's click on the curve, lesson 2's probe and lesson
-// 6's Check button, each script played as the page plays it.
-TEST(WindowWebActions, TheWebPagesLessonScriptsHoldInTheDesktopWindow) {
+// The lessons' own interactions the page's scripts drive (lesson 1's click on the curve, lesson 2's probe and lesson
+// 6's Check button) and an exercise on points, each script played as the page plays it; its student folder, named from
+// the top of the page's tree, is the source tree's here.
+TEST(WindowWebActions, TheWebPagesLessonAndExerciseScriptsHoldInTheDesktopWindow) {
   XServer x;
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
-  const std::pair<const char*, const char*> scripts[] = {{"lesson1_curve_pick.txt", "1_de_casteljau.lua"},
-                                                         {"lesson2_probe.txt", "2_bezier_patches.lua"},
-                                                         {"lesson6_sharp_corners.txt", "6_loop_subdivision.lua"}};
-  for (const auto& [name, lesson] : scripts) {
+  const std::pair<const char*, const char*> scripts[] = {
+      {"lesson1_curve_pick.txt", "lessons/1_de_casteljau.lua"},
+      {"lesson2_probe.txt", "lessons/2_bezier_patches.lua"},
+      {"lesson6_sharp_corners.txt", "lessons/6_loop_subdivision.lua"},
+      {"values_exercise.txt", "assets/suzanne.obj"}};
+  const std::string relative = " scripts/student";
+  for (const auto& [name, opened] : scripts) {
     std::ifstream in(testing::source_dir() / "tests" / "web" / name);
     ASSERT_TRUE(in) << name;
     std::ostringstream script;
-    script << in.rdbuf();
-    const WindowRun run =
-        run_window(x.display(), testing::source_dir() / "lessons" / lesson, script.str(), testing::scratch_dir());
+    for (std::string line; std::getline(in, line);) {
+      if (line.size() > relative.size() && line.ends_with(relative)) {
+        line.replace(line.size() - relative.size() + 1, relative.size() - 1,
+                     (testing::source_dir() / "scripts" / "student").string());
+      }
+      script << line << "\n";
+    }
+    const WindowRun run = run_window(x.display(), testing::source_dir() / opened, script.str(), testing::scratch_dir());
     EXPECT_EQ(run.status, 0) << name << ": " << run.output;
     EXPECT_NE(run.output.find("actions: all expectations held"), std::string::npos) << name << ": " << run.output;
   }
