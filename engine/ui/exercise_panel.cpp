@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "core/history.h"
+#include "core/value_format.h"
 #include "script/scripted_exercise.h"
 #include "ui/theme.h"
 #include "ui/upsample_phase_view.h"
@@ -76,8 +77,8 @@ void draw_report(const ExerciseRun& run) {
   const size_t shown = std::min(report.differences.size(), kDifferencesShown);
   for (size_t i = 0; i < shown; ++i) coloured(failed_colour(), "- " + report.differences[i]);
   if (report.total_differences > shown &&
-      ImGui::TreeNode("differences", "%zu more difference%s", report.total_differences - shown,
-                      report.total_differences - shown == 1 ? "" : "s")) {
+      ImGui::TreeNode("differences", "%s",
+                      plural(report.total_differences - shown, "more difference", "more differences").c_str())) {
     for (size_t i = shown; i < report.differences.size(); ++i) coloured(failed_colour(), "- " + report.differences[i]);
     if (report.total_differences > report.differences.size())
       text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
