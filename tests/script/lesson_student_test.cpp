@@ -88,15 +88,24 @@ Outcome run_lesson(const fs::path& dir, const Lesson& lesson, const fs::path& an
                                "' --student '" + student.string() + "'");
 }
 
+// The longest of `names` that the fixture's name starts with, followed by "_"; "" when none does.
+std::string longest_prefix(const std::string& fixture, const std::vector<std::string>& names) {
+  std::string found;
+  for (const std::string& name : names) {
+    if (fixture.rfind(name + "_", 0) == 0 && name.size() > found.size()) found = name;
+  }
+  return found;
+}
+
 // "flip_forgets_faces" -> "flip", "catmull_clark_moves_in_place" -> "catmull_clark": the longest lesson part the
 // fixture's name starts with.
 std::string part_of(const std::string& fixture) {
-  std::string part;
-  for (const Lesson& lesson : kLessons) {
-    const std::string prefix = std::string(lesson.part) + "_";
-    if (fixture.rfind(prefix, 0) == 0 && prefix.size() > part.size() + 1) part = lesson.part;
-  }
-  return part;
+  static const std::vector<std::string> parts = [] {
+    std::vector<std::string> all;
+    for (const Lesson& lesson : kLessons) all.emplace_back(lesson.part);
+    return all;
+  }();
+  return longest_prefix(fixture, parts);
 }
 
 // The buggy files: tests/grading/students/ (the built-in exercises') and tests/grading/scripted/ (the exercises of
@@ -290,18 +299,11 @@ TEST(LessonStudent, EveryBuggyFixtureOfALessonsPartHasALessonCase) {
   for (const auto& entry : fs::directory_iterator(source() / "scripts" / "exercises")) {
     scripted.push_back(entry.path().stem().string());
   }
-  const auto exercise_of = [&](const std::string& fixture) {
-    std::string name;
-    for (const std::string& exercise : scripted) {
-      if (fixture.rfind(exercise + "_", 0) == 0 && exercise.size() > name.size()) name = exercise;
-    }
-    return name;
-  };
   for (const fs::path& folder : kFixtureFolders) {
     const bool is_scripted = folder.filename() == "scripted";
     for (const auto& entry : fs::directory_iterator(source() / folder)) {
       const std::string fixture = entry.path().stem().string();
-      if (is_scripted && exercise_of(fixture) != part_of(fixture)) continue;
+      if (is_scripted && longest_prefix(fixture, scripted) != part_of(fixture)) continue;
       EXPECT_TRUE(covered.count(fixture)) << entry.path().filename() << " has no case here";
     }
   }
