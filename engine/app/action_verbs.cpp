@@ -15,6 +15,7 @@
 #include "app/layout_report.h"
 #include "app/window_host.h"
 #include "document/document_actions.h"
+#include "document/mesh_edits.h"
 #include "io/file_access.h"
 
 namespace meshedit {
@@ -133,8 +134,13 @@ std::string open_picker(EditorApp&, const Action&) {
   return "";
 }
 
+// A command of the table run as its menu item runs it; throws why it was not done.
+void run(EditorApp& app, CommandId id) {
+  if (const Check done = app.run_command(id); !done) throw std::runtime_error(done.reason);
+}
+
 std::string open_repaired(EditorApp& app, const Action&) {
-  if (!app.open_repaired()) throw_message(app);
+  run(app, CommandId::OpenRepaired);
   return "";
 }
 
@@ -151,8 +157,7 @@ std::string repair_row(EditorApp& app, const Action& a) {
 }
 
 std::string triangulate(EditorApp& app, const Action&) {
-  if (!triangulate_all(app.document(), app.selection()).ok) throw_message(app);
-  app.tell_lesson_command("triangulate");
+  run(app, CommandId::Triangulate);
   return "";
 }
 
@@ -160,7 +165,14 @@ template <bool OnePhase>
 std::string subdivide(EditorApp& app, const Action& a) {
   const std::optional<SubdivisionScheme> scheme = scheme_named(a.args[0]);
   if (!scheme) throw std::runtime_error(a.verb + " takes " + scheme_names());
-  if (const Check check = app.run_subdivide_command(*scheme, OnePhase); !check) throw std::runtime_error(check.reason);
+  run(app, subdivide_command(*scheme, OnePhase));
+  return "";
+}
+
+std::string run_named_command(EditorApp& app, const Action& a) {
+  const Command* named = find_command(a.args[0]);
+  if (!named) throw std::runtime_error("no command '" + a.args[0] + "' (the names are script/command_table.h's)");
+  run(app, named->id);
   return "";
 }
 
@@ -506,6 +518,10 @@ const ActionVerb kVerbs[] = {
      "repair-row K   clicks the Repairs tab's K-th change (1 the first): selects its first spot; fails when there is "
      "no such row, it has no spot, or the spots are stale",
      repair_row},
+    {"command", 1,
+     "command NAME   runs the command of that name (script/command_table.h: loop-phase, wireframe, inspector...) as "
+     "its menu item does; fails when it was not done, with the status line's reason",
+     run_named_command},
     {"triangulate", 0, "triangulate   Edit > Triangulate", triangulate},
     {"subdivide", 1, "subdivide loop|catmull-clark|linear   the Subdivide menu's item for the scheme",
      subdivide<false>},

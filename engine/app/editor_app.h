@@ -4,7 +4,8 @@
 //
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
-//   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do.
+//   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do; a menu item, a
+//   key and a scripted verb run a command of the table (script/command_table.h) through the one run_command.
 // - Opening a file is whole or nothing: the document (or the curve or patch view), the view mode, the window title
 //   and the recent list all change to the file's, or none does and the status line says why, memory running out
 //   included (everything that can fail is made before anything changes: editor_files.cpp). show_mesh, show_curve and
@@ -45,8 +46,8 @@
 
 #include <glm/vec2.hpp>
 
+#include "app/commands.h"
 #include "app/edit_animator.h"
-#include "app/key_bindings.h"
 #include "app/repair_marks.h"
 #include "app/up_axis_choice.h"
 #include "app/view_quality.h"
@@ -54,10 +55,10 @@
 #include "core/bezier.h"
 #include "document/bezier_mine.h"
 #include "document/mesh_document.h"
+#include "document/mesh_edits.h"
 #include "document/selection.h"
 #include "document/settings.h"
 #include "document/student_edit.h"
-#include "document/subdivision_actions.h"
 #include "document/window_layout.h"
 #include "render/camera.h"
 #include "render/label_placement.h"
@@ -80,12 +81,6 @@
 namespace meshedit {
 
 enum class ViewMode { Mesh, Curve, Patches };
-
-// Modifier state of a key press.
-struct KeyMods {
-  bool ctrl = false;
-  bool shift = false;
-};
 
 class EditorApp {
  public:
@@ -162,12 +157,12 @@ class EditorApp {
   // the frame's handlers is shown as an Error in the status line (ui/frame_guard.h), never thrown from here.
   void frame(int framebuffer_width, int framebuffer_height, float frame_ms);
 
-  // The key handlers (GLFW key codes); return whether the key did something.
+  // A key press (a GLFW key code): runs the command of that key in the view shown (app/commands.h) and tells a lesson
+  // the key; returns whether some command has that key.
   bool handle_key(int key, KeyMods mods);
-  // A menu command the student ran (or its key), for a lesson that waits for it (lesson_events.h's kLessonCommands).
-  void tell_lesson_command(const char* name);
-  // Subdivide > Loop (as L, Shift+L), Catmull-Clark or Linear, whole or its next phase; tells the lesson when it ran.
-  Check run_subdivide_command(SubdivisionScheme scheme, bool one_phase);
+  // Runs a command of the table (script/command_table.h) as its menu item, its key or a scripted verb does
+  // (editor_commands.cpp); returns whether it was done, or why not.
+  Check run_command(CommandId id, CommandStart start = CommandStart::Script);
   // A left click at pixel (x, y) of the view (framebuffer pixels, top-left origin): selects what is under it (or
   // clears the selection).
   void click(int x, int y);
@@ -290,15 +285,10 @@ class EditorApp {
   // Places and draws the id and lesson labels (id_labels.cpp) inside the view's rectangle, given in ImGui window
   // coordinates; `framebuffer` is the view's size in framebuffer pixels, which the camera projects to.
   void draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer);
-  void draw_menu_bar();  // File, Edit, Subdivide, View and Help, each drawn by its draw_*_menu
-  void draw_file_menu();
-  void draw_edit_menu();
-  void draw_subdivide_menu();
-  void draw_view_menu();
-  void draw_help_menu();
-  // A menu item for a key's command: shows the key and does what pressing it does (press: a running replay is
-  // finished first, a lesson waiting for the key hears about it).
-  void key_menu_item(const char* label, KeyCommand command, bool enabled = true, bool checked = false);
+  // The menu bar: the command table's menus and items in its order, each item running its command (editor_menus.cpp).
+  void draw_menu_bar();
+  void draw_menu_item(const Command& command);
+  void draw_submenu(CommandId id);  // Open recent, Up axis, Theme
   void draw_open_panel();
   void draw_help_panel();
   void draw_unsaved_code_dialog();  // editor_menus.cpp, with the other dialogs
@@ -319,16 +309,12 @@ class EditorApp {
   bool apply_up_axis() noexcept;
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_lesson_runner();
-  bool apply_key(int key, KeyMods mods);
-  bool run_key_command(KeyCommand command);  // what a row of app/key_bindings.h does; whether it did something
-  void press(KeyCommand command);            // handle_key with the command's key: what a menu item for it does
-  void draw_lesson_marks();                  // the lesson's highlights and arrows (its labels: draw_labels)
-  void draw_lesson_arrows();                 // the lesson's arrows, over the mesh view or the patch view
-  void draw_edit_animation();                // the edit playing, over the mesh (editor_edit_animation.cpp)
+  Check carry_out(CommandId id, CommandStart start);  // what each command does: run_command without its bookkeeping
+  void draw_lesson_marks();                           // the lesson's highlights and arrows (its labels: draw_labels)
+  void draw_lesson_arrows();                          // the lesson's arrows, over the mesh view or the patch view
+  void draw_edit_animation();                         // the edit playing, over the mesh (editor_edit_animation.cpp)
   void update_lesson(float frame_ms);
   void tell_lesson_key(int key, KeyMods mods);
-  // L or Shift+L (the course's weights or Loop's, as the Subdivide menu has them); tells a lesson the command.
-  Check run_loop(bool one_phase);
   void take_lesson_request();          // a lesson picked from the list, or "Lessons" (back to the list), this frame
   void bring_exercises_tab_forward();  // opens the Exercises tab and the right column, the tab in front next frame
   void draw_student_code_tab();        // the "Your code" tab's contents (editor_student_code.cpp)
@@ -390,10 +376,7 @@ class EditorApp {
   ConsolePanelState console_panel_;
   CurveEditorState curve_;
   PatchViewState patches_;
-  LoopWeights loop_weights_ = LoopWeights::Course;
-  // Subdivide > Catmull-Clark / Linear one phase at a time.
-  SubdivisionStepper catmull_clark_stepper_{SubdivisionScheme::CatmullClark};
-  SubdivisionStepper linear_stepper_{SubdivisionScheme::Linear};
+  MeshEditState mesh_edits_;  // Loop's weights and the Catmull-Clark and linear steppers (document/mesh_edits.h)
   // The up axis of the file shown (nullopt: a mesh no file gave, Z-up) and View > Up axis's choice.
   std::optional<FileUpAxis> file_up_axis_;
   UpAxisChoice up_axis_choice_ = UpAxisChoice::FromFile;

@@ -218,7 +218,6 @@ bool EditorApp::open_repaired() {
     report_exception(doc_, e);
     return false;
   }
-  tell_lesson_command("open-repaired");  // a lesson may wait for it; the copy is open whatever the lesson does
   return true;
 }
 

@@ -1,101 +1,13 @@
-// Keys and mouse of the window (see editor_app.h). Which key does what is app/key_bindings.h's table, which keeps
-// the course viewers' letters; here each command is carried out.
-#include <GLFW/glfw3.h>
+// The mouse of the window, and the keys read each frame (see editor_app.h). What a key press runs is the command
+// table's (script/command_table.h, which keeps the course viewers' letters): editor_commands.cpp.
 #include <imgui.h>
 
-#include <chrono>
-
+#include "app/commands.h"
 #include "app/editor_app.h"
-#include "app/key_bindings.h"
 #include "document/document_actions.h"
 #include "render/labels.h"
 
 namespace meshedit {
-namespace {
-
-std::string timestamped_screenshot_name() {
-  const auto now = std::chrono::system_clock::to_time_t(std::chrono::system_clock::now());
-  char buffer[64];
-  std::strftime(buffer, sizeof buffer, "meshedit-%Y%m%d-%H%M%S.png", std::localtime(&now));
-  return buffer;
-}
-
-}  // namespace
-
-bool EditorApp::handle_key(int key, KeyMods mods) {
-  const bool handled = apply_key(key, mods);
-  tell_lesson_key(key, mods);  // after the key acted, so a lesson that waits for F sees the flipped mesh
-  return handled;
-}
-
-bool EditorApp::apply_key(int key, KeyMods mods) {
-  const KeyView view = mode_ == ViewMode::Mesh    ? KeyView::Mesh
-                       : mode_ == ViewMode::Curve ? KeyView::Curve
-                                                  : KeyView::Patches;
-  const KeyBinding* binding = find_key_binding(key, mods.ctrl, mods.shift, view);
-  if (!binding) return false;
-  // An edit or an undo in the middle of a replay would leave a half-replayed state in the history.
-  if (binding->edits) exercises_.finish_replay(doc_);
-  return run_key_command(binding->command);
-}
-
-bool EditorApp::run_key_command(KeyCommand command) {
-  switch (command) {
-    case KeyCommand::ToggleExercises:
-      if (exercise_panel_.open) exercise_panel_.open = false;
-      else bring_exercises_tab_forward();
-      return true;
-    case KeyCommand::Quit: quit_requested_ = true; return true;
-    case KeyCommand::BiggerText: change_font_size(+1); return true;
-    case KeyCommand::SmallerText: change_font_size(-1); return true;
-    case KeyCommand::DefaultText: change_font_size(0); return true;
-    case KeyCommand::FoldLeft: settings_.layout.left_open = !settings_.layout.left_open; return true;
-    case KeyCommand::FoldRight: settings_.layout.right_open = !settings_.layout.right_open; return true;
-    case KeyCommand::Open: show_open_panel_ = true; return true;
-    case KeyCommand::Help: show_help_ = !show_help_; return true;
-    case KeyCommand::Screenshot: request_screenshot(timestamped_screenshot_name()); return true;
-    case KeyCommand::ResetView: reset_view(); return true;
-    case KeyCommand::Console:
-      console_panel_.open = !console_panel_.open;
-      console_panel_.focus_input = console_panel_.open;
-      return true;
-    case KeyCommand::Wireframe: view_options_.wireframe = !view_options_.wireframe; return true;
-    case KeyCommand::Shading: view_options_.smooth_shading = !view_options_.smooth_shading; return true;
-    case KeyCommand::CurveStep: step_level(curve_); return true;
-    case KeyCommand::CurveToggle: toggle_curve(curve_); return true;
-    case KeyCommand::CurveMine: bezier_mine_.set_curve_on(!bezier_mine_.curve_on()); return true;
-    case KeyCommand::PatchMine: bezier_mine_.set_patch_on(!bezier_mine_.patch_on()); return true;
-    case KeyCommand::Undo: return undo_edit(doc_, selection_);
-    case KeyCommand::Redo: return redo_edit(doc_, selection_);
-    case KeyCommand::Inspector:
-      inspector_.open = !inspector_.open;
-      if (inspector_.open) {
-        select_tab_ = RightTab::Inspector;
-        // The inspector is a tab on the right while a lesson has the left column, else on the left: unfold it.
-        bool& column_open = lesson_->loaded() ? settings_.layout.right_open : settings_.layout.left_open;
-        column_open = true;
-      }
-      return true;
-    case KeyCommand::ClearSelection: selection_.selected = {}; return true;
-    case KeyCommand::FlipOrFace:
-      // On a halfedge F walks to its face; on an edge (the course's use) it flips.
-      if (selection_.selected.valid() && selection_.selected.kind == ElementKind::Halfedge) {
-        return navigate_selection(doc_, selection_, NavStep::Face);
-      }
-      flip_selected(doc_, selection_);
-      return true;
-    case KeyCommand::Split: split_selected(doc_, selection_); return true;  // the outcome goes to the status line
-    case KeyCommand::Collapse: collapse_selected(doc_, selection_); return true;
-    case KeyCommand::Loop: run_loop(false); return true;
-    case KeyCommand::LoopPhase: run_loop(true); return true;
-    case KeyCommand::Next: return navigate_selection(doc_, selection_, NavStep::Next);
-    case KeyCommand::Twin: return navigate_selection(doc_, selection_, NavStep::Twin);
-    case KeyCommand::Vertex: return navigate_selection(doc_, selection_, NavStep::Vertex);
-    case KeyCommand::Edge: return navigate_selection(doc_, selection_, NavStep::Edge);
-    case KeyCommand::Halfedge: return navigate_selection(doc_, selection_, NavStep::Halfedge);
-  }
-  return false;
-}
 
 std::optional<ScreenPoint> EditorApp::element_pixel(ElementRef element) const {
   const std::optional<glm::dvec3> anchor = label_anchor(doc_.mesh, element);

@@ -1,6 +1,6 @@
-// EditorApp and lessons: showing what a lesson asks for, telling the lesson about keys, clicks and the
-// selection, the lesson panel with hot reload, and the lesson's highlights and arrows over the mesh (its labels are
-// placed with the id labels: id_labels.cpp).
+// EditorApp and lessons: showing what a lesson asks for, telling the lesson about the selection (keys and
+// commands: editor_commands.cpp; clicks: editor_input.cpp), the lesson panel with hot reload, and the lesson's
+// highlights and arrows over the mesh (its labels are placed with the id labels: id_labels.cpp).
 //
 // Whole or nothing, as opening a file (editor_files.cpp): open_lesson has the runner read and run the file first
 // (LessonRunner::prepare), then makes the title and the message, and only then switches (take, the title, the
@@ -9,7 +9,6 @@
 // a window titled after the lesson gets its title at start back (kStartTitle).
 // A reload (reload_lesson: the panel's Reload, hot reload) is whole or nothing the same way: prepare_reload, the new
 // title (while the window is titled after the lesson), then take and the title's swap.
-#include <GLFW/glfw3.h>
 #include <imgui.h>
 
 #include "app/editor_app.h"
@@ -22,18 +21,6 @@
 
 namespace meshedit {
 namespace {
-
-// "F", "shift+L", "ctrl+Z", "Space": the names lessons wait for (lesson_events.h compares them ignoring case).
-std::string key_name(int key, KeyMods mods) {
-  std::string name;
-  if (key >= GLFW_KEY_A && key <= GLFW_KEY_Z) name = std::string(1, char('A' + (key - GLFW_KEY_A)));
-  else if (key == GLFW_KEY_SPACE) name = "Space";
-  else if (key == GLFW_KEY_ESCAPE) name = "Escape";
-  else return {};
-  if (mods.shift) name = "shift+" + name;
-  if (mods.ctrl) name = "ctrl+" + name;
-  return name;
-}
 
 constexpr float kHiddenArrowAlpha = 0.3f;  // a lesson's arrow where the mesh is in front of it
 
@@ -115,16 +102,6 @@ void EditorApp::update_lesson(float frame_ms) {
   reload_if_changed(*lesson_, lesson_panel_, dt);
   if (lesson_->student_folder() != exercises_.folder()) lesson_->set_student_folder(exercises_.folder());
   lesson_->update(dt);
-}
-
-void EditorApp::tell_lesson_key(int key, KeyMods mods) {
-  if (!lesson_->loaded()) return;
-  const std::string name = key_name(key, mods);
-  if (!name.empty()) lesson_->deliver(LessonEvent::key(name));
-}
-
-void EditorApp::tell_lesson_command(const char* name) {
-  if (lesson_->loaded()) lesson_->deliver(LessonEvent::command(name));
 }
 
 void EditorApp::take_lesson_request() {

@@ -1,6 +1,8 @@
-// The menu bar, the open/save dialog (a small file browser with a recent list) and the key help. The two dialogs are
-// modal and centred on the window: nothing else takes input while one is open.
-#include <GLFW/glfw3.h>
+// The menu bar, the open/save dialog (a small file browser with a recent list) and the key help. The menus are the
+// command table's (script/command_table.h): its menus in its order, each item with its key beside it, running its
+// command as the key and a scripted verb do (EditorApp::run_command); what the table cannot say (an item's check
+// mark, whether it is enabled, a label made this frame, a submenu's items) is drawn here. The dialogs are modal and
+// centred on the window: nothing else takes input while one is open.
 #include <imgui.h>
 
 #include <algorithm>
@@ -8,12 +10,12 @@
 #include <filesystem>
 #include <utility>
 
+#include "app/commands.h"
 #include "app/editor_app.h"
-#include "app/key_bindings.h"
 #include "app/mesh_loading.h"
 #include "app/window_host.h"
 #include "document/document_actions.h"
-#include "document/subdivision_actions.h"
+#include "document/mesh_edits.h"
 #include "io/mesh_file.h"
 #include "ui/theme.h"
 
@@ -33,169 +35,130 @@ bool input_path(const char* label, std::string& text) {
 
 }  // namespace
 
-Check EditorApp::run_loop(bool one_phase) {
-  const Check check = one_phase ? loop_subdivide_step(doc_, selection_, loop_weights_)
-                                : loop_subdivide_all(doc_, selection_, loop_weights_);
-  if (check) tell_lesson_command(subdivide_command(SubdivisionScheme::Loop, one_phase));
-  return check;
-}
+namespace {
 
-Check EditorApp::run_subdivide_command(SubdivisionScheme scheme, bool one_phase) {
-  exercises_.finish_replay(doc_);
-  if (scheme == SubdivisionScheme::Loop) {  // as L and Shift+L, which a lesson may wait for as keys too
-    const Check check = run_loop(one_phase);
-    tell_lesson_key(GLFW_KEY_L, {false, one_phase});
-    return check;
+// What a menu item shows besides the table's row: whether it is there at all (the page's own items), enabled,
+// checked, and a label made this frame (the next phase's, the student file's) in place of the table's.
+struct MenuItemLook {
+  bool shown = true;
+  bool enabled = true;
+  bool checked = false;
+  char label[128] = "";  // on the stack: a menu item's label needs no memory
+};
+
+// "Subdivide" from "Subdivide > Loop subdivision", as a C string for ImGui.
+struct MenuTitle {
+  explicit MenuTitle(const Command& c) {
+    const std::string_view title = menu_title(c);
+    const size_t n = std::min(title.size(), sizeof text - 1);
+    std::copy_n(title.data(), n, text);
+    text[n] = '\0';
   }
-  const bool catmull_clark = scheme == SubdivisionScheme::CatmullClark;
-  Check check;
-  if (one_phase) check = subdivision_step(doc_, selection_, catmull_clark ? catmull_clark_stepper_ : linear_stepper_);
-  else check = catmull_clark ? catmull_clark_all(doc_, selection_) : linear_subdivide_all(doc_, selection_);
-  if (check) tell_lesson_command(subdivide_command(scheme, one_phase));
-  return check;
-}
+  char text[32];
+};
 
-void EditorApp::press(KeyCommand command) {
-  for (const KeyBinding& b : key_bindings()) {
-    if (b.command == command && b.help) {
-      handle_key(b.key, {b.ctrl, b.shift});
-      return;
-    }
-  }
-}
-
-void EditorApp::key_menu_item(const char* label, KeyCommand command, bool enabled, bool checked) {
-  if (ImGui::MenuItem(label, shortcut_of(command), checked, enabled)) press(command);
-}
+}  // namespace
 
 void EditorApp::draw_menu_bar() {
   if (!ImGui::BeginMainMenuBar()) return;
-  draw_file_menu();
-  draw_edit_menu();
-  draw_subdivide_menu();
-  draw_view_menu();
-  draw_help_menu();
+  std::string_view drawn;  // the menu whose items come now
+  bool open = false;
+  for (const Command& c : commands()) {
+    const std::string_view title = menu_title(c);
+    if (title.empty()) continue;
+    if (title != drawn) {
+      if (open) ImGui::EndMenu();
+      drawn = title;
+      // Edit and Subdivide act on a mesh: off while the curve or the patch view is on screen.
+      const bool on_a_mesh = title == "Edit" || title == "Subdivide";
+      const MenuTitle name(c);
+      open = ImGui::BeginMenu(name.text, !on_a_mesh || mode_ == ViewMode::Mesh);
+      probe_.record_last_item(std::string("menu:") + name.text);  // where the title is (tests click it)
+    }
+    if (open) draw_menu_item(c);
+  }
+  if (open) ImGui::EndMenu();
   ImGui::EndMainMenuBar();
 }
 
-void EditorApp::draw_file_menu() {
-  using K = KeyCommand;
-  if (!ImGui::BeginMenu("File")) return;
-  // A page reaches the student's disk only through the browser's picker; Open... lists the packaged files there.
-  if (host_has_file_picker() && ImGui::MenuItem("Open mesh from this computer...")) host_show_file_picker();
-  key_menu_item("Open...", K::Open);
-  if (ImGui::BeginMenu("Open recent", !recent_.empty())) {
+void EditorApp::draw_menu_item(const Command& c) {
+  using I = CommandId;
+  MenuItemLook look;
+  switch (c.id) {
+    // A page reaches the student's disk only through the browser's picker; Open... lists the packaged files there.
+    case I::OpenFromComputer: look.shown = host_has_file_picker(); break;
+    case I::OpenRecent: look.enabled = !recent_.empty(); break;
+    case I::OpenRepaired: look.enabled = !repairable_path_.empty(); break;
+    case I::SaveAs: look.enabled = mode_ == ViewMode::Mesh; break;
+    // A page's student files live in the browser: these take them to and from the student's disk for submission.
+    case I::DownloadCode:
+      look.shown = !host_files_on_users_disk();
+      std::snprintf(look.label, sizeof look.label, "Download your %s", exercises_.file().filename().string().c_str());
+      break;
+    case I::UploadCode: look.shown = !host_files_on_users_disk(); break;
+    case I::Undo: look.enabled = doc_.history.can_undo(); break;
+    case I::Redo: look.enabled = doc_.history.can_redo(); break;
+    case I::LoopPhase:
+      std::snprintf(look.label, sizeof look.label, "Loop: %s", next_loop_phase_label(doc_).c_str());
+      break;
+    case I::CatmullClarkPhase:
+    case I::LinearPhase: {
+      const SubdivisionScheme scheme =
+          c.id == I::LinearPhase ? SubdivisionScheme::Linear : SubdivisionScheme::CatmullClark;
+      std::snprintf(look.label, sizeof look.label, "%s", next_phase_label(scheme, doc_, mesh_edits_).c_str());
+      break;
+    }
+    case I::LoopWeights: look.checked = mesh_edits_.loop_weights == LoopWeights::Loop; break;
+    case I::Wireframe: look.checked = view_options_.wireframe; break;
+    case I::Shading: look.checked = view_options_.smooth_shading; break;
+    case I::Vertices: look.checked = view_options_.show_vertices; break;
+    case I::HalfedgeArrows: look.checked = view_options_.show_halfedges; break;
+    case I::Boundary: look.checked = view_options_.show_boundary; break;
+    case I::IdLabels: look.checked = show_labels_; break;
+    case I::AnimateEdits: look.checked = settings_.animate_edits; break;
+    case I::FoldLeft: look.checked = settings_.layout.left_open; break;
+    case I::FoldRight: look.checked = settings_.layout.right_open; break;
+    case I::Inspector: look.checked = inspector_.open; break;
+    case I::PointerTables: look.checked = tables_.open; break;
+    case I::Exercises: look.checked = exercise_panel_.open; break;
+    case I::YourCode: look.checked = student_editor_.open; break;
+    case I::Console: look.checked = console_panel_.open; break;
+    default: break;
+  }
+  if (!look.shown) return;
+  if (c.separator_before) ImGui::Separator();
+  const char* label = look.label[0] ? look.label : menu_label(c).data();  // the path's end ends the C string too
+  if (c.submenu) {
+    const bool open = ImGui::BeginMenu(label, look.enabled);
+    probe_.record_last_item(std::string("menu-item:") + c.name);
+    if (open) {
+      draw_submenu(c.id);
+      ImGui::EndMenu();
+    }
+    return;
+  }
+  const bool clicked = ImGui::MenuItem(label, c.key, look.checked, look.enabled);
+  probe_.record_last_item(std::string("menu-item:") + c.name);  // each item drawn, where (tests click it)
+  if (clicked) run_command(c.id, CommandStart::Menu);
+}
+
+void EditorApp::draw_submenu(CommandId id) {
+  if (id == CommandId::OpenRecent) {
     for (const std::string& path : std::deque<std::string>(recent_)) {
       if (ImGui::MenuItem(path.c_str())) open(path);
     }
-    ImGui::EndMenu();
-  }
-  if (ImGui::MenuItem("Open a repaired copy", nullptr, false, !repairable_path_.empty())) open_repaired();
-  if (ImGui::MenuItem("Save as...", nullptr, false, mode_ == ViewMode::Mesh)) show_open_panel_ = true;
-  if (ImGui::MenuItem("Screenshot", shortcut_of(K::Screenshot))) request_screenshot("meshedit-screenshot.png");
-  // A page's student files live in the browser: these take them to and from the student's disk for submission.
-  if (!host_files_on_users_disk()) {
-    ImGui::Separator();
-    const std::string name = exercises_.file().filename().string();
-    if (ImGui::MenuItem(("Download your " + name).c_str())) download_student_code();
-    if (ImGui::MenuItem("Upload your .lua from this computer...")) host_show_file_picker();
-  }
-  ImGui::Separator();
-  key_menu_item("Quit", K::Quit);
-  ImGui::EndMenu();
-}
-
-void EditorApp::draw_edit_menu() {
-  using K = KeyCommand;
-  if (!ImGui::BeginMenu("Edit", mode_ == ViewMode::Mesh)) return;
-  key_menu_item("Undo", K::Undo, doc_.history.can_undo());
-  key_menu_item("Redo", K::Redo, doc_.history.can_redo());
-  ImGui::Separator();
-  if (ImGui::MenuItem("Flip edge", shortcut_of(K::FlipOrFace))) {  // F on a halfedge walks to its face; this flips
-    exercises_.finish_replay(doc_);
-    flip_selected(doc_, selection_);
-  }
-  key_menu_item("Split edge", K::Split);
-  key_menu_item("Collapse edge", K::Collapse);
-  ImGui::Separator();
-  if (ImGui::MenuItem("Triangulate")) {  // every face of more than three corners
-    exercises_.finish_replay(doc_);
-    if (triangulate_all(doc_, selection_)) tell_lesson_command("triangulate");
-  }
-  ImGui::EndMenu();
-}
-
-void EditorApp::draw_subdivide_menu() {
-  using K = KeyCommand;
-  using S = SubdivisionScheme;
-  if (!ImGui::BeginMenu("Subdivide", mode_ == ViewMode::Mesh)) return;
-  if (ImGui::MenuItem("Loop subdivision", shortcut_of(K::Loop))) run_subdivide_command(S::Loop, false);
-  char phase[96];  // on the stack: the menu item's label needs no memory (the phase labels fit with room to spare)
-  std::snprintf(phase, sizeof phase, "Loop: %s", next_loop_phase_label(doc_).c_str());
-  if (ImGui::MenuItem(phase, shortcut_of(K::LoopPhase))) run_subdivide_command(S::Loop, true);
-  bool loop_beta = loop_weights_ == LoopWeights::Loop;
-  if (ImGui::MenuItem("Loop's original weights (beta)", nullptr, &loop_beta)) {
-    loop_weights_ = loop_beta ? LoopWeights::Loop : LoopWeights::Course;
-  }
-  ImGui::Separator();
-  if (ImGui::MenuItem("Catmull-Clark subdivision")) run_subdivide_command(S::CatmullClark, false);
-  if (ImGui::MenuItem(next_phase_label(doc_, catmull_clark_stepper_).c_str())) {
-    run_subdivide_command(S::CatmullClark, true);
-  }
-  if (ImGui::MenuItem("Linear subdivision")) run_subdivide_command(S::Linear, false);
-  if (ImGui::MenuItem(next_phase_label(doc_, linear_stepper_).c_str())) run_subdivide_command(S::Linear, true);
-  ImGui::EndMenu();
-}
-
-void EditorApp::draw_view_menu() {
-  using K = KeyCommand;
-  if (!ImGui::BeginMenu("View")) return;
-  ImGui::MenuItem("Wireframe", shortcut_of(K::Wireframe), &view_options_.wireframe);
-  ImGui::MenuItem("Smooth shading", shortcut_of(K::Shading), &view_options_.smooth_shading);
-  ImGui::MenuItem("Vertices", nullptr, &view_options_.show_vertices);
-  ImGui::MenuItem("Halfedge arrows", nullptr, &view_options_.show_halfedges);
-  ImGui::MenuItem("Boundary", nullptr, &view_options_.show_boundary);
-  ImGui::MenuItem("Id labels", nullptr, &show_labels_);
-  ImGui::MenuItem("Animate edits", nullptr, &settings_.animate_edits);  // flip, split, collapse, their undo, redo
-  ImGui::Separator();
-  ImGui::MenuItem("Left column (lesson)", shortcut_of(K::FoldLeft), &settings_.layout.left_open);
-  ImGui::MenuItem("Right column (tables)", shortcut_of(K::FoldRight), &settings_.layout.right_open);
-  key_menu_item("Inspector", K::Inspector, true, inspector_.open);
-  ImGui::MenuItem("Pointer tables", nullptr, &tables_.open);
-  key_menu_item("Exercises: mine vs reference", K::ToggleExercises, true, exercise_panel_.open);
-  if (ImGui::MenuItem("Your code (the exercise's file)", nullptr, student_editor_.open)) {
-    if (student_editor_.open) student_editor_.open = false;
-    else show_student_code();
-  }
-  key_menu_item("Lua console", K::Console, true, console_panel_.open);
-  if (ImGui::BeginMenu("Up axis")) {  // radio items; each refits the view
+  } else if (id == CommandId::UpAxis) {  // radio items; each refits the view
     const std::pair<const char*, UpAxisChoice> choices[] = {
         {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
     for (const auto& [label, choice] : choices) {
       if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
     }
-    ImGui::EndMenu();
-  }
-  ImGui::Separator();
-  key_menu_item("Bigger text", K::BiggerText);
-  key_menu_item("Smaller text", K::SmallerText);
-  key_menu_item("Default text size", K::DefaultText);
-  if (ImGui::BeginMenu("Theme")) {
+  } else if (id == CommandId::Theme) {
     constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
     for (const auto& [name, theme] : kThemes) {
       if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) set_theme(theme);
     }
-    ImGui::EndMenu();
   }
-  ImGui::Separator();
-  key_menu_item("Reset view", K::ResetView);
-  ImGui::EndMenu();
-}
-
-void EditorApp::draw_help_menu() {
-  if (!ImGui::BeginMenu("Help")) return;
-  if (ImGui::MenuItem("Keys", shortcut_of(KeyCommand::Help))) show_help_ = true;
-  ImGui::EndMenu();
 }
 
 namespace {
@@ -279,15 +242,15 @@ void EditorApp::draw_open_panel() {
 void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
-  // The mouse, then the key table (app/key_bindings.h) under a heading per view, a command's other keys beside it.
+  // The mouse, then the command table's keys (script/command_table.h) under a heading per view.
   const char* const kMouse[][2] = {
       {"click", "select the vertex, edge, halfedge or face under the cursor"},
       {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
   };
-  const std::pair<KeyView, const char*> kHeadings[] = {{KeyView::Mesh, "Mesh view"},
-                                                       {KeyView::Curve, "Curve view"},
-                                                       {KeyView::Patches, "Patch view"},
-                                                       {KeyView::Everywhere, "Every view"}};
+  const std::pair<CommandView, const char*> kHeadings[] = {{CommandView::Mesh, "Mesh view"},
+                                                           {CommandView::Curve, "Curve view"},
+                                                           {CommandView::Patches, "Patch view"},
+                                                           {CommandView::Everywhere, "Every view"}};
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
     const auto row = [](const char* keys, const char* text) {
       ImGui::TableNextColumn();
@@ -300,8 +263,8 @@ void EditorApp::draw_help_panel() {
       ImGui::TableNextColumn();
       ImGui::TextDisabled("%s", heading);
       ImGui::TableNextColumn();
-      for (const KeyBinding& b : key_bindings()) {
-        if (b.view == view && b.help) row(b.keys, b.help);
+      for (const Command& c : commands()) {
+        if (c.view == view && c.key) row(c.key, c.help);
       }
     }
     ImGui::EndTable();

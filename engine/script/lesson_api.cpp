@@ -96,7 +96,7 @@ void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
 std::string default_hint(const LessonWait& wait) {
   switch (wait.kind) {
     case LessonWait::Kind::Key: return "Press " + wait.name;
-    case LessonWait::Kind::Command: return std::string("Run ") + find_lesson_command(wait.name)->how;
+    case LessonWait::Kind::Command: return "Run " + command_place(*find_lesson_command(wait.name));
     case LessonWait::Kind::Click: return "Click " + wait.describe().substr(std::strlen("a click on "));
     case LessonWait::Kind::Selection: return "Select " + wait.describe().substr(std::strlen("the selection of "));
     case LessonWait::Kind::Button: return "Press " + wait.name;

@@ -39,32 +39,6 @@ bool same_key(const std::string& a, const std::string& b) {
   return true;
 }
 
-const char* subdivide_command(SubdivisionScheme scheme, bool one_phase) {
-  switch (scheme) {
-    case SubdivisionScheme::Loop: return one_phase ? "loop-phase" : "loop";
-    case SubdivisionScheme::CatmullClark: return one_phase ? "catmull-clark-phase" : "catmull-clark";
-    case SubdivisionScheme::Linear: return one_phase ? "linear-phase" : "linear";
-  }
-  return "";
-}
-
-const LessonCommand* find_lesson_command(std::string_view name) {
-  for (const LessonCommand& command : kLessonCommands) {
-    if (name == command.name) return &command;
-  }
-  return nullptr;
-}
-
-std::string lesson_command_names() {
-  std::string names;
-  const size_t count = std::size(kLessonCommands);
-  for (size_t i = 0; i < count; ++i) {
-    names += i == 0 ? "" : i + 1 == count ? " or " : ", ";
-    names += kLessonCommands[i].name;
-  }
-  return names;
-}
-
 bool LessonWait::matches(const LessonEvent& event) const {
   switch (kind) {
     case Kind::Command: return event.kind == LessonEvent::Kind::Command && event.name == name;
@@ -91,8 +65,8 @@ std::string LessonWait::describe() const {
     case Kind::None: return "";
     case Kind::Key: return "key " + name;
     case Kind::Command: {
-      const LessonCommand* command = find_lesson_command(name);
-      return "the command " + name + (command ? std::string(" (") + command->how + ")" : std::string());
+      const Command* waited = find_lesson_command(name);
+      return "the command " + name + (waited ? " (" + command_place(*waited) + ")" : std::string());
     }
     case Kind::Click: return "a click on " + element_words(*this);
     case Kind::Selection: return "the selection of " + element_words(*this);

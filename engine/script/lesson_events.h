@@ -13,8 +13,9 @@
 //   that cannot be read as a number: not counted) and `feedback` saying what is wrong.
 // - A question's hint is held back until the student has tried once (hint_shown); a wait_for's hint is the
 //   instruction itself ("Press F") and shows at once.
-// - A command wait is met by a Command event of the same name: the window sends one whenever the student runs that
-//   command, from its menu or its key (a key sends its Key event too), and headless answers stand for them.
+// - A command wait is met by a Command event of the same name: the window sends one whenever that command
+//   (script/command_table.h, lesson_can_wait) ran, from its menu, its key or a scripted verb (each also sends the
+//   command's key as a Key event), and the headless answers that stand for them send it too.
 // - A your_turn wait (lesson_your_turn.h) takes no event: the runner runs the student's file again when its stamp
 //   (watched_stamp, read at most twice a second) changes. `name` is the file's name, `feedback` the last diagnosis.
 #pragma once
@@ -27,38 +28,16 @@
 #include <glm/vec2.hpp>
 
 #include "core/ids.h"
-#include "core/subdivision_phases.h"
+#include "script/command_table.h"
 #include "script/file_stamp.h"
 
 namespace meshedit {
-
-// The window's commands a lesson can wait for with wait_for{command = NAME}, and where the student finds each.
-struct LessonCommand {
-  const char* name;  // "catmull-clark-phase"
-  const char* how;   // "Subdivide > Catmull-Clark, the next phase": the wait's default hint follows "Run "
-};
-inline constexpr LessonCommand kLessonCommands[] = {
-    {"loop", "Subdivide > Loop subdivision (L)"},
-    {"loop-phase", "Subdivide > Loop, the next phase (Shift+L)"},
-    {"catmull-clark", "Subdivide > Catmull-Clark subdivision"},
-    {"catmull-clark-phase", "Subdivide > Catmull-Clark, the next phase"},
-    {"linear", "Subdivide > Linear subdivision"},
-    {"linear-phase", "Subdivide > Linear, the next phase"},
-    {"triangulate", "Edit > Triangulate"},
-    {"open-repaired", "File > Open a repaired copy"},
-};
-// The name of the Subdivide menu's command for `scheme`, whole or its next phase ("linear", "catmull-clark-phase").
-const char* subdivide_command(SubdivisionScheme scheme, bool one_phase);
-// The command of that name, or nullptr.
-const LessonCommand* find_lesson_command(std::string_view name);
-// "loop, loop-phase, ... or open-repaired": for the message that refuses another name.
-std::string lesson_command_names();
 
 struct LessonEvent {
   enum class Kind { Key, Click, Selection, Button, Choice, Value, Command, CurveClick };
   Kind kind = Kind::Key;
   std::string name;    // the key ("F", "shift+L"), the button label ("Continue"), the option chosen, the text typed,
-                       // the command (a kLessonCommands name)
+                       // the command (a command_table.h name a lesson can wait for)
   ElementRef element;  // Click and Selection
   // CurveClick: where the curve view was clicked (curve coordinates), and how far from the curve (curve units) a
   // click still counts as on it (the window's pick radius in pixels over the view's scale).

@@ -14,7 +14,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/value_format.h"
-#include "script/lesson_headless.h"
+#include "document/lesson_headless.h"
 #include "script/lesson_runner.h"
 #include "script/scripted_exercise.h"
 #include "support/test_support.h"

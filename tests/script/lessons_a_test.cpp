@@ -18,9 +18,9 @@
 #include "core/mesh_build.h"
 #include "core/palette.h"
 #include "core/primitives.h"
+#include "document/lesson_headless.h"
 #include "io/bez_io.h"
 #include "script/headless_host.h"
-#include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
 #include "support/test_support.h"
 

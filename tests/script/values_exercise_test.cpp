@@ -13,8 +13,8 @@
 #include <glm/geometric.hpp>
 
 #include "core/value_format.h"
+#include "document/lesson_headless.h"
 #include "script/exercises.h"
-#include "script/lesson_headless.h"
 #include "script/lesson_runner.h"
 #include "script/scripted_exercise.h"
 #include "script/value_compare.h"

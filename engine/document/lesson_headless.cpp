@@ -1,6 +1,7 @@
 // run_lesson_headless (see lesson_headless.h): reads the answers file, then drives a LessonRunner on a
-// HeadlessHost step by step, printing what each step says and how each wait was answered.
-#include "script/lesson_headless.h"
+// HeadlessHost step by step, printing what each step says and how each wait was answered. The edits the answers
+// stand for run on a document of the screen mesh through document/mesh_edits.h, as the window's commands do.
+#include "document/lesson_headless.h"
 
 #include <algorithm>
 #include <cctype>
@@ -16,10 +17,9 @@
 #include <lua.hpp>
 
 #include "core/mesh_build.h"
-#include "core/mesh_ops.h"
 #include "core/mesh_repair.h"
 #include "core/subdivision_phases.h"
-#include "core/triangulate.h"
+#include "document/mesh_edits.h"
 #include "io/mesh_file.h"
 #include "script/headless_host.h"
 #include "script/lesson_answers.h"
@@ -406,53 +406,83 @@ class HeadlessDriver {
     return "";
   }
 
-  // The edits the window's keys and menu commands make, applied to the mesh on screen; a menu command then tells the
-  // lesson its name, as the window does.
+  // The edits the window's keys and menu commands make, applied to the mesh on screen by the function the window
+  // runs them with (document/mesh_edits.h); a command a lesson can wait for then tells the lesson its name, as the
+  // window does.
   std::string edit(const Answer& answer) {
-    std::string failure = answer.kind == Answer::Kind::OpenRepaired ? open_repaired(answer) : edit_mesh(answer);
-    if (failure.empty()) {
-      if (const char* command = command_of(answer)) runner_.deliver(LessonEvent::command(command));
-    }
+    const std::optional<CommandId> id = command_of(answer);
+    if (!id) return edit_edge(answer);  // flip, split, collapse name their edge
+    std::string failure = *id == CommandId::OpenRepaired ? open_repaired(answer) : edit_mesh(answer, *id);
+    if (failure.empty() && command(*id).lesson_can_wait) runner_.deliver(LessonEvent::command(command(*id).name));
     return failure;
   }
 
-  // The kLessonCommands name of the menu command an edit answer stands for, or nullptr (flip, split, collapse).
-  static const char* command_of(const Answer& answer) {
+  // The command a whole-mesh edit answer stands for; nullopt for flip, split and collapse.
+  static std::optional<CommandId> command_of(const Answer& answer) {
     switch (answer.kind) {
       case Answer::Kind::Subdivide:
       case Answer::Kind::SubdividePhase:
-        return subdivide_command(*scheme_named(answer.value), answer.kind == Answer::Kind::SubdividePhase);
-      case Answer::Kind::Triangulate: return "triangulate";
-      case Answer::Kind::OpenRepaired: return "open-repaired";
-      default: return nullptr;
+        return subdivide_command(scheme_named(answer.value).value_or(SubdivisionScheme::Loop),
+                                 answer.kind == Answer::Kind::SubdividePhase);
+      case Answer::Kind::Triangulate: return CommandId::Triangulate;
+      case Answer::Kind::OpenRepaired: return CommandId::OpenRepaired;
+      default: return std::nullopt;
     }
   }
 
-  std::string edit_mesh(const Answer& answer) {
-    std::shared_ptr<HalfedgeMesh> mesh = host_.current_mesh();
-    if (!mesh) return "answer " + answer.field + ": no mesh on screen";
-    Check check;
-    if (answer.kind == Answer::Kind::Subdivide) {  // L, or the Subdivide menu's schemes
-      out_ << "  > subdivide" << (answer.value == "loop" ? "" : " " + answer.value);
-      check = subdivide(*mesh, scheme_named(answer.value).value_or(SubdivisionScheme::Loop));
-    } else if (answer.kind == Answer::Kind::Triangulate) {  // Edit > Triangulate
-      out_ << "  > triangulate";
-      check = triangulate_mesh(*mesh).check;
-    } else if (answer.kind == Answer::Kind::SubdividePhase) {
-      return subdivide_phase(answer, std::move(mesh));
-    } else {
-      const std::optional<ElementRef> element = parse_element(answer.value);
-      if (!element || element->kind != ElementKind::Edge) {
-        return "answer " + answer.field + " = \"" + answer.value + "\": expected an edge id like e7";
-      }
-      const EdgeId e(element->index);
-      out_ << "  > " << answer.field << " " << format_id(e);
-      if (answer.kind == Answer::Kind::Flip) check = flip(*mesh, e).check;
-      else if (answer.kind == Answer::Kind::Split) check = split(*mesh, e).check;
-      else check = collapse(*mesh, e).check;
+  // The document the edits run on: the mesh on screen, taken again when the screen shows another mesh than the last
+  // edit left (the lesson showed another), which starts a one-phase subdivision again at phase 1 as in the window.
+  bool take_screen_mesh() {
+    const HalfedgeMesh* screen = host_.screen_mesh();
+    if (!screen) return false;
+    if (screen != left_.get()) {
+      replace_mesh(doc_, *screen, std::string());
+      selection_ = Selection{};
     }
-    if (!check.ok) return refused(answer, check);
-    host_.set_current_mesh(mesh);
+    return true;
+  }
+
+  // The edit ran on doc_: the screen shows its mesh.
+  void show_edited() {
+    left_ = std::make_shared<HalfedgeMesh>(doc_.mesh);
+    host_.set_current_mesh(left_);
+  }
+
+  // Flip, split or collapse of the edge the answer names: the edge selected, then the command run, as a click on the
+  // edge and its key do in the window.
+  std::string edit_edge(const Answer& answer) {
+    if (!take_screen_mesh()) return "answer " + answer.field + ": no mesh on screen";
+    const std::optional<ElementRef> element = parse_element(answer.value);
+    if (!element || element->kind != ElementKind::Edge) {
+      return "answer " + answer.field + " = \"" + answer.value + "\": expected an edge id like e7";
+    }
+    out_ << "  > " << answer.field << " " << format_id(*element);
+    const CommandId id = answer.kind == Answer::Kind::Flip    ? CommandId::Flip
+                         : answer.kind == Answer::Kind::Split ? CommandId::Split
+                                                              : CommandId::Collapse;
+    selection_.selected = *element;
+    if (const Check check = run_mesh_edit(id, doc_, selection_, edits_); !check) return refused(answer, check);
+    show_edited();
+    return "";
+  }
+
+  // Triangulate, or a subdivision whole or its next phase (Shift+L, the Subdivide menu's items).
+  std::string edit_mesh(const Answer& answer, CommandId id) {
+    if (!take_screen_mesh()) return "answer " + answer.field + ": no mesh on screen";
+    if (answer.kind == Answer::Kind::Subdivide) {
+      out_ << "  > subdivide" << (answer.value == "loop" ? "" : " " + answer.value);
+    } else if (answer.kind == Answer::Kind::Triangulate) {
+      out_ << "  > triangulate";
+    } else {  // one phase: say which, and that the phases start again when the mesh changed since the last one
+      const SubdivisionScheme scheme = *scheme_named(answer.value);
+      if (const std::optional<int> stale = stale_phase(scheme, doc_, edits_)) {
+        out_ << "  (the mesh changed after " << scheme_title(scheme) << " phase " << *stale << "; starting again)\n";
+      }
+      const std::string& label = next_phase_label(scheme, doc_, edits_);
+      out_ << "  > " << scheme_name(scheme) << " phase" << label.substr(std::strlen(scheme_title(scheme)));
+    }
+    if (const Check check = run_mesh_edit(id, doc_, selection_, edits_); !check) return refused(answer, check);
+    show_edited();
     return "";
   }
 
@@ -460,32 +490,6 @@ class HeadlessDriver {
     out_ << '\n';
     return "answer " + answer.field + (answer.value.empty() ? "" : " " + answer.value) + " refused: " + check.reason;
   }
-
-  // Shift+L or a Subdivide menu's "next phase": the scheme's next phase on `mesh` (a copy of the screen mesh), as the
-  // window's steppers run it. The phases go on only while the screen shows the mesh the last phase left.
-  std::string subdivide_phase(const Answer& answer, std::shared_ptr<HalfedgeMesh> mesh) {
-    const SubdivisionScheme scheme = *scheme_named(answer.value);
-    Stepper& stepper = steppers_[size_t(scheme)];
-    if (stepper.phases.computed() && (!stepper.left || host_.screen_mesh() != stepper.left.get())) {
-      out_ << "  (the mesh changed after " << scheme_title(scheme) << " phase " << stepper.phases.next_phase() - 1
-           << "; starting again)\n";
-      stepper.phases.restart();
-    }
-    const std::string& label = stepper.phases.next_label();
-    out_ << "  > " << scheme_name(scheme) << " phase" << label.substr(std::strlen(scheme_title(scheme)));
-    if (const Check check = stepper.phases.run_next(*mesh); !check) return refused(answer, check);
-    host_.set_current_mesh(mesh);
-    stepper.left = stepper.phases.computed() ? std::move(mesh) : nullptr;
-    return "";
-  }
-
-  // One scheme's phases as the window steps them, and the screen mesh the last phase left (kept alive, so a new
-  // mesh at the same address cannot pass for it).
-  struct Stepper {
-    explicit Stepper(SubdivisionScheme scheme) : phases(scheme) {}
-    SubdivisionPhases phases;
-    std::shared_ptr<HalfedgeMesh> left;
-  };
 
   // What was printed of the current step.
   struct StepShown {
@@ -502,9 +506,13 @@ class HeadlessDriver {
   HeadlessHost host_;
   LessonRunner runner_;
   std::string step_name_;
-  Stepper steppers_[3] = {Stepper(SubdivisionScheme::Loop), Stepper(SubdivisionScheme::CatmullClark),
-                          Stepper(SubdivisionScheme::Linear)};  // by SubdivisionScheme
-  std::filesystem::path lesson_folder_;                         // where open_repaired's paths start
+  // The edits' document, selection and steppers, as the window keeps them, and the screen mesh the last edit left
+  // (kept alive, so a new mesh at the same address cannot pass for it).
+  MeshDocument doc_ = make_document(HalfedgeMesh());
+  Selection selection_;
+  MeshEditState edits_;
+  std::shared_ptr<HalfedgeMesh> left_;
+  std::filesystem::path lesson_folder_;  // where open_repaired's paths start
   StepShown shown_;
 };
 

@@ -23,12 +23,14 @@
 //   verdict the answers expected ends the step there (the student's file cannot change headless), counted as passed.
 // - Animations advance in frames of a tenth of their length (at least 1/60 s); a step that needs more than
 //   100000 frames or answers fails rather than hanging.
-// - subdivide_phase (and loop_phase, Loop's) keeps each scheme's phases between answers as the window's steppers do
-//   (core/subdivision_phases.h): phase 1 computes and changes nothing, the later phases change the mesh on screen,
-//   and when the mesh on screen is not the one the last phase left (the lesson showed another, another edit answer
-//   changed it), the next one starts again at phase 1. Loop with the course's weights, as L and the exercises use.
-// - An answer that stands for a menu command (subdivide, subdivide_phase, loop_phase, triangulate, open_repaired)
-//   tells the lesson that command's name after its edit, as the window's menu does (lesson_events.h).
+// - The edit answers (flip, split, collapse, subdivide, subdivide_phase, loop_phase, triangulate) run the window's
+//   commands by the function the window runs them with (document/mesh_edits.h's run_mesh_edit) on a document of the
+//   mesh on screen: flip = "e7" is e7 selected and the command run. The one-phase edits keep each scheme's phases
+//   between answers as the window does: phase 1 computes and changes nothing, the later phases change the mesh on
+//   screen, and when the mesh on screen is not the one the last edit left (the lesson showed another) or another edit
+//   changed it, the next one starts again at phase 1. Loop with the course's weights, as L and the exercises use.
+// - An answer that stands for a command a lesson can wait for (script/command_table.h: subdivide, subdivide_phase,
+//   loop_phase, triangulate, open_repaired) tells the lesson that command's name after its edit, as the window does.
 #pragma once
 
 #include <cstddef>
