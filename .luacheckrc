@@ -21,12 +21,12 @@ files["**/*.lua"] = {
       },
     },
     -- Every state has the module (engine/script/mesh_bindings.cpp); student code sees it with the hidden calls of
-    -- engine/script/student_api.h replaced by functions that raise.
+    -- engine/exercise/student_api.h replaced by functions that raise.
     "meshedit",
   },
 }
 
--- The lesson globals: engine/script/lesson_api.cpp (open_lesson_api and its prelude's wait_for and animate),
+-- The lesson globals: engine/lesson/lesson_api.cpp (open_lesson_api and its prelude's wait_for and animate),
 -- lesson_questions.cpp (choose, pick, answer), lesson_displays.cpp (live, plot, arrow, curve_t, curve_points,
 -- patch_uv) and lesson_your_turn.cpp (your_turn).
 local lesson_globals = {
@@ -35,7 +35,7 @@ local lesson_globals = {
   "curve_points", "patch_uv", "your_turn",
 }
 
--- The functions student files define for the app to call: the built-in exercises (engine/script/exercises.h) and
+-- The functions student files define for the app to call: the built-in exercises (engine/exercise/exercises.h) and
 -- the exercises defined in Lua (scripts/exercises/*.lua, their `call`).
 local student_functions = {
   "evaluate_step", "evaluate", "vertex_normal", "flip_edge", "split_edge", "upsample", "collapse_edge",
@@ -55,7 +55,7 @@ local student = { globals = student_functions, ignore = { "212/mesh" } }
 exclude_files = { "tests/grading/broken/syntax_error.lua", "tests/web/broken_lesson/syntax_error.lua", "build*/**" }
 
 files["lessons/"] = { read_globals = lesson_globals }
-files["tests/script/lessons/asking_demo.lua"] = { read_globals = lesson_globals }  -- the answers files are data
+files["tests/lesson/lessons/asking_demo.lua"] = { read_globals = lesson_globals }  -- the answers files are data
 files["tests/web/broken_lesson/"] = { read_globals = lesson_globals }
 
 -- The templates the class fills in: each function is a stub returning nil, so every argument of its signature is
@@ -66,7 +66,7 @@ files["scripts/student/"] = {
 }
 -- The reference solutions and the submissions the grader's and the window's tests grade. upsample reads the
 -- reference flip_edge and split_edge (engine/script/reference_functions.h) as globals, which the file may define.
-files["tests/script/solutions/"] = student
+files["tests/exercise/solutions/"] = student
 files["tests/grading/students/"] = student
 files["tests/grading/scripted/"] = student
 files["tests/web/upload/"] = student
@@ -112,7 +112,7 @@ files["tests/grading/hostile/read_hidden_tests.lua"] = {
   max_line_length = 124,  -- hostile_test.cpp quotes its line 7
 }
 
--- An exercise defined in Lua (engine/script/scripted_exercise.cpp): its one global is exercise{}.
+-- An exercise defined in Lua (engine/exercise/scripted_exercise.cpp): its one global is exercise{}.
 files["scripts/exercises/"] = { read_globals = { "exercise" } }
 
 files["tests/grading/suites/"] = { read_globals = suite_globals }

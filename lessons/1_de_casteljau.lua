@@ -4,11 +4,11 @@
 -- student to predict or to act before it shows; the numbers the lesson prints are computed by the project's own
 -- Bézier code (meshedit.curve), so the text never drifts from what the curve view draws, except a few worked values
 -- of this curve written in its text (3/8, t = 1/3, the polygon's length 6.47 and quarter point (0.72, 1.45),
--- C'(0.5) = (4.5, 0)), each checked against the core by tests/script/lessons_a_test.cpp.
+-- C'(0.5) = (4.5, 0)), each checked against the core by tests/lesson/lessons_a_test.cpp.
 -- The last step runs the student's own evaluate_step (your_turn) at t = 0.25, where swapped weights show.
 -- CI runs it headless:
---   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/script/lessons/1_de_casteljau_answers.lua \
---     --student tests/script/solutions
+--   meshedit lesson lessons/1_de_casteljau.lua --headless --answers tests/lesson/lessons/1_de_casteljau_answers.lua \
+--     --student tests/exercise/solutions
 
 lesson {
   title = "de Casteljau's algorithm",

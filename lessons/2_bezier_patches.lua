@@ -6,7 +6,7 @@
 -- assets/teapot.bez, found next to this file with lesson_file(). The last step runs the student's own evaluate
 -- (your_turn) at the (u, v) of the hand computation. CI runs it headless:
 --   meshedit lesson lessons/2_bezier_patches.lua --headless \
---     --answers tests/script/lessons/2_bezier_patches_answers.lua --student tests/script/solutions
+--     --answers tests/lesson/lessons/2_bezier_patches_answers.lua --student tests/exercise/solutions
 
 lesson {
   title = "Bézier patches and the teapot",

@@ -7,7 +7,7 @@
 -- student sees is what the pointers say. The last step runs the student's own vertex_normal (your_turn) on the fan.
 -- CI runs it headless:
 --   meshedit lesson lessons/3_halfedge_walks.lua --headless \
---     --answers tests/script/lessons/3_halfedge_walks_answers.lua --student tests/script/solutions
+--     --answers tests/lesson/lessons/3_halfedge_walks_answers.lua --student tests/exercise/solutions
 
 lesson {
   title = "Walking the half-edge mesh",

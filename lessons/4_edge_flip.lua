@@ -7,9 +7,9 @@
 -- the lesson checks every answer on the mesh on screen. The last step runs the student's own flip_edge
 -- (scripts/student/flip.lua) with your_turn on that diamond, on its boundary edge and on the big grid's edge (where
 -- the Exercises tab's locality check applies), and waits until each is right.
--- CI runs it headless, with the correct solutions and with buggy ones (tests/script/lesson_student_test.cpp):
---   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/script/lessons/4_edge_flip_answers.lua \
---     --student tests/script/solutions
+-- CI runs it headless, with the correct solutions and with buggy ones (tests/lesson/lesson_student_test.cpp):
+--   meshedit lesson lessons/4_edge_flip.lua --headless --answers tests/lesson/lessons/4_edge_flip_answers.lua \
+--     --student tests/exercise/solutions
 -- Invariants: every name is found by walking from h0 = e0.halfedge, never assumed from storage order, so the
 -- labels stay right whatever order the builder numbers halfedges in; the big grid's edge is found by where it is;
 -- every count the text gives is counted at run time (the question asks before the count is said).

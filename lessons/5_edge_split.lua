@@ -6,8 +6,8 @@
 -- student's own split_edge (your_turn) on a lopsided diamond, where the corners' average is not the midpoint, then
 -- on the middle edge of an 80x70 grid (11200 triangles), where one that walks the whole mesh is told so.
 -- CI runs it headless:
---   meshedit lesson lessons/5_edge_split.lua --headless --answers tests/script/lessons/5_edge_split_answers.lua \
---     --student tests/script/solutions
+--   meshedit lesson lessons/5_edge_split.lua --headless --answers tests/lesson/lessons/5_edge_split_answers.lua \
+--     --student tests/exercise/solutions
 -- Invariants: the checks read the student's mesh through current_mesh() only; the new vertex is found as the
 -- one vertex id the mesh did not have before (ids are appended, never reused), and the new edges, faces and
 -- halfedges by split's documented order of new ids; the diagram's names are found by walking from h0, as in part 4.

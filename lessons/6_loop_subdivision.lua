@@ -10,7 +10,7 @@
 -- a cube and a tetrahedron (every vertex of degree 3).
 -- CI runs it headless:
 --   meshedit lesson lessons/6_loop_subdivision.lua --headless \
---     --answers tests/script/lessons/6_loop_subdivision_answers.lua --student tests/script/solutions
+--     --answers tests/lesson/lessons/6_loop_subdivision_answers.lua --student tests/exercise/solutions
 -- Invariants: every step rebuilds its meshes from scratch (Back runs a step again, and must not subdivide
 -- twice); the Lua phases use the course weights and split edges in id order, so their ids match the core's.
 

@@ -8,8 +8,8 @@
 -- mesh:catmull_clark() and mesh:subdivision_phases("catmull-clark") on copies (engine/core/catmull_clark.h),
 -- positions read back. The student runs the window's Subdivide menu twice: the whole level, and then its three
 -- phases one at a time, each checked against the lesson's own phases.
--- CI runs it headless (tests/script/lessons_b_test.cpp):
---   meshedit lesson lessons/7_catmull_clark.lua --headless --answers tests/script/lessons/7_catmull_clark_answers.lua
+-- CI runs it headless (tests/lesson/lessons_b_test.cpp):
+--   meshedit lesson lessons/7_catmull_clark.lua --headless --answers tests/lesson/lessons/7_catmull_clark_answers.lua
 -- Invariants: every step builds its meshes afresh (Back runs a step again); the core numbers a level's new
 -- vertices after the old ones, one per edge in edge id order, then one per face in face id order, so on a fresh
 -- mesh (ids dense) the point of edge e is vertex V + e and the point of face f is vertex V + E + f.

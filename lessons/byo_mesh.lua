@@ -6,8 +6,8 @@
 -- Every number and report line comes from the core: the broken meshes are built here from lists of polygons and
 -- handed to meshedit.from_polygons (the refusal) and meshedit.repair (engine/core/mesh_repair.h), the quads to
 -- mesh:triangulate(), mesh:loop_subdivide() and mesh:catmull_clark() on copies.
--- CI runs it headless (tests/script/lessons_b_test.cpp):
---   meshedit lesson lessons/byo_mesh.lua --headless --answers tests/script/lessons/byo_mesh_answers.lua
+-- CI runs it headless (tests/lesson/lessons_b_test.cpp):
+--   meshedit lesson lessons/byo_mesh.lua --headless --answers tests/lesson/lessons/byo_mesh_answers.lua
 -- Invariants: the lesson never assumes what file the student opened; it inspects only the meshes it builds and
 -- what current_mesh() returns. Every step shows what it talks about itself (Back runs a step again).
 

@@ -1,6 +1,6 @@
 -- The welcome lesson: what MeshEdit is for, how to look around, how to pick elements, and the keys every
 -- later lesson uses (the student flips an edge with one of them). CI runs it headless with scripted answers:
---   meshedit lesson lessons/welcome.lua --headless --answers tests/script/lessons/welcome_answers.lua
+--   meshedit lesson lessons/welcome.lua --headless --answers tests/lesson/lessons/welcome_answers.lua
 
 lesson {
   title = "Welcome to MeshEdit",

@@ -171,7 +171,7 @@ std::string subdivide(EditorApp& app, const Action& a) {
 
 std::string run_named_command(EditorApp& app, const Action& a) {
   const Command* named = find_command(a.args[0]);
-  if (!named) throw std::runtime_error("no command '" + a.args[0] + "' (the names are script/command_table.h's)");
+  if (!named) throw std::runtime_error("no command '" + a.args[0] + "' (the names are document/command_table.h's)");
   run(app, named->id);
   return "";
 }
@@ -519,7 +519,7 @@ const ActionVerb kVerbs[] = {
      "no such row, it has no spot, or the spots are stale",
      repair_row},
     {"command", 1,
-     "command NAME   runs the command of that name (script/command_table.h: loop-phase, wireframe, inspector...) as "
+     "command NAME   runs the command of that name (document/command_table.h: loop-phase, wireframe, inspector...) as "
      "its menu item does; fails when it was not done, with the status line's reason",
      run_named_command},
     {"triangulate", 0, "triangulate   Edit > Triangulate", triangulate},

@@ -1,5 +1,5 @@
 // `meshedit lesson FILE --headless [--answers ANSWERS.lua] [--student DIR]`: runs a lesson through every step with no
-// window (engine/document/lesson_headless.h), printing what each step says; your_turn runs the student's files from DIR
+// window (engine/lesson/lesson_headless.h), printing what each step says; your_turn runs the student's files from DIR
 // (default: scripts/student, the window's Exercises folder). Exit 0 when every step ran to its end, 1 with the
 // failing step's file:line on stderr otherwise. The window mode of a lesson is opened with
 // `meshedit FILE.lua`; without --headless this command says so (usage error, exit 2).
@@ -10,10 +10,10 @@
 #include <vector>
 
 #include "app/cli_commands.h"
-#include "document/lesson_headless.h"
 #include "document/student_file.h"
+#include "exercise/scripted_exercise.h"
+#include "lesson/lesson_headless.h"
 #include "script/lua_runtime.h"
-#include "script/scripted_exercise.h"
 
 namespace meshedit {
 

@@ -7,13 +7,14 @@
 
 #include "app/cli_commands.h"
 #include "script/lua_runtime.h"
+#include "script/script_runtime.h"
 
 namespace meshedit {
 
 int run_run(const std::vector<std::string>& args, std::ostream& out) {
   if (args.empty()) throw UsageError("run needs a script: meshedit run SCRIPT.lua [ARGS...]");
   const std::vector<std::string> script_args(args.begin() + 1, args.end());
-  LuaRuntime lua;
+  ScriptRuntime lua;
   lua.set_print([&out](const std::string& line) { out << line << '\n'; });
   try {
     lua.run_file(args.front(), script_args);

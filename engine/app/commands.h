@@ -1,4 +1,4 @@
-// The command table (script/command_table.h) as the window uses it: its key texts as GLFW keys, the command a key
+// The command table (document/command_table.h) as the window uses it: its key texts as GLFW keys, the command a key
 // press runs, the keys the window reads each frame, and the key names a lesson waits for. EditorApp::run_command
 // (app/commands.cpp) is what every command runs, from a menu, a key or a scripted verb.
 //
@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "script/command_table.h"
+#include "document/command_table.h"
 
 namespace meshedit {
 

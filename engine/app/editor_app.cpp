@@ -12,6 +12,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "document/exception_report.h"
+#include "exercise/scripted_exercise.h"
 #include "io/file_error.h"
 #include "io/mesh_file.h"
 #include "render/gl_api.h"
@@ -19,7 +20,6 @@
 #include "render/mesh_geometry.h"
 #include "render/render_error.h"
 #include "render/render_target.h"
-#include "script/scripted_exercise.h"
 #include "ui/frame_guard.h"
 #include "ui/theme.h"
 

@@ -5,7 +5,7 @@
 // Invariants:
 // - One input path: real keys and clicks (read from ImGui's io each frame) and scripted actions
 //   (scripted_actions.h) both call handle_key / click / hover, so GUI tests exercise what users do; a menu item, a
-//   key and a scripted verb run a command of the table (script/command_table.h) through the one run_command.
+//   key and a scripted verb run a command of the table (document/command_table.h) through the one run_command.
 // - Opening a file is whole or nothing: the document (or the curve or patch view), the view mode, the window title
 //   and the recent list all change to the file's, or none does and the status line says why, memory running out
 //   included (everything that can fail is made before anything changes: editor_files.cpp). show_mesh, show_curve and
@@ -60,13 +60,13 @@
 #include "document/settings.h"
 #include "document/student_edit.h"
 #include "document/window_layout.h"
+#include "lesson/lesson_runner.h"
 #include "render/camera.h"
 #include "render/label_placement.h"
 #include "render/mesh_renderer.h"
 #include "render/overlay_renderer.h"
 #include "render/shader_library.h"
 #include "render/view_options.h"
-#include "script/lesson_runner.h"
 #include "ui/curve_editor.h"
 #include "ui/exercise_panel.h"
 #include "ui/fonts.h"
@@ -160,7 +160,7 @@ class EditorApp {
   // A key press (a GLFW key code): runs the command of that key in the view shown (app/commands.h) and tells a lesson
   // the key; returns whether some command has that key.
   bool handle_key(int key, KeyMods mods);
-  // Runs a command of the table (script/command_table.h) as its menu item, its key or a scripted verb does
+  // Runs a command of the table (document/command_table.h) as its menu item, its key or a scripted verb does
   // (editor_commands.cpp); returns whether it was done, or why not.
   Check run_command(CommandId id, CommandStart start = CommandStart::Script);
   // A left click at pixel (x, y) of the view (framebuffer pixels, top-left origin): selects what is under it (or

@@ -1,4 +1,4 @@
-// EditorApp and the command table (script/command_table.h): run_command, the one way every command runs, whether
+// EditorApp and the command table (document/command_table.h): run_command, the one way every command runs, whether
 // its menu item was clicked, its key pressed or a scripted verb named it; carry_out, one case per command, is what
 // each does; handle_key, the key presses.
 //

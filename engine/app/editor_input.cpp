@@ -1,5 +1,5 @@
 // The mouse of the window, and the keys read each frame (see editor_app.h). What a key press runs is the command
-// table's (script/command_table.h, which keeps the course viewers' letters): editor_commands.cpp.
+// table's (document/command_table.h, which keeps the course viewers' letters): editor_commands.cpp.
 #include <imgui.h>
 
 #include "app/commands.h"

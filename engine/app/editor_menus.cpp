@@ -1,5 +1,5 @@
 // The menu bar, the open/save dialog (a small file browser with a recent list) and the key help. The menus are the
-// command table's (script/command_table.h): its menus in its order, each item with its key beside it, running its
+// command table's (document/command_table.h): its menus in its order, each item with its key beside it, running its
 // command as the key and a scripted verb do (EditorApp::run_command); what the table cannot say (an item's check
 // mark, whether it is enabled, a label made this frame, a submenu's items) is drawn here. The dialogs are modal and
 // centred on the window: nothing else takes input while one is open.
@@ -242,7 +242,7 @@ void EditorApp::draw_open_panel() {
 void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
-  // The mouse, then the command table's keys (script/command_table.h) under a heading per view.
+  // The mouse, then the command table's keys (document/command_table.h) under a heading per view.
   const char* const kMouse[][2] = {
       {"click", "select the vertex, edge, halfedge or face under the cursor"},
       {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},

@@ -1,5 +1,6 @@
-// EditorApp and the lesson's your_turn (script/lesson_your_turn.h): the lesson panel's "Show mine vs reference" (and
-// the scripted action lesson-show-mine) shows the run the lesson judged wrong where the window compares runs.
+// EditorApp and the lesson's your_turn (lesson/internal/lesson_your_turn.h): the lesson panel's "Show mine vs
+// reference" (and the scripted action lesson-show-mine) shows the run the lesson judged wrong where the window compares
+// runs.
 //   - flip, split, normals, upsample: the your_turn's input mesh goes into the document as a lesson's show() puts it
 //     there (show_lesson_mesh: the view kept, fitted only when it was not the mesh view), its element is selected, the
 //     Exercises tab takes the your_turn's exercise and runs mine on it (ExerciseSession::run_mine: the changed pointers

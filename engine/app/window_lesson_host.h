@@ -17,7 +17,7 @@
 
 #include <glm/vec3.hpp>
 
-#include "script/lesson_host.h"
+#include "lesson/lesson_host.h"
 
 namespace meshedit {
 

@@ -28,7 +28,7 @@
 
 #include "core/bezier.h"
 #include "document/student_file.h"
-#include "script/exercises.h"
+#include "exercise/exercises.h"
 
 namespace meshedit {
 

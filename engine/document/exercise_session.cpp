@@ -18,8 +18,8 @@
 #include "core/mesh_error.h"
 #include "document/document_actions.h"
 #include "document/exception_report.h"
+#include "exercise/scripted_exercise.h"
 #include "script/lua_runtime.h"
-#include "script/scripted_exercise.h"
 
 namespace meshedit {
 namespace {

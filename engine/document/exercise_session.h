@@ -43,7 +43,7 @@
 #include "document/mesh_document.h"
 #include "document/selection.h"
 #include "document/student_file.h"
-#include "script/exercises.h"
+#include "exercise/exercises.h"
 
 namespace meshedit {
 

@@ -1,7 +1,7 @@
-// The mesh edits of the command table (script/command_table.h): flip, split, collapse, triangulate and every
+// The mesh edits of the command table (document/command_table.h): flip, split, collapse, triangulate and every
 // subdivision, whole or one phase at a time. run_mesh_edit is the one function that runs each of them, wherever it is
 // started from: the window's menus, keys and scripted verbs (app/commands.cpp) and the headless lesson driver's
-// answers (document/lesson_headless.h).
+// answers (lesson/lesson_headless.h).
 //
 // Invariants: each edit is the document action of document_actions.h or subdivision_actions.h (one undoable step, a
 // sentence in doc.message, the selection kept to live elements, no std::bad_alloc); flip, split and collapse act on
@@ -15,10 +15,10 @@
 #include "core/check.h"
 #include "core/loop_subdivision.h"
 #include "core/subdivision_phases.h"
+#include "document/command_table.h"
 #include "document/mesh_document.h"
 #include "document/selection.h"
 #include "document/subdivision_actions.h"
-#include "script/command_table.h"
 
 namespace meshedit {
 

@@ -19,14 +19,14 @@
 #include <memory>
 #include <string>
 
-#include "script/exercises.h"
+#include "exercise/exercises.h"
 #include "script/file_stamp.h"
 
 namespace meshedit {
 
 // scripts/student: beside the binary, in the installed layout or in the source tree (core/data_folders.h).
 std::filesystem::path default_student_folder();
-// scripts/exercises, found the same way: the exercises defined in Lua (script/scripted_exercise.h) the window and the
+// scripts/exercises, found the same way: the exercises defined in Lua (exercise/scripted_exercise.h) the window and the
 // lesson command register when they start.
 std::filesystem::path default_exercise_folder();
 

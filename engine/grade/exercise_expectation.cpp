@@ -7,12 +7,12 @@
 
 #include <lua.hpp>
 
+#include "exercise/exercises.h"
+#include "exercise/scripted_exercise.h"
 #include "grade/expectations.h"
 #include "script/bezier_bindings.h"
-#include "script/binding_support.h"
-#include "script/exercises.h"
+#include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
-#include "script/scripted_exercise.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

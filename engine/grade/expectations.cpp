@@ -12,7 +12,7 @@
 #include "core/validate.h"
 #include "core/value_format.h"
 #include "grade/exercise_expectation.h"
-#include "script/binding_support.h"
+#include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
 
 namespace meshedit {

@@ -11,8 +11,8 @@
 #include <nlohmann/json.hpp>
 
 #include "core/value_format.h"
+#include "exercise/exercises.h"
 #include "grade/child_process.h"
-#include "script/exercises.h"
 
 namespace meshedit {
 namespace {

@@ -7,14 +7,14 @@
 
 #include <lua.hpp>
 
+#include "exercise/exercise_locality.h"
+#include "exercise/exercises.h"
+#include "exercise/student_api.h"
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
-#include "script/binding_support.h"
-#include "script/exercise_locality.h"
-#include "script/exercises.h"
+#include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
-#include "script/student_api.h"
 
 namespace meshedit {
 namespace {

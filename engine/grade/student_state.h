@@ -5,7 +5,7 @@
 // - One fresh state per test (a new LuaRuntime): nothing a student's code does to its globals, the RNG or
 //   metatables outlives the test. Suite code never runs in this state and nothing of the suite's state is
 //   reachable from it: values cross by copy (value_bridge.h); meshes are shared C++ objects.
-// - The student API is script/student_api.h's, the window's own: no file access, and the operations that are
+// - The student API is exercise/student_api.h's, the window's own: no file access, and the operations that are
 //   exercises (mesh:flip, :split, :collapse, :loop_subdivide, meshedit.curve, meshedit.patch) hidden unless the
 //   test allows them by name ("mesh:flip"); a hidden one raises the same words as in the window.
 // - Student files all run in the state's one global environment, in the order given, so split.lua may call
@@ -15,7 +15,7 @@
 // - Reference functions (reference_functions.h) are set before the files load and again after, so a
 //   student's own definition of the same name does not replace them.
 // - What the student prints is kept (capped) for the test's output; nothing reaches stdout.
-// - A call of a function held to a locality bound (flip_edge, split_edge: script/exercise_locality.h) counts what it
+// - A call of a function held to a locality bound (flip_edge, split_edge: exercise/exercise_locality.h) counts what it
 //   touched of every mesh it was given (an argument that is a mesh or an element of one; script/touch_recorder.h),
 //   so expect.exercise holds it to the window's bound; other calls count nothing.
 #pragma once
@@ -27,6 +27,7 @@
 
 #include "grade/submission.h"
 #include "script/lua_runtime.h"
+#include "script/script_runtime.h"
 #include "script/touch_recorder.h"
 
 struct lua_State;
@@ -37,7 +38,8 @@ struct StudentOptions {
   LuaLimits limits;
   size_t output_bytes = size_t(64) << 10;
   std::vector<std::string> reference;  // reference functions to install (names checked by the suite loader)
-  std::vector<std::string> allow_api;  // "mesh:flip", "meshedit.curve", ... (hideable_api_names, script/student_api.h)
+  std::vector<std::string>
+      allow_api;  // "mesh:flip", "meshedit.curve", ... (hideable_api_names, exercise/student_api.h)
 };
 
 // A student file failed to load (compile or run its top level).
@@ -82,7 +84,7 @@ class StudentState {
   void push_function(const std::string& name);
   static int call_trampoline(lua_State* L);
 
-  LuaRuntime runtime_;
+  ScriptRuntime runtime_;
   StudentOptions options_;
   std::string output_;
   std::vector<MeshTouches> last_call_touches_;

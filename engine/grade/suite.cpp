@@ -20,15 +20,16 @@
 #include <lua.hpp>
 
 #include "core/file_bytes.h"
+#include "exercise/scripted_exercise.h"
+#include "exercise/student_api.h"
 #include "grade/expectations.h"
 #include "grade/student_state.h"
 #include "script/bezier_bindings.h"
-#include "script/binding_support.h"
 #include "script/exception_text.h"
+#include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
-#include "script/scripted_exercise.h"
-#include "script/student_api.h"
+#include "script/script_runtime.h"
 
 namespace meshedit {
 namespace {
@@ -527,7 +528,7 @@ std::unique_ptr<Suite> Suite::load(const std::filesystem::path& path) {
 std::unique_ptr<Suite> Suite::from_text(std::string_view text, const std::string& chunk_name,
                                         const std::filesystem::path& folder) {
   std::unique_ptr<Suite> s(new Suite());
-  s->runtime_ = std::make_unique<LuaRuntime>(limits_for(60.0, kSuiteMemoryBytes));
+  s->runtime_ = std::make_unique<ScriptRuntime>(limits_for(60.0, kSuiteMemoryBytes));
   s->declarations_ = std::make_unique<Declarations>();
   lua_State* L = s->runtime_->state();
   // The Bézier part of the module (curves and patches: the references of parts 1 and 2).

@@ -13,7 +13,7 @@
 //   SUITE_DIR   the folder of the suite file, for fixtures: meshedit.load(SUITE_DIR .. "/cow.dae")
 //   include("flip.lua")   runs another suite file of the same folder here (one assignment suite gathering the
 //               parts' suites); its suite{} defaults merge with this file's, field by field, the last call winning
-//   exercise{...}   an exercise defined in Lua (script/scripted_exercise.h; a file of scripts/exercises is a suite):
+//   exercise{...}   an exercise defined in Lua (exercise/scripted_exercise.h; a file of scripts/exercises is a suite):
 //               registers it, sets the suite's name, files and allow_api, and declares one test per fixture that
 //               runs the student's function on a copy of the fixture's mesh and checks it with expect.exercise
 // Inside `run`:

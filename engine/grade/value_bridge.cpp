@@ -7,7 +7,7 @@
 #include <lua.hpp>
 
 #include "script/bezier_bindings.h"
-#include "script/binding_support.h"
+#include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
 #include "script/vec3_bindings.h"
 

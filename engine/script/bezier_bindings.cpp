@@ -11,7 +11,7 @@
 
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_support.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

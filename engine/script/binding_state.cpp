@@ -1,6 +1,6 @@
 // BindingState: creation in the registry, journals, the storage budget and the change path (see
 // binding_state.h for the invariants).
-#include "script/binding_state.h"
+#include "script/internal/binding_state.h"
 
 #include <new>
 #include <string_view>

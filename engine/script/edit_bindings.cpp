@@ -12,9 +12,9 @@
 #include <lua.hpp>
 
 #include "core/edit_log.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
 #include "script/edit_recorder.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

@@ -2,7 +2,7 @@
 //
 // Invariant kept here: undo and redo build the new state completely before assigning it to the mesh, so an edit
 // that fails to replay (which would mean a bug) leaves the mesh as it was and drops the journal.
-#include "script/edit_journal.h"
+#include "script/internal/edit_journal.h"
 
 #include <algorithm>
 #include <span>

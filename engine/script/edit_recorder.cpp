@@ -3,7 +3,7 @@
 
 #include <algorithm>
 
-#include "script/binding_state.h"
+#include "script/internal/binding_state.h"
 #include "script/lua_runtime.h"
 
 namespace meshedit {

@@ -12,9 +12,9 @@
 #include <new>
 #include <string>
 
-#include "script/binding_state.h"
-#include "script/binding_support.h"
-#include "script/handle_context.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
+#include "script/internal/handle_context.h"
 #include "script/mesh_bindings.h"
 #include "script/touch_recorder.h"
 

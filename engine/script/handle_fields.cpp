@@ -6,16 +6,16 @@
 // "twin", ... and the method names; a key is compared by address first); the next kElementKindCount upvalues are
 // the handle metatables in kAllKinds order, which a new handle of each kind gets without a lookup by name; __index's
 // upvalues after them are the methods, as closures over the same context, in handle_methods() order.
-#include "script/handle_fields.h"
+#include "script/internal/handle_fields.h"
 
 #include <cstring>
 #include <iterator>
 #include <string>
 
 #include "core/edit_log.h"
-#include "script/binding_state.h"
-#include "script/handle_context.h"
-#include "script/handle_methods.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/handle_context.h"
+#include "script/internal/handle_methods.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

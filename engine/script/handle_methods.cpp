@@ -5,15 +5,15 @@
 // five fields through write_pointer (so each is journaled and recorded); walks stop after halfedge_capacity()
 // steps and check every id before following it; a walk that does not close raises an error saying so instead
 // of returning part of the answer.
-#include "script/handle_methods.h"
+#include "script/internal/handle_methods.h"
 
 #include <iterator>
 #include <vector>
 
-#include "script/binding_state.h"
-#include "script/binding_support.h"
-#include "script/handle_context.h"
-#include "script/handle_fields.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
+#include "script/internal/handle_context.h"
+#include "script/internal/handle_fields.h"
 
 namespace meshedit {
 namespace {

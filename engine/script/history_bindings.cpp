@@ -19,8 +19,8 @@
 
 #include "core/edit_log.h"
 #include "core/value_format.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 #include "script/touch_recorder.h"
 
 namespace meshedit {

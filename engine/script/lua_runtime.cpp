@@ -11,7 +11,6 @@
 #include "core/file_bytes.h"
 #include "core/value_format.h"
 #include "script/exception_text.h"
-#include "script/mesh_bindings.h"
 
 namespace meshedit {
 namespace {
@@ -80,7 +79,6 @@ LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {
   *static_cast<LuaRuntime**>(lua_getextraspace(L_)) = this;
   try {
     open_whitelist();
-    open_mesh_bindings(L_);
   } catch (...) {
     lua_close(L_);  // the destructor does not run for an object whose constructor threw
     L_ = nullptr;

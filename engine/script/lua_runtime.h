@@ -11,7 +11,7 @@
 //   only "count", "collect" and "step"; setmetatable refuses __gc, because Lua runs finalizers with hooks off),
 //   string (without dump), table, math, utf8, coroutine, and os with only clock, time, date, difftime. No io,
 //   package/require or debug. The string metatable is protected.
-// - The `meshedit` module (mesh_bindings.h) is opened in every runtime.
+// - A LuaRuntime opens the standard libraries only; script_runtime.h's ScriptRuntime adds the `meshedit` module.
 // - The wall clock is checked in the hook only: a long call into C (a pathological string pattern, one big
 //   C++ operation) is not interrupted; a watchdog thread or a child process is the backstop for that.
 // - Every error a run reports is a string starting with `file:line:` when Lua knows the line.
@@ -88,7 +88,7 @@ class LuaRuntime {
   static constexpr int kHookInterval = 1000;
 
   explicit LuaRuntime(LuaLimits limits = {});  // throws std::bad_alloc when the state cannot be made
-  ~LuaRuntime();
+  virtual ~LuaRuntime();
   LuaRuntime(const LuaRuntime&) = delete;
   LuaRuntime& operator=(const LuaRuntime&) = delete;
 

@@ -47,8 +47,8 @@
 #include "core/validate.h"
 #include "io/mesh_file.h"
 #include "script/bezier_bindings.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 #include "script/touch_recorder.h"
 #include "script/vec3_bindings.h"
 

@@ -18,8 +18,8 @@
 #include "core/mesh_repair.h"
 #include "core/primitives.h"
 #include "io/mesh_file.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 #include "script/mesh_bindings.h"
 #include "script/vec3_bindings.h"
 

@@ -15,8 +15,8 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_ops.h"
 #include "core/triangulate.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 
 namespace meshedit {
 namespace {

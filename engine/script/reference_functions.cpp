@@ -10,7 +10,7 @@
 #include "core/bezier.h"
 #include "core/loop_subdivision.h"
 #include "core/normals.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_support.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

@@ -33,8 +33,8 @@
 #include "core/edit_log.h"
 #include "core/linear_subdivision.h"
 #include "core/subdivision_phases.h"
-#include "script/binding_state.h"
-#include "script/binding_support.h"
+#include "script/internal/binding_state.h"
+#include "script/internal/binding_support.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {

@@ -9,7 +9,7 @@
 // not ("-" when null); nothing is followed, so any mesh, however broken, gives its tables.
 #include <lua.hpp>
 
-#include "script/binding_support.h"
+#include "script/internal/binding_support.h"
 #include "script/touch_recorder.h"
 #include "script/vec3_bindings.h"
 

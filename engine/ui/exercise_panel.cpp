@@ -9,7 +9,7 @@
 
 #include "core/history.h"
 #include "core/value_format.h"
-#include "script/scripted_exercise.h"
+#include "exercise/scripted_exercise.h"
 #include "ui/theme.h"
 #include "ui/upsample_phase_view.h"
 

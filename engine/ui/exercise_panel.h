@@ -21,8 +21,8 @@
 #include "document/exercise_session.h"
 #include "document/mesh_document.h"
 #include "document/selection.h"
-#include "script/upsample_phase_states.h"
-#include "script/upsample_phases.h"
+#include "exercise/upsample_phase_states.h"
+#include "exercise/upsample_phases.h"
 #include "ui/exercise_values_view.h"
 
 namespace meshedit {

@@ -6,8 +6,8 @@
 #include <imgui.h>
 
 #include "core/value_format.h"
-#include "script/scripted_exercise.h"
-#include "script/value_compare.h"
+#include "exercise/scripted_exercise.h"
+#include "exercise/value_compare.h"
 #include "ui/theme.h"
 
 namespace meshedit {

@@ -7,7 +7,7 @@
 #include <imgui.h>
 
 #include "document/exercise_session.h"
-#include "script/lesson_text.h"
+#include "lesson/lesson_text.h"
 #include "ui/flow_layout.h"
 #include "ui/lesson_plot_view.h"
 #include "ui/lesson_question_view.h"
@@ -58,7 +58,7 @@ ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
   return state.reload ? state.reload(runner) : reload_runner(runner);
 }
 
-// One block of the step (script/lesson_blocks.h): say() text, live text (or its error), a plot, a question answered.
+// One block of the step (lesson/lesson_blocks.h): say() text, live text (or its error), a plot, a question answered.
 void draw_block(const LessonRunner& runner, const LessonBlock& block) {
   switch (block.kind) {
     case LessonBlock::Kind::Text: text_wrapped_at_spaces(reflow(markdown_to_plain(runner.said()[block.index]))); break;

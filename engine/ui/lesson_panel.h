@@ -1,5 +1,5 @@
 // The lesson panel: a lesson's title, its steps, what the current step shows (its text, live text, plots and the
-// questions answered: script/lesson_blocks.h, in the order the step made them), what it waits for (a question's options
+// questions answered: lesson/lesson_blocks.h, in the order the step made them), what it waits for (a question's options
 // or answer box, feedback and hint: ui/lesson_question_view.h), its error with file:line, and Back / Next / Reload;
 // with no lesson loaded, the list of lessons to start.
 //
@@ -27,7 +27,7 @@
 #include <string>
 #include <vector>
 
-#include "script/lesson_runner.h"
+#include "lesson/lesson_runner.h"
 #include "ui/element_link.h"
 #include "ui/lesson_question_view.h"
 

@@ -1,4 +1,4 @@
-// A lesson's plot{} (script/lesson_blocks.h) drawn into the lesson panel with ImGui's draw list: its title, a framed
+// A lesson's plot{} (lesson/lesson_blocks.h) drawn into the lesson panel with ImGui's draw list: its title, a framed
 // area with the curves as polylines in their colours (each named swatch in the theme's shade), the marker as a
 // vertical line with a dot where it meets each curve, the ranges at the corners, and a legend giving each curve's value
 // at the marker.
@@ -8,7 +8,7 @@
 // marker failed shows the marker's error under it in the palette's error colour.
 #pragma once
 
-#include "script/lesson_blocks.h"
+#include "lesson/lesson_blocks.h"
 
 namespace meshedit {
 

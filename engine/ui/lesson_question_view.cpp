@@ -5,7 +5,7 @@
 
 #include <imgui.h>
 
-#include "script/lesson_text.h"
+#include "lesson/lesson_text.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 

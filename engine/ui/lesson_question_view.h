@@ -1,5 +1,5 @@
-// What the lesson panel draws for the questions of a step (script/lesson_questions.h): the question waited on, with
-// a button per option (choose), the words "click it in the view" (pick) or an input box with Check (answer); the
+// What the lesson panel draws for the questions of a step (lesson/internal/lesson_questions.h): the question waited on,
+// with a button per option (choose), the words "click it in the view" (pick) or an input box with Check (answer); the
 // feedback on the last wrong answer in the palette's warning colour; the hint, in the emphasis colour, once the student
 // has tried; and each question answered right, with its answer in the ok colour.
 //
@@ -10,7 +10,7 @@
 
 #include <string>
 
-#include "script/lesson_runner.h"
+#include "lesson/lesson_runner.h"
 #include "ui/element_link.h"
 
 namespace meshedit {

@@ -34,6 +34,7 @@
 #include "document/mesh_document.h"
 #include "document/selection.h"
 #include "script/lua_runtime.h"
+#include "script/script_runtime.h"
 
 namespace meshedit {
 
@@ -69,7 +70,7 @@ class ScriptConsole {
   void bind_selection(const Selection& selection);
   std::vector<std::string> run(const std::string& code);
 
-  LuaRuntime lua_;
+  ScriptRuntime lua_;
   std::shared_ptr<HalfedgeMesh> mesh_;
   // The document state the console's mesh holds (UINT64_MAX: none), and the console mesh's version then (a Lua
   // change since would show as another version).

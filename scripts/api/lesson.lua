@@ -1,5 +1,5 @@
 ---@meta lesson
--- LuaLS type descriptions of the globals a lesson file sees (engine/script/lesson_api.h), for editors only.
+-- LuaLS type descriptions of the globals a lesson file sees (engine/lesson/internal/lesson_api.h), for editors only.
 -- A lesson also has the whole `meshedit` module (meshedit.lua). lesson{} and step() only at the top level;
 -- the others only while a step runs (lesson_file anywhere; selection, current_mesh, curve_t, curve_points and
 -- patch_uv also inside a live() function or a plot's marker).

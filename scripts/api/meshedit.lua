@@ -1,7 +1,7 @@
 ---@meta meshedit
 -- LuaLS type descriptions of the `meshedit` module (engine/script/*_bindings.cpp), for editors only: this file
 -- is never run. Every `function X.name` / `function X:name` and `---@field` below names something the real
--- module has; tests/script/api_docs_test.cpp checks that in both directions, so keep them in step.
+-- module has; tests/lesson/api_docs_test.cpp checks that in both directions, so keep them in step.
 
 ---A point or direction: a table {x=, y=, z=} sharing one metatable. Plain {x, y, z} or {x=, y=, z=} tables
 ---are accepted wherever a point is expected.

@@ -1,4 +1,4 @@
-// The command table (script/command_table.h) and its keys (app/commands.h): names and menu paths unique, each menu's
+// The command table (document/command_table.h) and its keys (app/commands.h): names and menu paths unique, each menu's
 // items together and in the menu bar's order, every key text a GLFW key, no key pressed two ways in one view, the
 // course's keys where the course puts them, every key in the user docs' key table, and the lesson's commands each
 // with a menu item to run them from.

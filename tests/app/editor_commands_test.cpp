@@ -138,7 +138,7 @@ TEST_F(EditorCommands, TheTriangulateVerbAndMenuItemDoTheSame) {
   const auto triangulated = [&](bool from_menu) {
     wait_for_command("triangulate");
     // A replay of the student's flip running: the edit must land after it ends, not in the middle of its history.
-    const std::string solutions = (testing::source_dir() / "tests" / "script" / "solutions").string();
+    const std::string solutions = (testing::source_dir() / "tests" / "exercise" / "solutions").string();
     EXPECT_EQ(verb("exercise flip " + solutions), "");
     EXPECT_EQ(verb("select e3"), "");
     EXPECT_EQ(verb("run-mine"), "");

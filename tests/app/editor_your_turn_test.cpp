@@ -13,8 +13,8 @@
 #include <string>
 
 #include "app/editor_app.h"
+#include "exercise/exercises.h"
 #include "render/gl_test_support.h"
-#include "script/exercises.h"
 #include "support/imgui_harness.h"
 #include "support/test_support.h"
 

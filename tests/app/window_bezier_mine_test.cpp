@@ -25,7 +25,7 @@ TEST(WindowBezierMine, CurveLevelsAndThePatchProbeComeFromTheStudentsFiles) {
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
   const fs::path dir = testing::scratch_dir();
   const fs::path source = testing::source_dir();
-  const fs::path solutions = source / "tests" / "script" / "solutions";
+  const fs::path solutions = source / "tests" / "exercise" / "solutions";
   // A student whose step pushes the second point of every level up by 0.25, and whose patch evaluate fails.
   const fs::path buggy = dir / "student";
   fs::create_directories(buggy);

@@ -31,7 +31,7 @@ TEST(WindowExercise, MineRunsOnTheSelectionReplaysAndUndoes) {
   const HalfedgeMesh before = build_halfedge_mesh(make_cube());
   HalfedgeMesh flipped = before;
   ASSERT_TRUE(flip(flipped, EdgeId(7)).ok());
-  const fs::path solutions = testing::source_dir() / "tests" / "script" / "solutions";
+  const fs::path solutions = testing::source_dir() / "tests" / "exercise" / "solutions";
 
   std::ostringstream actions;
   actions << "frames 2\n"

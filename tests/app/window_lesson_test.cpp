@@ -157,7 +157,7 @@ TEST(WindowLesson, TheAskingDemoAnswersEachWrongAnswerAndGoesOnAtTheRightOne) {
   XServer x;
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
   const fs::path dir = testing::scratch_dir();
-  const fs::path lesson = testing::source_dir() / "tests" / "script" / "lessons" / "asking_demo.lua";
+  const fs::path lesson = testing::source_dir() / "tests" / "lesson" / "lessons" / "asking_demo.lua";
   std::ostringstream actions;
   actions << "frames 3\n"
           << "expect-lesson-step 1 waiting\n"

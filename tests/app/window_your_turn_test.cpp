@@ -10,8 +10,8 @@
 
 #include "app/window_test_support.h"
 #include "core/mesh_build.h"
+#include "exercise/exercises.h"
 #include "render/image_file.h"
-#include "script/exercises.h"
 #include "support/test_support.h"
 
 namespace meshedit {

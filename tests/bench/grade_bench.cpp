@@ -1,4 +1,4 @@
-// grade_bench: prints the wall time to grade one submission (the correct solutions, tests/script/solutions)
+// grade_bench: prints the wall time to grade one submission (the correct solutions, tests/exercise/solutions)
 // against the six parts' suites and against the whole assignment (tests/grading/suites/all.lua): one child
 // process per test, as `meshedit grade` does. Not a test: no timing is asserted anywhere. Each figure is the
 // minimum over --reps runs.
@@ -25,8 +25,8 @@ int main(int argc, char** argv) {
   const int reps = static_cast<int>(std::max(1L, arg(argc, argv, "--reps", 3)));
   const std::filesystem::path source = MESHEDIT_SOURCE_DIR;
   try {
-    const Submission solutions = Submission::read(source / "tests" / "script" / "solutions");
-    std::printf("grading tests/script/solutions, minimum of %d runs\n", reps);
+    const Submission solutions = Submission::read(source / "tests" / "exercise" / "solutions");
+    std::printf("grading tests/exercise/solutions, minimum of %d runs\n", reps);
     for (const char* part : {"curve", "patch", "normals", "flip", "split", "upsample", "all"}) {
       const auto suite = Suite::load(source / "tests" / "grading" / "suites" / (std::string(part) + ".lua"));
       GradeReport report;

@@ -7,7 +7,7 @@
 //
 //   lua_bench [--mesh FILE] [--upsample FILE.lua] [--reads N] [--reps R]
 // Defaults: the course teapot (../shared/data/cs184/dae/teapot.dae, 2464 faces) when present, else a torus of
-// 2464 faces; the reference solution tests/script/solutions/upsample.lua; 2e6 reads; minimum of 5 runs.
+// 2464 faces; the reference solution tests/exercise/solutions/upsample.lua; 2e6 reads; minimum of 5 runs.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -27,6 +27,7 @@
 #include "io/mesh_file.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
+#include "script/script_runtime.h"
 
 namespace {
 
@@ -47,7 +48,7 @@ int main(int argc, char** argv) {
   const std::string source = MESHEDIT_SOURCE_DIR;
   const fs::path mesh_path = option(argc, argv, "--mesh", (source + "/../shared/data/cs184/dae/teapot.dae").c_str());
   const fs::path upsample_path =
-      option(argc, argv, "--upsample", (source + "/tests/script/solutions/upsample.lua").c_str());
+      option(argc, argv, "--upsample", (source + "/tests/exercise/solutions/upsample.lua").c_str());
   const long reads = std::max(1000L, std::strtol(option(argc, argv, "--reads", "2000000"), nullptr, 10));
   const int reps = std::clamp(std::atoi(option(argc, argv, "--reps", "5")), 1, 100);
 
@@ -67,7 +68,7 @@ int main(int argc, char** argv) {
   LuaLimits limits;
   limits.instructions = uint64_t(1) << 40;
   limits.wall_seconds = 600;
-  LuaRuntime lua(limits);
+  ScriptRuntime lua(limits);
   auto mesh = std::make_shared<HalfedgeMesh>(original);
   push_mesh(lua.state(), mesh);
   lua_setglobal(lua.state(), "mesh");

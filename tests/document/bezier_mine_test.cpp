@@ -1,4 +1,4 @@
-// "Mine" in the curve and patch views (bezier_mine.h): with the correct solutions (tests/script/solutions) every
+// "Mine" in the curve and patch views (bezier_mine.h): with the correct solutions (tests/exercise/solutions) every
 // level and the probe point are the reference's bit for bit; a student file with a wrong point stops at that level
 // and names the level, the point and both values; a Lua error and a syntax error keep curve.lua:LINE; levels run
 // only as far as E shows them and are not run again while nothing changes; a saved file is reloaded. The views that

@@ -18,7 +18,7 @@
 
 namespace meshedit::document_testing {
 
-inline std::filesystem::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
+inline std::filesystem::path solutions() { return testing::source_dir() / "tests" / "exercise" / "solutions"; }
 
 // Writes `text` as `name` in `folder`, moving the modification time on so a rewrite is always seen as a save.
 inline void write_file(const std::filesystem::path& folder, const std::string& name, const std::string& text) {

@@ -26,7 +26,7 @@ namespace {
 
 MeshDocument cube_document() { return make_document(build_halfedge_mesh(make_cube())); }
 
-std::filesystem::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
+std::filesystem::path solutions() { return testing::source_dir() / "tests" / "exercise" / "solutions"; }
 
 Selection select(ElementRef ref) {
   Selection selection;

@@ -13,7 +13,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
-#include "script/scripted_exercise.h"
+#include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -25,7 +25,7 @@ Exercise collapse_exercise() {
   return id;
 }
 
-std::filesystem::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
+std::filesystem::path solutions() { return testing::source_dir() / "tests" / "exercise" / "solutions"; }
 
 TEST(ScriptedExerciseSession, TheExercisesTabRunsAndReplaysACollapse) {
   const Exercise id = collapse_exercise();

@@ -188,7 +188,7 @@ TEST(CliGrade, AWholeClassInParallel) {
 
 TEST(CliGrade, TheGradescopeRunAutograderScript) {
   const fs::path dir = testing::scratch_dir();
-  const fs::path solutions = testing::source_dir() / "tests" / "script" / "solutions";
+  const fs::path solutions = testing::source_dir() / "tests" / "exercise" / "solutions";
   fs::create_directories(dir / "submission");
   for (const auto& f : fs::directory_iterator(solutions))
     fs::copy_file(f.path(), dir / "submission" / f.path().filename());

@@ -1,5 +1,5 @@
 // The grading suites of the six parts (tests/grading/suites/*.lua): the correct solutions
-// (tests/script/solutions, the exercises' own) score full marks on every suite, the extra credit (boundary split,
+// (tests/exercise/solutions, the exercises' own) score full marks on every suite, the extra credit (boundary split,
 // boundary Loop) on top of the base points; a correct split allocating its ids in another order scores the same;
 // each buggy fixture in tests/grading/students/ loses exactly the tests its mistake breaks, with the window's
 // diagnosis of it. (flip.lua's fixtures are in flip_suite_test.cpp; that every fixture's message is the window's is
@@ -47,7 +47,7 @@ std::string output_of(const GradeReport& report, const std::string& number) {
 }
 
 TEST(PartSuites, TheCorrectSolutionsScoreFullMarksEverywhere) {
-  const Submission solutions = Submission::read(testing::source_dir() / "tests" / "script" / "solutions");
+  const Submission solutions = Submission::read(testing::source_dir() / "tests" / "exercise" / "solutions");
   struct Points {
     double base, extra;
   };
@@ -64,7 +64,7 @@ TEST(PartSuites, TheCorrectSolutionsScoreFullMarksEverywhere) {
 }
 
 TEST(PartSuites, TheWholeAssignmentInOneSuite) {
-  const Submission solutions = Submission::read(testing::source_dir() / "tests" / "script" / "solutions");
+  const Submission solutions = Submission::read(testing::source_dir() / "tests" / "exercise" / "solutions");
   auto suite = Suite::load(grading_dir() / "suites" / "all.lua");
   EXPECT_EQ(suite->name(), "meshedit");
   const GradeReport report = grade(*suite, solutions, testing::quick_options());

@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <string>
 
+#include "exercise/exercises.h"
+#include "exercise/scripted_exercise.h"
 #include "grade/grader.h"
 #include "grade/suite.h"
 #include "grade_test_support.h"
-#include "script/exercises.h"
-#include "script/scripted_exercise.h"
 
 namespace meshedit {
 namespace {
@@ -23,7 +23,9 @@ namespace fs = std::filesystem;
 using testing::read_text;
 
 fs::path definition() { return testing::source_dir() / "scripts" / "exercises" / "collapse.lua"; }
-std::string solution() { return read_text(testing::source_dir() / "tests" / "script" / "solutions" / "collapse.lua"); }
+std::string solution() {
+  return read_text(testing::source_dir() / "tests" / "exercise" / "solutions" / "collapse.lua");
+}
 fs::path buggy_file() { return testing::grading_dir() / "scripted" / "collapse_keeps_position.lua"; }
 
 TEST(ScriptedExerciseGrading, EachFixtureIsATestAndTheSolutionScoresEveryPoint) {
@@ -71,7 +73,8 @@ TEST(ScriptedExerciseGrading, ABuggySubmissionIsToldWhatTheWindowSays) {
 TEST(ScriptedExerciseGrading, CatmullClarkSolutionScoresAndMovingInPlaceIsNamed) {
   const fs::path cc = testing::source_dir() / "scripts" / "exercises" / "catmull_clark.lua";
   auto suite = Suite::load(cc);
-  const std::string correct = read_text(testing::source_dir() / "tests" / "script" / "solutions" / "catmull_clark.lua");
+  const std::string correct =
+      read_text(testing::source_dir() / "tests" / "exercise" / "solutions" / "catmull_clark.lua");
   const GradeReport right =
       grade(*suite, testing::submission_of({{"catmull_clark.lua", correct}}), testing::quick_options());
   ASSERT_EQ(right.tests.size(), 3u);

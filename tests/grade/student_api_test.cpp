@@ -1,4 +1,4 @@
-// One student API for the window and the grader (script/student_api.h): a flip_edge that calls mesh:flip is refused
+// One student API for the window and the grader (exercise/student_api.h): a flip_edge that calls mesh:flip is refused
 // in both, with the same words; what each exercise may use is the same in the shipped suites as in the window; the
 // templates students start from never suggest a call their code cannot make.
 #include <gtest/gtest.h>
@@ -11,9 +11,9 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "exercise/exercises.h"
+#include "exercise/student_api.h"
 #include "grade_test_support.h"
-#include "script/exercises.h"
-#include "script/student_api.h"
 
 namespace meshedit {
 namespace {

@@ -10,11 +10,11 @@
 #include <filesystem>
 #include <string>
 
+#include "exercise/exercises.h"
+#include "exercise/scripted_exercise.h"
 #include "grade/grader.h"
 #include "grade/suite.h"
 #include "grade_test_support.h"
-#include "script/exercises.h"
-#include "script/scripted_exercise.h"
 
 namespace meshedit {
 namespace {
@@ -24,7 +24,7 @@ using testing::read_text;
 
 fs::path definition(const std::string& name) { return testing::source_dir() / "scripts" / "exercises" / name; }
 std::string solution(const std::string& name) {
-  return read_text(testing::source_dir() / "tests" / "script" / "solutions" / name);
+  return read_text(testing::source_dir() / "tests" / "exercise" / "solutions" / name);
 }
 std::string buggy(const std::string& name) { return read_text(testing::grading_dir() / "scripted" / name); }
 

@@ -14,8 +14,8 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "exercise/exercises.h"
 #include "grade_test_support.h"
-#include "script/exercises.h"
 
 namespace meshedit {
 namespace {

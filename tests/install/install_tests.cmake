@@ -5,8 +5,8 @@
 set(prefix "${PROJECT_BINARY_DIR}/install-test")
 set(installed "${prefix}/bin/meshedit")
 set(share "${prefix}/share/meshedit")
-set(answers "${PROJECT_SOURCE_DIR}/tests/script/lessons")
-set(solutions "${PROJECT_SOURCE_DIR}/tests/script/solutions")
+set(answers "${PROJECT_SOURCE_DIR}/tests/lesson/lessons")
+set(solutions "${PROJECT_SOURCE_DIR}/tests/exercise/solutions")
 
 add_test(NAME install_into_prefix
          COMMAND ${CMAKE_COMMAND} -DBUILD_DIR=${PROJECT_BINARY_DIR} -DPREFIX=${prefix} -DCONFIG=$<CONFIG>

@@ -41,7 +41,7 @@ struct Case {
 void PrintTo(const Case& c, std::ostream* os) { *os << c.name; }
 
 // The solutions the script tests grade: mine with the correct flip changes the mesh as the reference does.
-std::filesystem::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
+std::filesystem::path solutions() { return testing::source_dir() / "tests" / "exercise" / "solutions"; }
 
 bool says_memory_ran_out(const DocumentMessage& message) {
   return message.severity != Severity::Info && message.text.find(kMemoryRanOut) != std::string::npos;

@@ -10,8 +10,8 @@
 
 #include <gtest/gtest.h>
 
-#include "script/headless_host.h"
-#include "script/lesson_runner.h"
+#include "lesson/headless_host.h"
+#include "lesson/lesson_runner.h"
 #include "support/failing_allocations.h"
 #include "support/test_support.h"
 

@@ -14,6 +14,7 @@
 #include "io/bzc_io.h"
 #include "script/bezier_bindings.h"
 #include "script/lua_runtime.h"
+#include "script/script_runtime.h"
 #include "script/vec3_bindings.h"
 #include "support/test_support.h"
 
@@ -24,7 +25,7 @@ using Strings = std::vector<std::string>;
 
 // A runtime whose meshedit module has the Bézier API (and vec3, whoever opens it first).
 struct Fixture {
-  LuaRuntime lua;
+  ScriptRuntime lua;
   Fixture() {
     lua_State* L = lua.state();
     lua_getglobal(L, "meshedit");

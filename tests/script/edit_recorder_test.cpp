@@ -16,6 +16,7 @@
 #include "core/value_format.h"
 #include "mesh_script_fixture.h"
 #include "script/edit_recorder.h"
+#include "script/script_runtime.h"
 
 namespace meshedit {
 namespace {
@@ -357,7 +358,7 @@ TEST(EditRecorder, OutlivesItsLuaState) {
   auto mesh = std::make_shared<HalfedgeMesh>(build_halfedge_mesh(make_grid(1, 1)));
   std::unique_ptr<EditRecorder> recorder;
   {
-    LuaRuntime lua;
+    ScriptRuntime lua;
     push_mesh(lua.state(), mesh);
     lua_setglobal(lua.state(), "m");
     recorder = std::make_unique<EditRecorder>(lua.state(), mesh);

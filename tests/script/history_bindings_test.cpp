@@ -7,7 +7,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "mesh_script_fixture.h"
-#include "script/edit_journal.h"
+#include "script/internal/edit_journal.h"
 
 namespace meshedit {
 namespace {

@@ -13,6 +13,7 @@
 #include "core/primitives.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
+#include "script/script_runtime.h"
 
 namespace meshedit {
 namespace {
@@ -22,7 +23,7 @@ using Strings = std::vector<std::string>;
 // A runtime with `m` bound to the given mesh.
 struct Fixture {
   std::shared_ptr<HalfedgeMesh> mesh;
-  LuaRuntime lua;
+  ScriptRuntime lua;
   explicit Fixture(PolygonMesh polygons) : mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(polygons))) {
     push_mesh(lua.state(), mesh);
     lua_setglobal(lua.state(), "m");

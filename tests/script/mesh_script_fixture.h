@@ -11,6 +11,7 @@
 #include "core/mesh_build.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
+#include "script/script_runtime.h"
 
 namespace meshedit::testing {
 
@@ -18,7 +19,7 @@ using Strings = std::vector<std::string>;
 
 struct MeshScript {
   std::shared_ptr<HalfedgeMesh> mesh;
-  LuaRuntime lua;
+  ScriptRuntime lua;
 
   explicit MeshScript(const PolygonMesh& polygons)
       : mesh(std::make_shared<HalfedgeMesh>(build_halfedge_mesh(polygons))) {

@@ -12,6 +12,7 @@
 #include "core/primitives.h"
 #include "script/lua_runtime.h"
 #include "script/mesh_bindings.h"
+#include "script/script_runtime.h"
 #include "support/test_support.h"
 
 namespace meshedit {
@@ -21,7 +22,7 @@ using Strings = std::vector<std::string>;
 
 TEST(TriangulateBinding, QuadCubeBecomesTrianglesThatSubdivide) {
   auto mesh = std::make_shared<HalfedgeMesh>(build_halfedge_mesh(make_cube_quads()));
-  LuaRuntime lua;
+  ScriptRuntime lua;
   push_mesh(lua.state(), mesh);
   lua_setglobal(lua.state(), "m");
   const Strings refused = lua.run_string("return m:loop_subdivide()", "t.lua");
@@ -38,7 +39,7 @@ TEST(TriangulateBinding, QuadCubeBecomesTrianglesThatSubdivide) {
 }
 
 TEST(RepairBinding, RepairsTablesAndReportsWithTheirNumbers) {
-  LuaRuntime lua;
+  ScriptRuntime lua;
   const Strings r = lua.run_string(
       "local positions = {{0,0,0}, {1,0,0}, {1,1,0}, {-1,0,0}, {-1,-1,0}}\n"
       "local ok, err = pcall(meshedit.from_polygons, positions, {{1,2,3}, {1,4,5}})\n"
@@ -55,7 +56,7 @@ TEST(RepairBinding, LoadWithTheRepairOption) {
   const std::filesystem::path dir = testing::scratch_dir();
   const std::string path = (dir / "fin.obj").string();
   std::ofstream(path) << "v 0 0 0\nv 1 0 0\nv 0.5 1 0\nv 0.5 -1 0\nv 0.5 0 1\nf 1 2 3\nf 2 1 4\nf 1 2 5\n";
-  LuaRuntime lua;
+  ScriptRuntime lua;
   const Strings r = lua.run_string("local ok = pcall(meshedit.load, '" + path +
                                        "')\n"
                                        "local m, report = meshedit.load('" +

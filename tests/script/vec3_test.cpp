@@ -8,6 +8,7 @@
 #include <lua.hpp>
 
 #include "script/lua_runtime.h"
+#include "script/script_runtime.h"
 #include "script/vec3_bindings.h"
 
 namespace meshedit {
@@ -17,7 +18,7 @@ using Strings = std::vector<std::string>;
 
 // A runtime with the vec3 constructor bound to the global `vec3` (independently of the meshedit module).
 struct Vec3Fixture {
-  LuaRuntime lua;
+  ScriptRuntime lua;
   Vec3Fixture() {
     lua_newtable(lua.state());
     open_vec3(lua.state());

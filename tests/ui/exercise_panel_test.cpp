@@ -16,7 +16,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
-#include "script/scripted_exercise.h"
+#include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"
 #include "ui/ui_test_support.h"
@@ -26,7 +26,7 @@ namespace {
 
 MeshDocument cube_document() { return make_document(build_halfedge_mesh(make_cube())); }
 
-std::filesystem::path solutions() { return testing::source_dir() / "tests" / "script" / "solutions"; }
+std::filesystem::path solutions() { return testing::source_dir() / "tests" / "exercise" / "solutions"; }
 
 Selection select(ElementRef ref) {
   Selection selection;

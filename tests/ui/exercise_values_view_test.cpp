@@ -11,7 +11,7 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
-#include "script/scripted_exercise.h"
+#include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"
 #include "ui/exercise_values_view.h"
@@ -34,7 +34,7 @@ fs::path folder_with(const fs::path& file, const std::string& name) {
 }
 
 fs::path buggy(const std::string& name) { return testing::source_dir() / "tests" / "grading" / "scripted" / name; }
-fs::path solution(const std::string& name) { return testing::source_dir() / "tests" / "script" / "solutions" / name; }
+fs::path solution(const std::string& name) { return testing::source_dir() / "tests" / "exercise" / "solutions" / name; }
 
 TEST(ValuesExerciseSession, ARunOnAFixtureLeavesTheDocumentAndListsBothResults) {
   const Exercise id = registered("hodograph.lua");

@@ -5,7 +5,7 @@
 
 #include <fstream>
 
-#include "script/headless_host.h"
+#include "lesson/headless_host.h"
 #include "support/test_support.h"
 #include "ui/lesson_panel.h"
 #include "ui/ui_test_support.h"

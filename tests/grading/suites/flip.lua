@@ -15,7 +15,7 @@ local function diagonal_at(mesh, x, y)
 end
 
 -- 11200 triangles: a flip_edge that loops over the mesh touches thousands of elements there, where a flip changes a
--- handful (the window's locality bound, engine/script/exercise_locality.h).
+-- handful (the window's locality bound, engine/exercise/exercise_locality.h).
 local big = meshedit.grid(80, 70)
 local big_edge = diagonal_at(big, 40, 35)
 

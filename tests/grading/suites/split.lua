@@ -28,7 +28,7 @@ local function edge_at(mesh, p)
 end
 
 -- 11200 triangles: a split_edge that loops over the mesh touches thousands of elements there, where a split changes a
--- handful (the window's locality bound, engine/script/exercise_locality.h). Its middle diagonal, found by where it is.
+-- handful (the window's locality bound, exercise/exercise_locality.h). Its middle diagonal, found by where it is.
 local big = meshedit.grid(80, 70)
 local big_edge = edge_at(big, vec3(40.5, 35.5, 0))
 

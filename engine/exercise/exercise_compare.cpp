@@ -1,0 +1,94 @@
+// compare() for every exercise (exercises.h): a run that failed is told with its hint; a run that finished goes to
+// the checks of its kind of exercise (internal/exercise_checks.h), which the grader runs too
+// (grade/exercise_expectation.h), so a failure there reads like the window.
+#include <memory>
+#include <string>
+
+#include "core/validate.h"
+#include "exercise/exercises.h"
+#include "exercise/internal/exercise_checks.h"
+#include "exercise/internal/upsample_runaway.h"
+#include "exercise/scripted_exercise.h"
+
+namespace meshedit {
+namespace {
+
+using exercise_checks::Messages;
+
+// A Lua error or a limit, with a hint for the usual reasons. An upsample that did not finish (a limit or a cap stopped
+// it) is explained from where it was stopped and what it had done (upsample_runaway.h), its line first.
+void add_run_failure(Exercise exercise, const ExerciseInput& input, const ExerciseReport& report, Messages& out) {
+  const std::string& error = report.mine.error;
+  const bool unfinished = report.mine.limit != ScriptError::Limit::None;
+  if (unfinished && exercise == Exercise::Upsample && input.mesh) {
+    out.add(explain_unfinished_upsample(error, *input.mesh, report.mine.mesh.get(), report.mine.edits));
+  } else {
+    out.add(error);
+  }
+  if (!unfinished) return;
+  if (std::string hint = unfinished_run_hint(exercise); !hint.empty()) out.add(std::move(hint));
+}
+
+}  // namespace
+
+// ---- public functions ------------------------------------------------------------------------------
+
+std::string unfinished_run_hint(Exercise exercise) {
+  switch (exercise) {
+    case Exercise::Upsample:
+      return "upsample did not finish: split only the edges of the original mesh (list them before the first "
+             "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create. A "
+             "loop that splits nothing never ends when what its condition waits for never changes";
+    case Exercise::FlipEdge:
+    case Exercise::SplitEdge:
+    case Exercise::VertexNormal:
+      return "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
+             "start when a pointer is wrong";
+    default: {
+      const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      return scripted ? scripted->hint() : "";
+    }
+  }
+}
+
+std::string ExerciseReport::summary() const {
+  if (equal) return "same as the reference";
+  std::string s = "different";
+  if (!differences.empty()) s += ": " + differences.front();
+  if (total_differences > 1) s += " (" + std::to_string(total_differences - 1) + " more)";
+  return s;
+}
+
+ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOutcome mine, ExerciseOutcome reference) {
+  ExerciseReport report;
+  report.exercise = exercise;
+  report.mine = std::move(mine);
+  report.reference = std::move(reference);
+  Messages out(report);
+  const bool on_mesh = is_mesh_exercise(exercise);
+  if (on_mesh && report.mine.ran && !report.mine.mesh) {
+    report.mine.ran = false;
+    report.mine.error = "no mesh came back from " + std::string(exercise_info(exercise).function);
+  }
+  if (on_mesh && report.mine.mesh && !report.mine.validation) report.mine.validation = validate(*report.mine.mesh);
+  if (!report.mine.ran) {
+    add_run_failure(exercise, input, report, out);
+    report.equal = false;
+    return report;
+  }
+  switch (exercise) {
+    case Exercise::CurveStep: exercise_checks::compare_curve(input, report, out); break;
+    case Exercise::PatchEvaluate: exercise_checks::compare_patch(input, report, out); break;
+    case Exercise::VertexNormal: exercise_checks::compare_normal(input, report, out); break;
+    case Exercise::FlipEdge: exercise_checks::compare_flip(input, report, out); break;
+    case Exercise::SplitEdge: exercise_checks::compare_split(input, report, out); break;
+    case Exercise::Upsample: exercise_checks::compare_upsample(input, report, out); break;
+    default:
+      if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+        exercise_checks::compare_scripted(*scripted, input, report, out);
+      }
+  }
+  return report;
+}
+
+}  // namespace meshedit

@@ -1,0 +1,130 @@
+// The boundary rules of Loop subdivision against the interior rules applied there (see loop_boundary_diagnosis.h).
+#include "exercise/internal/loop_boundary_diagnosis.h"
+
+#include <optional>
+
+#include <glm/geometric.hpp>
+
+#include "core/loop_rules.h"
+#include "core/value_format.h"
+#include "core/vertex_ring.h"
+#include "exercise/internal/loop_diagnosis_support.h"
+
+namespace meshedit {
+namespace {
+
+using namespace loop_diagnosis;
+
+// A boundary vertex's ring (its two neighbours along the boundary, and all of them); nullopt for a vertex with fewer
+// than two boundary edges or a broken fan.
+std::optional<VertexRing> boundary_ring(const HalfedgeMesh& mesh, VertexId v) {
+  const VertexRing ring = vertex_ring(mesh, v);
+  if (!ring.closed || ring.rim_count < 2) return std::nullopt;
+  return ring;
+}
+
+// The first of `count` examples, and the message's tail.
+struct Tally {
+  size_t count = 0;
+  std::string example;
+  void add(const std::string& text) {
+    if (count++ == 0) example = text;
+  }
+};
+
+std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance) {
+  Tally interior, other;
+  for (VertexId v : before.vertices()) {
+    if (!yours.alive(v)) continue;
+    const std::optional<VertexRing> ring = boundary_ring(before, v);
+    if (!ring) continue;
+    const glm::dvec3& p = before.position(v);
+    const glm::dvec3 course =
+        loop_rules::boundary_vertex(p, before.position(ring->rim[0]), before.position(ring->rim[1]));
+    const glm::dvec3& q = yours.position(v);
+    if (close(q, course, tolerance) || close(q, p, tolerance)) continue;  // right, or unmoved (told elsewhere)
+    const size_t n = ring->valence;
+    const double u = course_u(n);
+    if (close(q, (1.0 - double(n) * u) * p + u * ring->neighbour_sum, tolerance)) {
+      interior.add(format_id(v) + " (" + std::to_string(n) + " neighbours, 2 of them along the boundary)");
+    } else {
+      other.add(format_id(v) + " at " + format_position(q) + ", where the course puts it at " +
+                format_position(course));
+    }
+  }
+  const std::string rule =
+      "a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along "
+      "the boundary (extra credit)";
+  std::vector<std::string> out;
+  if (interior.count > 0) {
+    out.push_back(std::to_string(interior.count) + " of your boundary vertices, e.g. " + interior.example +
+                  ", moved by the interior rule (1 - n u) p + u (sum of all the neighbours); " + rule);
+  }
+  if (other.count > 0) {
+    out.push_back(std::to_string(other.count) + " of your boundary vertices are not where the course puts them, e.g. " +
+                  other.example + ": " + rule);
+  }
+  return out;
+}
+
+std::vector<std::string> edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance) {
+  Tally across, without_d, other;
+  const uint32_t old_capacity = before.vertex_capacity();
+  for (VertexId w : yours.vertices()) {
+    if (w.index < old_capacity) continue;
+    const std::vector<VertexId> old_neighbours = original_neighbours(before, yours, w);
+    for (size_t i = 0; i < old_neighbours.size(); ++i) {
+      for (size_t j = i + 1; j < old_neighbours.size(); ++j) {
+        HalfedgeId inside = halfedge_between(before, old_neighbours[i], old_neighbours[j]);
+        if (!inside.valid()) continue;
+        HalfedgeId outside = before.twin(inside);
+        if (before.face(inside).is_boundary()) std::swap(inside, outside);
+        if (!before.face(outside).is_boundary() || before.face(inside).is_boundary()) continue;
+        const glm::dvec3 a = before.position(before.vertex(inside)), b = before.position(before.vertex(outside));
+        const glm::dvec3& q = yours.position(w);
+        if (close(q, loop_rules::boundary_edge(a, b), tolerance)) continue;
+        const glm::dvec3 c = before.position(before.vertex(before.next(before.next(inside))));
+        const glm::dvec3 d = before.position(before.vertex(before.next(before.next(outside))));
+        const std::string where = format_id(w) + " on the boundary edge " + format_id(before.vertex(inside)) + "-" +
+                                  format_id(before.vertex(outside));
+        if (close(q, loop_rules::interior_edge(a, b, c, d), tolerance)) {
+          across.add(where);
+        } else if (close(q, 0.375 * (a + b) + 0.125 * c, tolerance)) {
+          without_d.add(where);
+        } else {
+          other.add(where + " at " + format_position(q));
+        }
+      }
+    }
+  }
+  const std::string rule = "a boundary edge's new vertex goes at its midpoint, (a + b) / 2 (extra credit)";
+  std::vector<std::string> out;
+  if (across.count > 0) {
+    out.push_back(std::to_string(across.count) + " of your new vertices, e.g. " + across.example +
+                  ", are at the interior rule 3/8 (a + b) + 1/8 (c + d) with d read across the boundary "
+                  "(h.twin.next.next walks the boundary loop, not a triangle); " +
+                  rule);
+  }
+  if (without_d.count > 0) {
+    out.push_back(std::to_string(without_d.count) + " of your new vertices, e.g. " + without_d.example +
+                  ", are at 3/8 (a + b) + 1/8 c, the interior rule with d left out; " + rule);
+  }
+  if (other.count > 0) {
+    out.push_back(std::to_string(other.count) +
+                  " of your new vertices on boundary edges are not at the midpoint, "
+                  "e.g. " +
+                  other.example + ": " + rule);
+  }
+  return out;
+}
+
+}  // namespace
+
+std::vector<std::string> diagnose_loop_boundary(const HalfedgeMesh& before, const HalfedgeMesh& yours,
+                                                double tolerance) {
+  std::vector<std::string> out = vertex_messages(before, yours, tolerance);
+  for (std::string& m : edge_messages(before, yours, tolerance)) out.push_back(std::move(m));
+  return out;
+}
+
+}  // namespace meshedit
