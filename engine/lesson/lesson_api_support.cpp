@@ -1,10 +1,6 @@
 // The shared pieces of the lesson globals (see lesson_api_support.h).
 #include "lesson/internal/lesson_api_support.h"
 
-#include <cstring>
-#include <exception>
-
-#include "core/compiler_builtins.h"
 #include "core/palette.h"
 #include "script/lua_handles.h"
 #include "script/lua_runtime.h"
