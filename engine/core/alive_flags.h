@@ -7,8 +7,7 @@
 //
 // Invariants: size() is the slot count of the kind, whether or not bits exist; when bits exist they cover size()
 // slots and every bit at or past size() is zero; "no bits" means "every slot alive". Equality is by value (a mesh
-// whose dead slots came back to life equals one that never had bits). Out of memory, resize() and set() throw
-// std::bad_alloc with the flags as they were. Not safe to write from two threads at once.
+// whose dead slots came back to life equals one that never had bits). Not safe to write from two threads at once.
 #pragma once
 
 #include <algorithm>
@@ -84,7 +83,7 @@ class AliveFlags {
     if (!dead_.empty()) dead_.reserve(words(n));
   }
   // Makes room for dead bits of up to n slots, creating the bits if there are none yet (the value stays: all alive):
-  // afterwards resize() and set() up to n slots allocate nothing. Out of memory, throws with the value unchanged.
+  // afterwards resize() and set() up to n slots allocate nothing.
   void reserve_bits(size_t n) {
     materialise();
     dead_.reserve(words(std::max(n, size_)));

@@ -12,8 +12,8 @@
 // holds 60 MB of halfedges, which a copy into fresh memory would have to fault in and write.
 //
 // Invariants: the size of a block alone decides where it came from (is_mapped), so allocate, release and regrow
-// agree on it; every function either does all it says or throws std::bad_alloc with the block untouched (release
-// never throws). The small-block path stays inline here; only big blocks cross the seam.
+// agree on it. Out of memory: the rule of docs/ARCHITECTURE.md (Memory running out); release never throws. The
+// small-block path stays inline here; only big blocks cross the seam.
 #pragma once
 
 #include <cstddef>
@@ -42,8 +42,8 @@ inline void release(void* p, size_t bytes) noexcept {
 }
 
 // A block of `new_bytes` (>= bytes) whose first `used` bytes are those of `p` (a block of `bytes`, or nullptr), the
-// rest unset; `p` is released. A big block grows through the seam (on Linux its pages are moved, aligned, to the
-// new mapping, which costs page-table updates, not a copy). Out of memory, throws std::bad_alloc with `p` as it was.
+// rest unset; `p` is released once the new block is there. A big block grows through the seam (on Linux its pages
+// are moved, aligned, to the new mapping, which costs page-table updates, not a copy).
 inline void* regrow(void* p, size_t bytes, size_t used, size_t new_bytes) {
   if (p && is_mapped(bytes)) return page_memory::grow(p, bytes, used, new_bytes);
   void* grown = allocate(new_bytes);

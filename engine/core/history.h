@@ -54,8 +54,8 @@ class History {
 
   // Replaces `mesh` by the state before the last recorded operation; the replaced state goes to redo.
   // Returns false (and changes nothing) when there is nothing to undo. Afterwards mesh.version() is larger
-  // than it was before the call and than the restored snapshot's own version. All or nothing: out of memory, it
-  // throws std::bad_alloc with the mesh and both lists as they were.
+  // than it was before the call and than the restored snapshot's own version. All or nothing, out of memory too: the
+  // mesh and both lists as they were.
   bool undo(HalfedgeMesh& mesh);
   // The reverse of undo (same rules); record() empties the redo list.
   bool redo(HalfedgeMesh& mesh);

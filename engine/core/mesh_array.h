@@ -8,9 +8,9 @@
 //
 // Invariants: size() <= capacity(); data() is null exactly when capacity() is 0; the block holds capacity()
 // elements and came from big_blocks with that many bytes. Growth asks for max(n, 2 * size()) elements, as
-// std::vector does, so appends are amortised O(1). Every call that allocates either completes or throws
-// std::bad_alloc with the array unchanged (size, capacity and contents); moves and swaps never throw. Copies get
-// exactly size() elements of capacity.
+// std::vector does, so appends are amortised O(1). Out of memory: the rule of docs/ARCHITECTURE.md (Memory running
+// out), size, capacity and contents included; moves and swaps never throw. Copies get exactly size() elements of
+// capacity.
 #pragma once
 
 #include <algorithm>

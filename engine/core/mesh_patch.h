@@ -10,8 +10,8 @@
 // - apply() sets the shape first, then writes only slots below the target state's capacities, so it never writes
 //   outside the arrays, whatever mesh it is given; on the state it was made from it gives the other state exactly
 //   (contents and live counts). It does not touch version(): History and the document set it.
-// - apply() allocates only before its first write: out of memory, it throws std::bad_alloc with the mesh unchanged
-//   (the same values); once it writes, it finishes. So an undo or redo never stops half-way.
+// - apply() allocates only before its first write, so out of memory it keeps the rule of docs/ARCHITECTURE.md
+//   (Memory running out); once it writes, it finishes. So an undo or redo never stops half-way.
 #pragma once
 
 #include <cstddef>

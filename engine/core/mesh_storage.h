@@ -39,9 +39,9 @@ struct MeshStorage {
 
   // Grows each kind to the given capacity with new live elements whose fields are NOT set: the caller must write
   // every pointer of every new element (and every new position) before the mesh is used. Capacities never shrink.
-  // Out of memory, throws std::bad_alloc with the mesh as it was: every array gets its room before any size or count
-  // changes, so the resizes below allocate nothing. That room is exact: a caller that grows in steps calls
-  // reserve_total for the last step first, as Loop does, so the steps do not copy the arrays again each time.
+  // Every array gets its room before any size or count changes, so the resizes below allocate nothing. That room is
+  // exact: a caller that grows in steps calls reserve_total for the last step first, as Loop does, so the steps do not
+  // copy the arrays again each time.
   static void grow(HalfedgeMesh& m, uint32_t vertices, uint32_t halfedges, uint32_t edges, uint32_t faces) {
     m.journal_.before_bulk_write();
     reserve_total(m, vertices, halfedges, edges, faces);
@@ -138,8 +138,7 @@ struct MeshStorage {
     m.live_boundaries_ = live[4];
   }
   // Makes room for set_slots(m, capacity, live) and for then writing any values into those slots (dead flags
-  // included), so that neither allocates. Changes no value, so a journal is not told; out of memory, throws
-  // std::bad_alloc with the mesh as it was.
+  // included), so that neither allocates. Changes no value, so a journal is not told.
   static void reserve_slots(HalfedgeMesh& m, const uint32_t (&capacity)[kElementKindCount],
                             const size_t (&live)[kElementKindCount]) {
     m.v_halfedge_.reserve(capacity[0]);

@@ -11,9 +11,9 @@
 //   std::realloc and std::free. scripts/clang_build.sh builds and tests it on Linux too.
 //
 // Invariants (both): a block holds at least the bytes asked for, aligned for any scalar type; grow() keeps the
-// first `used` bytes; allocate() and grow() either do all they say or throw std::bad_alloc with the old block
-// untouched and still the caller's; release() never throws. A block goes back through the seam that gave it, with
-// the byte count it was asked for (or last grown to).
+// first `used` bytes; out of memory, allocate() and grow() keep the rule of docs/ARCHITECTURE.md (Memory running out),
+// the old block still the caller's; release() never throws. A block goes back through the seam that gave it, with the
+// byte count it was asked for (or last grown to).
 #pragma once
 
 #include <cstddef>
@@ -38,7 +38,7 @@ void* allocate(size_t bytes);
 void release(void* p, size_t bytes) noexcept;
 
 // A block of `new_bytes` (>= bytes) whose first `used` (<= bytes) bytes are those of `p` (a block of `bytes`, not
-// null), the rest unset; `p` is released. Out of memory, throws std::bad_alloc with `p` as it was.
+// null), the rest unset; `p` is released once the new block is there.
 void* grow(void* p, size_t bytes, size_t used, size_t new_bytes);
 
 }  // namespace meshedit::page_memory

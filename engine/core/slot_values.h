@@ -38,7 +38,7 @@ MeshShape shape_of(const HalfedgeMesh& mesh);
 // counts; the slots' values are the caller's to write.
 void set_shape(HalfedgeMesh& mesh, const MeshShape& shape);
 // Makes room for set_shape(mesh, shape) and for writing any state into its slots, so that neither allocates
-// (MeshStorage::reserve_slots). Changes no value; out of memory, throws std::bad_alloc with the mesh as it was.
+// (MeshStorage::reserve_slots). Changes no value.
 void reserve_shape(HalfedgeMesh& mesh, const MeshShape& shape);
 
 }  // namespace meshedit

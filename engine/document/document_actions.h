@@ -8,12 +8,12 @@
 //   element an undo removed is deselected.
 // - Edits go through apply_operation(), so a refusal changes nothing but the message. A flip, split or collapse is
 //   labelled by edge_edit_label ("flip e5": document/edge_edit_label.h), which the window reads back to animate it.
-// - No action throws std::bad_alloc. When memory runs out, an action is either not done (mesh, history, selection
-//   and Loop stepper as they were; an Error that says memory ran out when it would have been done) or done as the
-//   document keeps it (mesh_document.h: recorded, or kept without its record); a message that cannot be built for
-//   lack of memory is kMemoryRanOut, as a Warning or worse. Nor do the questions asked before acting:
-//   edge_for_operation refuses with kMemoryRanOut as its reason when memory runs out building its answer, and
-//   next_loop_phase_label allocates nothing.
+// - No action throws std::bad_alloc: the document layer's rule of docs/ARCHITECTURE.md (Memory running out). When
+//   memory runs out, an action is either not done (mesh, history, selection and Loop stepper as they were; an Error
+//   that says memory ran out when it would have been done) or done as the document keeps it (mesh_document.h:
+//   recorded, or kept without its record). Nor do the questions asked before acting: edge_for_operation refuses
+//   with kMemoryRanOut as its reason when memory runs out building its answer, and next_loop_phase_label allocates
+//   nothing.
 #pragma once
 
 #include <optional>

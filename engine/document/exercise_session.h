@@ -17,8 +17,7 @@
 //   apply_operation. When memory runs out before that, or under the student's code (a Lua error flagged
 //   ExerciseOutcome::out_of_memory, not the student's doing; a student's own error("memory ran out") is an error of
 //   the run like any other), nothing is done: an Error that says memory ran out (kMemoryRanOut), the document
-//   as it was (a replay in progress finished first, whole). Once the run went in, it is the session's last run, and
-//   a message that cannot be made for lack of memory is kMemoryRanOut as a Warning or worse.
+//   as it was (a replay in progress finished first, whole). Once the run went in, it is the session's last run.
 // - A replay shows states with show_state(), never history: while it runs, the document shows
 //   replay(before, edits, k) and `last` is the diff of edit k alone (state k-1 -> k), so the tables highlight
 //   the cell edit k wrote. finish_replay() (or stepping to the end) leaves the document at the operation's
