@@ -1,11 +1,8 @@
-// Local operations on triangle meshes: flip, split and collapse, each with its check.
-//
-// Contract shared by the three operations:
-// - can_X(mesh, e) only reads the mesh, follows no pointer before checking that its target is in range and
-//   alive, and walks only with bounds, so a mesh a script has broken is refused with a reason rather than
-//   crashing or hanging. The reason is a sentence naming the elements with format_id:
-//   "e5 is on the boundary (b0); only interior edges can be flipped", "f3 is not a triangle (4 sides); ...",
-//   "e7 is dead".
+// Local operations on triangle meshes (flip, split and collapse, each with its check) and the invariants they all keep:
+// - can_X(mesh, e) only reads the mesh, follows no pointer before checking that its target is in range and alive,
+//   and walks only with bounds, so a mesh a script has broken is refused with a reason rather than crashing or
+//   hanging. The reason is a sentence naming the elements with format_id: "e5 is on the boundary (b0); only interior
+//   edges can be flipped", "f3 is not a triangle (4 sides); ...", "e7 is dead".
 // - X(mesh, e) runs can_X first. A refused operation changes nothing at all, not even version().
 // - On a mesh validate() accepts, an accepted operation gives a mesh validate() accepts: every pointer into a
 //   deleted element is redirected (the lists below say where), and a boundary vertex's halfedge is still its
@@ -18,7 +15,6 @@
 // as h0 (a->b), h2 = h0.next (b->c), h3 = h2.next (c->a). When f1 = h1.face is a face (not a boundary loop)
 // it holds (b, a, d) as h1 (b->a), h4 = h1.next (a->d), h5 = h4.next (d->b). Faces are counter-clockwise
 // seen from the side their normals point to; every picture is drawn from that side:
-//
 /*
                  c
                 / \

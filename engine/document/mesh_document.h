@@ -12,42 +12,20 @@
 //   mesh, and `last.before` keeps a copy only when their diff is listed (a small mesh), so L on a big mesh, its undo
 //   and its redo copy nothing beyond the history's own snapshot.
 // - A refused or throwing operation leaves `mesh`, `history` and `last` exactly as they were (same contents,
-//   same version()); only `message` changes. Putting the mesh back allocates nothing (the journal's snapshot is
-//   moved back, or its log written back), so this holds when memory has run out too: an operation that runs out
-//   (std::bad_alloc from itself or from its journal's log) is refused so ("flip e5: memory ran out; the mesh is as
-//   it was", Error). The one exception is losing the state before, next.
-// - When memory runs out while the journal saves the state before an operation (its snapshot; a mesh of millions
-//   of faces), nothing crashes and nothing the operation did is thrown away: the mesh stays as the operation left
-//   it, refused or not (there is no state to put back), version() moves above the one before, the history is
-//   cleared (its entries start from a state the mesh may no longer be in), `last` is marked not recorded, and the
-//   message says undo history was cleared because memory ran out (Warning on success, Error with the refusal's
-//   reason otherwise). Later edits, undo and redo work as on a freshly opened mesh.
-// - When memory runs out recording an operation that succeeded (its patch, the state before, the history entry,
-//   `last`), the edit is kept all the same: version() moves above the one before, `last` is marked not recorded and
-//   a Warning says what was lost. Without its history entry the history is cleared (undo would start from a state
-//   the mesh is no longer in): "flip e5: done, but memory ran out recording it: undo history cleared". With it (only
-//   `last` failed) the history still ends with the edit and is kept: "flip e5: done, but memory ran out listing its
-//   changes".
-// - Undo and redo are all or nothing (History::undo): when memory runs out before or during the step, mesh, history
-//   and `last` stay as they were ("undo flip e5: memory ran out; nothing was undone, the mesh is as it was", Error);
-//   when it runs out after the step (making `last`), the step is kept, the history too (it matches), `last` is
-//   marked not recorded and a Warning says so ("undo flip e5: done, but memory ran out listing its changes").
-// - show_state() always shows its mesh and replace_mesh() always replaces it; out of memory for show_state's `last`,
-//   `last` is marked not recorded and a Warning says so.
-// - No function here throws std::bad_alloc, except the caches' computations (cached_validation, cached_stats), which
-//   leave the cache as it was (their callers, the status bar and scripted checks, run under the frame or action
-//   guard). A message that cannot be built for lack of memory is kMemoryRanOut, which needs no allocation, as a
-//   Warning or worse.
+//   same version()); only `message` changes, memory running out included. The one exception is losing the
+//   state before (apply_operation).
+// - Out of memory: the document layer's rule of docs/ARCHITECTURE.md (Memory running out). No function here throws
+//   std::bad_alloc, except the caches' computations (cached_validation, cached_stats); apply_operation, undo, redo
+//   and show_state say what they keep when memory runs out. A message that cannot be built for lack of memory is
+//   kMemoryRanOut, as a Warning or worse.
 // - `last` always describes the most recent change to `mesh` (an operation, an undo or a redo): its diff goes
 //   from the state before (`last.patch`'s, or `last.before`) to the current mesh, unless the change was not recorded
-//   (above; then it only names it).
-//   `last.serial` grows by one each time `last` is replaced, so views that index the diff rebuild their index once
-//   per change, not once per frame.
-// - The validation and stats caches are keyed by (generation, mesh.version()): validate() and compute_stats()
-//   run at most once per mesh state, however many frames ask (validate() on a million triangles takes ~15 ms on two
-//   threads, ~130 ms at 1.6M faces after Loop). After a local change from a state the cache found clean, the new
-//   state is validated from `last.patch` alone (core/patch_check.h), in time proportional to the change; the answer
-//   is the whole-mesh check's.
+//   (then it only names it). `last.serial` grows by one each time `last` is replaced, so views that index the diff
+//   rebuild their index once per change, not once per frame.
+// - The validation and stats caches are keyed by (generation, mesh.version()): validate() and compute_stats() run
+//   at most once per mesh state, however many frames ask. After a local change from a state the cache found clean,
+//   the new state is validated from `last.patch` alone (core/patch_check.h), in time proportional to the change; the
+//   answer is the whole-mesh check's.
 // - Nothing here draws or touches ImGui: the document is plain data, tested without a window.
 #pragma once
 
@@ -186,7 +164,8 @@ struct MeshDocument {
 
 // A document for `mesh` (read from `path`, or "" when generated). History depth follows limits.
 MeshDocument make_document(HalfedgeMesh mesh, std::string path = {}, DocumentLimits limits = {});
-// Replaces the mesh (opening another file): empties history and `last`, bumps generation, keeps `limits`.
+// Replaces the mesh (opening another file): empties history and `last`, bumps generation, keeps `limits`. Always
+// replaces it, memory running out included.
 void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path);
 
 void set_message(MeshDocument& doc, Severity severity, std::string text, ElementRef element = {});
@@ -234,10 +213,22 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
 //   assigned mesh may bring any version; a change always ends with version() above the one before.
 // Refusal, or an exception (MeshError, std::exception): the mesh is restored if `op` touched it, history and
 //   `last` are untouched, and the message (Warning for a refusal, Error for an exception) gives the reason;
-//   an exception becomes a refused Check whose reason is its message (kMemoryRanOut for std::bad_alloc).
-// Memory ran out saving the state before (see the invariants): the mesh stays as `op` left it, history is cleared,
-//   `last` is not recorded and the message says so; the Check is `op`'s, as above.
-// Memory ran out recording a success (see the invariants): the edit is kept unrecorded; the Check is `op`'s.
+//   an exception becomes a refused Check whose reason is its message (kMemoryRanOut for std::bad_alloc). Putting
+//   the mesh back allocates nothing (the journal's snapshot is moved back, or its log written back), so an `op`
+//   that runs out of memory (std::bad_alloc from itself or from its journal's log) is refused so too ("flip e5:
+//   memory ran out; the mesh is as it was", Error).
+// Memory ran out saving the state before (the journal's snapshot; a mesh of millions of faces): nothing crashes and
+//   nothing `op` did is thrown away. The mesh stays as `op` left it, refused or not (there is no state to put back),
+//   version() moves above the one before, the history is cleared (its entries start from a state the mesh may no
+//   longer be in), `last` is marked not recorded, and the message says undo history was cleared because memory ran
+//   out (Warning on success, Error with the refusal's reason otherwise); the Check is `op`'s, as above. Later
+//   edits, undo and redo work as on a freshly opened mesh.
+// Memory ran out recording a success (its patch, the state before, the history entry, `last`): the edit is kept all
+//   the same, version() moves above the one before, `last` is marked not recorded and a Warning says what was lost;
+//   the Check is `op`'s. Without its history entry the history is cleared (undo would start from a state the mesh
+//   is no longer in): "flip e5: done, but memory ran out recording it: undo history cleared". With it (only `last`
+//   failed) the history still ends with the edit and is kept: "flip e5: done, but memory ran out listing its
+//   changes".
 // A local edit (setters only, fewer writes than the journal's cap) costs time proportional to the edit: no copy of
 // the mesh, the diff made from the patch. A snapshot-sized one (MeshStorage's direct writes, assigning the mesh)
 // costs a copy of the mesh (two when its diff is listed) and a pass over every slot.
@@ -260,14 +251,19 @@ auto apply_operation(MeshDocument& doc, const std::string& label, Op&& op) {
 
 // Undo/redo the last operation; `last` becomes the diff of the undo (or redo) itself, labelled
 // "undo flip e5" / "redo flip e5". Return false and set a message when there is nothing to undo/redo, or when
-// memory ran out before the step was taken (see the invariants).
+// memory ran out before the step was taken. All or nothing (History::undo): when memory runs out before or during
+// the step, mesh, history and `last` stay as they were ("undo flip e5: memory ran out; nothing was undone, the mesh
+// is as it was", Error); when it runs out after the step (making `last`), the step is kept, the history too (it
+// matches), `last` is marked not recorded and a Warning says so ("undo flip e5: done, but memory ran out listing its
+// changes").
 bool undo(MeshDocument& doc);
 bool redo(MeshDocument& doc);
 
 // Shows `mesh` in the document without touching history (the exercise replay steps through a recorded
 // operation this way): the mesh is replaced, its version moves above the old one, and `last` becomes the diff
 // from `from` (default: the mesh shown until now, moved there rather than copied) to `mesh`, labelled `label`.
-// generation and history stay.
+// generation and history stay. Always shows `mesh`; when memory runs out making `last`, `last` is marked not
+// recorded and a Warning says so.
 void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
                 std::optional<HalfedgeMesh> from = std::nullopt);
 
@@ -275,7 +271,10 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label,
 // some number above `limit` once the count passes it (it stops early). O(slots); allocates nothing.
 size_t count_changes(const HalfedgeMesh& before, const HalfedgeMesh& after, size_t limit);
 
-// validate() / compute_stats() of the current mesh, computed at most once per (generation, version).
+// validate() / compute_stats() of the current mesh, computed at most once per (generation, version) (validate() on
+// a million triangles takes ~15 ms on two threads, ~130 ms at 1.6M faces after Loop). The one place here that
+// throws std::bad_alloc, with the cache as it was: their callers (the status bar, scripted checks) run under the
+// frame or action guard.
 const ValidationReport& cached_validation(MeshDocument& doc);
 const MeshStats& cached_stats(MeshDocument& doc);
 // True when cached_validation() would return without running validate().

@@ -16,13 +16,7 @@
 //   exercise{...}   an exercise defined in Lua (exercise/scripted_exercise.h; a file of scripts/exercises is a suite):
 //               registers it, sets the suite's name, files and allow_api, and declares one test per fixture that
 //               runs the student's function on a copy of the fixture's mesh and checks it with expect.exercise
-// Inside `run`:
-//   student.NAME(...)       calls the submission's function NAME in its sandbox (arguments and results are
-//                           copied; meshes are shared, so the student's changes to a mesh are seen); an error
-//                           or a limit in student code raises here with the student's message
-//   student.has("NAME")     whether the submission defines it;  student.call("NAME", ...) = student.NAME(...)
-//   student.output()        what the student's code printed so far
-//   expect.*                the checks (expectations.h)
+// Inside `run`: what `student` and `expect` do is at run_test_here, below.
 //
 // Invariants:
 // - Everything a test needs from disk is read when the suite loads (the test process cannot open files): load
@@ -69,6 +63,13 @@ class Suite {
   void cap_time_limit(size_t index, double seconds);
 
   // Runs test `index` here, in this process. Never throws: problems become the run's end and error.
+  // Inside `run`:
+  //   student.NAME(...)       calls the submission's function NAME in its sandbox (arguments and results are
+  //                           copied; meshes are shared, so the student's changes to a mesh are seen); an error
+  //                           or a limit in student code raises here with the student's message
+  //   student.has("NAME")     whether the submission defines it;  student.call("NAME", ...) = student.NAME(...)
+  //   student.output()        what the student's code printed so far
+  //   expect.*                the checks (expectations.h)
   TestRun run_test_here(size_t index, const Submission& submission);
 
   struct Context;  // the test running now (suite.cpp)

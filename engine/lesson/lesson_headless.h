@@ -8,10 +8,6 @@
 // choose/pick/answer, the curve view's t). A headless key press only tells the lesson; it edits nothing, so the
 // window's Shift+L is {loop_phase = true} followed by {key = "shift+L"}.
 //
-// The transcript: each say() block as plain text, live text as "[live] ..." (again when an answer changed it), a
-// plot as "[plot TITLE: B0, B1 for x from 0 to 1, marker at 0.5]", a question once as "? TEXT (a | b | c)", each
-// answer as "> choose a: wrong: FEEDBACK" or "> answer 0.375: right", and "hint: ..." when a hint appears.
-//
 // Invariants:
 // - An answer the step does not wait for is used up and reported ("not awaited"), as a student's stray key.
 // - An answer with `feedback = "words"` must be judged wrong with feedback containing the words; otherwise the run
@@ -50,7 +46,10 @@ struct HeadlessOutcome {
 };
 
 // Runs the lesson, your_turn with the files of `student_folder` (none given: your_turn fails the step saying so).
-// Writes the transcript to `out`. Throws ScriptError when the answers file cannot be read or is malformed; a lesson
+// Writes the transcript to `out`: each say() block as plain text, live text as "[live] ..." (again when an answer
+// changed it), a plot as "[plot TITLE: B0, B1 for x from 0 to 1, marker at 0.5]", a question once as
+// "? TEXT (a | b | c)", each answer as "> choose a: wrong: FEEDBACK" or "> answer 0.375: right", and "hint: ..."
+// when a hint appears. Throws ScriptError when the answers file cannot be read or is malformed; a lesson
 // that fails to load or run is reported in the outcome.
 HeadlessOutcome run_lesson_headless(const std::filesystem::path& lesson,
                                     const std::optional<std::filesystem::path>& answers, std::ostream& out,

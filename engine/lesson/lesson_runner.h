@@ -8,13 +8,9 @@
 //   go_to, restart_step and reload stay possible.
 // - Each load uses a fresh LuaRuntime. A load is whole or nothing: the file is read and run to its list of steps
 //   (prepare) before anything the runner shows changes, then take() switches to it with steps that cannot fail and
-//   starts its step. A load that fails, memory running out included ("memory ran out"), keeps the lesson that was
-//   running before (if any), whole, so a typo saved during hot reload never takes the panel away; its error stays
-//   in error() until a load succeeds, and path() names the file asked for (unless memory ran out copying its name),
-//   so hot reload loads it once it is fixed.
-//   A step that cannot start or run for lack of memory is a failed step whose error says memory ran out.
-//   out_of_memory() says whether error() is memory running out, from where it was caught (the exception's type, the
-//   runtime's flag), never from the text.
+//   starts its step. A load that fails, memory running out included, keeps the lesson that was running before (if
+//   any), whole, so a typo saved during hot reload never takes the panel away (load()).
+// - Out of memory: the script layer's rule of docs/ARCHITECTURE.md (Memory running out), kept in out_of_memory().
 // - Entering a step (next, back, go_to, restart_step, a reload) clears the host's highlights and labels,
 //   forgets what the step said and runs its body from the start: a step rebuilds its own scene. Back is
 //   "run the previous step again from its start".
@@ -97,7 +93,9 @@ class LessonRunner {
   };
 
   // Loads the file and starts its first step: prepare, then take. False when the file cannot be read or run, or
-  // defines no step (error() says why).
+  // defines no step (error() says why; "memory ran out" when it did). The error stays in error() until a load
+  // succeeds, and path() names the file asked for (unless memory ran out copying its name), so hot reload loads it
+  // once it is fixed.
   bool load(const std::filesystem::path& path);
   // Loads the same file again and starts the same step index (clamped). False as load(): prepare_reload, then take
   // with current_step().
@@ -152,8 +150,9 @@ class LessonRunner {
   // "" when all is well; else "file:line: message" of the failed load or the failed step.
   const std::string& error() const { return load_error_.empty() ? step_error_ : load_error_; }
   // Whether error() is memory running out (a std::bad_alloc, or a Lua error raised for one: ScriptError::
-  // out_of_memory), which a retry can make go away; never guessed from the text, so a lesson's own
-  // error("memory ran out") is the lesson's error.
+  // out_of_memory), which a retry can make go away; told from where it was caught (the exception's type, the
+  // runtime's flag), never guessed from the text, so a lesson's own error("memory ran out") is the lesson's error.
+  // A step that cannot start or run for lack of memory is a failed step whose error says memory ran out.
   bool out_of_memory() const { return load_error_.empty() ? step_out_of_memory_ : load_out_of_memory_; }
 
  private:

@@ -23,22 +23,10 @@
 // - draw() and pick() read the mesh given to the last update() for the few highlighted elements and,
 //   when first asked for them, the halfedge arrows: that mesh must still exist (the app calls update()
 //   every frame before draw(), so it always does).
-// - ViewOptions::multisampling off draws single-sampled, whatever the framebuffer has; ViewOptions::back_sides off
-//   skips the pass that shows back sides when the mesh is closed (is_closed), in the picture and the id pass alike.
 // - A broken mesh (left so by a script) is drawn as far as it can be walked (mesh_geometry.h): faces
 //   whose cycle does not close are skipped and counted, nothing loops or reads out of range.
-// - Picking is exact: an id pass renders faces, then edges and halfedge arrows (when shown) as hairlines
-//   and vertices as single pixels, into an R32UI buffer, with the same depth test as the picture; pick()
-//   reads a small window around the cursor and prefers vertex > halfedge > edge > face within a few
-//   pixels (pick_id.h); among the vertices seen, the one projecting nearest the cursor. A large mesh whose
-//   live faces and edges are all drawn gets a faces-only id pass (a third of the cost) and its vertices,
-//   edges and arrows are found on the CPU from the faces seen around the cursor (pick_from_faces.h). The id
-//   buffer is redrawn only when the camera, viewport, mesh or options changed since the last pick, so
-//   hovering over a still view reads a few pixels only; pick_is_cheap() says whether the next pick would
-//   redraw it (the app waits for the mouse to rest after a camera move before it hovers).
-// - Edges and arrows are drawn over the faces without z-fighting: faces are pushed back with polygon
-//   offset. draw() leaves depth testing on and binds program 0 and vertex array 0 when it returns; it
-//   does not clear (the caller clears to style().background or its own colour).
+// - Picking is exact and redraws its id buffer only when the camera, viewport, mesh or options changed (pick()).
+// - Edges and arrows are drawn over the faces without z-fighting: faces are pushed back with polygon offset.
 #pragma once
 
 #include <cstdint>
@@ -105,12 +93,24 @@ class MeshRenderer {
   void update(const HalfedgeMesh& mesh, const MeshChange* change = nullptr);
   // Forces the next update() to rebuild, whatever the version says.
   void invalidate();
+  // ViewOptions::multisampling off draws single-sampled, whatever the framebuffer has; ViewOptions::back_sides off
+  // skips the pass that shows back sides when the mesh is closed (is_closed), in the picture and the id pass alike.
+  // Leaves depth testing on and binds program 0 and vertex array 0 when it returns; does not clear (the caller
+  // clears to style().background or its own colour).
   void draw(const OrbitCamera& camera, Viewport viewport, const ViewOptions& options, const Highlights& highlights);
   // The element under pixel (x, y) (top-left origin, framebuffer pixels), or an invalid ElementRef for
   // the background, a pixel outside the viewport, or before any update(). Halfedges are pickable only
   // when the last draw() showed them. Restores the caller's framebuffer and viewport.
+  // An id pass renders faces, then edges and halfedge arrows (when shown) as hairlines and vertices as single
+  // pixels, into an R32UI buffer, with the same depth test as the picture; pick() reads a small window around the
+  // cursor and prefers vertex > halfedge > edge > face within a few pixels (pick_id.h); among the vertices seen, the
+  // one projecting nearest the cursor. A large mesh whose live faces and edges are all drawn gets a faces-only id
+  // pass (a third of the cost) and its vertices, edges and arrows are found on the CPU from the faces seen around
+  // the cursor (pick_from_faces.h). The id buffer is redrawn only when the camera, viewport, mesh or options changed
+  // since the last pick, so hovering over a still view reads a few pixels only.
   ElementRef pick(const OrbitCamera& camera, Viewport viewport, int x, int y);
-  // True when pick() at this camera and viewport would only read pixels (the id buffer is current).
+  // True when pick() at this camera and viewport would only read pixels (the id buffer is current): the app waits
+  // for the mouse to rest after a camera move before it hovers.
   bool pick_is_cheap(const OrbitCamera& camera, Viewport viewport) const;
 
   // The GPU buffers read back in slot layout (tests: they must equal build_slot_geometry of the mesh), with the

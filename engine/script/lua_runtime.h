@@ -18,14 +18,10 @@
 // - Limits are counted per budget window: run_string and run_file each open their own; a host calling
 //   functions itself (load + call) opens one with start_budget(), and every call in it shares the budget,
 //   so a grader can give a whole test one budget however many times it calls into the script.
-// - print output is capped per window (set_print_limit): past the cap the callback gets one
-//   "[output truncated ...]" line and nothing more, and the text is never built past the cap in C++. A print that
-//   fails (the callback throws, or memory runs out building the line) is the Lua error "print failed: <what>", with
-//   "memory ran out" for a std::bad_alloc or a message that cannot be copied: reporting it cannot fail in turn.
-// - Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime SmallBlockPool, larger ones
-//   from malloc. The memory cap counts the bytes Lua asked for, whichever of the two served them.
-// - Memory running out (a binding's or the host's std::bad_alloc, Lua's allocator finding none) is flagged where it
-//   is caught (ran_out_of_memory, ScriptError::out_of_memory), and so is a binding's cap (note_cap,
+// - print output is capped per window (set_print_limit), and a print that fails is a Lua error (set_print).
+// - Out of memory: the script layer's rule of docs/ARCHITECTURE.md (Memory running out). Memory running out (a
+//   binding's or the host's std::bad_alloc, Lua's allocator finding none) is flagged where it is caught
+//   (ran_out_of_memory, ScriptError::out_of_memory), and so is a binding's cap (note_cap,
 //   ScriptError::Limit::Changes); callers never guess either from an error's text.
 // - No finalizer written in Lua ever runs (setmetatable refuses __gc), so neither a collection in the middle
 //   of a run nor closing the state can run script code outside the hook.
@@ -96,10 +92,13 @@ class LuaRuntime {
   const LuaLimits& limits() const { return limits_; }
   // New limits; they apply from the next budget window (the memory cap applies at once).
   void set_limits(const LuaLimits& limits) { limits_ = limits; }
-  // Where `print` writes: one call per print, the arguments joined by tabs, without the newline.
+  // Where `print` writes: one call per print, the arguments joined by tabs, without the newline. A print that fails
+  // (the callback throws, or memory runs out building the line) is the Lua error "print failed: <what>", with
+  // "memory ran out" for a std::bad_alloc or a message that cannot be copied: reporting it cannot fail in turn.
   void set_print(std::function<void(const std::string&)> print) { print_ = std::move(print); }
-  // At most `bytes` of printed text (tabs and newlines counted) reach the callback per budget window;
-  // 0 means no cap (the default).
+  // At most `bytes` of printed text (tabs and newlines counted) reach the callback per budget window; 0 means no cap
+  // (the default). Past the cap the callback gets one "[output truncated ...]" line and nothing more, and the text
+  // is never built past the cap in C++.
   void set_print_limit(size_t bytes) { print_limit_ = bytes; }
   // Whether output was dropped in the current (or last) window.
   bool print_truncated() const { return print_truncated_; }
@@ -126,7 +125,8 @@ class LuaRuntime {
   // at their first Lua instruction with the same limit (a budget is per window, not per call).
   int call(int nargs, int nresults);
 
-  // Bytes Lua holds now.
+  // Bytes Lua holds now. Lua's memory comes from allocate(): blocks up to 256 bytes from a per-runtime
+  // SmallBlockPool, larger ones from malloc. The memory cap counts the bytes Lua asked for, whichever served them.
   size_t memory_used() const { return memory_used_; }
 
   // Whether memory ran out in the current (or last) budget window: a C function turned a std::bad_alloc into a Lua

@@ -9,18 +9,8 @@
 //     ["Weights"] = { {curve_t = 0.25}, {answer = 0.375} },
 //   }
 //
-// Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
-// the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
-// {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
-// {subdivide_phase = "loop" | "catmull-clark" | "linear"} (the scheme's next phase; {loop_phase = true} is Loop's, as
-// Shift+L), {triangulate = true} (Edit > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
-// repaired copy of that file, a path from the lesson's folder)); each of these menu commands also tells the lesson
-// its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
-// ({choose = "h4"} for choose{}; a click answers pick{};
-// {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), {curve_t = 0.25} (the curve view's t,
-// as its slider sets it), {patch_uv = {0.25, 0.5}} (the patch view's probe, as its u and v sliders set it) and
-// {curve_click = {0.9, 1.1}} (a click in the curve view at that point, in the curve's coordinates: it answers
-// pick{on = "curve"}; it counts as on the curve within 2% of the control points' extent).
+// Answers, one per table: a key, a click, a selection, a button, an edit the window makes, an answer to a question,
+// the curve or patch view's probe (all of them at ScriptedAnswer, below).
 //
 // A choose, click, answer or curve_click may also carry `feedback = "words"`: the answer must then be judged wrong,
 // with feedback containing those words, or the run fails. That is how a test checks that a lesson names a mistake.
@@ -46,6 +36,18 @@
 
 namespace meshedit {
 
+// Answers, one per table: {key = "F"}, {click = "v3" | "vertex"}, {selection = "e7" | "edge"}, {button = "Continue"},
+// the edits a key or a menu command makes in the window ({flip = "e7"}, {split = "e7"}, {collapse = "e7"},
+// {subdivide = true} (Loop, as L), {subdivide = "loop" | "catmull-clark" | "linear"} (the Subdivide menu),
+// {subdivide_phase = "loop" | "catmull-clark" | "linear"} (the scheme's next phase; {loop_phase = true} is Loop's, as
+// Shift+L), {triangulate = true} (Edit > Triangulate), {open_repaired = "../assets/x.ply"} (File > Open a
+// repaired copy of that file, a path from the lesson's folder)); each of these menu commands also tells the lesson
+// its command's name (lesson_events.h: "catmull-clark-phase"), as the window's menu does; the answers to questions
+// ({choose = "h4"} for choose{}; a click answers pick{};
+// {answer = 0.375 | "3/8" | {0.5, 1}} for answer{}, as typed into its box), {curve_t = 0.25} (the curve view's t,
+// as its slider sets it), {patch_uv = {0.25, 0.5}} (the patch view's probe, as its u and v sliders set it) and
+// {curve_click = {0.9, 1.1}} (a click in the curve view at that point, in the curve's coordinates: it answers
+// pick{on = "curve"}; it counts as on the curve within 2% of the control points' extent).
 struct ScriptedAnswer {
   enum class Kind {
     Key,

@@ -3,32 +3,7 @@
 // curve_t and curve_points: lesson_displays.h) and the state they fill in. LessonRunner owns one LessonScript per
 // loaded file; this file knows nothing about steps being run, only what each call is allowed to do.
 //
-// Lua API (a lesson file also has the whole `meshedit` module):
-//   lesson { title = "...", summary = "..." }     top level; both optional (title defaults to the file's stem)
-//   step("Title", function() ... end)             top level; steps run in the order they are defined
-//   say(markdown)                                 a text block for the panel: # heading, **bold**, *italic*,
-//                                                 `code`, [link](url), "- " lists, blank lines between paragraphs
-//   wait_for { key = "F" }                        -> the key as pressed ("f"); names as in scripted actions:
-//                                                    "F", "shift+L", "ctrl+Z" (case ignored)
-//   wait_for { click = "vertex" | "e7" | element | "any" }       -> the clicked element
-//   wait_for { selection = "e7" | "edge" | element | "any" }     -> the selected element (also met when it is
-//                                                    already selected, at the next frame)
-//   wait_for { condition = function() ... end }   -> its first truthy value; checked now, then once per frame
-//   wait_for { button = "Continue" }              -> the label; the panel shows the button
-//     every wait_for also takes hint = "..." (one line under the text; a default is made for key, click,
-//     selection and button). Elements come back as handles on a copy of the mesh on screen (`e.mesh`), or as
-//     the id string when no mesh is shown.
-//   animate(seconds, function(t) ... end)         calls the function with t from 0 to 1 as the frames pass
-//   show(mesh | curve | patch | {points...} | {{16 points}, ...})   a mesh, a 2D curve (z = 0), or patches
-//   highlight(element | "e7" | {elements...}, colour)   colour: "red" ... "#rrggbb" or {r, g, b} in [0, 1];
-//                                                 names give the palette's colour-blind-safe swatches
-//                                                 (core/palette.h); default: the last-edit colour
-//   label(element | "e7", text)    clear()  (removes highlights and labels)
-//   camera "fit" | "reset" | { fit =, reset =, yaw =, pitch = (degrees), distance =, target = point }
-//   current_mesh() -> a copy of the mesh on screen (with the student's edits), or nil
-//   selection()    -> the selected element (a handle on a copy of the mesh on screen), or nil
-//   lesson_file(relative) -> the path of a file next to the lesson ("../assets/teapot.bez" from lessons/),
-//                            for meshedit.load/load_patches/load_curve; callable at any phase
+// Lua API: listed at open_lesson_api, below.
 //
 // Invariants:
 // - `lesson{}` and `step()` are accepted only while the file's top level runs (phase Loading); scene calls
@@ -93,6 +68,33 @@ struct LessonScript {
 
 // Defines the lesson globals in `runtime` (once, before the lesson file runs), all bound to `script`,
 // which must outlive the runtime's use. Throws ScriptError if the API's own prelude fails.
+//
+// Lua API (a lesson file also has the whole `meshedit` module):
+//   lesson { title = "...", summary = "..." }     top level; both optional (title defaults to the file's stem)
+//   step("Title", function() ... end)             top level; steps run in the order they are defined
+//   say(markdown)                                 a text block for the panel: # heading, **bold**, *italic*,
+//                                                 `code`, [link](url), "- " lists, blank lines between paragraphs
+//   wait_for { key = "F" }                        -> the key as pressed ("f"); names as in scripted actions:
+//                                                    "F", "shift+L", "ctrl+Z" (case ignored)
+//   wait_for { click = "vertex" | "e7" | element | "any" }       -> the clicked element
+//   wait_for { selection = "e7" | "edge" | element | "any" }     -> the selected element (also met when it is
+//                                                    already selected, at the next frame)
+//   wait_for { condition = function() ... end }   -> its first truthy value; checked now, then once per frame
+//   wait_for { button = "Continue" }              -> the label; the panel shows the button
+//     every wait_for also takes hint = "..." (one line under the text; a default is made for key, click,
+//     selection and button). Elements come back as handles on a copy of the mesh on screen (`e.mesh`), or as
+//     the id string when no mesh is shown.
+//   animate(seconds, function(t) ... end)         calls the function with t from 0 to 1 as the frames pass
+//   show(mesh | curve | patch | {points...} | {{16 points}, ...})   a mesh, a 2D curve (z = 0), or patches
+//   highlight(element | "e7" | {elements...}, colour)   colour: "red" ... "#rrggbb" or {r, g, b} in [0, 1];
+//                                                 names give the palette's colour-blind-safe swatches
+//                                                 (core/palette.h); default: the last-edit colour
+//   label(element | "e7", text)    clear()  (removes highlights and labels)
+//   camera "fit" | "reset" | { fit =, reset =, yaw =, pitch = (degrees), distance =, target = point }
+//   current_mesh() -> a copy of the mesh on screen (with the student's edits), or nil
+//   selection()    -> the selected element (a handle on a copy of the mesh on screen), or nil
+//   lesson_file(relative) -> the path of a file next to the lesson ("../assets/teapot.bez" from lessons/),
+//                            for meshedit.load/load_patches/load_curve; callable at any phase
 void open_lesson_api(LuaRuntime& runtime, LessonScript& script);
 
 // Forgets what the running step showed (its text, blocks, judgements) and releases the registry references its live

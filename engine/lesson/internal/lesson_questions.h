@@ -23,13 +23,9 @@
 // - A wrong answer never returns: the step waits on the same question, whose wait (LessonWait) has `tries` one more
 //   and `feedback` set to the lesson's text for that answer (a feedback table's entry, the feedback function's
 //   value, a pick answer function's second value), or a default that names the answer and never the right one.
-//   Text typed into answer{} that is not a number (or a point of the right size) is told how to write one, and is not
-//   counted as a try; so is a click on the curve view that is not on the curve (farther from it than the event's
-//   radius: the window's pick radius in pixels).
-// - `hint` shows only after the first wrong try (LessonWait::hint_shown).
+// - `hint` shows only after the first wrong try (LessonWait::hint_shown); what counts as a try: open_lesson_questions.
 // - Every judgement is recorded in LessonScript (last_judgement, judgements); a right one also becomes an Answered
-//   block with the question, the answer and the lesson's words on it (a feedback table's entry for the right option
-//   or id, or the answer function's second value), so the panel keeps what was asked.
+//   block, so the panel keeps what was asked (open_lesson_questions).
 // - The lesson's functions (pick's answer and feedback, answer's feedback) run inside the step's coroutine under its
 //   budget; their errors fail the step at their own line.
 #pragma once
@@ -40,6 +36,11 @@ namespace meshedit {
 
 // Defines choose, pick and answer in `runtime` (after open_lesson_api), bound to `script`. Throws ScriptError if the
 // API's own prelude fails.
+// Text typed into answer{} that is not a number (or a point of the right size) is told how to write one, and is not
+// counted as a try; so is a click on the curve view that is not on the curve (farther from it than the event's
+// radius: the window's pick radius in pixels).
+// A right answer's Answered block holds the question, the answer and the lesson's words on it (a feedback table's
+// entry for the right option or id, or the answer function's second value).
 void open_lesson_questions(LuaRuntime& runtime, LessonScript& script);
 
 }  // namespace meshedit
