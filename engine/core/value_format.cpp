@@ -1,5 +1,8 @@
-// Shortest round-trip printing of doubles, counts with their nouns, byte sizes (see value_format.h).
+// Shortest round-trip and rounded printing of doubles, counts with their nouns, byte sizes (see value_format.h).
 #include "core/value_format.h"
+
+#include <algorithm>
+#include <cstdio>
 
 #include "core/number_chars.h"
 
@@ -19,6 +22,18 @@ std::string format_number(double x) {
   std::string text;
   append_number(text, x);
   return text;
+}
+
+std::string format_rounded(double x, int digits) {
+  char buffer[32];  // 17 digits, a sign, a point and a 4-character exponent
+  std::snprintf(buffer, sizeof buffer, "%.*g", std::clamp(digits, 1, 17), x);
+  return buffer;
+}
+
+std::string format_fixed(double x, int decimals) {
+  char buffer[352];  // DBL_MAX has 309 digits before the point
+  std::snprintf(buffer, sizeof buffer, "%.*f", std::clamp(decimals, 0, 17), x);
+  return buffer;
 }
 
 std::string format_position(const glm::dvec3& p) {

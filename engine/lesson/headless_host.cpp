@@ -5,15 +5,13 @@
 #include <cmath>
 #include <cstdio>
 
+#include "core/value_format.h"
+
 namespace meshedit {
 namespace {
 
-// Shortest round-trip-ish form for messages: 30, 0.5, -2.25 (no trailing zeros).
-std::string number(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.10g", value);
-  return buffer;
-}
+// A number in a message: 30, 0.5, -2.25 (ten digits, no trailing zeros).
+std::string number(double value) { return format_rounded(value, 10); }
 
 std::string mesh_summary(const HalfedgeMesh& mesh) {
   return "(" + std::to_string(mesh.num_vertices()) + " vertices, " + std::to_string(mesh.num_edges()) + " edges, " +

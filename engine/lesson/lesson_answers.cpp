@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <iterator>
 #include <utility>
 
 #include "core/file_bytes.h"
 #include "core/subdivision_phases.h"
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
@@ -49,11 +49,7 @@ std::string read_text(const std::filesystem::path& path) {
   return std::move(file.bytes);
 }
 
-std::string number_text(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.17g", value);
-  return buffer;
-}
+std::string number_text(double value) { return format_rounded(value, 17); }
 
 // The value at the top of the stack as an answer{} text: a number, a text as typed, or a list of 2 or 3 numbers.
 std::string value_text(lua_State* L, const std::string& where) {

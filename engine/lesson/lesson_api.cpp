@@ -15,7 +15,6 @@
 #include "lesson/internal/lesson_api.h"
 
 #include <cmath>
-#include <cstdio>
 #include <cstring>
 #include <exception>
 #include <filesystem>
@@ -27,6 +26,7 @@
 
 #include <lua.hpp>
 
+#include "core/value_format.h"
 #include "lesson/internal/lesson_api_support.h"
 #include "lesson/internal/lesson_displays.h"
 #include "lesson/internal/lesson_questions.h"
@@ -206,9 +206,8 @@ void show_curve(lua_State* L, LessonHost& host, int index) {
   BezierCurve curve;
   for (size_t i = 0; i < points.size(); ++i) {
     if (points[i].z != 0.0) {
-      char z[32];
-      std::snprintf(z, sizeof z, "%g", points[i].z);
-      raise(L, "show: curves are drawn in 2D, but point " + std::to_string(i + 1) + " has z = " + z);
+      raise(L, "show: curves are drawn in 2D, but point " + std::to_string(i + 1) +
+                   " has z = " + format_rounded(points[i].z));
     }
     curve.control_points.emplace_back(points[i].x, points[i].y);
   }

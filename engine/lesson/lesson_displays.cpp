@@ -4,12 +4,12 @@
 #include <algorithm>
 #include <cctype>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include <lua.hpp>
 
 #include "core/palette.h"
+#include "core/value_format.h"
 #include "lesson/internal/lesson_api_support.h"
 #include "script/lua_runtime.h"
 #include "script/vec3_bindings.h"
@@ -26,11 +26,7 @@ const glm::vec3 kCurveColours[] = {kDarkSwatches.blue,           kDarkSwatches.o
                                    kDarkSwatches.reddish_purple, kDarkSwatches.sky_blue, kDarkSwatches.vermillion,
                                    kDarkSwatches.yellow};
 
-std::string number_text(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%g", value);
-  return buffer;
-}
+std::string number_text(double value) { return format_rounded(value); }
 
 // Whether `message` starts with "name:LINE:", as Lua's own errors do.
 bool has_place(const std::string& message) {

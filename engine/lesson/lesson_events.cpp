@@ -4,8 +4,9 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <iterator>
+
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
@@ -73,9 +74,7 @@ std::string LessonWait::describe() const {
     case Kind::Condition: return "a condition";
     case Kind::Button: return "the " + name + " button";
     case Kind::Animation: {
-      char buffer[48];
-      std::snprintf(buffer, sizeof buffer, "an animation (%g s)", seconds);
-      return buffer;
+      return "an animation (" + format_rounded(seconds) + " s)";
     }
     case Kind::Choice: {
       std::string list;

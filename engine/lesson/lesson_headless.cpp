@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cctype>
-#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <deque>
@@ -19,6 +18,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_repair.h"
 #include "core/subdivision_phases.h"
+#include "core/value_format.h"
 #include "document/mesh_edits.h"
 #include "io/mesh_file.h"
 #include "lesson/headless_host.h"
@@ -221,9 +221,8 @@ class HeadlessDriver {
   void print_plot(const LessonPlot& plot) {
     std::string labels;
     for (const LessonPlotCurve& curve : plot.curves) labels += (labels.empty() ? "" : ", ") + curve.label;
-    char range[96];
-    std::snprintf(range, sizeof range, " for x from %g to %g", plot.x_range[0], plot.x_range[1]);
-    out_ << "  [plot " << (plot.title.empty() ? "" : plot.title + ": ") << labels << range;
+    out_ << "  [plot " << (plot.title.empty() ? "" : plot.title + ": ") << labels << " for x from "
+         << format_rounded(plot.x_range[0]) << " to " << format_rounded(plot.x_range[1]);
     if (plot.marker) out_ << ", marker at " << *plot.marker;
     if (!plot.error.empty()) out_ << "; marker stopped: " << plot.error;
     out_ << "]\n";

@@ -2,23 +2,19 @@
 #include "ui/lesson_plot_view.h"
 
 #include <algorithm>
-#include <cstdio>
 #include <string>
 #include <vector>
 
 #include <imgui.h>
 
+#include "core/value_format.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 
 namespace meshedit {
 namespace {
 
-std::string number_text(double value) {
-  char buffer[32];
-  std::snprintf(buffer, sizeof buffer, "%.3g", value);
-  return buffer;
-}
+std::string number_text(double value) { return format_rounded(value, 3); }
 
 // Maps plot coordinates to the screen rectangle [min, max] (y up).
 struct PlotFrame {

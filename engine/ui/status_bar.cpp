@@ -3,12 +3,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdio>
 #include <string>
 
 #include <imgui.h>
 
 #include "core/validate.h"
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
@@ -60,8 +60,8 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
   if (ImGui::Begin("##status bar", nullptr, flags)) {
     // The up axis and the frame time keep their place at the right end; the rest, whose length varies (a message,
     // the view's note, undo hints), is clipped before them rather than pushing them off the window.
-    char frame[32];
-    std::snprintf(frame, sizeof frame, "%.1f ms", static_cast<double>(frame_ms));
+    const std::string frame_text = format_fixed(frame_ms, 1) + " ms";
+    const char* frame = frame_text.c_str();
     const bool show_axis = !state.up_axis.empty() && state.view_is_3d;
     const float gap = 24.0f;
     const float right_width =
