@@ -35,11 +35,6 @@ std::string not_judged(const Judging& judging) {
 
 }  // namespace
 
-std::string ratio_status(double ratio, double target, const Judging& judging) {
-  if (!judging.judged()) return not_judged(judging);
-  return ratio >= target ? "met" : "NOT met";
-}
-
 std::string row_status(const TableRow& row, const Judging& judging) {
   if (!row.has_target) return "-";
   int measured = 0, met = 0;

@@ -38,7 +38,4 @@ void print_table(const std::vector<TableRow>& rows, int threads, const Judging& 
 // "met", "NOT met", "n/a ...", or "not judged (load ...)" for one row.
 std::string row_status(const TableRow& row, const Judging& judging);
 
-// The status of a ratio against a target, as row_status words it: "met", "NOT met" or "not judged (load ...)".
-std::string ratio_status(double ratio, double target, const Judging& judging);
-
 }  // namespace meshedit::bench
