@@ -4,10 +4,10 @@
 // copying its bytes; elsewhere (page_memory_portable.cpp) it comes from the C heap and grows with realloc.
 //
 // Why: a subdivided mesh of millions of faces is hundreds of megabytes written once. On the machines MeshEdit runs
-// on, faulting in fresh 4 KiB pages costs about as much as the subdivision itself (~2 us a page); transparent huge
+// on, faulting in fresh 4 KiB pages costs about as much as the subdivision itself; transparent huge
 // pages fault 512 times fewer pages. Where THP is off or refused, the mapping is ordinary memory and nothing else
 // changes. MESHEDIT_NO_HUGEPAGES=1 in the environment skips the madvise, to measure what huge pages buy (peer_bench
-// --cold, 100k faces x 3 levels of Loop: about 1.7x). Growing in place matters for the first edit that appends to
+// --cold). Growing in place matters for the first edit that appends to
 // an exactly sized array (the first split after opening a mesh or after Loop subdivision): at 1M faces that array
 // holds 60 MB of halfedges, which a copy into fresh memory would have to fault in and write.
 //

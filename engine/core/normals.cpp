@@ -170,8 +170,7 @@ bool triangle_term_from(const HalfedgeMesh& mesh, HalfedgeId h0, glm::dvec3& out
 // After subdivision a face's halfedges and corners lie far apart in the arrays, so the chain face -> h0 -> h1 -> h2
 // and the corners' positions and sums are prefetched a few faces ahead, one link per stage (dead faces are skipped
 // there too: their halfedge may be any id). The prefetches are written out at each stage (memory_hints.h's inline
-// calls, which GCC 12 keeps: the object code has all of them): it dropped all six when they sat in a helper lambda
-// (a call with no effect it can see), and the pass ran 1.7x slower.
+// calls): GCC drops a prefetch inside a helper lambda, a call with no effect it can see.
 void add_face_terms(const HalfedgeMesh& mesh, size_t begin, size_t end, glm::dvec3* sums) {
   constexpr size_t kAhead = 32;
   const auto live = [&](size_t f) { return f < end && mesh.alive(FaceId::face(uint32_t(f))); };
@@ -251,11 +250,11 @@ void zero_sums(std::vector<glm::dvec3>& sums, size_t vertices, int threads) {
 }
 
 // vertex_normals on a mesh proven valid with triangle faces only: the faces' terms are scattered to their corners
-// in face order (about 3x faster than walking each vertex's fan, where a fan's halfedges are a chain of dependent
-// cache misses). Each vertex gets the same terms as vertex_normal, added in another order, so the two agree to
-// rounding. With more threads, each adds its share of the faces into its own sums (the first into `normals`) and
-// the sums are added per vertex, so the last bits depend on the thread count. The shares are stripes across the
-// faces: the first faces after Loop (the old ids) cost about twice as much as the rest.
+// in face order (walking each vertex's fan instead makes its halfedges a chain of dependent cache misses). Each vertex
+// gets the same terms as vertex_normal, added in another order, so the two agree to rounding. With more threads, each
+// adds its share of the faces into its own sums (the first into `normals`) and the sums are added per vertex, so the
+// last bits depend on the thread count. The shares are stripes across the faces: the first faces after Loop (the old
+// ids) cost about twice as much as the rest.
 void face_order_normals(const HalfedgeMesh& mesh, std::vector<glm::dvec3>& normals, int threads) {
   const size_t vertices = mesh.vertex_capacity(), faces = mesh.face_capacity();
   zero_sums(normals, vertices, threads);

@@ -34,7 +34,7 @@ void count_upload(size_t bytes);
 void write_buffer(GLenum target, GLuint buffer, size_t offset, const void* data, size_t bytes);
 // A buffer of `capacity` bytes, the first `bytes` from `data` (counted), the rest undefined. A buffer that already
 // has exactly that size keeps its storage (only the data is written): a full rebuild at the same slot counts then
-// faults in no fresh driver memory (llvmpipe at 1M faces: upload ~230-490 ms -> ~7-10 ms).
+// faults in no fresh driver memory (on llvmpipe, fresh memory costs far more than the copy itself).
 void allocate_buffer(GLenum target, GLuint buffer, size_t capacity, const void* data, size_t bytes);
 
 // A buffer texture (samplerBuffer / usamplerBuffer) over its own buffer; `format` e.g. GL_R32UI.

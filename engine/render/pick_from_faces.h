@@ -1,6 +1,6 @@
 // pick_from_faces: picking on a large mesh from an id window that holds faces only. The renderer's exact id pass
-// also draws every edge, arrow and vertex, which costs three times what the faces do on llvmpipe (300 vs 87 ms at
-// a million triangles, render_bench); on a large mesh whose live elements are all drawn, the faces seen around
+// also draws every edge, arrow and vertex, which costs several times what the faces do on a software rasteriser
+// (render_bench prints both); on a large mesh whose live elements are all drawn, the faces seen around
 // the cursor are enough to find the smaller elements on the CPU.
 //
 // The rule, the same priorities and radii as the exact pass (pick_id.h):

@@ -8,7 +8,7 @@
 //   StatusBarState::auto_validate_max_halfedges are validated only when the user presses "validate", unless the
 //   cache can answer without a whole-mesh pass (cached_validation_if_cheap: a vouched mesh, or a local edit of a
 //   state it found valid that its patch shows kept it valid), so edits on a big mesh stay validated once it has
-//   been; an edit that breaks it waits for the button (the report needs the whole mesh: ~0.5 s at 2.5M faces).
+//   been; an edit that breaks it waits for the button (the report needs a walk of the whole mesh).
 // - Counts and the Euler characteristic come from the mesh's live counters: O(1) per frame.
 #pragma once
 
@@ -23,7 +23,7 @@
 namespace meshedit {
 
 struct StatusBarState {
-  size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles; validate() costs ~0.1 s per million halfedges
+  size_t auto_validate_max_halfedges = 4000000;  // ~1.3M triangles: a whole-mesh validate() past it costs frames
   UiProbe* probe = nullptr;                      // tests: where the buttons were drawn
   bool mesh_shown = true;  // the mesh view is on screen: counts, validation and undo (else the message line only)
   bool view_is_3d = true;  // the up axis means something (not in the curve view)

@@ -19,7 +19,7 @@ namespace {
 namespace fs = std::filesystem;
 
 // GLFW's key numbers, as the window's backend maps them (a letter is its ASCII capital).
-constexpr int kKeyEnd = 269, kKeyDown = 264, kKeyLeftControl = 341;
+constexpr int kKeyEnd = 269, kKeyDown = 264, kKeyLeftControl = 341, kKeyS = 83;
 
 const std::string kLongLine = "local far = \"" + std::string(300, 'x') + "\" -- the end";
 
@@ -135,12 +135,12 @@ TEST_F(StudentEditorTest, CtrlSInTheEditorAsksForASave) {
   ImGuiIO& io = ImGui::GetIO();
   io.KeyCtrl = true;
   io.KeysDown[kKeyLeftControl] = true;
-  io.KeysDown['S'] = true;
+  io.KeysDown[kKeyS] = true;
   draw();
   EXPECT_TRUE(panel.save);
   draw();
   EXPECT_FALSE(panel.save) << "a key held down saves once";
-  io.KeysDown['S'] = false;
+  io.KeysDown[kKeyS] = false;
   io.KeysDown[kKeyLeftControl] = false;
   io.KeyCtrl = false;
   // S alone types an S and asks for nothing.
