@@ -44,7 +44,8 @@ std::optional<Exercise> ExerciseRegistry::find(std::string_view name) const {
 
 std::string ExerciseRegistry::unknown_name_error(std::string_view name) const {
   std::string known;
-  for (const Exercise builtin : builtin_exercises()) known += (known.empty() ? "" : ", ") + std::string(builtin.info().name);
+  for (const Exercise builtin : builtin_exercises())
+    known += (known.empty() ? "" : ", ") + std::string(builtin.info().name);
   for (const ExerciseSlot& slot : slots_) known += ", " + std::string(slot.definition->info().name);
   return "no exercise is called '" + std::string(name) + "'; the exercises are " + known;
 }
