@@ -16,6 +16,7 @@
 #include "app/window_host.h"
 #include "document/document_actions.h"
 #include "document/mesh_edits.h"
+#include "exercise/exercise_registry.h"
 #include "io/file_access.h"
 
 namespace meshedit {
@@ -306,7 +307,9 @@ std::string exercise(EditorApp& app, const Action& a) {
   const auto which = find_exercise(a.args[0]);
   if (which == Exercise::CurveStep || which == Exercise::PatchEvaluate) {
     app.bezier_mine().set_folder(a.args[1]);
-  } else if (!which || !app.exercises().set_exercise(*which)) {
+  } else if (!which) {
+    throw std::runtime_error(exercise_registry().unknown_name_error(a.args[0]));
+  } else if (!app.exercises().set_exercise(*which)) {
     throw std::runtime_error("no exercise " + a.args[0]);
   } else {
     app.exercises().set_folder(a.args[1]);

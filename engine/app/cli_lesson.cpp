@@ -11,6 +11,7 @@
 
 #include "app/cli_commands.h"
 #include "document/student_file.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "lesson/lesson_headless.h"
 #include "script/lua_runtime.h"

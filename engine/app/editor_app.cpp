@@ -12,6 +12,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "document/exception_report.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "io/file_error.h"
 #include "io/mesh_file.h"

@@ -45,8 +45,8 @@ Check EditorApp::show_your_turn_mine() {
   try {
     const YourTurnVerdict verdict = *found;  // the runner's list may grow while the window changes
     const ExerciseInput& input = verdict.exercise_input;
-    switch (verdict.exercise) {
-      case Exercise::CurveStep: {
+    switch (verdict.exercise.kind()) {
+      case ExerciseKind::CurveStep: {
         BezierCurve curve;
         for (const glm::dvec3& p : input.points) curve.control_points.emplace_back(p.x, p.y);
         show_curve(curve);
@@ -57,7 +57,7 @@ Check EditorApp::show_your_turn_mine() {
         set_message(doc_, Severity::Info, "mine: your " + verdict.function + " on " + verdict.input + ", every level");
         return Check::yes();
       }
-      case Exercise::PatchEvaluate: {
+      case ExerciseKind::PatchEvaluate: {
         show_patches({input.patch});
         set_probe(patches_, input.u, input.v);
         bezier_mine_.set_folder(lesson_->student_folder());
@@ -65,10 +65,10 @@ Check EditorApp::show_your_turn_mine() {
         set_message(doc_, Severity::Info, "mine: your " + verdict.function + " at " + verdict.input);
         return Check::yes();
       }
-      case Exercise::VertexNormal:
-      case Exercise::FlipEdge:
-      case Exercise::SplitEdge:
-      case Exercise::Upsample: break;
+      case ExerciseKind::VertexNormal:
+      case ExerciseKind::FlipEdge:
+      case ExerciseKind::SplitEdge:
+      case ExerciseKind::Upsample: break;
     }
     if (!is_mesh_exercise(verdict.exercise)) {  // a scripted exercise on points or a patch: the tab's text tables
       exercises_.finish_replay(doc_);

@@ -18,6 +18,7 @@
 #include "core/mesh_error.h"
 #include "document/document_actions.h"
 #include "document/exception_report.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "script/lua_runtime.h"
 
@@ -29,11 +30,11 @@ static_assert(std::is_nothrow_move_constructible_v<ExerciseRun> && std::is_nothr
 static_assert(std::is_nothrow_move_assignable_v<HalfedgeMesh>);
 
 const char* operation_word(Exercise exercise) {
-  switch (exercise) {
-    case Exercise::FlipEdge: return "flip";
-    case Exercise::SplitEdge: return "split";
-    case Exercise::VertexNormal: return "normal";
-    case Exercise::Upsample: return "upsample";
+  switch (exercise.kind()) {
+    case ExerciseKind::FlipEdge: return "flip";
+    case ExerciseKind::SplitEdge: return "split";
+    case ExerciseKind::VertexNormal: return "normal";
+    case ExerciseKind::Upsample: return "upsample";
     default: return exercise_info(exercise).name;
   }
 }
@@ -41,23 +42,23 @@ const char* operation_word(Exercise exercise) {
 // The input the active exercise takes from the selection, or why the selection does not fit.
 OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, const Selection& selection) {
   auto mesh = std::make_shared<const HalfedgeMesh>(doc.mesh);
-  switch (exercise) {
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge: {
+  switch (exercise.kind()) {
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge: {
       const OpResult<EdgeId> edge = edge_for_operation(doc.mesh, selection.selected);
       if (!edge.ok()) return {edge.check, {}};
       return {Check::yes(), ExerciseInput::edge(std::move(mesh), edge.value)};
     }
-    case Exercise::VertexNormal: {
+    case ExerciseKind::VertexNormal: {
       const ElementRef ref = selection.selected;
       if (!ref.valid() || ref.kind != ElementKind::Vertex) return {Check::no("select a vertex first"), {}};
       if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
       return {Check::yes(), ExerciseInput::vertex(std::move(mesh), VertexId(ref.index))};
     }
-    case Exercise::Upsample: return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
+    case ExerciseKind::Upsample: return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
     default: break;
   }
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
     if (!scripted->takes()) return {Check::yes(), ExerciseInput::whole_mesh(std::move(mesh))};
     const ElementKind kind = *scripted->takes();
     if (kind == ElementKind::Edge) {  // as flip and split take it: a selected halfedge names its edge
@@ -87,7 +88,7 @@ std::string point_text(const std::vector<glm::dvec3>& points) {
 
 std::vector<Exercise> mesh_exercises() {
   std::vector<Exercise> all = {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
-  for (Exercise scripted : scripted_exercises()) all.push_back(scripted);
+  for (Exercise scripted : exercise_registry().scripted()) all.push_back(scripted);
   return all;
 }
 
@@ -100,7 +101,7 @@ void ExerciseSession::set_folder(std::filesystem::path folder) {
 }
 
 bool ExerciseSession::set_exercise(Exercise exercise) {
-  if (!is_mesh_exercise(exercise) && !scripted_exercise(exercise)) return false;
+  if (!is_mesh_exercise(exercise) && !exercise.definition()) return false;
   exercise_ = exercise;
   fixture_ = 0;
   values_input_.reset();
@@ -109,7 +110,7 @@ bool ExerciseSession::set_exercise(Exercise exercise) {
 }
 
 bool ExerciseSession::set_fixture(size_t index) {
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  const std::shared_ptr<const ScriptedExercise> scripted = exercise_.definition();
   if (!scripted || !scripted->takes_values() || index >= scripted->fixtures().size()) return false;
   fixture_ = index;
   values_input_.reset();
@@ -122,7 +123,7 @@ void ExerciseSession::set_values_input(ExerciseInput input, std::string what) {
 }
 
 OpResult<ExerciseInput> ExerciseSession::values_input_for(std::string& what) const {
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  const std::shared_ptr<const ScriptedExercise> scripted = exercise_.definition();
   if (values_input_) {
     what = values_input_name_;
     return {Check::yes(), *values_input_};
@@ -160,12 +161,12 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
   finish_replay(doc);
   const char* who = mine ? "mine" : "reference";
   // An instructor's exercise whose definition was saved since: its new version runs (or its error is shown).
-  if (const std::string error = reload_scripted_exercise_if_changed(exercise_); !error.empty()) {
+  if (const std::string error = exercise_registry().reload_if_changed(exercise_); !error.empty()) {
     Check refused = Check::no("the exercise's definition did not load: " + error);
     set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
     return refused;
   }
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise_);
+  const std::shared_ptr<const ScriptedExercise> scripted = exercise_.definition();
   const bool on_values = scripted && scripted->takes_values();
   std::string values_what;
   OpResult<ExerciseInput> input = on_values ? values_input_for(values_what) : input_for(exercise_, doc, selection);

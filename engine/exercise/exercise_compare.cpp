@@ -34,18 +34,18 @@ void add_run_failure(Exercise exercise, const ExerciseInput& input, const Exerci
 // ---- public functions ------------------------------------------------------------------------------
 
 std::string unfinished_run_hint(Exercise exercise) {
-  switch (exercise) {
-    case Exercise::Upsample:
+  switch (exercise.kind()) {
+    case ExerciseKind::Upsample:
       return "upsample did not finish: split only the edges of the original mesh (list them before the first "
              "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create. A "
              "loop that splits nothing never ends when what its condition waits for never changes";
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge:
-    case Exercise::VertexNormal:
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge:
+    case ExerciseKind::VertexNormal:
       return "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
              "start when a pointer is wrong";
     default: {
-      const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+      const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition();
       return scripted ? scripted->hint() : "";
     }
   }
@@ -76,15 +76,15 @@ ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOu
     report.equal = false;
     return report;
   }
-  switch (exercise) {
-    case Exercise::CurveStep: exercise_checks::compare_curve(input, report, out); break;
-    case Exercise::PatchEvaluate: exercise_checks::compare_patch(input, report, out); break;
-    case Exercise::VertexNormal: exercise_checks::compare_normal(input, report, out); break;
-    case Exercise::FlipEdge: exercise_checks::compare_flip(input, report, out); break;
-    case Exercise::SplitEdge: exercise_checks::compare_split(input, report, out); break;
-    case Exercise::Upsample: exercise_checks::compare_upsample(input, report, out); break;
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep: exercise_checks::compare_curve(input, report, out); break;
+    case ExerciseKind::PatchEvaluate: exercise_checks::compare_patch(input, report, out); break;
+    case ExerciseKind::VertexNormal: exercise_checks::compare_normal(input, report, out); break;
+    case ExerciseKind::FlipEdge: exercise_checks::compare_flip(input, report, out); break;
+    case ExerciseKind::SplitEdge: exercise_checks::compare_split(input, report, out); break;
+    case ExerciseKind::Upsample: exercise_checks::compare_upsample(input, report, out); break;
     default:
-      if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+      if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
         exercise_checks::compare_scripted(*scripted, input, report, out);
       }
   }

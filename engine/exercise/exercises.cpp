@@ -1,4 +1,4 @@
-// The exercise catalogue, loading student files, and running "mine" and the reference (exercises.h). The
+// The built-in exercises, loading student files, and running "mine" and the reference (exercises.h). The
 // comparison and its diagnoses are in exercise_compare.cpp.
 //
 // How a student function is called under the runtime's limits: LuaRuntime only runs text, so two small Lua
@@ -10,9 +10,9 @@
 // limits).
 //
 // Map of this file (each part starts at its `// ---- name` banner):
-//   helpers                         kExercises, the Lua helpers (kHelpers), describe_value, check_input
+//   helpers                         kBuiltinInfo, the Lua helpers (kHelpers), describe_value, check_input
 //   returned values                 read_returned_value: what a student function returned, checked for its shape
-//   catalogue and inputs            exercise_info, find_exercise, the ExerciseInput makers and describe
+//   exercises and inputs            the built-in handles, exercise_info, the ExerciseInput makers and describe
 //   student code                    StudentCode: load, the exercise API, run (under the limits, recorded)
 //   running mine and the reference  load_student_file, run_mine, run_reference
 #include "exercise/exercises.h"
@@ -46,18 +46,20 @@ namespace {
 
 // ---- helpers ---------------------------------------------------------------------------------------
 
-constexpr ExerciseInfo kExercises[] = {
-    {Exercise::CurveStep, "curve", "curve.lua", "evaluate_step", "evaluate_step(points, t) -> list of n - 1 vec3",
+// Indexed by ExerciseKind.
+constexpr ExerciseInfo kBuiltinInfo[] = {
+    {"curve", "curve.lua", "evaluate_step", "evaluate_step(points, t) -> list of n - 1 vec3",
      "Part 1: a de Casteljau step"},
-    {Exercise::PatchEvaluate, "patch", "patch.lua", "evaluate", "evaluate(patch, u, v) -> vec3",
-     "Part 2: evaluating a Bezier patch"},
-    {Exercise::VertexNormal, "normals", "normals.lua", "vertex_normal", "vertex_normal(v) -> unit vec3",
+    {"patch", "patch.lua", "evaluate", "evaluate(patch, u, v) -> vec3", "Part 2: evaluating a Bezier patch"},
+    {"normals", "normals.lua", "vertex_normal", "vertex_normal(v) -> unit vec3",
      "Part 3: area-weighted vertex normals"},
-    {Exercise::FlipEdge, "flip", "flip.lua", "flip_edge", "flip_edge(mesh, e) -> e or nil", "Part 4: edge flip"},
-    {Exercise::SplitEdge, "split", "split.lua", "split_edge", "split_edge(mesh, e) -> new vertex or nil",
-     "Part 5: edge split"},
-    {Exercise::Upsample, "upsample", "upsample.lua", "upsample", "upsample(mesh)", "Part 6: Loop subdivision"},
+    {"flip", "flip.lua", "flip_edge", "flip_edge(mesh, e) -> e or nil", "Part 4: edge flip"},
+    {"split", "split.lua", "split_edge", "split_edge(mesh, e) -> new vertex or nil", "Part 5: edge split"},
+    {"upsample", "upsample.lua", "upsample", "upsample(mesh)", "Part 6: Loop subdivision"},
 };
+
+constexpr Exercise kBuiltins[] = {Exercise::CurveStep, Exercise::PatchEvaluate, Exercise::VertexNormal,
+                                  Exercise::FlipEdge,  Exercise::SplitEdge,     Exercise::Upsample};
 
 constexpr const char* kRunnerGlobal = "__meshedit_exercise_call";
 constexpr size_t kMaxOutputLines = 1000;
@@ -110,7 +112,7 @@ std::string describe_value(lua_State* L, int index) {
 void check_input(Exercise exercise, const ExerciseInput& input) {
   if (!is_mesh_exercise(exercise)) return;
   if (!input.mesh) throw MeshError(std::string(exercise_info(exercise).function) + " needs a mesh");
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+  const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition();
   if (exercise == Exercise::Upsample || (scripted && !scripted->takes())) return;
   const ElementKind wanted = scripted                             ? *scripted->takes()
                              : exercise == Exercise::VertexNormal ? ElementKind::Vertex
@@ -128,7 +130,7 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
   lua_newtable(L);
   int n = 0;
   const auto add = [&] { lua_rawseti(L, -2, ++n); };
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
     if (scripted->takes_values()) {
       n = scripted->push_value_arguments(L, input);
       for (int i = n; i >= 1; --i) lua_rawseti(L, -1 - i, i);
@@ -143,8 +145,8 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
       add();
     }
   }
-  switch (exercise) {
-    case Exercise::CurveStep:
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep:
       lua_createtable(L, static_cast<int>(input.points.size()), 0);
       for (size_t i = 0; i < input.points.size(); ++i) {
         push_vec3(L, input.points[i]);
@@ -154,7 +156,7 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
       lua_pushnumber(L, input.t);
       add();
       break;
-    case Exercise::PatchEvaluate:
+    case ExerciseKind::PatchEvaluate:
       push_student_patch(L, input.patch);
       add();
       lua_pushnumber(L, input.u);
@@ -162,18 +164,18 @@ void push_arguments(lua_State* L, Exercise exercise, const ExerciseInput& input,
       lua_pushnumber(L, input.v);
       add();
       break;
-    case Exercise::VertexNormal:
+    case ExerciseKind::VertexNormal:
       push_handle(L, mesh, input.element);
       add();
       break;
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge:
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge:
       push_mesh(L, mesh);
       add();
       push_handle(L, mesh, input.element);
       add();
       break;
-    case Exercise::Upsample:
+    case ExerciseKind::Upsample:
       push_mesh(L, mesh);
       add();
       break;
@@ -193,14 +195,14 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
   const int top = lua_absindex(L, index);
   out.returned = describe_value(L, top);
   out.ran = true;
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition();
       scripted && scripted->takes_values()) {
     out.value = read_exercise_value(L, top);
     out.returned = describe(out.value);
     return;
   }
-  switch (exercise) {
-    case Exercise::CurveStep: {
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep: {
       if (lua_type(L, top) != LUA_TTABLE) {
         out.ran = false;
         out.error = std::string(info.function) + " returned " + out.returned + "; it must return a list of points";
@@ -224,8 +226,8 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
       out.returned = "a list of " + plural(n, "point", "points");
       return;
     }
-    case Exercise::PatchEvaluate:
-    case Exercise::VertexNormal: {
+    case ExerciseKind::PatchEvaluate:
+    case ExerciseKind::VertexNormal: {
       glm::dvec3 p;
       if (!to_vec3(L, top, p)) {
         out.ran = false;
@@ -235,9 +237,9 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
       out.points.push_back(p);
       return;
     }
-    case Exercise::Upsample: return;
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge:
+    case ExerciseKind::Upsample: return;
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge:
     default: {  // and the scripted exercises: an element of the mesh, or nil
       if (const Handle* h = test_handle(L, top)) {
         if (h->mesh() == mesh) out.element = h->ref();
@@ -248,31 +250,28 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
   }
 }
 
-// ---- catalogue and inputs ---------------------------------------------------------------------------------
+// ---- exercises and inputs ---------------------------------------------------------------------------------
 
-std::span<const ExerciseInfo> all_exercises() { return kExercises; }
+std::span<const Exercise> builtin_exercises() { return kBuiltins; }
 
-const ExerciseInfo& exercise_info(Exercise exercise) {
-  for (const ExerciseInfo& info : kExercises) {
-    if (info.exercise == exercise) return info;
-  }
-  if (const ExerciseInfo* scripted = scripted_exercise_info(exercise)) return *scripted;
-  return kExercises[0];
+const ExerciseInfo& Exercise::info() const {
+  if (kind_ == ExerciseKind::Scripted) return definition()->info();
+  return kBuiltinInfo[static_cast<size_t>(kind_)];
 }
 
-std::optional<Exercise> find_exercise(std::string_view name) {
-  for (const ExerciseInfo& info : kExercises) {
-    if (name == info.name || name == info.file || name == info.function) return info.exercise;
-  }
-  return find_scripted_exercise(name);
-}
+const ExerciseInfo& exercise_info(Exercise exercise) { return exercise.info(); }
 
 bool is_mesh_exercise(Exercise e) {
-  if (e == Exercise::VertexNormal || e == Exercise::FlipEdge || e == Exercise::SplitEdge || e == Exercise::Upsample) {
-    return true;
+  switch (e.kind()) {
+    case ExerciseKind::CurveStep:
+    case ExerciseKind::PatchEvaluate: return false;
+    case ExerciseKind::VertexNormal:
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge:
+    case ExerciseKind::Upsample: return true;
+    case ExerciseKind::Scripted: return !e.definition()->takes_values();
   }
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(e);
-  return scripted && !scripted->takes_values();
+  return false;
 }
 
 ExerciseInput ExerciseInput::curve_step(std::vector<glm::dvec3> points, double t) {
@@ -337,16 +336,16 @@ std::string ExerciseInput::describe(Exercise exercise) const {
     return "a mesh with " + std::to_string(mesh->num_vertices()) + " vertices and " +
            std::to_string(mesh->num_faces()) + " faces";
   };
-  switch (exercise) {
-    case Exercise::CurveStep: return plural(points.size(), "point", "points") + ", t = " + format_number(t);
-    case Exercise::PatchEvaluate: return "(u, v) = (" + format_number(u) + ", " + format_number(v) + ")";
-    case Exercise::VertexNormal:
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge: return format_id(element) + " of " + mesh_text();
-    case Exercise::Upsample: return mesh_text();
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep: return plural(points.size(), "point", "points") + ", t = " + format_number(t);
+    case ExerciseKind::PatchEvaluate: return "(u, v) = (" + format_number(u) + ", " + format_number(v) + ")";
+    case ExerciseKind::VertexNormal:
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge: return format_id(element) + " of " + mesh_text();
+    case ExerciseKind::Upsample: return mesh_text();
+    case ExerciseKind::Scripted: break;
   }
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
-      scripted && scripted->takes_values()) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition(); scripted->takes_values()) {
     std::string text = scripted->input() == ScriptedExercise::Input::Patch
                            ? "a patch of 16 control points"
                            : plural(points.size(), "control point", "control points");
@@ -614,17 +613,17 @@ ExerciseOutcome run_mine(StudentCode& code, Exercise exercise, const ExerciseInp
 
 ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   check_input(exercise, input);
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
     return scripted->run_reference(input);
   }
   ExerciseOutcome out;
   out.ran = true;
-  switch (exercise) {
-    case Exercise::CurveStep:
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep:
       out.points = de_casteljau_step(std::span<const glm::dvec3>(input.points), input.t);
       out.returned = "a list of " + plural(out.points.size(), "point", "points");
       return out;
-    case Exercise::PatchEvaluate:
+    case ExerciseKind::PatchEvaluate:
       out.points = {evaluate_patch(input.patch, input.u, input.v)};
       out.returned = format_position(out.points[0]);
       return out;
@@ -632,13 +631,13 @@ ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   }
   out.mesh = std::make_shared<HalfedgeMesh>(*input.mesh);
   HalfedgeMesh& mesh = *out.mesh;
-  switch (exercise) {
-    case Exercise::VertexNormal:
+  switch (exercise.kind()) {
+    case ExerciseKind::VertexNormal:
       out.points = {vertex_normal(mesh, VertexId(input.element.index))};
       out.returned = format_position(out.points[0]);
       break;
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge: {
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge: {
       const EdgeId e(input.element.index);
       const auto take = [&](const auto& result) {
         if (result.ok()) {
@@ -653,7 +652,7 @@ ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
       else take(split(mesh, e));
       break;
     }
-    case Exercise::Upsample: {
+    case ExerciseKind::Upsample: {
       const Check check = loop_subdivide(mesh, LoopWeights::Course);
       if (!check) out.refused = check.reason;
       out.returned = "nil";

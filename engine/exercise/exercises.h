@@ -19,11 +19,12 @@
 // - The reference is the core: de_casteljau_step, evaluate_patch, vertex_normal (area-weighted), flip, split
 //   and loop_subdivide with the course's weights (core/loop_subdivision.h), so "mine" and the app's own
 //   operations agree by construction. A scripted exercise's reference is its definition's Lua function.
-// - An Exercise is an id in one catalogue: the six named values are the built-in exercises; the values after them
-//   are the scripted exercises registered in this process (scripted_exercise.h). exercise_info, find_exercise and
-//   everything below take both; a scripted exercise works on a mesh (and the element its definition takes), or on
-//   control points or a patch and the values after them (ExerciseInput::args), returning values
-//   (ExerciseOutcome::value).
+// - An Exercise is a handle: its kind() is one of the six built-in kinds, or Scripted with the definition the
+//   registry that made it holds (exercise_registry.h). Every handle names a real exercise: there are no ids to cast
+//   and no unknown value; a name that names none is an error where it is looked up (ExerciseRegistry::find).
+//   exercise_info and everything below take both kinds; a scripted exercise works on a mesh (and the element its
+//   definition takes), or on control points or a patch and the values after them (ExerciseInput::args), returning
+//   values (ExerciseOutcome::value).
 // - `equal` is the verdict (the same answer as the reference, up to renumbering and rounding); `identical`
 //   is stronger (bit for bit, pointer for pointer). The correct solutions in tests/exercise/solutions are
 //   identical on every input the tests use.
@@ -55,10 +56,13 @@
 
 namespace meshedit {
 
-enum class Exercise { CurveStep, PatchEvaluate, VertexNormal, FlipEdge, SplitEdge, Upsample };
+// What an exercise is: one of the six built-in ones, or one defined in Lua (scripted_exercise.h).
+enum class ExerciseKind { CurveStep, PatchEvaluate, VertexNormal, FlipEdge, SplitEdge, Upsample, Scripted };
+
+class ScriptedExercise;
+struct ExerciseSlot;  // a registered name's place in its registry (exercise_registry.h)
 
 struct ExerciseInfo {
-  Exercise exercise;
   const char* name;       // "curve", "patch", "normals", "flip", "split", "upsample" (stable: CLI, grader)
   const char* file;       // "curve.lua" in scripts/student/
   const char* function;   // "evaluate_step"
@@ -66,12 +70,41 @@ struct ExerciseInfo {
   const char* title;      // "Part 1: a de Casteljau step"
 };
 
+// A handle on one exercise. The built-in ones are Exercise::CurveStep ... Exercise::Upsample; a scripted one comes
+// from ExerciseRegistry::add or find, and stays valid while its registry lives. Two handles are equal when they name
+// the same exercise (a scripted name registered again keeps its handle).
+class Exercise {
+ public:
+  static const Exercise CurveStep, PatchEvaluate, VertexNormal, FlipEdge, SplitEdge, Upsample;
+
+  constexpr ExerciseKind kind() const { return kind_; }
+  constexpr bool scripted() const { return kind_ == ExerciseKind::Scripted; }
+  // A scripted exercise's definition (the one registered last under its name); nullptr for the built-in ones.
+  std::shared_ptr<const ScriptedExercise> definition() const;
+  // Its name, file and function. A scripted one's strings are its definition's, good until its name is registered
+  // again.
+  const ExerciseInfo& info() const;
+
+  friend constexpr bool operator==(const Exercise&, const Exercise&) = default;
+
+ private:
+  friend class ExerciseRegistry;
+  constexpr explicit Exercise(ExerciseKind kind, const ExerciseSlot* slot = nullptr) : kind_(kind), slot_(slot) {}
+  ExerciseKind kind_;
+  const ExerciseSlot* slot_;  // Scripted: its slot in the registry; built-in: nullptr
+};
+
+inline constexpr Exercise Exercise::CurveStep{ExerciseKind::CurveStep};
+inline constexpr Exercise Exercise::PatchEvaluate{ExerciseKind::PatchEvaluate};
+inline constexpr Exercise Exercise::VertexNormal{ExerciseKind::VertexNormal};
+inline constexpr Exercise Exercise::FlipEdge{ExerciseKind::FlipEdge};
+inline constexpr Exercise Exercise::SplitEdge{ExerciseKind::SplitEdge};
+inline constexpr Exercise Exercise::Upsample{ExerciseKind::Upsample};
+
 // The six built-in ones, in the assignment's order.
-std::span<const ExerciseInfo> all_exercises();
-// A built-in or registered scripted exercise's (an unknown id gives the first built-in's).
+std::span<const Exercise> builtin_exercises();
+// exercise.info().
 const ExerciseInfo& exercise_info(Exercise exercise);
-// By name, file name or function name ("flip", "flip.lua", "flip_edge"), the built-in ones first.
-std::optional<Exercise> find_exercise(std::string_view name);
 // Whether the exercise works on a mesh: normals, flip, split, upsample and the scripted exercises that take a mesh or
 // one of its elements (not those on points or a patch).
 bool is_mesh_exercise(Exercise exercise);

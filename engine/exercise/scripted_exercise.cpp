@@ -1,10 +1,9 @@
 // Exercises defined in Lua (see scripted_exercise.h): loading and checking a definition, running its reference and
-// diagnose in the definition's own state, and the catalogue of registered ids.
+// diagnose in the definition's own state.
 #include "exercise/scripted_exercise.h"
 
 #include <algorithm>
 #include <cmath>
-#include <deque>
 #include <iterator>
 
 #include <lua.hpp>
@@ -74,7 +73,8 @@ struct ScriptedExerciseReader {
     ScriptedExercise& x = *reading->target;
     x.name_ = string_field(L, "name", true);
     if (!is_identifier(x.name_)) raise(L, "exercise: name must be a word like \"collapse\", got '" + x.name_ + "'");
-    if (find_exercise(x.name_) && !scripted_exercise(*find_exercise(x.name_))) {
+    if (std::any_of(builtin_exercises().begin(), builtin_exercises().end(),
+                    [&](Exercise e) { return x.name_ == e.info().name; })) {
       raise(L, "exercise: '" + x.name_ + "' is a built-in exercise; choose another name");
     }
     x.title_ = string_field(L, "title", false, x.name_);
@@ -260,8 +260,8 @@ std::shared_ptr<ScriptedExercise> ScriptedExercise::load(const std::filesystem::
   lua_pushnil(L);
   lua_setglobal(L, "exercise");  // the reader's upvalue points at `reading`, which ends here
   if (!reading.called) throw ScriptError(name + ": no exercise{} in the file");
-  x->info_ = ExerciseInfo{Exercise::CurveStep,  x->name_.c_str(),      x->file_.c_str(),
-                          x->function_.c_str(), x->signature_.c_str(), x->title_.c_str()};
+  x->info_ =
+      ExerciseInfo{x->name_.c_str(), x->file_.c_str(), x->function_.c_str(), x->signature_.c_str(), x->title_.c_str()};
   return x;
 }
 
@@ -414,101 +414,6 @@ void ScriptedExercise::push_mesh_run(lua_State* L, const ExerciseInput& input, c
   }
   lua_pushstring(L, mine.returned.c_str());
   lua_setfield(L, -2, "returned");
-}
-
-// ---- the catalogue ----------------------------------------------------------------------------------------------
-
-namespace {
-
-constexpr int kFirstScriptedId = static_cast<int>(Exercise::Upsample) + 1;
-
-struct Entry {
-  std::shared_ptr<const ScriptedExercise> definition;
-  ExerciseInfo info;  // the definition's, with its id
-};
-
-std::deque<Entry>& catalogue() {
-  static std::deque<Entry> entries;  // a deque: an entry's address (and so exercise_info's) never moves
-  return entries;
-}
-
-}  // namespace
-
-Exercise register_scripted_exercise(std::shared_ptr<const ScriptedExercise> exercise) {
-  const std::string name = exercise->info().name;
-  std::deque<Entry>& entries = catalogue();
-  for (size_t i = 0; i < entries.size(); ++i) {
-    if (name != entries[i].info.name) continue;
-    entries[i].info = exercise->info();
-    entries[i].info.exercise = static_cast<Exercise>(kFirstScriptedId + static_cast<int>(i));
-    entries[i].definition = std::move(exercise);
-    return entries[i].info.exercise;
-  }
-  if (find_exercise(name)) throw ScriptError("'" + name + "' is a built-in exercise; choose another name");
-  Entry entry{exercise, exercise->info()};
-  entry.info.exercise = static_cast<Exercise>(kFirstScriptedId + static_cast<int>(entries.size()));
-  entries.push_back(std::move(entry));
-  return entries.back().info.exercise;
-}
-
-std::shared_ptr<const ScriptedExercise> scripted_exercise(Exercise exercise) {
-  const int index = static_cast<int>(exercise) - kFirstScriptedId;
-  if (index < 0 || static_cast<size_t>(index) >= catalogue().size()) return nullptr;
-  return catalogue()[static_cast<size_t>(index)].definition;
-}
-
-const ExerciseInfo* scripted_exercise_info(Exercise exercise) {
-  const int index = static_cast<int>(exercise) - kFirstScriptedId;
-  if (index < 0 || static_cast<size_t>(index) >= catalogue().size()) return nullptr;
-  return &catalogue()[static_cast<size_t>(index)].info;
-}
-
-std::optional<Exercise> find_scripted_exercise(std::string_view name) {
-  for (const Entry& entry : catalogue()) {
-    const ExerciseInfo& info = entry.info;
-    if (name == info.name || name == info.file || name == info.function) return info.exercise;
-  }
-  return std::nullopt;
-}
-
-std::vector<Exercise> scripted_exercises() {
-  std::vector<Exercise> out;
-  for (const Entry& entry : catalogue()) out.push_back(entry.info.exercise);
-  return out;
-}
-
-std::string reload_scripted_exercise_if_changed(Exercise exercise) {
-  const std::shared_ptr<const ScriptedExercise> current = scripted_exercise(exercise);
-  if (!current || file_stamp(current->path()) == current->stamp()) return "";
-  try {
-    std::shared_ptr<ScriptedExercise> loaded = ScriptedExercise::load(current->path());
-    if (std::string(loaded->info().name) != current->info().name) {
-      return loaded->path().filename().string() + ": the exercise's name changed from '" + current->info().name +
-             "' to '" + loaded->info().name + "'; open it again to register it under its new name";
-    }
-    register_scripted_exercise(std::move(loaded));
-  } catch (const ScriptError& e) {
-    return e.what();
-  }
-  return "";
-}
-
-std::vector<std::string> load_exercise_folder(const std::filesystem::path& folder) {
-  std::vector<std::filesystem::path> files;
-  std::error_code ec;
-  for (const auto& item : std::filesystem::directory_iterator(folder, ec)) {
-    if (item.path().extension() == ".lua" && item.is_regular_file(ec)) files.push_back(item.path());
-  }
-  std::sort(files.begin(), files.end());
-  std::vector<std::string> errors;
-  for (const std::filesystem::path& file : files) {
-    try {
-      register_scripted_exercise(ScriptedExercise::load(file));
-    } catch (const ScriptError& e) {
-      errors.push_back(e.what());
-    }
-  }
-  return errors;
 }
 
 }  // namespace meshedit

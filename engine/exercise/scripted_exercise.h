@@ -48,9 +48,8 @@
 // - On points or a patch, the reference and the student's function get the same arguments, made afresh for each
 //   call (changing them changes nothing); diagnose gets copies of the input, the args and both returned values (a
 //   returned value that is not a number, a point or a list of them is nil there).
-// - The catalogue (register_scripted_exercise) gives each name one Exercise id past the built-ins for the whole
-//   process, kept when the same name is registered again (a reloaded file replaces its definition). Names of the
-//   built-in exercises cannot be taken. The catalogue is for one thread (the window's, a lesson's, a grading run's).
+// - Registered (ExerciseRegistry::add, exercise_registry.h), a definition is one Exercise handle of kind Scripted;
+//   a name registered again keeps its handle and takes the new definition. Names of the built-ins cannot be taken.
 #pragma once
 
 #include <filesystem>
@@ -144,25 +143,5 @@ class ScriptedExercise {
   std::unique_ptr<LuaRuntime> runtime_;  // the definition's own state; reference_ and diagnose_ are registry refs
   int reference_ = -1, diagnose_ = -1;
 };
-
-// Registers `exercise` under its name and returns its Exercise id (the same id when the name was registered before).
-// Throws ScriptError when the name is a built-in exercise's.
-Exercise register_scripted_exercise(std::shared_ptr<const ScriptedExercise> exercise);
-// The definition behind a registered id; nullptr for the built-in exercises and unknown ids.
-std::shared_ptr<const ScriptedExercise> scripted_exercise(Exercise exercise);
-// The registered ids, in the order their names were first registered.
-std::vector<Exercise> scripted_exercises();
-// What exercises.h's exercise_info and find_exercise read for the registered ids (nullptr / nullopt for others). An
-// ExerciseInfo stays where it is; its strings are the definition's, good until that name is registered again.
-const ExerciseInfo* scripted_exercise_info(Exercise exercise);
-std::optional<Exercise> find_scripted_exercise(std::string_view name);
-
-// A registered exercise whose file changed since it was loaded is loaded again and registered under the same id.
-// Returns "" (unchanged, reloaded, or a built-in exercise) or the error that kept the old definition in place.
-std::string reload_scripted_exercise_if_changed(Exercise exercise);
-
-// Loads and registers every NAME.lua in `folder` (by name order). Returns one error per file that failed to load
-// ("collapse.lua:12: exercise: takes must be ..."); a missing folder is no error.
-std::vector<std::string> load_exercise_folder(const std::filesystem::path& folder);
 
 }  // namespace meshedit

@@ -55,8 +55,8 @@ void push_refusal(lua_State* L, const char* name) {
 
 // The exercise whose function is `name` ("evaluate_step" -> curve), or nullptr.
 const ExerciseInfo* exercise_of_function(const char* name) {
-  for (const ExerciseInfo& info : all_exercises()) {
-    if (std::strcmp(info.function, name) == 0) return &info;
+  for (const Exercise exercise : builtin_exercises()) {
+    if (std::strcmp(exercise.info().function, name) == 0) return &exercise.info();
   }
   return nullptr;
 }
@@ -148,7 +148,7 @@ bool is_hideable_api(const std::string& name) {
 const ExerciseApi& exercise_api(Exercise exercise) {
   static const ExerciseApi none;
   static const ExerciseApi upsample{{"mesh:flip", "mesh:split"}, {"flip_edge", "split_edge"}};
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) return scripted->api();
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) return scripted->api();
   return exercise == Exercise::Upsample ? upsample : none;
 }
 

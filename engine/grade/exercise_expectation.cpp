@@ -7,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "grade/expectations.h"
@@ -106,18 +107,18 @@ ExerciseInput read_values_input(lua_State* L, const ScriptedExercise& scripted) 
 }
 
 ExerciseInput read_input(lua_State* L, Exercise exercise) {
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise);
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition();
       scripted && scripted->takes_values()) {
     return read_values_input(L, *scripted);
   }
-  switch (exercise) {
-    case Exercise::CurveStep: {
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep: {
       lua_getfield(L, kInput, "points");
       std::vector<glm::dvec3> points = points_at(L, lua_gettop(L), "input.points");
       lua_pop(L, 1);
       return ExerciseInput::curve_step(std::move(points), number_field(L, "t"));
     }
-    case Exercise::PatchEvaluate: {
+    case ExerciseKind::PatchEvaluate: {
       const BezierPatch patch = patch_field(L);
       return ExerciseInput::patch_point(patch, number_field(L, "u"), number_field(L, "v"));
     }
@@ -127,15 +128,15 @@ ExerciseInput read_input(lua_State* L, Exercise exercise) {
   const std::shared_ptr<HalfedgeMesh> mesh = to_mesh(L, -1);
   lua_pop(L, 1);
   if (!mesh) luaL_error(L, "expect.exercise: input.mesh must be the mesh before the call");
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
     if (!scripted->takes()) return ExerciseInput::whole_mesh(mesh);
     return ExerciseInput::element_of(mesh, element_field(L, "element", *scripted->takes(), mesh));
   }
-  switch (exercise) {
-    case Exercise::VertexNormal:
+  switch (exercise.kind()) {
+    case ExerciseKind::VertexNormal:
       return ExerciseInput::vertex(mesh, VertexId(element_field(L, "vertex", ElementKind::Vertex, mesh).index));
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge:
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge:
       return ExerciseInput::edge(mesh, EdgeId(element_field(L, "edge", ElementKind::Edge, mesh).index));
     default: return ExerciseInput::whole_mesh(mesh);
   }
@@ -147,7 +148,7 @@ int expect_exercise(lua_State* L) {
   lua_settop(L, kMessage);
   const std::string name = luaL_checkstring(L, 1);
   const std::optional<Exercise> exercise = find_exercise(name);
-  if (!exercise) return luaL_argerror(L, 1, ("no exercise '" + name + "'").c_str());
+  if (!exercise) return luaL_error(L, "expect.exercise: %s", exercise_registry().unknown_name_error(name).c_str());
   luaL_checktype(L, kInput, LUA_TTABLE);
   const std::string message = lua_isnoneornil(L, kMessage) ? "" : luaL_checkstring(L, kMessage);
   TestRecorder& recorder = current_recorder(L);

@@ -11,6 +11,7 @@
 #include <nlohmann/json.hpp>
 
 #include "core/value_format.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "grade/child_process.h"
 

@@ -8,6 +8,7 @@
 #include <lua.hpp>
 
 #include "exercise/exercise_locality.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/student_api.h"
 #include "grade/value_bridge.h"

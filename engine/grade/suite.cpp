@@ -20,6 +20,7 @@
 #include <lua.hpp>
 
 #include "core/file_bytes.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "exercise/student_api.h"
 #include "grade/expectations.h"
@@ -358,7 +359,8 @@ struct SuiteApi {
   // The fixture `index` of the exercise named at 1 (the index at 2), with its definition; a Lua error when none.
   static std::pair<std::shared_ptr<const ScriptedExercise>, const ScriptedFixture*> fixture_at(lua_State* L) {
     const std::optional<Exercise> exercise = find_exercise(luaL_checkstring(L, 1));
-    std::shared_ptr<const ScriptedExercise> definition = exercise ? scripted_exercise(*exercise) : nullptr;
+    if (!exercise) luaL_error(L, "%s", exercise_registry().unknown_name_error(lua_tostring(L, 1)).c_str());
+    std::shared_ptr<const ScriptedExercise> definition = exercise ? exercise->definition() : nullptr;
     const lua_Integer index = luaL_checkinteger(L, 2);
     if (!definition || index < 1 || static_cast<size_t>(index) > definition->fixtures().size()) {
       luaL_error(L, "no fixture %d of the exercise %s", int(index), lua_tostring(L, 1));

@@ -13,6 +13,7 @@
 #include <lua.hpp>
 
 #include "core/ids.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "lesson/internal/diagram_names.h"
@@ -49,7 +50,7 @@ Exercise read_exercise(lua_State* L, int index) {
   const std::string name = lua_tostring(L, -1);
   lua_pop(L, 1);
   const std::optional<Exercise> exercise = find_exercise(name);
-  if (!exercise) raise(L, "your_turn: unknown exercise '" + name + "' (use " + kExerciseNames + ")");
+  if (!exercise) raise(L, "your_turn: " + exercise_registry().unknown_name_error(name));
   return *exercise;
 }
 
@@ -135,19 +136,19 @@ ExerciseInput read_values_input(lua_State* L, int index, const ScriptedExercise&
 
 // The exercise's input, copied out of the table at `index`.
 ExerciseInput read_input(lua_State* L, int index, Exercise exercise) {
-  if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(exercise)) {
+  if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) {
     if (scripted->takes_values()) return read_values_input(L, index, *scripted);
     std::shared_ptr<const HalfedgeMesh> mesh = read_mesh(L, index, exercise);
     if (!scripted->takes()) return ExerciseInput::whole_mesh(std::move(mesh));
     const ElementRef element = read_element(L, index, *mesh, *scripted->takes());
     return ExerciseInput::element_of(std::move(mesh), element);
   }
-  switch (exercise) {
-    case Exercise::CurveStep: {
+  switch (exercise.kind()) {
+    case ExerciseKind::CurveStep: {
       std::vector<glm::dvec3> points = read_points(L, index);
       return ExerciseInput::curve_step(std::move(points), read_number(L, index, "t"));
     }
-    case Exercise::PatchEvaluate: {
+    case ExerciseKind::PatchEvaluate: {
       lua_getfield(L, index, "patch");
       const BezierPatch* patch = to_patch(L, -1);
       if (!patch) raise(L, "your_turn: the patch exercise needs patch = meshedit.patch(...), got " + type_name(L, -1));
@@ -155,18 +156,18 @@ ExerciseInput read_input(lua_State* L, int index, Exercise exercise) {
       lua_pop(L, 1);
       return ExerciseInput::patch_point(copy, read_number(L, index, "u"), read_number(L, index, "v"));
     }
-    case Exercise::VertexNormal: {
+    case ExerciseKind::VertexNormal: {
       std::shared_ptr<const HalfedgeMesh> mesh = read_mesh(L, index, exercise);
       const ElementRef v = read_element(L, index, *mesh, ElementKind::Vertex);
       return ExerciseInput::vertex(std::move(mesh), VertexId(v.index));
     }
-    case Exercise::FlipEdge:
-    case Exercise::SplitEdge: {
+    case ExerciseKind::FlipEdge:
+    case ExerciseKind::SplitEdge: {
       std::shared_ptr<const HalfedgeMesh> mesh = read_mesh(L, index, exercise);
       const ElementRef e = read_element(L, index, *mesh, ElementKind::Edge);
       return ExerciseInput::edge(std::move(mesh), EdgeId(e.index));
     }
-    case Exercise::Upsample: return ExerciseInput::whole_mesh(read_mesh(L, index, exercise));
+    case ExerciseKind::Upsample: return ExerciseInput::whole_mesh(read_mesh(L, index, exercise));
   }
   raise(L, "your_turn: unknown exercise");
 }
@@ -320,7 +321,7 @@ int api_await(lua_State* L) {
   if (lua_type(L, -1) == LUA_TSTRING) wait.hint = lua_tostring(L, -1);
   lua_pop(L, 1);
   if (wait.hint.empty()) {  // an exercise defined in Lua brings its own
-    if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(last.exercise)) {
+    if (const std::shared_ptr<const ScriptedExercise> scripted = last.exercise.definition()) {
       wait.hint = scripted->hint();
     }
   }

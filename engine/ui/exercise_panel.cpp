@@ -85,7 +85,7 @@ void draw_report(const ExerciseRun& run) {
     ImGui::TreePop();
   }
   if (!report.equal) {  // an instructor's exercise brings its own hint
-    if (const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(run.exercise);
+    if (const std::shared_ptr<const ScriptedExercise> scripted = run.exercise.definition();
         scripted && !scripted->hint().empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
       text("Hint: " + scripted->hint());
@@ -285,10 +285,10 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   if (run) {
     draw_report(*run);
     if (run->serial != state.rows_serial) {
-      state.rows = (run->exercise == Exercise::FlipEdge || run->exercise == Exercise::SplitEdge ||
-                    scripted_exercise(run->exercise))
-                       ? pointer_rows(*run, ExercisePanelState::kMaxPointerRows)
-                       : std::vector<PointerRow>{};
+      state.rows =
+          (run->exercise == Exercise::FlipEdge || run->exercise == Exercise::SplitEdge || run->exercise.definition())
+              ? pointer_rows(*run, ExercisePanelState::kMaxPointerRows)
+              : std::vector<PointerRow>{};
       state.value_rows = value_rows(*run);
       state.rows_serial = run->serial;
     }

@@ -14,7 +14,7 @@ namespace meshedit {
 
 std::vector<ValueRow> value_rows(const ExerciseRun& run) {
   std::vector<ValueRow> rows;
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(run.exercise);
+  const std::shared_ptr<const ScriptedExercise> scripted = run.exercise.definition();
   if (!scripted || !scripted->takes_values()) return rows;
   const ExerciseOutcome& reference = run.report.reference;
   const ExerciseOutcome& mine = run.report.mine;
@@ -49,7 +49,7 @@ std::vector<ValueRow> value_rows(const ExerciseRun& run) {
 
 std::vector<std::string> value_input_lines(const ExerciseRun& run) {
   std::vector<std::string> lines;
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(run.exercise);
+  const std::shared_ptr<const ScriptedExercise> scripted = run.exercise.definition();
   if (!scripted || !scripted->takes_values()) return lines;
   const ExerciseInput& input = run.input;
   if (scripted->input() == ScriptedExercise::Input::Patch) {
@@ -72,7 +72,7 @@ std::vector<std::string> value_input_lines(const ExerciseRun& run) {
 }
 
 void draw_value_fixture_chooser(ExerciseSession& session) {
-  const std::shared_ptr<const ScriptedExercise> scripted = scripted_exercise(session.exercise());
+  const std::shared_ptr<const ScriptedExercise> scripted = session.exercise().definition();
   if (!scripted || !scripted->takes_values()) return;
   const std::vector<ScriptedFixture>& fixtures = scripted->fixtures();
   if (fixtures.empty()) {

@@ -13,6 +13,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 

@@ -37,6 +37,7 @@
 #include "core/patch_tessellation.h"
 #include "core/primitives.h"
 #include "core/value_format.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "io/bez_io.h"
 #include "io/bzc_io.h"
@@ -111,16 +112,16 @@ bool starts_with(const std::string& s, const std::string& prefix) { return s.rfi
 // ---- catalogue -------------------------------------------------------------------------------------
 
 TEST(Exercises, CatalogueListsTheSixInOrder) {
-  const auto all = all_exercises();
+  const auto all = builtin_exercises();
   ASSERT_EQ(all.size(), 6u);
   const char* files[] = {"curve.lua", "patch.lua", "normals.lua", "flip.lua", "split.lua", "upsample.lua"};
   const char* functions[] = {"evaluate_step", "evaluate", "vertex_normal", "flip_edge", "split_edge", "upsample"};
   for (size_t i = 0; i < 6; ++i) {
-    EXPECT_STREQ(all[i].file, files[i]);
-    EXPECT_STREQ(all[i].function, functions[i]);
-    EXPECT_EQ(find_exercise(all[i].name), all[i].exercise);
-    EXPECT_EQ(find_exercise(files[i]), all[i].exercise);
-    EXPECT_EQ(find_exercise(functions[i]), all[i].exercise);
+    EXPECT_STREQ(all[i].info().file, files[i]);
+    EXPECT_STREQ(all[i].info().function, functions[i]);
+    EXPECT_EQ(find_exercise(all[i].info().name), all[i]);
+    EXPECT_EQ(find_exercise(files[i]), all[i]);
+    EXPECT_EQ(find_exercise(functions[i]), all[i]);
   }
   EXPECT_FALSE(find_exercise("collapse").has_value());
   EXPECT_EQ(ExerciseInput::edge(mesh_of(make_cube()), EdgeId(5)).describe(Exercise::FlipEdge),

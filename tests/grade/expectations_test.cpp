@@ -88,5 +88,11 @@ TEST(Expect, ScorePassAndFail) {
   EXPECT_EQ(checks("expect.score(2)"), "END: suite.lua:2: bad argument #1 to 'score' (must be between 0 and 1)\n");
 }
 
+TEST(Expect, ExerciseOfAnUnknownNameIsAnErrorAtTheSuitesLine) {
+  EXPECT_EQ(checks("expect.exercise('flop', {}, nil, nil)"),
+            "END: suite.lua:2: expect.exercise: no exercise is called 'flop'; the exercises are curve, patch, normals, "
+            "flip, split, upsample\n");
+}
+
 }  // namespace
 }  // namespace meshedit

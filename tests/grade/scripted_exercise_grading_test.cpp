@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "grade/grader.h"
@@ -52,7 +53,7 @@ TEST(ScriptedExerciseGrading, ABuggySubmissionIsToldWhatTheWindowSays) {
   // The window's check of the third fixture, on the registry's own copy of it.
   const std::optional<Exercise> id = find_exercise("collapse");
   ASSERT_TRUE(id.has_value());
-  const ScriptedFixture& fixture = scripted_exercise(*id)->fixtures()[2];
+  const ScriptedFixture& fixture = id->definition()->fixtures()[2];
   const fs::path dir = testing::scratch_dir();
   fs::copy_file(buggy_file(), dir / "collapse.lua");
   auto code = load_student_file(dir / "collapse.lua");
@@ -87,7 +88,7 @@ TEST(ScriptedExerciseGrading, CatmullClarkSolutionScoresAndMovingInPlaceIsNamed)
   EXPECT_EQ(wrong.score, 1.0) << "only the refused pyramid passes";
   const std::optional<Exercise> id = find_exercise("catmull_clark");
   ASSERT_TRUE(id.has_value());
-  const ScriptedFixture& cube = scripted_exercise(*id)->fixtures()[0];
+  const ScriptedFixture& cube = id->definition()->fixtures()[0];
   const fs::path dir = testing::scratch_dir();
   fs::copy_file(buggy, dir / "catmull_clark.lua");
   auto code = load_student_file(dir / "catmull_clark.lua");

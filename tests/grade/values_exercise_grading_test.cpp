@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "grade/grader.h"
@@ -32,7 +33,7 @@ std::string buggy(const std::string& name) { return read_text(testing::grading_d
 std::string window_diagnosis(const std::string& name, const std::string& text, size_t index) {
   const std::optional<Exercise> id = find_exercise(name);
   if (!id) return "(not registered)";
-  const ScriptedExercise& exercise = *scripted_exercise(*id);
+  const ScriptedExercise& exercise = *id->definition();
   const fs::path dir = testing::scratch_dir();
   testing::write_text(dir / exercise.info().file, text);
   auto code = load_student_file(dir / exercise.info().file);

@@ -14,6 +14,7 @@
 
 #include "core/mesh_build.h"
 #include "core/primitives.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "grade_test_support.h"
 

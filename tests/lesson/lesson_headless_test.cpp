@@ -14,6 +14,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "core/value_format.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "lesson/lesson_headless.h"
 #include "lesson/lesson_runner.h"

@@ -186,8 +186,8 @@ TEST(LessonYourTurn, BadArgumentsFailTheStepAtTheLessonsLine) {
     EXPECT_EQ(runner.error(), message);
   };
   fails_with("your_turn { exercise = 'flop', mesh = m, element = 'e2' }",
-             "lesson.lua:3: your_turn: unknown exercise 'flop' (use curve, patch, normals, flip, split, upsample or an "
-             "exercise of scripts/exercises)");
+             "lesson.lua:3: your_turn: no exercise is called 'flop'; the exercises are curve, patch, normals, flip, "
+             "split, upsample");
   fails_with("your_turn { exercise = 'flip', mesh = m, element = 'v2' }",
              "lesson.lua:3: your_turn: element must be an edge of the mesh (a handle or an id like \"e0\"), got v2");
   fails_with("your_turn { exercise = 'flip', element = 'e2' }",

@@ -44,6 +44,7 @@
 #include "core/primitives.h"
 #include "core/triangulate.h"
 #include "core/up_axis.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "io/file_up_axis.h"
 #include "io/mesh_file.h"

@@ -15,6 +15,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "lesson/headless_host.h"
@@ -75,14 +76,16 @@ TEST(ScriptedExercise, TheShippedCollapseDefinitionLoadsWithItsFixtures) {
 
 TEST(ScriptedExercise, ARegisteredExerciseIsAnExerciseLikeTheBuiltInOnes) {
   const Exercise id = collapse_exercise();
-  EXPECT_GT(static_cast<int>(id), static_cast<int>(Exercise::Upsample));
+  EXPECT_EQ(id.kind(), ExerciseKind::Scripted);
+  EXPECT_EQ(id.definition()->info().name, std::string("collapse"));
   EXPECT_EQ(find_exercise("collapse"), id);
   EXPECT_EQ(find_exercise("collapse_edge"), id);
   EXPECT_EQ(find_exercise("flip"), Exercise::FlipEdge);  // the built-ins first
   EXPECT_STREQ(exercise_info(id).file, "collapse.lua");
   EXPECT_TRUE(is_mesh_exercise(id));
   EXPECT_EQ(register_scripted_exercise(ScriptedExercise::load(definition_path())), id);  // again: the same id
-  EXPECT_NE(std::find(scripted_exercises().begin(), scripted_exercises().end(), id), scripted_exercises().end());
+  const std::vector<Exercise> scripted = exercise_registry().scripted();
+  EXPECT_NE(std::find(scripted.begin(), scripted.end(), id), scripted.end());
   const auto mesh = std::make_shared<const HalfedgeMesh>(build_halfedge_mesh(make_icosahedron()));
   EXPECT_EQ(ExerciseInput::element_of(mesh, EdgeId(3)).describe(id), "e3 of a mesh with 12 vertices and 20 faces");
 }
@@ -90,7 +93,7 @@ TEST(ScriptedExercise, ARegisteredExerciseIsAnExerciseLikeTheBuiltInOnes) {
 TEST(ScriptedExercise, TheCorrectSolutionGivesTheCoresCollapseOnEveryFixture) {
   const Exercise id = collapse_exercise();
   auto code = load_student_file(solutions() / "collapse.lua");
-  for (const ScriptedFixture& fixture : scripted_exercise(id)->fixtures()) {
+  for (const ScriptedFixture& fixture : id.definition()->fixtures()) {
     const ExerciseReport report =
         check_exercise(*code, id, ExerciseInput::element_of(fixture.mesh, fixture.element), RunOptions{true});
     EXPECT_TRUE(report.equal) << fixture.name << ": " << report.summary();
@@ -112,7 +115,7 @@ TEST(ScriptedExercise, TheCorrectSolutionGivesTheCoresCollapseOnEveryFixture) {
 TEST(ScriptedExercise, TheDefinitionsDiagnosisComesFirst) {
   const Exercise id = collapse_exercise();
   auto code = load_student_file(buggy(), {});
-  const ScriptedFixture& fixture = scripted_exercise(id)->fixtures()[2];
+  const ScriptedFixture& fixture = id.definition()->fixtures()[2];
   const ExerciseReport report = check_exercise(*code, id, ExerciseInput::element_of(fixture.mesh, fixture.element));
   EXPECT_FALSE(report.equal);
   ASSERT_GE(report.differences.size(), 2u);
@@ -195,7 +198,7 @@ end)
       << runner.error();
   const LessonWait& wait = runner.waiting_for();
   ASSERT_EQ(wait.kind, LessonWait::Kind::YourTurn) << runner.error();
-  EXPECT_EQ(wait.hint, scripted_exercise(id)->hint());
+  EXPECT_EQ(wait.hint, id.definition()->hint());
   EXPECT_EQ(wait.hint.rfind("Read every handle first (h0 to h5, a to d, t2 to t5)", 0), 0u) << wait.hint;
   EXPECT_EQ(wait.feedback.rfind("the vertex that remains is still where a was", 0), 0u) << wait.feedback;
 }

@@ -13,6 +13,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/value_format.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "exercise/value_compare.h"
@@ -47,7 +48,7 @@ fs::path write(const fs::path& dir, const std::string& name, const std::string& 
 
 // check_exercise of the student file `file` (copied as NAME.lua) on fixture `index` of `id`.
 ExerciseReport check_fixture(Exercise id, const fs::path& file, size_t index, LuaLimits limits = {}) {
-  const std::shared_ptr<const ScriptedExercise> definition = scripted_exercise(id);
+  const std::shared_ptr<const ScriptedExercise> definition = id.definition();
   const fs::path dir = testing::scratch_dir();
   fs::copy_file(file, dir / definition->info().file, fs::copy_options::overwrite_existing);
   auto code = load_student_file(dir / definition->info().file, limits);
@@ -98,18 +99,18 @@ TEST(ValuesExercise, ARegisteredExerciseOnValuesIsNoMeshExercise) {
   const Exercise id = hodograph_exercise();
   EXPECT_EQ(find_exercise("hodograph"), id);
   EXPECT_FALSE(is_mesh_exercise(id));
-  const ScriptedExercise& definition = *scripted_exercise(id);
+  const ScriptedExercise& definition = *id.definition();
   EXPECT_EQ(definition.input_of(definition.fixtures()[0]).describe(id), "4 control points");
   const Exercise patch = patch_normal_exercise();
-  const ScriptedExercise& normal = *scripted_exercise(patch);
+  const ScriptedExercise& normal = *patch.definition();
   EXPECT_EQ(normal.input_of(normal.fixtures()[1]).describe(patch), "a patch of 16 control points, then 0.3, 0.7");
 }
 
 TEST(ValuesExercise, TheHodographSolutionIsRightOnEveryFixture) {
   const Exercise id = hodograph_exercise();
-  for (size_t i = 0; i < scripted_exercise(id)->fixtures().size(); ++i) {
+  for (size_t i = 0; i < id.definition()->fixtures().size(); ++i) {
     const ExerciseReport report = check_fixture(id, solutions() / "hodograph.lua", i);
-    EXPECT_TRUE(report.equal) << scripted_exercise(id)->fixtures()[i].name << ": " << report.summary();
+    EXPECT_TRUE(report.equal) << id.definition()->fixtures()[i].name << ": " << report.summary();
     EXPECT_TRUE(report.identical) << report.summary();
   }
   // The cubic's hodograph: 3 (P[i+1] - P[i]).
@@ -151,9 +152,9 @@ TEST(ValuesExercise, TheReversedDifferenceIsNamed) {
 
 TEST(ValuesExercise, ThePatchNormalSolutionIsRightOnEveryFixture) {
   const Exercise id = patch_normal_exercise();
-  for (size_t i = 0; i < scripted_exercise(id)->fixtures().size(); ++i) {
+  for (size_t i = 0; i < id.definition()->fixtures().size(); ++i) {
     const ExerciseReport report = check_fixture(id, solutions() / "patch_normal.lua", i);
-    EXPECT_TRUE(report.equal) << scripted_exercise(id)->fixtures()[i].name << ": " << report.summary();
+    EXPECT_TRUE(report.equal) << id.definition()->fixtures()[i].name << ": " << report.summary();
     ASSERT_EQ(report.mine.value.kind, ExerciseValue::Kind::Point);
     EXPECT_NEAR(glm::length(report.mine.value.point), 1.0, 1e-12);
   }
@@ -231,7 +232,7 @@ TEST(ValuesExercise, WhatTheStudentReturnsIsReadAsAValue) {
   auto check = [&](const std::string& body) {
     write(dir, "hodograph.lua", "function hodograph(points)\n" + body + "\nend\n");
     auto code = load_student_file(dir / "hodograph.lua");
-    const ScriptedExercise& definition = *scripted_exercise(id);
+    const ScriptedExercise& definition = *id.definition();
     return check_exercise(*code, id, definition.input_of(definition.fixtures()[0]));
   };
   ExerciseReport report = check("  return nil");
@@ -253,7 +254,7 @@ TEST(ValuesExercise, WhatTheStudentReturnsIsReadAsAValue) {
 TEST(ValuesExercise, TheStudentsCodeRunsInTheExercisesSandboxAndLimits) {
   const Exercise id = hodograph_exercise();
   const fs::path dir = testing::scratch_dir();
-  const ScriptedExercise& definition = *scripted_exercise(id);
+  const ScriptedExercise& definition = *id.definition();
   write(dir, "hodograph.lua", "function hodograph(points)\n  return meshedit.curve(points):levels(0.5)\nend\n");
   auto hidden = load_student_file(dir / "hodograph.lua");
   ExerciseReport report = check_exercise(*hidden, id, definition.input_of(definition.fixtures()[0]));
@@ -352,7 +353,7 @@ TEST(ValuesExercise, AToleranceFieldDecidesWhatIsClose) {
 }
 )lua");
   const Exercise id = register_scripted_exercise(ScriptedExercise::load(file));
-  const ScriptedExercise& definition = *scripted_exercise(id);
+  const ScriptedExercise& definition = *id.definition();
   EXPECT_EQ(definition.tolerance(definition.input_of(definition.fixtures()[0])), 0.01);
   write(dir, "rounded.lua", "function middle(points, t)\n  return meshedit.vec3(0.505, 0.5, 0)\nend\n");
   auto close = load_student_file(dir / "rounded.lua");

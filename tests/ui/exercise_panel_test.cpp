@@ -16,6 +16,7 @@
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"

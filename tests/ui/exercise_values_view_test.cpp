@@ -11,6 +11,7 @@
 #include "core/mesh_build.h"
 #include "core/primitives.h"
 #include "document/exercise_session.h"
+#include "exercise/exercise_registry.h"
 #include "exercise/scripted_exercise.h"
 #include "support/test_support.h"
 #include "ui/exercise_panel.h"
@@ -86,7 +87,7 @@ TEST(ValuesExerciseSession, ALessonsInputReplacesTheFixtureUntilAnotherIsChosen)
   MeshDocument doc = make_document(build_halfedge_mesh(make_cube()));
   ExerciseSession session(folder_with(solution("patch_normal.lua"), "patch_normal.lua"));
   ASSERT_TRUE(session.set_exercise(id));
-  const ScriptedExercise& definition = *scripted_exercise(id);
+  const ScriptedExercise& definition = *id.definition();
   ExerciseInput input = definition.input_of(definition.fixtures()[0]);
   input.args = {ExerciseValue::of_number(0.25), ExerciseValue::of_number(0.75)};
   session.set_values_input(input, "the lesson's input");
