@@ -68,7 +68,8 @@ Check EditorApp::show_your_turn_mine() {
       case ExerciseKind::VertexNormal:
       case ExerciseKind::FlipEdge:
       case ExerciseKind::SplitEdge:
-      case ExerciseKind::Upsample: break;
+      case ExerciseKind::Upsample:
+      case ExerciseKind::Scripted: break;
     }
     if (!is_mesh_exercise(verdict.exercise)) {  // a scripted exercise on points or a patch: the tab's text tables
       exercises_.finish_replay(doc_);

@@ -357,6 +357,12 @@ std::string ExerciseInput::describe(Exercise exercise) const {
 
 // ---- student code -----------------------------------------------------------------------------------------
 
+void ExerciseOutcome::fail_with(const ScriptError& e, std::string_view prefix) {
+  error = std::string(prefix) + e.what();
+  out_of_memory = e.out_of_memory();
+  limit = e.limit();
+}
+
 StudentCode::StudentCode(LuaLimits limits) : runtime_(std::make_unique<ScriptRuntime>(limits)) {
   lua_State* L = runtime_->state();
   // The Bézier API lives in the meshedit module; adding it again is harmless once the module does it itself.
@@ -519,9 +525,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   try {
     open_exercise_api(&exercise);
   } catch (const ScriptError& e) {
-    out.error = e.what();
-    out.out_of_memory = e.out_of_memory();
-    out.limit = e.limit();
+    out.fail_with(e);
     return out;
   }
   lua_State* L = runtime_->state();
@@ -569,9 +573,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   try {
     run_protected(closure);
   } catch (const ScriptError& e) {
-    out.error = e.what();
-    out.out_of_memory = e.out_of_memory();
-    out.limit = e.limit();
+    out.fail_with(e);
   }
   output_ = nullptr;
   if (recorder) {

@@ -152,6 +152,10 @@ struct ExerciseOutcome {
   std::optional<TouchCount> touched;  // mine, for the exercises held to a bound (exercise_locality.h): what the run
                                       // touched of its mesh
   std::vector<std::string> output;    // what print() wrote during the call (capped)
+
+  // The one way a script error becomes the outcome: `error` is `prefix` and its text, with its out_of_memory flag
+  // and its limit.
+  void fail_with(const ScriptError& e, std::string_view prefix = {});
 };
 
 struct RunOptions {

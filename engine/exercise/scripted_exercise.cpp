@@ -310,8 +310,7 @@ ExerciseOutcome ScriptedExercise::run_values_reference(const ExerciseInput& inpu
     out.returned = describe(out.value);
     out.ran = true;
   } catch (const ScriptError& e) {
-    out.error = std::string("the exercise's reference failed: ") + e.what();
-    out.out_of_memory = e.out_of_memory();
+    out.fail_with(e, "the exercise's reference failed: ");
   }
   lua_settop(L, 0);
   return out;
@@ -340,8 +339,7 @@ ExerciseOutcome ScriptedExercise::run_reference(const ExerciseInput& input) cons
     }
     out.ran = true;
   } catch (const ScriptError& e) {
-    out.error = std::string("the exercise's reference failed: ") + e.what();
-    out.out_of_memory = e.out_of_memory();
+    out.fail_with(e, "the exercise's reference failed: ");
   }
   lua_settop(L, 0);
   out.validation = validate(*out.mesh);

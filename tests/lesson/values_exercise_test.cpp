@@ -370,5 +370,22 @@ TEST(ValuesExercise, AToleranceFieldDecidesWhatIsClose) {
                                   format_number(0.52 - 0.5) + " apart)");
 }
 
+TEST(ValuesExercise, AReferenceStoppedByALimitSaysWhichLimit) {
+  const fs::path file = write(testing::scratch_dir(), "greedy.lua", R"lua(exercise {
+  name = "greedy_reference", file = "greedy.lua", call = "greedy", takes = "points",
+  reference = function(points) return #string.rep("x", 1 << 30) end,
+  fixtures = { { name = "one point", control = { {0, 0} } } },
+}
+)lua");
+  const Exercise id = register_scripted_exercise(ScriptedExercise::load(file));
+  const ScriptedExercise& definition = *id.definition();
+  const ExerciseOutcome outcome = definition.run_reference(definition.input_of(definition.fixtures()[0]));
+  EXPECT_FALSE(outcome.ran);
+  EXPECT_EQ(outcome.limit, ScriptError::Limit::Memory);
+  EXPECT_FALSE(outcome.out_of_memory) << "the cap is the definition's limit, not the machine running out";
+  EXPECT_EQ(outcome.error.rfind("the exercise's reference failed: ", 0), 0u) << outcome.error;
+  EXPECT_NE(outcome.error.find("memory limit exceeded (512 MB)"), std::string::npos) << outcome.error;
+}
+
 }  // namespace
 }  // namespace meshedit
