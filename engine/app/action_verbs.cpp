@@ -66,8 +66,8 @@ KeyMods parse_key(std::string text, int& key) {
   }
   if (text.size() == 1 && std::isalpha(static_cast<unsigned char>(text[0]))) {
     key = GLFW_KEY_A + (std::toupper(static_cast<unsigned char>(text[0])) - 'A');
-  } else if (const auto named = std::find_if(std::begin(kNamedKeys), std::end(kNamedKeys),
-                                             [&](const NamedKey& k) { return text == k.name; });
+  } else if (const auto* const named = std::find_if(std::begin(kNamedKeys), std::end(kNamedKeys),
+                                                    [&](const NamedKey& k) { return text == k.name; });
              named != std::end(kNamedKeys)) {
     key = named->key;
   } else {
@@ -273,8 +273,8 @@ std::string expect_lesson_feedback(EditorApp& app, const Action& a) {
 
 std::string expect_lesson_step(EditorApp& app, const Action& a) {
   const LessonRunner& lesson = app.lesson();
-  static const char* const states[] = {"empty", "waiting", "finished", "failed"};
-  const std::string got = std::to_string(lesson.current_step() + 1) + " " + states[int(lesson.step_state())];
+  static const char* const kStates[] = {"empty", "waiting", "finished", "failed"};
+  const std::string got = std::to_string(lesson.current_step() + 1) + " " + kStates[int(lesson.step_state())];
   return got == a.args[0] + " " + a.args[1] ? "" : "lesson is at step " + got + " (" + lesson.error() + ")";
 }
 

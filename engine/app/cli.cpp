@@ -88,7 +88,7 @@ const CliCommand* find_command(const std::vector<std::string>& args) {
                                    [&](const CliCommand& c) { return first == c.name; });
   if (named != std::end(kCommands)) return named;
   const bool looks_like_file = first.find_first_of("./\\") != std::string::npos || std::filesystem::exists(first);
-  return looks_like_file || first.rfind("-", 0) == 0 ? window : nullptr;
+  return looks_like_file || first.rfind('-', 0) == 0 ? window : nullptr;
 }
 
 }  // namespace

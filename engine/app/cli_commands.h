@@ -16,24 +16,24 @@ struct UsageError : std::runtime_error {
 };
 
 // The window (no command, or a file as the first argument).
-int run_window(const std::vector<std::string>& args, std::ostream& out);
-int run_demo(const std::vector<std::string>& args, std::ostream& out);
-int run_info(const std::vector<std::string>& args, std::ostream& out);
-int run_convert(const std::vector<std::string>& args, std::ostream& out);
-int run_subdivide(const std::vector<std::string>& args, std::ostream& out);
-int run_triangulate(const std::vector<std::string>& args, std::ostream& out);
-int run_repair(const std::vector<std::string>& args, std::ostream& out);
-int run_render(const std::vector<std::string>& args, std::ostream& out);
+int run_window(const std::vector<std::string>& arguments, std::ostream& out);
+int run_demo(const std::vector<std::string>& arguments, std::ostream& out);
+int run_info(const std::vector<std::string>& arguments, std::ostream& out);
+int run_convert(const std::vector<std::string>& arguments, std::ostream& out);
+int run_subdivide(const std::vector<std::string>& arguments, std::ostream& out);
+int run_triangulate(const std::vector<std::string>& arguments, std::ostream& out);
+int run_repair(const std::vector<std::string>& arguments, std::ostream& out);
+int run_render(const std::vector<std::string>& arguments, std::ostream& out);
 // A Lua script with no window; ScriptError (its file:line message) when the script fails.
-int run_run(const std::vector<std::string>& args, std::ostream& out);
+int run_run(const std::vector<std::string>& arguments, std::ostream& out);
 // `grade` (cli_grade.cpp lists its arguments): 0 when grading worked, whatever the score; GradeError (exit status 1)
 // when grading itself could not be done.
-int run_grade(const std::vector<std::string>& args, std::ostream& out);
+int run_grade(const std::vector<std::string>& arguments, std::ostream& out);
 // `lesson FILE --headless [--answers ANSWERS.lua] [--student DIR]`: every step with scripted answers, your_turn with
 // the student folder DIR; 0 when all pass. UsageError without --headless; ScriptError (a step failed: its file:line).
-int run_lesson(const std::vector<std::string>& args, std::ostream& out);
+int run_lesson(const std::vector<std::string>& arguments, std::ostream& out);
 // `paths`: the folders of lessons, assets, shaders, student and exercise files and fonts this binary uses.
-int run_paths(const std::vector<std::string>& args, std::ostream& out);
+int run_paths(const std::vector<std::string>& arguments, std::ostream& out);
 
 // Argument helpers shared by the commands.
 // Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.

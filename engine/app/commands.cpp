@@ -81,7 +81,7 @@ std::optional<KeyChord> command_key(const Command& command) {
 }
 
 std::span<const int> bound_keys() {
-  static const std::vector<int> keys = [] {
+  static const std::vector<int> kKeys = [] {
     std::vector<int> all;
     for (const Command& c : commands()) {
       for (const char* text : {c.key, c.other_key}) {
@@ -91,7 +91,7 @@ std::span<const int> bound_keys() {
     }
     return all;
   }();
-  return keys;
+  return kKeys;
 }
 
 std::string lesson_key_name(int key, KeyMods mods) {

@@ -268,7 +268,7 @@ class EditorApp {
   // The view's rectangle in framebuffer pixels, from the layout's (window coordinates).
   void place_view(int framebuffer_width, int framebuffer_height);
   void begin_view_drawing();  // GL viewport and scissor on the view
-  void end_view_drawing();
+  static void end_view_drawing();
   void draw_columns();
   void draw_left_column();
   void draw_right_column();

@@ -243,14 +243,14 @@ void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
   // The mouse, then the command table's keys (document/command_table.h) under a heading per view.
-  const char* const kMouse[][2] = {
+  static const char* const kMouse[][2] = {
       {"click", "select the vertex, edge, halfedge or face under the cursor"},
       {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
   };
-  const std::pair<CommandView, const char*> kHeadings[] = {{CommandView::Mesh, "Mesh view"},
-                                                           {CommandView::Curve, "Curve view"},
-                                                           {CommandView::Patches, "Patch view"},
-                                                           {CommandView::Everywhere, "Every view"}};
+  static const std::pair<CommandView, const char*> kHeadings[] = {{CommandView::Mesh, "Mesh view"},
+                                                                  {CommandView::Curve, "Curve view"},
+                                                                  {CommandView::Patches, "Patch view"},
+                                                                  {CommandView::Everywhere, "Every view"}};
   if (ImGui::BeginTable("keys", 2, ImGuiTableFlags_RowBg)) {
     const auto row = [](const char* keys, const char* text) {
       ImGui::TableNextColumn();

@@ -156,7 +156,7 @@ float GlfwWindow::ui_scale() const {
 
 bool GlfwWindow::take_content_scale_changed() { return std::exchange(content_scale_changed_, false); }
 
-FontsLoaded GlfwWindow::apply_look(float font_px, Theme theme) {
+FontsLoaded GlfwWindow::apply_look(float font_px, Theme theme) {  // NOLINT(readability-make-member-function-const)
   const float scale = ui_scale();
   const FontsLoaded fonts = load_fonts(font_px, scale, pixels_per_coordinate());
   ImGuiStyle style;

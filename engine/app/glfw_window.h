@@ -64,6 +64,7 @@ class GlfwWindow {
   // True once after the window moved to a monitor of another content scale.
   bool take_content_scale_changed();
   // Applies the text size (pixels at content scale 1) and the theme; returns what the fonts became.
+  // Not const: it changes the window's fonts and style (ImGui's state), though no field of this object.
   FontsLoaded apply_look(float font_px, Theme theme);
 
  private:

@@ -9,6 +9,8 @@
 
 namespace meshedit {
 
+// By value, as the web host takes them to keep.
+// NOLINTNEXTLINE(performance-unnecessary-value-param)
 void run_frame_loop(std::function<bool()> frame, std::function<void()> finish) {
   while (frame()) {
   }

@@ -66,7 +66,7 @@ TriangleCase replay_case(const uint8_t order[3], const bool side_h0[3]) {
 }  // namespace
 
 const TriangleCase* triangle_cases() {
-  static const std::vector<TriangleCase> table = [] {
+  static const std::vector<TriangleCase> kTable = [] {
     std::vector<TriangleCase> cases(64);
     for (unsigned code = 0; code < 8; ++code) {
       uint8_t order_of[3] = {0, 1, 2};
@@ -84,7 +84,7 @@ const TriangleCase* triangle_cases() {
     }
     return cases;
   }();
-  return table.data();
+  return kTable.data();
 }
 
 }  // namespace meshedit::loop_cases

@@ -249,7 +249,7 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   const auto num_interior = static_cast<uint32_t>(in.indices.size());
   const auto num_halfedges = static_cast<uint32_t>(m.h.size());
-  HalfedgeRecord* h_ = m.h.data();
+  HalfedgeRecord* records = m.h.data();
 
   // Walk each hole once, creating its boundary halfedges in walking order; each takes its twin's edge.
   std::vector<uint32_t> boundary_twin_of(num_halfedges > num_interior ? num_interior : 0, kNone);
@@ -264,22 +264,22 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
     do {
       const uint32_t b = next_boundary++;
       boundary_twin_of[h] = b;
-      h_[h].twin = HalfedgeId(b);
-      h_[b].twin = HalfedgeId(h);
-      h_[b].vertex = h_[h_[h].next.index].vertex;  // h's head
-      h_[b].edge = h_[h].edge;
-      h_[b].face = loop;
-      if (previous != kNone) h_[previous].next = HalfedgeId(b);
+      records[h].twin = HalfedgeId(b);
+      records[b].twin = HalfedgeId(h);
+      records[b].vertex = records[records[h].next.index].vertex;  // h's head
+      records[b].edge = records[h].edge;
+      records[b].face = loop;
+      if (previous != kNone) records[previous].next = HalfedgeId(b);
       previous = b;
       h = open_incoming[in.indices[h]];  // the open halfedge arriving where this one leaves
     } while (h != start);
-    h_[previous].next = m.b_halfedge.back();
+    records[previous].next = m.b_halfedge.back();
   }
 
   // Each edge's first halfedge (number_edges).
   m.e_halfedge.reserve(num_halfedges / 2);
   for (uint32_t h = 0; h < num_interior; ++h) {
-    if (h_[h].edge.index == m.e_halfedge.size()) m.e_halfedge.push_back(HalfedgeId(h));
+    if (records[h].edge.index == m.e_halfedge.size()) m.e_halfedge.push_back(HalfedgeId(h));
   }
   m.e_alive.assign(m.e_halfedge.size(), true);
 
@@ -290,7 +290,7 @@ size_t finish_build(const PolygonMesh& in, std::span<const uint32_t> twin, std::
     HalfedgeId& slot = m.v_halfedge[in.indices[h]];
     if (!slot.valid()) slot = HalfedgeId(h);
   }
-  for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[h_[b].vertex.index] = HalfedgeId(b);
+  for (uint32_t b = num_interior; b < num_halfedges; ++b) m.v_halfedge[records[b].vertex.index] = HalfedgeId(b);
   m.v_alive.assign(in.num_vertices(), true);
   size_t unused = 0;
   for (size_t v = 0; v < in.num_vertices(); ++v) {

@@ -201,7 +201,7 @@ void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin,
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
   m.h.resize_for_overwrite(num_halfedges);  // interior records written here, boundary ones by finish_build
   m.h_alive.assign(num_halfedges, true);
-  HalfedgeRecord* h_ = m.h.data();
+  HalfedgeRecord* records = m.h.data();
   m.f_halfedge.resize_for_overwrite(in.num_faces());  // every face's written below
   m.f_alive.assign(in.num_faces(), true);
   uint32_t next_edge = 0;
@@ -211,9 +211,9 @@ void write_face_halfedges(const PolygonMesh& in, std::span<const uint32_t> twin,
     for (uint32_t h = begin; h < end; ++h) {
       // number_edges' numbering: halfedges are written in id order, so a lower twin's record already has its edge.
       const uint32_t t = twin[h];  // kNone (open) is above every halfedge
-      const uint32_t edge = t > h ? next_edge++ : h_[t].edge.index;
-      h_[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(t), VertexId(in.indices[h]),
-                             EdgeId(edge), FaceId::face(f)};
+      const uint32_t edge = t > h ? next_edge++ : records[t].edge.index;
+      records[h] = HalfedgeRecord{HalfedgeId(h + 1 < end ? h + 1 : begin), HalfedgeId(t), VertexId(in.indices[h]),
+                                  EdgeId(edge), FaceId::face(f)};
     }
   }
 }
@@ -255,20 +255,20 @@ bool build_fast(const PolygonMesh& in, HalfedgeMesh& mesh, size_t& unused_vertic
 
   write_face_halfedges(in, twin, num_halfedges, mesh);
   MeshStorage::Arrays m = MeshStorage::arrays(mesh);
-  const HalfedgeRecord* h_ = m.h.data();
+  const HalfedgeRecord* records = m.h.data();
 
   // Two polygons glued along an edge with the same corners are one face repeated (triangles: match_twins).
   for (uint32_t h = 0; h < num_interior && !triangles; ++h) {
     const uint32_t t = twin[h];
     if (t == kNone || t < h) continue;
-    const uint32_t f = h_[h].face.slot(), g = h_[t].face.slot();
+    const uint32_t f = records[h].face.slot(), g = records[t].face.slot();
     const uint32_t size_f = in.face_offsets[f + 1] - in.face_offsets[f];
     if (size_f != in.face_offsets[g + 1] - in.face_offsets[g]) continue;
     if (sorted_corners(in, f) == sorted_corners(in, g)) return false;
   }
   const bool fans_whole =
       triangles ? every_fan_whole(out, twin, open_incoming, triangle_next)
-                : every_fan_whole(out, twin, open_incoming, [h_](uint32_t h) { return h_[h].next.index; });
+                : every_fan_whole(out, twin, open_incoming, [records](uint32_t h) { return records[h].next.index; });
   if (!fans_whole) return false;
 
   const size_t unused = finish_build(in, twin, open_incoming, mesh);

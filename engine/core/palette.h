@@ -174,9 +174,9 @@ inline Palette make_palette(const Swatches& s, const Neutrals& n) {
 }
 
 inline const Palette& palette_for(Theme theme) {
-  static const Palette dark = make_palette(kDarkSwatches, kDarkNeutrals);
-  static const Palette light = make_palette(kLightSwatches, kLightNeutrals);
-  return theme == Theme::Light ? light : dark;
+  static const Palette kDark = make_palette(kDarkSwatches, kDarkNeutrals);
+  static const Palette kLight = make_palette(kLightSwatches, kLightNeutrals);
+  return theme == Theme::Light ? kLight : kDark;
 }
 
 // The colour of level k of de Casteljau's pyramid (k = 0: the control polygon).

@@ -76,7 +76,7 @@ std::optional<SubdivisionScheme> scheme_named(std::string_view name) {
 }
 
 const char* scheme_names() {
-  static const std::string names = [] {
+  static const std::string kNames = [] {
     std::string text;
     const size_t n = std::size(kSchemes);
     for (size_t i = 0; i < n; ++i) {
@@ -84,7 +84,7 @@ const char* scheme_names() {
     }
     return text;
   }();
-  return names.c_str();
+  return kNames.c_str();
 }
 
 int phase_count(SubdivisionScheme scheme) { return row(scheme).phases; }

@@ -267,8 +267,8 @@ Check ExerciseSession::take_run(MeshDocument& doc, Selection& selection, Prepare
 }
 
 const std::vector<RecordedEdit>& ExerciseSession::edits() const {
-  static const std::vector<RecordedEdit> none;
-  return run_ && run_->mine ? run_->report.mine.edits : none;
+  static const std::vector<RecordedEdit> kNone;
+  return run_ && run_->mine ? run_->report.mine.edits : kNone;
 }
 
 size_t ExerciseSession::replay_length() const { return edits().size(); }

@@ -72,8 +72,8 @@ class ChangeIndex {
   ChangeIndex() = default;
   explicit ChangeIndex(const std::vector<FieldChange>& changes);
 
-  bool contains(ElementRef element, MeshField field) const { return cells_.count(key(element, field)) != 0; }
-  bool contains(ElementRef element) const { return element_set_.count(element) != 0; }
+  bool contains(ElementRef element, MeshField field) const { return cells_.contains(key(element, field)); }
+  bool contains(ElementRef element) const { return element_set_.contains(element); }
   // Every element with at least one changed field, in diff order, each once (what the renderer highlights).
   const std::vector<ElementRef>& elements() const { return elements_; }
   size_t cell_count() const { return cells_.size(); }

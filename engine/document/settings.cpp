@@ -47,7 +47,7 @@ struct Key {
 };
 
 Key number_key(const char* name, const char* expected, double low, double high,
-               std::function<void(Settings&, double)> set, std::function<double(const Settings&)> get) {
+               const std::function<void(Settings&, double)>& set, const std::function<double(const Settings&)>& get) {
   return {name, expected,
           [=](Settings& s, const std::string& text) {
             double value = 0.0;
@@ -75,7 +75,7 @@ Key ems_key(const char* name, float LayoutPrefs::*field, float low) {
 }
 
 const std::vector<Key>& keys() {
-  static const std::vector<Key> table = {
+  static const std::vector<Key> kTable = {
       number_key(
           "window_width", "a width in pixels", Settings::kMinWindowWidth, Settings::kMaxWindowSide,
           [](Settings& s, double v) { s.window_width = int(v); },
@@ -107,7 +107,7 @@ const std::vector<Key>& keys() {
        },
        [](const Settings& s) { return std::string(s.animate_edits ? "true" : "false"); }},
   };
-  return table;
+  return kTable;
 }
 
 }  // namespace

@@ -198,7 +198,7 @@ std::string read_patch_points(lua_State* L, int index, BezierPatch& out) {
     out = *patch;
     return "";
   }
-  const char* kShape = "must be 16 points row by row, 4 rows of 4 points, or meshedit.patch(...)";
+  constexpr const char* kShape = "must be 16 points row by row, 4 rows of 4 points, or meshedit.patch(...)";
   if (!lua_istable(L, index)) return std::string(kShape) + ", got " + type_name(L, index);
   lua_getfield(L, index, "points");  // {points = {...}}, as student code receives a patch
   const bool wrapped = lua_istable(L, -1);

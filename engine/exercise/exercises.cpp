@@ -516,6 +516,33 @@ bool StudentCode::defines(Exercise exercise) {
   return found;
 }
 
+namespace {
+
+// An upsample is recorded even when no replay asked for it: the recording's budget is what stops a runaway one early
+// (upsample_runaway.h), and its edits say where it was.
+void start_recording(std::optional<EditRecorder>& recorder, lua_State* L, Exercise exercise, const ExerciseInput& input,
+                     const RunOptions& options, const ExerciseOutcome& out) {
+  if (!(options.record_edits || exercise == Exercise::Upsample) || !out.mesh) return;
+  EditRecorder::Options recording;
+  recording.keep_before = false;
+  if (options.max_edits > 0) recording.max_edits = options.max_edits;
+  else if (exercise == Exercise::Upsample) recording.max_edits = upsample_edit_budget(*input.mesh);
+  recorder.emplace(L, out.mesh, recording);
+}
+
+// What the call returned, from the results table at the top of the stack ({result = {value}}).
+void read_results(lua_State* L, Exercise exercise, ExerciseOutcome& out) {
+  lua_pushliteral(L, "result");
+  if (lua_rawget(L, -2) == LUA_TTABLE) {
+    lua_rawgeti(L, -1, 1);
+    read_returned_value(L, -1, exercise, out.mesh, out);
+  } else {
+    out.error = "the call of " + std::string(exercise_info(exercise).function) + " gave no result table";
+  }
+}
+
+}  // namespace
+
 ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, const RunOptions& options) {
   check_input(exercise, input);
   const ExerciseInfo& info = exercise_info(exercise);
@@ -559,16 +586,8 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   const int results_ref = luaL_ref(L, LUA_REGISTRYINDEX);
   lua_settop(L, 0);
 
-  // An upsample is recorded even when no replay asked for it: the recording's budget is what stops a runaway one
-  // early (upsample_runaway.h), and its edits say where it was.
   std::optional<EditRecorder> recorder;
-  if ((options.record_edits || exercise == Exercise::Upsample) && out.mesh) {
-    EditRecorder::Options recording;
-    recording.keep_before = false;
-    if (options.max_edits > 0) recording.max_edits = options.max_edits;
-    else if (exercise == Exercise::Upsample) recording.max_edits = upsample_edit_budget(*input.mesh);
-    recorder.emplace(L, out.mesh, recording);
-  }
+  start_recording(recorder, L, exercise, input, options, out);
   output_ = &out.output;
   try {
     run_protected(closure);
@@ -587,15 +606,7 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   luaL_unref(L, LUA_REGISTRYINDEX, closure);
   lua_rawgeti(L, LUA_REGISTRYINDEX, results_ref);
   luaL_unref(L, LUA_REGISTRYINDEX, results_ref);
-  if (out.error.empty()) {
-    lua_pushliteral(L, "result");
-    if (lua_rawget(L, -2) == LUA_TTABLE) {
-      lua_rawgeti(L, -1, 1);
-      read_returned_value(L, -1, exercise, out.mesh, out);
-    } else {
-      out.error = "the call of " + std::string(info.function) + " gave no result table";
-    }
-  }
+  if (out.error.empty()) read_results(L, exercise, out);
   lua_settop(L, 0);
   if (out.mesh) out.validation = validate(*out.mesh);
   return out;

@@ -75,7 +75,10 @@ struct ExerciseInfo {
 // the same exercise (a scripted name registered again keeps its handle).
 class Exercise {
  public:
+  // Named as ExerciseKind's enumerators, which they stand for.
+  // NOLINTBEGIN(readability-identifier-naming)
   static const Exercise CurveStep, PatchEvaluate, VertexNormal, FlipEdge, SplitEdge, Upsample;
+  // NOLINTEND(readability-identifier-naming)
 
   constexpr ExerciseKind kind() const { return kind_; }
   constexpr bool scripted() const { return kind_ == ExerciseKind::Scripted; }

@@ -160,16 +160,16 @@ struct SuiteApi {
   static bool get_field(lua_State* L, const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; }
 
   static void refuse_unknown_fields(lua_State* L, bool test) {
-    static const std::set<std::string> suite_fields = {
+    static const std::set<std::string> kSuiteFields = {
         "name", "files", "time_limit", "memory_mb", "visibility", "reference", "allow_api", "partial", "output_kb"};
-    static const std::set<std::string> test_fields = {"name",      "points",       "number", "visibility", "time_limit",
+    static const std::set<std::string> kTestFields = {"name",      "points",       "number", "visibility", "time_limit",
                                                       "memory_mb", "partial",      "files",  "reference",  "allow_api",
                                                       "tags",      "extra_credit", "run"};
-    const auto& allowed = test ? test_fields : suite_fields;
+    const auto& allowed = test ? kTestFields : kSuiteFields;
     lua_pushnil(L);
     while (lua_next(L, 1) != 0) {
       lua_pop(L, 1);
-      if (lua_type(L, -1) != LUA_TSTRING || !allowed.count(lua_tostring(L, -1))) {
+      if (lua_type(L, -1) != LUA_TSTRING || !allowed.contains(lua_tostring(L, -1))) {
         const std::string key = lua_type(L, -1) == LUA_TSTRING ? lua_tostring(L, -1) : luaL_typename(L, -1);
         luaL_error(L, "%s: unknown field '%s' (fields: %s)", test ? "test" : "suite", key.c_str(),
                    comma_list(allowed).c_str());
@@ -202,7 +202,7 @@ struct SuiteApi {
   // How a test runs and is shown: visibility, time and memory limits, output cap (suites only), partial credit.
   static void read_run_fields(lua_State* L, Fields& f, bool test) {
     if (get_field(L, "visibility")) {
-      if (lua_type(L, -1) != LUA_TSTRING || !kVisibilities.count(lua_tostring(L, -1))) {
+      if (lua_type(L, -1) != LUA_TSTRING || !kVisibilities.contains(lua_tostring(L, -1))) {
         luaL_error(L, "field 'visibility' must be visible, hidden, after_due_date or after_published");
       }
       f.visibility = lua_tostring(L, -1);
@@ -601,7 +601,7 @@ void Suite::cap_time_limit(size_t index, double seconds) {
   if (index < tests_.size()) tests_[index].time_limit = std::min(tests_[index].time_limit, seconds);
 }
 
-std::vector<std::string> Suite::files_for(const TestSpec& spec, const Submission& submission) const {
+std::vector<std::string> Suite::files_for(const TestSpec& spec, const Submission& submission) {
   if (!spec.files.empty()) return spec.files;
   std::vector<std::string> all;
   for (const auto& f : submission.files()) all.push_back(f.name);

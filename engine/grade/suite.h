@@ -55,7 +55,7 @@ class Suite {
   const std::vector<TestSpec>& tests() const { return tests_; }
   size_t output_bytes() const { return output_bytes_; }
   // The student files test `spec` loads: its own list (or its suite{}'s), else every .lua file submitted.
-  std::vector<std::string> files_for(const TestSpec& spec, const Submission& submission) const;
+  static std::vector<std::string> files_for(const TestSpec& spec, const Submission& submission);
   // Every file some test names (for the report of missing files).
   std::vector<std::string> named_files() const;
 

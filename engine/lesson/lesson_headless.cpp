@@ -271,15 +271,8 @@ class HeadlessDriver {
     return "";
   }
 
-  // Gives one scripted answer; "" or the failure line.
-  std::string give(const Answer& answer, const LessonWait& wait) {
-    if (answer.kind == Answer::Kind::YourTurn) {
-      const std::string where = wait.where.empty() ? "" : wait.where + ": ";
-      return where + step_name_ + ": answer your_turn = \"" + answer.value +
-             "\" expects a your_turn run, but the step waits for " + wait.describe();
-    }
-    bool used = false;
-    const size_t judged_before = runner_.judgements();
+  // Hands one answer to the runner (or makes its edit): "" or the failure line; `used` says whether the step took it.
+  std::string deliver(const Answer& answer, bool& used) {
     switch (answer.kind) {
       case Answer::Kind::Key:
         out_ << "  > key " << answer.value;
@@ -344,6 +337,19 @@ class HeadlessDriver {
         break;
       }
     }
+    return "";
+  }
+
+  // Gives one scripted answer; "" or the failure line.
+  std::string give(const Answer& answer, const LessonWait& wait) {
+    if (answer.kind == Answer::Kind::YourTurn) {
+      const std::string where = wait.where.empty() ? "" : wait.where + ": ";
+      return where + step_name_ + ": answer your_turn = \"" + answer.value +
+             "\" expects a your_turn run, but the step waits for " + wait.describe();
+    }
+    bool used = false;
+    const size_t judged_before = runner_.judgements();
+    if (std::string failure = deliver(answer, used); !failure.empty()) return failure;
     if (!used && !answer.is_edit()) {
       out_ << " (not awaited: the step waits for " << wait.describe() << ")";
     }

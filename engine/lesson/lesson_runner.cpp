@@ -116,7 +116,7 @@ LessonRunner::Prepared::~Prepared() = default;
 LessonRunner::Prepared::Prepared(Prepared&&) noexcept = default;
 LessonRunner::Prepared& LessonRunner::Prepared::operator=(Prepared&&) noexcept = default;
 
-const std::string& LessonRunner::Prepared::title() const { return script ? script->title : kEmptyText; }
+const std::string& LessonRunner::Prepared::title() const { return script_ ? script_->title : kEmptyText; }
 
 // ---- loading ---------------------------------------------------------------------------------------
 
@@ -154,7 +154,7 @@ bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) 
   bool named = false, out_of_memory = false;
   std::string failure;
   try {
-    lesson.path = path;
+    lesson.path_ = path;
     named = true;
     failure = read_and_run(lesson);
   } catch (const std::exception& e) {  // ScriptError, bad_alloc: what was made so far goes with `lesson`
@@ -162,34 +162,34 @@ bool LessonRunner::prepare(const std::filesystem::path& path, Prepared& lesson) 
   }
   if (failure.empty()) return true;
   // The lesson that was running goes on; the file asked for is the one hot reload watches.
-  if (named) path_.swap(lesson.path);
+  if (named) path_.swap(lesson.path_);
   load_error_ = std::move(failure);
   load_out_of_memory_ = out_of_memory;
   return false;
 }
 
 std::string LessonRunner::read_and_run(Prepared& lesson) {
-  const std::filesystem::path& path = lesson.path;
+  const std::filesystem::path& path = lesson.path_;
   const std::optional<std::string> text = read_lua_file(path);
   if (!text) return "cannot open " + path.string();
   const std::string chunk = path.filename().string();
 
-  lesson.script = std::make_unique<LessonScript>();
-  LessonScript& script = *lesson.script;
+  lesson.script_ = std::make_unique<LessonScript>();
+  LessonScript& script = *lesson.script_;
   script.host = &host_;
   script.directory = path.parent_path();  // lesson_file() finds assets next to the lesson
   script.student_folder = student_folder_;
   script.student_limits = student_limits_;
   {
     const BusyScope busy(busy_);
-    lesson.runtime = std::make_unique<ScriptRuntime>(limits_);
-    lesson.runtime->set_print([this](const std::string& line) {
+    lesson.runtime_ = std::make_unique<ScriptRuntime>(limits_);
+    lesson.runtime_->set_print([this](const std::string& line) {
       if (print_) print_(line);
     });
-    open_lesson_api(*lesson.runtime, script);
-    lesson.runtime->load(*text, chunk);
-    lesson.runtime->start_budget();
-    lesson.runtime->call(0, 0);
+    open_lesson_api(*lesson.runtime_, script);
+    lesson.runtime_->load(*text, chunk);
+    lesson.runtime_->start_budget();
+    lesson.runtime_->call(0, 0);
   }
   if (script.steps.empty()) {
     return chunk + ": no steps (a lesson defines them with step(\"title\", function() ... end))";
@@ -203,9 +203,9 @@ void LessonRunner::take(Prepared&& lesson, size_t index) noexcept {
   load_error_.clear();
   load_out_of_memory_ = false;
   thread_ref_ = LUA_NOREF;  // it belonged to the old runtime
-  runtime_ = std::move(lesson.runtime);
-  script_ = std::move(lesson.script);
-  path_.swap(lesson.path);
+  runtime_ = std::move(lesson.runtime_);
+  script_ = std::move(lesson.script_);
+  path_.swap(lesson.path_);
   start_step(std::min(index, script_->steps.size() - 1));
 }
 

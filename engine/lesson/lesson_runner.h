@@ -86,10 +86,10 @@ class LessonRunner {
 
    private:
     friend class LessonRunner;
-    std::filesystem::path path;
+    std::filesystem::path path_;
     // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.
-    std::unique_ptr<LessonScript> script;
-    std::unique_ptr<LuaRuntime> runtime;
+    std::unique_ptr<LessonScript> script_;
+    std::unique_ptr<LuaRuntime> runtime_;
   };
 
   // Loads the file and starts its first step: prepare, then take. False when the file cannot be read or run, or

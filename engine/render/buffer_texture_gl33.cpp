@@ -10,10 +10,10 @@ namespace meshedit::gl {
 BufferTexture::BufferTexture(GLenum format) : format_(format), buffer_(make_buffer()), texture_(make_texture()) {}
 
 void BufferTexture::upload(const void* data, size_t bytes, GLenum usage) {
-  static const uint32_t zero[4] = {0, 0, 0, 0};
+  static const uint32_t kZero[4] = {0, 0, 0, 0};
   glBindBuffer(GL_TEXTURE_BUFFER, buffer_.get());
   if (bytes == 0) {
-    glBufferData(GL_TEXTURE_BUFFER, sizeof zero, zero, usage);
+    glBufferData(GL_TEXTURE_BUFFER, sizeof kZero, kZero, usage);
   } else {
     glBufferData(GL_TEXTURE_BUFFER, GLsizeiptr(bytes), data, usage);
   }

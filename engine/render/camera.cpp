@@ -157,7 +157,7 @@ double OrbitCamera::near_plane() const {
 
 glm::dmat4 OrbitCamera::view() const { return glm::lookAt(eye(), target_, up_vector()); }
 
-double OrbitCamera::fov_y_radians(double aspect) const {
+double OrbitCamera::fov_y_radians(double aspect) {
   const double fov = radians(kFovDegrees);
   if (aspect >= 1.0 || !(aspect > 0.0)) return fov;
   return 2.0 * std::atan(std::tan(fov * 0.5) / aspect);

@@ -114,7 +114,7 @@ class OrbitCamera {
   Ray ray(const glm::dvec2& pixel, Viewport viewport) const;
 
  private:
-  double fov_y_radians(double aspect) const;
+  static double fov_y_radians(double aspect);
   // Unit vector from the target towards the eye for these angles.
   glm::dvec3 view_offset(double yaw, double pitch) const;
   // The distance at which the default view shows every corner of fit_box_.

@@ -13,7 +13,8 @@ static_assert(sizeof(EdgeSegment) == 32, "EdgeSegment is uploaded as is");
 static_assert(sizeof(VertexPoint) == 16, "VertexPoint is uploaded as is");
 static_assert(sizeof(ItemStyle) == 8, "ItemStyle is uploaded as is");
 
-const void* offset(size_t bytes) { return reinterpret_cast<const void*>(bytes); }
+// GL takes a buffer offset as a pointer.
+const void* offset(size_t bytes) { return reinterpret_cast<const void*>(bytes); }  // NOLINT(performance-no-int-to-ptr)
 
 void style_attributes(GLuint colour, GLuint size) {
   glEnableVertexAttribArray(colour);

@@ -121,22 +121,24 @@ void GpuMesh::apply(const SlotPatch& p) {
           triangles.push_back(f->triangle);
           normals.push_back(f->normal);
         }
-        write_buffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get(), first * 3 * sizeof(uint32_t), triangles.data(),
+        write_buffer(GL_ELEMENT_ARRAY_BUFFER, triangles_.get(), size_t(first) * 3 * sizeof(uint32_t), triangles.data(),
                      triangles.size() * 3 * sizeof(uint32_t));
         if (pull_) {
-          pull_->corners.write(first * 3 * sizeof(uint32_t), triangles.data(), triangles.size() * 3 * sizeof(uint32_t));
+          pull_->corners.write(size_t(first) * 3 * sizeof(uint32_t), triangles.data(),
+                               triangles.size() * 3 * sizeof(uint32_t));
         }
-        face_normals.write(first * sizeof(glm::vec4), normals.data(), normals.size() * sizeof(glm::vec4));
+        face_normals.write(size_t(first) * sizeof(glm::vec4), normals.data(), normals.size() * sizeof(glm::vec4));
       });
   using Extra = std::pair<uint32_t, std::array<uint32_t, 3>>;
   glBindVertexArray(extra_vao_.get());
   for_each_run<Extra, std::array<uint32_t, 3>>(
       p.extra_triangles, [](const Extra& x) { return x.second; },
       [&](uint32_t first, const std::vector<std::array<uint32_t, 3>>& run) {
-        write_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), first * 3 * sizeof(uint32_t), run.data(),
+        write_buffer(GL_ELEMENT_ARRAY_BUFFER, extra_triangles_.get(), size_t(first) * 3 * sizeof(uint32_t), run.data(),
                      run.size() * 3 * sizeof(uint32_t));
         if (pull_) {
-          pull_->extra_corners.write(first * 3 * sizeof(uint32_t), run.data(), run.size() * 3 * sizeof(uint32_t));
+          pull_->extra_corners.write(size_t(first) * 3 * sizeof(uint32_t), run.data(),
+                                     run.size() * 3 * sizeof(uint32_t));
         }
       });
   glBindVertexArray(0);

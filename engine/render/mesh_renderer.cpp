@@ -192,16 +192,16 @@ struct MeshRenderer::Impl {
     glGetIntegerv(GL_SAMPLES, &stats.framebuffer_samples);
   }
 
-  void upload(const HalfedgeMesh& mesh, std::string reason);
+  void upload(const HalfedgeMesh& source, std::string reason);
   size_t buffer_texel_cap() const {
     return style.max_buffer_texels != 0 ? std::min(style.max_buffer_texels, max_buffer_texels) : max_buffer_texels;
   }
   // Throws RenderError, with nothing drawn until a mesh is uploaded, when a buffer texture would need more texels.
   void refuse_if_too_large(size_t texels);
-  bool patch(const HalfedgeMesh& mesh, const MeshChange& change);
+  bool patch(const HalfedgeMesh& source, const MeshChange& change);
   template <class Before>
   bool patch_from(const Before& before, uint64_t before_version, const HalfedgeMesh& source, const MeshChange& change);
-  void uploaded_state(const HalfedgeMesh& mesh);
+  void uploaded_state(const HalfedgeMesh& source);
   void refresh_changed(std::span<const ElementRef> list, uint64_t key);
   void refresh_focus(ElementRef hovered, ElementRef selected);
   void ensure_arrows();
@@ -209,7 +209,7 @@ struct MeshRenderer::Impl {
                   const Highlights& highlights);
   void draw_lines_and_points(const gl::CameraUniforms& uniforms, const ViewOptions& options,
                              const Highlights& highlights);
-  void draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only);
+  void draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only) const;
   void ensure_pick_target(Viewport viewport);
   void count_gpu_bytes();
   PickKey pick_key_for(const OrbitCamera& camera, Viewport viewport) const;
@@ -548,7 +548,7 @@ void MeshRenderer::Impl::draw_lines_and_points(const gl::CameraUniforms& uniform
   focus_points.draw();
 }
 
-void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only) {
+void MeshRenderer::Impl::draw_ids(const gl::CameraUniforms& uniforms, bool halfedges, bool faces_only) const {
   face_pick.use();
   gl::set_camera(face_pick, uniforms);
   glUniform1ui(face_pick.uniform("u_kind_bits"), pick_kind_bits(ElementKind::Face));

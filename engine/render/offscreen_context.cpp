@@ -75,8 +75,8 @@ OffscreenContext::OffscreenContext() {
 }
 
 OffscreenContext::~OffscreenContext() {
-  auto display = static_cast<EGLDisplay>(display_);
-  auto context = static_cast<EGLContext>(context_);
+  auto* display = static_cast<EGLDisplay>(display_);
+  auto* context = static_cast<EGLContext>(context_);
   if (eglGetCurrentContext() == context) eglMakeCurrent(display, EGL_NO_SURFACE, EGL_NO_SURFACE, EGL_NO_CONTEXT);
   eglDestroyContext(display, context);
 }
@@ -88,7 +88,7 @@ void OffscreenContext::make_current() {
   }
 }
 
-std::string OffscreenContext::description() const {
+std::string OffscreenContext::description() {
   const auto* renderer = reinterpret_cast<const char*>(glGetString(GL_RENDERER));
   const auto* version = reinterpret_cast<const char*>(glGetString(GL_VERSION));
   return std::string(renderer ? renderer : "?") + ", " + (version ? version : "?");

@@ -20,7 +20,7 @@ class OffscreenContext {
 
   void make_current();
   // GL_RENDERER and GL_VERSION, e.g. "llvmpipe (LLVM 15.0.6, 256 bits), 4.5 (Core Profile) Mesa 22.3.6".
-  std::string description() const;
+  static std::string description();
 
  private:
   void* display_ = nullptr;  // EGLDisplay

@@ -219,9 +219,9 @@ void build_smooth_normals(const HalfedgeMesh& mesh, int threads, const MeshArray
     for (uint32_t f = 0; f < faces; ++f) {
       if (!drawn[f]) continue;
       const glm::dvec3& term = terms[f];
-      add(g.triangles[3 * f], term);
-      add(g.triangles[3 * f + 1], term);
-      add(g.triangles[3 * f + 2], term);
+      add(g.triangles[size_t(3) * f], term);
+      add(g.triangles[size_t(3) * f + 1], term);
+      add(g.triangles[size_t(3) * f + 2], term);
       for (; extra < g.extra_faces.size() && g.extra_faces[extra] == f; ++extra) {
         add(g.extra_triangles[3 * extra + 2], term);
       }

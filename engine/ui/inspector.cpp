@@ -87,7 +87,7 @@ struct Drawer {
   Selection& selection;
   UiProbe* probe;
 
-  void label(const char* text) {
+  static void label(const char* text) {
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::TextUnformatted(text);
