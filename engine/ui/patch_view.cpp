@@ -1,28 +1,20 @@
-// The patch view's state, its tessellation cache, the probe overlay geometry (pure) and its ImGui panel.
-// The cache compares the patches bit for bit (memcmp), so NaN control points do not force a rebuild
-// every frame and an idle frame costs one comparison of the control points, never a tessellation.
+// The patch view's overlay geometry (pure, in the theme's colours) and its ImGui panel; the state is
+// patch_view_state.h's.
 #include "ui/patch_view.h"
 
 #include <algorithm>
-#include <cmath>
 #include <cstdio>
-#include <cstring>
 #include <iterator>
 #include <span>
-#include <type_traits>
+#include <utility>
 
 #include <imgui.h>
 
-#include "core/mesh_build.h"
-#include "core/mesh_error.h"
 #include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
 
 namespace meshedit {
-
-static_assert(std::is_trivially_copyable_v<BezierPatch> && sizeof(BezierPatch) == 16 * sizeof(glm::dvec3),
-              "patches are compared with memcmp");
 
 namespace {
 
@@ -40,10 +32,6 @@ glm::vec4 mine_colour(const PatchMinePoint& mine) {
 // P(u, v); once your point differs from it, it is the reference's answer and takes the reference colour.
 glm::vec4 surface_point_colour(const PatchMinePoint* mine) {
   return opaque(mine && mine->ran && !mine->equal ? palette().reference : palette().final_point);
-}
-
-bool same_patches(const std::vector<BezierPatch>& a, const std::vector<BezierPatch>& b) {
-  return a.size() == b.size() && (a.empty() || std::memcmp(a.data(), b.data(), a.size() * sizeof(BezierPatch)) == 0);
 }
 
 std::vector<glm::dvec3> sample_curve3(std::span<const glm::dvec3> points, int segments) {
@@ -100,52 +88,6 @@ std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, doub
   items.push_back(item({evaluate_patch(patch, u, v)}, surface_point_colour(nullptr), 12.0f, true,
                        OverlayKind::SurfacePoint, "P(u, v)"));
   return items;
-}
-
-// ---- state -----------------------------------------------------------------------------------------
-
-PatchViewState make_patch_view(std::vector<BezierPatch> patches) {
-  PatchViewState state;
-  state.patches = std::move(patches);
-  return state;
-}
-
-void set_resolution(PatchViewState& state, int resolution) {
-  state.resolution = std::clamp(resolution, 1, kMaxPatchViewResolution);
-}
-
-void select_patch(PatchViewState& state, int index) {
-  state.selected_patch = std::clamp(index, 0, std::max(0, static_cast<int>(state.patches.size()) - 1));
-}
-
-void set_probe(PatchViewState& state, double u, double v) {
-  if (!std::isnan(u)) state.u = std::clamp(u, 0.0, 1.0);
-  if (!std::isnan(v)) state.v = std::clamp(v, 0.0, 1.0);
-}
-
-bool update_tessellation(PatchViewState& state) {
-  set_resolution(state, state.resolution);
-  select_patch(state, state.selected_patch);
-  PatchTessellation& cache = state.tessellation;
-  if (cache.resolution == state.resolution && same_patches(cache.source, state.patches)) return false;
-
-  cache.source = state.patches;
-  cache.resolution = state.resolution;
-  cache.polygons = PolygonMesh{};
-  cache.mesh.reset();
-  cache.report = TessellationReport{};
-  cache.error.clear();
-  ++cache.rebuilds;
-  try {
-    cache.polygons = tessellate_patches(state.patches, state.resolution, &cache.report);
-    HalfedgeMesh mesh = build_halfedge_mesh(cache.polygons);
-    mesh.bump_version_above(cache.last_mesh_version);
-    cache.last_mesh_version = mesh.version();
-    cache.mesh = std::move(mesh);
-  } catch (const MeshError& e) {
-    cache.error = e.what();
-  }
-  return true;
 }
 
 std::vector<PatchOverlayItem> patch_view_overlay(const PatchViewState& state, const PatchMinePoint* mine) {

@@ -1,21 +1,16 @@
-// The patch view: bicubic Bézier patches (.bez) as a tessellated surface with their control nets, and a
-// (u, v) probe that shows the separable evaluation the course teaches: each row of the selected patch
-// evaluated at u, then the column curve through those four points evaluated at v.
+// The patch view's drawing: the overlay over the tessellated surface (the control nets, and the (u, v) probe that
+// shows the separable evaluation the course teaches: each row of the selected patch evaluated at u, then the column
+// curve through those four points evaluated at v) and the ImGui panel, over a PatchViewState
+// (document/patch_view_state.h).
 //
-// This module builds data and an ImGui panel only; the app hands the mesh to MeshRenderer and the
-// overlay polylines to the renderer's overlay drawing. With the "mine" switch on (bezier_mine.h), the probe
-// also shows the point the student's evaluate (scripts/student/patch.lua) gives, and how far it is from P(u, v).
+// This module builds data and an ImGui panel only; the app hands the mesh to MeshRenderer and the overlay polylines
+// to the renderer's overlay drawing. With the "mine" switch on (bezier_mine.h), the probe also shows the point the
+// student's evaluate (scripts/student/patch.lua) gives, and how far it is from P(u, v).
 //
-// Invariants kept by the functions below (not by direct writes to the fields):
-// - resolution is in [1, kMaxPatchViewResolution]; u and v are finite and in [0, 1];
-// - selected_patch is a valid index, or 0 when there are no patches;
-// - the tessellation cache is rebuilt only when the patches (compared bit for bit) or the resolution
-//   differ from what it was built from; each rebuilt HalfedgeMesh gets a version() above every earlier
-//   one, so a renderer caching by version never mistakes a new mesh for the old one.
+// Invariants: the panel changes the state only through patch_view_state.h's functions and its toggles; the overlay
+// is a plain function of the state (and "mine"), in the current theme's colours.
 #pragma once
 
-#include <cstdint>
-#include <optional>
 #include <string>
 #include <vector>
 
@@ -23,16 +18,13 @@
 #include <glm/vec4.hpp>
 
 #include "core/bezier.h"
-#include "core/halfedge_mesh.h"
-#include "core/patch_tessellation.h"
-#include "core/polygon_mesh.h"
+#include "document/patch_view_state.h"
 
 namespace meshedit {
 
 class BezierMine;
 struct PatchMinePoint;
 
-inline constexpr int kMaxPatchViewResolution = 64;
 inline constexpr int kProbeCurveSamples = 32;  // segments of each sampled row and column curve
 
 // ---- overlay geometry ------------------------------------------------------------------------------
@@ -73,45 +65,6 @@ std::vector<PatchOverlayItem> control_net_polylines(const BezierPatch& patch, gl
 //   1 SurfacePoint item (evaluate_patch(patch, u, v)).
 std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, double u, double v,
                                                   int samples = kProbeCurveSamples);
-
-// ---- state -----------------------------------------------------------------------------------------
-
-// The tessellated surface and what it was built from.
-struct PatchTessellation {
-  std::vector<BezierPatch> source;  // the patches it was built from
-  int resolution = 0;               // 0: never built
-  PolygonMesh polygons;
-  std::optional<HalfedgeMesh> mesh;  // empty when the triangles do not form a manifold (see error)
-  TessellationReport report;
-  std::string error;               // why mesh is empty, when it is
-  uint64_t rebuilds = 0;           // how many times it was built (tests and the panel show it)
-  uint64_t last_mesh_version = 0;  // the largest version() handed out so far
-};
-
-struct PatchViewState {
-  std::vector<BezierPatch> patches;
-  int resolution = kDefaultPatchResolution;
-  int selected_patch = 0;
-  double u = 0.5;
-  double v = 0.5;
-  bool show_control_net = true;
-  bool show_surface = true;
-  bool show_probe = true;
-  PatchTessellation tessellation;
-};
-
-// A state showing `patches`; the tessellation is built on the first update_tessellation.
-PatchViewState make_patch_view(std::vector<BezierPatch> patches);
-
-void set_resolution(PatchViewState& state, int resolution);  // clamped to [1, kMaxPatchViewResolution]
-void select_patch(PatchViewState& state, int index);         // clamped to a valid index
-void set_probe(PatchViewState& state, double u, double v);   // each clamped to [0, 1]; NaN ignored
-
-// Rebuilds state.tessellation if the patches or the resolution changed since it was built (clamping
-// the resolution and selected_patch first). Returns true if it rebuilt. A MeshError from tessellating
-// or building the half-edge mesh is caught: the polygons are kept when there are any, `mesh` is empty
-// and `error` says why.
-bool update_tessellation(PatchViewState& state);
 
 // What the renderer should draw over the surface, following the toggles:
 // - show_control_net: the nets of all patches (dim), except the selected one when the probe shows it;

@@ -41,6 +41,7 @@
 #include "core/primitives.h"
 #include "document/document_actions.h"
 #include "document/mesh_document.h"
+#include "document/script_console.h"
 #include "document/selection.h"
 #include "render/camera.h"
 #include "render/mesh_renderer.h"
@@ -52,7 +53,6 @@
 #include "render/slot_geometry.h"
 #include "support/imgui_harness.h"
 #include "ui/pointer_tables.h"
-#include "ui/script_console.h"
 
 namespace {
 

@@ -13,8 +13,8 @@
 #include "core/primitives.h"
 #include "core/validate.h"
 #include "document/mesh_document.h"
+#include "document/script_console.h"
 #include "support/random_edits.h"
-#include "ui/script_console.h"
 
 namespace meshedit {
 namespace {

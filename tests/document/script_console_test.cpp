@@ -9,7 +9,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_ops.h"
 #include "core/primitives.h"
-#include "ui/script_console.h"
+#include "document/script_console.h"
 
 namespace meshedit {
 namespace {
