@@ -4,8 +4,7 @@
 // level of Loop subdivision.
 #include <chrono>
 #include <cmath>
-#include <iomanip>
-#include <sstream>
+#include <string>
 
 #include "app/cli_commands.h"
 #include "app/mesh_loading.h"
@@ -17,18 +16,20 @@
 #include "core/mesh_stats.h"
 #include "core/normals.h"
 #include "core/validate.h"
+#include "core/value_format.h"
 
 namespace meshedit {
 namespace {
 
 using Clock = std::chrono::steady_clock;
 
-double ms(Clock::time_point start) { return std::chrono::duration<double, std::milli>(Clock::now() - start).count(); }
+// The milliseconds since `start`, to two decimals.
+std::string ms(Clock::time_point start) {
+  return format_fixed(std::chrono::duration<double, std::milli>(Clock::now() - start).count(), 2);
+}
 
 std::string point(const glm::dvec3& p) {
-  std::ostringstream s;
-  s << std::setprecision(4) << "(" << p.x << ", " << p.y << ", " << p.z << ")";
-  return s.str();
+  return "(" + format_rounded(p.x, 4) + ", " + format_rounded(p.y, 4) + ", " + format_rounded(p.z, 4) + ")";
 }
 
 // The first interior edge the core agrees to flip, if any.
@@ -46,7 +47,6 @@ int run_demo(const std::vector<std::string>& arguments, std::ostream& out) {
   reject_unknown_options(args);
   if (args.size() > 1) throw UsageError("demo takes at most one file");
   const std::filesystem::path path = args.empty() ? assets_dir() / "teapot.bez" : std::filesystem::path(args[0]);
-  out << std::fixed << std::setprecision(2);
 
   auto start = Clock::now();
   const LoadedFile file = load_file(path);

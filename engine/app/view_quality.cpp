@@ -1,8 +1,9 @@
 // ViewQuality: frames, documents and the wireframe's owner for the quality governor (see view_quality.h).
 #include "app/view_quality.h"
 
-#include <cstdio>
 #include <vector>
+
+#include "core/value_format.h"
 
 namespace meshedit {
 
@@ -71,13 +72,7 @@ void ViewQuality::update_note() {
   if (governor_.drops(QualityStep::Wireframe)) dropped.push_back("wireframe");  // last: "(W shows it)" follows
   note_.clear();
   if (dropped.empty()) return;
-  char why[48];
-  if (governor_.slow_ms() > 0.0) {
-    std::snprintf(why, sizeof why, "frame %.0f ms: ", governor_.slow_ms());
-  } else {
-    std::snprintf(why, sizeof why, "large mesh: ");
-  }
-  note_ = why;
+  note_ = governor_.slow_ms() > 0.0 ? "frame " + format_fixed(governor_.slow_ms(), 0) + " ms: " : "large mesh: ";
   for (size_t i = 0; i < dropped.size(); ++i) {
     if (i > 0) note_ += i + 1 == dropped.size() ? " and " : ", ";
     note_ += dropped[i];

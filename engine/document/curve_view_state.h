@@ -42,7 +42,7 @@ struct CurveView {
   double scale = 1.0;                // pixels per curve unit, > 0
 };
 
-glm::dvec2 curve_to_screen(const CurveView& view, glm::dvec2 curve_point);
+glm::dvec2 curve_to_screen(const CurveView& view, glm::dvec2 p);
 glm::dvec2 screen_to_curve(const CurveView& view, glm::dvec2 screen_point);
 
 // The bounding box of the finite points, grown on every side by `margin` times its larger side.

@@ -18,6 +18,7 @@
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "core/value_format.h"
 #include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
@@ -65,10 +66,8 @@ void draw_points(ImDrawList* dl, const CurveView& view, std::span<const glm::dve
 
 std::string format_points(std::span<const glm::dvec2> points) {
   std::string text;
-  char buffer[64];
   for (const glm::dvec2& p : points) {
-    std::snprintf(buffer, sizeof(buffer), "%s(%.4f, %.4f)", text.empty() ? "" : "  ", p.x, p.y);
-    text += buffer;
+    text += (text.empty() ? "(" : "  (") + format_fixed(p.x, 4) + ", " + format_fixed(p.y, 4) + ")";
   }
   return text;
 }
@@ -196,11 +195,10 @@ void draw_control_points(ImDrawList* dl, const CurveEditorState& state, const Cu
 void draw_canvas_text(ImDrawList* dl, const CurveEditorState& state, ImVec2 p0, ImVec2 size, int shown,
                       const CurveMineLevels* yours, const BezierMine* mine) {
   const float wrap = std::max(size.x - 16.0f, 50.0f);
-  char status[128];
-  std::snprintf(status, sizeof(status), "t = %.4f   level %d of %d%s", state.t, shown,
-                std::max(0, static_cast<int>(state.curve.control_points.size()) - 1),
-                yours ? "   mine: your evaluate_step" : "");
-  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status);
+  const std::string status = "t = " + format_fixed(state.t, 4) + "   level " + std::to_string(shown) + " of " +
+                             std::to_string(std::max(0, static_cast<int>(state.curve.control_points.size()) - 1)) +
+                             (yours ? "   mine: your evaluate_step" : "");
+  dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status.c_str());
   if (yours) {
     const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),

@@ -97,7 +97,7 @@ struct Drawer {
     label(field);
     element_link(mesh, ref, selection, field, probe);
   }
-  void text(const char* field, const std::string& value) {
+  static void text(const char* field, const std::string& value) {
     label(field);
     ImGui::TextUnformatted(value.c_str());
   }

@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "core/value_format.h"
 #include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
@@ -70,7 +71,7 @@ std::vector<PatchOverlayItem> build_probe_overlay(const BezierPatch& patch, doub
   std::vector<PatchOverlayItem> items =
       control_net_polylines(patch, opaque(palette().probed_net), 2.0f, "control net ");
   for (int r = 0; r < 4; ++r) {
-    const std::span<const glm::dvec3> row(patch.points.data() + r * 4, 4);
+    const std::span<const glm::dvec3> row(patch.points.data() + ptrdiff_t(r) * 4, 4);
     items.push_back(item(sample_curve3(row, samples), opaque(palette().row_curve), 2.0f, false, OverlayKind::RowCurve,
                          "row curve " + std::to_string(r)));
   }
@@ -129,10 +130,9 @@ namespace {
 
 std::string format_points(std::span<const glm::dvec3> points) {
   std::string text;
-  char buffer[96];
   for (const glm::dvec3& p : points) {
-    std::snprintf(buffer, sizeof(buffer), "%s(%.4f, %.4f, %.4f)", text.empty() ? "" : "  ", p.x, p.y, p.z);
-    text += buffer;
+    text += (text.empty() ? "(" : "  (") + format_fixed(p.x, 4) + ", " + format_fixed(p.y, 4) + ", " +
+            format_fixed(p.z, 4) + ")";
   }
   return text;
 }
