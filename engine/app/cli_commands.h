@@ -25,7 +25,7 @@ int run_triangulate(const std::vector<std::string>& arguments, std::ostream& out
 int run_repair(const std::vector<std::string>& arguments, std::ostream& out);
 int run_render(const std::vector<std::string>& arguments, std::ostream& out);
 // A Lua script with no window; ScriptError (its file:line message) when the script fails.
-int run_run(const std::vector<std::string>& arguments, std::ostream& out);
+int run_run(const std::vector<std::string>& args, std::ostream& out);
 // `grade` (cli_grade.cpp lists its arguments): 0 when grading worked, whatever the score; GradeError (exit status 1)
 // when grading itself could not be done.
 int run_grade(const std::vector<std::string>& arguments, std::ostream& out);
@@ -33,7 +33,7 @@ int run_grade(const std::vector<std::string>& arguments, std::ostream& out);
 // the student folder DIR; 0 when all pass. UsageError without --headless; ScriptError (a step failed: its file:line).
 int run_lesson(const std::vector<std::string>& arguments, std::ostream& out);
 // `paths`: the folders of lessons, assets, shaders, student and exercise files and fonts this binary uses.
-int run_paths(const std::vector<std::string>& arguments, std::ostream& out);
+int run_paths(const std::vector<std::string>& args, std::ostream& out);
 
 // Argument helpers shared by the commands.
 // Removes `--name VALUE` (or `-n VALUE` for the short name) from args and returns VALUE.

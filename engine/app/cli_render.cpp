@@ -100,7 +100,7 @@ int run_render(const std::vector<std::string>& arguments, std::ostream& out) {
 
   out << "wrote " << output->c_str() << ": " << size.width << "x" << size.height << ", " << renderer.stats().triangles
       << " triangles, " << shading << " shading" << (options.wireframe ? ", wireframe" : "") << " ("
-      << context.description() << ")\n";
+      << OffscreenContext::description() << ")\n";
   if (renderer.stats().skipped_faces > 0) {
     out << "note: " << renderer.stats().skipped_faces << " faces could not be walked and were not drawn\n";
   }

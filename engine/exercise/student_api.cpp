@@ -132,12 +132,12 @@ void push_stash(lua_State* L) {
 }  // namespace
 
 const std::vector<std::string>& hideable_api_names() {
-  static const std::vector<std::string> names = [] {
+  static const std::vector<std::string> kNames = [] {
     std::vector<std::string> v;
     for (const ApiEntry& e : kHideable) v.emplace_back(e.name);
     return v;
   }();
-  return names;
+  return kNames;
 }
 
 bool is_hideable_api(const std::string& name) {
@@ -146,10 +146,10 @@ bool is_hideable_api(const std::string& name) {
 }
 
 const ExerciseApi& exercise_api(Exercise exercise) {
-  static const ExerciseApi none;
-  static const ExerciseApi upsample{{"mesh:flip", "mesh:split"}, {"flip_edge", "split_edge"}};
+  static const ExerciseApi kNone;
+  static const ExerciseApi kUpsample{{"mesh:flip", "mesh:split"}, {"flip_edge", "split_edge"}};
   if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition()) return scripted->api();
-  return exercise == Exercise::Upsample ? upsample : none;
+  return exercise == Exercise::Upsample ? kUpsample : kNone;
 }
 
 std::string other_file_message(const std::string& function, const std::string& owner_file, const std::string& file) {

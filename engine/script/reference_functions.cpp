@@ -85,12 +85,12 @@ const std::array<Reference, 6> kReferences = {{{"flip_edge", guarded<mesh_flip>}
 }  // namespace
 
 const std::vector<std::string>& reference_function_names() {
-  static const std::vector<std::string> names = [] {
+  static const std::vector<std::string> kNames = [] {
     std::vector<std::string> v;
     for (const auto& r : kReferences) v.emplace_back(r.name);
     return v;
   }();
-  return names;
+  return kNames;
 }
 
 bool is_reference_function(const std::string& name) {

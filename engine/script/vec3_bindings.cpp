@@ -143,17 +143,17 @@ glm::dvec3 check_vec3(lua_State* L, int index, const char* what) {
 }
 
 void open_vec3(lua_State* L) {
-  static const luaL_Reg metamethods[] = {{"__add", vec3_add},           {"__sub", vec3_sub}, {"__mul", vec3_mul},
-                                         {"__div", vec3_div},           {"__unm", vec3_unm}, {"__eq", vec3_eq},
-                                         {"__tostring", vec3_tostring}, {nullptr, nullptr}};
-  static const luaL_Reg methods[] = {{"dot", vec3_dot},
-                                     {"cross", vec3_cross},
-                                     {"length", vec3_length},
-                                     {"normalized", vec3_normalized},
-                                     {nullptr, nullptr}};
+  static const luaL_Reg kMetamethods[] = {{"__add", vec3_add},           {"__sub", vec3_sub}, {"__mul", vec3_mul},
+                                          {"__div", vec3_div},           {"__unm", vec3_unm}, {"__eq", vec3_eq},
+                                          {"__tostring", vec3_tostring}, {nullptr, nullptr}};
+  static const luaL_Reg kMethods[] = {{"dot", vec3_dot},
+                                      {"cross", vec3_cross},
+                                      {"length", vec3_length},
+                                      {"normalized", vec3_normalized},
+                                      {nullptr, nullptr}};
   if (luaL_newmetatable(L, kVec3Metatable)) {
-    luaL_setfuncs(L, metamethods, 0);
-    luaL_newlib(L, methods);
+    luaL_setfuncs(L, kMetamethods, 0);
+    luaL_newlib(L, kMethods);
     lua_setfield(L, -2, "__index");
     lua_pushliteral(L, "vec3");
     lua_setfield(L, -2, "__name");

@@ -87,7 +87,8 @@ struct Drawer {
   Selection& selection;
   UiProbe* probe;
 
-  static void label(const char* text) {
+  // label and text use no field, but are called on the rows like link and position, as one set of row kinds.
+  void label(const char* text) {  // NOLINT(readability-convert-member-functions-to-static)
     ImGui::TableNextRow();
     ImGui::TableSetColumnIndex(0);
     ImGui::TextUnformatted(text);
@@ -97,7 +98,7 @@ struct Drawer {
     label(field);
     element_link(mesh, ref, selection, field, probe);
   }
-  static void text(const char* field, const std::string& value) {
+  void text(const char* field, const std::string& value) {  // NOLINT(readability-convert-member-functions-to-static)
     label(field);
     ImGui::TextUnformatted(value.c_str());
   }
