@@ -8,36 +8,16 @@
 
 #include <gtest/gtest.h>
 
+#include "support/test_patches.h"
+
 namespace meshedit {
 namespace {
 
 using glm::dvec3;
 
-// A bumpy, non-planar patch with distinct control points: at(r, c) = (c, r, z(r, c)).
-BezierPatch bumpy_patch(double shift = 0.0) {
-  static constexpr double kHeights[16] = {0.0,  0.5,  -0.25, 1.0, 0.75,  2.0,   1.5,  -0.5,
-                                          -1.0, 0.25, 3.0,   0.5, 0.125, -0.75, 1.25, 2.5};
-  BezierPatch patch;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) patch.at(r, c) = dvec3(c + shift, r, kHeights[r * 4 + c]);
-  }
-  return patch;
-}
-
-// The plane z = 0 over [0,3]^2: tessellates to (n+1)^2 vertices and 2n^2 triangles.
-BezierPatch flat_patch() {
-  BezierPatch patch;
-  for (int r = 0; r < 4; ++r) {
-    for (int c = 0; c < 4; ++c) patch.at(r, c) = dvec3(c, r, 0.0);
-  }
-  return patch;
-}
-
-void expect_same(const dvec3& actual, const dvec3& expected) {
-  EXPECT_EQ(actual.x, expected.x);
-  EXPECT_EQ(actual.y, expected.y);
-  EXPECT_EQ(actual.z, expected.z);
-}
+using testing::bumpy_patch;
+using testing::expect_same;
+using testing::flat_patch;
 
 TEST(PatchView, SettersClamp) {
   PatchViewState state = make_patch_view({bumpy_patch(), bumpy_patch(5.0)});
