@@ -1,7 +1,7 @@
 // LuaConsole: a Lua read-eval-print loop with no window: it takes a line, runs it, and keeps the transcript and the
 // history a console shows. The window's console (document/script_console.h) binds it to the document.
 //
-// A line is run the way lua.c runs it: first as `return <line>` (so `mesh:num_faces()` prints 6), and if that
+// A line is run the way lua.c runs it: first as `return <line>` (so `mesh:num_faces()` prints the count), and if that
 // does not compile, as a statement. One ScriptRuntime (the `meshedit` module opened) lives as long as the console,
 // so globals persist between lines. `print` writes into the transcript; a line's results are one Output entry
 // (joined by tabs), its error one Error entry ("console:1: ...").
