@@ -360,7 +360,7 @@ struct SuiteApi {
   static std::pair<std::shared_ptr<const ScriptedExercise>, const ScriptedFixture*> fixture_at(lua_State* L) {
     const std::optional<Exercise> exercise = find_exercise(luaL_checkstring(L, 1));
     if (!exercise) luaL_error(L, "%s", exercise_registry().unknown_name_error(lua_tostring(L, 1)).c_str());
-    std::shared_ptr<const ScriptedExercise> definition = exercise ? exercise->definition() : nullptr;
+    std::shared_ptr<const ScriptedExercise> definition = exercise->definition();
     const lua_Integer index = luaL_checkinteger(L, 2);
     if (!definition || index < 1 || static_cast<size_t>(index) > definition->fixtures().size()) {
       luaL_error(L, "no fixture %d of the exercise %s", int(index), lua_tostring(L, 1));

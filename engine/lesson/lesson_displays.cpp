@@ -26,8 +26,6 @@ const glm::vec3 kCurveColours[] = {kDarkSwatches.blue,           kDarkSwatches.o
                                    kDarkSwatches.reddish_purple, kDarkSwatches.sky_blue, kDarkSwatches.vermillion,
                                    kDarkSwatches.yellow};
 
-std::string number_text(double value) { return format_rounded(value); }
-
 // Whether `message` starts with "name:LINE:", as Lua's own errors do.
 bool has_place(const std::string& message) {
   const size_t colon = message.find(':');
@@ -146,8 +144,8 @@ LessonPlotCurve read_curve(lua_State* L, int number, glm::dvec2 x, int samples) 
     lua_pushnumber(L, at);
     lua_call(L, 1, 1);
     if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
-      const std::string got = lua_type(L, -1) == LUA_TNUMBER ? number_text(lua_tonumber(L, -1)) : type_name(L, -1);
-      raise(L, "plot: '" + out.label + "' gave " + got + " at x = " + number_text(at) + " (fn must return a number)");
+      const std::string got = lua_type(L, -1) == LUA_TNUMBER ? format_rounded(lua_tonumber(L, -1)) : type_name(L, -1);
+      raise(L, "plot: '" + out.label + "' gave " + got + " at x = " + format_rounded(at) + " (fn must return a number)");
     }
     out.points.emplace_back(at, lua_tonumber(L, -1));
     lua_pop(L, 1);

@@ -60,12 +60,11 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
   if (ImGui::Begin("##status bar", nullptr, flags)) {
     // The up axis and the frame time keep their place at the right end; the rest, whose length varies (a message,
     // the view's note, undo hints), is clipped before them rather than pushing them off the window.
-    const std::string frame_text = format_fixed(frame_ms, 1) + " ms";
-    const char* frame = frame_text.c_str();
+    const std::string frame = format_fixed(frame_ms, 1) + " ms";
     const bool show_axis = !state.up_axis.empty() && state.view_is_3d;
     const float gap = 24.0f;
     const float right_width =
-        ImGui::CalcTextSize(frame).x +
+        ImGui::CalcTextSize(frame.c_str()).x +
         (show_axis ? ImGui::CalcTextSize(state.up_axis.data(), state.up_axis.data() + state.up_axis.size()).x + gap
                    : 0.0f);
     const float left_width = std::max(1.0f, ImGui::GetContentRegionAvail().x - right_width - gap);
@@ -110,7 +109,7 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
       if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(state.up_axis_why.size()), state.up_axis_why.data());
     }
     ImGui::SameLine(0.0f, gap);
-    ImGui::TextDisabled("%s", frame);
+    ImGui::TextDisabled("%s", frame.c_str());
   }
   ImGui::End();
   return height;
