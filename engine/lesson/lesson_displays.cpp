@@ -145,7 +145,8 @@ LessonPlotCurve read_curve(lua_State* L, int number, glm::dvec2 x, int samples) 
     lua_call(L, 1, 1);
     if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
       const std::string got = lua_type(L, -1) == LUA_TNUMBER ? format_rounded(lua_tonumber(L, -1)) : type_name(L, -1);
-      raise(L, "plot: '" + out.label + "' gave " + got + " at x = " + format_rounded(at) + " (fn must return a number)");
+      raise(L,
+            "plot: '" + out.label + "' gave " + got + " at x = " + format_rounded(at) + " (fn must return a number)");
     }
     out.points.emplace_back(at, lua_tonumber(L, -1));
     lua_pop(L, 1);
