@@ -98,12 +98,12 @@ std::string click(EditorApp& app, const Action& a) {
 }
 
 std::string hover(EditorApp& app, const Action& a) {
-  app.hover(std::stoi(a.args[0]), std::stoi(a.args[1]));
+  app.input().hover(std::stoi(a.args[0]), std::stoi(a.args[1]));
   return "";
 }
 
 std::string click_on(EditorApp& app, const Action& a) {
-  const std::optional<ScreenPoint> at = app.element_pixel(element_argument(a.args[0]));
+  const std::optional<ScreenPoint> at = app.view().element_pixel(element_argument(a.args[0]));
   if (!at) throw std::runtime_error(a.args[0] + " is not on screen");
   app.click(int(at->pixel.x), int(at->pixel.y));
   return "";
@@ -146,7 +146,7 @@ std::string open_repaired(EditorApp& app, const Action&) {
 }
 
 std::string save(EditorApp& app, const Action& a) {
-  if (!app.save(a.args[0])) throw_message(app);
+  if (!app.document_room().save(a.args[0])) throw_message(app);
   return "";
 }
 
@@ -178,29 +178,28 @@ std::string run_named_command(EditorApp& app, const Action& a) {
 }
 
 std::string orbit(EditorApp& app, const Action& a) {
-  app.camera().orbit(std::stod(a.args[0]), std::stod(a.args[1]));
+  app.view().camera().orbit(std::stod(a.args[0]), std::stod(a.args[1]));
   return "";
 }
 
 std::string up_axis(EditorApp& app, const Action& a) {
   const std::string& which = a.args[0];
-  if (which == "from-file") app.choose_up_axis(UpAxisChoice::FromFile);
-  else if (which == "y") app.choose_up_axis(UpAxisChoice::Y);
-  else if (which == "z") app.choose_up_axis(UpAxisChoice::Z);
+  if (which == "from-file") app.view().choose_up_axis(UpAxisChoice::FromFile);
+  else if (which == "y") app.view().choose_up_axis(UpAxisChoice::Y);
+  else if (which == "z") app.view().choose_up_axis(UpAxisChoice::Z);
   else throw std::runtime_error("up-axis takes from-file, y or z");
   return "";
 }
 
 std::string animate_edits(EditorApp& app, const Action& a) {
   if (a.args[0] != "on" && a.args[0] != "off") throw std::runtime_error("animate-edits takes on or off");
-  app.set_edit_animation_policy(a.args[0] == "on" ? EditorApp::EditAnimationPolicy::Always
-                                                  : EditorApp::EditAnimationPolicy::Never);
+  app.view().set_edit_animation_policy(a.args[0] == "on" ? EditAnimationPolicy::Always : EditAnimationPolicy::Never);
   return "";
 }
 
 std::string quality(EditorApp& app, const Action& a) {
   if (a.args[0] != "full" && a.args[0] != "auto") throw std::runtime_error("quality takes full or auto");
-  app.hold_full_quality(a.args[0] == "full");
+  app.view().hold_full_quality(a.args[0] == "full");
   return "";
 }
 
@@ -216,20 +215,20 @@ std::string console(EditorApp& app, const Action& a) {
 
 std::string curve_t(EditorApp& app, const Action& a) {
   if (app.mode() != ViewMode::Curve) throw std::runtime_error("the curve view is not on screen");
-  set_t(app.curve_editor(), std::stod(a.args[0]));
+  set_t(app.view().curve(), std::stod(a.args[0]));
   return "";
 }
 
 std::string patch_uv(EditorApp& app, const Action& a) {
   if (app.mode() != ViewMode::Patches) throw std::runtime_error("the patch view is not on screen");
-  set_probe(app.patch_view(), std::stod(a.args[0]), std::stod(a.args[1]));
+  set_probe(app.view().patches(), std::stod(a.args[0]), std::stod(a.args[1]));
   return "";
 }
 
 // A click on the canvas away from the control points, taken in the next frame as the mouse's would be.
 std::string curve_click(EditorApp& app, const Action& a) {
   if (app.mode() != ViewMode::Curve) throw std::runtime_error("the curve view is not on screen");
-  app.curve_editor().clicked = glm::dvec2(std::stod(a.args[0]), std::stod(a.args[1]));
+  app.view().curve().clicked = glm::dvec2(std::stod(a.args[0]), std::stod(a.args[1]));
   return "";
 }
 
@@ -306,7 +305,7 @@ std::string expect_lesson_live(EditorApp& app, const Action& a) {
 std::string exercise(EditorApp& app, const Action& a) {
   const auto which = find_exercise(a.args[0]);
   if (which == Exercise::CurveStep || which == Exercise::PatchEvaluate) {
-    app.bezier_mine().set_folder(a.args[1]);
+    app.view().bezier_mine().set_folder(a.args[1]);
   } else if (!which) {
     throw std::runtime_error(exercise_registry().unknown_name_error(a.args[0]));
   } else if (!app.exercises().set_exercise(*which)) {
@@ -357,16 +356,16 @@ std::string editor_open(EditorApp& app, const Action&) {
 
 std::string editor_set_line(EditorApp& app, const Action& a) {
   const size_t line = std::stoul(a.args.at(0));
-  if (!app.student_edit().set_line(line, a.words(1))) {
+  if (!app.exercise_room().student_edit().set_line(line, a.words(1))) {
     return "the editor's file has no line " + a.args[0];
   }
   return "";
 }
 
-std::string editor_save(EditorApp& app, const Action&) { return app.save_student_code().reason; }
+std::string editor_save(EditorApp& app, const Action&) { return app.exercise_room().save_student_code().reason; }
 
 std::string editor_download(EditorApp& app, const Action&) {
-  app.download_student_code();
+  app.exercise_room().download_student_code();
   return "";
 }
 
@@ -385,24 +384,25 @@ std::string unsaved_code(EditorApp& app, const Action& a) {
 
 std::string expect_unsaved_code(EditorApp& app, const Action& a) {
   if (!app.asking_about_unsaved_code()) return "the Unsaved code dialog is not open";
-  return expect_contains(a.words(), app.unsaved_student_files(), "the dialog names");
+  return expect_contains(a.words(), app.exercise_room().unsaved_student_files(), "the dialog names");
 }
 
 std::string expect_editor_line(EditorApp& app, const Action& a) {
-  const std::optional<std::string_view> line = app.student_edit().line(std::stoul(a.args.at(0)));
+  const std::optional<std::string_view> line = app.exercise_room().student_edit().line(std::stoul(a.args.at(0)));
   if (!line) return "the editor's file has no line " + a.args[0];
   return expect_contains(a.words(1), std::string(*line), "line " + a.args[0] + " is");
 }
 
 std::string expect_editor_error(EditorApp& app, const Action& a) {
-  const std::optional<size_t> line = app.student_code_error_line();
+  const std::optional<size_t> line = app.exercise_room().student_code_error_line();
   const std::string got = line ? std::to_string(*line) : "none";
-  if (got != a.args.at(0)) return "the editor marks line " + got + " (" + app.student_code_error() + ")";
-  return expect_contains(a.words(1), app.student_code_error(), "the editor's error is");
+  if (got != a.args.at(0))
+    return "the editor marks line " + got + " (" + app.exercise_room().student_code_error() + ")";
+  return expect_contains(a.words(1), app.exercise_room().student_code_error(), "the editor's error is");
 }
 
 std::string expect_mine(EditorApp& app, const Action& a) {
-  const BezierMine& mine = app.bezier_mine();
+  const BezierMine& mine = app.view().bezier_mine();
   const bool curve = app.mode() == ViewMode::Curve;
   if (!(curve ? mine.curve_on() : app.mode() == ViewMode::Patches && mine.patch_on())) {
     return "no \"mine\" switch is on in the view on screen";
@@ -458,15 +458,15 @@ std::string expect_valid(EditorApp& app, const Action&) {
 }
 
 std::string expect_console(EditorApp& app, const Action& a) {
-  const auto& entries = app.console().entries();
+  const auto& entries = app.panels().console().entries();
   return expect_contains(a.words(), entries.empty() ? "" : entries.back().text, "the console's last line is");
 }
 
 std::string expect_up_axis(EditorApp& app, const Action& a) {
   const std::string& wanted = a.args[0];
   if (wanted != "X" && wanted != "Y" && wanted != "Z") throw std::runtime_error("expect-up-axis takes X, Y or Z first");
-  const std::string got(up_axis_name(app.camera().up_axis()));
-  const std::string status(app.status_up_axis());
+  const std::string got(up_axis_name(app.view().camera().up_axis()));
+  const std::string status(app.view().status_bar().up_axis);
   if (got != wanted + " up") return "the camera is " + got + " (status bar: '" + status + "')";
   return status.find(a.words(1)) == std::string::npos ? "the status bar says '" + status + "'" : "";
 }
@@ -475,7 +475,7 @@ std::string expect_gpu_update(EditorApp& app, const Action& a) {
   if (a.args[0] != "patch" && a.args[0] != "rebuild") {
     throw std::runtime_error("expect-gpu-update takes patch or rebuild");
   }
-  const RenderStats& stats = app.mesh_render_stats();
+  const RenderStats& stats = app.view().mesh_render_stats();
   const std::string got = stats.last_update_patch ? "patch" : "rebuild";
   const std::string why = stats.last_update_patch ? "" : " (" + stats.last_rebuild_reason + ")";
   return got == a.args[0] ? "" : "the last update was a " + got + why;

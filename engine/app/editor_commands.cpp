@@ -35,38 +35,37 @@ Check toggled(bool& value) {
 
 Check EditorApp::run_command(CommandId id, CommandStart start) {
   const Command& c = command(id);
-  if (c.edits) exercises_.finish_replay(doc_);
+  if (c.edits) exercises_.session().finish_replay(document_.doc());
   Check done = carry_out(id, start);
-  if (lesson_->loaded()) {
-    if (done && c.lesson_can_wait) lesson_->deliver(LessonEvent::command(c.name));
-    if (start != CommandStart::Key) {
-      if (const std::optional<KeyChord> key = command_key(c)) tell_lesson_key(key->key, key->mods);
-    }
+  if (done && c.lesson_can_wait) lessons_.tell_command(c.name);
+  if (start != CommandStart::Key) {
+    if (const std::optional<KeyChord> key = command_key(c)) lessons_.tell_key(key->key, key->mods);
   }
   return done;
 }
 
 bool EditorApp::handle_key(int key, KeyMods mods) {
-  const CommandView view = mode_ == ViewMode::Mesh    ? CommandView::Mesh
-                           : mode_ == ViewMode::Curve ? CommandView::Curve
-                                                      : CommandView::Patches;
+  const CommandView view = mode() == ViewMode::Mesh    ? CommandView::Mesh
+                           : mode() == ViewMode::Curve ? CommandView::Curve
+                                                       : CommandView::Patches;
   const Command* found = find_key_command(key, mods, view);
   if (found) run_command(found->id, CommandStart::Key);
-  tell_lesson_key(key, mods);
+  lessons_.tell_key(key, mods);
   return found != nullptr;
-}
-
-void EditorApp::tell_lesson_key(int key, KeyMods mods) {
-  if (!lesson_->loaded()) return;
-  const std::string name = lesson_key_name(key, mods);
-  if (!name.empty()) lesson_->deliver(LessonEvent::key(name));
 }
 
 // One case per command of the table (document/command_table.h), which -Wswitch holds complete: the dispatch is as
 // long as the table, however small each case is.
 Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readability-function-size)
   using I = CommandId;
-  const auto said = [this](bool ok) { return ok ? Check::yes() : Check::no(doc_.message.text); };
+  MeshDocument& doc = document_.doc();
+  Selection& selection = document_.selection();
+  MeshEditState& mesh_edits = document_.mesh_edits();
+  ViewOptions& view_options = view_.options();
+  Settings& settings = panels_.settings();
+  CurveEditorState& curve = view_.curve();
+  BezierMine& bezier_mine = view_.bezier_mine();
+  const auto said = [&doc](bool ok) { return ok ? Check::yes() : Check::no(doc.message.text); };
   switch (id) {
     case I::OpenFromComputer:
     case I::UploadCode: host_show_file_picker(); return Check::yes();
@@ -80,17 +79,17 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
       // The menu's name is the one a page's browser downloads; a key press names each picture by its time.
       request_screenshot(start == CommandStart::Key ? timestamped_screenshot_name() : "meshedit-screenshot.png");
       return Check::yes();
-    case I::DownloadCode: download_student_code(); return Check::yes();
+    case I::DownloadCode: exercises_.download_student_code(); return Check::yes();
     case I::Quit: quit_requested_ = true; return Check::yes();
-    case I::Undo: return said(undo_edit(doc_, selection_));
-    case I::Redo: return said(redo_edit(doc_, selection_));
+    case I::Undo: return said(undo_edit(doc, selection));
+    case I::Redo: return said(redo_edit(doc, selection));
     case I::Flip:
       // The key F on a halfedge walks to its face; on an edge (the course's use), and from the menu, it flips.
-      if (start == CommandStart::Key && selection_.selected.valid() &&
-          selection_.selected.kind == ElementKind::Halfedge) {
-        return said(navigate_selection(doc_, selection_, NavStep::Face));
+      if (start == CommandStart::Key && selection.selected.valid() &&
+          selection.selected.kind == ElementKind::Halfedge) {
+        return said(navigate_selection(doc, selection, NavStep::Face));
       }
-      return run_mesh_edit(id, doc_, selection_, mesh_edits_);
+      return run_mesh_edit(id, doc, selection, mesh_edits);
     case I::Split:
     case I::Collapse:
     case I::Triangulate:
@@ -99,57 +98,59 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
     case I::CatmullClark:
     case I::CatmullClarkPhase:
     case I::Linear:
-    case I::LinearPhase: return run_mesh_edit(id, doc_, selection_, mesh_edits_);
+    case I::LinearPhase: return run_mesh_edit(id, doc, selection, mesh_edits);
     case I::LoopWeights:
-      mesh_edits_.loop_weights =
-          mesh_edits_.loop_weights == LoopWeights::Loop ? LoopWeights::Course : LoopWeights::Loop;
+      mesh_edits.loop_weights = mesh_edits.loop_weights == LoopWeights::Loop ? LoopWeights::Course : LoopWeights::Loop;
       return Check::yes();
-    case I::Wireframe: return toggled(view_options_.wireframe);
-    case I::Shading: return toggled(view_options_.smooth_shading);
-    case I::Vertices: return toggled(view_options_.show_vertices);
-    case I::HalfedgeArrows: return toggled(view_options_.show_halfedges);
-    case I::Boundary: return toggled(view_options_.show_boundary);
-    case I::IdLabels: return toggled(show_labels_);
-    case I::AnimateEdits: return toggled(settings_.animate_edits);  // flip, split, collapse, their undo, redo
-    case I::FoldLeft: return toggled(settings_.layout.left_open);
-    case I::FoldRight: return toggled(settings_.layout.right_open);
-    case I::Inspector:
-      inspector_.open = !inspector_.open;
-      if (inspector_.open) {
-        select_tab_ = RightTab::Inspector;
+    case I::Wireframe: return toggled(view_options.wireframe);
+    case I::Shading: return toggled(view_options.smooth_shading);
+    case I::Vertices: return toggled(view_options.show_vertices);
+    case I::HalfedgeArrows: return toggled(view_options.show_halfedges);
+    case I::Boundary: return toggled(view_options.show_boundary);
+    case I::IdLabels: return toggled(view_.show_labels());
+    case I::AnimateEdits: return toggled(settings.animate_edits);  // flip, split, collapse, their undo, redo
+    case I::FoldLeft: return toggled(settings.layout.left_open);
+    case I::FoldRight: return toggled(settings.layout.right_open);
+    case I::Inspector: {
+      bool& open = panels_.inspector().open;
+      open = !open;
+      if (open) {
         // The inspector is a tab on the right while a lesson has the left column, else on the left: unfold it.
-        bool& column_open = lesson_->loaded() ? settings_.layout.right_open : settings_.layout.left_open;
-        column_open = true;
+        if (lesson().loaded()) panels_.bring_forward(RightTab::Inspector);
+        else settings.layout.left_open = true;
       }
       return Check::yes();
-    case I::PointerTables: return toggled(tables_.open);
+    }
+    case I::PointerTables: return toggled(panels_.tables().open);
     case I::Exercises:
-      if (exercise_panel_.open) exercise_panel_.open = false;
+      if (exercises_.panel().open) exercises_.panel().open = false;
       else bring_exercises_tab_forward();
       return Check::yes();
     case I::YourCode:
-      if (student_editor_.open) student_editor_.open = false;
+      if (exercises_.editor().open) exercises_.editor().open = false;
       else show_student_code();
       return Check::yes();
-    case I::Console:
-      console_panel_.open = !console_panel_.open;
-      console_panel_.focus_input = console_panel_.open;
+    case I::Console: {
+      ConsolePanelState& console = panels_.console_panel();
+      console.open = !console.open;
+      console.focus_input = console.open;
       return Check::yes();
-    case I::BiggerText: change_font_size(+1); return Check::yes();
-    case I::SmallerText: change_font_size(-1); return Check::yes();
-    case I::DefaultText: change_font_size(0); return Check::yes();
-    case I::ResetView: reset_view(); return Check::yes();
+    }
+    case I::BiggerText: panels_.change_font_size(+1); return Check::yes();
+    case I::SmallerText: panels_.change_font_size(-1); return Check::yes();
+    case I::DefaultText: panels_.change_font_size(0); return Check::yes();
+    case I::ResetView: view_.reset_view(); return Check::yes();
     case I::Keys: return toggled(show_help_);
-    case I::ClearSelection: selection_.selected = {}; return Check::yes();
-    case I::Next: return said(navigate_selection(doc_, selection_, NavStep::Next));
-    case I::Twin: return said(navigate_selection(doc_, selection_, NavStep::Twin));
-    case I::Vertex: return said(navigate_selection(doc_, selection_, NavStep::Vertex));
-    case I::Edge: return said(navigate_selection(doc_, selection_, NavStep::Edge));
-    case I::Halfedge: return said(navigate_selection(doc_, selection_, NavStep::Halfedge));
-    case I::CurveStep: step_level(curve_); return Check::yes();
-    case I::CurveToggle: toggle_curve(curve_); return Check::yes();
-    case I::CurveMine: bezier_mine_.set_curve_on(!bezier_mine_.curve_on()); return Check::yes();
-    case I::PatchMine: bezier_mine_.set_patch_on(!bezier_mine_.patch_on()); return Check::yes();
+    case I::ClearSelection: selection.selected = {}; return Check::yes();
+    case I::Next: return said(navigate_selection(doc, selection, NavStep::Next));
+    case I::Twin: return said(navigate_selection(doc, selection, NavStep::Twin));
+    case I::Vertex: return said(navigate_selection(doc, selection, NavStep::Vertex));
+    case I::Edge: return said(navigate_selection(doc, selection, NavStep::Edge));
+    case I::Halfedge: return said(navigate_selection(doc, selection, NavStep::Halfedge));
+    case I::CurveStep: step_level(curve); return Check::yes();
+    case I::CurveToggle: toggle_curve(curve); return Check::yes();
+    case I::CurveMine: bezier_mine.set_curve_on(!bezier_mine.curve_on()); return Check::yes();
+    case I::PatchMine: bezier_mine.set_patch_on(!bezier_mine.patch_on()); return Check::yes();
   }
   return Check::no("no such command");
 }

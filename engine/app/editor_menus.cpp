@@ -72,8 +72,8 @@ void EditorApp::draw_menu_bar() {
       // Edit and Subdivide act on a mesh: off while the curve or the patch view is on screen.
       const bool on_a_mesh = title == "Edit" || title == "Subdivide";
       const MenuTitle name(c);
-      open = ImGui::BeginMenu(name.text, !on_a_mesh || mode_ == ViewMode::Mesh);
-      probe_.record_last_item(std::string("menu:") + name.text);  // where the title is (tests click it)
+      open = ImGui::BeginMenu(name.text, !on_a_mesh || mode() == ViewMode::Mesh);
+      panels_.probe().record_last_item(std::string("menu:") + name.text);  // where the title is (tests click it)
     }
     if (open) draw_menu_item(c);
   }
@@ -83,46 +83,50 @@ void EditorApp::draw_menu_bar() {
 
 void EditorApp::draw_menu_item(const Command& c) {
   using I = CommandId;
+  const MeshDocument& doc = document_.doc();
+  const ViewOptions& view_options = view_.options();
+  const Settings& settings = panels_.settings();
   MenuItemLook look;
   switch (c.id) {
     // A page reaches the student's disk only through the browser's picker; Open... lists the packaged files there.
     case I::OpenFromComputer: look.shown = host_has_file_picker(); break;
-    case I::OpenRecent: look.enabled = !recent_.empty(); break;
-    case I::OpenRepaired: look.enabled = !repairable_path_.empty(); break;
-    case I::SaveAs: look.enabled = mode_ == ViewMode::Mesh; break;
+    case I::OpenRecent: look.enabled = !document_.recent_files().empty(); break;
+    case I::OpenRepaired: look.enabled = document_.can_open_repaired(); break;
+    case I::SaveAs: look.enabled = mode() == ViewMode::Mesh; break;
     // A page's student files live in the browser: these take them to and from the student's disk for submission.
     case I::DownloadCode:
       look.shown = !host_files_on_users_disk();
-      std::snprintf(look.label, sizeof look.label, "Download your %s", exercises_.file().filename().string().c_str());
+      std::snprintf(look.label, sizeof look.label, "Download your %s",
+                    exercises_.session().file().filename().string().c_str());
       break;
     case I::UploadCode: look.shown = !host_files_on_users_disk(); break;
-    case I::Undo: look.enabled = doc_.history.can_undo(); break;
-    case I::Redo: look.enabled = doc_.history.can_redo(); break;
+    case I::Undo: look.enabled = doc.history.can_undo(); break;
+    case I::Redo: look.enabled = doc.history.can_redo(); break;
     case I::LoopPhase:
-      std::snprintf(look.label, sizeof look.label, "Loop: %s", next_loop_phase_label(doc_).c_str());
+      std::snprintf(look.label, sizeof look.label, "Loop: %s", next_loop_phase_label(doc).c_str());
       break;
     case I::CatmullClarkPhase:
     case I::LinearPhase: {
       const SubdivisionScheme scheme =
           c.id == I::LinearPhase ? SubdivisionScheme::Linear : SubdivisionScheme::CatmullClark;
-      std::snprintf(look.label, sizeof look.label, "%s", next_phase_label(scheme, doc_, mesh_edits_).c_str());
+      std::snprintf(look.label, sizeof look.label, "%s", next_phase_label(scheme, doc, document_.mesh_edits()).c_str());
       break;
     }
-    case I::LoopWeights: look.checked = mesh_edits_.loop_weights == LoopWeights::Loop; break;
-    case I::Wireframe: look.checked = view_options_.wireframe; break;
-    case I::Shading: look.checked = view_options_.smooth_shading; break;
-    case I::Vertices: look.checked = view_options_.show_vertices; break;
-    case I::HalfedgeArrows: look.checked = view_options_.show_halfedges; break;
-    case I::Boundary: look.checked = view_options_.show_boundary; break;
-    case I::IdLabels: look.checked = show_labels_; break;
-    case I::AnimateEdits: look.checked = settings_.animate_edits; break;
-    case I::FoldLeft: look.checked = settings_.layout.left_open; break;
-    case I::FoldRight: look.checked = settings_.layout.right_open; break;
-    case I::Inspector: look.checked = inspector_.open; break;
-    case I::PointerTables: look.checked = tables_.open; break;
-    case I::Exercises: look.checked = exercise_panel_.open; break;
-    case I::YourCode: look.checked = student_editor_.open; break;
-    case I::Console: look.checked = console_panel_.open; break;
+    case I::LoopWeights: look.checked = document_.mesh_edits().loop_weights == LoopWeights::Loop; break;
+    case I::Wireframe: look.checked = view_options.wireframe; break;
+    case I::Shading: look.checked = view_options.smooth_shading; break;
+    case I::Vertices: look.checked = view_options.show_vertices; break;
+    case I::HalfedgeArrows: look.checked = view_options.show_halfedges; break;
+    case I::Boundary: look.checked = view_options.show_boundary; break;
+    case I::IdLabels: look.checked = view_.show_labels(); break;
+    case I::AnimateEdits: look.checked = settings.animate_edits; break;
+    case I::FoldLeft: look.checked = settings.layout.left_open; break;
+    case I::FoldRight: look.checked = settings.layout.right_open; break;
+    case I::Inspector: look.checked = panels_.inspector().open; break;
+    case I::PointerTables: look.checked = panels_.tables().open; break;
+    case I::Exercises: look.checked = exercises_.panel().open; break;
+    case I::YourCode: look.checked = exercises_.editor().open; break;
+    case I::Console: look.checked = panels_.console_panel().open; break;
     default: break;
   }
   if (!look.shown) return;
@@ -130,7 +134,7 @@ void EditorApp::draw_menu_item(const Command& c) {
   const char* label = look.label[0] ? look.label : menu_label(c).data();  // the path's end ends the C string too
   if (c.submenu) {
     const bool open = ImGui::BeginMenu(label, look.enabled);
-    probe_.record_last_item(std::string("menu-item:") + c.name);
+    panels_.probe().record_last_item(std::string("menu-item:") + c.name);
     if (open) {
       draw_submenu(c.id);
       ImGui::EndMenu();
@@ -138,25 +142,26 @@ void EditorApp::draw_menu_item(const Command& c) {
     return;
   }
   const bool clicked = ImGui::MenuItem(label, c.key, look.checked, look.enabled);
-  probe_.record_last_item(std::string("menu-item:") + c.name);  // each item drawn, where (tests click it)
+  panels_.probe().record_last_item(std::string("menu-item:") + c.name);  // each item drawn, where (tests click it)
   if (clicked) run_command(c.id, CommandStart::Menu);
 }
 
 void EditorApp::draw_submenu(CommandId id) {
   if (id == CommandId::OpenRecent) {
-    for (const std::string& path : std::deque<std::string>(recent_)) {
+    for (const std::string& path : std::deque<std::string>(document_.recent_files())) {
       if (ImGui::MenuItem(path.c_str())) open(path);
     }
   } else if (id == CommandId::UpAxis) {  // radio items; each refits the view
     const std::pair<const char*, UpAxisChoice> choices[] = {
         {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
     for (const auto& [label, choice] : choices) {
-      if (ImGui::MenuItem(label, nullptr, up_axis_choice_ == choice)) choose_up_axis(choice);
+      if (ImGui::MenuItem(label, nullptr, view_.up_axis_choice() == choice)) view_.choose_up_axis(choice);
     }
   } else if (id == CommandId::Theme) {
     constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
     for (const auto& [name, theme] : kThemes) {
-      if (ImGui::MenuItem(name, nullptr, settings_.theme == theme) && settings_.theme != theme) set_theme(theme);
+      if (ImGui::MenuItem(name, nullptr, settings().theme == theme) && settings().theme != theme)
+        panels_.set_theme(theme);
     }
   }
 }
@@ -187,16 +192,18 @@ void end_dialog(bool shown) {
 void EditorApp::draw_open_panel() {
   const float em = ImGui::GetFontSize();
   if (!begin_dialog("Open or save", show_open_panel_, ImVec2(40 * em, 30 * em))) return;
-  if (open_path_input_.empty()) open_path_input_ = std::filesystem::current_path().string();
-  if (input_path("path", open_path_input_) || ImGui::Button("Open")) {
-    if (std::filesystem::is_directory(open_path_input_)) {
+  std::string& open_path = document_.open_path_input();
+  std::string& save_path = document_.save_path_input();
+  if (open_path.empty()) open_path = std::filesystem::current_path().string();
+  if (input_path("path", open_path) || ImGui::Button("Open")) {
+    if (std::filesystem::is_directory(open_path)) {
       // Entering a folder just lists it.
-    } else if (open(open_path_input_)) {
+    } else if (open(open_path)) {
       show_open_panel_ = false;
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Assets")) open_path_input_ = assets_dir().string();
+  if (ImGui::Button("Assets")) open_path = assets_dir().string();
   if (host_has_file_picker()) {
     ImGui::SameLine();
     if (ImGui::Button("From this computer...")) {
@@ -204,20 +211,20 @@ void EditorApp::draw_open_panel() {
       show_open_panel_ = false;
     }
   }
-  if (mode_ == ViewMode::Mesh) {
-    input_path("save as", save_path_input_);
+  if (mode() == ViewMode::Mesh) {
+    input_path("save as", save_path);
     ImGui::SameLine();
-    if (ImGui::Button("Save") && !save_path_input_.empty()) save(save_path_input_);
+    if (ImGui::Button("Save") && !save_path.empty()) document_.save(save_path);
     ImGui::TextDisabled("%s", list_extensions(writable_extensions(), ", ", " or ").c_str());
   }
   ImGui::Separator();
 
   // The folder of the path typed so far (or the path itself if it is a folder).
-  std::filesystem::path folder = open_path_input_;
+  std::filesystem::path folder = open_path;
   std::error_code ec;
   if (!std::filesystem::is_directory(folder, ec)) folder = folder.parent_path();
   ImGui::BeginChild("listing", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * 4));
-  if (ImGui::Selectable("..")) open_path_input_ = folder.parent_path().string();
+  if (ImGui::Selectable("..")) open_path = folder.parent_path().string();
   std::vector<std::filesystem::directory_entry> entries;
   for (const auto& entry : std::filesystem::directory_iterator(folder, ec)) {
     if (entry.is_directory(ec) || is_readable(entry.path())) entries.push_back(entry);
@@ -227,13 +234,13 @@ void EditorApp::draw_open_panel() {
     const bool is_dir = entry.is_directory(ec);
     const std::string label = entry.path().filename().string() + (is_dir ? "/" : "");
     if (ImGui::Selectable(label.c_str(), false, ImGuiSelectableFlags_AllowDoubleClick)) {
-      open_path_input_ = entry.path().string();
+      open_path = entry.path().string();
       if (!is_dir && ImGui::IsMouseDoubleClicked(0) && open(entry.path())) show_open_panel_ = false;
     }
   }
   ImGui::EndChild();
   ImGui::TextDisabled("Recent:");
-  for (const std::string& path : std::deque<std::string>(recent_)) {
+  for (const std::string& path : std::deque<std::string>(document_.recent_files())) {
     if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
   }
   end_dialog(show_open_panel_);
@@ -276,7 +283,7 @@ void EditorApp::draw_unsaved_code_dialog() {
   const float em = ImGui::GetFontSize();
   // Closed by its X: the student keeps editing.
   if (!begin_dialog("Unsaved code", show_unsaved_code_, ImVec2(30 * em, 8 * em))) return;
-  ImGui::TextWrapped("Your code has changes you have not saved: %s.", unsaved_student_files().c_str());
+  ImGui::TextWrapped("Your code has changes you have not saved: %s.", exercises_.unsaved_student_files().c_str());
   std::optional<UnsavedCodeAnswer> answer;
   if (ImGui::Button("Save and quit")) answer = UnsavedCodeAnswer::SaveAndQuit;
   ImGui::SameLine();

@@ -6,10 +6,11 @@
 // Invariants: id labels appear only while the mesh is small enough for them to be read (kMaxLabelledFaces) and the
 // View menu's "Id labels" is on; halfedge id labels only while the arrows are shown (the selected or hovered
 // halfedge's label always). The lesson's labels are placed first, then the selected element's id label, the
-// hovered one's, the rest. last_labels_ holds what the last frame drew (empty outside the mesh view).
+// hovered one's, the rest. ViewRoom::last_labels_ holds what the last frame drew (empty outside the mesh view).
 #include <imgui.h>
 
-#include "app/editor_app.h"
+#include "app/document_room.h"
+#include "app/view_room.h"
 #include "core/palette.h"
 #include "render/labels.h"
 #include "ui/theme.h"
@@ -41,19 +42,22 @@ ImVec2 to_imgui(const glm::dvec2& p) { return ImVec2(float(p.x), float(p.y)); }
 
 }  // namespace
 
-void EditorApp::draw_labels(float view_x, float view_y, float view_width, float view_height, Viewport framebuffer) {
+void ViewRoom::draw_labels(const LessonMarks& lesson) {
   last_labels_ = {};
+  const float view_x = view_rect_.x, view_y = view_rect_.y, view_width = view_rect_.width,
+              view_height = view_rect_.height;
   if (mode_ != ViewMode::Mesh || view_width <= 0.0f || view_height <= 0.0f) return;
-  const HalfedgeMesh& mesh = doc_.mesh;
+  const HalfedgeMesh& mesh = document_.doc().mesh;
+  const Selection& selection = document_.selection();
   LabelScene scene;
   scene.id_labels = show_labels_ && mesh.num_faces() <= kMaxLabelledFaces;
   scene.ids.halfedges = view_options_.show_halfedges;
-  scene.lesson = lesson_host_->marks().labels;
-  scene.selected = selection_.selected;
-  scene.hovered = selection_.hovered;
+  scene.lesson = lesson.labels;
+  scene.selected = selection.selected;
+  scene.hovered = selection.hovered;
   if (!scene.id_labels && scene.lesson.empty()) return;
 
-  const LabelView view{{{view_x, view_y}, {double(view_x) + view_width, double(view_y) + view_height}}, framebuffer};
+  const LabelView view{{{view_x, view_y}, {double(view_x) + view_width, double(view_y) + view_height}}, viewport()};
   const TextMeasure measure = [](const std::string& text) {
     const ImVec2 size = ImGui::CalcTextSize(text.c_str());
     return glm::dvec2(size.x, size.y);
@@ -61,7 +65,7 @@ void EditorApp::draw_labels(float view_x, float view_y, float view_width, float 
   const std::vector<LabelRequest> requests = label_requests(mesh, camera_, view, scene, measure);
   last_labels_ = place_labels(requests, view.window);
 
-  const Palette& palette = palette_for(settings_.theme);
+  const Palette& palette = palette_for(theme_);
   ImDrawList* draw = ImGui::GetBackgroundDrawList();
   draw->PushClipRect(to_imgui(view.window.min), to_imgui(view.window.max), true);
   for (const PlacedLabel& label : last_labels_.placed) {

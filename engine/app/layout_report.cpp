@@ -30,10 +30,10 @@ std::string layout_json(const EditorApp& app) {
   const ImGuiIO& io = ImGui::GetIO();
   json out;
   out["display"] = json::array({io.DisplaySize.x, io.DisplaySize.y});
-  out["font_px"] = app.font_pixels();
+  out["font_px"] = app.panels().font_pixels();
   out["theme"] = app.settings().theme == Theme::Light ? "light" : "dark";
   out["mode"] = app.mode() == ViewMode::Mesh ? "mesh" : app.mode() == ViewMode::Curve ? "curve" : "patches";
-  out["view"] = rect(app.layout().view);
+  out["view"] = rect(app.panels().layout().view);
 
   json panels = json::array(), splitters = json::array();
   for (const ImGuiWindow* window : ImGui::GetCurrentContext()->Windows) {
@@ -52,20 +52,20 @@ std::string layout_json(const EditorApp& app) {
   json lesson = json::object();
   for (const auto& [key, item] :
        {std::pair{"text", "lesson-text"}, std::pair{"back", "lesson-back"}, std::pair{"next", "lesson-next"}}) {
-    if (const UiProbe::Item* found = app.probe().find(item)) {
+    if (const UiProbe::Item* found = app.panels().probe().find(item)) {
       lesson[key] = rect(found->min.x, found->min.y, found->max.x - found->min.x, found->max.y - found->min.y);
     }
   }
   out["lesson"] = std::move(lesson);
   json drawn = json::array();
-  for (const PlacedLabel& label : app.last_labels().placed) {
+  for (const PlacedLabel& label : app.view().last_labels().placed) {
     drawn.push_back({{"text", label.text},
                      {"element", format_id(label.element)},
                      {"source", label.source == LabelSource::Lesson ? "lesson" : "id"},
                      {"rect", rect(float(label.rect.min.x), float(label.rect.min.y), float(label.rect.width()),
                                    float(label.rect.height()))}});
   }
-  out["labels"] = {{"drawn", std::move(drawn)}, {"dropped", app.last_labels().dropped}};
+  out["labels"] = {{"drawn", std::move(drawn)}, {"dropped", app.view().last_labels().dropped}};
   return out.dump(2) + "\n";
 }
 

@@ -5,7 +5,7 @@
 // - What the window shows that no file gave it (the start cube, a lesson's mesh, a mesh shown by name) is Z-up, as
 //   core's primitives are: `file` is nullopt for it.
 // - The choice belongs to what is shown: opening a file or a lesson goes back to FromFile (editor_files.cpp,
-//   editor_lessons.cpp), so a lesson's mesh is Z-up even after a file before it was turned by hand.
+//   lesson_room.cpp), so a lesson's mesh is Z-up even after a file before it was turned by hand.
 // - The words are static text and nothing here allocates or throws, so the window switches its up axis in the steps
 //   of showing a file that cannot fail.
 #pragma once

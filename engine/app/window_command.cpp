@@ -69,11 +69,11 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     int status = 0;
   };
   auto run = std::make_shared<WindowRun>(script ? read_actions(*script) : std::vector<ScriptedAction>{},
-                                         EditorApp::kStartTitle, width, height, /*fit_to_screen=*/!size);
+                                         DocumentRoom::kStartTitle, width, height, /*fit_to_screen=*/!size);
   run->window.set_lazy(!run->player.active());  // scripted runs step one action per frame
-  run->app.apply_settings(settings);
+  run->app.panels().apply_settings(settings);
   // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
-  if (!run->player.active()) run->app.set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
+  if (!run->player.active()) run->app.view().set_edit_animation_policy(EditAnimationPolicy::AsSettingSays);
   run->app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
   // On failure the cube (or the empty start) stays and the status line says why.
   if (!args.empty()) run->app.open(args[0]);
@@ -88,12 +88,12 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     }
     window.set_lazy(!player.active() && !app.animating());
     if (const auto resize = app.take_window_size_request()) window.set_size(resize->first, resize->second);
-    const bool look_changed = app.take_look_change();  // both taken: each clears its flag
+    const bool look_changed = app.panels().take_look_change();  // both taken: each clears its flag
     const bool scale_changed = window.take_content_scale_changed();
     if (look_changed || scale_changed) {
       const FontsLoaded fonts = window.apply_look(app.settings().font_px, app.settings().theme);
       if (!fonts.warning.empty()) std::cerr << "meshedit: " << fonts.warning << "\n";
-      app.fonts_applied(fonts);
+      app.panels().fonts_applied(fonts);
     }
     window.begin_frame();
     app.open_dropped(window.take_dropped_files());

@@ -1,42 +1,32 @@
-// WindowLessonHost: what a lesson asks of the window (lesson_host.h), done with the EditorApp's document,
-// views and camera.
+// WindowLessonHost: what a lesson asks of the window (lesson_host.h), done with the window's open document
+// (DocumentRoom) and its views and camera (ViewRoom).
 //
 // Invariants:
 // - show_mesh copies the lesson's mesh into the document (the document owns what the window edits; the
 //   lesson keeps its own object). The first show of a step fits the camera; later shows in the same step keep
 //   the student's view.
 // - Highlights, labels and arrows live in LessonMarks until clear_annotations() (each step start); ids that are not
-//   in the shown mesh are kept but draw nothing. Arrows are drawn over the mesh view only.
+//   in the shown mesh are kept but draw nothing. Arrows are drawn over the mesh view and the patch view.
 // - curve_reading() reads the curve view the student sees (its t and control points) while it is on screen, and
 //   patch_reading() the patch view's (u, v) probe while the patch view is.
 #pragma once
 
+#include <memory>
+#include <optional>
 #include <string>
-#include <utility>
 #include <vector>
 
-#include <glm/vec3.hpp>
-
+#include "app/lesson_marks.h"
 #include "lesson/lesson_host.h"
 
 namespace meshedit {
 
-class EditorApp;
-
-struct LessonArrow {
-  glm::dvec3 from, to;
-  glm::vec3 colour;
-};
-
-struct LessonMarks {
-  std::vector<std::pair<ElementRef, glm::vec3>> highlights;
-  std::vector<std::pair<ElementRef, std::string>> labels;
-  std::vector<LessonArrow> arrows;
-};
+class DocumentRoom;
+class ViewRoom;
 
 class WindowLessonHost : public LessonHost {
  public:
-  explicit WindowLessonHost(EditorApp& app) : app_(app) {}
+  WindowLessonHost(DocumentRoom& document, ViewRoom& view) : document_(document), view_(view) {}
 
   void show_mesh(std::shared_ptr<HalfedgeMesh> mesh, std::optional<UpAxis> up) override;
   void show_curve(const BezierCurve& curve) override;
@@ -55,7 +45,8 @@ class WindowLessonHost : public LessonHost {
   const LessonMarks& marks() const { return marks_; }
 
  private:
-  EditorApp& app_;
+  DocumentRoom& document_;
+  ViewRoom& view_;
   LessonMarks marks_;
   bool shown_this_step_ = false;
 };

@@ -43,7 +43,7 @@ class EditorCommands : public testing::GlTest {
   }
   // Clicks what the last frame drew under `name` in the window's probe; false when it drew nothing so named.
   bool click(const std::string& name) {
-    const UiProbe::Item* item = app_->probe().find(name);
+    const UiProbe::Item* item = app_->panels().probe().find(name);
     if (!item) return false;
     harness_.click(item->center(), draw());
     return true;
@@ -66,7 +66,7 @@ class EditorCommands : public testing::GlTest {
     std::ofstream(file) << "lesson { title = \"Waits\" }\n"
                            "step(\"Run it\", function() wait_for { command = \""
                         << name << "\" } say(\"ran\") end)\n";
-    ASSERT_TRUE(app_->open_lesson(file)) << app_->lesson().error();
+    ASSERT_TRUE(app_->lessons().open(file)) << app_->lesson().error();
     app_->show_mesh(build_halfedge_mesh(make_torus(4, 6)), "");
     ASSERT_EQ(app_->lesson().step_state(), LessonRunner::StepState::Waiting);
   }
@@ -86,15 +86,15 @@ TEST_F(EditorCommands, EachMenuShowsEveryCommandTheTablePutsInIt) {
                                : false;
     frame();
     ASSERT_TRUE(click("menu:" + std::string(menu_title(c)))) << c.menu;
-    EXPECT_EQ(app_->probe().find(std::string("menu-item:") + c.name) != nullptr, !page_only) << c.menu;
+    EXPECT_EQ(app_->panels().probe().find(std::string("menu-item:") + c.name) != nullptr, !page_only) << c.menu;
     harness_.click(ImVec2(kWidth / 2.0f, kHeight - 4.0f), draw());  // closes the menu
   }
 }
 
 TEST_F(EditorCommands, AMenuItemRunsItsCommand) {
-  const bool wireframe = app_->view_options().wireframe;
+  const bool wireframe = app_->view().options().wireframe;
   click_menu_item(command(CommandId::Wireframe));
-  EXPECT_NE(app_->view_options().wireframe, wireframe);
+  EXPECT_NE(app_->view().options().wireframe, wireframe);
   const size_t faces = app_->document().mesh.num_faces();
   click_menu_item(command(CommandId::Linear));
   EXPECT_EQ(app_->document().mesh.num_faces(), 4 * faces);

@@ -68,17 +68,17 @@ class EditorEditAnimation : public testing::GlTest {
 TEST_F(EditorEditAnimation, OffByDefaultTheFlipIsDoneWithoutAnimating) {
   EXPECT_FALSE(app_->edits_animate());
   EXPECT_EQ(animated_ms_after_key(GLFW_KEY_F), 0.0f);
-  EXPECT_FALSE(app_->edit_animator().playing());
+  EXPECT_FALSE(app_->view().edit_animator().playing());
   EXPECT_EQ(ends(), std::make_pair(VertexId(3), VertexId(2)));  // flipped: e0 runs d->c
 }
 
 TEST_F(EditorEditAnimation, AFlipAnimatesForAQuarterSecondAndItsUndoPlaysBack) {
-  app_->set_edit_animation_policy(EditorApp::EditAnimationPolicy::Always);
+  app_->view().set_edit_animation_policy(EditAnimationPolicy::Always);
   app_->handle_key(GLFW_KEY_F, {});
   EXPECT_EQ(ends(), std::make_pair(VertexId(3), VertexId(2)));  // the mesh is flipped at once
   frame();
   ASSERT_TRUE(app_->animating());
-  const std::optional<EditAnimation>& animation = app_->edit_animator().animation();
+  const std::optional<EditAnimation>& animation = app_->view().edit_animator().animation();
   ASSERT_TRUE(animation);
   EXPECT_EQ(animation->direction, PlayDirection::Forward);
   const FlipMotion& flip = std::get<FlipMotion>(animation->motion);
@@ -93,7 +93,7 @@ TEST_F(EditorEditAnimation, AFlipAnimatesForAQuarterSecondAndItsUndoPlaysBack) {
   }
   EXPECT_GE(ms, 200.0f);
   EXPECT_LE(ms, 300.0f);
-  EXPECT_FALSE(app_->edit_animator().playing());
+  EXPECT_FALSE(app_->view().edit_animator().playing());
 
   const float undo_ms = animated_ms_after_key(GLFW_KEY_Z, {true, false});
   EXPECT_GE(undo_ms, 200.0f);
@@ -105,27 +105,27 @@ TEST_F(EditorEditAnimation, AFlipAnimatesForAQuarterSecondAndItsUndoPlaysBack) {
 }
 
 TEST_F(EditorEditAnimation, TheUndoPlaysBackward) {
-  app_->set_edit_animation_policy(EditorApp::EditAnimationPolicy::Always);
+  app_->view().set_edit_animation_policy(EditAnimationPolicy::Always);
   app_->handle_key(GLFW_KEY_S, {});
   frame();
-  ASSERT_TRUE(app_->edit_animator().animation());
-  EXPECT_EQ(app_->edit_animator().animation()->direction, PlayDirection::Forward);
+  ASSERT_TRUE(app_->view().edit_animator().animation());
+  EXPECT_EQ(app_->view().edit_animator().animation()->direction, PlayDirection::Forward);
   app_->handle_key(GLFW_KEY_Z, {true, false});
   frame();
-  ASSERT_TRUE(app_->edit_animator().animation());
-  EXPECT_EQ(app_->edit_animator().animation()->direction, PlayDirection::Backward);
-  EXPECT_EQ(std::get<SplitMotion>(app_->edit_animator().animation()->motion).m, glm::dvec3(0, 0, 0));
+  ASSERT_TRUE(app_->view().edit_animator().animation());
+  EXPECT_EQ(app_->view().edit_animator().animation()->direction, PlayDirection::Backward);
+  EXPECT_EQ(std::get<SplitMotion>(app_->view().edit_animator().animation()->motion).m, glm::dvec3(0, 0, 0));
 }
 
 TEST_F(EditorEditAnimation, TheWindowsPolicyFollowsTheSetting) {
-  app_->set_edit_animation_policy(EditorApp::EditAnimationPolicy::AsSettingSays);
+  app_->view().set_edit_animation_policy(EditAnimationPolicy::AsSettingSays);
   Settings settings = app_->settings();
   settings.animate_edits = false;
-  app_->apply_settings(settings);
+  app_->panels().apply_settings(settings);
   EXPECT_FALSE(app_->edits_animate());
   EXPECT_EQ(animated_ms_after_key(GLFW_KEY_F), 0.0f);
   settings.animate_edits = true;
-  app_->apply_settings(settings);
+  app_->panels().apply_settings(settings);
   EXPECT_TRUE(app_->edits_animate());
   EXPECT_GE(animated_ms_after_key(GLFW_KEY_F), 200.0f);
 }

@@ -32,7 +32,7 @@ class EditorLabels : public testing::GlTest {
   }
 
   const PlacedLabel* find(const std::string& text, LabelSource source) const {
-    for (const PlacedLabel& l : app_->last_labels().placed) {
+    for (const PlacedLabel& l : app_->view().last_labels().placed) {
       if (l.text == text && l.source == source) return &l;
     }
     return nullptr;
@@ -42,10 +42,10 @@ class EditorLabels : public testing::GlTest {
 };
 
 TEST_F(EditorLabels, TheFlipLessonsNamesAndIdsArePlacedApartInsideTheView) {
-  ASSERT_TRUE(app_->open_lesson(meshedit::testing::source_dir() / "lessons" / "4_edge_flip.lua"));
+  ASSERT_TRUE(app_->lessons().open(meshedit::testing::source_dir() / "lessons" / "4_edge_flip.lua"));
   frame();
   frame();
-  const LabelPlacement& labels = app_->last_labels();
+  const LabelPlacement& labels = app_->view().last_labels();
   ASSERT_FALSE(labels.placed.empty());
   const LabelRect window{{0.0, 0.0}, {double(kWidth), double(kHeight)}};
   for (size_t i = 0; i < labels.placed.size(); ++i) {
@@ -56,7 +56,7 @@ TEST_F(EditorLabels, TheFlipLessonsNamesAndIdsArePlacedApartInsideTheView) {
     }
   }
   // The lesson names every element; each of its labels is drawn, at its element.
-  for (const auto& [element, text] : app_->lesson_marks().labels) {
+  for (const auto& [element, text] : app_->lessons().marks().labels) {
     const PlacedLabel* label = find(text, LabelSource::Lesson);
     if (element.kind == ElementKind::Halfedge || element.kind == ElementKind::Vertex ||
         element.kind == ElementKind::Face) {
@@ -74,10 +74,10 @@ TEST_F(EditorLabels, TheFlipLessonsNamesAndIdsArePlacedApartInsideTheView) {
   // A curve fills the window: no labels, and the report says so.
   BezierCurve curve;
   curve.control_points = {{0.0, 0.0}, {1.0, 1.0}, {2.0, 0.0}};
-  app_->show_curve(curve);
+  app_->view().show_curve(curve);
   frame();
-  EXPECT_TRUE(app_->last_labels().placed.empty());
-  EXPECT_EQ(app_->last_labels().dropped, 0u);
+  EXPECT_TRUE(app_->view().last_labels().placed.empty());
+  EXPECT_EQ(app_->view().last_labels().dropped, 0u);
 }
 
 TEST_F(EditorLabels, TheSelectedHalfedgeIsLabelledThoughArrowsAreOff) {
@@ -85,10 +85,11 @@ TEST_F(EditorLabels, TheSelectedHalfedgeIsLabelledThoughArrowsAreOff) {
   app_->show_start_mesh();
   ViewRequest arrows_off;
   arrows_off.halfedges = false;
-  app_->apply_view_request(arrows_off);
+  app_->view().apply_view_request(arrows_off);
   frame();
-  EXPECT_GT(app_->last_labels().placed.size(), 20u);
-  for (const PlacedLabel& l : app_->last_labels().placed) EXPECT_NE(l.element.kind, ElementKind::Halfedge) << l.text;
+  EXPECT_GT(app_->view().last_labels().placed.size(), 20u);
+  for (const PlacedLabel& l : app_->view().last_labels().placed)
+    EXPECT_NE(l.element.kind, ElementKind::Halfedge) << l.text;
   ASSERT_NE(find("f2", LabelSource::Id), nullptr);  // a face turned to the camera
   const HalfedgeId h = app_->document().mesh.halfedge(FaceId::face(2));
   app_->selection().selected = h;

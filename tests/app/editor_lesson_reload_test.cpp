@@ -103,12 +103,12 @@ TEST_F(EditorLessonReload, GoingBackToTheListDropsTheLessonsTitle) {
   save(lesson("A lesson"));
   ASSERT_TRUE(app_->open(file_)) << app_->lesson().error();
   EXPECT_EQ(app_->title(), "MeshEdit - A lesson");
-  app_->show_lesson_list();
+  app_->lessons().show_list();
   EXPECT_EQ(app_->title(), "MeshEdit");
   // A file's title stays: going back to the list does not rename a window that names a file.
   ASSERT_TRUE(app_->open(file_)) << app_->lesson().error();
   app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "torus.obj");
-  app_->show_lesson_list();
+  app_->lessons().show_list();
   EXPECT_EQ(app_->title(), "MeshEdit - torus.obj");
 }
 

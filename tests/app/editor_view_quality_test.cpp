@@ -48,32 +48,32 @@ class EditorViewQuality : public testing::GlTest {
 TEST_F(EditorViewQuality, SlowFramesLowerTheQualityTheUsersWireframeWinsAndFastFramesRestoreIt) {
   app_->show_mesh(build_halfedge_mesh(make_torus(24, 32)), "");  // 1536 triangles, closed
   frames(10.0f, 2);
-  ASSERT_EQ(app_->mesh_render_stats().framebuffer_samples, 4);
-  EXPECT_TRUE(app_->mesh_render_stats().multisampled);
-  EXPECT_TRUE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "");
+  ASSERT_EQ(app_->view().mesh_render_stats().framebuffer_samples, 4);
+  EXPECT_TRUE(app_->view().mesh_render_stats().multisampled);
+  EXPECT_TRUE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "");
 
   frames(80.0f, 4);  // the first is the frame before (fast); then three slow ones
-  EXPECT_FALSE(app_->mesh_render_stats().multisampled);
-  EXPECT_TRUE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling off");
+  EXPECT_FALSE(app_->view().mesh_render_stats().multisampled);
+  EXPECT_TRUE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "frame 80 ms: multisampling off");
 
   frames(80.0f, 3);
-  EXPECT_FALSE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling and wireframe off (W shows it)");
+  EXPECT_FALSE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "frame 80 ms: multisampling and wireframe off (W shows it)");
 
   app_->handle_key(GLFW_KEY_W, {});
   frames(80.0f, 1);
-  EXPECT_TRUE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling off");
+  EXPECT_TRUE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "frame 80 ms: multisampling off");
   frames(80.0f, 3);
-  EXPECT_TRUE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "frame 80 ms: multisampling and back sides off");
+  EXPECT_TRUE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "frame 80 ms: multisampling and back sides off");
 
   frames(5.0f, 30);
-  EXPECT_TRUE(app_->mesh_render_stats().multisampled);
-  EXPECT_TRUE(app_->view_options().wireframe);
-  EXPECT_EQ(app_->status_note(), "");
+  EXPECT_TRUE(app_->view().mesh_render_stats().multisampled);
+  EXPECT_TRUE(app_->view().options().wireframe);
+  EXPECT_EQ(app_->view().status_bar().note, "");
 }
 
 }  // namespace

@@ -46,7 +46,7 @@ class EditorYourTurn : public testing::GlTest {
   }
   // Clicks the your_turn's button where the lesson panel drew it in the last frame.
   void click_show_mine() {
-    const UiProbe::Item* button = app_->probe().find("lesson-show-mine");
+    const UiProbe::Item* button = app_->panels().probe().find("lesson-show-mine");
     ASSERT_NE(button, nullptr) << "the lesson panel drew no \"" << kShowMineButton << "\" button";
     harness_.click(button->center(), [&] { draw(); });
   }
@@ -72,7 +72,7 @@ TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercis
   ASSERT_FALSE(verdict.right);
   ASSERT_EQ(verdict.exercise, Exercise::FlipEdge);
   ASSERT_TRUE(verdict.exercise_input.mesh);
-  EXPECT_EQ(app_->probe().find("exercises-tab"), nullptr);  // the Exercises tab is not open yet
+  EXPECT_EQ(app_->panels().probe().find("exercises-tab"), nullptr);  // the Exercises tab is not open yet
 
   // The diamond as the lesson rigged it, by the diagram's names: h0 = e.halfedge, f0.halfedge = h2.
   const HalfedgeMesh& input = *verdict.exercise_input.mesh;
@@ -98,7 +98,7 @@ TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercis
   EXPECT_EQ(app_->selection().selected, ElementRef(e));
 
   // The Exercises tab: in front, its last run mine on e, wrong, with the lesson's first difference.
-  EXPECT_NE(app_->probe().find("exercises-tab"), nullptr);
+  EXPECT_NE(app_->panels().probe().find("exercises-tab"), nullptr);
   const std::optional<ExerciseRun>& run = app_->exercises().last_run();
   ASSERT_TRUE(run.has_value());
   EXPECT_TRUE(run->mine);
@@ -126,20 +126,20 @@ TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
   ASSERT_TRUE(app_->open(file)) << app_->lesson().error();
   frames(3);
   ASSERT_NE(your_turn_to_show(app_->lesson()), nullptr) << app_->lesson().error();
-  EXPECT_FALSE(app_->bezier_mine().curve_on());
+  EXPECT_FALSE(app_->view().bezier_mine().curve_on());
 
   click_show_mine();
   frames(2);
 
   EXPECT_EQ(app_->mode(), ViewMode::Curve);
-  const CurveEditorState& curve = app_->curve_editor();
+  const CurveEditorState& curve = app_->view().curve();
   const std::vector<glm::dvec2> points = {{0, 0}, {1, 2}, {3, 2}, {4, 0}};
   EXPECT_EQ(curve.curve.control_points, points);
   EXPECT_DOUBLE_EQ(curve.t, 0.3);
   EXPECT_EQ(curve.levels_shown, 3);
-  ASSERT_TRUE(app_->bezier_mine().curve_on());
+  ASSERT_TRUE(app_->view().bezier_mine().curve_on());
   // The view's mine ran the student's evaluate_step on the your_turn's input and stopped at its wrong level.
-  const CurveMineLevels& mine = app_->bezier_mine().curve();
+  const CurveMineLevels& mine = app_->view().bezier_mine().curve();
   EXPECT_TRUE(mine.failed()) << mine.message;
   EXPECT_EQ(mine.failed_level, 1) << mine.message;
   EXPECT_FALSE(mine.message.empty());
@@ -156,7 +156,7 @@ TEST_F(EditorYourTurn, WithNoWrongYourTurnWaitingItRefusesAndChangesNothing) {
   EXPECT_TRUE(app_->document().mesh.same_as(before));
   EXPECT_FALSE(app_->exercises().last_run().has_value());
   frames(1);
-  EXPECT_EQ(app_->probe().find("lesson-show-mine"), nullptr);  // and the panel offers no button
+  EXPECT_EQ(app_->panels().probe().find("lesson-show-mine"), nullptr);  // and the panel offers no button
 }
 
 }  // namespace

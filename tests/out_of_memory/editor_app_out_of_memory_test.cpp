@@ -67,7 +67,7 @@ class EditorAppOutOfMemory : public testing::GlTest {
   // selected.
   MeshDocument& fresh_document() {
     app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "");
-    EXPECT_TRUE(app_->save(dir_ / "torus.obj"));
+    EXPECT_TRUE(app_->document_room().save(dir_ / "torus.obj"));
     app_->selection().selected = EdgeId(9);
     EXPECT_TRUE(flip_selected(app_->document(), app_->selection()).ok);
     app_->selection().selected = EdgeId(4);
@@ -136,7 +136,7 @@ struct Names {
   bool operator==(const Names&) const = default;
 };
 
-Names names_of(const EditorApp& app) { return {app.title(), app.recent_files()}; }
+Names names_of(const EditorApp& app) { return {app.title(), app.document_room().recent_files()}; }
 
 bool is_memory_error(const DocumentMessage& message) {
   return message.severity == Severity::Error && message.text.find(kMemoryRanOut) != std::string::npos;
@@ -230,14 +230,14 @@ TEST_F(EditorAppOutOfMemory, ACurveOrPatchesOpenWholeOrNotAtAll) {
 
 TEST_F(EditorAppOutOfMemory, ASaveThatFailsIsReportedAndTheDocumentStays) {
   const fs::path nowhere = dir_ / "no such folder" / "torus.obj";
-  expect_failure_reported_alone([&] { return app_->save(nowhere); });
+  expect_failure_reported_alone([&] { return app_->document_room().save(nowhere); });
 }
 
 // Saved and reported so, first in the recent list, or not saved, reported so, the recent list as it was.
 TEST_F(EditorAppOutOfMemory, ASaveThatWorksIsReportedWholeOrNotAtAll) {
   const fs::path saved = dir_ / "saved.obj";
   MeshDocument& doc = fresh_document();
-  ASSERT_TRUE(app_->save(saved));
+  ASSERT_TRUE(app_->document_room().save(saved));
   const DocumentMessage spare = doc.message;
   const Names saved_names = names_of(*app_);
   ASSERT_EQ(spare.text, "saved " + saved.string());
@@ -250,7 +250,7 @@ TEST_F(EditorAppOutOfMemory, ASaveThatWorksIsReportedWholeOrNotAtAll) {
       const Before before = before_of(doc);
       const Names names = names_of(*app_);
       bool result = false;
-      const bool failed = run_failing(n, later, [&] { result = app_->save(saved); });
+      const bool failed = run_failing(n, later, [&] { result = app_->document_room().save(saved); });
       EXPECT_TRUE(left_alone(doc, before));
       if (result) {
         EXPECT_TRUE(fs::exists(saved));
@@ -260,7 +260,7 @@ TEST_F(EditorAppOutOfMemory, ASaveThatWorksIsReportedWholeOrNotAtAll) {
         EXPECT_TRUE(names_of(*app_) == names);
         EXPECT_TRUE(is_memory_error(doc.message)) << doc.message.text;
       }
-      EXPECT_TRUE(app_->save(saved));  // with memory to spare again
+      EXPECT_TRUE(app_->document_room().save(saved));  // with memory to spare again
       if (!failed || HasFailure()) break;
     }
   }

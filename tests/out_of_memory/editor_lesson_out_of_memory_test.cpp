@@ -65,7 +65,7 @@ class EditorLessonOutOfMemory : public testing::GlTest {
   void fresh_window() {
     app_ = std::make_unique<EditorApp>();
     app_->show_mesh(build_halfedge_mesh(make_torus(5, 7)), "torus.obj");
-    ASSERT_TRUE(app_->open_lesson(earlier_)) << app_->lesson().error();
+    ASSERT_TRUE(app_->lessons().open(earlier_)) << app_->lesson().error();
   }
 
   std::unique_ptr<EditorApp> app_;
@@ -149,7 +149,7 @@ TEST_F(EditorLessonOutOfMemory, ALessonsMeshIsShownWholeOrNotAtAll) {
       {
         const FailingAllocations failing(n, later);
         try {
-          app_->show_lesson_mesh(tetrahedron, true);
+          app_->view().show_lesson_mesh(tetrahedron, true);
         } catch (const std::bad_alloc&) {
           escaped = true;
         }
@@ -186,7 +186,7 @@ TEST_F(EditorLessonOutOfMemory, AReloadIsWholeOrNotAtAll) {
       {
         const FailingAllocations failing(n, later);
         try {
-          outcome = app_->reload_lesson();
+          outcome = app_->lessons().reload();
         } catch (...) {
           escaped = true;
         }
@@ -200,7 +200,7 @@ TEST_F(EditorLessonOutOfMemory, AReloadIsWholeOrNotAtAll) {
         EXPECT_EQ(outcome, ReloadOutcome::OutOfMemory);
         EXPECT_EQ(app_->lesson().title(), "An earlier lesson");
         EXPECT_EQ(app_->title(), "MeshEdit - An earlier lesson");
-        EXPECT_EQ(app_->reload_lesson(), ReloadOutcome::Reloaded) << app_->lesson().error();  // memory to spare
+        EXPECT_EQ(app_->lessons().reload(), ReloadOutcome::Reloaded) << app_->lesson().error();  // memory to spare
         EXPECT_EQ(app_->title(), "MeshEdit - A renamed lesson");
       }
       if (!failed || HasFailure()) break;
@@ -224,21 +224,21 @@ TEST_F(EditorLessonOutOfMemory, GoingBackToTheListIsWholeOrNothing) {
     for (size_t n = 1;; ++n) {
       SCOPED_TRACE(n);
       fresh_window();
-      ASSERT_TRUE(app_->open_lesson(marked)) << app_->lesson().error();
-      ASSERT_EQ(app_->lesson_marks().highlights.size(), 1u) << app_->lesson().error();
-      ASSERT_EQ(app_->lesson_marks().labels.size(), 1u);
+      ASSERT_TRUE(app_->lessons().open(marked)) << app_->lesson().error();
+      ASSERT_EQ(app_->lessons().marks().highlights.size(), 1u) << app_->lesson().error();
+      ASSERT_EQ(app_->lessons().marks().labels.size(), 1u);
       const LessonRunner* before = &app_->lesson();
       bool escaped = false, failed = false;
       {
         const FailingAllocations failing(n, later);
         try {
-          app_->show_lesson_list();
+          app_->lessons().show_list();
         } catch (const std::bad_alloc&) {
           escaped = true;
         }
         failed = failing.failed();
       }
-      const LessonMarks& marks = app_->lesson_marks();
+      const LessonMarks& marks = app_->lessons().marks();
       if (escaped) {
         EXPECT_EQ(&app_->lesson(), before);
         EXPECT_EQ(app_->lesson().title(), "Marked");

@@ -1,13 +1,11 @@
-// The Repairs tab and the repaired spots in the mesh view (app/repair_marks.h): the summary, then one clickable row per
-// change (its sentence, and the ids of its spots in the repaired mesh); a click selects the row's first spot. While
-// the spots are current every one of them is drawn in the palette's "last edit" colour (the lesson highlights' path,
-// app/element_highlight.h); a selected vertex among them shows its selection colour inside the spot's ring.
+// DocumentRoom's Repairs tab (app/repair_marks.h): the summary, then one clickable row per change (its sentence, and
+// the ids of its spots in the repaired mesh); a click selects the row's first spot. The spots are drawn over the mesh
+// by the view (ViewRoom::draw_repair_spots).
 #include <imgui.h>
 
 #include <string>
 
-#include "app/editor_app.h"
-#include "app/element_highlight.h"
+#include "app/document_room.h"
 #include "core/palette.h"
 #include "document/document_actions.h"
 #include "ui/flow_layout.h"
@@ -26,16 +24,16 @@ std::string spot_ids(const RepairSpots& spots) {
 
 }  // namespace
 
-bool EditorApp::repair_spots_current() const {
-  return mode_ == ViewMode::Mesh && repairs_.current(doc_.generation, doc_.mesh.version());
+bool DocumentRoom::repair_spots_current(bool mesh_shown) const {
+  return mesh_shown && repairs_.current(doc_.generation, doc_.mesh.version());
 }
 
-bool EditorApp::click_repair_row(size_t row) {
+bool DocumentRoom::click_repair_row(size_t row, bool mesh_shown) {
   std::string refused;
   ElementRef spot;
   if (row >= repairs_.rows.size()) {
     refused = "the Repairs tab has no change " + std::to_string(row + 1);
-  } else if (!repair_spots_current()) {
+  } else if (!repair_spots_current(mesh_shown)) {
     refused = "the repaired spots are gone: the mesh was edited or another one opened";
   } else if (!(spot = repairs_.first_spot(row)).valid()) {
     refused = "that change left nothing in the mesh to select";
@@ -49,9 +47,9 @@ bool EditorApp::click_repair_row(size_t row) {
   return true;
 }
 
-void EditorApp::draw_repairs_tab() {
-  const bool current = repair_spots_current();
-  const Palette& palette = palette_for(settings_.theme);
+void DocumentRoom::draw_repairs_tab(bool mesh_shown, Theme theme) {
+  const bool current = repair_spots_current(mesh_shown);
+  const Palette& palette = palette_for(theme);
   ImGui::TextWrapped("%s", repairs_.summary.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   ImGui::TextWrapped("%s", current ? "Click a change to select it; its spots are drawn in the last edit's colour."
@@ -68,7 +66,7 @@ void EditorApp::draw_repairs_tab() {
     ImGui::BeginDisabled(!current);
     if (ImGui::Selectable("##change", current && repair_row_clicked_ == i, ImGuiSelectableFlags_AllowItemOverlap,
                           ImVec2(0, height))) {
-      click_repair_row(i);
+      click_repair_row(i, mesh_shown);
     }
     ImGui::EndDisabled();
     ImGui::PopID();
@@ -79,20 +77,6 @@ void EditorApp::draw_repairs_tab() {
     ImGui::SetCursorScreenPos(after);
     ImGui::Spacing();
   }
-}
-
-void EditorApp::draw_repair_spots() {
-  if (!repair_spots_current()) return;
-  Overlay overlay;
-  overlay.on_top = true;
-  const glm::vec4 rgba(palette_for(settings_.theme).changed, 1.0f);
-  for (const ElementRef spot : repairs_.all_spots()) add_highlight(overlay, doc_.mesh, spot, rgba);
-  // A selected spot vertex keeps its selection colour inside the spot's ring, so both read.
-  if (selection_.selected.kind == ElementKind::Vertex && doc_.mesh.alive(selection_.selected)) {
-    const glm::vec4 selected(palette_for(settings_.theme).selected, 1.0f);
-    overlay.points.push_back({doc_.mesh.position(VertexId(selection_.selected.index)), selected, 9.0f});
-  }
-  overlay_renderer_->draw(camera_, viewport(), overlay);
 }
 
 }  // namespace meshedit

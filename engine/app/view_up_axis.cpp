@@ -1,11 +1,12 @@
-// EditorApp and the up axis: View > Up axis's choice and what the camera and the status bar show of it (see
-// app/up_axis_choice.h for the rule, editor_files.cpp and editor_lessons.cpp for where a file or a lesson sets it).
-#include "app/editor_app.h"
+// ViewRoom and the up axis: View > Up axis's choice and what the camera and the status bar show of it (see
+// app/up_axis_choice.h for the rule, view_showing.cpp and lesson_room.cpp for where a file or a lesson sets it).
+#include "app/document_room.h"
+#include "app/view_room.h"
 #include "render/mesh_geometry.h"
 
 namespace meshedit {
 
-bool EditorApp::apply_up_axis() noexcept {
+bool ViewRoom::apply_up_axis() noexcept {
   status_bar_.up_axis = up_axis_status(up_axis_choice_, file_up_axis_);
   status_bar_.up_axis_why = up_axis_status_tooltip(up_axis_choice_, file_up_axis_);
   const UpAxis up = chosen_up_axis(up_axis_choice_, file_up_axis_);
@@ -14,13 +15,18 @@ bool EditorApp::apply_up_axis() noexcept {
   return true;
 }
 
-void EditorApp::choose_up_axis(UpAxisChoice choice) {
+void ViewRoom::follow_lesson_up_axis() noexcept {
+  up_axis_choice_ = UpAxisChoice::FromFile;
+  if (apply_up_axis()) fit_camera();
+}
+
+void ViewRoom::choose_up_axis(UpAxisChoice choice) {
   up_axis_choice_ = choice;
   apply_up_axis();
   if (mode_ == ViewMode::Patches && patches_.tessellation.mesh) {
     fit_camera(mesh_bounds(*patches_.tessellation.mesh));
   } else {
-    fit_camera(mesh_bounds(doc_.mesh));
+    fit_camera(mesh_bounds(document_.doc().mesh));
   }
 }
 
