@@ -53,7 +53,7 @@ const CliCommand kCommands[] = {
      "                                     a picture without a display (EGL); also --vertices --halfedges"},
     {"run", run_run, "run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)"},
     {"grade", run_grade,
-     "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap]\n"
+     "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
      "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions"},
     {"lesson", run_lesson,
      "lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"

@@ -1,8 +1,12 @@
 // `meshedit grade`: grades Lua submissions with an instructor's suite.
 //
-//   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap]
+//   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap] [--visible-only]
 //   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]
 //
+// --visible-only runs only the tests a student sees before the due date (a student's check before handing in, the
+// window's Check my work); the report says how many tests and points it left out and when they will be shown.
+// Before grading, each test worth points that the suite hides from students is a warning on stderr (Gradescope
+// then hides the student's total too).
 // One submission: prints the readable report (or, with --tap, only TAP) on `out`, ending with
 // "N passed, N failed", and writes Gradescope's results.json (--results; default ./results.json) and JUnit XML
 // (--junit). A class: grades every folder in parallel processes (--jobs, default: the number of processors),
@@ -46,11 +50,13 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
   const std::string results = take_option(args, "--results").value_or("results.json");
   const auto junit = take_option(args, "--junit");
   const bool tap = take_flag(args, "--tap");
+  GradeOptions options;
+  options.visible_only = take_flag(args, "--visible-only");
   reject_unknown_options(args);
   if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
   const Submission submission = Submission::read(folder);
   out.flush();
-  const GradeReport report = grade(suite, submission);
+  const GradeReport report = grade(suite, submission, options);
   write_file_atomically(results, gradescope_json(report));
   if (junit) write_file_atomically(*junit, junit_xml(report));
   out << (tap ? tap_text(report) : text_report(report));
@@ -64,6 +70,7 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
   int jobs = hardware_threads();
   if (const auto text = take_option(args, "--jobs")) jobs = parse_count(*text, "--jobs", 256);
   if (jobs < 1) throw UsageError("--jobs must be at least 1");
+  if (take_flag(args, "--visible-only")) throw UsageError("--visible-only is a student's check of one --submission");
   for (const char* single : {"--results", "--junit", "--tap"}) {
     for (const auto& a : args) {
       if (a == single) throw UsageError(std::string(single) + " is for one --submission; a class gets --out");
@@ -104,6 +111,9 @@ int run_grade(const std::vector<std::string>& arguments, std::ostream& out) {
     throw UsageError("grade needs either --submission DIR or --submissions DIR...");
   }
   std::unique_ptr<Suite> suite = Suite::load(*suite_path);
+  for (const std::string& warning : suite_warnings(*suite)) {
+    std::cerr << "meshedit grade: warning: " << suite_path->c_str() << ": " << warning << "\n";
+  }
   return one ? grade_one(*suite, *one, args, out) : grade_many(*suite, many, args, out);
 }
 

@@ -4,7 +4,8 @@
 // dialog's paths. Every room reports into the document's status line (message()).
 //
 // Invariants:
-// - Opening is whole or nothing: prepare_file and prepare_repaired read and build everything a file needs and throw with
+// - Opening is whole or nothing: prepare_file and prepare_repaired read and build everything a file needs and throw
+// with
 //   nothing changed; take_mesh and take_opened switch to it with steps that cannot fail (the window's switch, which
 //   also turns the view: EditorApp::take_file, editor_files.cpp).
 // - A file saved is reported saved and put first in the recent list; one not saved changes neither (save makes both
@@ -102,8 +103,8 @@ class DocumentRoom {
   std::string title_ = kStartTitle;
   bool title_names_lesson_ = false;  // title_ is the running lesson's, not a file's: reloads rename it
   std::deque<std::string> recent_;
-  std::string repairable_path_;           // the mesh file the last open refused as not a manifold
-  RepairMarks repairs_;                   // the last repaired copy's changes and their spots
+  std::string repairable_path_;  // the mesh file the last open refused as not a manifold
+  RepairMarks repairs_;          // the last repaired copy's changes and their spots
   bool repairs_tab_open_ = false;
   size_t repair_row_clicked_ = SIZE_MAX;  // the row last clicked (shown selected while the spots are current)
   std::string open_path_input_;

@@ -57,8 +57,8 @@ class ExerciseRoom {
   // (host_hand_over: a page's browser downloads it).
   void download_student_code();
 
-  // Per frame: the drafts kept (see the invariants); the Exercises tab and the Your code tab drawn; in a page (no editor
-  // of the student's own), whether the Exercises tab has just opened, so Your code opens beside it.
+  // Per frame: the drafts kept (see the invariants); the Exercises tab and the Your code tab drawn; in a page (no
+  // editor of the student's own), whether the Exercises tab has just opened, so Your code opens beside it.
   void keep_student_drafts();
   void draw_exercises_tab(UiProbe& probe);
   void draw_student_code_tab(UiProbe& probe);

@@ -207,8 +207,7 @@ ElementRef ViewRoom::pick(int x, int y) { return mesh_renderer_->pick(camera_, v
 bool ViewRoom::pick_is_cheap() {
   // The id buffer is stale after a camera move; redrawing it is slow for a large mesh on a software renderer.
   constexpr double kSlowIdPassMs = 30.0;
-  return mesh_renderer_->pick_is_cheap(camera_, viewport()) ||
-         mesh_renderer_->stats().last_id_pass_ms < kSlowIdPassMs;
+  return mesh_renderer_->pick_is_cheap(camera_, viewport()) || mesh_renderer_->stats().last_id_pass_ms < kSlowIdPassMs;
 }
 
 std::optional<ScreenPoint> ViewRoom::element_pixel(ElementRef element) const {

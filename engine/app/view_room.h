@@ -9,7 +9,8 @@
 //   view's top-left corner. GL objects are made by the constructor, in the window's context, and go with the room.
 // - A mesh too large to draw (past the GPU's buffer limits) is refused by the renderer once per mesh state: an Error
 //   and the status bar say so, the view stays empty, and frames do not retry until the mesh changes.
-// - A broken mesh (a Lua script's doing) can be drawn: nothing here walks it but the core's and renderer's bounded walks.
+// - A broken mesh (a Lua script's doing) can be drawn: nothing here walks it but the core's and renderer's bounded
+// walks.
 // - take_mesh, take_curve and take_patches switch what is on screen with steps that cannot fail (the end of opening a
 //   file or showing a lesson's mesh); show_lesson_mesh, show_curve and show_patches are whole or nothing, and throw
 //   what stopped them with the view unchanged.
@@ -106,7 +107,7 @@ class ViewRoom {
   void place(const ScreenRect& view, int framebuffer_width, int framebuffer_height);
   void draw(const ViewMarks& marks);
   void draw_curve_canvas_window();
-  void draw_labels(const LessonMarks& lesson);  // id_labels.cpp
+  void draw_labels(const LessonMarks& lesson);                                 // id_labels.cpp
   glm::vec4 background() const { return mesh_renderer_->style().background; }  // the theme's
   // The mouse position in view pixels, or nullopt outside the view; framebuffer pixels per window coordinate.
   std::optional<glm::ivec2> mouse_in_view() const;
@@ -133,7 +134,7 @@ class ViewRoom {
   const LabelPlacement& last_labels() const { return last_labels_; }
   const RenderStats& mesh_render_stats() const { return mesh_renderer_->stats(); }
   RenderStyle& mesh_render_style() { return mesh_renderer_->style(); }  // tests lower its buffer cap
-  void set_theme(Theme theme);  // the renderers' colours and the marks' palette
+  void set_theme(Theme theme);                                          // the renderers' colours and the marks' palette
 
   void set_edit_animation_policy(EditAnimationPolicy policy) { edit_animation_policy_ = policy; }
   bool edits_animate(bool setting) const;  // under the policy, with View > Animate edits at `setting`

@@ -74,14 +74,22 @@ struct TestResult {
   double seconds = 0.0;
 };
 
+// Tests a run left out because the student may not see them yet (GradeOptions::visible_only), by visibility.
+struct NotShown {
+  std::string visibility;  // hidden | after_due_date | after_published
+  size_t tests = 0;
+  double points = 0.0;  // base and extra-credit points together
+};
+
 struct GradeReport {
   std::string suite_name;
   std::vector<TestResult> tests;
-  std::string output;           // top-level text: the suite, the files found and whether they compile
-  double score = 0.0;           // base and extra credit together
-  double max_score = 0.0;       // the base points: a submission without the extra credit can reach 100%
-  double extra_points = 0.0;    // what the extra-credit tests can add on top
-  double execution_time = 0.0;  // seconds
+  std::vector<NotShown> not_shown;  // in the order hidden, after_due_date, after_published; only those with tests
+  std::string output;               // top-level text: the suite, the files found and whether they compile
+  double score = 0.0;               // base and extra credit together
+  double max_score = 0.0;           // the base points: a submission without the extra credit can reach 100%
+  double extra_points = 0.0;        // what the extra-credit tests can add on top
+  double execution_time = 0.0;      // seconds
 
   size_t passed() const;
   size_t failed() const { return tests.size() - passed(); }

@@ -22,6 +22,8 @@ constexpr size_t kFailuresShown = 8;
 
 double round_score(double x) { return std::round(x * 1e6) / 1e6; }
 
+std::string plural_points(double points) { return format_number(points) + (points == 1.0 ? " point" : " points"); }
+
 RunEnd end_from_name(const std::string& name) {
   for (RunEnd e :
        {RunEnd::Completed, RunEnd::Error, RunEnd::LoadError, RunEnd::Timeout, RunEnd::Memory, RunEnd::Crash}) {
@@ -89,6 +91,30 @@ TestRun decode_test_run(const std::string& text) {
     throw GradeError(std::string("malformed test report: ") + e.what());
   }
   return run;
+}
+
+std::vector<std::string> suite_warnings(const Suite& suite) {
+  std::vector<std::string> warnings;
+  for (const TestSpec& spec : suite.tests()) {
+    if (spec.visibility != "hidden" || spec.points <= 0.0) continue;
+    warnings.push_back("test " + spec.number + " (" + spec.name + ") is hidden and worth " +
+                       plural_points(spec.points) +
+                       ": on Gradescope a hidden test hides the student's total score too; give it visibility "
+                       "after_due_date or after_published (hidden is for tests worth 0 points)");
+  }
+  return warnings;
+}
+
+std::string not_shown_sentence(const std::vector<NotShown>& not_shown) {
+  std::string sentence;
+  for (const NotShown& left_out : not_shown) {
+    const char* when = left_out.visibility == "after_due_date"    ? "shown after the due date"
+                       : left_out.visibility == "after_published" ? "shown once grades are published"
+                                                                  : "never shown to students";
+    sentence += std::string(sentence.empty() ? "" : "; ") + plural(left_out.tests, "more test", "more tests") + ", " +
+                plural_points(left_out.points) + ", " + when;
+  }
+  return sentence.empty() ? sentence : "Not run here: " + sentence + ".";
 }
 
 TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) {
@@ -177,9 +203,18 @@ GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions
   for (const auto& note : submission.notes()) top << "Note: " << note << ".\n";
 
   std::string filter_note;
+  std::vector<NotShown> not_shown = {{"hidden"}, {"after_due_date"}, {"after_published"}};
   for (size_t i = 0; i < suite.tests().size(); ++i) {
     if (options.time_limit_cap > 0) suite.cap_time_limit(i, options.time_limit_cap);
     const TestSpec& spec = suite.tests()[i];
+    if (options.visible_only && spec.visibility != "visible") {
+      for (NotShown& left_out : not_shown) {
+        if (left_out.visibility != spec.visibility) continue;
+        ++left_out.tests;
+        left_out.points += spec.points;
+      }
+      continue;
+    }
     ChildLimits limits;
     limits.wall_seconds = spec.time_limit + options.kill_grace_seconds;
     limits.memory_bytes = options.child_memory_bytes + (spec.memory_mb << 20);
@@ -220,6 +255,9 @@ GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions
         << report.extra_points << (report.extra_points == 1.0 ? " point" : " points") << " on top of the "
         << report.max_score << " base points.\n";
   }
+  std::erase_if(not_shown, [](const NotShown& left_out) { return left_out.tests == 0; });
+  report.not_shown = std::move(not_shown);
+  if (const std::string sentence = not_shown_sentence(report.not_shown); !sentence.empty()) top << sentence << "\n";
   report.output = top.str() + filter_note;
   report.execution_time = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   return report;

@@ -15,7 +15,8 @@
 //   score. So a submission without the extra credit can reach 100% of max_score, and one with it goes above.
 // - A test that timed out or ran out of memory, loading one exercise's file, says what the window says of such a
 //   run (unfinished_run_hint in exercises.h: "upsample did not finish: split only the edges of the original mesh").
-// - The report lists the files the suite names that the submission lacks, and the submission's notes.
+// - The report lists the files the suite names that the submission lacks, and the submission's notes; a visible-only
+//   run says how many tests and points it left out and when the student will see them.
 #pragma once
 
 #include <functional>
@@ -33,9 +34,20 @@ struct GradeOptions {
   size_t child_memory_bytes = size_t(2) << 30;
   bool filter_syscalls = true;
   std::function<void(const TestResult&)> on_test;  // called after each test (progress)
+  // Only the tests the student sees before the due date (visibility "visible"): a student's own check before
+  // handing in. The others are counted in the report's not_shown, and its totals are the visible tests'.
+  bool visible_only = false;
 };
 
 GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions& options = {});
+
+// What an instructor should hear about a suite before it grades: each test worth points that is "hidden", which on
+// Gradescope hides the student's total score as well (its spec); after_due_date or after_published show the total.
+std::vector<std::string> suite_warnings(const Suite& suite);
+
+// "4 more tests, 9 points, shown after the due date": the tests a visible-only run left out, one sentence per
+// visibility ("" when none was left out).
+std::string not_shown_sentence(const std::vector<NotShown>& not_shown);
 
 // The scoring rules above, for one test.
 TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds);

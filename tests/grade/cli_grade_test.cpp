@@ -62,10 +62,45 @@ TEST(CliGrade, GradesASubmissionAndWritesResults) {
   const auto results = nlohmann::json::parse(read_text(dir / "results.json"));  // the default path
   EXPECT_EQ(results.at("score"), 10.0);
   EXPECT_EQ(results.at("tests").size(), 5u);
-  EXPECT_EQ(results["tests"][4]["visibility"], "hidden");
+  EXPECT_EQ(results["tests"][4]["visibility"], "after_published");
   const std::string junit = read_text(dir / "junit.xml");
   EXPECT_NE(junit.find("<testsuites name=\"flip_edge\" tests=\"5\" failures=\"0\" errors=\"0\""), std::string::npos)
       << junit;
+}
+
+// --visible-only: a student's check before handing in runs the tests they see now and says what it left out.
+TEST(CliGrade, AVisibleOnlyRunIsTheStudentsCheck) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir, "alice", grading_dir() / "students" / "flip_correct.lua");
+  const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submission alice --visible-only");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.out.find("Not run here: 1 more test, 2 points, shown after the due date; 1 more test, 2 points, shown "
+                       "once grades are published.\n"),
+            std::string::npos)
+      << o.out;
+  EXPECT_TRUE(ends_with(o.out, "\nScore: 6 / 6\n3 passed, 0 failed\n")) << o.out;
+  const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
+  EXPECT_EQ(results.at("tests").size(), 3u);
+  EXPECT_EQ(results["tests"][2]["number"], "4.3");
+  const Outcome many =
+      run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") + " --submissions alice --visible-only");
+  EXPECT_EQ(many.status, 2);
+  EXPECT_NE(many.err.find("--visible-only is a student's check of one --submission"), std::string::npos) << many.err;
+}
+
+// A suite hiding a test worth points is graded, with a warning for the instructor on stderr.
+TEST(CliGrade, ASuiteThatHidesPointsIsWarnedAbout) {
+  const fs::path dir = testing::scratch_dir();
+  submission(dir, "alice", grading_dir() / "students" / "flip_correct.lua");
+  write_text(dir / "secret.lua",
+             "suite{ name = 'secret', files = {'flip.lua'} }\n"
+             "test{ number = '9.1', name = 'sealed', points = 3, visibility = 'hidden', run = function() end }\n");
+  const Outcome o = run_meshedit(dir, "grade --suite secret.lua --submission alice");
+  EXPECT_EQ(o.status, 0) << o.err;
+  EXPECT_NE(o.err.find("meshedit grade: warning: secret.lua: test 9.1 (sealed) is hidden and worth 3 points"),
+            std::string::npos)
+      << o.err;
+  EXPECT_TRUE(ends_with(o.out, "1 passed, 0 failed\n")) << o.out;
 }
 
 TEST(CliGrade, AFailingSubmissionIsStillAGradingThatWorked) {

@@ -248,5 +248,66 @@ TEST(Grade, EachTestRunsInItsOwnChildAndTheReportAddsUp) {
   EXPECT_EQ(fixed.max_score, 4.0);
 }
 
+// A student's check runs the tests they can see now, and says what it left out and when it will be shown; the totals
+// are the visible tests'.
+TEST(Grade, AVisibleOnlyRunLeavesOutTheTestsStudentsCannotSeeYet) {
+  auto suite = testing::suite_of(
+      "suite{ name = 'demo', files = {'a.lua'}, time_limit = 1 }\n"
+      "test{ name = 'seen', points = 2, run = function(s, expect) expect.equal(s.add(2, 2), 4) end }\n"
+      "test{ name = 'after due', points = 3, visibility = 'after_due_date', run = function() end }\n"
+      "test{ name = 'after due too', points = 1, visibility = 'after_due_date', run = function() end }\n"
+      "test{ name = 'published', points = 1, visibility = 'after_published', run = function() end }\n"
+      "test{ name = 'never', points = 0, visibility = 'hidden', run = function() end }\n");
+  const Submission submission = testing::submission_of({{"a.lua", "function add(x, y) return x + y end"}});
+  GradeOptions options = testing::quick_options();
+  options.visible_only = true;
+  const GradeReport report = grade(*suite, submission, options);
+  ASSERT_EQ(report.tests.size(), 1u);
+  EXPECT_EQ(report.tests[0].name, "seen");
+  EXPECT_EQ(report.score, 2.0);
+  EXPECT_EQ(report.max_score, 2.0);
+  ASSERT_EQ(report.not_shown.size(), 3u);
+  EXPECT_EQ(report.not_shown[0].visibility, "hidden");
+  EXPECT_EQ(report.not_shown[1].visibility, "after_due_date");
+  EXPECT_EQ(report.not_shown[1].tests, 2u);
+  EXPECT_EQ(report.not_shown[1].points, 4.0);
+  EXPECT_EQ(report.not_shown[2].tests, 1u);
+  EXPECT_EQ(report.output,
+            "Suite demo: 5 tests.\nFiles submitted: a.lua.\nNot run here: 1 more test, 0 points, never shown to "
+            "students; 2 more tests, 4 points, shown after the due date; 1 more test, 1 point, shown once grades are "
+            "published.\n");
+  // The full run runs all five and leaves nothing out.
+  const GradeReport full = grade(*suite, submission, testing::quick_options());
+  EXPECT_EQ(full.tests.size(), 5u);
+  EXPECT_TRUE(full.not_shown.empty());
+  EXPECT_EQ(full.max_score, 7.0);
+  EXPECT_EQ(not_shown_sentence(full.not_shown), "");
+}
+
+// A hidden test worth points hides the student's total on Gradescope: the instructor hears of each one.
+TEST(Grade, HiddenTestsWorthPointsAreWarnedAbout) {
+  auto suite = testing::suite_of(
+      "suite{ name = 'demo', files = {'a.lua'} }\n"
+      "test{ number = '1.1', name = 'secret', points = 2, visibility = 'hidden', run = function() end }\n"
+      "test{ number = '1.2', name = 'free', points = 0, visibility = 'hidden', run = function() end }\n"
+      "test{ number = '1.3', name = 'later', points = 1, visibility = 'after_published', run = function() end }\n");
+  EXPECT_EQ(suite_warnings(*suite),
+            std::vector<std::string>{"test 1.1 (secret) is hidden and worth 2 points: on Gradescope a hidden test "
+                                     "hides the student's total score too; give it visibility after_due_date or "
+                                     "after_published (hidden is for tests worth 0 points)"});
+}
+
+// The shipped suites hide no points, so students always see their total.
+TEST(Grade, TheShippedSuitesHideNoPoints) {
+  for (const char* name :
+       {"all.lua", "curve.lua", "patch.lua", "normals.lua", "flip.lua", "split.lua", "upsample.lua"}) {
+    const auto suite = Suite::load(testing::grading_dir() / "suites" / name);
+    EXPECT_EQ(suite_warnings(*suite), std::vector<std::string>{}) << name;
+    size_t visible = 0;
+    for (const TestSpec& spec : suite->tests()) visible += spec.visibility == "visible" ? 1 : 0;
+    EXPECT_GT(visible, 0u) << name << ": a student's check would run nothing";
+  }
+}
+
 }  // namespace
 }  // namespace meshedit

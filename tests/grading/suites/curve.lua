@@ -47,7 +47,7 @@ test{ number = "1.3", name = "a single point gives an empty list", points = 1, v
   end }
 
 test{ number = "1.4", name = "repeated steps reach the curve point (3D curves)", points = 2, partial = true,
-  visibility = "hidden",
+  visibility = "after_published",
   run = function(student, expect)
     for c, points in ipairs(random_curves) do
       for _, t in ipairs({0.1, 0.5, 0.77}) do
@@ -62,7 +62,8 @@ test{ number = "1.4", name = "repeated steps reach the curve point (3D curves)",
     end
   end }
 
-test{ number = "1.5", name = "t outside [0, 1] extrapolates along the same lines", points = 1, visibility = "hidden",
+test{ number = "1.5", name = "t outside [0, 1] extrapolates along the same lines", points = 1,
+  visibility = "after_published",
   run = function(student, expect)
     for _, t in ipairs({-0.5, 1.5}) do
       check_step(student, expect, cubic, t, "evaluate_step(cubic, " .. t .. ")")

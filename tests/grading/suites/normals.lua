@@ -45,5 +45,5 @@ test{ number = "3.3", name = "the mesh is not changed", points = 1,
 test{ number = "3.4", name = "boundary vertices skip the boundary loop", points = 1, visibility = "after_due_date",
   run = function(student, expect) check_all(student, expect, fan, "the fan (with a boundary)") end }
 
-test{ number = "3.5", name = "a bumpy icosahedron", points = 2, partial = true, visibility = "hidden",
+test{ number = "3.5", name = "a bumpy icosahedron", points = 2, partial = true, visibility = "after_published",
   run = function(student, expect) check_all(student, expect, bumpy, "bumpy icosahedron") end }

@@ -39,7 +39,8 @@ test{ number = "2.2", name = "points inside a bent sheet", points = 3, partial =
     end
   end }
 
-test{ number = "2.3", name = "random patches at 25 parameter pairs", points = 2, partial = true, visibility = "hidden",
+test{ number = "2.3", name = "random patches at 25 parameter pairs", points = 2, partial = true,
+  visibility = "after_published",
   run = function(student, expect)
     for k, patch in ipairs(random_patches) do
       for i = 0, 4 do

@@ -45,10 +45,11 @@ test{ number = "6.3", name = "an icosahedron, two levels", points = 2, visibilit
   run = function(student, expect) check(student, expect, meshedit.icosahedron(), 2, "icosahedron") end }
 
 test{ number = "6.4", name = "a grid with a boundary, one level", points = 1, extra_credit = true,
-  visibility = "hidden",
+  visibility = "after_published",
   run = function(student, expect) check(student, expect, meshedit.grid(2, 2), 1, "2x2 grid", true) end }
 
-test{ number = "6.5", name = "an irregular mesh (vertices of degree 3 to 6)", points = 2, visibility = "hidden",
+test{ number = "6.5", name = "an irregular mesh (vertices of degree 3 to 6)", points = 2,
+  visibility = "after_published",
   run = function(student, expect)
     local mesh = meshedit.from_polygons(
       {vec3(0, 0, 1), vec3(1, 0, 0), vec3(0, 1, 0), vec3(-1, 0, 0), vec3(0, -1, 0), vec3(0, 0, -1),
