@@ -167,7 +167,10 @@ int expect_exercise(lua_State* L) {
   const ExerciseReport report = compare(*exercise, input, std::move(mine), run_reference(*exercise, input));
   const std::string detail =
       report.equal ? "same as the reference" : first_items(report.differences, report.total_differences);
-  lua_pushboolean(L, recorder.record(report.equal, join_message(message, detail)));
+  // The headline: what was checked and the first difference, the likely mistake (the Markdown folds the rest).
+  const size_t headline =
+      report.equal || report.differences.empty() ? 0 : join_message(message, report.differences.front()).size();
+  lua_pushboolean(L, recorder.record(report.equal, join_message(message, detail), headline));
   return 1;
 }
 

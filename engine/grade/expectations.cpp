@@ -96,8 +96,8 @@ std::string first_items(const std::vector<std::string>& items, size_t total) {
   return out;
 }
 
-bool TestRecorder::record(bool passed, std::string message) {
-  run_.checks.push_back({passed, std::move(message)});
+bool TestRecorder::record(bool passed, std::string message, size_t headline) {
+  run_.checks.push_back({passed, std::move(message), headline});
   return passed;
 }
 

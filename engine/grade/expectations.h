@@ -44,7 +44,8 @@ namespace meshedit {
 class TestRecorder {
  public:
   explicit TestRecorder(TestRun& run) : run_(run) {}
-  bool record(bool passed, std::string message);
+  // A check: passed or not, what it checked and found, and how much of that is the headline (CheckResult).
+  bool record(bool passed, std::string message, size_t headline = 0);
   void set_fraction(double fraction) { run_.fraction = fraction; }
   TestRun& run() { return run_; }
 

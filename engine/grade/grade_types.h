@@ -29,6 +29,9 @@ const char* run_end_name(RunEnd end);  // "completed", "error", "load error", "t
 struct CheckResult {
   bool passed = false;
   std::string message;  // what was checked, and for a failure what was wrong
+  // How much of `message` is its headline: what was checked and the first difference, the likely mistake (the
+  // Markdown feedback folds the rest). 0: all of it.
+  size_t headline = 0;
 };
 
 // What one test run found.
@@ -69,8 +72,9 @@ struct TestResult {
   double extra_points = 0.0;  // what an extra-credit test can add (0 for the others)
   bool passed = false;
   RunEnd end = RunEnd::Completed;
-  std::string failure;  // the first problem in one line ("" when passed), for JUnit/TAP messages
-  std::string output;   // the full text shown to the student
+  std::string failure;          // the first problem in one line ("" when passed), for JUnit/TAP messages
+  std::string output;           // the full text shown to the student
+  std::string output_markdown;  // the same as Markdown (test_feedback.h), for results.json
   double seconds = 0.0;
 };
 

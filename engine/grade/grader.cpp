@@ -14,6 +14,7 @@
 #include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "grade/child_process.h"
+#include "grade/test_feedback.h"
 
 namespace meshedit {
 namespace {
@@ -66,7 +67,9 @@ size_t GradeReport::passed() const {
 std::string encode_test_run(const TestRun& run) {
   nlohmann::json j;
   j["checks"] = nlohmann::json::array();
-  for (const auto& c : run.checks) j["checks"].push_back({{"passed", c.passed}, {"message", c.message}});
+  for (const auto& c : run.checks) {
+    j["checks"].push_back({{"passed", c.passed}, {"message", c.message}, {"headline", c.headline}});
+  }
   if (run.fraction) j["fraction"] = *run.fraction;
   j["end"] = run_end_name(run.end);
   j["error"] = run.error;
@@ -81,7 +84,8 @@ TestRun decode_test_run(const std::string& text) {
   try {
     const nlohmann::json j = nlohmann::json::parse(text);
     for (const auto& c : j.at("checks"))
-      run.checks.push_back({c.at("passed").get<bool>(), c.at("message").get<std::string>()});
+      run.checks.push_back(
+          {c.at("passed").get<bool>(), c.at("message").get<std::string>(), c.at("headline").get<size_t>()});
     if (j.contains("fraction")) run.fraction = j.at("fraction").get<double>();
     run.end = end_from_name(j.at("end").get<std::string>());
     run.error = j.at("error").get<std::string>();
@@ -148,43 +152,41 @@ TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds) 
   r.score = round_score(spec.points * fraction);
   r.passed = !stopped && failed == 0 && r.score >= spec.points;
 
-  std::ostringstream out;
+  TestFeedback feedback;
   if (stopped) {
-    out << (run.end == RunEnd::Timeout     ? "Timed out: "
-            : run.end == RunEnd::Memory    ? "Out of memory: "
-            : run.end == RunEnd::Crash     ? "Crashed: "
-            : run.end == RunEnd::LoadError ? "Load error: "
-                                           : "Error: ")
-        << run.error << "\n";
-    if (run.end == RunEnd::Timeout || run.end == RunEnd::Memory) {
-      if (const std::string hint = unfinished_hint(spec); !hint.empty()) out << hint << "\n";
-    }
+    feedback.stopped = std::string(run.end == RunEnd::Timeout     ? "Timed out: "
+                                   : run.end == RunEnd::Memory    ? "Out of memory: "
+                                   : run.end == RunEnd::Crash     ? "Crashed: "
+                                   : run.end == RunEnd::LoadError ? "Load error: "
+                                                                  : "Error: ") +
+                       run.error;
+    if (run.end == RunEnd::Timeout || run.end == RunEnd::Memory) feedback.hint = unfinished_hint(spec);
     if (r.failure.empty()) r.failure = run.error;
   }
   // The first failures say enough; a loop over 40 elements should not print 40 near-identical lines.
-  size_t shown = 0;
   for (const auto& c : run.checks) {
     if (c.passed) continue;
-    if (shown++ < kFailuresShown) out << "FAILED: " << c.message << "\n";
+    if (feedback.failures.size() < kFailuresShown) feedback.failures.push_back(c);
+    else ++feedback.more_failures;
     if (r.failure.empty()) r.failure = c.message;
   }
-  if (shown > kFailuresShown)
-    out << "... and " << plural(shown - kFailuresShown, "more failed check", "more failed checks") << "\n";
   if (r.passed) {
-    out << (run.checks.empty() ? std::string("Passed.") : "Passed: " + plural(passed, "check", "checks") + ".") << "\n";
+    feedback.tally = run.checks.empty() ? std::string("Passed.") : "Passed: " + plural(passed, "check", "checks") + ".";
   } else if (!run.checks.empty()) {
-    out << plural(passed, "check", "checks") << " of " << run.checks.size() << " passed.\n";
+    feedback.tally = plural(passed, "check", "checks") + " of " + std::to_string(run.checks.size()) + " passed.";
   }
   if (spec.extra_credit) {
-    out << "Extra credit: " << round_score(r.score) << " of " << spec.points
-        << (spec.points == 1.0 ? " point" : " points") << ", added on top of the base score.\n";
+    feedback.extra_credit = "Extra credit: " + format_rounded(round_score(r.score)) + " of " +
+                            format_rounded(spec.points) + (spec.points == 1.0 ? " point" : " points") +
+                            ", added on top of the base score.";
   }
   if (!run.output.empty()) {
-    out << "\nYour code printed:\n" << run.output;
-    if (run.output_truncated && run.output.back() != '\n') out << "\n";
+    feedback.printed = run.output;
+    if (run.output_truncated && run.output.back() != '\n') feedback.printed += "\n";
   }
   if (r.failure.empty() && !r.passed) r.failure = "score below the maximum";
-  r.output = out.str();
+  r.output = feedback_text(feedback);
+  r.output_markdown = feedback_markdown(feedback);
   return r;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/value_format.h"
 #include "grade/submission.h"
+#include "grade/test_feedback.h"
 
 namespace meshedit {
 namespace {
@@ -65,9 +66,9 @@ std::string gradescope_json(const GradeReport& report) {
   j["score"] = report.score;
   j["max_score"] = report.max_score;
   j["execution_time"] = static_cast<long>(std::ceil(report.execution_time));
-  j["output"] = report.output;
-  j["output_format"] = "text";
-  j["test_output_format"] = "text";
+  j["output"] = markdown_paragraphs(report.output);
+  j["output_format"] = "md";
+  j["test_output_format"] = "md";
   j["visibility"] = "visible";
   j["stdout_visibility"] = "hidden";
   j["extra_data"] = {{"grader", "meshedit grade"}, {"suite", report.suite_name}};
@@ -78,7 +79,7 @@ std::string gradescope_json(const GradeReport& report) {
                  {"score", t.score},
                  {"max_score", t.max_score},
                  {"status", t.passed ? "passed" : "failed"},
-                 {"output", t.output},
+                 {"output", t.output_markdown},
                  {"visibility", t.visibility}};
     if (!t.tags.empty()) test["tags"] = t.tags;
     j["tests"].push_back(std::move(test));

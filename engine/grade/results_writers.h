@@ -7,7 +7,7 @@
 //   number, name, score, max_score, status ("passed" / "failed"), output, visibility (and tags when set).
 //   Extra credit follows Gradescope's convention of a test with max_score 0 whose score adds: its name ends in
 //   "(extra credit)" and its tags hold "extra credit"; the top-level score includes it, the top-level max_score
-//   is the base points only.
+//   is the base points only. The texts are Markdown (output_format and test_output_format "md": test_feedback.h).
 //   The text is valid UTF-8 whatever the student printed (invalid bytes are replaced).
 // - JUnit has no score field: each test case carries properties score and max_score; failed checks are
 //   <failure>, errors, timeouts and crashes <error>.

@@ -145,8 +145,14 @@ TEST(CliGrade, ResultsAreWrittenWhenTheSubmissionDoesNotLoadHangsOrRunsOutOfMemo
     ASSERT_EQ(results.at("tests").size(), 2u);
     for (const auto& t : results.at("tests")) {
       EXPECT_EQ(t.at("status"), "failed");
+      // The Markdown feedback: the label in bold, then the grader's words.
+      const auto markdown = [](const std::string& message) {
+        const size_t colon = message.find(": ");
+        return "**" + message.substr(0, colon + 1) + "** " + message.substr(colon + 2);
+      };
       const std::string output = t.at("output").get<std::string>();
-      EXPECT_TRUE(output.rfind(c.message, 0) == 0 || (c.also_ok && output.rfind(c.also_ok, 0) == 0)) << output;
+      EXPECT_TRUE(output.rfind(markdown(c.message), 0) == 0 || (c.also_ok && output.rfind(markdown(c.also_ok), 0) == 0))
+          << output;
     }
   }
   // An empty submission: every test says which file is missing.
@@ -155,7 +161,8 @@ TEST(CliGrade, ResultsAreWrittenWhenTheSubmissionDoesNotLoadHangsOrRunsOutOfMemo
   const Outcome o = run_meshedit(dir, "grade " + suite_arg("broken/broken_suite.lua") + " --submission empty");
   EXPECT_EQ(o.status, 0) << o.err;
   const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
-  EXPECT_EQ(results["tests"][0]["output"], "Load error: the submission did not load: the submission has no flip.lua\n");
+  EXPECT_EQ(results["tests"][0]["output"],
+            "**Load error:** the submission did not load: the submission has no flip.lua\n");
   EXPECT_NE(results.at("output").get<std::string>().find("Missing: flip.lua"), std::string::npos);
 }
 
@@ -167,7 +174,7 @@ TEST(CliGrade, AHostileFileCannotWriteTheResults) {
   EXPECT_EQ(o.status, 0) << o.err;
   const auto results = nlohmann::json::parse(read_text(dir / "results.json"));
   EXPECT_EQ(results.at("score"), 3.0);
-  EXPECT_EQ(results["tests"][1]["output"], "Error: split.lua:3: attempt to index a nil value (global 'io')\n");
+  EXPECT_EQ(results["tests"][1]["output"], "**Error:** split.lua:3: attempt to index a nil value (global 'io')\n");
 }
 
 TEST(CliGrade, ExitStatusSaysWhetherGradingWorked) {

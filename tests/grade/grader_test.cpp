@@ -156,6 +156,8 @@ TEST(Results, GradescopeJsonHasTheSpecsFieldsOnly) {
   EXPECT_TRUE(j.at("execution_time").is_number_integer());
   EXPECT_EQ(j.at("execution_time"), 3);
   EXPECT_EQ(j.at("output"), "Suite flip: 3 tests.\n");
+  EXPECT_EQ(j.at("output_format"), "md");
+  EXPECT_EQ(j.at("test_output_format"), "md");
   EXPECT_EQ(j.at("visibility"), "visible");
   EXPECT_EQ(j.at("stdout_visibility"), "hidden");
   const std::set<std::string> test_keys = {"score",  "max_score",     "status", "name",       "name_format", "number",
@@ -176,7 +178,7 @@ TEST(Results, GradescopeJsonHasTheSpecsFieldsOnly) {
   EXPECT_EQ(j["tests"][1]["visibility"], "hidden");
   EXPECT_EQ(j["tests"][1]["status"], "failed");
   EXPECT_FALSE(j["tests"][1].contains("tags"));
-  EXPECT_EQ(j["tests"][2]["output"], "Crashed: killed by signal 9\n");
+  EXPECT_EQ(j["tests"][2]["output"], "**Crashed:** killed by signal 9\n");
 }
 
 TEST(Results, JunitTapAndText) {
