@@ -3,8 +3,8 @@
 //   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap] [--visible-only]
 //   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]
 //
-// --visible-only runs only the tests a student sees before the due date (a student's check before handing in, the
-// window's Check my work); the report says how many tests and points it left out and when they will be shown.
+// --visible-only runs only the tests a student sees before the due date (a student's check before handing in); the
+// report says how many tests and points it left out and when they will be shown.
 // Before grading, each test worth points that the suite hides from students is a warning on stderr (Gradescope
 // then hides the student's total too).
 // One submission: prints the readable report (or, with --tap, only TAP) on `out`, ending with

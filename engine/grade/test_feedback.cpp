@@ -85,7 +85,8 @@ std::string feedback_text(const TestFeedback& f) {
   if (!f.stopped.empty()) out << f.stopped << "\n";
   if (!f.hint.empty()) out << f.hint << "\n";
   for (const CheckResult& check : f.failures) out << "FAILED: " << check.message << "\n";
-  if (f.more_failures > 0) out << "... and " << plural(f.more_failures, "more failed check", "more failed checks") << "\n";
+  if (f.more_failures > 0)
+    out << "... and " << plural(f.more_failures, "more failed check", "more failed checks") << "\n";
   if (!f.tally.empty()) out << f.tally << "\n";
   if (!f.extra_credit.empty()) out << f.extra_credit << "\n";
   if (!f.printed.empty()) out << "\nYour code printed:\n" << f.printed;

@@ -7,7 +7,8 @@
 // - The Markdown puts each failed check's headline (its context and first difference, the likely mistake: the
 //   diagnosis the window gives) first and folds the further differences below it (<details>); element ids and their
 //   fields (h12, v3.halfedge) and what a message quotes in backticks are code; everything else is escaped, so
-//   nothing a message or a student prints turns into Markdown or HTML. What the student's code printed is a fenced block longer than any run of backticks in it.
+//   nothing a message or a student prints turns into Markdown or HTML. What the student's code printed is a fenced
+//   block longer than any run of backticks in it.
 #pragma once
 
 #include <cstddef>

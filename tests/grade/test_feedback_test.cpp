@@ -69,9 +69,10 @@ TEST(TestFeedback, ScoringWritesBothForms) {
   EXPECT_EQ(r.output,
             "FAILED: flip_edge(e0): v0.halfedge is h0, but h0 leaves v6\n1 check of 2 passed.\n\nYour code printed:\n"
             "hello\n");
-  EXPECT_EQ(r.output_markdown,
-            "**Failed:**\n\n- flip\\_edge(`e0`): `v0.halfedge` is `h0`, but `h0` leaves `v6`\n\n1 check of 2 passed.\n\n"
-            "Your code printed:\n\n```text\nhello\n```\n");
+  EXPECT_EQ(
+      r.output_markdown,
+      "**Failed:**\n\n- flip\\_edge(`e0`): `v0.halfedge` is `h0`, but `h0` leaves `v6`\n\n1 check of 2 passed.\n\n"
+      "Your code printed:\n\n```text\nhello\n```\n");
 }
 
 TEST(TestFeedback, TopLevelTextBecomesParagraphs) {
