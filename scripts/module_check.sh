@@ -10,7 +10,6 @@ declare -A needs
 while read -r module list; do
   needs[$module]="$list"
 done < <(sed -n 's/^ *set(meshedit_needs_\([a-z]*\) \(.*\))$/\1 \2/p' CMakeLists.txt)
-needs[app]+=" grade"  # the native app's grade commands (appended to meshedit_needs_app outside the web build)
 
 status=0
 for folder in engine/*/; do

@@ -7,6 +7,7 @@
 
 #include <algorithm>
 #include <cctype>
+#include <filesystem>
 #include <iterator>
 #include <optional>
 #include <stdexcept>
@@ -481,6 +482,29 @@ std::string expect_gpu_update(EditorApp& app, const Action& a) {
   return got == a.args[0] ? "" : "the last update was a " + got + why;
 }
 
+// ---- Check my work ----------------------------------------------------------------------------------------------
+
+std::string check_suite(EditorApp& app, const Action& a) {
+  app.check_room().set_suite(std::filesystem::absolute(a.args[0]));
+  return "";
+}
+
+std::string expect_check(EditorApp& app, const Action& a) {
+  return expect_contains(a.words(), app.check_room().text(), "the Check tab says");
+}
+
+std::string check_open(EditorApp& app, const Action& a) {
+  const std::optional<size_t> row = app.check_room().row_of(a.args[0]);
+  if (!row) throw std::runtime_error("the Check tab has no test " + a.args[0]);
+  return app.open_failing_case(*row).reason;
+}
+
+std::string check_stop(EditorApp& app, const Action&) {
+  if (!app.check_room().running()) return "no check is running";
+  app.check_room().stop();
+  return "";
+}
+
 // ---- the table -------------------------------------------------------------------------------------------------
 
 // Every verb, its words after it, what it does, and its handler; the usage texts are the verbs' documentation.
@@ -568,6 +592,14 @@ const ActionVerb kVerbs[] = {
     {"replay-start", 0, "replay-start   starts the replay of the last run's writes", replay_start},
     {"replay-step", 1, "replay-step K   the replay at write K", replay_step},
     {"replay-finish", 0, "replay-finish   ends the replay", replay_finish},
+    {"check-suite", 1, "check-suite FILE   the suite Check my work runs, as the window's --suite gives it",
+     check_suite},
+    {"expect-check", -1,
+     "expect-check TEXT...   the Check tab (File > Check my work) shows TEXT: its total, a test's row or the "
+     "grader's words for it",
+     expect_check},
+    {"check-open", 1, "check-open 4.1   the Check tab's \"Open in Exercises\" of test 4.1", check_open},
+    {"check-stop", 0, "check-stop   the Check tab's Stop; fails when no check runs", check_stop},
     {"editor-open", 0, "editor-open   View > Your code: the active exercise's student file in the editor tab",
      editor_open},
     {"editor-set-line", -1,

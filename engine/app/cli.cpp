@@ -30,7 +30,10 @@ struct CliCommand {
 
 // Every command, in the order --help lists them.
 const CliCommand kCommands[] = {
-    {"", run_window, "[FILE] [--actions SCRIPT] [--size WxH]  the window (a mesh, a .bez patch set or a .bzc curve)"},
+    {"", run_window,
+     "[FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua]\n"
+     "                                     the window (a mesh, a .bez patch set or a .bzc curve); --suite: the\n"
+     "                                     suite File > Check my work runs"},
     {"demo", run_demo,
      "demo [FILE]                          load a mesh (default: the teapot) and show what the core does"},
     {"info", run_info,
@@ -54,6 +57,7 @@ const CliCommand kCommands[] = {
     {"run", run_run, "run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)"},
     {"grade", run_grade,
      "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
+     "      [--report FILE] [--progress]\n"
      "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions"},
     {"lesson", run_lesson,
      "lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"

@@ -1,10 +1,13 @@
 // `meshedit grade`: grades Lua submissions with an instructor's suite.
 //
 //   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap] [--visible-only]
+//                  [--report FILE] [--progress]
 //   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]
 //
 // --visible-only runs only the tests a student sees before the due date (a student's check before handing in); the
-// report says how many tests and points it left out and when they will be shown.
+// report says how many tests and points it left out and when they will be shown. --report writes the whole report as
+// MeshEdit's JSON (grade/report_json.h: each test's text and failing case), what the window's Check my work reads;
+// --progress prints "meshedit grade: test 3 of 14 running: NAME" on stderr before each test and "... done: NAME" after.
 // Before grading, each test worth points that the suite hides from students is a warning on stderr (Gradescope
 // then hides the student's total too).
 // One submission: prints the readable report (or, with --tap, only TAP) on `out`, ending with
@@ -20,11 +23,13 @@
 #include "app/cli_commands.h"
 
 #include <iostream>
+#include <memory>
 
 #include "core/parallel_for.h"
 #include "core/value_format.h"
 #include "grade/class_grading.h"
 #include "grade/grader.h"
+#include "grade/report_json.h"
 #include "grade/results_writers.h"
 #include "grade/submission.h"
 #include "grade/suite.h"
@@ -50,8 +55,20 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
   const std::string results = take_option(args, "--results").value_or("results.json");
   const auto junit = take_option(args, "--junit");
   const bool tap = take_flag(args, "--tap");
+  const auto report_file = take_option(args, "--report");
   GradeOptions options;
   options.visible_only = take_flag(args, "--visible-only");
+  if (take_flag(args, "--progress")) {
+    size_t total = 0;
+    for (const TestSpec& spec : suite.tests()) total += !options.visible_only || spec.visibility == "visible" ? 1 : 0;
+    auto done = std::make_shared<size_t>(0);
+    options.on_test_start = [total, done](const TestSpec& spec) {
+      std::cerr << "meshedit grade: test " << *done + 1 << " of " << total << " running: " << spec.name << std::endl;
+    };
+    options.on_test = [total, done](const TestResult& result) {
+      std::cerr << "meshedit grade: test " << ++*done << " of " << total << " done: " << result.name << std::endl;
+    };
+  }
   reject_unknown_options(args);
   if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
   const Submission submission = Submission::read(folder);
@@ -59,6 +76,7 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
   const GradeReport report = grade(suite, submission, options);
   write_file_atomically(results, gradescope_json(report));
   if (junit) write_file_atomically(*junit, junit_xml(report));
+  if (report_file) write_file_atomically(*report_file, encode_grade_report(report));
   out << (tap ? tap_text(report) : text_report(report));
   out.flush();
   return 0;
@@ -71,7 +89,7 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
   if (const auto text = take_option(args, "--jobs")) jobs = parse_count(*text, "--jobs", 256);
   if (jobs < 1) throw UsageError("--jobs must be at least 1");
   if (take_flag(args, "--visible-only")) throw UsageError("--visible-only is a student's check of one --submission");
-  for (const char* single : {"--results", "--junit", "--tap"}) {
+  for (const char* single : {"--results", "--junit", "--tap", "--report", "--progress"}) {
     for (const auto& a : args) {
       if (a == single) throw UsageError(std::string(single) + " is for one --submission; a class gets --out");
     }

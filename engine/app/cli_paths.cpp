@@ -26,8 +26,9 @@ int run_paths(const std::vector<std::string>& args, std::ostream& out) {
       {"scripts/student", default_student_folder()},
       {"scripts/exercises", default_exercise_folder()},
       {"fonts", font_folder()},
+      {"tests/grading/suites", data_folder("tests/grading/suites")},
   };
-  for (const auto& [name, folder] : folders) out << std::left << std::setw(19) << name << folder.string() << "\n";
+  for (const auto& [name, folder] : folders) out << std::left << std::setw(22) << name << folder.string() << "\n";
   return 0;
 }
 

@@ -22,10 +22,11 @@ namespace meshedit {
 EditorApp::EditorApp()
     : view_(document_),
       exercises_(document_),
+      check_(document_, exercises_),
       lessons_(document_, view_, exercises_,
                [this](const std::string& line) { panels_.console().append_output(line); }),
       input_(document_, view_),
-      panels_(document_, view_, exercises_, lessons_) {
+      panels_(document_, view_, exercises_, check_, lessons_) {
   lessons_.panel().show_your_turn = [this] { show_your_turn_mine(); };
   // The exercises defined in Lua: a definition that does not load is named (file:line) and left out.
   const std::vector<std::string> errors = load_exercise_folder(default_exercise_folder());
@@ -58,7 +59,8 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   view_.advance_edit_animation(frame_ms);  // before this frame's actions: an edit they make starts at time 0
-  read_input();                            // in the view placed by the last frame
+  check_.poll();
+  read_input();  // in the view placed by the last frame
   lessons_.update(frame_ms);
   view_.measure_frame(frame_ms);
 
@@ -88,6 +90,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   }
   view_.draw_labels(lessons_.marks());
   panels_.draw_columns();
+  if (const std::optional<size_t> row = check_.take_case_request()) open_failing_case(*row);
   exercises_.keep_student_drafts();
   draw_open_panel();
   draw_help_panel();
@@ -112,7 +115,7 @@ void EditorApp::click(int x, int y) {
 }
 
 bool EditorApp::animating() const {
-  return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating();
+  return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating() || check_.running();
 }
 
 bool EditorApp::repair_spots_current() const { return document_.repair_spots_current(view_.mode() == ViewMode::Mesh); }

@@ -3,6 +3,7 @@
 //   DocumentRoom (document_room.h)  the open document, its selection and its files: title, recent list, repairs
 //   ViewRoom     (view_room.h)      the mesh, curve and patch views, the camera, the renderers, the up axis
 //   ExerciseRoom (exercise_room.h)  the Exercises tab and the student's code (Your code)
+//   CheckRoom    (check_room.h)     File > Check my work: the grader run beside the window, and the Check tab
 //   LessonRoom   (lesson_room.h)    the lesson being run, its panel and what it lays over the view
 //   InputRoom    (input_room.h)     the mouse and the keys
 //   PanelsRoom   (panels_room.h)    the columns, the console, the settings and the look
@@ -29,6 +30,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/check_room.h"
 #include "app/commands.h"
 #include "app/document_room.h"
 #include "app/exercise_room.h"
@@ -51,6 +53,7 @@ class EditorApp {
   ViewRoom& view() { return view_; }
   const ViewRoom& view() const { return view_; }
   ExerciseRoom& exercise_room() { return exercises_; }
+  CheckRoom& check_room() { return check_; }
   LessonRoom& lessons() { return lessons_; }
   InputRoom& input() { return input_; }
   PanelsRoom& panels() { return panels_; }
@@ -87,6 +90,10 @@ class EditorApp {
   // The lesson panel's "Show mine vs reference" (editor_your_turn.cpp): the run of the your_turn the step waits on
   // with a wrong answer, shown where the window compares runs. Refused (a Warning) when there is none; never throws.
   Check show_your_turn_mine();
+  // The Check tab's "Open in Exercises" of row `row` (editor_check.cpp): the failed test's input as a new document,
+  // its element selected, and the student's function run on it in the Exercises tab. Refused (a Warning) when the row
+  // has no case; never throws.
+  Check open_failing_case(size_t row);
 
   // One frame: reads input from ImGui's io, draws the view into the current framebuffer of the given size, and builds
   // the panels. Call between ImGui::NewFrame() and ImGui::Render().
@@ -145,6 +152,7 @@ class EditorApp {
   DocumentRoom document_;
   ViewRoom view_;
   ExerciseRoom exercises_;
+  CheckRoom check_;
   LessonRoom lessons_;
   InputRoom input_;
   PanelsRoom panels_;

@@ -80,6 +80,11 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
       request_screenshot(start == CommandStart::Key ? timestamped_screenshot_name() : "meshedit-screenshot.png");
       return Check::yes();
     case I::DownloadCode: exercises_.download_student_code(); return Check::yes();
+    case I::CheckMyWork: {
+      const Check started = check_.start();
+      panels_.bring_forward(RightTab::Check);
+      return started;
+    }
     case I::Quit: quit_requested_ = true; return Check::yes();
     case I::Undo: return said(undo_edit(doc, selection));
     case I::Redo: return said(redo_edit(doc, selection));

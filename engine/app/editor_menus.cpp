@@ -100,6 +100,10 @@ void EditorApp::draw_menu_item(const Command& c) {
                     exercises_.session().file().filename().string().c_str());
       break;
     case I::UploadCode: look.shown = !host_files_on_users_disk(); break;
+    case I::CheckMyWork:
+      look.shown = CheckRoom::available();
+      look.enabled = !check_.running();
+      break;
     case I::Undo: look.enabled = doc.history.can_undo(); break;
     case I::Redo: look.enabled = doc.history.can_redo(); break;
     case I::LoopPhase:

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 
+#include "app/check_room.h"
 #include "app/document_room.h"
 #include "app/exercise_room.h"
 #include "app/lesson_room.h"
@@ -110,6 +111,24 @@ void PanelsRoom::draw_right_column() {
     ImGui::End();
     return;
   }
+  if (view_.mode() == ViewMode::Mesh) {
+    draw_right_tabs();
+  } else if (!check_.panel().open) {
+    draw_bezier_panel();
+  } else if (ImGui::BeginTabBar("bezier panels")) {  // the curve or the patches beside the Check tab
+    if (ImGui::BeginTabItem(view_.mode() == ViewMode::Curve ? "Curve" : "Patches", nullptr,
+                            select_tab_ == RightTab::Tables ? ImGuiTabItemFlags_SetSelected : 0)) {
+      draw_bezier_panel();
+      ImGui::EndTabItem();
+    }
+    check_tab();
+    ImGui::EndTabBar();
+  }
+  select_tab_ = RightTab::None;
+  ImGui::End();
+}
+
+void PanelsRoom::draw_bezier_panel() {
   if (view_.mode() == ViewMode::Curve) {
     ImGui::TextDisabled("Curve");
     draw_curve_controls(view_.curve(), &view_.bezier_mine());
@@ -117,14 +136,21 @@ void PanelsRoom::draw_right_column() {
     ImGui::BeginChild("levels");
     draw_curve_levels(view_.curve(), &view_.bezier_mine());
     ImGui::EndChild();
-  } else if (view_.mode() == ViewMode::Patches) {
+  } else {
     ImGui::TextDisabled("Patches");
     draw_patch_view_panel_contents(view_.patches(), &view_.bezier_mine());
-  } else {
-    draw_right_tabs();
   }
-  select_tab_ = RightTab::None;
-  ImGui::End();
+}
+
+bool PanelsRoom::check_tab() {
+  CheckPanelState& panel = check_.panel();
+  if (!panel.open) return false;
+  const ImGuiTabItemFlags flags = select_tab_ == RightTab::Check ? ImGuiTabItemFlags_SetSelected : 0;
+  if (!ImGui::BeginTabItem("Check", &panel.open, flags)) return false;
+  probe_.record_last_item("tab:Check");
+  check_.draw_tab(probe_);
+  ImGui::EndTabItem();
+  return true;
 }
 
 void PanelsRoom::draw_right_tabs() {
@@ -162,6 +188,7 @@ void PanelsRoom::draw_right_tabs() {
     document_.draw_repairs_tab(view_.mode() == ViewMode::Mesh, settings_.theme);
     ImGui::EndTabItem();
   }
+  check_tab();
   ImGui::EndTabBar();
 }
 

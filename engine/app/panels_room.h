@@ -11,8 +11,9 @@
 // - What each column holds (panels_room.cpp):
 //     left   the lesson while one runs; else the inspector over the list of lessons (the list alone outside the mesh
 //            view);
-//     right  mesh view: tabs Pointers, Inspector (while a lesson has the left column), Exercises, Your code, Repairs;
-//            curve view: the curve's controls and its levels; patch view: the patch controls and the evaluation table.
+//     right  mesh view: tabs Pointers, Inspector (while a lesson has the left column), Exercises, Your code, Repairs,
+//            Check; curve view: the curve's controls and its levels; patch view: the patch controls and the evaluation
+//            table (each beside a Check tab once Check my work opened it).
 // - A change of the text size or the theme is taken once by the window (take_look_change), which applies it before
 //   its next frame; the view's colours change at once.
 #pragma once
@@ -30,17 +31,18 @@
 
 namespace meshedit {
 
+class CheckRoom;
 class DocumentRoom;
 class ExerciseRoom;
 class LessonRoom;
 class ViewRoom;
 
-enum class RightTab { None, Tables, Inspector, Exercises, Code, Repairs };
+enum class RightTab { None, Tables, Inspector, Exercises, Code, Repairs, Check };
 
 class PanelsRoom {
  public:
-  PanelsRoom(DocumentRoom& document, ViewRoom& view, ExerciseRoom& exercises, LessonRoom& lessons)
-      : document_(document), view_(view), exercises_(exercises), lessons_(lessons) {}
+  PanelsRoom(DocumentRoom& document, ViewRoom& view, ExerciseRoom& exercises, CheckRoom& check, LessonRoom& lessons)
+      : document_(document), view_(view), exercises_(exercises), check_(check), lessons_(lessons) {}
 
   const Settings& settings() const { return settings_; }
   Settings& settings() { return settings_; }
@@ -75,12 +77,15 @@ class PanelsRoom {
   void draw_left_column();
   void draw_right_column();
   void draw_right_tabs();
+  void draw_bezier_panel();  // the curve or the patch view's controls
+  bool check_tab();          // the Check tab, when it is open; returns whether it was drawn
   void draw_console_strip();
   void draw_splitters();
 
   DocumentRoom& document_;
   ViewRoom& view_;
   ExerciseRoom& exercises_;
+  CheckRoom& check_;
   LessonRoom& lessons_;
   Settings settings_;
   bool look_changed_ = true;  // the window applies the look before the first frame

@@ -1,5 +1,6 @@
-// `meshedit [FILE] [--actions SCRIPT] [--size WxH]`: the window. Runs the frame loop, feeds dropped files
-// to the app, and plays scripted actions (action_player.h) one per frame for GUI tests.
+// `meshedit [FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua]`: the window. Runs the frame loop, feeds dropped
+// files to the app, and plays scripted actions (action_player.h) one per frame for GUI tests. --suite is the suite File
+// > Check my work runs instead of the course's (check_room.h).
 //
 // Settings (document/settings.h) are read at start and written when the window closes: the window opens at the size it
 // had (never larger than the screen's work area), with the columns, text size and theme it had. --size opens it at
@@ -45,7 +46,9 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   std::vector<std::string> args = arguments;
   const auto script = take_option(args, "--actions");
   const auto size = take_option(args, "--size");
+  const auto suite = take_option(args, "--suite");
   reject_unknown_options(args);
+  if (suite && !std::filesystem::is_regular_file(*suite)) throw UsageError("--suite " + *suite + ": no such file");
   if (args.size() > 1) throw UsageError("the window opens at most one file");
   std::vector<std::string> warnings;
   const std::filesystem::path settings_file = settings_path();
@@ -72,6 +75,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
                                          DocumentRoom::kStartTitle, width, height, /*fit_to_screen=*/!size);
   run->window.set_lazy(!run->player.active());  // scripted runs step one action per frame
   run->app.panels().apply_settings(settings);
+  if (suite) run->app.check_room().set_suite(std::filesystem::absolute(*suite));
   // Edits animate in a window a person uses, as the settings say; a scripted run only after `animate-edits on`.
   if (!run->player.active()) run->app.view().set_edit_animation_policy(EditAnimationPolicy::AsSettingSays);
   run->app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)

@@ -1,5 +1,5 @@
 // data_folders: where the program finds the files it ships with (lessons/, shaders/, assets/, scripts/student,
-// scripts/exercises, fonts/), wherever it runs from. The candidates for a folder NAME, in order:
+// scripts/exercises, fonts/, tests/grading/suites), wherever it runs from. The candidates for a folder NAME, in order:
 //   1. <the running program's folder>/NAME: a program copied beside its files;
 //   2. <the running program's folder>/../share/meshedit/NAME: the installed layout (`cmake --install`: bin/meshedit
 //      and share/meshedit/...);

@@ -33,6 +33,7 @@ enum class CommandId {
   Screenshot,
   DownloadCode,
   UploadCode,
+  CheckMyWork,
   Quit,
   // Edit
   Undo,

@@ -11,6 +11,7 @@
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
 #include "grade/expectations.h"
+#include "grade/failing_case.h"
 #include "script/bezier_bindings.h"
 #include "script/lua_handles.h"
 #include "script/mesh_bindings.h"
@@ -170,7 +171,9 @@ int expect_exercise(lua_State* L) {
   // The headline: what was checked and the first difference, the likely mistake (the Markdown folds the rest).
   const size_t headline =
       report.equal || report.differences.empty() ? 0 : join_message(message, report.differences.front()).size();
-  lua_pushboolean(L, recorder.record(report.equal, join_message(message, detail), headline));
+  std::optional<FailingCase> failing_case;
+  if (!report.equal) failing_case = failing_case_of(*exercise, input);
+  lua_pushboolean(L, recorder.record(report.equal, join_message(message, detail), headline, std::move(failing_case)));
   return 1;
 }
 

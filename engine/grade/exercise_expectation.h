@@ -19,6 +19,7 @@
 // - The reference is run_reference (the core), on a copy of the input mesh: the suite's meshes are not changed.
 // - One check is recorded: passed when compare() finds the answer equal to the reference's; its message is the
 //   optional message, then the window's differences, the likely mistake first (the first three, "... (N in all)").
+//   A failed check on a mesh carries its input as a case the window can open (failing_case.h).
 // - The locality bound of a flip or a split (exercise/exercise_locality.h) is checked on what the student's latest call
 //   given `yours` touched of it, as the test's recorder noted it; a mesh no student call was given is not held to it.
 // - Values are read raw (read_returned_value): a student's value runs no code in the suite's state.

@@ -96,8 +96,8 @@ std::string first_items(const std::vector<std::string>& items, size_t total) {
   return out;
 }
 
-bool TestRecorder::record(bool passed, std::string message, size_t headline) {
-  run_.checks.push_back({passed, std::move(message), headline});
+bool TestRecorder::record(bool passed, std::string message, size_t headline, std::optional<FailingCase> failing_case) {
+  run_.checks.push_back({passed, std::move(message), headline, std::move(failing_case)});
   return passed;
 }
 

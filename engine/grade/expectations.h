@@ -45,7 +45,8 @@ class TestRecorder {
  public:
   explicit TestRecorder(TestRun& run) : run_(run) {}
   // A check: passed or not, what it checked and found, and how much of that is the headline (CheckResult).
-  bool record(bool passed, std::string message, size_t headline = 0);
+  bool record(bool passed, std::string message, size_t headline = 0,
+              std::optional<FailingCase> failing_case = std::nullopt);
   void set_fraction(double fraction) { run_.fraction = fraction; }
   TestRun& run() { return run_; }
 

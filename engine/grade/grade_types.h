@@ -26,12 +26,25 @@ enum class RunEnd {
 
 const char* run_end_name(RunEnd end);  // "completed", "error", "load error", "timeout", "memory", "crash"
 
+// The input of a failed expect.exercise on a mesh, so the window can open it in the Exercises tab: the exercise, the
+// input mesh as OBJ text (vertex i of the OBJ is the input's i-th live vertex, in id order), and the element the
+// student's function was given, by the OBJ vertex indices of its corners.
+struct FailingCase {
+  std::string exercise;  // the exercise's name: "flip_edge", "split_edge", "vertex_normal", "upsample", a scripted one
+  std::string input;     // ExerciseInput::describe: "e5 of a mesh with 12 faces"
+  std::string mesh_obj;  // the input mesh, format_obj of to_polygon_mesh
+  std::string element;   // "vertex", "edge", "halfedge", "face" or "" (the whole mesh)
+  std::vector<size_t> corners;  // 0-based OBJ vertex indices: a vertex's one, an edge's or halfedge's two (from, to),
+                                // a face's corners in order; empty for the whole mesh
+};
+
 struct CheckResult {
   bool passed = false;
   std::string message;  // what was checked, and for a failure what was wrong
   // How much of `message` is its headline: what was checked and the first difference, the likely mistake (the
   // Markdown feedback folds the rest). 0: all of it.
   size_t headline = 0;
+  std::optional<FailingCase> failing_case;  // a failed expect.exercise on a mesh: its input
 };
 
 // What one test run found.
@@ -76,6 +89,7 @@ struct TestResult {
   std::string output;           // the full text shown to the student
   std::string output_markdown;  // the same as Markdown (test_feedback.h), for results.json
   double seconds = 0.0;
+  std::optional<FailingCase> failing_case;  // the first failed check's input, when it has one
 };
 
 // Tests a run left out because the student may not see them yet (GradeOptions::visible_only), by visibility.

@@ -9,7 +9,8 @@
 // - Scores: a test with an error (student or suite), a timeout or a crash scores 0, unless it is partial,
 //   when it keeps points * passed / (checks + 1). Otherwise: expect.score's fraction if set; partial: points
 //   * passed / checks; else all points when every check passed (a test with no checks passes), 0 if not.
-//   Scores are rounded to 1e-6; a test passes when its score is its points and nothing failed.
+//   Scores are rounded to 1e-6; a test passes when its score is its points and nothing failed. A failed test's
+//   failing_case is its first failed check's.
 // - Extra credit: an extra_credit test is scored the same way, but its max_score is 0 (its points are
 //   extra_points) and the report's max_score counts the base tests only; the report's score adds every test's
 //   score. So a submission without the extra credit can reach 100% of max_score, and one with it goes above.
@@ -33,12 +34,14 @@ struct GradeOptions {
   double time_limit_cap = 0.0;      // when > 0, no test gets more seconds than this (quick checks)
   size_t child_memory_bytes = size_t(2) << 30;
   bool filter_syscalls = true;
-  std::function<void(const TestResult&)> on_test;  // called after each test (progress)
+  std::function<void(const TestSpec&)> on_test_start;  // called before each test run (progress)
+  std::function<void(const TestResult&)> on_test;      // called after each test (progress)
   // Only the tests the student sees before the due date (visibility "visible"): a student's own check before
   // handing in. The others are counted in the report's not_shown, and its totals are the visible tests'.
   bool visible_only = false;
 };
 
+// Native only (grader_processes.cpp): a page cannot fork.
 GradeReport grade(Suite& suite, const Submission& submission, const GradeOptions& options = {});
 
 // What an instructor should hear about a suite before it grades: each test worth points that is "hidden", which on
@@ -51,10 +54,7 @@ std::string not_shown_sentence(const std::vector<NotShown>& not_shown);
 
 // The scoring rules above, for one test.
 TestResult score_test(const TestSpec& spec, const TestRun& run, double seconds);
-
-// The child's report and back (JSON).
-std::string encode_test_run(const TestRun& run);
-// Throws GradeError for a malformed report.
-TestRun decode_test_run(const std::string& text);
+// A score rounded to 1e-6, as every score is.
+double round_score(double score);
 
 }  // namespace meshedit

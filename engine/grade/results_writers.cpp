@@ -141,20 +141,27 @@ std::string tap_text(const GradeReport& report) {
   return t.str();
 }
 
+std::string points_text(const TestResult& test) {
+  if (test.extra_points > 0) return "+" + number(test.score) + " of " + number(test.extra_points);
+  return number(test.score) + "/" + number(test.max_score);
+}
+
+std::string score_line(const GradeReport& report) {
+  return "Score: " + number(report.score) + " / " + number(report.max_score) + extra_credit_note(report);
+}
+
 std::string text_report(const GradeReport& report) {
   std::ostringstream s;
   s << report.output << "\n";
   for (const auto& t : report.tests) {
-    s << (t.passed ? "PASS " : "FAIL ") << t.number << " " << t.name << "  ";
-    if (t.extra_points > 0) s << "+" << number(t.score) << " of " << number(t.extra_points) << "\n";
-    else s << number(t.score) << "/" << number(t.max_score) << "\n";
+    s << (t.passed ? "PASS " : "FAIL ") << t.number << " " << t.name << "  " << points_text(t) << "\n";
     if (!t.passed) {
       std::istringstream lines(t.output);
       std::string line;
       while (std::getline(lines, line)) s << "    " << line << "\n";
     }
   }
-  s << "\nScore: " << number(report.score) << " / " << number(report.max_score) << extra_credit_note(report) << "\n";
+  s << "\n" << score_line(report) << "\n";
   s << summary_line(report) << "\n";
   return s.str();
 }

@@ -30,6 +30,10 @@ std::string junit_xml(const GradeReport& report);
 std::string tap_text(const GradeReport& report);
 std::string text_report(const GradeReport& report);
 std::string summary_line(const GradeReport& report);  // "3 passed, 1 failed"
+// "Score: 31 / 33" (with the extra credit's note when there is some), as the readable report ends.
+std::string score_line(const GradeReport& report);
+// A test's points as the readable report gives them: "2/2", "0/3", "+1 of 1" (extra credit).
+std::string points_text(const TestResult& test);
 
 // Throws GradeError when the file cannot be written.
 void write_file_atomically(const std::filesystem::path& path, const std::string& text);

@@ -8,6 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include "grade/grader.h"
+#include "grade/report_json.h"
 #include "grade/results_writers.h"
 #include "grade_test_support.h"
 

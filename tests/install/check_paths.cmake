@@ -4,7 +4,7 @@ execute_process(COMMAND "${PREFIX}/bin/meshedit" paths RESULT_VARIABLE status OU
 if(NOT status EQUAL 0)
   message(FATAL_ERROR "meshedit paths failed: ${status}")
 endif()
-set(folders lessons assets shaders scripts/student scripts/exercises)
+set(folders lessons assets shaders scripts/student scripts/exercises tests/grading/suites)
 if(EXISTS "${PREFIX}/share/meshedit/fonts")
   list(APPEND folders fonts)
 endif()

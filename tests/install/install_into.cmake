@@ -13,7 +13,8 @@ if(NOT status EQUAL 0)
 endif()
 foreach(path bin/meshedit share/meshedit/lessons/4_edge_flip.lua share/meshedit/shaders/face.vert
         share/meshedit/assets/teapot.bez share/meshedit/scripts/student/flip.lua
-        share/meshedit/scripts/exercises/collapse.lua share/meshedit/scripts/api/meshedit.lua)
+        share/meshedit/scripts/exercises/collapse.lua share/meshedit/scripts/api/meshedit.lua
+        share/meshedit/tests/grading/suites/all.lua)
   if(NOT EXISTS "${PREFIX}/${path}")
     message(FATAL_ERROR "the install has no ${PREFIX}/${path}")
   endif()

@@ -1,0 +1,140 @@
+// File > Check my work: the run, its verdict in the status line and the Check tab (see check_room.h).
+#include "app/check_room.h"
+
+#include <exception>
+#include <new>
+
+#include "app/document_room.h"
+#include "app/exercise_room.h"
+#include "core/data_folders.h"
+#include "core/value_format.h"
+#include "grade/grader.h"
+#include "grade/results_writers.h"
+
+namespace meshedit {
+namespace {
+
+std::filesystem::path course_suite() { return data_folder("tests/grading/suites") / "all.lua"; }
+
+}  // namespace
+
+CheckRoom::CheckRoom(DocumentRoom& document, ExerciseRoom& exercises)
+    : document_(document), exercises_(exercises), suite_(course_suite()), program_(check_program()) {}
+
+Check CheckRoom::start() {
+  try {
+    panel_.open = true;
+    std::error_code ec;
+    if (!std::filesystem::is_regular_file(suite_, ec)) {
+      const std::string why = "Check my work: no suite at " + suite_.string();
+      document_.message(Severity::Error, why);
+      return Check::no(why);
+    }
+    checked_folder_ = exercises_.session().folder();
+    started_ = true;
+    announced_ = false;
+    if (!process_.start(program_, suite_, checked_folder_)) {
+      announced_ = true;
+      document_.message(Severity::Error, "Check my work: " + process_.problem());
+      return Check::no(process_.problem());
+    }
+    const std::string unsaved = exercises_.unsaved_student_files();
+    document_.message(unsaved.empty() ? Severity::Info : Severity::Warning,
+                      unsaved.empty() ? std::string("Checking your work with the course's visible tests...")
+                                      : "Checking your saved files; not saved, so not checked: " + unsaved);
+    return Check::yes();
+  } catch (const std::exception& e) {
+    document_.message(Severity::Error, std::string("Check my work: ") + e.what());
+    return Check::no(e.what());
+  }
+}
+
+void CheckRoom::stop() {
+  if (!running()) return;
+  process_.stop();
+  announced_ = true;
+  document_.message(Severity::Warning, "Check my work stopped: no verdict");
+}
+
+void CheckRoom::poll() {
+  process_.poll();
+  if (running() || announced_) return;
+  announced_ = true;
+  if (const std::optional<GradeReport>& report = process_.report()) {
+    const bool all = report->failed() == 0;
+    document_.message(all ? Severity::Info : Severity::Warning,
+                      "Check my work: " + score_line(*report) + "; " + summary_line(*report) + " (the Check tab)");
+  } else {
+    document_.message(Severity::Error, "Check my work: the grader could not check your work (the Check tab)");
+  }
+}
+
+const FailingCase* CheckRoom::failing_case(size_t row) const {
+  const std::optional<GradeReport>& report = process_.report();
+  if (!report || row >= report->tests.size() || !report->tests[row].failing_case) return nullptr;
+  return &*report->tests[row].failing_case;
+}
+
+CheckPanelView CheckRoom::view() const {
+  CheckPanelView view;
+  view.suite = suite_;
+  view.folder = (started_ ? checked_folder_ : exercises_.session().folder()).string();
+  if (running()) {
+    view.state = CheckPanelView::State::Running;
+    view.done = process_.tests_done();
+    view.total = process_.tests_total();
+    view.running_test = process_.running_test();
+    view.seconds = process_.seconds();
+    return view;
+  }
+  if (!started_) return view;
+  if (process_.stopped()) {
+    view.state = CheckPanelView::State::Stopped;
+    return view;
+  }
+  const std::optional<GradeReport>& report = process_.report();
+  if (!report) {
+    view.state = CheckPanelView::State::Problem;
+    view.problem = process_.problem();
+    return view;
+  }
+  view.state = CheckPanelView::State::Graded;
+  view.total_line = score_line(*report) + "; " + summary_line(*report) + ".";
+  view.not_shown = not_shown_sentence(report->not_shown);
+  view.notes = report->output;
+  for (const TestResult& test : report->tests) {
+    CheckPanelView::Row row;
+    row.number = test.number;
+    row.name = test.name;
+    row.points = points_text(test);
+    row.passed = test.passed;
+    row.text = test.output;
+    if (test.failing_case) row.case_input = test.failing_case->input;
+    view.rows.push_back(std::move(row));
+  }
+  return view;
+}
+
+std::string CheckRoom::test_name(size_t row) const {
+  const std::optional<GradeReport>& report = process_.report();
+  if (!report || row >= report->tests.size()) return "";
+  return report->tests[row].number + " " + report->tests[row].name;
+}
+
+std::optional<size_t> CheckRoom::row_of(const std::string& number) const {
+  const std::optional<GradeReport>& report = process_.report();
+  if (!report) return std::nullopt;
+  for (size_t row = 0; row < report->tests.size(); ++row) {
+    if (report->tests[row].number == number) return row;
+  }
+  return std::nullopt;
+}
+
+void CheckRoom::draw_tab(UiProbe& probe) {
+  const CheckPanelActions actions = draw_check_panel_contents(view(), panel_, &probe);
+  if (actions.stop) stop();
+  if (actions.check) start();
+  if (actions.open_case) case_request_ = actions.open_case;
+}
+
+}  // namespace meshedit
