@@ -41,7 +41,7 @@ class CheckProcess {
   size_t tests_done() const { return done_; }
   size_t tests_total() const { return total_; }
   const std::string& running_test() const { return running_test_; }  // the name of the test running now, if known
-  double seconds() const;  // since the start (to its end once it ended)
+  double seconds() const;                                            // since the start (to its end once it ended)
 
   const std::optional<GradeReport>& report() const { return report_; }
   const std::string& problem() const { return problem_; }

@@ -5,9 +5,9 @@
 #include <unistd.h>
 
 #include <array>
-#include <csignal>
 #include <cerrno>
 #include <chrono>
+#include <csignal>
 #include <cstdio>
 #include <cstring>
 #include <fstream>
@@ -150,7 +150,8 @@ void CheckProcess::read_progress() {
   if (end == std::string::npos) return;
   const size_t begin = progress_.rfind(kProgressPrefix, end);
   if (begin == std::string::npos) return;
-  const std::string line = progress_.substr(begin + std::strlen(kProgressPrefix), end - begin - std::strlen(kProgressPrefix));
+  const std::string line =
+      progress_.substr(begin + std::strlen(kProgressPrefix), end - begin - std::strlen(kProgressPrefix));
   unsigned long number = 0, total = 0;  // NOLINT(google-runtime-int): sscanf's type
   int rest = 0;
   if (std::sscanf(line.c_str(), "%lu of %lu %n", &number, &total, &rest) < 2 || rest <= 0) return;
@@ -192,9 +193,9 @@ void CheckProcess::finish(int status) {
   } else {
     const std::string words = words_besides_progress(progress_);
     if (!words.empty()) problem_ = words;
-    else if (status != -1 && WIFSIGNALED(status)) problem_ = "the grader was ended by signal " +
-                                                             std::to_string(WTERMSIG(status)) + " (" +
-                                                             strsignal(WTERMSIG(status)) + ")";
+    else if (status != -1 && WIFSIGNALED(status))
+      problem_ = "the grader was ended by signal " + std::to_string(WTERMSIG(status)) + " (" +
+                 strsignal(WTERMSIG(status)) + ")";
     else problem_ = "the grader ended with status " + std::to_string(WIFEXITED(status) ? WEXITSTATUS(status) : -1);
   }
   forget_files();

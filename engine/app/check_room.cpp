@@ -3,6 +3,7 @@
 
 #include <exception>
 #include <new>
+#include <sstream>
 
 #include "app/document_room.h"
 #include "app/exercise_room.h"
@@ -102,6 +103,10 @@ CheckPanelView CheckRoom::view() const {
   view.total_line = score_line(*report) + "; " + summary_line(*report) + ".";
   view.not_shown = not_shown_sentence(report->not_shown);
   view.notes = report->output;
+  std::istringstream lines(report->output);
+  for (std::string line; std::getline(lines, line);) {
+    if (line.starts_with("Missing: ")) view.warnings.push_back(line);
+  }
   for (const TestResult& test : report->tests) {
     CheckPanelView::Row row;
     row.number = test.number;

@@ -1,6 +1,6 @@
-// CheckRoom: File > Check my work. Owns the check's run (check_process.h: the grader in a process of its own), the suite
-// it runs (the course's whole assignment, tests/grading/suites/all.lua found as the program's other files are, or the
-// suite the window was started with: meshedit --suite FILE), the last verdict, and the Check tab's state.
+// CheckRoom: File > Check my work. Owns the check's run (check_process.h: the grader in a process of its own), the
+// suite it runs (the course's whole assignment, tests/grading/suites/all.lua found as the program's other files are, or
+// the suite the window was started with: meshedit --suite FILE), the last verdict, and the Check tab's state.
 //
 // Invariants:
 // - The check runs the student's saved files in the Exercises tab's folder: unsaved text in Your code is never run, and

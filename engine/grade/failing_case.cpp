@@ -33,15 +33,16 @@ std::optional<FailingCase> failing_case_of(Exercise exercise, const ExerciseInpu
       break;
     case ElementKind::Edge:
     case ElementKind::Halfedge: {
-      const HalfedgeId h = element.kind == ElementKind::Edge ? mesh.halfedge(EdgeId(element.index))
-                                                             : HalfedgeId(element.index);
+      const HalfedgeId h =
+          element.kind == ElementKind::Edge ? mesh.halfedge(EdgeId(element.index)) : HalfedgeId(element.index);
       out.element = element.kind == ElementKind::Edge ? "edge" : "halfedge";
       out.corners = {corner(mesh.vertex(h)), corner(mesh.vertex(mesh.twin(h)))};
       break;
     }
     case ElementKind::Face: {
       out.element = "face";
-      mesh.for_each_face_halfedge(element.face_id(), [&](HalfedgeId h) { out.corners.push_back(corner(mesh.vertex(h))); });
+      mesh.for_each_face_halfedge(element.face_id(),
+                                  [&](HalfedgeId h) { out.corners.push_back(corner(mesh.vertex(h))); });
       break;
     }
     default: break;  // a boundary loop: the whole mesh

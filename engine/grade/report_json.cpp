@@ -24,8 +24,11 @@ RunEnd end_from_name(const std::string& name) {
 }
 
 json case_json(const FailingCase& c) {
-  return {{"exercise", c.exercise}, {"input", c.input},     {"mesh_obj", c.mesh_obj},
-          {"element", c.element},   {"corners", c.corners}};
+  return {{"exercise", c.exercise},
+          {"input", c.input},
+          {"mesh_obj", c.mesh_obj},
+          {"element", c.element},
+          {"corners", c.corners}};
 }
 
 FailingCase case_from(const json& j) {
@@ -107,8 +110,8 @@ TestRun decode_test_run(const std::string& text) {
   try {
     const json j = json::parse(text);
     for (const auto& c : j.at("checks")) {
-      run.checks.push_back({c.at("passed").get<bool>(), c.at("message").get<std::string>(),
-                            c.at("headline").get<size_t>(), case_at(c)});
+      run.checks.push_back(
+          {c.at("passed").get<bool>(), c.at("message").get<std::string>(), c.at("headline").get<size_t>(), case_at(c)});
     }
     if (j.contains("fraction")) run.fraction = j.at("fraction").get<double>();
     run.end = end_from_name(j.at("end").get<std::string>());

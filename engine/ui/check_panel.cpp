@@ -21,11 +21,13 @@ bool button(const char* label, const char* probe_name, UiProbe* probe) {
 }
 
 void draw_rows(const CheckPanelView& view, CheckPanelActions& actions, UiProbe* probe) {
+  bool first_failure = true;  // opens by itself; the others open with a click, so the list stays an overview
   for (size_t i = 0; i < view.rows.size(); ++i) {
     const CheckPanelView::Row& row = view.rows[i];
     ImGui::PushID(static_cast<int>(i));
     ImGui::PushStyleColor(ImGuiCol_Text, row.passed ? ui_colors::valid() : ui_colors::broken());
-    const ImGuiTreeNodeFlags flags = row.passed ? 0 : ImGuiTreeNodeFlags_DefaultOpen;
+    const ImGuiTreeNodeFlags flags = !row.passed && first_failure ? ImGuiTreeNodeFlags_DefaultOpen : 0;
+    first_failure = first_failure && row.passed;
     // The node holds the verdict and the number; the name beside it wraps at the column's edge (a node's label would
     // be cut off there).
     const bool open = ImGui::TreeNodeEx("test", flags, "%s (%s) %s:", row.passed ? "passed" : "FAILED",
@@ -127,6 +129,7 @@ CheckPanelActions draw_check_panel_contents(const CheckPanelView& view, CheckPan
       coloured(all ? ui_colors::valid() : ui_colors::warning(), view.total_line);
       if (probe) probe->record_last_item("check-total");
       if (!view.not_shown.empty()) ImGui::TextDisabled("%s", view.not_shown.c_str());
+      for (const std::string& warning : view.warnings) coloured(ui_colors::warning(), warning);
       if (!view.notes.empty() && ImGui::TreeNode("Your files, as the grader found them")) {
         wrapped(view.notes);
         ImGui::TreePop();

@@ -6,8 +6,9 @@
 //   never done here.
 // - While a check runs, the tab says so with its progress and a Stop button; the window keeps drawing (the run is in a
 //   process of its own).
-// - Each test is one row: its number and name, its points ("2 / 2"), passed or not; a failed test's row opens to the
-//   grader's text (the same words as `meshedit grade`), and has "Open in Exercises" when its input can be opened.
+// - Each test is one row: passed or not, its points ("2/2"), its number and name; a row opens to the grader's text for
+//   it (the same words as `meshedit grade`), with "Open in Exercises" when a failed test's input can be opened. The
+//   first failed test's row is open; the others open with a click, so the list stays an overview.
 #pragma once
 
 #include <cstddef>
@@ -24,14 +25,15 @@ struct CheckPanelView {
   enum class State { NotRun, Running, Graded, Problem, Stopped };
   State state = State::NotRun;
   std::filesystem::path suite;  // the suite's file
-  std::string folder;  // the student's folder
+  std::string folder;           // the student's folder
   size_t done = 0, total = 0;
   std::string running_test;  // the name of the test running now (while running), if known
   double seconds = 0.0;
-  std::string total_line;  // "Score: 31 of 33 points; 13 of 14 tests passed."
-  std::string not_shown;   // "Not run here: 6 more tests, 8 points, shown after the due date; ..."
-  std::string notes;       // the grader's top-level text (the files found, what is missing)
-  std::string problem;     // why the grader could not grade
+  std::string total_line;             // "Score: 31 of 33 points; 13 of 14 tests passed."
+  std::string not_shown;              // "Not run here: 6 more tests, 8 points, shown after the due date; ..."
+  std::string notes;                  // the grader's top-level text (the files found, what is missing)
+  std::vector<std::string> warnings;  // its lines the student must see at once: "Missing: split.lua (...)"
+  std::string problem;                // why the grader could not grade
   struct Row {
     std::string number, name;
     std::string points;  // "2 / 2", "0 / 3", "+1 (extra credit)"

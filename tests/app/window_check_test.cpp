@@ -52,7 +52,6 @@ GradeReport desktop_verdict(const fs::path& dir, const fs::path& suite, const fs
   return decode_grade_report(read_file(dir / "cli.json"));
 }
 
-
 TEST(WindowCheck, TheCheckTabGivesTheGradersVerdictAndOpensTheFailingInput) {
   XServer x;
   if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
@@ -90,7 +89,13 @@ TEST(WindowCheck, TheCheckTabGivesTheGradersVerdictAndOpensTheFailingInput) {
   actions << "check-open " << cli.tests[0].number << "\n"
           << "frames 2\n"
           << "expect-message mine: flip\n"
-          << "screenshot " << (dir / "opened.png").string() << "\n"
+          << "screenshot " << (dir / "opened.png").string()
+          << "\n"
+          // The whole assignment on a folder with only flip.lua: the missing files are said at once.
+          << "check-suite " << (grading() / "suites" / "all.lua").string() << "\n"
+          << "command check-my-work\n"
+          << "wait-message 20000 Check my work: Score\n"
+          << "expect-check Missing: split.lua (the tests that need it fail).\n"
           << "quit\n";
   const WindowRun run = run_window(x.display(), mesh, actions.str(), dir);
   EXPECT_EQ(run.status, 0) << run.output;
