@@ -12,8 +12,10 @@
 // then hides the student's total too).
 // One submission: prints the readable report (or, with --tap, only TAP) on `out`, ending with
 // "N passed, N failed", and writes Gradescope's results.json (--results; default ./results.json) and JUnit XML
-// (--junit). A class: grades every folder in parallel processes (--jobs, default: the number of processors),
-// writes FOLDER/<submission>/results.json for each and FOLDER/summary.csv + summary.json (FOLDER defaults to
+// (--junit). Each failed test whose input the grader kept gets a picture of it beside the reference's result and the
+// student's, in its Markdown feedback and in pictures/ beside results.json (failure_pictures.h). A class: grades every
+// folder in parallel processes (--jobs, default: the number of processors), writes FOLDER/<submission>/results.json for
+// each and FOLDER/summary.csv + summary.json (FOLDER defaults to
 // ./grading-results), and prints one line per submission.
 // The exit status says whether grading worked, not the score: 0 graded (even a submission that fails to
 // load, crashes, hangs or runs out of memory: those tests fail, results.json is still written), 1 the grader
@@ -25,6 +27,7 @@
 #include <iostream>
 #include <memory>
 
+#include "app/failure_pictures.h"
 #include "core/parallel_for.h"
 #include "core/value_format.h"
 #include "grade/class_grading.h"
@@ -73,7 +76,9 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
   if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
   const Submission submission = Submission::read(folder);
   out.flush();
-  const GradeReport report = grade(suite, submission, options);
+  GradeReport report = grade(suite, submission, options);
+  const std::string no_pictures = add_failure_pictures(report, std::filesystem::absolute(results).parent_path());
+  if (!no_pictures.empty()) std::cerr << "meshedit grade: " << no_pictures << "\n";
   write_file_atomically(results, gradescope_json(report));
   if (junit) write_file_atomically(*junit, junit_xml(report));
   if (report_file) write_file_atomically(*report_file, encode_grade_report(report));

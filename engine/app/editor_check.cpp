@@ -1,8 +1,8 @@
 // EditorApp and File > Check my work (check_room.h): the Check tab's "Open in Exercises" puts a failed test's input in
-// the window where it compares runs. The input mesh (the report's OBJ text, grade/failing_case.h) becomes a new
-// document named after the test, the element the student's function was given is selected (found by its corners, so
-// it is the same element whatever ids the suite's mesh had), the Exercises tab takes the test's exercise and runs the
-// student's saved function on it, and comes to the front.
+// the window where it compares runs. The input mesh (with every record and id the grader had: grade/failing_case.h)
+// becomes a new document named after the test, the element the student's function was given is selected (the ids are
+// the ones the grader's words name), the Exercises tab takes the test's exercise and runs the student's saved function
+// on it, and comes to the front.
 //
 // Invariants: never throws; a case whose mesh cannot be built or whose exercise this window does not know is a Warning
 // in the status line with the document as it was (show_mesh is whole or nothing).

@@ -165,6 +165,7 @@ int expect_exercise(lua_State* L) {
   }
   read_returned_value(L, kReturned, *exercise, mine.mesh, mine);
   if (mine.mesh) mine.touched = recorder.touches_of(mine.mesh.get());
+  const std::shared_ptr<const HalfedgeMesh> yours = mine.mesh;  // compare() takes the outcome
   const ExerciseReport report = compare(*exercise, input, std::move(mine), run_reference(*exercise, input));
   const std::string detail =
       report.equal ? "same as the reference" : first_items(report.differences, report.total_differences);
@@ -172,7 +173,7 @@ int expect_exercise(lua_State* L) {
   const size_t headline =
       report.equal || report.differences.empty() ? 0 : join_message(message, report.differences.front()).size();
   std::optional<FailingCase> failing_case;
-  if (!report.equal) failing_case = failing_case_of(*exercise, input);
+  if (!report.equal) failing_case = failing_case_of(*exercise, input, yours.get());
   lua_pushboolean(L, recorder.record(report.equal, join_message(message, detail), headline, std::move(failing_case)));
   return 1;
 }

@@ -1,11 +1,11 @@
 // failing_case_of: the input of a failed expect.exercise on a mesh, as a FailingCase (grade_types.h) the window can
-// open in its Exercises tab: the input mesh as OBJ text and the element by the OBJ indices of its corners.
+// open in its Exercises tab and the grader can draw: the input mesh and the student's mesh with every record kept, so
+// both read back with the ids the grader's words name.
 //
 // Invariants:
-// - Only mesh exercises have a case (none for points or a patch); the input mesh is written as to_polygon_mesh makes
-//   it (live vertices renumbered densely in id order), so building the OBJ again gives vertex i at OBJ index i.
-// - case_element(case_mesh(c), c) is the element failing_case_of was given.
-// - Never throws for a mesh the exercise accepted: a mesh whose faces do not close gives no case (nullopt).
+// - Only mesh exercises have a case (none for points or a patch).
+// - case_mesh(failing_case_of(e, input)) has the input mesh's records exactly, and case_element names the element
+//   the student's function was given there.
 #pragma once
 
 #include <optional>
@@ -15,13 +15,15 @@
 
 namespace meshedit {
 
-std::optional<FailingCase> failing_case_of(Exercise exercise, const ExerciseInput& input);
+// `mine` is the student's mesh after the call (nullptr: none).
+std::optional<FailingCase> failing_case_of(Exercise exercise, const ExerciseInput& input,
+                                           const HalfedgeMesh* mine = nullptr);
 
-// The case's input mesh, built again (vertex i is v_i). Throws FileError or MeshError for a case whose text is not a
-// mesh (one from another tool, or damaged).
+// The case's input mesh and the student's (nullopt when the case has none). Throw MeshError for a text that is not
+// mesh records (from another tool, or damaged).
 HalfedgeMesh case_mesh(const FailingCase& failing_case);
-// The case's element in that mesh: found by its corners, so it is the same element whatever ids the mesh had in the
-// suite; invalid for the whole mesh, or when no element of the mesh has those corners.
+std::optional<HalfedgeMesh> case_mine(const FailingCase& failing_case);
+// The case's element in that mesh; invalid for the whole mesh, or when the mesh has no such live element.
 ElementRef case_element(const HalfedgeMesh& mesh, const FailingCase& failing_case);
 
 }  // namespace meshedit

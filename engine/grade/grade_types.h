@@ -26,16 +26,16 @@ enum class RunEnd {
 
 const char* run_end_name(RunEnd end);  // "completed", "error", "load error", "timeout", "memory", "crash"
 
-// The input of a failed expect.exercise on a mesh, so the window can open it in the Exercises tab: the exercise, the
-// input mesh as OBJ text (vertex i of the OBJ is the input's i-th live vertex, in id order), and the element the
-// student's function was given, by the OBJ vertex indices of its corners.
+// The input of a failed expect.exercise on a mesh, so the window can open it in the Exercises tab and the grader can
+// draw it: the exercise, the input mesh and the student's mesh after the call with every record and id kept
+// (core/mesh_records.h), and the element the student's function was given.
 struct FailingCase {
-  std::string exercise;  // the exercise's name: "flip_edge", "split_edge", "vertex_normal", "upsample", a scripted one
-  std::string input;     // ExerciseInput::describe: "e5 of a mesh with 12 faces"
-  std::string mesh_obj;  // the input mesh, format_obj of to_polygon_mesh
-  std::string element;   // "vertex", "edge", "halfedge", "face" or "" (the whole mesh)
-  std::vector<size_t> corners;  // 0-based OBJ vertex indices: a vertex's one, an edge's or halfedge's two (from, to),
-                                // a face's corners in order; empty for the whole mesh
+  std::string
+      exercise;       // the exercise's function: "flip_edge", "split_edge", "vertex_normal", "upsample", a scripted one
+  std::string input;  // ExerciseInput::describe: "e5 of a mesh with 12 faces"
+  std::string mesh;   // the input mesh, format_mesh_records
+  std::string element;  // its element as format_id writes it ("e5", "v3"), "" for the whole mesh
+  std::string mine;     // the student's mesh after the call, format_mesh_records ("" when there was none)
 };
 
 struct CheckResult {

@@ -24,20 +24,16 @@ RunEnd end_from_name(const std::string& name) {
 }
 
 json case_json(const FailingCase& c) {
-  return {{"exercise", c.exercise},
-          {"input", c.input},
-          {"mesh_obj", c.mesh_obj},
-          {"element", c.element},
-          {"corners", c.corners}};
+  return {{"exercise", c.exercise}, {"input", c.input}, {"mesh", c.mesh}, {"element", c.element}, {"mine", c.mine}};
 }
 
 FailingCase case_from(const json& j) {
   FailingCase c;
   c.exercise = j.at("exercise").get<std::string>();
   c.input = j.at("input").get<std::string>();
-  c.mesh_obj = j.at("mesh_obj").get<std::string>();
+  c.mesh = j.at("mesh").get<std::string>();
   c.element = j.at("element").get<std::string>();
-  c.corners = j.at("corners").get<std::vector<size_t>>();
+  c.mine = j.at("mine").get<std::string>();
   return c;
 }
 
