@@ -55,8 +55,8 @@ std::set<uint32_t> corners_of(const HalfedgeMesh& mesh, ElementRef element) {
     case ElementKind::Vertex: corners.insert(element.index); break;
     case ElementKind::Edge:
     case ElementKind::Halfedge: {
-      const HalfedgeId h = element.kind == ElementKind::Edge ? mesh.halfedge(EdgeId(element.index))
-                                                             : HalfedgeId(element.index);
+      const HalfedgeId h =
+          element.kind == ElementKind::Edge ? mesh.halfedge(EdgeId(element.index)) : HalfedgeId(element.index);
       corners.insert(mesh.vertex(h).index);
       corners.insert(mesh.vertex(mesh.twin(h)).index);
       break;
@@ -123,7 +123,8 @@ class PictureMaker {
     }
     if (reference) panel(1, *reference, box, alive_or_none(*reference, element));
     else caption += " The reference's result could not be drawn.";
-    if (const std::optional<HalfedgeMesh> mine = case_mine(failing)) panel(2, *mine, box, alive_or_none(*mine, element));
+    if (const std::optional<HalfedgeMesh> mine = case_mine(failing))
+      panel(2, *mine, box, alive_or_none(*mine, element));
     else caption += " Your function left no mesh to draw.";
     compose_blank_panels(image);
     return caption;

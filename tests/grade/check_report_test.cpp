@@ -24,7 +24,9 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::grading_dir;
+using testing::Outcome;
 using testing::read_text;
+using testing::run_meshedit;
 using testing::write_text;
 
 GradeReport sample() {
@@ -166,19 +168,6 @@ TEST(FailingCase, KeepsEveryRecordAndId) {
   EXPECT_FALSE(case_mine(*whole));
   // Points have no mesh to open.
   EXPECT_FALSE(failing_case_of(Exercise::CurveStep, ExerciseInput::curve_step({{0, 0, 0}, {1, 0, 0}}, 0.5)));
-}
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-Outcome run_meshedit(const fs::path& dir, const std::string& arguments) {
-  const auto out = dir / "stdout.txt", err = dir / "stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && '" + std::string(MESHEDIT_BINARY) + "' " + arguments +
-                              " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(command.c_str());
-  return {WIFEXITED(raw) ? WEXITSTATUS(raw) : -1, read_text(out), read_text(err)};
 }
 
 // The report the window reads says what the readable report says, test by test, and carries the failing input.

@@ -19,25 +19,10 @@ namespace {
 
 namespace fs = std::filesystem;
 using testing::grading_dir;
+using testing::Outcome;
 using testing::read_text;
+using testing::run_meshedit;
 using testing::write_text;
-
-struct Outcome {
-  int status = -1;
-  std::string out, err;
-};
-
-Outcome run_meshedit(const fs::path& dir, const std::string& arguments) {
-  const auto out = dir / "grade_stdout.txt", err = dir / "grade_stderr.txt";
-  const std::string command = "cd '" + dir.string() + "' && '" + std::string(MESHEDIT_BINARY) + "' " + arguments +
-                              " >'" + out.string() + "' 2>'" + err.string() + "'";
-  const int raw = std::system(command.c_str());
-  Outcome o;
-  o.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;
-  o.out = read_text(out);
-  o.err = read_text(err);
-  return o;
-}
 
 // dir/name/flip.lua from a fixture.
 fs::path submission(const fs::path& dir, const std::string& name, const fs::path& fixture) {
