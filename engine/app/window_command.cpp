@@ -40,6 +40,22 @@ void save_settings(const std::filesystem::path& file, const EditorApp& app, cons
   }
 }
 
+// The settings file's settings, each problem with it a warning on stderr.
+Settings read_settings_warning(const std::filesystem::path& file) {
+  std::vector<std::string> warnings;
+  Settings settings = read_settings(file, warnings);
+  for (const std::string& warning : warnings) std::cerr << "meshedit: settings: " << warning << "\n";
+  return settings;
+}
+
+// --size WxH, or a UsageError.
+void read_size(const std::string& size, int& width, int& height) {
+  if (std::sscanf(size.c_str(), "%dx%d", &width, &height) != 2 || width < 200 || height < 150 || width > 16384 ||
+      height > 16384) {
+    throw UsageError("--size must look like 1280x800");
+  }
+}
+
 }  // namespace
 
 int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
@@ -50,15 +66,10 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   reject_unknown_options(args);
   if (suite && !std::filesystem::is_regular_file(*suite)) throw UsageError("--suite " + *suite + ": no such file");
   if (args.size() > 1) throw UsageError("the window opens at most one file");
-  std::vector<std::string> warnings;
   const std::filesystem::path settings_file = settings_path();
-  const Settings settings = read_settings(settings_file, warnings);
-  for (const std::string& warning : warnings) std::cerr << "meshedit: settings: " << warning << "\n";
+  const Settings settings = read_settings_warning(settings_file);
   int width = settings.window_width, height = settings.window_height;
-  if (size && (std::sscanf(size->c_str(), "%dx%d", &width, &height) != 2 || width < 200 || height < 150 ||
-               width > 16384 || height > 16384)) {
-    throw UsageError("--size must look like 1280x800");
-  }
+  if (size) read_size(*size, width, height);
   // Everything the frames use lives on the heap: in a page the browser runs the frames after this call has returned
   // (window_host.h).
   struct WindowRun {
