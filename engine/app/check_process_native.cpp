@@ -10,7 +10,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
-#include <fstream>
+#include <exception>
 #include <sstream>
 #include <system_error>
 #include <vector>
@@ -19,6 +19,7 @@
 #include "core/data_folders.h"
 #include "grade/report_json.h"
 #include "grade/submission.h"
+#include "io/file_access.h"
 
 extern char** environ;  // NOLINT(readability-redundant-declaration): POSIX declares it nowhere
 
@@ -29,13 +30,6 @@ constexpr size_t kProgressCap = 64 << 10;
 constexpr const char* kProgressPrefix = "meshedit grade: test ";
 
 double now() { return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch()).count(); }
-
-std::string read_whole(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
-}
 
 // A folder of its own under the system's temporary folder, or empty.
 std::filesystem::path make_run_folder() {
@@ -186,8 +180,8 @@ void CheckProcess::finish(int status) {
                                    : std::filesystem::exists(folder_ / "check.json", ec);
   if (graded) {
     try {
-      report_ = decode_grade_report(read_whole(folder_ / "check.json"));
-    } catch (const GradeError& e) {
+      report_ = decode_grade_report(read_file(folder_ / "check.json"));
+    } catch (const std::exception& e) {  // a GradeError, or a FileError for a report that was never written
       problem_ = std::string("the grader's report could not be read: ") + e.what();
     }
   } else {

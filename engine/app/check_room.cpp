@@ -2,13 +2,11 @@
 #include "app/check_room.h"
 
 #include <exception>
-#include <new>
 #include <sstream>
 
 #include "app/document_room.h"
 #include "app/exercise_room.h"
 #include "core/data_folders.h"
-#include "core/value_format.h"
 #include "grade/grader.h"
 #include "grade/results_writers.h"
 

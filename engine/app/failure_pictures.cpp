@@ -4,16 +4,15 @@
 #include <algorithm>
 #include <cctype>
 #include <exception>
-#include <fstream>
 #include <memory>
 #include <optional>
 #include <set>
-#include <sstream>
 #include <vector>
 
 #include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "grade/failing_case.h"
+#include "io/file_access.h"
 #include "render/camera.h"
 #include "render/image_file.h"
 #include "render/mesh_renderer.h"
@@ -38,13 +37,6 @@ std::string base64(const std::string& bytes) {
     for (size_t k = 0; k < 4; ++k) out += k <= n ? kDigits[(word >> (18 - 6 * k)) & 63] : '=';
   }
   return out;
-}
-
-std::string read_bytes(const std::filesystem::path& path) {
-  std::ifstream in(path, std::ios::binary);
-  std::ostringstream bytes;
-  bytes << in.rdbuf();
-  return bytes.str();
 }
 
 // The vertices of the element: a vertex, an edge's or a halfedge's two ends, a face's corners.
@@ -203,7 +195,7 @@ std::string add_failure_pictures(GradeReport& report, const std::filesystem::pat
       write_png(path, PictureMaker::width(), kPanelHeight, image);
       test.output_markdown += "\n\n![test " + test.number +
                               ": the input, the reference's result and yours](data:image/png;base64," +
-                              base64(read_bytes(path)) + ")\n\n*Left to right: the input (" + test.failing_case->input +
+                              base64(read_file(path)) + ")\n\n*Left to right: the input (" + test.failing_case->input +
                               ", highlighted), the reference's result, yours." + caption + "*\n";
     } catch (const std::exception& e) {
       problems += (problems.empty() ? "no picture of test " : "; test ") + test.number + ": " + e.what();
