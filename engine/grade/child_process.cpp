@@ -17,6 +17,7 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "grade/grade_run.h"
 #include "grade/submission.h"
 #include "grade/syscall_filter.h"
 
@@ -226,9 +227,7 @@ ChildResult run_in_child(const ChildLimits& limits, const std::function<std::str
 std::string describe_child_end(const ChildResult& result, double time_limit) {
   std::ostringstream s;
   if (result.timed_out) {
-    s << "stopped after " << time_limit
-      << " s (time limit): the test was still running (an endless loop, or one "
-         "very long call such as a string pattern)";
+    s << wall_clock_stop_sentence(time_limit);
   } else if (result.signal == SIGXCPU) {
     s << "stopped: CPU time limit exceeded";
   } else if (result.signal != 0) {
