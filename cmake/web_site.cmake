@@ -1,8 +1,9 @@
 # The web build's output, a static site in <build>/site (included by engine/app/CMakeLists.txt under emscripten):
-#   index.html (web/index.html: the page, its canvas and its start-up), meshedit.js, meshedit.wasm and meshedit.data,
-# the last holding the files the program reads, packaged under MESHEDIT_DATA_DIR (/meshedit) as in the source tree
-# (lessons/, shaders/, assets/, scripts/student/, scripts/exercises/), and the two DejaVu fonts where the window
-# looks for them natively. Any static file server serves the folder as it is.
+#   index.html (web/index.html: the page, its canvas and its start-up), check_worker.js (web/check_worker.js: Check my
+# work's tests in a Web Worker), meshedit.js, meshedit.wasm and meshedit.data, the last holding the files the program
+# reads, packaged under MESHEDIT_DATA_DIR (/meshedit) as in the source tree (lessons/, shaders/, assets/,
+# scripts/student/, scripts/exercises/, tests/grading/suites/: the course's suites Check my work runs), and the two
+# DejaVu fonts where the window looks for them natively. Any static file server serves the folder as it is.
 set(site_dir "${PROJECT_BINARY_DIR}/site")
 set_target_properties(meshedit PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${site_dir}" SUFFIX ".js")
 
@@ -10,7 +11,7 @@ set(MESHEDIT_FONT_FILES /usr/share/fonts/truetype/dejavu/DejaVuSans.ttf
     /usr/share/fonts/truetype/dejavu/DejaVuSansMono.ttf CACHE STRING "The window's two fonts, packaged in the page")
 
 set(packaged "")  # SHELL: keeps CMake from merging the repeated --preload-file options
-foreach(folder lessons shaders assets scripts/student scripts/exercises)
+foreach(folder lessons shaders assets scripts/student scripts/exercises tests/grading/suites)
   list(APPEND packaged "SHELL:--preload-file ${PROJECT_SOURCE_DIR}/${folder}@${MESHEDIT_DATA_DIR}/${folder}")
 endforeach()
 foreach(font IN LISTS MESHEDIT_FONT_FILES)
@@ -29,8 +30,9 @@ target_link_options(meshedit PRIVATE
 # The packaged folders are read at link time: a change in them relinks the page.
 file(GLOB_RECURSE packaged_files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lessons/*" "${PROJECT_SOURCE_DIR}/shaders/*"
      "${PROJECT_SOURCE_DIR}/assets/*" "${PROJECT_SOURCE_DIR}/scripts/student/*"
-     "${PROJECT_SOURCE_DIR}/scripts/exercises/*")
+     "${PROJECT_SOURCE_DIR}/scripts/exercises/*" "${PROJECT_SOURCE_DIR}/tests/grading/suites/*")
 set_property(TARGET meshedit APPEND PROPERTY LINK_DEPENDS ${packaged_files})
 
 # The page itself: copied at configure time, and again whenever it changes (configure_file makes CMake watch it).
 configure_file("${PROJECT_SOURCE_DIR}/web/index.html" "${site_dir}/index.html" COPYONLY)
+configure_file("${PROJECT_SOURCE_DIR}/web/check_worker.js" "${site_dir}/check_worker.js" COPYONLY)

@@ -1,6 +1,8 @@
 // CheckProcess: one run of the course's visible tests on the student's folder for File > Check my work, beside the
 // window: on the desktop `meshedit grade --visible-only --report FILE --progress` in a child process
-// (check_process_native.cpp), so the window keeps drawing while student code runs and Stop ends it at once.
+// (check_process_native.cpp); in a page, each test in a Web Worker (check_process_web.cpp, web/check_worker.js), the
+// report made by the page as grade() makes it (grade/grade_run.h). Either way the window keeps drawing while student
+// code runs, and Stop ends it at once.
 //
 // Invariants:
 // - poll() never blocks: it reads what progress the child printed and notices its end; call it once per frame.
@@ -13,6 +15,7 @@
 
 #include <cstddef>
 #include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -22,12 +25,12 @@ namespace meshedit {
 
 class CheckProcess {
  public:
-  CheckProcess() = default;
+  CheckProcess();
   ~CheckProcess();
   CheckProcess(const CheckProcess&) = delete;
   CheckProcess& operator=(const CheckProcess&) = delete;
 
-  // Whether this host can run a check (a page cannot start a process).
+  // Whether this host can run a check.
   static bool available();
 
   // Starts a check of `submission` with `suite`, run by the program `meshedit` (the window's own program by default).
@@ -37,7 +40,7 @@ class CheckProcess {
   void poll();
   void stop();
 
-  bool running() const { return pid_ > 0; }
+  bool running() const { return running_; }
   size_t tests_done() const { return done_; }
   size_t tests_total() const { return total_; }
   const std::string& running_test() const { return running_test_; }  // the name of the test running now, if known
@@ -48,17 +51,20 @@ class CheckProcess {
   bool stopped() const { return stopped_; }
 
  private:
-  void read_progress();
-  void finish(int status);
-  void forget_files();
+  // What runs the tests: the desktop's child process and its files (check_process_native.cpp), or the page's
+  // suite, grading and Web Worker (check_process_web.cpp).
+  struct Host;
+  void read_progress();     // the desktop's: what the child printed
+  void finish(int status);  // the desktop's: the child ended with `status`
+  void forget_files();      // the desktop's: its temporary folder removed
+  void run_next_test();     // the page's: the next test sent to the worker, or the report made
+  void take_worker_news();  // the page's: what the worker said since the last frame
 
-  int pid_ = -1;
-  int progress_fd_ = -1;
-  std::string progress_;  // what the child printed on stderr (capped)
+  std::unique_ptr<Host> host_;
+  bool running_ = false;
   size_t done_ = 0, total_ = 0;
   std::string running_test_;
   double started_ = 0.0, ended_ = 0.0;
-  std::filesystem::path folder_;
   std::optional<GradeReport> report_;
   std::string problem_;
   bool stopped_ = false;

@@ -55,6 +55,15 @@ std::string words_besides_progress(const std::string& printed) {
 
 }  // namespace
 
+struct CheckProcess::Host {
+  int pid = -1;
+  int progress_fd = -1;
+  std::string progress;  // what the child printed on stderr (capped)
+  std::filesystem::path folder;
+};
+
+CheckProcess::CheckProcess() : host_(std::make_unique<Host>()) {}
+
 bool CheckProcess::available() { return true; }
 
 std::filesystem::path check_program() {
@@ -73,12 +82,12 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
   report_.reset();
   problem_.clear();
   stopped_ = false;
-  progress_.clear();
+  host_->progress.clear();
   done_ = total_ = 0;
   running_test_.clear();
   started_ = ended_ = now();
-  folder_ = make_run_folder();
-  if (folder_.empty()) {
+  host_->folder = make_run_folder();
+  if (host_->folder.empty()) {
     problem_ = "Check my work could not make a temporary folder for the grader's files";
     return false;
   }
@@ -96,9 +105,9 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
                                          submission.string(),
                                          "--visible-only",
                                          "--results",
-                                         (folder_ / "results.json").string(),
+                                         (host_->folder / "results.json").string(),
                                          "--report",
-                                         (folder_ / "check.json").string(),
+                                         (host_->folder / "check.json").string(),
                                          "--progress"};
   std::vector<char*> argv;
   argv.reserve(args.size() + 1);
@@ -126,26 +135,27 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
     return false;
   }
   fcntl(pipe_fds[0], F_SETFL, fcntl(pipe_fds[0], F_GETFL) | O_NONBLOCK);
-  pid_ = pid;
-  progress_fd_ = pipe_fds[0];
+  host_->pid = pid;
+  host_->progress_fd = pipe_fds[0];
+  running_ = true;
   return true;
 }
 
 void CheckProcess::read_progress() {
-  if (progress_fd_ < 0) return;
+  if (host_->progress_fd < 0) return;
   std::array<char, 4096> buffer{};
   for (;;) {
-    const ssize_t n = read(progress_fd_, buffer.data(), buffer.size());
+    const ssize_t n = read(host_->progress_fd, buffer.data(), buffer.size());
     if (n <= 0) break;
-    if (progress_.size() < kProgressCap) progress_.append(buffer.data(), static_cast<size_t>(n));
+    if (host_->progress.size() < kProgressCap) host_->progress.append(buffer.data(), static_cast<size_t>(n));
   }
   // The last whole progress line: "meshedit grade: test 3 of 14 running: NAME" or "... done: NAME".
-  const size_t end = progress_.rfind('\n');
+  const size_t end = host_->progress.rfind('\n');
   if (end == std::string::npos) return;
-  const size_t begin = progress_.rfind(kProgressPrefix, end);
+  const size_t begin = host_->progress.rfind(kProgressPrefix, end);
   if (begin == std::string::npos) return;
   const std::string line =
-      progress_.substr(begin + std::strlen(kProgressPrefix), end - begin - std::strlen(kProgressPrefix));
+      host_->progress.substr(begin + std::strlen(kProgressPrefix), end - begin - std::strlen(kProgressPrefix));
   unsigned long number = 0, total = 0;  // NOLINT(google-runtime-int): sscanf's type
   int rest = 0;
   if (std::sscanf(line.c_str(), "%lu of %lu %n", &number, &total, &rest) < 2 || rest <= 0) return;
@@ -163,29 +173,30 @@ void CheckProcess::poll() {
   if (!running()) return;
   read_progress();
   int status = 0;
-  const pid_t ended = waitpid(pid_, &status, WNOHANG);
+  const pid_t ended = waitpid(host_->pid, &status, WNOHANG);
   if (ended == 0) return;
   read_progress();
-  finish(ended == pid_ ? status : -1);
+  finish(ended == host_->pid ? status : -1);
 }
 
 void CheckProcess::finish(int status) {
-  pid_ = -1;
+  host_->pid = -1;
+  running_ = false;
   ended_ = now();
-  if (progress_fd_ >= 0) close(progress_fd_);
-  progress_fd_ = -1;
+  if (host_->progress_fd >= 0) close(host_->progress_fd);
+  host_->progress_fd = -1;
   // status -1: the child was reaped elsewhere (SIGCHLD ignored): its report, when it wrote one, says how it went.
   std::error_code ec;
   const bool graded = status != -1 ? WIFEXITED(status) && WEXITSTATUS(status) == 0
-                                   : std::filesystem::exists(folder_ / "check.json", ec);
+                                   : std::filesystem::exists(host_->folder / "check.json", ec);
   if (graded) {
     try {
-      report_ = decode_grade_report(read_file(folder_ / "check.json"));
+      report_ = decode_grade_report(read_file(host_->folder / "check.json"));
     } catch (const std::exception& e) {  // a GradeError, or a FileError for a report that was never written
       problem_ = std::string("the grader's report could not be read: ") + e.what();
     }
   } else {
-    const std::string words = words_besides_progress(progress_);
+    const std::string words = words_besides_progress(host_->progress);
     if (!words.empty()) problem_ = words;
     else if (status != -1 && WIFSIGNALED(status))
       problem_ = "the grader was ended by signal " + std::to_string(WTERMSIG(status)) + " (" +
@@ -197,25 +208,26 @@ void CheckProcess::finish(int status) {
 
 void CheckProcess::stop() {
   if (running()) {
-    kill(-pid_, SIGKILL);
-    kill(pid_, SIGKILL);
+    kill(-host_->pid, SIGKILL);
+    kill(host_->pid, SIGKILL);
     int status = 0;
-    while (waitpid(pid_, &status, 0) < 0 && errno == EINTR) {
+    while (waitpid(host_->pid, &status, 0) < 0 && errno == EINTR) {
     }
-    pid_ = -1;
+    host_->pid = -1;
+    running_ = false;
     ended_ = now();
     stopped_ = true;
   }
-  if (progress_fd_ >= 0) close(progress_fd_);
-  progress_fd_ = -1;
+  if (host_->progress_fd >= 0) close(host_->progress_fd);
+  host_->progress_fd = -1;
   forget_files();
 }
 
 void CheckProcess::forget_files() {
-  if (folder_.empty()) return;
+  if (host_->folder.empty()) return;
   std::error_code ec;
-  std::filesystem::remove_all(folder_, ec);
-  folder_.clear();
+  std::filesystem::remove_all(host_->folder, ec);
+  host_->folder.clear();
 }
 
 }  // namespace meshedit

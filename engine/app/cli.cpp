@@ -31,9 +31,9 @@ struct CliCommand {
 // Every command, in the order --help lists them.
 const CliCommand kCommands[] = {
     {"", run_window,
-     "[FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua]\n"
+     "[FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua] [--check]\n"
      "                                     the window (a mesh, a .bez patch set or a .bzc curve); --suite: the\n"
-     "                                     suite File > Check my work runs"},
+     "                                     suite File > Check my work runs; --check: run it as the window opens"},
     {"demo", run_demo,
      "demo [FILE]                          load a mesh (default: the teapot) and show what the core does"},
     {"info", run_info,

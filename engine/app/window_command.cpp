@@ -1,6 +1,7 @@
-// `meshedit [FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua]`: the window. Runs the frame loop, feeds dropped
-// files to the app, and plays scripted actions (action_player.h) one per frame for GUI tests. --suite is the suite File
-// > Check my work runs instead of the course's (check_room.h).
+// `meshedit [FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua] [--check]`: the window. Runs the frame loop,
+// feeds dropped files to the app, and plays scripted actions (action_player.h) one per frame for GUI tests. --suite is
+// the suite File > Check my work runs instead of the course's (check_room.h); --check starts Check my work as the
+// window opens (a page's ?check).
 //
 // Settings (document/settings.h) are read at start and written when the window closes: the window opens at the size it
 // had (never larger than the screen's work area), with the columns, text size and theme it had. --size opens it at
@@ -63,6 +64,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   const auto script = take_option(args, "--actions");
   const auto size = take_option(args, "--size");
   const auto suite = take_option(args, "--suite");
+  const bool check_at_start = take_flag(args, "--check");
   reject_unknown_options(args);
   if (suite && !std::filesystem::is_regular_file(*suite)) throw UsageError("--suite " + *suite + ": no such file");
   if (args.size() > 1) throw UsageError("the window opens at most one file");
@@ -92,6 +94,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
   run->app.show_start_mesh();  // out of memory: an empty window that says so (editor_app.h)
   // On failure the cube (or the empty start) stays and the status line says why.
   if (!args.empty()) run->app.open(args[0]);
+  if (check_at_start) run->app.run_command(CommandId::CheckMyWork);
 
   const auto frame = [run] {
     ActionPlayer& player = run->player;

@@ -70,6 +70,7 @@ std::string check_panel_text(const CheckPanelView& view) {
     case CheckPanelView::State::NotRun: line(kNotRun); break;
     case CheckPanelView::State::Running:
       line("Running: " + std::to_string(view.done) + " of " + std::to_string(view.total) + " tests done");
+      if (!view.running_test.empty()) line("now: test " + std::to_string(view.done + 1) + ", " + view.running_test);
       break;
     case CheckPanelView::State::Stopped: line(kStopped); break;
     case CheckPanelView::State::Problem:
