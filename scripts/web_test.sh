@@ -6,7 +6,8 @@
 # real time over the DevTools protocol, with the DRIVER OPTIONS (--pick FILE, --drop FILE, --download NAME: a file for
 # the page's picker, a file dropped on the page, a file the page must download; --ready, --click-panel, --keys,
 # --viewport...: see page_driver.py), and reads the verdict from the page. Passes when the page reports "actions: all
-# expectations held". Keeps the page's last screenshot, its downloads and the server's log in build-web/test/. Exit
+# expectations held". MESHEDIT_PAGE_QUERY adds to the page's URL parameters ("check": ?check, Check my work at start).
+# Keeps the page's last screenshot, its downloads and the server's log in build-web/test/. Exit
 # status: 0 passed, 1 failed, 77 skipped (no emscripten, no chromium, or neither ../shared/vendor nor a network to
 # fetch the pinned sources: CTest's skip code).
 set -euo pipefail
@@ -39,7 +40,8 @@ for _ in $(seq 50); do
 done
 
 encoded=$(python3 -c 'import sys, urllib.parse; print(urllib.parse.quote(open(sys.argv[1]).read()))' "$actions")
-if python3 tests/web/page_driver.py "http://127.0.0.1:$port/?file=$file&actions=$encoded" \
+query="file=$file${MESHEDIT_PAGE_QUERY:+&$MESHEDIT_PAGE_QUERY}"
+if python3 tests/web/page_driver.py "http://127.0.0.1:$port/?$query&actions=$encoded" \
   --screenshot "$out/$name.png" --downloads "$out/downloads" "$@"; then
   echo "web_test: ${file:-the start screen} with $actions: all expectations held"
   exit 0

@@ -5,6 +5,7 @@
 #include <string>
 
 #include "app/action_verbs.h"
+#include "app/check_room.h"
 #include "app/editor_app.h"
 #include "document/exception_report.h"
 
@@ -15,23 +16,31 @@ namespace {
 // run in the step after the frame that follows the action before them, not in that action's step.
 bool reads_a_drawn_frame(const ScriptedAction& a) { return a.verb == "expect-gpu-update" || a.verb == "expect-mine"; }
 
-// Whether the status line contains the words of a wait-message after its number of frames.
-bool status_contains(EditorApp& app, const ScriptedAction& a) {
-  return app.document().message.text.find(a.words(1)) != std::string::npos;
+// What a wait reads: the status line (wait-message) or the Check tab's words (wait-check).
+std::string waited_text(EditorApp& app, const ScriptedAction& a) {
+  return a.verb == "wait-check" ? app.check_room().text() : app.document().message.text;
+}
+
+// Whether that text contains the words of the wait after its number of frames.
+bool wait_over(EditorApp& app, const ScriptedAction& a) {
+  return waited_text(app, a).find(a.words(1)) != std::string::npos;
 }
 
 }  // namespace
 
 bool ActionPlayer::step(EditorApp& app) {
-  if (waiting_for_message_) {
+  if (waiting_for_text_) {
     bool arrived = false;
     run_guarded(app.document(), [&] {
-      const ScriptedAction& a = *waiting_for_message_;
-      arrived = status_contains(app, a);
+      const ScriptedAction& a = *waiting_for_text_;
+      arrived = wait_over(app, a);
       if (!arrived && --wait_frames_ > 0) return;
-      waiting_for_message_ = nullptr;
+      waiting_for_text_ = nullptr;
       wait_frames_ = 0;
-      if (!arrived) fail(a, "the status line is '" + app.document().message.text + "' after " + a.args[0] + " frames");
+      if (!arrived) {
+        fail(a, std::string(a.verb == "wait-check" ? "the Check tab says '" : "the status line is '") +
+                    waited_text(app, a) + "' after " + a.args[0] + " frames");
+      }
       arrived = true;  // the wait is over either way
     });
     if (!arrived) return true;
@@ -54,7 +63,7 @@ bool ActionPlayer::step(EditorApp& app) {
       }
     });
     if (quit) return false;
-    if (waiting_for_message_ || wait_frames_ > 0) return true;  // what follows a wait runs after it
+    if (waiting_for_text_ || wait_frames_ > 0) return true;  // what follows a wait runs after it
     const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0 &&
                                !reads_a_drawn_frame(actions_[next_]);
     if (!checks_follow) return true;
@@ -73,12 +82,12 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
     wait_frames_ = std::stoi(a.args[0]);
     return true;
   }
-  if (a.verb == "wait-message") {
+  if (a.verb == "wait-message" || a.verb == "wait-check") {
     const int frames = std::stoi(a.args[0]);
-    if (a.args.size() < 2 || frames < 1) throw std::runtime_error("wait-message takes a number of frames and a text");
-    if (status_contains(app, a)) return true;
+    if (a.args.size() < 2 || frames < 1) throw std::runtime_error(a.verb + " takes a number of frames and a text");
+    if (wait_over(app, a)) return true;
     wait_frames_ = frames;
-    waiting_for_message_ = &a;
+    waiting_for_text_ = &a;
     return true;
   }
   const ActionVerb* verb = find_action_verb(a.verb);

@@ -7,9 +7,10 @@
 // report is an Error in the status line (document/exception_report.h). `frames N` makes the next N steps wait.
 // Checks (`expect-*`) run in the step of the action before them, so they need no frame of their own, except the checks
 // of what a drawn frame computed (expect-gpu-update, expect-mine), which run after the frame that follows that action,
-// and the checks after a wait (`frames`, `wait-message`), which run once it is over.
+// and the checks after a wait (`frames`, `wait-message`, `wait-check`), which run once it is over.
 // `wait-message N TEXT` holds the script until the status line contains TEXT (what arrives from outside, such as a
-// file the page receives), checked once per frame, and fails after N frames without it.
+// file the page receives), checked once per frame, and fails after N frames without it; `wait-check N TEXT` the same
+// for the Check tab's words (a check's progress).
 #pragma once
 
 #include <cstddef>
@@ -43,7 +44,7 @@ class ActionPlayer {
   std::ostream& log_;
   size_t next_ = 0;
   int wait_frames_ = 0;
-  const ScriptedAction* waiting_for_message_ = nullptr;  // a wait-message in progress
+  const ScriptedAction* waiting_for_text_ = nullptr;  // a wait-message or wait-check in progress
   int failures_ = 0;
 };
 

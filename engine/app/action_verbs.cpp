@@ -514,6 +514,10 @@ const ActionVerb kVerbs[] = {
      "wait-message N TEXT...   waits, a frame at a time, until the status line contains TEXT (what arrives from "
      "outside the script, such as a file the page receives); fails after N frames without it",
      nullptr},
+    {"wait-check", -1,
+     "wait-check N TEXT...   waits, a frame at a time, until the Check tab's words contain TEXT (a check's progress: "
+     "the test running now); fails after N frames without them",
+     nullptr},
     {"quit", 0, "quit   closes the window (the script's end does too)", nullptr},
     {"key", 1,
      "key F | key ctrl+Z | key shift+L   a key press (a letter, space, escape, grave, equal (=), minus (-), "

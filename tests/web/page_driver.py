@@ -2,15 +2,15 @@
 """page_driver.py: opens the web page in headless Chromium and drives it over the DevTools protocol (a pipe, the
 standard library only), in real time, until the page's test hook reports the verdict of its ?actions= script.
 
-    page_driver.py URL [--pick FILE] [--drop FILE] [--download NAME --downloads DIR [--download-contains TEXT]]
+    page_driver.py URL [--pick FILE] [--drop FILE...] [--download NAME --downloads DIR [--download-contains TEXT]]
                        [--ready PATH] [--click-panel NAME] [--keys KEY...] [--viewport WxH] [--screenshot PNG]
-                       [--timeout S] [--then ACTIONS]
+                       [--check-results JSON] [--timeout S] [--then ACTIONS]
 
 --pick FILE answers the page's file picker with FILE when the program opens it (the script's `open-picker`): the
   browser's own chooser is intercepted and given the file, as a person choosing it would. Until it opens, the page
   gets a user gesture every poll, as a click would give it (a browser shows a picker only shortly after one).
---drop FILE drops FILE on the middle of the page once the program has drawn its first frame (or once the script is
-  ready, with --ready), as a person dragging it from a file manager does.
+--drop FILE... drops the files (together, in one drop) on the middle of the page once the program has drawn its first
+  frame (or once the script is ready, with --ready), as a person dragging them from a file manager does.
 --download NAME expects the page to download a file named NAME into DIR: a .png must be a PNG of the canvas's size;
   with --download-contains TEXT, the downloaded bytes must contain TEXT (a student's .lua).
 --ready PATH: the drop, the click and the keys wait until the script has written PATH in the page's file system (its
@@ -21,6 +21,8 @@ standard library only), in real time, until the page's test hook reports the ver
 --viewport WxH makes the page's viewport W x H CSS pixels at a device pixel ratio of 1 (the canvas W x H pixels),
   as a desktop window of that size; headless Chromium's own is smaller than its window.
 --screenshot PNG keeps what the page shows when the script has ended.
+--check-results JSON writes the text of the page's <script id="check-results"> (the last Check my work's
+  results.json) to JSON when the script has ended; the page must have one.
 --timeout S: the seconds the script may take (120); a page busy in one long frame answers no poll until it ends.
 --then ACTIONS loads the page again, once its script held, in the same browser profile (its storage kept, as a
   student's reload keeps it), with the actions of the file ACTIONS in place of the URL's, and waits for their verdict.
@@ -132,6 +134,9 @@ PAGE_STATE = """JSON.stringify({
   cssWidth: window.innerWidth,
   cssHeight: window.innerHeight})"""
 
+# The last Check my work's results.json, or null when the page has none.
+CHECK_RESULTS = "(document.getElementById('check-results') || {}).textContent ?? null"
+
 
 def png_size(path):
     with open(path, "rb") as f:
@@ -161,7 +166,7 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     parser.add_argument("url")
     parser.add_argument("--pick")
-    parser.add_argument("--drop")
+    parser.add_argument("--drop", nargs="+")
     parser.add_argument("--download")
     parser.add_argument("--downloads")
     parser.add_argument("--download-contains")
@@ -170,6 +175,7 @@ def main():
     parser.add_argument("--keys", nargs="+", default=[])
     parser.add_argument("--viewport")
     parser.add_argument("--screenshot")
+    parser.add_argument("--check-results")
     parser.add_argument("--timeout", type=float, default=120.0)
     parser.add_argument("--then")
     args = parser.parse_args()
@@ -239,10 +245,10 @@ def main():
                 continue
             if args.drop:
                 x, y = state["cssWidth"] / 2, state["cssHeight"] / 2
-                data = {"items": [], "files": [os.path.abspath(args.drop)], "dragOperationsMask": 1}
+                data = {"items": [], "files": [os.path.abspath(f) for f in args.drop], "dragOperationsMask": 1}
                 for kind in ("dragEnter", "dragOver", "drop"):
                     browser.call("Input.dispatchDragEvent", {"type": kind, "x": x, "y": y, "data": data}, session)
-                print("page_driver: dropped " + args.drop + " on the page")
+                print("page_driver: dropped " + " ".join(args.drop) + " on the page")
             if args.click_panel:
                 x, y = page_input.panel_middle(layout, args.click_panel)
                 css_per_pixel = state["cssWidth"] / state["width"]  # the layout counts the canvas's pixels
@@ -289,6 +295,16 @@ def main():
             print("page_driver: after loading again: " + verdict)
             ok = verdict == "actions: all expectations held"
 
+        if args.check_results:
+            reply = browser.call("Runtime.evaluate", {"expression": CHECK_RESULTS, "returnByValue": True}, session)
+            text = reply["result"].get("value")
+            if text is None:
+                print("page_driver: the page has no <script id=\"check-results\">")
+                ok = False
+            else:
+                with open(args.check_results, "w") as f:
+                    f.write(text)
+                print("page_driver: the page's check results are in " + args.check_results)
         if args.screenshot:
             shot = browser.call("Page.captureScreenshot", {"format": "png"}, session)
             with open(args.screenshot, "wb") as f:
