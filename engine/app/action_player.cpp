@@ -29,6 +29,10 @@ bool wait_over(EditorApp& app, const ScriptedAction& a) {
 }  // namespace
 
 bool ActionPlayer::step(EditorApp& app) {
+  if (waiting_for_run_) {
+    if (app.exercises().running()) return true;
+    waiting_for_run_ = false;
+  }
   if (waiting_for_text_) {
     bool arrived = false;
     run_guarded(app.document(), [&] {
@@ -63,7 +67,7 @@ bool ActionPlayer::step(EditorApp& app) {
       }
     });
     if (quit) return false;
-    if (waiting_for_text_ || wait_frames_ > 0) return true;  // what follows a wait runs after it
+    if (waiting_for_text_ || wait_frames_ > 0 || waiting_for_run_) return true;  // what follows a wait runs after it
     const bool checks_follow = next_ < actions_.size() && actions_[next_].verb.rfind("expect-", 0) == 0 &&
                                !reads_a_drawn_frame(actions_[next_]);
     if (!checks_follow) return true;
@@ -92,7 +96,10 @@ bool ActionPlayer::run(EditorApp& app, const ScriptedAction& a) {
   }
   const ActionVerb* verb = find_action_verb(a.verb);
   if (!verb || !verb->run) throw std::runtime_error("unknown action '" + a.verb + "'");
-  if (const std::string failure = verb->run(app, a); !failure.empty()) fail(a, failure);
+  const bool was_running = app.exercises().running();
+  const std::string failure = verb->run(app, a);
+  if (!was_running && app.exercises().running() && a.verb != "start-mine") waiting_for_run_ = true;
+  if (!failure.empty()) fail(a, failure);
   return true;
 }
 

@@ -10,7 +10,9 @@
 // and the checks after a wait (`frames`, `wait-message`, `wait-check`), which run once it is over.
 // `wait-message N TEXT` holds the script until the status line contains TEXT (what arrives from outside, such as a
 // file the page receives), checked once per frame, and fails after N frames without it; `wait-check N TEXT` the same
-// for the Check tab's words (a check's progress).
+// for the Check tab's words (a check's progress). An action that starts the student's code on its thread (run-mine,
+// lesson-show-mine, check-open: ExerciseSession::start_mine) holds the script until the code has ended and its run
+// is in the document, frame after frame; start-mine alone does not (what follows it runs while the code does).
 #pragma once
 
 #include <cstddef>
@@ -45,6 +47,7 @@ class ActionPlayer {
   size_t next_ = 0;
   int wait_frames_ = 0;
   const ScriptedAction* waiting_for_text_ = nullptr;  // a wait-message or wait-check in progress
+  bool waiting_for_run_ = false;                      // an action started the student's code: held until it ends
   int failures_ = 0;
 };
 

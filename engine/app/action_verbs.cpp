@@ -320,9 +320,15 @@ std::string exercise(EditorApp& app, const Action& a) {
 template <bool Mine>
 std::string run_exercise(EditorApp& app, const Action&) {
   ExerciseSession& session = app.exercises();
-  return (Mine ? session.run_mine(app.document(), app.selection())
+  return (Mine ? session.start_mine(app.document(), app.selection())
                : session.run_reference(app.document(), app.selection()))
       .reason;
+}
+
+std::string stop_mine(EditorApp& app, const Action&) {
+  if (!app.exercises().running()) return "no code of yours is running";
+  app.exercises().stop_running();
+  return "";
 }
 
 std::string run_mine_fails(EditorApp& app, const Action& a) {
@@ -589,9 +595,14 @@ const ActionVerb kVerbs[] = {
      "exercise flip|split|...|curve|patch FOLDER   the exercise and the folder its student files are "
      "read from (curve and patch: where the views' \"mine\", key M, reads them)",
      exercise},
-    {"run-mine", 0, "run-mine   the Exercises tab's Run mine", run_exercise<true>},
+    {"run-mine", 0, "run-mine   the Exercises tab's Run mine; what follows waits for its end", run_exercise<true>},
+    {"start-mine", 0, "start-mine   the Exercises tab's Run mine; what follows runs while the code does",
+     run_exercise<true>},
+    {"stop-mine", 0, "stop-mine   the Exercises tab's Stop, while the code of a Run mine runs", stop_mine},
     {"run-mine-fails", -1,
-     "run-mine-fails TEXT...   the Exercises tab's Run mine, refused with a reason containing TEXT", run_mine_fails},
+     "run-mine-fails TEXT...   the Exercises tab's Run mine, run to its end at once, refused or failed with a reason "
+     "containing TEXT",
+     run_mine_fails},
     {"run-reference", 0, "run-reference   the Exercises tab's Run the reference", run_exercise<false>},
     {"replay-start", 0, "replay-start   starts the replay of the last run's writes", replay_start},
     {"replay-step", 1, "replay-step K   the replay at write K", replay_step},

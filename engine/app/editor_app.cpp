@@ -60,7 +60,8 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   view_.advance_edit_animation(frame_ms);  // before this frame's actions: an edit they make starts at time 0
   check_.poll();
-  read_input();  // in the view placed by the last frame
+  exercises_.session().poll(document_.doc(), document_.selection());  // a Run mine whose code has ended
+  read_input();                                                       // in the view placed by the last frame
   lessons_.update(frame_ms);
   view_.measure_frame(frame_ms);
 
@@ -115,7 +116,8 @@ void EditorApp::click(int x, int y) {
 }
 
 bool EditorApp::animating() const {
-  return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating() || check_.running();
+  return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating() || check_.running() ||
+         exercises_.session().running();
 }
 
 bool EditorApp::repair_spots_current() const { return document_.repair_spots_current(view_.mode() == ViewMode::Mesh); }

@@ -40,7 +40,7 @@ Check EditorApp::open_failing_case(size_t row) {
     exercises.set_exercise(*exercise);
     bring_exercises_tab_forward();
     exercises_.panel().bring_table_into_view = true;
-    return exercises.run_mine(doc, document_.selection());
+    return exercises.start_mine(doc, document_.selection());
   } catch (const std::bad_alloc& e) {
     report_exception(doc, e);
     return Check::no(kMemoryRanOut);

@@ -3,7 +3,7 @@
 // runs.
 //   - flip, split, normals, upsample: the your_turn's input mesh goes into the document as a lesson's show() puts it
 //     there (ViewRoom::show_lesson_mesh: the view kept, fitted only when it was not the mesh view), its element is
-//     selected, the Exercises tab takes the your_turn's exercise and runs mine on it (ExerciseSession::run_mine: the
+//     selected, the Exercises tab takes the your_turn's exercise and runs mine on it (ExerciseSession::start_mine: the
 //     changed pointers mine vs reference, the validation, the write-by-write replay), and the tab comes to the front of
 //     the right column, scrolled so the changed-pointers table is in sight.
 //   - a scripted exercise on points or a patch: the Exercises tab takes it with the your_turn's input (its control
@@ -74,7 +74,7 @@ Check EditorApp::show_your_turn_mine() {
       exercises.set_exercise(verdict.exercise);
       exercises.set_values_input(input, "the lesson's input: " + verdict.input);
       bring_exercises_tab_forward();
-      return exercises.run_mine(doc, document_.selection());
+      return exercises.start_mine(doc, document_.selection());
     }
     if (!input.mesh) return Check::no("the your_turn kept no mesh");  // every mesh your_turn keeps one
     exercises.finish_replay(doc);
@@ -83,7 +83,7 @@ Check EditorApp::show_your_turn_mine() {
     exercises.set_exercise(verdict.exercise);
     bring_exercises_tab_forward();
     exercises_.panel().bring_table_into_view = true;
-    return exercises.run_mine(doc, document_.selection());
+    return exercises.start_mine(doc, document_.selection());
   } catch (const std::bad_alloc& e) {
     report_exception(doc, e);
     return Check::no(kMemoryRanOut);  // fits std::string's inline buffer: no allocation

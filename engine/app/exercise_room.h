@@ -35,6 +35,7 @@ class ExerciseRoom {
   explicit ExerciseRoom(DocumentRoom& document) : document_(document) {}
 
   ExerciseSession& session() { return session_; }
+  const ExerciseSession& session() const { return session_; }
   ExercisePanelState& panel() { return panel_; }
   StudentEditorState& editor() { return editor_; }
 

@@ -4,14 +4,19 @@
 // (replay frames, no history), and every replay frame is rebuilt from the run's before-mesh with core replay(),
 // so stepping backwards is as exact as stepping forwards.
 //
-// A run is prepared (prepare_run: everything that can fail, the run's mesh copied out of its report) and then taken
-// (take_run: apply_operation, which never throws, and messages that fall back to kMemoryRanOut), as the document's
-// actions do; run() turns a std::bad_alloc from the preparation into an Error with nothing done.
+// A run is begun (begin_run: the checks, the label, the reference, the student's code lent to it), its code run
+// (PendingRun::run_code, on the caller's thread for run(), on the run's own for start_mine), ended (end_run: the
+// comparison and the texts, the run's mesh copied out of its report) and then taken (take_run: apply_operation, which
+// never throws, and messages that fall back to kMemoryRanOut), as the document's actions do; a std::bad_alloc before
+// take_run becomes an Error with nothing done.
 #include "document/exercise_session.h"
 
 #include <algorithm>
+#include <atomic>
+#include <chrono>
 #include <exception>
 #include <new>
+#include <stdexcept>
 #include <type_traits>
 #include <utility>
 
@@ -92,8 +97,51 @@ std::vector<Exercise> mesh_exercises() {
   return all;
 }
 
+struct ExerciseSession::PendingRun {
+  PreparedRun run;  // its result so far: the exercise, mine or the reference, the label, the input
+  bool on_values = false;
+  std::string target;  // " e7", " (fixture)" or ""
+  ExerciseOutcome reference;
+  std::unique_ptr<StudentCode> code;  // mine: lent by the student file for the run
+  uint64_t code_serial = 0;
+  // Written by run_code (on the run's thread), read once it has ended.
+  ExerciseOutcome mine;
+  bool out_of_memory = false;
+  std::string thrown;
+  // The document's state when it started (a started run only).
+  uint64_t generation = 0;
+  uint64_t version = 0;
+  std::chrono::steady_clock::time_point started;
+  std::atomic<bool> stop{false};  // set by stop_running, read by the code's hook
+
+  // The student's code on the input; touches nothing but this run. Never throws.
+  void run_code() noexcept {
+    LuaRuntime& runtime = code->runtime();
+    runtime.set_stop_request(&stop);
+    try {
+      RunOptions options;
+      options.record_edits = true;
+      mine = code->run(run.result.exercise, run.result.input, options);
+    } catch (const std::bad_alloc&) {
+      out_of_memory = true;
+    } catch (const std::exception& e) {  // StudentCode::run promises not to throw; a bug must not close the window
+      try {
+        thrown = e.what();
+      } catch (const std::bad_alloc&) {
+        out_of_memory = true;
+      }
+    }
+    runtime.set_stop_request(nullptr);
+  }
+};
+
 ExerciseSession::ExerciseSession(std::filesystem::path folder)
     : folder_(std::move(folder)), student_(folder_ / exercise_info(exercise_).file) {}
+
+ExerciseSession::~ExerciseSession() {
+  stop_running();
+  work_.take();
+}
 
 void ExerciseSession::set_folder(std::filesystem::path folder) {
   folder_ = std::move(folder);
@@ -144,10 +192,18 @@ Check ExerciseSession::run_mine(MeshDocument& doc, Selection& selection) { retur
 Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { return run(doc, selection, false); }
 
 Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
+  if (pending_) return refuse_while_running(doc);
   std::optional<PreparedRun> prepared;
   try {
-    Check refused = prepare_run(doc, selection, mine, prepared);
-    if (!prepared) return refused;
+    std::unique_ptr<PendingRun> pending;
+    Check refused = begin_run(doc, selection, mine, pending);
+    if (!pending) return refused;
+    if (mine) {
+      pending->run_code();
+      student_.give_back(std::move(pending->code), pending->code_serial);
+    }
+    Check ended = end_run(doc, *pending, prepared);
+    if (!prepared) return ended;
   } catch (const std::exception& e) {
     // Nothing was done: the document is as it was (or as finish_replay left it, whole). The report needs no memory.
     report_exception(doc, e);
@@ -156,8 +212,87 @@ Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
   return take_run(doc, selection, std::move(*prepared));
 }
 
-Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool mine,
-                                   std::optional<PreparedRun>& prepared) {
+Check ExerciseSession::refuse_while_running(MeshDocument& doc) const {
+  Check no = Check::no("your code is still running (" + pending_->run.result.label + "): wait for it, or press Stop");
+  set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
+  return no;
+}
+
+Check ExerciseSession::start_mine(MeshDocument& doc, Selection& selection) {
+  if (pending_) return refuse_while_running(doc);
+  try {
+    std::unique_ptr<PendingRun> pending;
+    Check refused = begin_run(doc, selection, true, pending);
+    if (!pending) return refused;
+    pending->generation = doc.generation;
+    pending->version = doc.mesh.version();
+    pending->started = std::chrono::steady_clock::now();
+    set_message(doc, Severity::Info, pending->run.result.label + ": your code is running (Stop ends it)");
+    PendingRun& run = *pending;
+    pending_ = std::move(pending);
+    try {
+      work_.start([&run] { run.run_code(); });
+    } catch (...) {  // no thread to be had: nothing ran
+      student_.give_back(std::move(pending_->code), pending_->code_serial);
+      pending_.reset();
+      throw;
+    }
+  } catch (const std::exception& e) {
+    report_exception(doc, e);
+    return Check::no(kMemoryRanOut);
+  }
+  if (work_.done()) return take_pending(doc, selection);  // a host without threads ran it at once
+  return Check::yes();
+}
+
+double ExerciseSession::running_seconds() const {
+  if (!pending_) return 0.0;
+  return std::chrono::duration<double>(std::chrono::steady_clock::now() - pending_->started).count();
+}
+
+const std::string& ExerciseSession::running_label() const {
+  static const std::string kNone;
+  return pending_ ? pending_->run.result.label : kNone;
+}
+
+void ExerciseSession::stop_running() {
+  if (pending_) pending_->stop.store(true, std::memory_order_relaxed);
+}
+
+bool ExerciseSession::poll(MeshDocument& doc, Selection& selection) {
+  if (!pending_ || !work_.done()) return false;
+  take_pending(doc, selection);
+  return true;
+}
+
+Check ExerciseSession::wait_for_run(MeshDocument& doc, Selection& selection) {
+  if (!pending_) return Check::yes();
+  return take_pending(doc, selection);  // take() waits for the thread
+}
+
+Check ExerciseSession::take_pending(MeshDocument& doc, Selection& selection) {
+  work_.take();
+  const std::unique_ptr<PendingRun> pending = std::move(pending_);
+  student_.give_back(std::move(pending->code), pending->code_serial);
+  if (doc.generation != pending->generation || doc.mesh.version() != pending->version) {
+    Check no = Check::no(pending->run.result.label +
+                         ": the mesh changed while your code ran, so its result is left out: run it again");
+    set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
+    return no;
+  }
+  std::optional<PreparedRun> prepared;
+  try {
+    Check ended = end_run(doc, *pending, prepared);
+    if (!prepared) return ended;
+  } catch (const std::exception& e) {
+    report_exception(doc, e);
+    return Check::no(kMemoryRanOut);
+  }
+  return take_run(doc, selection, std::move(*prepared));
+}
+
+Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool mine,
+                                 std::unique_ptr<PendingRun>& pending) {
   finish_replay(doc);
   const char* who = mine ? "mine" : "reference";
   // An instructor's exercise whose definition was saved since: its new version runs (or its error is shown).
@@ -183,28 +318,52 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
     return refused;
   }
 
-  PreparedRun run;
-  ExerciseRun& result = run.result;
+  auto made = std::make_unique<PendingRun>();
+  ExerciseRun& result = made->run.result;
   result.exercise = exercise_;
   result.mine = mine;
   result.serial = runs_ + 1;
-  const std::string target = on_values                     ? " (" + values_what + ")"
-                             : input.value.element.valid() ? " " + format_id(input.value.element)
-                                                           : std::string();
-  result.label = who + std::string(": ") + operation_word(exercise_) + target;
+  made->on_values = on_values;
+  made->target = on_values                     ? " (" + values_what + ")"
+                 : input.value.element.valid() ? " " + format_id(input.value.element)
+                                               : std::string();
+  result.label = who + std::string(": ") + operation_word(exercise_) + made->target;
   result.input = input.value;
   try {
     if (mine) {
-      RunOptions options;
-      options.record_edits = true;
-      result.report = check_exercise(*student_.code(), exercise_, result.input, options);
+      made->reference = meshedit::run_reference(exercise_, result.input);
     } else {
       result.report.exercise = exercise_;
       result.report.reference = meshedit::run_reference(exercise_, result.input);
     }
   } catch (const std::bad_alloc&) {
     throw;                             // run() reports it: nothing was done
-  } catch (const std::exception& e) {  // check_exercise promises not to throw; a bug must not close the window
+  } catch (const std::exception& e) {  // the reference promises not to throw; a bug must not close the window
+    run_.reset();
+    set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
+    return Check::no(e.what());
+  }
+  if (mine) {
+    made->code_serial = student_.serial();
+    made->code = student_.lend();
+  }
+  pending = std::move(made);
+  return Check::yes();
+}
+
+Check ExerciseSession::end_run(MeshDocument& doc, PendingRun& pending, std::optional<PreparedRun>& prepared) {
+  PreparedRun& run = pending.run;
+  ExerciseRun& result = run.result;
+  const bool mine = result.mine;
+  if (pending.out_of_memory) throw std::bad_alloc();  // under the student's code, not of its doing: nothing is done
+  try {
+    if (!pending.thrown.empty()) throw std::runtime_error(pending.thrown);
+    if (mine) {
+      result.report = compare(result.exercise, result.input, std::move(pending.mine), std::move(pending.reference));
+    }
+  } catch (const std::bad_alloc&) {
+    throw;                             // run() reports it: nothing was done
+  } catch (const std::exception& e) {  // the run promises not to throw; a bug must not close the window
     run_.reset();
     set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
     return Check::no(e.what());
@@ -216,13 +375,13 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
   // the text: a student's own error("memory ran out") is the student's error.
   if (outcome.out_of_memory) throw std::bad_alloc();
   const bool failed = !outcome.error.empty();
-  if (failed && mine) result.label = "mine (error): " + std::string(operation_word(exercise_)) + target;
+  if (failed && mine) result.label = "mine (error): " + std::string(operation_word(result.exercise)) + pending.target;
   // The status line says what happened beyond "N fields changed": made now, before the document changes.
   if (failed) {
     run.verdict = outcome.error;
   } else if (!mine) {
     run.verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
-    if (exercise_ == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
+    if (result.exercise == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
   } else {
     run.verdict = result.report.summary();
     if (outcome.validation && !outcome.validation->ok()) {
@@ -231,7 +390,7 @@ Check ExerciseSession::prepare_run(MeshDocument& doc, Selection& selection, bool
   }
   run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
   run.unchanged_text =
-      on_values ? result.label + ": " + run.verdict : result.label + ": nothing changed (" + run.verdict + ")";
+      pending.on_values ? result.label + ": " + run.verdict : result.label + ": nothing changed (" + run.verdict + ")";
   run.returned = failed ? Check::no(outcome.error) : Check::yes();
   if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) run.mesh = *outcome.mesh;  // the report keeps its own
   prepared = std::move(run);
@@ -274,6 +433,7 @@ const std::vector<RecordedEdit>& ExerciseSession::edits() const {
 size_t ExerciseSession::replay_length() const { return edits().size(); }
 
 bool ExerciseSession::can_replay(const MeshDocument& doc) const {
+  if (pending_) return false;  // a run is running: its result replaces the last run's
   if (!run_ || !run_->mine || !run_->applied || edits().empty() || !run_->input.mesh) return false;
   if (replaying_) return true;
   return doc.generation == run_->generation && doc.mesh.version() == run_->version;
@@ -286,6 +446,7 @@ void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string lab
 }
 
 Check ExerciseSession::start_replay(MeshDocument& doc) {
+  if (pending_) return refuse_while_running(doc);
   if (!can_replay(doc)) {
     const Check no = Check::no("nothing to replay: run mine on a mesh exercise first (and do not edit in between)");
     set_message(doc, Severity::Warning, no.reason);

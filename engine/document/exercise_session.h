@@ -26,6 +26,12 @@
 //   changes the document during a replay, the replay is dropped (sync()) rather than overwrite that change.
 //   Callers should finish_replay() before their own edits and undo/redo (a no-op when no replay runs): an undo
 //   in the middle of a replay would put the partly replayed state on the redo list.
+// - start_mine runs the student's code off the window's thread (background_work.h): the file's StudentCode is lent to
+//   the run (StudentFile::lend) and nothing else of the session is touched by it; poll() takes the run into the
+//   document as run_mine does, unless the document changed meanwhile (then the result is left out, and the status
+//   line says so). While a run is running, every other run and replay is refused (the status line says why), and
+//   stop_running() asks the code to stop at its next line ("stopped: you pressed Stop": an error of the run, with its
+//   writes up to there to replay). The destructor stops a running run and waits for it.
 #pragma once
 
 #include <cstddef>
@@ -39,6 +45,7 @@
 #include "core/check.h"
 #include "core/edit_log.h"
 #include "core/halfedge_mesh.h"
+#include "document/background_work.h"
 #include "document/mesh_document.h"
 #include "document/selection.h"
 #include "document/student_file.h"
@@ -66,6 +73,9 @@ struct ExerciseRun {
 class ExerciseSession {
  public:
   explicit ExerciseSession(std::filesystem::path folder = default_student_folder());
+  ~ExerciseSession();
+  ExerciseSession(const ExerciseSession&) = delete;
+  ExerciseSession& operator=(const ExerciseSession&) = delete;
 
   const std::filesystem::path& folder() const { return folder_; }
   void set_folder(std::filesystem::path folder);  // forgets the loaded code (the next run loads afresh)
@@ -93,6 +103,20 @@ class ExerciseSession {
   // Ends a replay in progress first.
   Check run_mine(MeshDocument& doc, Selection& selection);
   Check run_reference(MeshDocument& doc, Selection& selection);
+
+  // Run mine as the window's button runs it: everything run_mine checks first, then the student's code on a thread of
+  // its own while the window draws (at once where the host has no threads: BackgroundWork::threaded). Returns the
+  // refusal, or yes once it runs (the run's own Check where it ran at once).
+  Check start_mine(MeshDocument& doc, Selection& selection);
+  bool running() const { return pending_ != nullptr; }
+  double running_seconds() const;            // since start_mine, while running()
+  const std::string& running_label() const;  // "mine: flip e7", while running()
+  void stop_running();
+  // Once a started run has ended: takes it into the document as run_mine does and returns true. Call once per frame.
+  bool poll(MeshDocument& doc, Selection& selection);
+  // Waits for the started run's code to end and takes it as poll() does, returning what run_mine would (yes when no
+  // run was started). For tests, and a host that needs the result before its next frame.
+  Check wait_for_run(MeshDocument& doc, Selection& selection);
 
   const std::optional<ExerciseRun>& last_run() const { return run_; }
 
@@ -123,10 +147,19 @@ class ExerciseSession {
     std::optional<HalfedgeMesh> mesh;  // the run's mesh, when it differs from the document's
   };
 
+  // A run between its start and its result: the checks done, the reference run, the student's code lent to it.
+  struct PendingRun;
+
   Check run(MeshDocument& doc, Selection& selection, bool mine);
-  // Everything that can fail: the input, the student's code or the reference, the label and the texts. A refusal is
-  // returned with `prepared` left empty (its message set); std::bad_alloc escapes with the document as it was.
-  Check prepare_run(MeshDocument& doc, Selection& selection, bool mine, std::optional<PreparedRun>& prepared);
+  // Everything before the student's code: the input, the file loaded, the label, the reference. A refusal is returned
+  // with `pending` left empty (its message set); std::bad_alloc escapes with the document as it was.
+  Check begin_run(MeshDocument& doc, Selection& selection, bool mine, std::unique_ptr<PendingRun>& pending);
+  // Everything after it: the comparison and the texts, as a PreparedRun (or a refusal with `prepared` left empty);
+  // std::bad_alloc escapes with the document as it was.
+  Check end_run(MeshDocument& doc, PendingRun& pending, std::optional<PreparedRun>& prepared);
+  // A started run that has ended, into the document (or left out when the document changed since it started).
+  Check take_pending(MeshDocument& doc, Selection& selection);
+  Check refuse_while_running(MeshDocument& doc) const;
   // Puts the prepared run in the document (apply_operation, which never throws) and says so; cannot fail.
   Check take_run(MeshDocument& doc, Selection& selection, PreparedRun&& run) noexcept;
   void show(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::optional<HalfedgeMesh> from);
@@ -147,6 +180,9 @@ class ExerciseSession {
   size_t position_ = 0;
   uint64_t shown_generation_ = 0;  // what the replay last put in the document
   uint64_t shown_version_ = 0;
+
+  std::unique_ptr<PendingRun> pending_;  // the started run, until poll() takes it
+  BackgroundWork work_;                  // last: destroyed first, it waits for the thread that uses pending_
 };
 
 }  // namespace meshedit

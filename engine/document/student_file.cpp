@@ -21,6 +21,10 @@ void StudentFile::set_path(std::filesystem::path path) {
   attempted_ = false;
 }
 
+void StudentFile::give_back(std::unique_ptr<StudentCode> code, uint64_t serial) {
+  if (!code_ && attempted_ && attempted_path_ == path_ && serial == loads_) code_ = std::move(code);
+}
+
 bool StudentFile::changed() const {
   if (!attempted_ || attempted_path_ != path_) return true;
   const FileStamp now = file_stamp(path_);

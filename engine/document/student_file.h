@@ -44,6 +44,11 @@ class StudentFile {
   // Loads the file if changed(); true when code() is loaded.
   bool ensure_loaded();
   StudentCode* code() { return code_.get(); }
+  // The loaded code, taken for a run on another thread: code() is null (and ensure_loaded() false, unless the file
+  // changed and loads afresh) until give_back, which keeps it only while no load attempt came between (`serial`:
+  // serial() when it was lent) and the path is the same.
+  std::unique_ptr<StudentCode> lend() { return std::move(code_); }
+  void give_back(std::unique_ptr<StudentCode> code, uint64_t serial);
   const std::string& error() const { return error_; }
   size_t loads() const { return loads_; }  // load attempts (tests)
   uint64_t serial() const { return loads_; }

@@ -623,7 +623,8 @@ namespace {
 RunEnd end_for_limit(ScriptError::Limit limit, RunEnd otherwise) {
   switch (limit) {
     case ScriptError::Limit::Instructions:
-    case ScriptError::Limit::Time: return RunEnd::Timeout;
+    case ScriptError::Limit::Time:
+    case ScriptError::Limit::Stopped: return RunEnd::Timeout;
     case ScriptError::Limit::Memory: return RunEnd::Memory;
     case ScriptError::Limit::Changes:
     case ScriptError::Limit::None: break;

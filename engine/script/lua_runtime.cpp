@@ -144,6 +144,9 @@ void LuaRuntime::count_hook(lua_State* L, lua_Debug*) {
     } else if (self->memory_hit_) {
       self->kill_message_ = memory_limit_message(self->limits_.memory_bytes);
       self->kill_limit_ = ScriptError::Limit::Memory;
+    } else if (self->stop_request_ != nullptr && self->stop_request_->load(std::memory_order_relaxed)) {
+      self->kill_message_ = "stopped: you pressed Stop";
+      self->kill_limit_ = ScriptError::Limit::Stopped;
     } else if (std::chrono::steady_clock::now() > self->deadline_) {
       std::ostringstream s;
       s << "time limit exceeded (" << self->limits_.wall_seconds << " s)";

@@ -4,7 +4,8 @@
 // - Lua is Debian's C++ build: a Lua error unwinds C++ frames (destructors run). Bindings catch
 //   std::exception and turn it into a Lua error (`guarded` in mesh_bindings.cpp); no C++ exception crosses
 //   into Lua.
-// - The instruction budget, the memory cap and the wall-clock deadline are checked in one count hook.
+// - The instruction budget, the memory cap, the wall-clock deadline and the host's stop request are checked in one
+//   count hook (the stop request is the only state another thread may touch, and only the flag it points to).
 //   Once any of them is exceeded the runtime is "killed": the hook is re-armed to fire on every instruction
 //   and errors each time, so a `pcall` in the script cannot swallow the stop; it lasts until the next window.
 // - Globals are built by whitelist: base (without dofile, loadfile, warn; load is text-only; collectgarbage
@@ -27,6 +28,7 @@
 //   of a run nor closing the state can run script code outside the hook.
 #pragma once
 
+#include <atomic>
 #include <chrono>
 #include <cstddef>
 #include <cstdint>
@@ -50,7 +52,8 @@ class ScriptError : public std::runtime_error {
  public:
   // Which limit stopped the script, if one did (a grader reports a timeout differently from an error). Changes: a
   // binding's cap on what a script may make (recorded changes, element ids), noted with LuaRuntime::note_cap.
-  enum class Limit { None, Instructions, Memory, Time, Changes };
+  // Stopped: the host asked the script to stop (LuaRuntime::set_stop_request: the window's Stop button).
+  enum class Limit { None, Instructions, Memory, Time, Changes, Stopped };
   using std::runtime_error::runtime_error;
   ScriptError(const std::string& message, Limit limit, bool out_of_memory = false)
       : std::runtime_error(message), limit_(limit), out_of_memory_(out_of_memory) {}
@@ -92,6 +95,10 @@ class LuaRuntime {
   const LuaLimits& limits() const { return limits_; }
   // New limits; they apply from the next budget window (the memory cap applies at once).
   void set_limits(const LuaLimits& limits) { limits_ = limits; }
+  // A flag another thread may set to stop the script: once it is true, the script stops within kHookInterval
+  // instructions with ScriptError::Limit::Stopped ("stopped: you pressed Stop", at its line), as a limit stops it.
+  // nullptr (the default) for none; the flag must outlive the calls made while it is set.
+  void set_stop_request(const std::atomic<bool>* stop) { stop_request_ = stop; }
   // Where `print` writes: one call per print, the arguments joined by tabs, without the newline. A print that fails
   // (the callback throws, or memory runs out building the line) is the Lua error "print failed: <what>", with
   // "memory ran out" for a std::bad_alloc or a message that cannot be copied: reporting it cannot fail in turn.
@@ -179,6 +186,7 @@ class LuaRuntime {
   ScriptError::Limit kill_limit_ = ScriptError::Limit::None;
   std::string kill_message_;  // without location
   std::chrono::steady_clock::time_point deadline_;
+  const std::atomic<bool>* stop_request_ = nullptr;
 };
 
 }  // namespace meshedit

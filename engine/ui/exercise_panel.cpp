@@ -267,13 +267,24 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   if (!session.last_run()) {
     ImGui::TextDisabled("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views");
   }
-  const bool run_mine = ImGui::Button("Run mine");
-  const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
-  state.run_mine_x = 0.5f * (low.x + high.x);
-  state.run_mine_y = 0.5f * (low.y + high.y);
-  if (run_mine) session.run_mine(doc, selection);
-  ImGui::SameLine();
-  if (ImGui::Button("Run reference")) session.run_reference(doc, selection);
+  if (session.running()) {
+    // The student's code runs on its own thread: the window goes on drawing, and Stop ends the code at its next line.
+    const bool stop = ImGui::Button("Stop");
+    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+    state.run_mine_x = 0.5f * (low.x + high.x);
+    state.run_mine_y = 0.5f * (low.y + high.y);
+    if (stop) session.stop_running();
+    ImGui::SameLine();
+    ImGui::Text("running your code: %s, %.1f s", session.running_label().c_str(), session.running_seconds());
+  } else {
+    const bool run_mine = ImGui::Button("Run mine");
+    const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
+    state.run_mine_x = 0.5f * (low.x + high.x);
+    state.run_mine_y = 0.5f * (low.y + high.y);
+    if (run_mine) session.start_mine(doc, selection);
+    ImGui::SameLine();
+    if (ImGui::Button("Run reference")) session.run_reference(doc, selection);
+  }
   if (session.loads() > 0 && session.file_changed()) {  // two stat calls a frame
     ImGui::SameLine();
     ImGui::TextDisabled("(saved since the last run: reloads on the next)");
@@ -300,7 +311,7 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
       ImGui::SetScrollHereY(1.0f);
     }
     if (run->mine) draw_replay(session, state, doc);
-  } else if (session.load_error().empty()) {
+  } else if (session.load_error().empty() && !session.running()) {
     ImGui::TextDisabled(is_mesh_exercise(session.exercise()) ? "select an element and press Run mine"
                                                              : "choose an input and press Run mine");
   }

@@ -54,7 +54,7 @@ struct ExercisePanelState {
   std::optional<UpsamplePhaseStates> phase_states;
   std::string phases_error;  // why the phase states could not be made
   size_t writes_drawn = 0;   // rows of the write list drawn in the last frame (tests)
-  float run_mine_x = -1.0f;  // where "Run mine" was drawn in the last frame, its centre (tests click it)
+  float run_mine_x = -1.0f;  // where "Run mine" (Stop while it runs) was drawn last frame, its centre (tests click it)
   float run_mine_y = -1.0f;
   float next_phase_x = -1.0f;  // where "next phase" was drawn in the last frame, its centre (tests click it)
   float next_phase_y = -1.0f;

@@ -142,6 +142,7 @@ TEST_F(EditorCommands, TheTriangulateVerbAndMenuItemDoTheSame) {
     EXPECT_EQ(verb("exercise flip " + solutions), "");
     EXPECT_EQ(verb("select e3"), "");
     EXPECT_EQ(verb("run-mine"), "");
+    app_->exercises().wait_for_run(app_->document(), app_->selection());  // its code ran on its own thread
     EXPECT_EQ(verb("replay-start"), "");
     EXPECT_TRUE(app_->exercises().replaying());
     if (from_menu) click_menu_item(command(CommandId::Triangulate));

@@ -82,7 +82,9 @@ TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercis
   ASSERT_EQ(input.halfedge(f0), h2);
 
   click_show_mine();
-  frames(2);
+  frames(1);
+  app_->exercises().wait_for_run(app_->document(), app_->selection());  // the student's code runs on its own thread
+  frames(1);
 
   // The document: the your_turn's diamond with the student's flip applied, as the student's file gives it.
   const HalfedgeMesh& shown = app_->document().mesh;

@@ -1,7 +1,7 @@
 // The "Your code" tab in the real window under Xvfb, on lesson 4 with a copy of scripts/student/flip.lua: text typed
 // into the editor runs only once saved (the save is written to the file, which the Exercises tab loads as it loads any
 // save), a correct flip saved there is what Run mine runs and replays, and an error, at load or at run time, marks the
-// line it names. At 1280x800 and 1024x640.
+// line it names; a runaway loop runs beside the window until Stop ends it. At 1280x800 and 1024x640.
 #include <gtest/gtest.h>
 
 #include <fstream>
@@ -146,6 +146,22 @@ TEST_F(WindowStudentEditor, AnErrorMarksTheLineItNames) {
       // Fixed: no line is marked.
       "editor-set-line " + n + " " + kFlipLine + "\neditor-save\nselect e0\nrun-mine\nexpect-editor-error none\nquit\n";
   play(actions, "1024x640");
+}
+
+// A flip_edge that never returns: Run mine runs it on its own thread, so the window goes on drawing frames and
+// answering while it runs (the status line still says it is running after them, long before any limit), the Stop
+// button ends it at the line it was on, and the console answers afterwards.
+TEST_F(WindowStudentEditor, ARunawayLoopRunsBesideTheWindowAndStopEndsItAtItsLine) {
+  const std::string actions = start(dir, line) + "editor-set-line " + n +
+                              " while true do end\neditor-save\nselect e0\nstart-mine\nframes 10\n"
+                              "expect-message mine: flip e0: your code is running (Stop ends it)\nscreenshot " +
+                              (dir / "running.png").string() +
+                              "\nframes 2\nstop-mine\nwait-message 300 stopped: you pressed Stop\n"
+                              "expect-message mine (error): flip e0\nexpect-editor-error " +
+                              n +
+                              " stopped: you pressed Stop\nconsole print(1 + 1)\nframes 2\nexpect-console 2\nquit\n";
+  play(actions);
+  EXPECT_TRUE(fs::exists(dir / "running.png"));
 }
 
 }  // namespace

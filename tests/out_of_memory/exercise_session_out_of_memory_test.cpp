@@ -9,6 +9,7 @@
 // Then, with memory to spare, the same run gives what it gives from the start. Finishing a replay, the first thing a
 // run does, is whole or nothing too, and a student file whose load ran out of memory is loaded again at the next run.
 #include <filesystem>
+#include <memory>
 #include <new>
 #include <ostream>
 #include <string>
@@ -53,21 +54,21 @@ class ExerciseSessionOutOfMemory : public ::testing::TestWithParam<Case> {
   void fresh() {
     doc_ = make_document(build_halfedge_mesh(make_cube()));
     ASSERT_TRUE(apply_operation(doc_, "flip e3", [](HalfedgeMesh& m) { return flip(m, EdgeId(3)); }).ok());
-    session_ = ExerciseSession(solutions());
-    ASSERT_TRUE(session_.set_exercise(GetParam().exercise));
+    session_ = std::make_unique<ExerciseSession>(solutions());
+    ASSERT_TRUE(session_->set_exercise(GetParam().exercise));
     if (GetParam().loaded_before) {
-      ASSERT_TRUE(session_.ensure_loaded()) << session_.load_error();
+      ASSERT_TRUE(session_->ensure_loaded()) << session_->load_error();
     }
     selection_ = {};
     selection_.selected = GetParam().selected;
   }
   Check run() {
-    return GetParam().mine ? session_.run_mine(doc_, selection_) : session_.run_reference(doc_, selection_);
+    return GetParam().mine ? session_->run_mine(doc_, selection_) : session_->run_reference(doc_, selection_);
   }
 
   MeshDocument doc_;
   Selection selection_;
-  ExerciseSession session_;
+  std::unique_ptr<ExerciseSession> session_;
 };
 
 TEST_P(ExerciseSessionOutOfMemory, ARunIsDoneAsTheDocumentKeepsItOrNotAtAll) {
@@ -114,12 +115,12 @@ TEST_P(ExerciseSessionOutOfMemory, ARunIsDoneAsTheDocumentKeepsItOrNotAtAll) {
         } else {
           EXPECT_NE(doc_.message.severity, Severity::Info);
         }
-        ASSERT_TRUE(session_.last_run().has_value());
-        EXPECT_EQ(session_.last_run()->generation, doc_.generation);
-        EXPECT_EQ(session_.last_run()->version, doc_.mesh.version());
+        ASSERT_TRUE(session_->last_run().has_value());
+        EXPECT_EQ(session_->last_run()->generation, doc_.generation);
+        EXPECT_EQ(session_->last_run()->version, doc_.mesh.version());
       }
       if (GetParam().mine) {  // with memory to spare again: a student file that ran out loading loads now
-        EXPECT_TRUE(session_.ensure_loaded()) << session_.load_error();
+        EXPECT_TRUE(session_->ensure_loaded()) << session_->load_error();
       }
       fresh();
       EXPECT_EQ(run().ok, spare_check.ok);

@@ -149,6 +149,7 @@ TEST(ExercisePanel, DrawsAReportAndAReplayInProgress) {
 
   // Clicking "Run mine" runs the student's flip on the selected edge.
   imgui.click(ImVec2(state.run_mine_x, state.run_mine_y), draw);
+  session.wait_for_run(doc, selection);  // the click started it on its thread
   ASSERT_TRUE(session.last_run().has_value()) << doc.message.text;
   EXPECT_EQ(session.last_run()->label, "mine: flip e7");
   EXPECT_EQ(doc.history.undo_label(), "mine: flip e7");

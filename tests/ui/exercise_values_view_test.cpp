@@ -120,6 +120,7 @@ TEST(ValuesExercisePanel, DrawsARunOnValues) {
   auto draw = [&] { draw_exercise_panel(session, state, doc, none); };
   EXPECT_GT(imgui.frame(draw), 0);  // before any run: the fixture chooser
   imgui.click(ImVec2(state.run_mine_x, state.run_mine_y), draw);
+  session.wait_for_run(doc, none);  // the click started it on its thread
   ASSERT_TRUE(session.last_run().has_value()) << doc.message.text;
   EXPECT_GT(imgui.frame(draw), 0);
   ASSERT_EQ(state.value_rows.size(), 3u);
