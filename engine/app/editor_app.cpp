@@ -60,6 +60,9 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   view_.advance_edit_animation(frame_ms);  // before this frame's actions: an edit they make starts at time 0
   check_.poll();
+  const LuaLimits student_limits = window_student_limits(panels_.settings().student_code_seconds);
+  exercises_.session().set_limits(student_limits);
+  lessons_.runner().set_student_limits(student_limits);
   exercises_.session().poll(document_.doc(), document_.selection());  // a Run mine whose code has ended
   read_input();                                                       // in the view placed by the last frame
   lessons_.update(frame_ms);

@@ -1,7 +1,7 @@
 // BackgroundWork: one piece of work at a time, run off the caller's thread where the host has threads (a std::thread
 // in the desktop build: background_work_thread.cpp), else at once on the caller's thread (a page, built without
-// threads: background_work_one_thread.cpp). The Exercises tab runs the student's code through it, so a runaway loop does not
-// hold the window's frames.
+// threads: background_work_one_thread.cpp). The Exercises tab runs the student's code through it, so a runaway loop
+// does not hold the window's frames.
 //
 // Invariants:
 // - The work must not throw (wrap it: what it makes is the caller's to keep), and must not touch what the caller's

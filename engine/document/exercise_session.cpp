@@ -104,6 +104,7 @@ struct ExerciseSession::PendingRun {
   ExerciseOutcome reference;
   std::unique_ptr<StudentCode> code;  // mine: lent by the student file for the run
   uint64_t code_serial = 0;
+  LuaLimits limits;
   // Written by run_code (on the run's thread), read once it has ended.
   ExerciseOutcome mine;
   bool out_of_memory = false;
@@ -117,6 +118,7 @@ struct ExerciseSession::PendingRun {
   // The student's code on the input; touches nothing but this run. Never throws.
   void run_code() noexcept {
     LuaRuntime& runtime = code->runtime();
+    runtime.set_limits(limits);
     runtime.set_stop_request(&stop);
     try {
       RunOptions options;
@@ -346,6 +348,7 @@ Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool m
   if (mine) {
     made->code_serial = student_.serial();
     made->code = student_.lend();
+    made->limits = limits_;
   }
   pending = std::move(made);
   return Check::yes();

@@ -112,6 +112,9 @@ class ExerciseSession {
   double running_seconds() const;            // since start_mine, while running()
   const std::string& running_label() const;  // "mine: flip e7", while running()
   void stop_running();
+  // The limits the student's code runs under (the window's: window_student_limits of its setting; LuaLimits' own
+  // until set). They apply from the next run.
+  void set_limits(const LuaLimits& limits) { limits_ = limits; }
   // Once a started run has ended: takes it into the document as run_mine does and returns true. Call once per frame.
   bool poll(MeshDocument& doc, Selection& selection);
   // Waits for the started run's code to end and takes it as poll() does, returning what run_mine would (yes when no
@@ -181,6 +184,7 @@ class ExerciseSession {
   uint64_t shown_generation_ = 0;  // what the replay last put in the document
   uint64_t shown_version_ = 0;
 
+  LuaLimits limits_;
   std::unique_ptr<PendingRun> pending_;  // the started run, until poll() takes it
   BackgroundWork work_;                  // last: destroyed first, it waits for the thread that uses pending_
 };

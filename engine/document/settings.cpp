@@ -6,6 +6,7 @@
 #include <cstdlib>
 #include <exception>
 #include <functional>
+#include <limits>
 #include <sstream>
 
 #include "io/file_access.h"
@@ -106,11 +107,22 @@ const std::vector<Key>& keys() {
          return true;
        },
        [](const Settings& s) { return std::string(s.animate_edits ? "true" : "false"); }},
+      number_key(
+          "student_code_seconds", "a number of seconds", Settings::kMinStudentCodeSeconds,
+          Settings::kMaxStudentCodeSeconds, [](Settings& s, double v) { s.student_code_seconds = v; },
+          [](const Settings& s) { return s.student_code_seconds; }),
   };
   return kTable;
 }
 
 }  // namespace
+
+LuaLimits window_student_limits(double seconds) {
+  LuaLimits limits;
+  limits.instructions = std::numeric_limits<uint64_t>::max();
+  limits.wall_seconds = seconds;
+  return limits;
+}
 
 fs::path settings_path() {
   if (const char* xdg = std::getenv("XDG_CONFIG_HOME"); xdg && *xdg) return fs::path(xdg) / "meshedit" / "settings.ini";

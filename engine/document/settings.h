@@ -1,6 +1,6 @@
 // The window's settings that last between runs: its size, the columns' widths and whether they are open, the
-// console's height, the text size, the theme and whether edits animate. Kept as `key = value` lines in settings.ini
-// under $XDG_CONFIG_HOME/meshedit (or ~/.config/meshedit).
+// console's height, the text size, the theme, whether edits animate and how long the student's code may run. Kept as
+// `key = value` lines in settings.ini under $XDG_CONFIG_HOME/meshedit (or ~/.config/meshedit).
 //
 // Invariants:
 // - Reading never fails: a missing file gives the defaults; a line that is not `key = value`, an unknown key or a
@@ -17,6 +17,7 @@
 
 #include "core/palette.h"  // Theme
 #include "document/window_layout.h"
+#include "script/lua_runtime.h"  // LuaLimits
 
 namespace meshedit {
 
@@ -31,8 +32,18 @@ struct Settings {
   float font_px = kDefaultFontPx;
   Theme theme = Theme::Dark;
   bool animate_edits = true;  // View > Animate edits: flip, split and collapse play for a quarter second
+  // How long the student's code may run in the window (Run mine, a lesson's your_turn) before it is stopped at its
+  // line: the window's interactive deadline (window_student_limits), not the grader's budget.
+  static constexpr double kDefaultStudentCodeSeconds = 5.0;
+  static constexpr double kMinStudentCodeSeconds = 0.5, kMaxStudentCodeSeconds = 600.0;
+  double student_code_seconds = kDefaultStudentCodeSeconds;
   LayoutPrefs layout;
 };
+
+// The limits the window runs the student's code under: the wall-clock deadline of `seconds` (the setting
+// student_code_seconds) and no instruction budget, so a runaway is always stopped by the deadline, with the same words
+// on every machine ("flip.lua:4: time limit exceeded (5 s)"); the memory cap is LuaLimits'.
+LuaLimits window_student_limits(double seconds);
 
 // Where settings.ini lives; empty when neither XDG_CONFIG_HOME nor HOME is set.
 std::filesystem::path settings_path();

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <limits>
 
 #include "document/settings.h"
 #include "support/test_support.h"
@@ -81,6 +82,23 @@ TEST(Settings, AnimateEditsIsOnByDefaultAndReadsBackOff) {
   EXPECT_TRUE(parse_settings("animate_edits = no\n", "settings.ini", warnings).animate_edits);
   ASSERT_EQ(warnings.size(), 1u);
   EXPECT_EQ(warnings[0], "settings.ini:1: animate_edits must be true or false, not 'no'; kept the default");
+}
+
+TEST(Settings, StudentCodeSecondsReadsBackAndGivesTheWindowsDeadline) {
+  EXPECT_EQ(Settings{}.student_code_seconds, 5.0);
+  Settings s;
+  s.student_code_seconds = 2.5;
+  EXPECT_NE(format_settings(s).find("student_code_seconds = 2.5\n"), std::string::npos) << format_settings(s);
+  std::vector<std::string> warnings;
+  EXPECT_EQ(parse_settings(format_settings(s), "settings.ini", warnings).student_code_seconds, 2.5);
+  EXPECT_TRUE(warnings.empty());
+  EXPECT_EQ(parse_settings("student_code_seconds = 0\n", "settings.ini", warnings).student_code_seconds, 5.0);
+  ASSERT_EQ(warnings.size(), 1u);
+  EXPECT_NE(warnings[0].find("settings.ini:1: student_code_seconds"), std::string::npos) << warnings[0];
+  const LuaLimits limits = window_student_limits(2.5);
+  EXPECT_EQ(limits.wall_seconds, 2.5);
+  EXPECT_EQ(limits.instructions, std::numeric_limits<uint64_t>::max());
+  EXPECT_EQ(limits.memory_bytes, LuaLimits{}.memory_bytes);
 }
 
 TEST(Settings, AnUnwritableFolderIsReportedNotThrown) {
