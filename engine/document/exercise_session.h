@@ -27,11 +27,13 @@
 //   Callers should finish_replay() before their own edits and undo/redo (a no-op when no replay runs): an undo
 //   in the middle of a replay would put the partly replayed state on the redo list.
 // - start_mine runs the student's code off the window's thread (background_work.h): the file's StudentCode is lent to
-//   the run (StudentFile::lend) and nothing else of the session is touched by it; poll() takes the run into the
-//   document as run_mine does, unless the document changed meanwhile (then the result is left out, and the status
-//   line says so). While a run is running, every other run and replay is refused (the status line says why), and
-//   stop_running() asks the code to stop at its next line ("stopped: you pressed Stop": an error of the run, with its
-//   writes up to there to replay). The destructor stops a running run and waits for it.
+//   the run (StudentFile::lend) and nothing else of the session is touched by it (nor is the exercise registry changed
+//   meanwhile: the reload of a scripted exercise's definition is part of a run, refused while one runs, and the window
+//   loads exercise folders only as it opens); poll() takes the run into the document as run_mine does, unless the
+//   document changed meanwhile (then the result is left out, and the status line says so). While a run is running,
+//   every other run and replay is refused (the status line says why), and stop_running() asks the code to stop at its
+//   next line ("stopped: you pressed Stop": an error of the run, with its writes up to there to replay). The
+//   destructor stops a running run and waits for it.
 #pragma once
 
 #include <cstddef>
