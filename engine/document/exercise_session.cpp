@@ -195,21 +195,30 @@ Check ExerciseSession::run_reference(MeshDocument& doc, Selection& selection) { 
 
 Check ExerciseSession::run(MeshDocument& doc, Selection& selection, bool mine) {
   if (pending_) return refuse_while_running(doc);
-  std::optional<PreparedRun> prepared;
+  std::unique_ptr<PendingRun> pending;
   try {
-    std::unique_ptr<PendingRun> pending;
     Check refused = begin_run(doc, selection, mine, pending);
     if (!pending) return refused;
-    if (mine) {
-      pending->run_code();
-      student_.give_back(std::move(pending->code), pending->code_serial);
-    }
-    Check ended = end_run(doc, *pending, prepared);
-    if (!prepared) return ended;
   } catch (const std::exception& e) {
     // Nothing was done: the document is as it was (or as finish_replay left it, whole). The report needs no memory.
     report_exception(doc, e);
     return Check::no(kMemoryRanOut);  // fits std::string's inline buffer: no allocation
+  }
+  if (mine) {
+    pending->run_code();
+    student_.give_back(std::move(pending->code), pending->code_serial);
+  }
+  return end_and_take(doc, selection, *pending);
+}
+
+Check ExerciseSession::end_and_take(MeshDocument& doc, Selection& selection, PendingRun& pending) {
+  std::optional<PreparedRun> prepared;
+  try {
+    Check ended = end_run(doc, pending, prepared);
+    if (!prepared) return ended;
+  } catch (const std::exception& e) {
+    report_exception(doc, e);  // nothing was done, as above
+    return Check::no(kMemoryRanOut);
   }
   return take_run(doc, selection, std::move(*prepared));
 }
@@ -282,15 +291,7 @@ Check ExerciseSession::take_pending(MeshDocument& doc, Selection& selection) {
     set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
     return no;
   }
-  std::optional<PreparedRun> prepared;
-  try {
-    Check ended = end_run(doc, *pending, prepared);
-    if (!prepared) return ended;
-  } catch (const std::exception& e) {
-    report_exception(doc, e);
-    return Check::no(kMemoryRanOut);
-  }
-  return take_run(doc, selection, std::move(*prepared));
+  return end_and_take(doc, selection, *pending);
 }
 
 Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool mine,

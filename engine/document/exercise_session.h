@@ -162,6 +162,8 @@ class ExerciseSession {
   // Everything after it: the comparison and the texts, as a PreparedRun (or a refusal with `prepared` left empty);
   // std::bad_alloc escapes with the document as it was.
   Check end_run(MeshDocument& doc, PendingRun& pending, std::optional<PreparedRun>& prepared);
+  // end_run, then take_run; a std::bad_alloc on the way is an Error with nothing done.
+  Check end_and_take(MeshDocument& doc, Selection& selection, PendingRun& pending);
   // A started run that has ended, into the document (or left out when the document changed since it started).
   Check take_pending(MeshDocument& doc, Selection& selection);
   Check refuse_while_running(MeshDocument& doc) const;

@@ -2,13 +2,14 @@
 #include "grade/grade_run.h"
 
 #include <sstream>
+#include <utility>
 
 #include "core/value_format.h"
 
 namespace meshedit {
 
-GradeRun::GradeRun(Suite& suite, const Submission& submission, const GradeOptions& options)
-    : suite_(suite), options_(options), started_(std::chrono::steady_clock::now()) {
+GradeRun::GradeRun(Suite& suite, const Submission& submission, GradeOptions options)
+    : suite_(suite), options_(std::move(options)), started_(std::chrono::steady_clock::now()) {
   report_.suite_name = suite.name();
   std::ostringstream top;
   top << "Suite " << suite.name() << ": " << plural(suite.tests().size(), "test", "tests") << ".\n";
@@ -22,7 +23,7 @@ GradeRun::GradeRun(Suite& suite, const Submission& submission, const GradeOption
   top_ = top.str();
   not_shown_ = {{"hidden"}, {"after_due_date"}, {"after_published"}};
   for (const TestSpec& spec : suite.tests()) {
-    if (!options.visible_only || spec.visibility == "visible") ++to_run_;
+    if (runs(spec)) ++to_run_;
   }
 }
 
@@ -31,7 +32,7 @@ std::optional<size_t> GradeRun::next_test() {
     const size_t index = next_++;
     if (options_.time_limit_cap > 0) suite_.cap_time_limit(index, options_.time_limit_cap);
     const TestSpec& spec = suite_.tests()[index];
-    if (!options_.visible_only || spec.visibility == "visible") return index;
+    if (runs(spec)) return index;
     for (NotShown& left_out : not_shown_) {
       if (left_out.visibility != spec.visibility) continue;
       ++left_out.tests;

@@ -25,7 +25,7 @@ namespace meshedit {
 class GradeRun {
  public:
   // `suite` must outlive the run.
-  GradeRun(Suite& suite, const Submission& submission, const GradeOptions& options);
+  GradeRun(Suite& suite, const Submission& submission, GradeOptions options);
 
   // The index (in suite.tests()) of the next test to run; nullopt once every test that runs has a result.
   std::optional<size_t> next_test();
@@ -39,6 +39,9 @@ class GradeRun {
   GradeReport finish();
 
  private:
+  // Whether this run runs the test (a visible-only run: the visible tests alone).
+  bool runs(const TestSpec& spec) const { return !options_.visible_only || spec.visibility == "visible"; }
+
   Suite& suite_;
   GradeOptions options_;
   std::chrono::steady_clock::time_point started_;
