@@ -97,7 +97,7 @@ tinygltf::Model make_model(const PolygonMesh& mesh, const std::string& name) {
 }
 
 std::string serialise(const PolygonMesh& mesh, const std::string& name, bool binary) {
-  const tinygltf::Model model = make_model(mesh, name);
+  tinygltf::Model model = make_model(mesh, name);  // not const: tinygltf 2.5 (Ubuntu 22.04) takes a Model*
   tinygltf::TinyGLTF writer;
   std::ostringstream stream;
   if (!writer.WriteGltfSceneToStream(&model, stream, !binary, binary)) {
