@@ -103,7 +103,7 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
   if (!args.empty()) throw UsageError("unexpected argument '" + args.front() + "'");
   std::vector<std::filesystem::path> paths(folders.begin(), folders.end());
   out.flush();
-  const std::vector<ClassEntry> entries = grade_class(suite, paths, folder, jobs);
+  const std::vector<ClassEntry> entries = grade_class(suite, paths, folder, jobs, {}, add_failure_pictures);
   write_file_atomically(std::filesystem::path(folder) / "summary.csv", class_summary_csv(entries));
   write_file_atomically(std::filesystem::path(folder) / "summary.json", class_summary_json(entries));
   size_t graded = 0;

@@ -3,6 +3,7 @@
 
 #include <cerrno>
 #include <fstream>
+#include <iostream>
 #include <map>
 #include <sstream>
 
@@ -26,12 +27,16 @@ std::string csv_field(const std::string& s) {
 }
 
 // What a worker does: grade one submission and write its results.json. Returns the exit status.
-int work(Suite& suite, const ClassEntry& entry, const GradeOptions& options) {
+int work(Suite& suite, const ClassEntry& entry, const GradeOptions& options, const FinishReport& finish) {
   try {
     const Submission submission = Submission::read(entry.folder);
     GradeOptions quiet = options;
     quiet.on_test = nullptr;
-    const GradeReport report = grade(suite, submission, quiet);
+    GradeReport report = grade(suite, submission, quiet);
+    if (finish) {
+      const std::string problem = finish(report, entry.results.parent_path());
+      if (!problem.empty()) std::cerr << "meshedit grade: " << entry.name << ": " << problem << "\n";
+    }
     write_file_atomically(entry.results, gradescope_json(report));
     return 0;
   } catch (const std::exception& e) {
@@ -63,7 +68,8 @@ void read_back(ClassEntry& entry, int status) {
 }  // namespace
 
 std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesystem::path>& folders,
-                                    const std::filesystem::path& out, int jobs, const GradeOptions& options) {
+                                    const std::filesystem::path& out, int jobs, const GradeOptions& options,
+                                    const FinishReport& finish) {
   std::vector<ClassEntry> entries;
   std::map<std::string, int> seen;
   for (const auto& folder : folders) {
@@ -97,7 +103,7 @@ std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesys
   while (next < entries.size() || !running.empty()) {
     while (next < entries.size() && static_cast<int>(running.size()) < jobs) {
       const pid_t pid = fork();
-      if (pid == 0) _exit(work(suite, entries[next], options));
+      if (pid == 0) _exit(work(suite, entries[next], options, finish));
       if (pid < 0) {
         entries[next].problem = "cannot start a grading process";
         ++next;

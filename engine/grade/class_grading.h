@@ -9,9 +9,13 @@
 //   listed with status "error" and a reason; the others are unaffected.
 // - Submission names are the folders' base names; two folders with the same base name get "name", "name-2".
 // - Rows are in the order the folders were given.
+// - `finish`, when given, sees each report in its worker before its results.json is written and may change its
+//   feedback (the command line adds the failure pictures there, into out/<name>/pictures/); what it returns, when
+//   not "", goes to stderr as "meshedit grade: <name>: ..." and the submission is graded all the same.
 #pragma once
 
 #include <filesystem>
+#include <functional>
 #include <string>
 #include <vector>
 
@@ -32,8 +36,12 @@ struct ClassEntry {
   size_t failed = 0;
 };
 
+// Given a report and the folder its results.json goes to; returns "" or a sentence on what it could not do.
+using FinishReport = std::function<std::string(GradeReport& report, const std::filesystem::path& folder)>;
+
 std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesystem::path>& folders,
-                                    const std::filesystem::path& out, int jobs, const GradeOptions& options = {});
+                                    const std::filesystem::path& out, int jobs, const GradeOptions& options = {},
+                                    const FinishReport& finish = nullptr);
 
 std::string class_summary_csv(const std::vector<ClassEntry>& entries);
 std::string class_summary_json(const std::vector<ClassEntry>& entries);

@@ -211,6 +211,16 @@ TEST(CliGrade, AWholeClassInParallel) {
   EXPECT_EQ(summary[1]["submission"], "bob");
   EXPECT_EQ(summary[1]["score"], 2.0);
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "marks" / "carol" / "results.json")).at("score"), 9.0);
+
+  // Each submission's failed tests get their pictures, as for one --submission (where EGL can draw them).
+  if (o.err.find("no pictures") != std::string::npos) GTEST_SKIP() << o.err;
+  EXPECT_EQ(o.err, "");
+  const auto bob = nlohmann::json::parse(read_text(dir / "marks" / "bob" / "results.json"));
+  EXPECT_EQ(read_text(dir / "marks" / "bob" / "pictures" / "test-4.1.png").substr(1, 3), "PNG");
+  EXPECT_NE(bob["tests"][0]["output"].get<std::string>().find("](data:image/png;base64,iVBORw0KGgo"),
+            std::string::npos);
+  EXPECT_FALSE(fs::exists(dir / "marks" / "alice" / "pictures"));  // nothing failed
+  EXPECT_TRUE(fs::exists(dir / "marks" / "carol" / "pictures"));
 }
 
 TEST(CliGrade, TheGradescopeRunAutograderScript) {
