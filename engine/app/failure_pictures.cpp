@@ -3,12 +3,16 @@
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <exception>
 #include <memory>
 #include <optional>
 #include <set>
 #include <vector>
 
+#include <glm/geometric.hpp>
+
+#include "core/normals.h"
 #include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "grade/failing_case.h"
@@ -25,6 +29,9 @@ namespace {
 
 constexpr int kPanelWidth = 320, kPanelHeight = 240, kGap = 4;
 constexpr int kRings = 2;
+// An element whose outside is within about 70 degrees of the three-quarter view is drawn from that view; the others
+// from their outside.
+constexpr double kFacesTheView = 0.35;
 
 std::string base64(const std::string& bytes) {
   static const char* const kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
@@ -81,6 +88,44 @@ BoundingBox neighbourhood(const HalfedgeMesh& mesh, ElementRef element) {
   return box;
 }
 
+// The element's outside: the sum of the unit normals of the faces beside it (an edge's or a halfedge's two faces,
+// a face itself), or a vertex's area-weighted normal, in the input. Zero when it has none.
+glm::dvec3 outside_of(const HalfedgeMesh& mesh, ElementRef element) {
+  glm::dvec3 outside(0.0);
+  const auto add_face = [&](HalfedgeId h) {
+    if (!mesh.is_boundary(h)) outside += face_normal(mesh, mesh.face(h));
+  };
+  switch (element.kind) {
+    case ElementKind::Vertex: return vertex_normal(mesh, VertexId(element.index));
+    case ElementKind::Edge:
+    case ElementKind::Halfedge: {
+      const HalfedgeId h =
+          element.kind == ElementKind::Edge ? mesh.halfedge(EdgeId(element.index)) : HalfedgeId(element.index);
+      add_face(h);
+      add_face(mesh.twin(h));
+      return outside;
+    }
+    case ElementKind::Face:
+    case ElementKind::Boundary: break;
+  }
+  return element.kind == ElementKind::Face ? face_normal(mesh, element.face_id()) : outside;
+}
+
+// Where the camera looks from (towards the box's centre; zero for the three-quarter view): the three-quarter view
+// when the element faces it, else from the element's outside, so that an element on the far side of the
+// three-quarter view (e0 of the cube) is in sight, an edge's two faces seen at the same slant.
+glm::dvec3 view_direction(const HalfedgeMesh& mesh, ElementRef element) {
+  if (!element.valid()) return glm::dvec3(0.0);
+  OrbitCamera three_quarter;
+  three_quarter.set_up_axis(UpAxis::Z);
+  const glm::dvec3 back = glm::normalize(three_quarter.eye() - three_quarter.target());
+  const glm::dvec3 outside = outside_of(mesh, element);
+  const double length = glm::length(outside);
+  if (!(length > 0.0) || !std::isfinite(length)) return glm::dvec3(0.0);
+  if (glm::dot(outside / length, back) >= kFacesTheView) return glm::dvec3(0.0);
+  return outside;
+}
+
 // The input as expect.exercise read it: a scripted exercise takes its element as it is, a built-in one its vertex or
 // edge.
 ExerciseInput input_of(Exercise exercise, std::shared_ptr<const HalfedgeMesh> mesh, ElementRef element) {
@@ -105,6 +150,7 @@ class PictureMaker {
     auto input_mesh = std::make_shared<HalfedgeMesh>(case_mesh(failing));
     const ElementRef element = case_element(*input_mesh, failing);
     const BoundingBox box = neighbourhood(*input_mesh, element);
+    direction_ = view_direction(*input_mesh, element);
     std::string caption;
     image.assign(size_t(width()) * kPanelHeight * 4, 0);
     panel(0, *input_mesh, box, element);
@@ -129,7 +175,7 @@ class PictureMaker {
     renderer_.update(mesh);
     OrbitCamera camera;
     camera.set_up_axis(UpAxis::Z);
-    camera.fit(box.empty() ? renderer_.bounds() : box);
+    camera.fit_looking_from(box.empty() ? renderer_.bounds() : box, direction_);
     target_.clear(renderer_.style().background);
     Highlights highlights;
     highlights.selected = selected;
@@ -161,6 +207,7 @@ class PictureMaker {
   RenderTarget target_;
   MeshRenderer renderer_;
   ViewOptions options_;
+  glm::dvec3 direction_{0.0};  // where this case's three panels are seen from (view_direction)
   std::vector<uint8_t> drawn_[3];
 };
 

@@ -7,8 +7,10 @@
 // Invariants:
 // - Only the Markdown changes: scores, the readable text and the verdict are the grader's as they were.
 // - The camera frames the element's neighbourhood (two rings around its corners in the input) in all three; the whole
-//   mesh for an exercise on the whole mesh. The element is highlighted in each mesh that still has it. A student's
-//   mesh is drawn with its records as they are (a broken one as the window draws it).
+//   mesh for an exercise on the whole mesh. It looks from the three-quarter view, or, for an element facing away from
+//   that view, from the element's outside, so the element is never hidden behind the rest of the mesh. The element is
+//   highlighted in each mesh that still has it. A student's mesh is drawn with its records as they are (a broken one as
+//   the window draws it).
 // - Never stops grading: when no picture can be made (no EGL here, a file that cannot be written), the return value
 //   says why (for stderr) and the feedback is as it was.
 // - The same report gives the same pictures byte for byte on the same machine.

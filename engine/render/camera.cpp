@@ -64,14 +64,29 @@ void OrbitCamera::fit(const BoundingBox& box) {
   }
   scene_centre_ = fit_box_.centre();
   scene_radius_ = fit_box_.diagonal() * 0.5;
-  fitted_distance_ = fit_distance();
+  fitted_yaw_ = radians(kDefaultYawDegrees);
+  fitted_pitch_ = radians(kDefaultPitchDegrees);
+  fitted_distance_ = fit_distance(fitted_yaw_, fitted_pitch_);
   reset();
 }
 
-double OrbitCamera::fit_distance() const {
-  // In the default view's frame, corner q (relative to the centre) at lateral offsets x, y and depth z
+void OrbitCamera::fit_looking_from(const BoundingBox& box, const glm::dvec3& direction) {
+  fit(box);
+  const double length = glm::length(direction);
+  if (!(length > 0.0) || !std::isfinite(length)) return;
+  // The angles whose view_offset is the direction: pitch from its part along up, yaw from the rest.
+  const AxisFrame frame = axis_frame(up_axis_);
+  const glm::dvec3 d = direction / length;
+  fitted_pitch_ = std::clamp(std::asin(std::clamp(glm::dot(d, frame.up), -1.0, 1.0)), -kMaxPitch, kMaxPitch);
+  fitted_yaw_ = std::atan2(glm::dot(d, frame.right), glm::dot(d, frame.towards_viewer));
+  fitted_distance_ = fit_distance(fitted_yaw_, fitted_pitch_);
+  reset();
+}
+
+double OrbitCamera::fit_distance(double yaw, double pitch) const {
+  // In the view's frame, corner q (relative to the centre) at lateral offsets x, y and depth z
   // beyond the centre is inside the field of view when max(|x|, |y|) <= tan(fov/2) (d + z).
-  const glm::dvec3 back = view_offset(radians(kDefaultYawDegrees), radians(kDefaultPitchDegrees));
+  const glm::dvec3 back = view_offset(yaw, pitch);
   const glm::dvec3 forward = -back;
   const glm::dvec3 right = glm::normalize(glm::cross(forward, up_vector()));
   const glm::dvec3 up = glm::cross(right, forward);
@@ -92,8 +107,8 @@ double OrbitCamera::fit_distance() const {
 void OrbitCamera::reset() {
   target_ = scene_centre_;
   distance_ = fitted_distance_;
-  yaw_ = radians(kDefaultYawDegrees);
-  pitch_ = radians(kDefaultPitchDegrees);
+  yaw_ = fitted_yaw_;
+  pitch_ = fitted_pitch_;
 }
 
 void OrbitCamera::orbit(double dx_pixels, double dy_pixels) {
@@ -126,7 +141,7 @@ void OrbitCamera::zoom(double steps) {
 
 void OrbitCamera::set_up_axis(UpAxis axis) {
   up_axis_ = axis;
-  fitted_distance_ = fit_distance();
+  fitted_distance_ = fit_distance(fitted_yaw_, fitted_pitch_);
 }
 
 double OrbitCamera::yaw_degrees() const { return degrees(yaw_); }

@@ -70,7 +70,12 @@ class OrbitCamera {
   // Looks at the box from the default three-quarter view and remembers the box for reset().
   // An empty box behaves like a unit cube at the origin; a point-sized one like a tiny cube.
   void fit(const BoundingBox& box);
-  // Back to what the last fit() chose (the Space key).
+  // Like fit(box), but looking at the box from `direction` (from the box's centre towards the eye, in world
+  // coordinates): the distance is the one that shows every corner from there, and pitch is clamped as always. A zero
+  // or non-finite direction is the default view. reset() returns to this view. The grader's pictures turn this way
+  // towards the element they show, which may be on the far side of the default view.
+  void fit_looking_from(const BoundingBox& box, const glm::dvec3& direction);
+  // Back to what the last fit() or fit_looking_from() chose (the Space key).
   void reset();
   // Turns around the target by a mouse drag of (dx, dy) pixels: dragging right turns the mesh right,
   // dragging down shows it more from above.
@@ -117,19 +122,21 @@ class OrbitCamera {
   static double fov_y_radians(double aspect);
   // Unit vector from the target towards the eye for these angles.
   glm::dvec3 view_offset(double yaw, double pitch) const;
-  // The distance at which the default view shows every corner of fit_box_.
-  double fit_distance() const;
+  // The distance at which the view from (yaw, pitch) (radians) shows every corner of fit_box_.
+  double fit_distance(double yaw, double pitch) const;
 
   UpAxis up_axis_ = UpAxis::Z;
   glm::dvec3 target_{0.0};
   double distance_ = 4.0;
   double yaw_ = 0.0;    // radians
   double pitch_ = 0.0;  // radians
-  // What fit() chose; reset() returns here and the clip planes hug this box's bounding sphere.
+  // What fit() or fit_looking_from() chose; reset() returns here and the clip planes hug this box's bounding sphere.
   BoundingBox fit_box_;
   glm::dvec3 scene_centre_{0.0};
   double scene_radius_ = 1.0;
   double fitted_distance_ = 4.0;
+  double fitted_yaw_ = 0.0;  // radians, the view reset() returns to (the constructor fits)
+  double fitted_pitch_ = 0.0;
 };
 
 }  // namespace meshedit

@@ -105,6 +105,37 @@ TEST(OrbitCamera, FitPutsEveryBoxCornerInsideTheViewportAtAnyAspect) {
   }
 }
 
+TEST(OrbitCamera, FitLookingFromADirectionSeesTheBoxFromThereAndResetReturnsThere) {
+  const BoundingBox b = box({-3, -2, 0}, {3.434, 2, 3.15});
+  const glm::dvec3 directions[] = {{-1, -1, 0}, {0, 0, -1}, {0.2, -3, 1}, {0, 1, 0}};
+  for (UpAxis up : {UpAxis::Y, UpAxis::Z}) {
+    for (const glm::dvec3& direction : directions) {
+      OrbitCamera camera;
+      camera.set_up_axis(up);
+      camera.fit_looking_from(b, direction);
+      SCOPED_TRACE(::testing::Message() << direction.x << " " << direction.y << " " << direction.z);
+      const glm::dvec3 seen_from = glm::normalize(camera.eye() - camera.target());
+      const glm::dvec3 wanted = glm::normalize(direction);
+      // Straight along up is as close as the pitch clamp lets it be (89 degrees).
+      const bool along_up = std::abs(glm::dot(wanted, camera.up_vector())) > 0.9999;
+      EXPECT_GT(glm::dot(seen_from, wanted), along_up ? std::cos(1.01 * 3.14159265358979 / 180.0) : 1.0 - 1e-12);
+      EXPECT_TRUE(near(camera.target(), b.centre(), 1e-12));
+      expect_all_corners_visible(camera, b, {400, 300});
+      camera.orbit(120, -40);
+      camera.zoom(3);
+      camera.reset();
+      EXPECT_TRUE(near(glm::normalize(camera.eye() - camera.target()), seen_from, 1e-12));
+    }
+  }
+  // No direction is the three-quarter view, as fit() gives it.
+  OrbitCamera plain, none;
+  plain.fit(b);
+  none.fit_looking_from(b, glm::dvec3(0.0));
+  EXPECT_TRUE(near(none.eye(), plain.eye(), 0.0));
+  none.fit_looking_from(b, glm::dvec3(std::nan(""), 1, 0));
+  EXPECT_TRUE(near(none.eye(), plain.eye(), 0.0));
+}
+
 TEST(OrbitCamera, EmptyOrPointBoxesStillGiveAUsableView) {
   OrbitCamera camera;
   camera.fit(BoundingBox{});
