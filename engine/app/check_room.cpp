@@ -6,6 +6,7 @@
 
 #include "app/document_room.h"
 #include "app/exercise_room.h"
+#include "app/window_host.h"
 #include "core/data_folders.h"
 #include "grade/grader.h"
 #include "grade/results_writers.h"
@@ -77,7 +78,9 @@ const FailingCase* CheckRoom::failing_case(size_t row) const {
 CheckPanelView CheckRoom::view() const {
   CheckPanelView view;
   view.suite = suite_;
-  view.folder = (started_ ? checked_folder_ : exercises_.session().folder()).string();
+  // On the page the folder is the browser's own file system, a path that means nothing to the student.
+  view.folder = host_files_on_users_disk() ? (started_ ? checked_folder_ : exercises_.session().folder()).string()
+                                           : std::string("this browser (the files you edited or dropped here)");
   if (running()) {
     view.state = CheckPanelView::State::Running;
     view.done = process_.tests_done();

@@ -275,7 +275,8 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
     state.run_mine_y = 0.5f * (low.y + high.y);
     if (stop) session.stop_running();
     ImGui::SameLine();
-    ImGui::Text("running your code: %s, %.1f s", session.running_label().c_str(), session.running_seconds());
+    // The time first, and wrapped: the label can be longer than a narrow panel.
+    ImGui::TextWrapped("running your code (%.1f s): %s", session.running_seconds(), session.running_label().c_str());
   } else {
     const bool run_mine = ImGui::Button("Run mine");
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
