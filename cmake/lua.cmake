@@ -2,7 +2,8 @@
 # for in this order, the first that works winning:
 #   1. MESHEDIT_LUA_SOURCE_DIR, when set: those sources compiled here as C++ (lua_sources.cmake);
 #   2. vcpkg's lua[cpp]: find_package(unofficial-lua CONFIG), target unofficial::lua::lua-cpp (C++ linkage);
-#   3. pkg-config, the names of a C++ build: lua5.4-c++ (Debian, Ubuntu), lua-5.4-c++, lua54-c++, lua-c++;
+#   3. pkg-config, the names of a C++ build: lua5.4-c++ (Debian, Ubuntu), lua-5.4-c++, lua54-c++, lua-c++, its functions
+#      with C names (Debian 12, Ubuntu 22.04) or, failing that, with C++ names (Ubuntu 24.04);
 #   4. pkg-config, the names of Lua built as C: lua5.4, lua-5.4, lua54, lua (Homebrew, vcpkg's plain lua);
 #   5. CMake's FindLua module.
 # A library from 2-5 is used only when a small program linked with it (lua_unwinds.cpp) shows that it is Lua 5.4 and
@@ -64,6 +65,14 @@ foreach(names IN ITEMS "lua5.4-c++;lua-5.4-c++;lua54-c++;lua-c++" "lua5.4;lua-5.
   pkg_search_module(${prefix} QUIET IMPORTED_TARGET ${names})
   if(${prefix}_FOUND)
     meshedit_lua_try("pkg-config ${${prefix}_MODULE_NAME} (${${prefix}_LINK_LIBRARIES})" PkgConfig::${prefix})
+    if(NOT TARGET meshedit::lua AND names MATCHES "c\\+\\+")
+      # Debian 12 builds its liblua5.4-c++ with C names; Ubuntu 24.04 with C++ names, for headers without extern "C".
+      add_library(${prefix}_cxx_names INTERFACE IMPORTED)
+      target_link_libraries(${prefix}_cxx_names INTERFACE PkgConfig::${prefix})
+      meshedit_lua_cxx_linkage_header(${prefix}_cxx_names)
+      meshedit_lua_try("pkg-config ${${prefix}_MODULE_NAME} with C++ names (${${prefix}_LINK_LIBRARIES})"
+                       ${prefix}_cxx_names)
+    endif()
   else()
     string(REPLACE ";" ", " shown "${names}")
     set(meshedit_lua_tried "${meshedit_lua_tried}\n  pkg-config ${shown}: not found")

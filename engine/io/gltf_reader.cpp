@@ -91,7 +91,14 @@ tinygltf::Model load_model(std::string_view bytes, const std::string& name, cons
   if (bytes.size() > kMaxReadFileBytes) throw FileError(name, "", "file is too large");
   FilePolicy policy{!base_dir.empty()};
   tinygltf::TinyGLTF loader;
-  loader.SetFsCallbacks({&file_exists, &keep_path, &read_whole_file, &refuse_write, &policy});
+  // By name: tinygltf 2.8 (Ubuntu 24.04) has a member more (GetFileSizeInBytes, left empty: it is optional).
+  tinygltf::FsCallbacks callbacks{};
+  callbacks.FileExists = &file_exists;
+  callbacks.ExpandFilePath = &keep_path;
+  callbacks.ReadWholeFile = &read_whole_file;
+  callbacks.WriteWholeFile = &refuse_write;
+  callbacks.user_data = &policy;
+  loader.SetFsCallbacks(callbacks);
   loader.SetImageLoader(&skip_image, nullptr);
   tinygltf::Model model;
   std::string err, warn;
