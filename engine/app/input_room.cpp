@@ -6,6 +6,7 @@
 
 #include "app/document_room.h"
 #include "app/view_room.h"
+#include "ui/key_pressed.h"
 
 namespace meshedit {
 
@@ -15,7 +16,7 @@ std::vector<std::pair<int, KeyMods>> InputRoom::keys_pressed() {
   if (io.WantCaptureKeyboard) return pressed;
   const KeyMods mods{io.KeyCtrl, io.KeyShift};
   for (int key : bound_keys()) {
-    if (ImGui::IsKeyPressed(key, false)) pressed.emplace_back(key, mods);
+    if (glfw_key_pressed(key, false)) pressed.emplace_back(key, mods);
   }
   return pressed;
 }

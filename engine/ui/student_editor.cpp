@@ -11,6 +11,7 @@
 #include <imgui_stdlib.h>
 
 #include "ui/fonts.h"
+#include "ui/key_pressed.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -140,7 +141,7 @@ bool draw_code_view(StudentEdit& edit, StudentEditorState& state, const TextShap
   const ImVec2 box_min = ImGui::GetItemRectMin();
   text_top = box_min.y + style.FramePadding.y;
   // Ctrl+S while the box has the keyboard (the GLFW backend's key indices: a letter is its ASCII capital).
-  const bool save = ImGui::GetActiveID() == box_id && ImGui::GetIO().KeyCtrl && ImGui::IsKeyPressed('S', false);
+  const bool save = ImGui::GetActiveID() == box_id && ImGui::GetIO().KeyCtrl && glfw_key_pressed('S', false);
   if (const std::optional<ImVec2> cursor = moved_cursor(box_id, state, line_height)) {
     keep_in_sight(*cursor, style.FramePadding, visible, line_height);
   }
