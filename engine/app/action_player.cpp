@@ -29,6 +29,9 @@ bool wait_over(EditorApp& app, const ScriptedAction& a) {
 }  // namespace
 
 bool ActionPlayer::step(EditorApp& app) {
+  // A lesson's your_turn running the student's code: what follows waits for its verdict (the student's deadline,
+  // student_code_seconds, ends a runaway).
+  if (app.lesson().student_code_running()) return true;
   if (waiting_for_run_) {
     if (app.exercises().running()) return true;
     waiting_for_run_ = false;

@@ -12,7 +12,8 @@
 // file the page receives), checked once per frame, and fails after N frames without it; `wait-check N TEXT` the same
 // for the Check tab's words (a check's progress). An action that starts the student's code on its thread (run-mine,
 // lesson-show-mine, check-open: ExerciseSession::start_mine) holds the script until the code has ended and its run
-// is in the document, frame after frame; start-mine alone does not (what follows it runs while the code does).
+// is in the document, frame after frame; start-mine alone does not (what follows it runs while the code does). A
+// lesson's your_turn running the student's code holds the script the same way until its verdict is in the step.
 #pragma once
 
 #include <cstddef>

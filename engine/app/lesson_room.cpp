@@ -10,6 +10,7 @@
 #include "app/mesh_loading.h"
 #include "app/view_room.h"
 #include "app/window_host.h"
+#include "document/background_work.h"
 #include "document/exception_report.h"
 
 namespace meshedit {
@@ -27,10 +28,13 @@ std::unique_ptr<LessonRunner> LessonRoom::make_runner() {
   auto runner = std::make_unique<LessonRunner>(host_);
   runner->set_print(print_);
   runner->set_student_folder(exercises_.session().folder());  // your_turn runs the Exercises tab's files
+  // Beside the frames where the host has threads: a runaway your_turn never holds the window.
+  runner->set_student_code_in_background(BackgroundWork::threaded());
   return runner;
 }
 
 bool LessonRoom::open(const std::filesystem::path& path) {
+  follow_student_folder();  // the first step's your_turn runs the Exercises tab's files as they are now
   LessonRunner::Prepared lesson;
   if (!runner_->prepare(path, lesson)) {
     watch_lesson(panel_, runner_->path());  // the file asked for: saving a fix loads it
@@ -84,6 +88,7 @@ void LessonRoom::show_list() {
 }
 
 void LessonRoom::update(float frame_ms) {
+  follow_student_folder();
   if (!runner_->loaded()) return;
   const Selection& selection = document_.selection();
   if (selection.selected != selection_heard_) {
@@ -92,9 +97,13 @@ void LessonRoom::update(float frame_ms) {
   }
   const double dt = std::min(0.25, double(frame_ms) / 1000.0);  // a long stall must not skip an animation
   reload_if_changed(*runner_, panel_, dt);
+  follow_student_folder();
+  runner_->update(dt);
+}
+
+void LessonRoom::follow_student_folder() {
   const std::filesystem::path& folder = exercises_.session().folder();
   if (runner_->student_folder() != folder) runner_->set_student_folder(folder);
-  runner_->update(dt);
 }
 
 void LessonRoom::take_request() {

@@ -69,6 +69,8 @@ class LessonRoom {
  private:
   // A runner with no lesson, for the window's lesson host, printing to the console.
   std::unique_ptr<LessonRunner> make_runner();
+  // The runner's student folder is the Exercises tab's (your_turn runs the files the tab runs).
+  void follow_student_folder();
 
   DocumentRoom& document_;
   ViewRoom& view_;

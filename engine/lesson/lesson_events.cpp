@@ -85,6 +85,7 @@ std::string LessonWait::describe() const {
     case Kind::CurvePick: return "a click on the curve answering '" + question + "'";
     case Kind::Answer: return (components == 1 ? "a number answering '" : "a point answering '") + question + "'";
     case Kind::YourTurn: return "the student's " + name + " to give the reference's answer";
+    case Kind::YourTurnRunning: return "the student's " + name + " to finish running";
   }
   return "";
 }

@@ -68,6 +68,7 @@ struct LessonWait {
     CurvePick,
     Answer,
     YourTurn,
+    YourTurnRunning,  // the student's code of a your_turn runs (LessonRunner::student_code_running)
     Command
   };
   Kind kind = Kind::None;

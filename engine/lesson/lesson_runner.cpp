@@ -33,6 +33,7 @@
 #include "lesson/internal/lesson_api.h"
 #include "lesson/internal/lesson_displays.h"
 #include "lesson/internal/lesson_your_turn.h"
+#include "lesson/internal/your_turn_run.h"
 #include "script/exception_text.h"
 #include "script/lua_args.h"
 #include "script/script_runtime.h"
@@ -111,6 +112,21 @@ void LessonRunner::set_student_limits(const LuaLimits& limits) {
   if (script_) script_->student_limits = limits;
 }
 
+void LessonRunner::set_student_code_in_background(bool background) {
+  student_code_in_background_ = background;
+  if (script_) script_->student_code_in_background = background;
+}
+
+bool LessonRunner::student_code_running() const { return script_ && script_->running_turn; }
+
+double LessonRunner::student_code_seconds() const {
+  return student_code_running() ? script_->running_turn->seconds() : 0.0;
+}
+
+void LessonRunner::stop_student_code() {
+  if (student_code_running()) script_->running_turn->stop();
+}
+
 LessonRunner::Prepared::Prepared() = default;
 LessonRunner::Prepared::~Prepared() = default;
 LessonRunner::Prepared::Prepared(Prepared&&) noexcept = default;
@@ -180,6 +196,7 @@ std::string LessonRunner::read_and_run(Prepared& lesson) {
   script.directory = path.parent_path();  // lesson_file() finds assets next to the lesson
   script.student_folder = student_folder_;
   script.student_limits = student_limits_;
+  script.student_code_in_background = student_code_in_background_;
   {
     const BusyScope busy(busy_);
     lesson.runtime_ = std::make_unique<ScriptRuntime>(limits_);
@@ -256,6 +273,7 @@ void LessonRunner::start_step(size_t index) noexcept try {
   step_error_.clear();
   step_out_of_memory_ = false;
   clear_step_display(runtime_->state(), *script_);
+  script_->running_turn.reset();  // a your_turn of the step left: its code stopped, waited for
   script_->wait = {};
   script_->step_thread = nullptr;
   state_ = StepState::Waiting;
@@ -402,6 +420,15 @@ void LessonRunner::advance_wait(double dt) noexcept try {
       if (!wait.selection_matches(selected)) return;
       return resume([this, selected](lua_State* L) {
         push_element_value(L, host_, selected);
+        return 1;
+      });
+    }
+    case LessonWait::Kind::YourTurnRunning: {
+      if (!script_->running_turn || !script_->running_turn->done()) return;
+      const std::shared_ptr<YourTurnRun> run = std::move(script_->running_turn);
+      const bool right = record_your_turn(*script_, run->finish());
+      return resume([right](lua_State* L) {
+        lua_pushboolean(L, right);
         return 1;
       });
     }

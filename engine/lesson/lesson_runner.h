@@ -27,7 +27,9 @@
 //   kind resumes the step and returns true whether the answer was right or wrong; judgements() counts the answers
 //   judged and last_judgement() says how the latest went.
 // - A your_turn wait (lesson_your_turn.h) is resumed by update() when the student's file changed on disk, read at most
-//   every kStudentFileCheckSeconds of update time; your_turns() lists the step's runs and their verdicts.
+//   every kStudentFileCheckSeconds of update time; your_turns() lists the step's runs and their verdicts. A run beside
+//   the step (set_student_code_in_background) is taken by the first update() after it ended, which records its
+//   verdict and resumes the step; leaving the step, a reload or the runner's end stops it and waits for it.
 #pragma once
 
 #include <cstddef>
@@ -75,6 +77,14 @@ class LessonRunner {
   void set_student_folder(std::filesystem::path folder);
   const std::filesystem::path& student_folder() const { return student_folder_; }
   void set_student_limits(const LuaLimits& limits);
+  // Whether a your_turn runs the student's code beside the step (the window: the step waits, the frames go on) or
+  // in place (the default, the headless driver); applies to the lesson running and to later loads.
+  void set_student_code_in_background(bool background);
+  // A your_turn's run under way (LessonWait::Kind::YourTurnRunning), how long it has run, and its Stop: the code
+  // stops at its next line, and the run's verdict says so.
+  bool student_code_running() const;
+  double student_code_seconds() const;
+  void stop_student_code();
 
   // A lesson file read and run to its list of steps, not yet the one running (prepare, then take).
   struct Prepared {
@@ -176,6 +186,7 @@ class LessonRunner {
   std::function<void(const std::string&)> print_;
   std::filesystem::path student_folder_;
   LuaLimits student_limits_;
+  bool student_code_in_background_ = false;
   std::filesystem::path path_;
   // The script's state is declared before the runtime, so the runtime (whose closures point at it) goes first.
   std::unique_ptr<LessonScript> script_;

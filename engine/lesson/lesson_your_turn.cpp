@@ -1,6 +1,6 @@
 // your_turn (see lesson_your_turn.h): a Lua prelude loops "run, wait for a save" in the step's coroutine; the C
-// functions below check the table and build the exercise's input, run the student's file and the reference through
-// check_exercise (the Exercises tab's comparison), record the verdict and make the wait.
+// functions below check the table and build the exercise's input, run the student's file beside the reference
+// (YourTurnRun, judged by the Exercises tab's comparison), record the verdict and make the waits.
 #include "lesson/internal/lesson_your_turn.h"
 
 #include <cmath>
@@ -18,6 +18,7 @@
 #include "exercise/scripted_exercise.h"
 #include "lesson/internal/diagram_names.h"
 #include "lesson/internal/lesson_api_support.h"
+#include "lesson/internal/your_turn_run.h"
 #include "script/bezier_bindings.h"
 #include "script/file_stamp.h"
 #include "script/lua_runtime.h"
@@ -25,8 +26,6 @@
 
 namespace meshedit {
 namespace {
-
-constexpr size_t kDiagnosisLines = 3;  // the first differences shown, the likely mistake first
 
 constexpr const char* kYourTurnPrelude = R"lua(local api = __lesson_your_turn
 __lesson_your_turn = nil
@@ -218,19 +217,6 @@ DiagramNames read_names(lua_State* L, int index) {
   return names;
 }
 
-// The wrong verdict's words: compare()'s first differences, the likely mistake first.
-std::string diagnosis(const ExerciseReport& report) {
-  std::string text;
-  for (size_t i = 0; i < report.differences.size() && i < kDiagnosisLines; ++i) {
-    text += (text.empty() ? "" : "\n") + report.differences[i];
-  }
-  const size_t shown = std::min(report.differences.size(), kDiagnosisLines);
-  if (report.total_differences > shown) {
-    text += "\n(" + std::to_string(report.total_differences - shown) + " more: the Exercises tab lists them)";
-  }
-  return text.empty() ? report.summary() : text;
-}
-
 // ---- what the prelude calls ---------------------------------------------------------------------------------------
 
 // check(spec) -> the input: the whole table, before the first run.
@@ -278,31 +264,20 @@ int api_run(lua_State* L) {
   verdict.block = script.blocks.size();
   verdict.path = file.string();
   verdict.stamp = file_stamp(file);
-  try {
-    std::unique_ptr<StudentCode> code = load_student_file(file, script.student_limits);
-    const ExerciseReport report = check_exercise(*code, held.exercise, held.input);
-    verdict.right = report.equal;
-    if (!report.equal) {
-      verdict.feedback = diagnosis(report);
-      if (std::string legend = diagram_legend(verdict.feedback, held.names); !legend.empty()) {
-        verdict.feedback += "\n" + legend;
-      }
-    }
-  } catch (const ScriptError& error) {  // the file does not load: its own file:line
-    verdict.feedback = error.what();
+  auto run = std::make_shared<YourTurnRun>(std::move(verdict), held.names, script.student_limits);
+  if (script.student_code_in_background) {  // the step waits while it runs; the runner resumes it with the verdict
+    LessonWait wait;
+    wait.kind = LessonWait::Kind::YourTurnRunning;
+    wait.name = info.file;
+    wait.question = "Your turn: your " + std::string(info.function) + " in " + info.file + " is running on " +
+                    run->running().input + ".";
+    wait.where = run->running().where;
+    script.running_turn = std::move(run);
+    script.wait = std::move(wait);
+    script.api_yield = true;
+    return lua_yield(L, 0);
   }
-  const bool right = verdict.right;
-  if (right) {
-    LessonJudgement judgement;
-    judgement.question = "Your turn: " + verdict.function + " in " + verdict.file + ", on " + verdict.input;
-    judgement.given = "your " + verdict.function;
-    judgement.right = true;
-    judgement.feedback = "it gives the reference's answer";
-    script.answered.push_back(std::move(judgement));
-    script.blocks.push_back({LessonBlock::Kind::Answered, script.answered.size() - 1});
-  }
-  script.your_turns.push_back(std::move(verdict));
-  lua_pushboolean(L, right);
+  lua_pushboolean(L, record_your_turn(script, run->finish()));
   return 1;
 }
 
@@ -336,6 +311,21 @@ int api_await(lua_State* L) {
 }
 
 }  // namespace
+
+bool record_your_turn(LessonScript& script, YourTurnVerdict verdict) {
+  const bool right = verdict.right;
+  if (right) {
+    LessonJudgement judgement;
+    judgement.question = "Your turn: " + verdict.function + " in " + verdict.file + ", on " + verdict.input;
+    judgement.given = "your " + verdict.function;
+    judgement.right = true;
+    judgement.feedback = "it gives the reference's answer";
+    script.answered.push_back(std::move(judgement));
+    script.blocks.push_back({LessonBlock::Kind::Answered, script.answered.size() - 1});
+  }
+  script.your_turns.push_back(std::move(verdict));
+  return right;
+}
 
 void open_lesson_your_turn(LuaRuntime& runtime, LessonScript& script) {
   open_prelude_functions(

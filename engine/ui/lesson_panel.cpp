@@ -119,6 +119,16 @@ void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, co
   if (clicked) state.show_your_turn();
 }
 
+// A your_turn's run under way: what runs on what, its time and a Stop (the window draws on while it runs).
+void draw_your_turn_running(LessonRunner& runner, LessonPanelState& state, const LessonWait& wait) {
+  text_wrapped_at_spaces(wait.question);
+  const bool stop = ImGui::Button("Stop");
+  if (state.probe) state.probe->record_last_item("lesson-stop-mine");
+  if (stop) runner.stop_student_code();
+  ImGui::SameLine();
+  ImGui::TextWrapped("running your code (%.1f s)", runner.student_code_seconds());
+}
+
 void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
   const std::vector<LessonBlock>& blocks = runner.blocks();
   for (size_t i = 0; i < blocks.size(); ++i) {
@@ -136,6 +146,8 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
     if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
   } else if (wait.kind == LessonWait::Kind::YourTurn) {  // the student's file gave another answer: why, until saved
     draw_your_turn_wait(runner, state, wait);
+  } else if (wait.kind == LessonWait::Kind::YourTurnRunning) {
+    draw_your_turn_running(runner, state, wait);
   } else if (wait.kind == LessonWait::Kind::Animation && wait.seconds > 0) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
   } else if (wait.waiting()) {

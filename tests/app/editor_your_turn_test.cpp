@@ -7,10 +7,12 @@
 // be made.
 #include <gtest/gtest.h>
 
+#include <chrono>
 #include <filesystem>
 #include <fstream>
 #include <memory>
 #include <string>
+#include <thread>
 
 #include "app/editor_app.h"
 #include "exercise/exercises.h"
@@ -44,6 +46,14 @@ class EditorYourTurn : public testing::GlTest {
   void frames(int count) {
     for (int i = 0; i < count; ++i) harness_.frame([&] { draw(); });
   }
+  // Frames until the lesson's your_turn has its verdict (the student's code runs beside the frames), at most 10 s.
+  void until_verdict() {
+    for (int i = 0; i < 10000 && app_->lesson().student_code_running(); ++i) {
+      frames(1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    frames(3);  // the panel brings the verdict into sight
+  }
   // Clicks the your_turn's button where the lesson panel drew it in the last frame.
   void click_show_mine() {
     const UiProbe::Item* button = app_->panels().probe().find("lesson-show-mine");
@@ -65,7 +75,7 @@ TEST_F(EditorYourTurn, LessonFoursButtonRunsTheBuggyFlipOnTheDiamondInTheExercis
   LessonRunner& lesson = app_->lesson();
   lesson.go_to(6);  // "Before and after, pointer by pointer": a question, then the your_turn
   ASSERT_TRUE(lesson.deliver(LessonEvent::value("4"))) << lesson.error();
-  frames(3);
+  until_verdict();
   ASSERT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurn) << lesson.error();
   ASSERT_EQ(lesson.your_turns().size(), 1u);
   const YourTurnVerdict verdict = lesson.your_turns().back();
@@ -126,7 +136,7 @@ TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
                          "  your_turn { exercise = \"curve\", points = {{0, 0}, {1, 2}, {3, 2}, {4, 0}}, t = 0.3 }\n"
                          "end)\n";
   ASSERT_TRUE(app_->open(file)) << app_->lesson().error();
-  frames(3);
+  until_verdict();
   ASSERT_NE(your_turn_to_show(app_->lesson()), nullptr) << app_->lesson().error();
   EXPECT_FALSE(app_->view().bezier_mine().curve_on());
 
@@ -145,6 +155,47 @@ TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
   EXPECT_TRUE(mine.failed()) << mine.message;
   EXPECT_EQ(mine.failed_level, 1) << mine.message;
   EXPECT_FALSE(mine.message.empty());
+}
+
+TEST_F(EditorYourTurn, ARunawayYourTurnRunsBesideTheFramesAndStopEndsItWithItsLine) {
+  std::ofstream(student_ / "flip.lua") << "function flip_edge(mesh, e)\n  while true do end\nend\n";
+  const fs::path file = student_.parent_path() / "flip_turn.lua";
+  std::ofstream(file) << "lesson { title = \"Flip turn\" }\n"
+                         "step(\"Yours\", function()\n"
+                         "  your_turn { exercise = \"flip\", mesh = meshedit.grid(1, 1), element = \"e2\" }\n"
+                         "  say(\"flipped\")\n"
+                         "end)\n";
+  ASSERT_TRUE(app_->open(file)) << app_->lesson().error();
+  LessonRunner& lesson = app_->lesson();
+  frames(20);  // twenty frames drawn while the loop runs
+  ASSERT_TRUE(lesson.student_code_running()) << lesson.error();
+  EXPECT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurnRunning);
+  EXPECT_NE(lesson.waiting_for().question.find("your flip_edge in flip.lua is running on e2"), std::string::npos)
+      << lesson.waiting_for().question;
+  EXPECT_TRUE(lesson.your_turns().empty());
+
+  const UiProbe::Item* stop = app_->panels().probe().find("lesson-stop-mine");
+  ASSERT_NE(stop, nullptr) << "the lesson panel drew no Stop";
+  harness_.click(stop->center(), [&] { draw(); });
+  until_verdict();
+  EXPECT_FALSE(lesson.student_code_running());
+  ASSERT_EQ(lesson.waiting_for().kind, LessonWait::Kind::YourTurn) << lesson.error();
+  ASSERT_EQ(lesson.your_turns().size(), 1u);
+  EXPECT_FALSE(lesson.your_turns()[0].right);
+  EXPECT_NE(lesson.waiting_for().feedback.find("flip.lua:2: stopped: you pressed Stop"), std::string::npos)
+      << lesson.waiting_for().feedback;
+
+  // Leaving the step while a run goes on stops it: the lesson goes on at once.
+  std::ofstream(student_ / "flip.lua") << "function flip_edge(mesh, e)\n  while true do end\nend\n-- saved\n";
+  for (int i = 0; i < 200 && !lesson.student_code_running(); ++i) {
+    frames(1);
+    std::this_thread::sleep_for(std::chrono::milliseconds(5));
+  }
+  ASSERT_TRUE(lesson.student_code_running());  // the save ran the file again
+  lesson.restart_step();
+  frames(1);
+  EXPECT_TRUE(lesson.student_code_running());  // the step's new run
+  EXPECT_EQ(lesson.your_turns().size(), 0u);
 }
 
 TEST_F(EditorYourTurn, WithNoWrongYourTurnWaitingItRefusesAndChangesNothing) {

@@ -24,8 +24,8 @@ int selected_pixels_in_input(const Image& image) {
   for (int y = 0; y < image.height; ++y) {
     for (int x = 0; x < image.width / 3; ++x) {
       const uint8_t* p = &image.rgba[(size_t(y) * image.width + x) * 4];
-      const bool near = std::abs(p[0] - selected.r) < 40 && std::abs(p[1] - selected.g) < 40 &&
-                        std::abs(p[2] - selected.b) < 40;
+      const bool near =
+          std::abs(p[0] - selected.r) < 40 && std::abs(p[1] - selected.g) < 40 && std::abs(p[2] - selected.b) < 40;
       count += near ? 1 : 0;
     }
   }
@@ -39,10 +39,10 @@ TEST(FailurePictures, AnEdgeOnTheFarSideOfTheThreeQuarterViewIsInSight) {
   const fs::path grading = testing::source_dir() / "tests" / "grading";
   fs::create_directories(dir / "bob");
   fs::copy_file(grading / "students" / "flip_forgets_faces.lua", dir / "bob" / "flip.lua");
-  const testing::CommandRun run = testing::run_meshedit(
-      {"grade", "--suite", (grading / "suites" / "flip.lua").string(), "--submission", (dir / "bob").string(),
-       "--results", (dir / "results.json").string()},
-      "failure-pictures");
+  const testing::CommandRun run =
+      testing::run_meshedit({"grade", "--suite", (grading / "suites" / "flip.lua").string(), "--submission",
+                             (dir / "bob").string(), "--results", (dir / "results.json").string()},
+                            "failure-pictures");
   ASSERT_EQ(run.status, 0) << run.err;
   if (run.err.find("no pictures") != std::string::npos) GTEST_SKIP() << run.err;
   for (const char* test : {"test-4.1.png", "test-4.2.png"}) {

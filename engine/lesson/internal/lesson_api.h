@@ -18,6 +18,7 @@
 #pragma once
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -29,6 +30,8 @@
 struct lua_State;
 
 namespace meshedit {
+
+class YourTurnRun;  // internal/your_turn_run.h
 
 struct LessonStepDef {
   std::string title;
@@ -64,6 +67,10 @@ struct LessonScript {
   size_t judgements = 0;
   // Every your_turn run of this step (lesson_your_turn.h), in order: kept apart from the questions' judgements.
   std::vector<YourTurnVerdict> your_turns;
+  // The window's runner: a your_turn's run goes on beside the step, which waits for it (lesson_your_turn.h); the run
+  // under way, if any (its destructor stops the student's code and waits for it).
+  bool student_code_in_background = false;
+  std::shared_ptr<YourTurnRun> running_turn;
 };
 
 // Defines the lesson globals in `runtime` (once, before the lesson file runs), all bound to `script`,

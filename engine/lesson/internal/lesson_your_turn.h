@@ -20,6 +20,10 @@
 // - Each run loads the file afresh into its own sandboxed StudentCode under LessonScript::student_limits (the limits
 //   the window's exercises use), so a Lua error is its "flip.lua:LINE: message" and a runaway loop is stopped by the
 //   limits, with the Exercises tab's hint for the exercise: both are the run's wrong verdict, never the step's error.
+// - The student's code runs on a thread of its own (YourTurnRun, your_turn_run.h). With
+//   LessonScript::student_code_in_background (the window) the step waits for it (LessonWait::Kind::YourTurnRunning,
+//   the run in LessonScript::running_turn) and the runner, once the run is done, records its verdict
+//   (record_your_turn) and resumes the step with it; without (the headless driver) your_turn waits for it in place.
 // - Every run is a YourTurnVerdict in LessonScript::your_turns, with the exercise and the input it ran on (the copy
 //   above), so the window can show the same run in the Exercises tab; a right one is also an Answered block (the
 //   panel keeps it, as a question answered right). A wrong one leaves the step waiting (LessonWait::Kind::YourTurn,
@@ -41,5 +45,9 @@ inline constexpr double kStudentFileCheckSeconds = 0.5;
 // Defines your_turn in `runtime` (after open_lesson_api's own globals), bound to `script`. Throws ScriptError if the
 // API's own prelude fails.
 void open_lesson_your_turn(LuaRuntime& runtime, LessonScript& script);
+
+// Adds a finished run's verdict to the step (its your_turns, and an Answered block when right); returns whether it
+// was right.
+bool record_your_turn(LessonScript& script, YourTurnVerdict verdict);
 
 }  // namespace meshedit
