@@ -2,7 +2,8 @@
 // diagnosis, saving the right one makes the next look at the file (not before half a second of updates) run it again
 // and the step go on; a runaway student loop is stopped by the student limits and said so; a student file with a
 // syntax error is its file:line; bad arguments fail the step at the lesson's line; the lesson's mesh is not changed;
-// each verdict keeps the exercise and the input it ran on.
+// each verdict keeps the exercise and the input it ran on; in the background (the window's runner) the step waits for
+// the run, and Stop or leaving the step ends it.
 #include <gtest/gtest.h>
 
 #include <chrono>
@@ -10,6 +11,7 @@
 #include <fstream>
 #include <memory>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include "core/ids.h"
@@ -159,6 +161,59 @@ TEST(LessonYourTurn, ARunawayLoopIsStoppedByTheStudentLimitsAndSaidSo) {
   const std::string& feedback = runner.waiting_for().feedback;
   EXPECT_EQ(feedback.rfind("flip.lua:2: instruction budget exceeded", 0), 0u) << feedback;
   EXPECT_NE(feedback.find(unfinished_run_hint(Exercise::FlipEdge)), std::string::npos) << feedback;
+}
+
+// In the background (the window's runner): the step waits while the student's code runs; the first update after it
+// ended records the verdict and the step goes on from your_turn; stop_student_code ends a runaway at its line, and
+// leaving the step stops the run under way.
+TEST(LessonYourTurn, InTheBackgroundTheStepWaitsForTheRunAndStopEndsARunaway) {
+  const fs::path dir = testing::scratch_dir();
+  fs::create_directories(dir / "student");
+  const fs::path file = write(dir / "student" / "flip.lua", testing::read_text(testing::source_dir() / "tests" /
+                                                                               "exercise" / "solutions" / "flip.lua"));
+  HeadlessHost host;
+  LessonRunner runner(host);
+  runner.set_student_folder(dir / "student");
+  runner.set_student_code_in_background(true);
+  ASSERT_TRUE(runner.load(write(dir / "lesson.lua", kLesson))) << runner.error();
+  EXPECT_EQ(runner.step_state(), State::Waiting) << runner.error();
+  EXPECT_EQ(runner.waiting_for().kind, LessonWait::Kind::YourTurnRunning);
+  EXPECT_EQ(runner.waiting_for().describe(), "the student's flip.lua to finish running");
+  EXPECT_EQ(runner.waiting_for().where, "lesson.lua:5");
+  EXPECT_TRUE(runner.your_turns().empty());
+  for (int i = 0; i < 5000 && runner.student_code_running() && runner.your_turns().empty(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    runner.update(0.001);
+  }
+  ASSERT_EQ(runner.your_turns().size(), 1u);
+  EXPECT_TRUE(runner.your_turns()[0].right);
+  EXPECT_FALSE(runner.student_code_running());
+  EXPECT_EQ(runner.step_state(), State::Finished) << runner.error();
+  EXPECT_EQ(runner.said(), std::vector<std::string>{"the grid is as it was"});
+
+  save(file, "function flip_edge(mesh, e)\n  while true do end\nend\n");
+  runner.restart_step();
+  ASSERT_TRUE(runner.student_code_running());
+  std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  runner.update(0.001);
+  EXPECT_TRUE(runner.student_code_running());  // still running: the loop has no end
+  EXPECT_GT(runner.student_code_seconds(), 0.04);
+  runner.stop_student_code();
+  for (int i = 0; i < 5000 && runner.student_code_running(); ++i) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    runner.update(0.001);
+  }
+  ASSERT_EQ(runner.your_turns().size(), 1u);
+  EXPECT_FALSE(runner.your_turns()[0].right);
+  EXPECT_EQ(runner.waiting_for().kind, LessonWait::Kind::YourTurn);
+  EXPECT_EQ(runner.waiting_for().feedback.rfind("flip.lua:2: stopped: you pressed Stop", 0), 0u)
+      << runner.waiting_for().feedback;
+
+  runner.restart_step();  // a run again, and leaving the step ends it at once
+  ASSERT_TRUE(runner.student_code_running());
+  runner.go_to(0);
+  EXPECT_TRUE(runner.student_code_running());  // the step's new run
+  EXPECT_TRUE(runner.your_turns().empty());
 }
 
 TEST(LessonYourTurn, AStudentSyntaxErrorIsItsFileAndLine) {
