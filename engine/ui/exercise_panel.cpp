@@ -29,10 +29,11 @@ void coloured(const ImVec4& colour, const std::string& line) {
   ImGui::PopStyleColor();
 }
 
-void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_validation) {
+// `error_listed`: the outcome's error is already one of the differences shown above, so it is not said again.
+void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_validation, bool error_listed = false) {
   ImGui::PushID(who);  // "yours" and "the reference" each have their own tree nodes
   if (!outcome.error.empty()) {
-    coloured(failed_colour(), std::string(who) + " failed: " + outcome.error);
+    if (!error_listed) coloured(failed_colour(), std::string(who) + " failed: " + outcome.error);
   } else if (!outcome.refused.empty()) {
     text(std::string(who) + " refused: " + outcome.refused);
   } else if (outcome.ran) {
@@ -96,7 +97,9 @@ void draw_report(const ExerciseRun& run) {
     for (const std::string& line : report.notes) text("- " + line);
     ImGui::TreePop();
   }
-  draw_outcome("yours", report.mine, true);
+  bool error_listed = false;  // a run that failed says its error once, among the differences shown
+  for (size_t i = 0; i < shown; ++i) error_listed = error_listed || report.differences[i] == report.mine.error;
+  draw_outcome("yours", report.mine, true, !report.mine.error.empty() && error_listed);
   draw_outcome("the reference", report.reference, false);
 }
 
