@@ -6,7 +6,7 @@
 # DIR/autograder/source, runs its setup.sh there as Gradescope does when the zip is uploaded, copies
 # SUBMISSION_DIR's files to DIR/autograder/submission, runs /autograder/run_autograder and prints the results.json
 # it wrote (also copied to ./autograder_trial_results.json). A second run with the same DIR skips debootstrap and
-# reuses the packages and build already there, as a rebuilt Gradescope image does not: remove DIR for a clean trial.
+# the packages already installed (the zip is unpacked and built afresh): remove DIR for a clean trial.
 set -euo pipefail
 release=jammy
 root=""
@@ -36,8 +36,10 @@ case "$release" in
 esac
 
 mounted=()
+keys=""
 cleanup() {
   for ((i = ${#mounted[@]} - 1; i >= 0; i--)); do umount -l "${mounted[$i]}" 2>/dev/null || true; done
+  [ -z "$keys" ] || rm -rf "$keys"
 }
 trap cleanup EXIT
 

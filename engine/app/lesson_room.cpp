@@ -97,7 +97,6 @@ void LessonRoom::update(float frame_ms) {
   }
   const double dt = std::min(0.25, double(frame_ms) / 1000.0);  // a long stall must not skip an animation
   reload_if_changed(*runner_, panel_, dt);
-  follow_student_folder();
   runner_->update(dt);
 }
 
