@@ -1,8 +1,10 @@
 #!/usr/bin/env bash
 # Installs what the web build (docs/WEB.md) needs on top of scripts/setup.sh's packages, and only what is missing,
 # so running it twice is harmless: Debian's emscripten (the compiler, its GLFW/WebGL ports and its Node.js tools),
-# Chromium to open the page headless, and python3 to serve the site locally. The pinned upstream sources the build
-# compiles (ImGui, Lua, tinyxml2) are not packages: the build takes them from MESHEDIT_VENDOR_DIR or downloads them.
+# Chromium to open the page headless, cmark (CommonMark's reference renderer: scripts/markdown_feedback_check.sh
+# renders the grader's Markdown feedback with it for Chromium), and python3 to serve the site locally. The pinned
+# upstream sources the build compiles (ImGui, Lua, tinyxml2) are not packages: the build takes them from
+# MESHEDIT_VENDOR_DIR or downloads them.
 set -euo pipefail
 here="$(dirname "$0")"
 
@@ -11,6 +13,7 @@ here="$(dirname "$0")"
 packages=(
   emscripten
   chromium
+  cmark
   python3
 )
 
