@@ -1,9 +1,10 @@
 # The web build's output, a static site in <build>/site (included by engine/app/CMakeLists.txt under emscripten):
-#   index.html (web/index.html: the page, its canvas and its start-up), check_worker.js (web/check_worker.js: Check my
-# work's tests in a Web Worker), meshedit.js, meshedit.wasm and meshedit.data, the last holding the files the program
-# reads, packaged under MESHEDIT_DATA_DIR (/meshedit) as in the source tree (lessons/, shaders/, assets/,
-# scripts/student/, scripts/exercises/, tests/grading/suites/: the course's suites Check my work runs), and the two
-# DejaVu fonts where the window looks for them natively. Any static file server serves the folder as it is.
+# index.html (web/index.html: the page, its canvas and its start-up), student_code_worker.js
+# (web/student_code_worker.js: the student's code in a Web Worker, for Check my work, Run mine and your_turn),
+# meshedit.js, meshedit.wasm and meshedit.data, the last holding the files the program reads, packaged under
+# MESHEDIT_DATA_DIR (/meshedit) as in the source tree (lessons/, shaders/, assets/, scripts/student/,
+# scripts/exercises/, tests/grading/suites/: the course's suites Check my work runs), and the two DejaVu fonts where
+# the window looks for them natively. Any static file server serves the folder as it is.
 set(site_dir "${PROJECT_BINARY_DIR}/site")
 set_target_properties(meshedit PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${site_dir}" SUFFIX ".js")
 
@@ -26,7 +27,8 @@ target_link_options(meshedit PRIVATE
   # The browser's storage (IndexedDB) for the student's saved files: web/index.html mounts it at /kept.
   -lidbfs.js
   # web/index.html writes the files the user hands the page with FS and gives their paths to the program with ccall.
-  "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','FS']")
+  # The worker for student code (web/student_code_worker.js) copies calls in and results out through HEAPU8.
+  "SHELL:-sEXPORTED_RUNTIME_METHODS=['ccall','FS','HEAPU8']")
 # The packaged folders are read at link time: a change in them relinks the page.
 file(GLOB_RECURSE packaged_files CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lessons/*" "${PROJECT_SOURCE_DIR}/shaders/*"
      "${PROJECT_SOURCE_DIR}/assets/*" "${PROJECT_SOURCE_DIR}/scripts/student/*"
@@ -35,4 +37,4 @@ set_property(TARGET meshedit APPEND PROPERTY LINK_DEPENDS ${packaged_files})
 
 # The page itself: copied at configure time, and again whenever it changes (configure_file makes CMake watch it).
 configure_file("${PROJECT_SOURCE_DIR}/web/index.html" "${site_dir}/index.html" COPYONLY)
-configure_file("${PROJECT_SOURCE_DIR}/web/check_worker.js" "${site_dir}/check_worker.js" COPYONLY)
+configure_file("${PROJECT_SOURCE_DIR}/web/student_code_worker.js" "${site_dir}/student_code_worker.js" COPYONLY)

@@ -1,8 +1,8 @@
 // CheckProcess: one run of the course's visible tests on the student's folder for File > Check my work, beside the
 // window: on the desktop `meshedit grade --visible-only --report FILE --progress` in a child process
-// (check_process_native.cpp); in a page, each test in a Web Worker (check_process_web.cpp, web/check_worker.js), the
-// report made by the page as grade() makes it (grade/grade_run.h). Either way the window keeps drawing while student
-// code runs, and Stop ends it at once.
+// (check_process_native.cpp); in a page, each test in a Web Worker (check_process_web.cpp, web/student_code_worker.js),
+// the report made by the page as grade() makes it (grade/grade_run.h). Either way the window keeps drawing while
+// student code runs, and Stop ends it at once.
 //
 // Invariants:
 // - poll() never blocks: it reads what progress the child printed and notices its end; call it once per frame.

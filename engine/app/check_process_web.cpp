@@ -1,11 +1,11 @@
 // CheckProcess in a page (see check_process.h): the suite is loaded here and the report made here (grade/grade_run.h,
-// as grade() makes it), while each test runs in a Web Worker (web/check_worker.js, which runs meshedit_check_test of
-// check_worker_web.cpp in its own copy of the program): student code never runs on the page's thread, so the page
-// keeps drawing, and a test that outlives its time limit (plus grade()'s grace second) is stopped by ending the worker,
-// with the desktop's words for a test its parent killed. A worker that dies (its memory ran out, the program aborted)
-// fails its test as a crash; the next test gets a new worker. When the check ends, its results.json (Gradescope's
-// shape) is put into the page as the text of <script type="application/json" id="check-results">, for a browser that
-// reads the page.
+// as grade() makes it), while each test runs in a Web Worker (web/student_code_worker.js, which runs
+// meshedit_check_test of app/worker_entries_web.cpp in its own copy of the program): student code never runs on the
+// page's thread, so the page keeps drawing, and a test that outlives its time limit (plus grade()'s grace second) is
+// stopped by ending the worker, with the desktop's words for a test its parent killed. A worker that dies (its memory
+// ran out, the program aborted) fails its test as a crash; the next test gets a new worker. When the check ends, its
+// results.json (Gradescope's shape) is put into the page as the text of <script type="application/json"
+// id="check-results">, for a browser that reads the page.
 #include <emscripten/emscripten.h>
 
 #include <cstdlib>
@@ -39,7 +39,7 @@ EM_JS(void, page_check_add_file, (const char* relative, const char* bytes, int s
 EM_JS(char*, page_check_send, (const char* suite, int index), {
   try {
     if (!Module.checkWorker) {
-      const worker = new Worker('check_worker.js');
+      const worker = new Worker('student_code_worker.js');
       worker.onmessage = (event) => { if (Module.checkWorker === worker) Module.checkNews.push(event.data); };
       worker.onerror = (event) => {
         event.preventDefault();

@@ -10,8 +10,8 @@
 #include "app/mesh_loading.h"
 #include "app/view_room.h"
 #include "app/window_host.h"
-#include "document/background_work.h"
 #include "document/exception_report.h"
+#include "document/student_call_work.h"
 
 namespace meshedit {
 
@@ -28,8 +28,8 @@ std::unique_ptr<LessonRunner> LessonRoom::make_runner() {
   auto runner = std::make_unique<LessonRunner>(host_);
   runner->set_print(print_);
   runner->set_student_folder(exercises_.session().folder());  // your_turn runs the Exercises tab's files
-  // Beside the frames where the host has threads: a runaway your_turn never holds the window.
-  runner->set_student_code_in_background(BackgroundWork::threaded());
+  // Beside the frames (a thread, or the page's Web Worker): a runaway your_turn never holds the window.
+  runner->set_student_code_in_background(StudentCallWork::off_the_callers_thread());
   return runner;
 }
 

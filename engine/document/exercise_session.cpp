@@ -104,8 +104,8 @@ struct ExerciseSession::PendingRun {
   ExerciseOutcome reference;
   std::unique_ptr<StudentCode> code;  // mine: lent by the student file for the run
   uint64_t code_serial = 0;
-  LuaLimits limits;
-  // Written by run_code (on the run's thread), read once it has ended.
+  StudentCall call;  // mine: what runs (its file's text too, for a host that loads it afresh)
+  // What the student's code gave, once it has ended.
   ExerciseOutcome mine;
   bool out_of_memory = false;
   std::string thrown;
@@ -113,27 +113,14 @@ struct ExerciseSession::PendingRun {
   uint64_t generation = 0;
   uint64_t version = 0;
   std::chrono::steady_clock::time_point started;
-  std::atomic<bool> stop{false};  // set by stop_running, read by the code's hook
 
-  // The student's code on the input; touches nothing but this run. Never throws.
-  void run_code() noexcept {
-    LuaRuntime& runtime = code->runtime();
-    runtime.set_limits(limits);
-    runtime.set_stop_request(&stop);
-    try {
-      RunOptions options;
-      options.record_edits = true;
-      mine = code->run(run.result.exercise, run.result.input, options);
-    } catch (const std::bad_alloc&) {
-      out_of_memory = true;
-    } catch (const std::exception& e) {  // StudentCode::run promises not to throw; a bug must not close the window
-      try {
-        thrown = e.what();
-      } catch (const std::bad_alloc&) {
-        out_of_memory = true;
-      }
-    }
-    runtime.set_stop_request(nullptr);
+  // The student's code on the input, here. Never throws.
+  void run_code() noexcept { keep(run_student_call_on(*code, call)); }
+  void keep(StudentCallResult result) noexcept {
+    mine = std::move(result.outcome);
+    out_of_memory = result.out_of_memory;
+    thrown = std::move(result.thrown);
+    if (!result.load_error.empty()) thrown = std::move(result.load_error);  // the file loaded here, not there: a bug
   }
 };
 
@@ -239,12 +226,11 @@ Check ExerciseSession::start_mine(MeshDocument& doc, Selection& selection) {
     pending->version = doc.mesh.version();
     pending->started = std::chrono::steady_clock::now();
     set_message(doc, Severity::Info, pending->run.result.label + ": your code is running (Stop ends it)");
-    PendingRun& run = *pending;
     pending_ = std::move(pending);
     try {
-      work_.start([&run] { run.run_code(); });
+      work_.start(std::move(pending_->call), std::move(pending_->code));
     } catch (...) {  // no thread to be had: nothing ran
-      student_.give_back(std::move(pending_->code), pending_->code_serial);
+      student_.give_back(work_.take_code(), pending_->code_serial);
       pending_.reset();
       throw;
     }
@@ -267,7 +253,7 @@ const std::string& ExerciseSession::running_label() const {
 }
 
 void ExerciseSession::stop_running() {
-  if (pending_) pending_->stop.store(true, std::memory_order_relaxed);
+  if (pending_) work_.stop();
 }
 
 bool ExerciseSession::poll(MeshDocument& doc, Selection& selection) {
@@ -282,9 +268,9 @@ Check ExerciseSession::wait_for_run(MeshDocument& doc, Selection& selection) {
 }
 
 Check ExerciseSession::take_pending(MeshDocument& doc, Selection& selection) {
-  work_.take();
   const std::unique_ptr<PendingRun> pending = std::move(pending_);
-  student_.give_back(std::move(pending->code), pending->code_serial);
+  pending->keep(work_.take());
+  student_.give_back(work_.take_code(), pending->code_serial);
   if (doc.generation != pending->generation || doc.mesh.version() != pending->version) {
     Check no = Check::no(pending->run.result.label +
                          ": the mesh changed while your code ran, so its result is left out: run it again");
@@ -347,9 +333,19 @@ Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool m
     return Check::no(e.what());
   }
   if (mine) {
+    made->call.exercise = exercise_;
+    made->call.input = result.input;
+    made->call.options.record_edits = true;
+    made->call.limits = limits_;
+    try {
+      made->call.files.push_back(read_student_source(student_.path()));
+    } catch (const ScriptError& e) {  // gone since it loaded
+      Check refused = Check::no(e.what());
+      set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
+      return refused;
+    }
     made->code_serial = student_.serial();
     made->code = student_.lend();
-    made->limits = limits_;
   }
   pending = std::move(made);
   return Check::yes();

@@ -26,14 +26,15 @@
 //   changes the document during a replay, the replay is dropped (sync()) rather than overwrite that change.
 //   Callers should finish_replay() before their own edits and undo/redo (a no-op when no replay runs): an undo
 //   in the middle of a replay would put the partly replayed state on the redo list.
-// - start_mine runs the student's code off the window's thread (background_work.h): the file's StudentCode is lent to
-//   the run (StudentFile::lend) and nothing else of the session is touched by it (nor is the exercise registry changed
+// - start_mine runs the student's code off the window's thread (student_call_work.h: a thread on the desktop, a Web
+//   Worker in a page): the file's StudentCode is lent to the run (StudentFile::lend; the page's worker loads the
+//   file's text afresh) and nothing else of the session is touched by it (nor is the exercise registry changed
 //   meanwhile: the reload of a scripted exercise's definition is part of a run, refused while one runs, and the window
 //   loads exercise folders only as it opens); poll() takes the run into the document as run_mine does, unless the
 //   document changed meanwhile (then the result is left out, and the status line says so). While a run is running,
-//   every other run and replay is refused (the status line says why), and stop_running() asks the code to stop at its
-//   next line ("stopped: you pressed Stop": an error of the run, with its writes up to there to replay). The
-//   destructor stops a running run and waits for it.
+//   every other run and replay is refused (the status line says why), and stop_running() stops the code
+//   ("stopped: you pressed Stop": an error of the run; on the desktop at its next line, with its writes up to there to
+//   replay). The destructor stops a running run and waits for it.
 #pragma once
 
 #include <cstddef>
@@ -47,9 +48,9 @@
 #include "core/check.h"
 #include "core/edit_log.h"
 #include "core/halfedge_mesh.h"
-#include "document/background_work.h"
 #include "document/mesh_document.h"
 #include "document/selection.h"
+#include "document/student_call_work.h"
 #include "document/student_file.h"
 #include "exercise/exercises.h"
 
@@ -106,9 +107,9 @@ class ExerciseSession {
   Check run_mine(MeshDocument& doc, Selection& selection);
   Check run_reference(MeshDocument& doc, Selection& selection);
 
-  // Run mine as the window's button runs it: everything run_mine checks first, then the student's code on a thread of
-  // its own while the window draws (at once where the host has no threads: BackgroundWork::threaded). Returns the
-  // refusal, or yes once it runs (the run's own Check where it ran at once).
+  // Run mine as the window's button runs it: everything run_mine checks first, then the student's code off the
+  // window's thread while it draws (at once in a native build without threads: StudentCallWork). Returns the refusal,
+  // or yes once it runs (the run's own Check where it ran at once).
   Check start_mine(MeshDocument& doc, Selection& selection);
   bool running() const { return pending_ != nullptr; }
   double running_seconds() const;            // since start_mine, while running()
@@ -120,7 +121,7 @@ class ExerciseSession {
   // Once a started run has ended: takes it into the document as run_mine does and returns true. Call once per frame.
   bool poll(MeshDocument& doc, Selection& selection);
   // Waits for the started run's code to end and takes it as poll() does, returning what run_mine would (yes when no
-  // run was started). For tests, and a host that needs the result before its next frame.
+  // run was started). For tests (a page cannot wait for its worker: a run not ended yet is stopped).
   Check wait_for_run(MeshDocument& doc, Selection& selection);
 
   const std::optional<ExerciseRun>& last_run() const { return run_; }
@@ -190,7 +191,7 @@ class ExerciseSession {
 
   LuaLimits limits_;
   std::unique_ptr<PendingRun> pending_;  // the started run, until poll() takes it
-  BackgroundWork work_;                  // last: destroyed first, it waits for the thread that uses pending_
+  StudentCallWork work_;                 // last: destroyed first, it ends the run that pending_ started
 };
 
 }  // namespace meshedit

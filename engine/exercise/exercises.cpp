@@ -444,15 +444,17 @@ void StudentCode::run_protected(int closure_ref) {
 void StudentCode::load(const std::filesystem::path& file) {
   const std::optional<std::string> code = read_lua_file(file);
   if (!code) throw ScriptError("cannot open " + file.string());
-  const std::string name = file.filename().string();
+  load_text(*code, file.filename().string());
+}
 
+void StudentCode::load_text(std::string_view code, const std::string& name) {
   lua_State* L = runtime_->state();
   lua_settop(L, 0);
   lua_newtable(L);  // out
   const int out = lua_gettop(L);
   lua_rawgeti(L, LUA_REGISTRYINDEX, helpers_ref_);
   lua_getfield(L, -1, "loader");
-  lua_pushlstring(L, code->data(), code->size());
+  lua_pushlstring(L, code.data(), code.size());
   lua_pushstring(L, ("@" + name).c_str());
   lua_pushvalue(L, out);
   if (lua_pcall(L, 3, 1, 0) != LUA_OK) {

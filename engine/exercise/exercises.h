@@ -180,6 +180,8 @@ class StudentCode {
   // Runs the file (under the limits). Throws ScriptError whose message starts with "name.lua:LINE:" for a
   // syntax or runtime error, or "cannot open PATH". The file's name (without folders) is its chunk name.
   void load(const std::filesystem::path& file);
+  // Runs `code` as load() runs a file named `name` ("flip.lua": its chunk name); `code` as read_lua_file reads one.
+  void load_text(std::string_view code, const std::string& name);
   // Whether the exercise's function exists: a field of a table a loaded file returned, else a global.
   bool defines(Exercise exercise);
   // Calls the student's function on a copy of the input. Never throws for anything the script does.

@@ -264,7 +264,8 @@ int api_run(lua_State* L) {
   verdict.block = script.blocks.size();
   verdict.path = file.string();
   verdict.stamp = file_stamp(file);
-  auto run = std::make_shared<YourTurnRun>(std::move(verdict), held.names, script.student_limits);
+  auto run = std::make_shared<YourTurnRun>(std::move(verdict), held.names, script.student_limits,
+                                           script.student_code_in_background);
   if (script.student_code_in_background) {  // the step waits while it runs; the runner resumes it with the verdict
     LessonWait wait;
     wait.kind = LessonWait::Kind::YourTurnRunning;

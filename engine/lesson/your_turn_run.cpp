@@ -27,54 +27,44 @@ std::string diagnosis(const ExerciseReport& report) {
 
 }  // namespace
 
-YourTurnRun::YourTurnRun(YourTurnVerdict verdict, DiagramNames names, const LuaLimits& limits)
-    : verdict_(std::move(verdict)), names_(std::move(names)), limits_(limits) {
+YourTurnRun::YourTurnRun(YourTurnVerdict verdict, DiagramNames names, const LuaLimits& limits, bool in_background)
+    : verdict_(std::move(verdict)), names_(std::move(names)) {
   reference_ = run_reference(verdict_.exercise, verdict_.exercise_input);
   started_ = std::chrono::steady_clock::now();
-  work_.start([this] { work(); });
-}
-
-YourTurnRun::~YourTurnRun() {
-  stop();
-  work_.take();
+  StudentCall call;
+  call.exercise = verdict_.exercise;
+  call.input = verdict_.exercise_input;
+  call.limits = limits;
+  try {
+    call.files.push_back(read_student_source(verdict_.path));
+  } catch (const ScriptError& error) {  // "cannot open ...": nothing to run
+    result_.load_error = error.what();
+    ran_here_ = true;
+    return;
+  }
+  if (in_background) {
+    work_.start(std::move(call));
+  } else {
+    result_ = run_student_call(call);
+    ran_here_ = true;
+  }
 }
 
 double YourTurnRun::seconds() const {
   return std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
 }
 
-void YourTurnRun::work() noexcept {
-  try {
-    StudentCode code(limits_);
-    code.runtime().set_stop_request(&stop_);
-    try {
-      code.load(verdict_.path);
-      mine_ = run_mine(code, verdict_.exercise, verdict_.exercise_input);
-    } catch (const ScriptError& error) {  // the file does not load: its own file:line
-      load_error_ = error.what();
-    }
-    code.runtime().set_stop_request(nullptr);
-  } catch (const std::bad_alloc&) {
-    out_of_memory_ = true;
-  } catch (const std::exception& e) {  // nothing else is thrown; a bug must not end the window
-    try {
-      load_error_ = e.what();
-    } catch (const std::bad_alloc&) {
-      out_of_memory_ = true;
-    }
-  }
-}
-
 YourTurnVerdict YourTurnRun::finish() {
-  work_.take();
-  if (out_of_memory_) throw std::bad_alloc();
+  if (!ran_here_) result_ = work_.take();
+  if (result_.out_of_memory) throw std::bad_alloc();
   YourTurnVerdict verdict = std::move(verdict_);
-  if (!load_error_.empty()) {
-    verdict.feedback = std::move(load_error_);
+  if (!result_.load_error.empty() ||
+      !result_.thrown.empty()) {  // nothing else is thrown; a bug must not end the window
+    verdict.feedback = std::move(result_.load_error.empty() ? result_.thrown : result_.load_error);
     return verdict;
   }
   const ExerciseReport report =
-      compare(verdict.exercise, verdict.exercise_input, std::move(mine_), std::move(reference_));
+      compare(verdict.exercise, verdict.exercise_input, std::move(result_.outcome), std::move(reference_));
   verdict.right = report.equal;
   if (!report.equal) {
     verdict.feedback = diagnosis(report);
