@@ -30,7 +30,7 @@ endif()
 if("script" IN_LIST MESHEDIT_MODULES)
   include(${CMAKE_CURRENT_LIST_DIR}/lua.cmake)
 endif()
-if("grade" IN_LIST MESHEDIT_MODULES OR "app" IN_LIST MESHEDIT_MODULES)
+if("exercise" IN_LIST MESHEDIT_MODULES)  # the exercises' student calls as bytes, the grader's reports
   find_package(nlohmann_json REQUIRED)
   add_library(meshedit::json ALIAS nlohmann_json::nlohmann_json)
 endif()

@@ -138,8 +138,8 @@ void StudentCallWork::Host::read_news() {
         end(failed(std::string("the page's worker for your code sent what the page cannot read: ") + e.what()));
       }
       // A worker whose memory grew to the limit keeps it (a WebAssembly memory never shrinks): it ends instead.
-      const bool spent = result.out_of_memory || result.outcome.out_of_memory ||
-                         result.outcome.limit == ScriptError::Limit::Memory;
+      const bool spent =
+          result.out_of_memory || result.outcome.out_of_memory || result.outcome.limit == ScriptError::Limit::Memory;
       page_call_release(slot, spent ? 0 : 1);
     } else {
       end_worker(failed("the page's worker for your code stopped: " + news.substr(news.find('\n') + 1)));

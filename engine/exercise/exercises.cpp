@@ -35,6 +35,7 @@
 #include "script/bezier_bindings.h"
 #include "script/edit_recorder.h"
 #include "script/lua_handles.h"
+#include "script/lua_source.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
 #include "script/script_runtime.h"
@@ -467,6 +468,11 @@ void StudentCode::load_text(std::string_view code, const std::string& name) {
   lua_settop(L, 0);
   try {
     run_protected(closure);
+  } catch (const ScriptError& e) {  // a file that is not UTF-8 text says so after its error
+    luaL_unref(L, LUA_REGISTRYINDEX, closure);
+    luaL_unref(L, LUA_REGISTRYINDEX, out_ref);
+    if (e.limit() != ScriptError::Limit::None || e.out_of_memory()) throw;
+    throw ScriptError(with_encoding_note(e.what(), code, name), e.limit(), e.out_of_memory());
   } catch (...) {
     luaL_unref(L, LUA_REGISTRYINDEX, closure);
     luaL_unref(L, LUA_REGISTRYINDEX, out_ref);

@@ -95,10 +95,14 @@ std::vector<ExerciseValue> values_from(const json& j) {
 
 json input_json(const ExerciseInput& input) {
   const std::vector<glm::dvec3> patch(input.patch.points.begin(), input.patch.points.end());
-  return {{"points", points_json(input.points)}, {"t", input.t},
-          {"patch", points_json(patch)},         {"u", input.u},
-          {"v", input.v},                        {"mesh", mesh_json(input.mesh.get())},
-          {"element", element_json(input.element)}, {"args", values_json(input.args)}};
+  return {{"points", points_json(input.points)},
+          {"t", input.t},
+          {"patch", points_json(patch)},
+          {"u", input.u},
+          {"v", input.v},
+          {"mesh", mesh_json(input.mesh.get())},
+          {"element", element_json(input.element)},
+          {"args", values_json(input.args)}};
 }
 
 ExerciseInput input_from(const json& j) {
@@ -120,14 +124,15 @@ json edit_value_json(const EditValue& value) {
   return {{"element", element_json(value.element)}, {"position", point_json(value.position)}};
 }
 
-EditValue edit_value_from(const json& j) {
-  return {element_from(j.at("element")), point_from(j.at("position"))};
-}
+EditValue edit_value_from(const json& j) { return {element_from(j.at("element")), point_from(j.at("position"))}; }
 
 json edit_json(const RecordedEdit& edit) {
-  return {{"what", static_cast<int>(edit.what)},        {"element", element_json(edit.element)},
-          {"field", edit.field},                        {"before", edit_value_json(edit.before)},
-          {"value", edit_value_json(edit.value)},       {"state", mesh_json(edit.state.get())},
+  return {{"what", static_cast<int>(edit.what)},
+          {"element", element_json(edit.element)},
+          {"field", edit.field},
+          {"before", edit_value_json(edit.before)},
+          {"value", edit_value_json(edit.value)},
+          {"state", mesh_json(edit.state.get())},
           {"where", edit.where}};
 }
 

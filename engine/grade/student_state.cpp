@@ -14,6 +14,7 @@
 #include "grade/value_bridge.h"
 #include "script/bezier_bindings.h"
 #include "script/lua_handles.h"
+#include "script/lua_source.h"
 #include "script/mesh_bindings.h"
 #include "script/reference_functions.h"
 
@@ -100,8 +101,9 @@ void StudentState::load(const Submission& submission, const std::vector<std::str
     try {
       runtime_.load(file->text, name);
       runtime_.call(0, 1);
-    } catch (const ScriptError& e) {
-      throw LoadFailure(e.what(), e.limit());
+    } catch (const ScriptError& e) {  // a file that is not UTF-8 text says so after its error
+      const bool limit = e.limit() != ScriptError::Limit::None || e.out_of_memory();
+      throw LoadFailure(limit ? std::string(e.what()) : with_encoding_note(e.what(), file->text, name), e.limit());
     }
     if (lua_istable(L, -1)) {
       lua_rawgeti(L, LUA_REGISTRYINDEX, returned_tables_ref_);

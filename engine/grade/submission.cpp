@@ -6,6 +6,7 @@
 #include <system_error>
 
 #include "core/file_bytes.h"
+#include "script/lua_source.h"
 
 namespace meshedit {
 namespace {
@@ -90,7 +91,7 @@ Submission Submission::read(const fs::path& folder) {
       s.notes_.push_back(name + " could not be read");
       continue;
     }
-    s.files_.push_back({name, chosen.relative, std::move(file.bytes)});
+    s.files_.push_back({name, chosen.relative, lua_source_text(std::move(file.bytes))});
   }
   return s;
 }

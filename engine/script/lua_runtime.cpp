@@ -11,6 +11,7 @@
 #include "core/file_bytes.h"
 #include "core/value_format.h"
 #include "script/exception_text.h"
+#include "script/lua_source.h"
 
 namespace meshedit {
 namespace {
@@ -69,8 +70,7 @@ std::string memory_limit_message(size_t bytes) { return "memory limit exceeded (
 std::optional<std::string> read_lua_file(const std::filesystem::path& path) {
   FileBytes file = read_file_bytes(path);
   if (!file.ok()) return std::nullopt;
-  if (file.bytes.starts_with('#')) file.bytes.insert(0, "--");
-  return std::move(file.bytes);
+  return lua_source_text(std::move(file.bytes));
 }
 
 LuaRuntime::LuaRuntime(LuaLimits limits) : limits_(limits) {

@@ -78,8 +78,8 @@ struct LuaLimits {
 std::string error_value_text(lua_State* L, int index);
 // "memory limit exceeded (32 MB)": what a run stopped by the memory cap of `bytes` says, wherever it was stopped.
 std::string memory_limit_message(size_t bytes);
-// A Lua file's text as lua.c reads it (a first line starting with '#', a shebang, made a comment), or nullopt when it
-// cannot be read (core/file_bytes.h: not a regular file, or too large).
+// A Lua file's text as lua.c reads it (lua_source.h: a UTF-8 byte order mark dropped, a first line starting with '#',
+// a shebang, made a comment), or nullopt when it cannot be read (core/file_bytes.h: not a regular file, or too large).
 std::optional<std::string> read_lua_file(const std::filesystem::path& path);
 
 class LuaRuntime {

@@ -7,6 +7,7 @@
 
 #include <atomic>
 #include <cmath>
+#include <fstream>
 #include <limits>
 #include <memory>
 #include <string>
@@ -66,6 +67,18 @@ TEST(StudentCall, RunsTheFilesTextsAndNamesThemInItsErrors) {
       run_student_call(flip_call({{"flip.lua", "function flip_edge(mesh, e)\n  return e.nothing.twin\nend\n"}}));
   EXPECT_TRUE(failing.load_error.empty());
   EXPECT_EQ(failing.outcome.error.rfind("flip.lua:2:", 0), 0u) << failing.outcome.error;
+}
+
+TEST(StudentCall, AFileThatIsNotUTF8SaysSoInItsError) {
+  const StudentCallResult utf16 = run_student_call(flip_call({{"flip.lua", std::string("\xFF\xFEr\0e\0t\0", 8)}}));
+  EXPECT_NE(utf16.load_error.find("(flip.lua is UTF-16 text, which Lua cannot read: save it as UTF-8)"),
+            std::string::npos)
+      << utf16.load_error;
+  const auto marked = testing::scratch_dir() / "flip.lua";
+  std::ofstream(marked, std::ios::binary) << "\xEF\xBB\xBF" << solution("flip.lua").text;
+  const StudentCallResult loaded = run_student_call(flip_call({read_student_source(marked)}));
+  EXPECT_TRUE(loaded.load_error.empty()) << loaded.load_error;
+  EXPECT_TRUE(loaded.outcome.ran) << loaded.outcome.error;
 }
 
 TEST(StudentCall, StopsAtItsNextLineWhenAsked) {

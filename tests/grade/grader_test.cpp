@@ -2,6 +2,7 @@
 // against Gradescope's spec, JUnit, TAP, the text report) and grade() over child processes.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -10,6 +11,7 @@
 #include "grade/grader.h"
 #include "grade/report_json.h"
 #include "grade/results_writers.h"
+#include "grade/submission.h"
 #include "grade_test_support.h"
 
 namespace meshedit {
@@ -249,6 +251,29 @@ TEST(Grade, EachTestRunsInItsOwnChildAndTheReportAddsUp) {
   EXPECT_EQ(summary_line(fixed), "3 passed, 0 failed");
   EXPECT_EQ(fixed.score, 4.0);
   EXPECT_EQ(fixed.max_score, 4.0);
+}
+
+// Files a Windows editor may save: a UTF-8 file with a byte order mark loads (as lua.c loads it), a UTF-16 file fails
+// to load with its error and a sentence that says what it is and what to do, in every test's feedback.
+TEST(Grade, AFileThatIsNotUTF8SaysSoAndOneWithAByteOrderMarkLoads) {
+  const auto dir = testing::scratch_dir();
+  std::ofstream(dir / "a.lua", std::ios::binary) << "\xEF\xBB\xBF"
+                                                 << "function add(x, y) return x + y end\n";
+  const std::string utf16("\xFF\xFEr\0e\0t\0u\0r\0n\0 \0{\0}\0\n\0", 22);
+  std::ofstream(dir / "b.lua", std::ios::binary) << utf16;
+  auto suite = testing::suite_of(
+      "suite{ name = 'demo', time_limit = 1 }\n"
+      "test{ name = 'adds', files = {'a.lua'}, run = function(s, expect) expect.equal(s.add(2, 2), 4) end }\n"
+      "test{ name = 'b', files = {'b.lua'}, run = function(s, expect) expect.truthy(true) end }\n");
+  const GradeReport report = grade(*suite, Submission::read(dir), testing::quick_options());
+  ASSERT_EQ(report.tests.size(), 2u);
+  EXPECT_TRUE(report.tests[0].passed) << report.tests[0].output;
+  EXPECT_EQ(report.tests[1].end, RunEnd::LoadError);
+  EXPECT_NE(report.tests[1].output.find(
+                "b.lua:1: unexpected symbol near '<\\255>' (b.lua is UTF-16 text, which Lua cannot read: save it as "
+                "UTF-8)"),
+            std::string::npos)
+      << report.tests[1].output;
 }
 
 // A student's check runs the tests they can see now, and says what it left out and when it will be shown; the totals
