@@ -57,6 +57,7 @@ exclude_files = { "tests/grading/broken/syntax_error.lua", "tests/web/broken_les
 files["lessons/"] = { read_globals = lesson_globals }
 files["tests/lesson/lessons/asking_demo.lua"] = { read_globals = lesson_globals }  -- the answers files are data
 files["tests/web/broken_lesson/"] = { read_globals = lesson_globals }
+files["tests/web/turn_lesson/"] = { read_globals = lesson_globals }
 
 -- The templates the class fills in: each function is a stub returning nil, so every argument of its signature is
 -- unused until the student writes the body.
