@@ -32,6 +32,8 @@ bool ActionPlayer::step(EditorApp& app) {
   // A lesson's your_turn running the student's code: what follows waits for its verdict (the student's deadline,
   // student_code_seconds, ends a runaway).
   if (app.lesson().student_code_running()) return true;
+  // The curve or patch view's "mine" running the student's code: what follows sees its result.
+  if (app.view().bezier_mine().running()) return true;
   if (waiting_for_run_) {
     if (app.exercises().running()) return true;
     waiting_for_run_ = false;

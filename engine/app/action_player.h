@@ -13,7 +13,8 @@
 // for the Check tab's words (a check's progress). An action that starts the student's code on its thread (run-mine,
 // lesson-show-mine, check-open: ExerciseSession::start_mine) holds the script until the code has ended and its run
 // is in the document, frame after frame; start-mine alone does not (what follows it runs while the code does). A
-// lesson's your_turn running the student's code holds the script the same way until its verdict is in the step.
+// lesson's your_turn running the student's code holds the script the same way until its verdict is in the step, and
+// so does the curve or patch view's "mine" (BezierMine::running) until its call has ended.
 #pragma once
 
 #include <cstddef>

@@ -11,6 +11,7 @@
 #include "app/window_host.h"
 #include "document/document_actions.h"
 #include "document/exception_report.h"
+#include "document/student_call_work.h"
 #include "exercise/exercise_registry.h"
 #include "render/gl_api.h"
 #include "render/image_file.h"
@@ -28,6 +29,8 @@ EditorApp::EditorApp()
       input_(document_, view_),
       panels_(document_, view_, exercises_, check_, lessons_) {
   lessons_.panel().show_your_turn = [this] { show_your_turn_mine(); };
+  // The curve and patch views' "mine" runs beside the frames too (a thread, or the page's Web Worker).
+  view_.bezier_mine().set_in_background(StudentCallWork::off_the_callers_thread());
   // The exercises defined in Lua: a definition that does not load is named (file:line) and left out.
   const std::vector<std::string> errors = load_exercise_folder(default_exercise_folder());
   for (const std::string& error : errors) std::fprintf(stderr, "meshedit: exercise: %s\n", error.c_str());
@@ -63,6 +66,8 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   const LuaLimits student_limits = window_student_limits(panels_.settings().student_code_seconds);
   exercises_.session().set_limits(student_limits);
   lessons_.runner().set_student_limits(student_limits);
+  view_.bezier_mine().set_limits(student_limits);
+  view_.bezier_mine().poll();                                         // a "mine" call whose code has ended
   exercises_.session().poll(document_.doc(), document_.selection());  // a Run mine whose code has ended
   read_input();                                                       // in the view placed by the last frame
   lessons_.update(frame_ms);
@@ -120,7 +125,7 @@ void EditorApp::click(int x, int y) {
 
 bool EditorApp::animating() const {
   return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating() || check_.running() ||
-         exercises_.session().running();
+         exercises_.session().running() || view_.bezier_mine().running();
 }
 
 bool EditorApp::repair_spots_current() const { return document_.repair_spots_current(view_.mode() == ViewMode::Mesh); }

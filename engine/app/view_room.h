@@ -9,8 +9,7 @@
 //   view's top-left corner. GL objects are made by the constructor, in the window's context, and go with the room.
 // - A mesh too large to draw (past the GPU's buffer limits) is refused by the renderer once per mesh state: an Error
 //   and the status bar say so, the view stays empty, and frames do not retry until the mesh changes.
-// - A broken mesh (a Lua script's doing) can be drawn: nothing here walks it but the core's and renderer's bounded
-// walks.
+// - A broken mesh (a Lua script's doing) can be drawn: only the core's and the renderer's bounded walks walk it.
 // - take_mesh, take_curve and take_patches switch what is on screen with steps that cannot fail (the end of opening a
 //   file or showing a lesson's mesh); show_lesson_mesh, show_curve and show_patches are whole or nothing, and throw
 //   what stopped them with the view unchanged.
@@ -129,6 +128,7 @@ class ViewRoom {
   PatchViewState& patches() { return patches_; }
   const PatchViewState& patches() const { return patches_; }
   BezierMine& bezier_mine() { return bezier_mine_; }  // the curve and patch views' "mine" switches (M)
+  const BezierMine& bezier_mine() const { return bezier_mine_; }
   StatusBarState& status_bar() { return status_bar_; }
   // The labels the last frame drew over the mesh view (window coordinates) and how many it dropped; empty outside it.
   const LabelPlacement& last_labels() const { return last_labels_; }

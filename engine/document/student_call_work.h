@@ -36,7 +36,7 @@ class StudentCallWork {
   static bool off_the_callers_thread();
   bool start(StudentCall call, std::unique_ptr<StudentCode> code = nullptr);
   bool busy() const;
-  bool done();
+  bool done() const;
   void stop();
   StudentCallResult take();
   std::unique_ptr<StudentCode> take_code();

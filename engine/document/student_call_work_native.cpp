@@ -38,7 +38,7 @@ bool StudentCallWork::start(StudentCall call, std::unique_ptr<StudentCode> code)
 
 bool StudentCallWork::busy() const { return host_->work.busy(); }
 
-bool StudentCallWork::done() { return host_->work.busy() && host_->work.done(); }
+bool StudentCallWork::done() const { return host_->work.busy() && host_->work.done(); }
 
 void StudentCallWork::stop() { host_->stop.store(true); }
 

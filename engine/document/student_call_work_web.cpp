@@ -180,7 +180,7 @@ bool StudentCallWork::start(StudentCall call, std::unique_ptr<StudentCode> code)
 
 bool StudentCallWork::busy() const { return host_->busy; }
 
-bool StudentCallWork::done() {
+bool StudentCallWork::done() const {
   host_->read_news();
   return host_->busy && host_->done;
 }

@@ -268,8 +268,11 @@ void draw_mine_rows(const CurveMineLevels& mine, int shown) {
     table_text_row(std::to_string(k).c_str(), colour, format_points(flat(mine.levels[k])));
   }
   if (!mine.failed() || mine.failed_level > shown) {
-    if (!mine.complete())
+    if (mine.running) {
+      table_text_row(std::to_string(mine.levels.size()).c_str(), disabled, "your evaluate_step is running...");
+    } else if (!mine.complete()) {
       table_text_row("...", disabled, "the next level comes from your evaluate_step when E shows it");
+    }
     return;
   }
   if (!mine.error.empty()) {

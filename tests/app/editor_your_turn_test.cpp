@@ -54,6 +54,14 @@ class EditorYourTurn : public testing::GlTest {
     }
     frames(3);  // the panel brings the verdict into sight
   }
+  // Frames until the curve or patch view's "mine" has no call of the student's code running, at most 10 s.
+  void until_mine() {
+    for (int i = 0; i < 10000 && app_->view().bezier_mine().running(); ++i) {
+      frames(1);
+      std::this_thread::sleep_for(std::chrono::milliseconds(1));
+    }
+    frames(2);  // the view takes the last call and starts no other
+  }
   // Clicks the your_turn's button where the lesson panel drew it in the last frame.
   void click_show_mine() {
     const UiProbe::Item* button = app_->panels().probe().find("lesson-show-mine");
@@ -142,6 +150,7 @@ TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
 
   click_show_mine();
   frames(2);
+  until_mine();
 
   EXPECT_EQ(app_->mode(), ViewMode::Curve);
   const CurveEditorState& curve = app_->view().curve();
@@ -155,6 +164,64 @@ TEST_F(EditorYourTurn, ACurveYourTurnTurnsTheCurveViewsMineOnForItsPointsAndT) {
   EXPECT_TRUE(mine.failed()) << mine.message;
   EXPECT_EQ(mine.failed_level, 1) << mine.message;
   EXPECT_FALSE(mine.message.empty());
+}
+
+// The curve view's "mine" runs the student's evaluate_step beside the frames: a loop does not hold them, the line
+// says it runs, and the window's deadline ends it with its line; a file saved right is computed afresh.
+TEST_F(EditorYourTurn, TheCurveViewsMineRunsARunawayStepBesideTheFrames) {
+  std::ofstream(student_ / "curve.lua") << "function evaluate_step(points, t)\n  while true do end\nend\n";
+  ASSERT_TRUE(app_->open(testing::source_dir() / "assets" / "curve_cubic.bzc"));
+  app_->view().bezier_mine().set_folder(student_);
+  app_->panels().settings().student_code_seconds = 1.0;
+  app_->view().bezier_mine().set_curve_on(true);
+  app_->view().curve().levels_shown = 1;
+  const auto started = std::chrono::steady_clock::now();
+  frames(20);  // twenty frames drawn while the loop runs
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count(), 0.9);
+  ASSERT_TRUE(app_->view().bezier_mine().running());
+  EXPECT_NE(app_->view().bezier_mine().curve().message.find("level 1: your evaluate_step is running ("),
+            std::string::npos)
+      << app_->view().bezier_mine().curve().message;
+  until_mine();
+  const CurveMineLevels& stopped = app_->view().bezier_mine().curve();
+  EXPECT_EQ(stopped.failed_level, 1);
+  EXPECT_EQ(stopped.error, "curve.lua:2: time limit exceeded (1 s)") << stopped.message;
+
+  fs::copy_file(testing::source_dir() / "tests" / "exercise" / "solutions" / "curve.lua", student_ / "curve.lua",
+                fs::copy_options::overwrite_existing);
+  app_->view().curve().levels_shown = 3;
+  frames(1);
+  until_mine();
+  EXPECT_TRUE(app_->view().bezier_mine().curve().complete()) << app_->view().bezier_mine().curve().message;
+  EXPECT_EQ(app_->view().bezier_mine().curve().message, "levels 1 to 3 are the reference's: your curve point is right");
+}
+
+// Switching the curve view's "mine" off stops its running call at once (nothing of it is kept), and switching it
+// on runs the student's code afresh.
+TEST_F(EditorYourTurn, SwitchingTheCurveViewsMineOffStopsItsRunningCall) {
+  std::ofstream(student_ / "curve.lua") << "function evaluate_step(points, t)\n  while true do end\nend\n";
+  ASSERT_TRUE(app_->open(testing::source_dir() / "assets" / "curve_cubic.bzc"));
+  app_->view().bezier_mine().set_folder(student_);
+  app_->panels().settings().student_code_seconds = 30.0;
+  app_->view().bezier_mine().set_curve_on(true);
+  app_->view().curve().levels_shown = 1;
+  frames(3);
+  ASSERT_TRUE(app_->view().bezier_mine().running());
+
+  const auto off = std::chrono::steady_clock::now();
+  app_->view().bezier_mine().set_curve_on(false);
+  until_mine();
+  EXPECT_LT(std::chrono::duration<double>(std::chrono::steady_clock::now() - off).count(), 5.0);
+  EXPECT_FALSE(app_->view().bezier_mine().running());
+
+  app_->view().bezier_mine().set_curve_on(true);
+  frames(3);
+  EXPECT_TRUE(app_->view().bezier_mine().running());
+  EXPECT_NE(app_->view().bezier_mine().curve().message.find("level 1: your evaluate_step is running ("),
+            std::string::npos)
+      << app_->view().bezier_mine().curve().message;
+  app_->view().bezier_mine().set_curve_on(false);
+  until_mine();
 }
 
 TEST_F(EditorYourTurn, ARunawayYourTurnRunsBesideTheFramesAndStopEndsItWithItsLine) {
