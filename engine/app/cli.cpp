@@ -59,6 +59,10 @@ const CliCommand kCommands[] = {
      "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
      "      [--report FILE] [--progress]\n"
      "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions"},
+    {"writeup", run_writeup,
+     "writeup --submission DIR -o OUT [--settings FILE]\n"
+     "                                     the write-up made by DIR's own functions: OUT/index.html (pictures\n"
+     "                                     inside), OUT/writeup.md and OUT/figures/; DIR/writeup.json chooses"},
     {"lesson", run_lesson,
      "lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"
      "                                     run a lesson's steps with scripted answers (no window); your_turn\n"

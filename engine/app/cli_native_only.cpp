@@ -13,4 +13,10 @@ int run_grade(const std::vector<std::string>&, std::ostream&) {
   throw UsageError("`grade` runs each test in a process of its own and runs in the desktop meshedit only");
 }
 
+int run_writeup(const std::vector<std::string>&, std::ostream&) {
+  throw UsageError(
+      "`writeup` draws on an EGL context and runs in the desktop meshedit only (the page has File > "
+      "Write-up)");
+}
+
 }  // namespace meshedit

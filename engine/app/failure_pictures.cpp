@@ -12,6 +12,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/base64.h"
 #include "core/normals.h"
 #include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
@@ -32,19 +33,6 @@ constexpr int kRings = 2;
 // An element whose outside is within about 70 degrees of the three-quarter view is drawn from that view; the others
 // from their outside.
 constexpr double kFacesTheView = 0.35;
-
-std::string base64(const std::string& bytes) {
-  static const char* const kDigits = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
-  std::string out;
-  out.reserve((bytes.size() + 2) / 3 * 4);
-  for (size_t i = 0; i < bytes.size(); i += 3) {
-    const size_t n = std::min<size_t>(3, bytes.size() - i);
-    uint32_t word = 0;
-    for (size_t k = 0; k < 3; ++k) word = word << 8 | (k < n ? static_cast<unsigned char>(bytes[i + k]) : 0u);
-    for (size_t k = 0; k < 4; ++k) out += k <= n ? kDigits[(word >> (18 - 6 * k)) & 63] : '=';
-  }
-  return out;
-}
 
 // The vertices of the element: a vertex, an edge's or a halfedge's two ends, a face's corners.
 std::set<uint32_t> corners_of(const HalfedgeMesh& mesh, ElementRef element) {

@@ -197,6 +197,12 @@ size_t split_fans(std::vector<glm::dvec3>& positions, std::vector<Triangle>& tri
 }  // namespace
 
 PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolution, TessellationReport* report) {
+  return tessellate_patches(
+      patches, resolution, [&](size_t p, double u, double v) { return evaluate_patch(patches[p], u, v); }, report);
+}
+
+PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolution, const PatchSampler& sample,
+                               TessellationReport* report) {
   if (resolution < 1 || resolution > kMaxPatchResolution) {
     throw MeshError("patch resolution " + std::to_string(resolution) + " is outside 1.." +
                     std::to_string(kMaxPatchResolution));
@@ -213,10 +219,10 @@ PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolut
   std::vector<glm::dvec3> samples;
   samples.reserve(patches.size() * side * side);
   glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-std::numeric_limits<double>::infinity());
-  for (const BezierPatch& patch : patches) {
+  for (size_t index = 0; index < patches.size(); ++index) {
     for (uint32_t j = 0; j <= n; ++j) {
       for (uint32_t i = 0; i <= n; ++i) {
-        const glm::dvec3 p = evaluate_patch(patch, double(i) / n, double(j) / n);
+        const glm::dvec3 p = sample(index, double(i) / n, double(j) / n);
         samples.push_back(p);
         if (finite(p)) {
           lo = glm::min(lo, p);

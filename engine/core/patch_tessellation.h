@@ -15,6 +15,7 @@
 #pragma once
 
 #include <cstddef>
+#include <functional>
 #include <span>
 
 #include "core/bezier.h"
@@ -57,6 +58,13 @@ inline constexpr int kMaxPatchResolution = 1024;
 // NaN. Throws MeshError if resolution is outside [1, kMaxPatchResolution] or the triangles would not fit
 // 32-bit indices; no patches give an empty mesh.
 PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolution = kDefaultPatchResolution,
+                               TessellationReport* report = nullptr);
+
+// The point of patch `index` at (u, v), for a tessellation whose samples come from elsewhere than evaluate_patch.
+using PatchSampler = std::function<glm::dvec3(size_t index, double u, double v)>;
+// The same tessellation, welding and numbering of `patches`, with every sample `sample(p, i / n, j / n)` in the order
+// above (patch by patch, j outer, i inner) instead of evaluate_patch: a student's evaluate drawn as the reference's.
+PolygonMesh tessellate_patches(std::span<const BezierPatch> patches, int resolution, const PatchSampler& sample,
                                TessellationReport* report = nullptr);
 
 }  // namespace meshedit

@@ -22,17 +22,26 @@ void append_bytes(void* context, void* data, int size) {
 
 }  // namespace
 
-void write_png(const std::filesystem::path& path, int width, int height, const std::vector<uint8_t>& rgba) {
+std::string png_bytes(int width, int height, const std::vector<uint8_t>& rgba) {
   if (width < 1 || height < 1 || rgba.size() != size_t(width) * size_t(height) * 4) {
-    throw RenderError("cannot write " + path.string() + ": the image is not " + std::to_string(width) + "x" +
-                      std::to_string(height) + " RGBA pixels");
+    throw RenderError("the image is not " + std::to_string(width) + "x" + std::to_string(height) + " RGBA pixels");
   }
   std::vector<uint8_t> png;
   if (!stbi_write_png_to_func(append_bytes, &png, width, height, 4, rgba.data(), width * 4) || png.empty()) {
-    throw RenderError("cannot write " + path.string() + ": PNG encoding failed");
+    throw RenderError("PNG encoding failed");
+  }
+  return std::string(png.begin(), png.end());
+}
+
+void write_png(const std::filesystem::path& path, int width, int height, const std::vector<uint8_t>& rgba) {
+  std::string png;
+  try {
+    png = png_bytes(width, height, rgba);
+  } catch (const RenderError& e) {
+    throw RenderError("cannot write " + path.string() + ": " + e.what());
   }
   std::ofstream out(path, std::ios::binary | std::ios::trunc);
-  out.write(reinterpret_cast<const char*>(png.data()), std::streamsize(png.size()));
+  out.write(png.data(), std::streamsize(png.size()));
   out.close();
   if (!out) throw RenderError("cannot write " + path.string() + ": the file cannot be created or written");
 }

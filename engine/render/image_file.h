@@ -4,6 +4,7 @@
 
 #include <cstdint>
 #include <filesystem>
+#include <string>
 #include <vector>
 
 namespace meshedit {
@@ -14,6 +15,9 @@ struct Image {
   std::vector<uint8_t> rgba;  // width * height * 4 bytes
 };
 
+// The PNG file's bytes of the image (stb's encoder, deterministic: the same pixels give the same bytes). Throws
+// RenderError if rgba is not width * height * 4 bytes.
+std::string png_bytes(int width, int height, const std::vector<uint8_t>& rgba);
 // Throws RenderError if rgba is not width * height * 4 bytes or the file cannot be written.
 void write_png(const std::filesystem::path& path, int width, int height, const std::vector<uint8_t>& rgba);
 // Reads any PNG as RGBA8; throws RenderError if the file is missing or not a PNG stb can read.

@@ -192,7 +192,9 @@ struct MeshRenderer::Impl {
     glGetIntegerv(GL_SAMPLES, &stats.framebuffer_samples);
   }
 
-  void upload(const HalfedgeMesh& source, std::string reason);
+  // A full build of `source` into the buffers; the smooth normals of the vertices in `normals` (by vertex slot) are
+  // those given instead of the area-weighted ones.
+  void upload(const HalfedgeMesh& source, std::string reason, std::span<const glm::vec3> normals = {});
   size_t buffer_texel_cap() const {
     return style.max_buffer_texels != 0 ? std::min(style.max_buffer_texels, max_buffer_texels) : max_buffer_texels;
   }
@@ -264,7 +266,7 @@ void MeshRenderer::Impl::refuse_if_too_large(size_t texels) {
                     " texels in one buffer texture, and this OpenGL allows " + std::to_string(buffer_texel_cap()));
 }
 
-void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) {
+void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason, std::span<const glm::vec3> normals) {
   const size_t sent = gl::uploaded_bytes();
   // Buffer textures: one texel per face slot, element flag or packed triangle; two per edge slot. Checked before the
   // slot build (a whole-mesh pass) as far as the capacities tell, so a refused mesh costs nothing per frame.
@@ -272,6 +274,7 @@ void MeshRenderer::Impl::upload(const HalfedgeMesh& source, std::string reason) 
       gl::with_headroom(std::max({size_t(source.face_capacity()), size_t(source.vertex_capacity()),
                                   size_t(source.halfedge_capacity()), 2 * size_t(source.edge_capacity())})));
   SlotGeometry g = build_slot_geometry(source, hardware_threads());
+  for (size_t v = 0; v < std::min(normals.size(), g.smooth_normals.size()); ++v) g.smooth_normals[v] = normals[v];
   refuse_if_too_large(gl::with_headroom(g.extra_faces.size()));  // the triangles of polygons past their first
   gpu.upload(g);
   slots = slot_state(source, g);
@@ -617,6 +620,10 @@ void MeshRenderer::update(const HalfedgeMesh& mesh, const MeshChange* change) {
   if (r.uploaded && r.uploaded_key == MeshKey::of(mesh)) return;
   if (change != nullptr && r.patch(mesh, *change)) return;
   r.upload(mesh, !r.uploaded ? "first upload" : change == nullptr ? "no change description" : "another mesh state");
+}
+
+void MeshRenderer::update_with_normals(const HalfedgeMesh& mesh, std::span<const glm::vec3> smooth_normals) {
+  impl_->upload(mesh, "normals given", smooth_normals);
 }
 
 void MeshRenderer::draw(const OrbitCamera& camera, Viewport viewport, const ViewOptions& options,

@@ -91,6 +91,10 @@ class MeshRenderer {
   // RenderStyle::max_buffer_texels, allows), found from the capacities before any whole-mesh work; then nothing is
   // drawn or picked until an update() succeeds.
   void update(const HalfedgeMesh& mesh, const MeshChange* change = nullptr);
+  // A full upload of `mesh` whose smooth shading uses `smooth_normals` (by vertex slot; unit vectors, or zero where
+  // the shader falls back to the flat normal) instead of the area-weighted normals: a student's vertex_normal drawn
+  // as the renderer draws its own. Kept until the mesh changes (update() of the same state does nothing).
+  void update_with_normals(const HalfedgeMesh& mesh, std::span<const glm::vec3> smooth_normals);
   // Forces the next update() to rebuild, whatever the version says.
   void invalidate();
   // ViewOptions::multisampling off draws single-sampled, whatever the framebuffer has; ViewOptions::back_sides off

@@ -2,9 +2,10 @@
 //
 // Map of this file (each part starts at its `// ---- name` banner):
 //   ImGui            colours, "mine" levels, draw_mismatch
-//   the canvas       draw_canvas and its parts
+//   the canvas       draw_canvas, draw_canvas_contents and their parts
 //   the level table  table_text_row, draw_mine_rows, draw_level_table
-//   windows          draw_curve_controls, draw_curve_canvas, draw_curve_levels, draw_curve_editor
+//   windows          draw_curve_controls, draw_curve_canvas, draw_curve_picture, draw_curve_levels,
+//                    draw_curve_editor
 #include "ui/curve_editor.h"
 
 #include <algorithm>
@@ -191,37 +192,32 @@ void draw_control_points(ImDrawList* dl, const CurveEditorState& state, const Cu
   }
 }
 
-// The status line and mine's message at the top of the canvas, the key hints at its bottom.
+// The status line and mine's message (of `file`) at the top of the canvas, the key hints at its bottom (a window's
+// canvas, not a picture).
 void draw_canvas_text(ImDrawList* dl, const CurveEditorState& state, ImVec2 p0, ImVec2 size, int shown,
-                      const CurveMineLevels* yours, const BezierMine* mine) {
+                      const CurveMineLevels* yours, const std::string& file, bool hints) {
   const float wrap = std::max(size.x - 16.0f, 50.0f);
   const std::string status = "t = " + format_fixed(state.t, 4) + "   level " + std::to_string(shown) + " of " +
                              std::to_string(std::max(0, static_cast<int>(state.curve.control_points.size()) - 1)) +
                              (yours ? "   mine: your evaluate_step" : "");
   dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status.c_str());
   if (yours) {
-    const std::string line = "mine (" + mine->curve_file().path().filename().string() + "): " + yours->message;
+    const std::string line = "mine (" + file + "): " + yours->message;
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
                 mine_message_colour(*yours, shown), line.c_str(), nullptr, wrap);
   }
+  if (!hints) return;
   const char* hint = "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine";
   const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
   dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + size.y - hint_size.y - 6.0f),
               colour_of(palette().swatches.grey), hint, nullptr, wrap);
 }
 
-void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
-  const ImVec2 p0 = ImGui::GetCursorScreenPos();
-  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
-  state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
-  read_canvas_input(state);
-
+// Everything the canvas shows, in the rectangle at p0 of `size` (state.view already placed there).
+void draw_canvas_contents(ImDrawList* dl, const CurveEditorState& state, ImVec2 p0, ImVec2 size,
+                          const CurveMineLevels* yours, const std::string& file, bool hints) {
   const int shown = shown_level(state);
-  const CurveMineLevels* yours =
-      mine && mine->curve_on() ? &mine->curve_levels(state.curve.control_points, state.t, shown) : nullptr;
-
   const ImVec2 p1(p0.x + size.x, p0.y + size.y);
-  ImDrawList* dl = ImGui::GetWindowDrawList();
   dl->PushClipRect(p0, p1, true);
   dl->AddRectFilled(p0, p1, colour_of(palette().neutrals.canvas));
   dl->AddRect(p0, p1, colour_of(palette().swatches.grey));
@@ -240,8 +236,21 @@ void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   draw_control_points(dl, state, halves);
   draw_curve_point(dl, view, levels, wrong_level);
   if (state.show_tangent) draw_tangent(dl, state);
-  draw_canvas_text(dl, state, p0, size, shown, yours, mine);
+  draw_canvas_text(dl, state, p0, size, shown, yours, file, hints);
   dl->PopClipRect();
+}
+
+void draw_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
+  const ImVec2 p0 = ImGui::GetCursorScreenPos();
+  ImGui::InvisibleButton("canvas", size, ImGuiButtonFlags_MouseButtonLeft | ImGuiButtonFlags_MouseButtonRight);
+  state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
+  read_canvas_input(state);
+
+  const int shown = shown_level(state);
+  const CurveMineLevels* yours =
+      mine && mine->curve_on() ? &mine->curve_levels(state.curve.control_points, state.t, shown) : nullptr;
+  const std::string file = mine ? mine->curve_file().path().filename().string() : std::string();
+  draw_canvas_contents(ImGui::GetWindowDrawList(), state, p0, size, yours, file, true);
 }
 
 // ---- the level table -------------------------------------------------------------------------------
@@ -370,6 +379,12 @@ void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
 
 void draw_curve_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine) {
   draw_canvas(state, ImVec2(std::max(size.x, 1.0f), std::max(size.y, 1.0f)), mine);
+}
+
+void draw_curve_picture(ImDrawList* dl, CurveEditorState& state, ImVec2 p0, ImVec2 size, const CurveMineLevels* yours,
+                        const std::string& file) {
+  state.view = view_for(state.region, {p0.x, p0.y}, {size.x, size.y});
+  draw_canvas_contents(dl, state, p0, size, yours, file, false);
 }
 
 void draw_curve_levels(CurveEditorState& state, BezierMine* mine) {

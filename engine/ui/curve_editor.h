@@ -8,6 +8,8 @@
 // the palette's "wrong" colour over the reference's.
 #pragma once
 
+#include <string>
+
 #include <imgui.h>
 
 #include "document/curve_view_state.h"
@@ -15,6 +17,7 @@
 namespace meshedit {
 
 class BezierMine;
+struct CurveMineLevels;
 
 // An ImGui window (`title`) with the controls (step, curve, split, fit, add/remove, the t slider, and the
 // "mine" switch when `mine` is given), the canvas and the table of every level's points. Place and size it
@@ -28,5 +31,10 @@ void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine = null
 void draw_curve_controls(CurveEditorState& state, BezierMine* mine = nullptr);  // the buttons and the t slider
 void draw_curve_canvas(CurveEditorState& state, ImVec2 size, BezierMine* mine = nullptr);
 void draw_curve_levels(CurveEditorState& state, BezierMine* mine = nullptr);  // the table of every level's points
+// The canvas as a picture (a write-up's figure): what draw_curve_canvas draws, into `dl` at p0 (framebuffer pixels)
+// with the region fitted to `size`, the levels `yours` (the student's, computed before; nullptr: the reference's)
+// named as coming from `file`, and no key hints. Reads no input and runs no Lua.
+void draw_curve_picture(ImDrawList* dl, CurveEditorState& state, ImVec2 p0, ImVec2 size, const CurveMineLevels* yours,
+                        const std::string& file);
 
 }  // namespace meshedit
