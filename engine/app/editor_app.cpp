@@ -24,6 +24,7 @@ EditorApp::EditorApp()
     : view_(document_),
       exercises_(document_),
       check_(document_, exercises_),
+      writeup_(document_, exercises_, view_),
       lessons_(document_, view_, exercises_,
                [this](const std::string& line) { panels_.console().append_output(line); }),
       input_(document_, view_),
@@ -63,6 +64,7 @@ void EditorApp::frame(int width, int height, float frame_ms) {
 void EditorApp::run_frame(int width, int height, float frame_ms) {
   view_.advance_edit_animation(frame_ms);  // before this frame's actions: an edit they make starts at time 0
   check_.poll();
+  writeup_.poll();
   const LuaLimits student_limits = window_student_limits(panels_.settings().student_code_seconds);
   exercises_.session().set_limits(student_limits);
   lessons_.runner().set_student_limits(student_limits);
@@ -125,7 +127,7 @@ void EditorApp::click(int x, int y) {
 
 bool EditorApp::animating() const {
   return input_.hover_pending() || view_.edit_animator().playing() || lessons_.animating() || check_.running() ||
-         exercises_.session().running() || view_.bezier_mine().running();
+         writeup_.running() || exercises_.session().running() || view_.bezier_mine().running();
 }
 
 bool EditorApp::repair_spots_current() const { return document_.repair_spots_current(view_.mode() == ViewMode::Mesh); }

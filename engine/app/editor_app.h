@@ -4,6 +4,7 @@
 //   ViewRoom     (view_room.h)      the mesh, curve and patch views, the camera, the renderers, the up axis
 //   ExerciseRoom (exercise_room.h)  the Exercises tab and the student's code (Your code)
 //   CheckRoom    (check_room.h)     File > Check my work: the grader run beside the window, and the Check tab
+//   WriteupRoom  (writeup_room.h)   File > Write-up: `meshedit writeup` beside the window, the view it uses
 //   LessonRoom   (lesson_room.h)    the lesson being run, its panel and what it lays over the view
 //   InputRoom    (input_room.h)     the mouse and the keys
 //   PanelsRoom   (panels_room.h)    the columns, the console, the settings and the look
@@ -38,6 +39,7 @@
 #include "app/lesson_room.h"
 #include "app/panels_room.h"
 #include "app/view_room.h"
+#include "app/writeup_room.h"
 
 namespace meshedit {
 
@@ -54,6 +56,7 @@ class EditorApp {
   const ViewRoom& view() const { return view_; }
   ExerciseRoom& exercise_room() { return exercises_; }
   CheckRoom& check_room() { return check_; }
+  WriteupRoom& writeup_room() { return writeup_; }
   LessonRoom& lessons() { return lessons_; }
   InputRoom& input() { return input_; }
   PanelsRoom& panels() { return panels_; }
@@ -153,6 +156,7 @@ class EditorApp {
   ViewRoom view_;
   ExerciseRoom exercises_;
   CheckRoom check_;
+  WriteupRoom writeup_;
   LessonRoom lessons_;
   InputRoom input_;
   PanelsRoom panels_;

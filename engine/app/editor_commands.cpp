@@ -85,6 +85,8 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
       panels_.bring_forward(RightTab::Check);
       return started;
     }
+    case I::Writeup: return writeup_.start();
+    case I::WriteupView: return writeup_.save_view();
     case I::Quit: quit_requested_ = true; return Check::yes();
     case I::Undo: return said(undo_edit(doc, selection));
     case I::Redo: return said(redo_edit(doc, selection));

@@ -58,6 +58,13 @@ void History::record(std::string label, MeshPatch patch, uint64_t version_before
   trim();
 }
 
+std::vector<std::string> History::undo_labels() const {
+  std::vector<std::string> labels;
+  labels.reserve(undo_.size());
+  for (const Entry& entry : undo_) labels.push_back(entry.label);
+  return labels;
+}
+
 const std::string& History::undo_label() const {
   static const std::string kNone;
   return undo_.empty() ? kNone : undo_.back().label;

@@ -51,6 +51,7 @@ class History {
   const std::string& undo_label() const;  // label of what undo would revert ("" if none)
   const std::string& redo_label() const;
   size_t undo_depth() const { return undo_.size(); }
+  std::vector<std::string> undo_labels() const;  // of every entry undo can revert, the oldest first
 
   // Replaces `mesh` by the state before the last recorded operation; the replaced state goes to redo.
   // Returns false (and changes nothing) when there is nothing to undo. Afterwards mesh.version() is larger

@@ -33,6 +33,8 @@ constexpr Command kCommands[] = {
     {I::CheckMyWork, "check-my-work", "File > Check my work", "Ctrl+K", nullptr, V::Everywhere,
      "check your work: the course's visible tests on your saved files, as Gradescope runs them (the Check tab)", false,
      false, kSeparator},
+    {I::Writeup, "write-up", "File > Write-up", nullptr, nullptr, V::Everywhere, nullptr},
+    {I::WriteupView, "write-up-view", "File > Use this view in the write-up", nullptr, nullptr, V::Everywhere, nullptr},
     {I::Quit, "quit", "File > Quit", "Ctrl+Q", nullptr, V::Everywhere,
      "quit (the window's size and columns are remembered; unsaved code in Your code is asked about first)", false,
      false, kSeparator},

@@ -34,6 +34,8 @@ enum class CommandId {
   DownloadCode,
   UploadCode,
   CheckMyWork,
+  Writeup,
+  WriteupView,
   Quit,
   // Edit
   Undo,

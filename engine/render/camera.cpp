@@ -139,6 +139,8 @@ void OrbitCamera::zoom(double steps) {
   distance_ = std::clamp(distance_ * std::pow(kZoomPerStep, steps), fitted_distance_ / 100.0, fitted_distance_ * 20.0);
 }
 
+double OrbitCamera::zoom_steps() const { return std::log(distance_ / fitted_distance_) / std::log(kZoomPerStep); }
+
 void OrbitCamera::set_up_axis(UpAxis axis) {
   up_axis_ = axis;
   fitted_distance_ = fit_distance(fitted_yaw_, fitted_pitch_);

@@ -99,6 +99,8 @@ class OrbitCamera {
 
   glm::dvec3 target() const { return target_; }
   double distance() const { return distance_; }
+  // The scroll steps zoom() took from the fitted distance (positive: closer).
+  double zoom_steps() const;
   double yaw_degrees() const;
   double pitch_degrees() const;
   glm::dvec3 eye() const;
