@@ -1,14 +1,16 @@
 // The page's worker for student code: a copy of the program (meshedit.js, its .wasm and .data) loaded in a Web Worker
 // without its window (main never runs), so student code runs here, never on the page's thread. It does one of two
-// jobs, one message at a time:
+// kinds of job, one message at a time:
 // - Check my work (engine/app/check_process_web.cpp, which scores each run, stops a test past its time limit by
 //   ending this worker, and makes the report): {run, suite, index, files: [{relative, bytes}]} is test `index` of the
 //   packaged suite file `suite` on the submission `files`, written to /check/submission when `run` is a new check's.
 //   The worker answers {kind: 'started'} as the test begins and {kind: 'result', seconds, text} (the TestRun as
 //   grade/report_json.h's text) as it ends.
-// - A call of the student's code (Run mine, a lesson's your_turn: engine/document/student_call_work_web.cpp, which
-//   ends this worker on Stop or past the call's time): {call} is the call's bytes (exercise/student_call_text.h).
-//   The worker answers {kind: 'started'}, then {kind: 'result', bytes} with the result's bytes.
+// - A job of bytes (engine/document/page_worker_job.h, which ends this worker on Stop or past the job's time):
+//   {call, entry} is bytes for the program's C function `entry`, which leaves its answer's bytes in the same room:
+//   meshedit_student_call (Run mine, a lesson's your_turn: the call's bytes, exercise/student_call_text.h) or
+//   meshedit_writeup (File > Write-up: the request's bytes, writeup/writeup_text.h). The worker answers
+//   {kind: 'started'}, then {kind: 'result', bytes} with the answer's bytes.
 // Either way {kind: 'log', text} is what the program printed on stderr, {kind: 'crash', text} that it aborted.
 'use strict';
 
@@ -62,7 +64,7 @@ const runCall = (message) => {
   postMessage({kind: 'started'});
   const room = ccall('meshedit_student_call_room', 'number', ['number'], [message.call.length]);
   HEAPU8.set(message.call, room);
-  const at = ccall('meshedit_student_call', 'number', [], []);
+  const at = ccall(message.entry || 'meshedit_student_call', 'number', [], []);
   if (!at) {
     postMessage({kind: 'crash', text: 'memory ran out in the worker'});
     return;

@@ -48,8 +48,7 @@ int run_writeup(const std::vector<std::string>& arguments, std::ostream& out) {
   for (const std::string& note : writeup.notes) out << "note: " << note << "\n";
   for (const WriteupPart& part : writeup.parts) {
     for (const WriteupFigure& figure : part.figures) {
-      out << figure.number << " " << (figure.problem.empty() ? "ok" : "problem: " + figure.problem)
-          << "\n";
+      out << figure.number << " " << (figure.problem.empty() ? "ok" : "problem: " + figure.problem) << "\n";
     }
   }
   if (!not_drawn.empty()) out << "not drawn: " << not_drawn << "\n";

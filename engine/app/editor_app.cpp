@@ -56,6 +56,15 @@ void EditorApp::write_pending_screenshot(int width, int height) {
   }
 }
 
+void EditorApp::finish_pending_writeup() {
+  try {
+    writeup_.finish_made();
+    glBindFramebuffer(GL_FRAMEBUFFER, 0);  // the pictures' framebuffer unbound: the next frame draws on screen
+  } catch (const std::exception& e) {
+    report_exception(document_.doc(), e);
+  }
+}
+
 void EditorApp::frame(int width, int height, float frame_ms) {
   // The safety net: whatever a key, a click, a menu or a panel throws is shown, not fatal (ui/frame_guard.h).
   run_guarded_frame(document_.doc(), [&] { run_frame(width, height, frame_ms); });

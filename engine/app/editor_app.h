@@ -17,7 +17,7 @@
 //   run a command of the table (document/command_table.h) through the one run_command.
 // - Opening a file is whole or nothing: the document (or the curve or patch view), the view mode, the window title
 //   and the recent list all change to the file's, or none does and the status line says why, memory running out
-//   included. open(), save() and write_pending_screenshot() never throw.
+//   included. open(), save(), write_pending_screenshot() and finish_pending_writeup() never throw.
 // - The window starts with the default cube (show_start_mesh). When memory runs out making or showing it, the window
 //   opens all the same, empty (no mesh, the title "MeshEdit"), with an Error in the status line that says memory ran
 //   out. Only running out while the app itself is made (its renderers, shaders and panels: the constructor) ends the
@@ -123,6 +123,14 @@ class EditorApp {
   // between ImGui's rendering and the buffer swap.
   void request_screenshot(const std::filesystem::path& path) { screenshot_path_ = path; }
   void write_pending_screenshot(int width, int height);
+  // What the window does between ImGui's rendering and the buffer swap: the two below. Never throws.
+  void after_rendering(int width, int height) {
+    write_pending_screenshot(width, height);
+    finish_pending_writeup();
+  }
+  // A page's write-up its worker made: its pictures drawn and index.html downloaded (WriteupRoom::finish_made), written
+  // between ImGui's rendering and the buffer swap as the screenshot is; nothing on the desktop. Never throws.
+  void finish_pending_writeup();
   // A new size for the window (the `window-size` action): the window loop applies it before the next frame.
   void request_window_size(int width, int height) { window_size_request_ = {width, height}; }
   std::optional<std::pair<int, int>> take_window_size_request() { return std::exchange(window_size_request_, {}); }

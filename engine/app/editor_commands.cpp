@@ -85,7 +85,12 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
       panels_.bring_forward(RightTab::Check);
       return started;
     }
-    case I::Writeup: return writeup_.start();
+    case I::Writeup:  // while one is being made, the item stops it
+      if (writeup_.running()) {
+        writeup_.stop();
+        return Check::yes();
+      }
+      return writeup_.start();
     case I::WriteupView: return writeup_.save_view();
     case I::Quit: quit_requested_ = true; return Check::yes();
     case I::Undo: return said(undo_edit(doc, selection));

@@ -105,11 +105,8 @@ void EditorApp::draw_menu_item(const Command& c) {
       look.enabled = !check_.running();
       break;
     case I::Writeup:
-      look.shown = WriteupRoom::available();
-      look.enabled = !writeup_.running();
-      if (writeup_.running()) std::snprintf(look.label, sizeof look.label, "Write-up (being made...)");
+      if (writeup_.running()) std::snprintf(look.label, sizeof look.label, "Stop making the write-up");
       break;
-    case I::WriteupView: look.shown = WriteupRoom::available(); break;
     case I::Undo: look.enabled = doc.history.can_undo(); break;
     case I::Redo: look.enabled = doc.history.can_redo(); break;
     case I::LoopPhase:

@@ -1,6 +1,6 @@
 // SpawnedProgram: a program run beside the window, what it prints read without blocking: File > Check my work's grader
-// (check_process.h) and File > Write-up's `meshedit writeup` (writeup_room.h). On the desktop spawned_program_native.cpp;
-// a page has no processes (spawned_program_web.cpp: available() is false and start() says so).
+// (check_process.h) and File > Write-up's `meshedit writeup` (writeup_room.h). Desktop only
+// (spawned_program_native.cpp): a page has no processes.
 //
 // Invariants:
 // - poll() never blocks. The child's standard input is /dev/null; what it prints on stderr (and on stdout when asked)
@@ -18,8 +18,6 @@ namespace meshedit {
 class SpawnedProgram {
  public:
   enum class Output { StderrOnly, StdoutAndStderr };
-
-  static bool available();
 
   SpawnedProgram() = default;
   ~SpawnedProgram() { stop(); }

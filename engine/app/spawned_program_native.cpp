@@ -20,8 +20,6 @@ constexpr size_t kPrintedCap = 64 << 10;
 
 }  // namespace
 
-bool SpawnedProgram::available() { return true; }
-
 std::string SpawnedProgram::start(const std::vector<std::string>& args, Output output) {
   stop();
   printed_.clear();

@@ -119,7 +119,7 @@ int run_window(const std::vector<std::string>& arguments, std::ostream& out) {
     if (window.take_drop_lost()) set_memory_ran_out_message(app.document(), Severity::Error);
     app.frame(window.framebuffer_width(), window.framebuffer_height(), run->frame_ms);
     run_guarded(app.document(), [&] { window.set_title(app.title()); });  // outside the frame guard; allocates
-    window.end_frame([&] { app.write_pending_screenshot(window.framebuffer_width(), window.framebuffer_height()); });
+    window.end_frame([&] { app.after_rendering(window.framebuffer_width(), window.framebuffer_height()); });
     const auto now = std::chrono::steady_clock::now();
     // The frame's own work: the time waiting for input is not the view's cost (the quality governor reads this).
     run->frame_ms =

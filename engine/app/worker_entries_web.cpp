@@ -1,7 +1,8 @@
 // The entries the page's Web Worker calls (web/student_code_worker.js, in its own copy of the program, started without
 // main): one test of a suite run on a submission, as a child of `meshedit grade` runs it, for Check my work (the
 // page's thread scores the run and makes the report: check_process_web.cpp); and one call of the student's code, for
-// Run mine and a lesson's your_turn (the page's side: document/student_call_work_web.cpp).
+// Run mine and a lesson's your_turn (the page's side: document/student_call_work_web.cpp); and the write-up of the
+// student's files, for File > Write-up (the page's side: writeup_room_web.cpp).
 //
 // Invariants:
 // - The suite and the submission are read afresh for every test, so no test sees what an earlier one left in the
@@ -24,6 +25,7 @@
 #include "grade/submission.h"
 #include "grade/suite.h"
 #include "script/exception_text.h"
+#include "writeup/writeup_text.h"
 
 // Test `index` of the suite file `suite` on the submission in the folder `folder`: its TestRun as report_json's text
 // (valid until the next call).
@@ -96,3 +98,23 @@ extern "C" EMSCRIPTEN_KEEPALIVE const uint8_t* meshedit_student_call() {
 }
 
 extern "C" EMSCRIPTEN_KEEPALIVE int meshedit_student_call_size() { return static_cast<int>(call_bytes().size()); }
+
+// File > Write-up: makes the write-up of the request in the room (writeup/writeup_text.h: the student's files, written
+// into this worker's file system, then the folder's write-up as `meshedit writeup` makes it) and leaves its bytes
+// there, as meshedit_student_call does. A request that cannot be made is a write-up whose notes say why.
+extern "C" EMSCRIPTEN_KEEPALIVE const uint8_t* meshedit_writeup() {
+  meshedit::Writeup made;
+  try {
+    made = meshedit::make_requested_writeup(call_bytes());
+  } catch (const std::exception& e) {  // std::bad_alloc too: the little left says so
+    made = meshedit::Writeup{};
+    made.notes.push_back(std::string("the page's worker could not make the write-up: ") + e.what());
+  }
+  try {
+    call_bytes() = meshedit::encode_writeup(made);
+  } catch (const std::bad_alloc&) {
+    call_bytes().clear();
+    return nullptr;
+  }
+  return call_bytes().data();
+}

@@ -75,7 +75,9 @@ class CurveCanvas {
 class PictureDrawer {
  public:
   explicit PictureDrawer(const WriteupCamera& camera)
-      : camera_(camera), target_(kWriteupPictureWidth, kWriteupPictureHeight, kSamples), meshes_(shaders_),
+      : camera_(camera),
+        target_(kWriteupPictureWidth, kWriteupPictureHeight, kSamples),
+        meshes_(shaders_),
         overlays_(shaders_) {}
 
   // The pictures of one figure; "" or why one was not drawn.

@@ -1,13 +1,11 @@
-// File > Write-up and File > Use this view in the write-up: the run and its end in the status line, and the view saved
-// into writeup.json (see writeup_room.h).
+// File > Write-up and File > Use this view in the write-up, what the desktop and the page share: the run's start and
+// end in the status line, and the view saved into writeup.json (see writeup_room.h).
 #include "app/writeup_room.h"
 
 #include <cmath>
 #include <exception>
-#include <sstream>
 #include <vector>
 
-#include "app/check_process.h"
 #include "app/document_room.h"
 #include "app/exercise_room.h"
 #include "app/view_room.h"
@@ -19,8 +17,6 @@
 
 namespace meshedit {
 namespace {
-
-constexpr const char* kOutputFolder = "writeup";
 
 // 32.5 for 32.4871: writeup.json stays readable.
 double one_decimal(double value) { return std::round(value * 10.0) / 10.0 + 0.0; }  // + 0.0: never -0
@@ -42,33 +38,21 @@ std::string edits_words(const std::vector<uint32_t>& edges, const std::string& n
 
 }  // namespace
 
-WriteupRoom::WriteupRoom(DocumentRoom& document, ExerciseRoom& exercises, ViewRoom& view)
-    : document_(document), exercises_(exercises), view_(view), program_(check_program()) {}
-
-std::filesystem::path WriteupRoom::output_folder() const { return exercises_.session().folder() / kOutputFolder; }
+std::filesystem::path WriteupRoom::output_folder() const { return exercises_.session().folder() / "writeup"; }
 
 Check WriteupRoom::start() {
   try {
-    if (!available()) {
-      const std::string why =
-          "File > Write-up runs `meshedit writeup`, which a page cannot run yet: on a computer, run meshedit writeup "
-          "--submission FOLDER -o OUT";
-      document_.message(Severity::Warning, why);
-      return Check::no(why);
-    }
-    const std::filesystem::path folder = exercises_.session().folder();
-    const std::vector<std::string> args = {program_.string(), "writeup",           "--submission",
-                                           folder.string(),   "-o", output_folder().string()};
-    if (const std::string why = process_.start(args, SpawnedProgram::Output::StdoutAndStderr); !why.empty()) {
-      const std::string words = "File > Write-up could not start " + program_.string() + ": " + why;
+    const std::string why = start_run(exercises_.session().folder());
+    if (!why.empty()) {
+      const std::string words = "File > Write-up could not start: " + why;
       document_.message(Severity::Error, words);
       return Check::no(words);
     }
-    announced_ = false;
     const std::string unsaved = exercises_.unsaved_student_files();
     document_.message(unsaved.empty() ? Severity::Info : Severity::Warning,
-                      unsaved.empty() ? std::string("Making your write-up from your files...")
-                                      : "Making your write-up from your saved files; not saved, so not used: " + unsaved);
+                      unsaved.empty()
+                          ? std::string("Making your write-up from your files...")
+                          : "Making your write-up from your saved files; not saved, so not used: " + unsaved);
     return Check::yes();
   } catch (const std::exception& e) {
     document_.message(Severity::Error, std::string("File > Write-up: ") + e.what());
@@ -78,38 +62,30 @@ Check WriteupRoom::start() {
 
 void WriteupRoom::stop() {
   if (!running()) return;
-  process_.stop();
-  announced_ = true;
+  stop_run();
   document_.message(Severity::Warning, "The write-up was stopped before it was written");
 }
 
 void WriteupRoom::poll() {
-  if (!process_.poll() || announced_) return;
-  announced_ = true;
   try {
-    std::vector<std::string> failed;
-    std::string last;
-    std::istringstream lines(process_.printed());
-    for (std::string line; std::getline(lines, line);) {
-      const size_t at = line.find(" problem: ");  // "4.1 problem: ..."
-      if (at <= 4) failed.push_back(line.substr(0, at));
-      if (!line.empty()) last = line;
-    }
-    const std::string page = (output_folder() / "index.html").string();
-    const int code = process_.exit_code();
-    if (code == 0) {
-      document_.message(Severity::Info, "Write-up made, every figure by your code: " + page);
-    } else if (code == 1 && !failed.empty()) {
-      std::string numbers;
-      for (const std::string& number : failed) numbers += (numbers.empty() ? "" : ", ") + number;
-      document_.message(Severity::Warning, "Write-up made; " + std::to_string(failed.size()) +
-                                               (failed.size() == 1 ? " figure has a problem" : " figures have problems") +
-                                               " (" + numbers + "), said under each: " + page);
-    } else {
-      document_.message(Severity::Error, "The write-up was not made: " + (last.empty() ? "meshedit writeup " + process_.end_words() : last));
-    }
+    if (const std::optional<RunEnd> end = poll_run()) announce(*end);
   } catch (const std::exception& e) {
     document_.message(Severity::Error, std::string("File > Write-up: ") + e.what());
+  }
+}
+
+void WriteupRoom::announce(const RunEnd& end) {
+  if (!end.made) {
+    document_.message(Severity::Error, "The write-up was not made: " + end.problem);
+  } else if (end.failed.empty()) {
+    document_.message(Severity::Info, "Write-up made, every figure by your code: " + end.where);
+  } else {
+    std::string numbers;
+    for (const std::string& number : end.failed) numbers += (numbers.empty() ? "" : ", ") + number;
+    document_.message(Severity::Warning,
+                      "Write-up made; " + std::to_string(end.failed.size()) +
+                          (end.failed.size() == 1 ? " figure has a problem" : " figures have problems") + " (" +
+                          numbers + "), said under each: " + end.where);
   }
 }
 
@@ -117,8 +93,8 @@ Check WriteupRoom::save_view() {
   try {
     const std::filesystem::path folder = exercises_.session().folder();
     WriteupSettings settings = read_writeup_settings(folder);
-    const std::string unreadable = settings.problems.empty() ? "" : "; replaced what could not be read (" +
-                                                                     settings.problems.front() + ")";
+    const std::string unreadable =
+        settings.problems.empty() ? "" : "; replaced what could not be read (" + settings.problems.front() + ")";
     const OrbitCamera& camera = view_.camera();
     settings.camera.yaw = one_decimal(std::remainder(camera.yaw_degrees(), 360.0));
     settings.camera.pitch = one_decimal(camera.pitch_degrees());

@@ -21,7 +21,7 @@ size_t Writeup::failed_figures() const {
 }
 
 LuaLimits writeup_limits() {
-  LuaLimits limits;  // the grader's instruction budget and memory cap
+  LuaLimits limits;            // the grader's instruction budget and memory cap
   limits.wall_seconds = 10.0;  // a test's time limit in a suite
   return limits;
 }

@@ -41,7 +41,7 @@ struct MeshPicture {
   std::vector<ElementRef> marked;  // drawn in the "changed" colour (the edges flipped or split)
   bool smooth = false;             // Phong shading (with `normals` when given), else flat
   bool wireframe = true;
-  std::vector<glm::vec3> normals;                 // by vertex id: the student's vertex_normal (empty: the renderer's)
+  std::vector<glm::vec3> normals;                  // by vertex id: the student's vertex_normal (empty: the renderer's)
   std::vector<std::vector<glm::dvec3>> net_lines;  // a Bézier patch's control net, drawn over the surface
 };
 
@@ -66,7 +66,7 @@ struct WriteupFigure {
   std::string caption;  // what it shows
   std::string made_by;  // "your flip_edge (flip.lua)"
   std::vector<WriteupPicture> pictures;
-  std::vector<std::string> numbers;  // read off the meshes: "corner v0 is 0.412 from the centre"
+  std::vector<std::string> numbers;             // read off the meshes: "corner v0 is 0.412 from the centre"
   std::vector<std::vector<std::string>> table;  // rows of a table under the figure (the first row is its header)
   std::string problem;                          // why the figure is not what the reference would give ("": it is)
 };

@@ -87,7 +87,8 @@ std::vector<std::vector<glm::dvec3>> control_net(const std::vector<BezierPatch>&
 WriteupPart curve_part(const Submission& submission, const WriteupSettings& settings, std::vector<std::string>& notes) {
   WriteupPart part;
   part.heading = "Part 1: Bezier curves with 1D de Casteljau subdivision";
-  part.task = "evaluate_step(points, t) does one step of de Casteljau's algorithm; repeated, it reaches the curve point.";
+  part.task =
+      "evaluate_step(points, t) does one step of de Casteljau's algorithm; repeated, it reaches the curve point.";
   BezierCurve curve = six_point_curve();
   std::string curve_name = "a six-point curve";
   if (settings.curve) {
@@ -120,11 +121,12 @@ WriteupPart curve_part(const Submission& submission, const WriteupSettings& sett
   other.made_by = code.made_by;
   const BezierCurve moved_curve = moved(curve);
   const CurveMineLevels moved_levels = student_levels(code, moved_curve, settings.other_t);
-  other.pictures.push_back(
-      {"t = " + format_number(settings.other_t), curve_picture(moved_curve, settings.other_t, n - 1, moved_levels), ""});
+  other.pictures.push_back({"t = " + format_number(settings.other_t),
+                            curve_picture(moved_curve, settings.other_t, n - 1, moved_levels), ""});
   other.problem = curve_problem(moved_levels);
   part.figures.push_back(std::move(other));
-  part.questions = {"How does de Casteljau's algorithm evaluate a Bezier curve, and how does your evaluate_step do it?"};
+  part.questions = {
+      "How does de Casteljau's algorithm evaluate a Bezier curve, and how does your evaluate_step do it?"};
   return part;
 }
 
@@ -135,8 +137,8 @@ WriteupPart patch_part(const Submission& submission) {
   const PartCode code = load_part_code(submission, Exercise::PatchEvaluate);
   WriteupFigure figure;
   figure.number = "2.1";
-  figure.caption = "teapot.bez evaluated by your evaluate (each patch on a " + std::to_string(kPatchResolution) +
-                   "x" + std::to_string(kPatchResolution) + " grid), with and without its control net";
+  figure.caption = "teapot.bez evaluated by your evaluate (each patch on a " + std::to_string(kPatchResolution) + "x" +
+                   std::to_string(kPatchResolution) + " grid), with and without its control net";
   figure.made_by = code.made_by;
   figure.problem = code.problem;
   std::vector<BezierPatch> patches;
@@ -170,8 +172,8 @@ WriteupPart patch_part(const Submission& submission) {
       return mine.points.front();
     };
     try {
-      surface.mesh = std::make_shared<HalfedgeMesh>(
-          build_halfedge_mesh(tessellate_patches(patches, kPatchResolution, sample)));
+      surface.mesh =
+          std::make_shared<HalfedgeMesh>(build_halfedge_mesh(tessellate_patches(patches, kPatchResolution, sample)));
     } catch (const std::exception& e) {  // the student's points do not make a manifold surface
       if (figure.problem.empty()) figure.problem = std::string("your points do not make a surface: ") + e.what();
     }

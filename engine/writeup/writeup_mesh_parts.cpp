@@ -7,10 +7,10 @@
 #include <glm/geometric.hpp>
 
 #include "core/mesh_build.h"
-#include "io/mesh_file.h"
 #include "core/normals.h"
 #include "core/primitives.h"
 #include "grade/submission.h"
+#include "io/mesh_file.h"
 #include "writeup/internal/writeup_parts.h"
 
 namespace meshedit {
@@ -42,7 +42,8 @@ std::vector<uint32_t> chosen_edges(const std::vector<uint32_t>& chosen, const Ha
   if (!chosen.empty()) return chosen;
   const std::vector<uint32_t> all = diagonals(mesh);
   std::vector<uint32_t> picked;
-  for (size_t i = 0; i < count && !all.empty(); ++i) picked.push_back(all[(all.size() - 1) * i / std::max<size_t>(1, count - 1)]);
+  for (size_t i = 0; i < count && !all.empty(); ++i)
+    picked.push_back(all[(all.size() - 1) * i / std::max<size_t>(1, count - 1)]);
   return picked;
 }
 
@@ -130,8 +131,8 @@ std::vector<std::vector<std::string>> flip_table(const HalfedgeMesh& before, con
   const auto names = diagram_names(before, e);
   std::vector<std::vector<std::string>> rows;
   if (names.empty()) return rows;
-  rows.push_back({"halfedge", "id", "next before", "next after", "vertex before", "vertex after", "face before",
-                  "face after"});
+  rows.push_back(
+      {"halfedge", "id", "next before", "next after", "vertex before", "vertex after", "face before", "face after"});
   for (size_t i = 0; i < 6; ++i) {
     const HalfedgeId h(names[i].second.index);
     auto field = [&](const HalfedgeMesh& mesh, int which) -> std::string {
@@ -182,8 +183,8 @@ WriteupPart normals_part(const Submission& submission) {
       const ExerciseInput input = ExerciseInput::vertex(teapot, v);
       const ExerciseOutcome mine = code.code->run(Exercise::VertexNormal, input);
       if (!mine.error.empty() || mine.points.empty()) {
-        figure.problem = format_id(ElementRef(v)) + ": " + (mine.error.empty() ? "vertex_normal returned " + mine.returned
-                                                                                : mine.error);
+        figure.problem = format_id(ElementRef(v)) + ": " +
+                         (mine.error.empty() ? "vertex_normal returned " + mine.returned : mine.error);
         break;  // one error says it; the rest keep the flat normal
       }
       phong.normals[v.index] = glm::vec3(mine.points.front());
@@ -216,7 +217,8 @@ WriteupPart flip_part(const Submission& submission, const WriteupSettings& setti
                       const std::shared_ptr<const HalfedgeMesh>& mesh) {
   WriteupPart part;
   part.heading = "Part 4: Edge flip";
-  part.task = "flip_edge(e) turns the edge between two triangles to join their other two corners, reassigning pointers.";
+  part.task =
+      "flip_edge(e) turns the edge between two triangles to join their other two corners, reassigning pointers.";
   const PartCode code = load_part_code(submission, Exercise::FlipEdge);
   const std::vector<uint32_t> edges = chosen_edges(settings.flip_edges, *mesh, 3);
   const EdgeRuns runs = run_on_edges(code, Exercise::FlipEdge, mesh, edges);
@@ -229,12 +231,13 @@ WriteupPart flip_part(const Submission& submission, const WriteupSettings& setti
   std::vector<ElementRef> marked;
   for (const uint32_t e : edges) marked.push_back(ElementRef(EdgeId(e)));
   figure.pictures.push_back({"before", picture_of(mesh, marked), ""});
-  figure.pictures.push_back({"after " + count_of(runs.reports.size(), "flip"), picture_of(runs.mesh, marked), ""});
+  figure.pictures.push_back({"after " + count_of(runs.reports.size(), "flip"), picture_of(runs.mesh, runs.marked), ""});
   if (runs.problem.empty()) figure.numbers.push_back(validity(runs.mesh));
   if (!runs.reports.empty() && runs.reports.front().mine.mesh) {
     figure.table = flip_table(*mesh, *runs.reports.front().mine.mesh, EdgeId(edges.front()));
-    figure.numbers.push_back("the pointers of the first flip (e" + std::to_string(edges.front()) +
-                             ") in lesson 4's diagram names: h0 is e.halfedge, h1 its twin, a and b its ends, c and d the far corners");
+    figure.numbers.push_back(
+        "the pointers of the first flip (e" + std::to_string(edges.front()) +
+        ") in lesson 4's diagram names: h0 is e.halfedge, h1 its twin, a and b its ends, c and d the far corners");
   }
   part.figures.push_back(std::move(figure));
   part.questions = {"How does your flip_edge reassign the pointers, and what helped you find its mistakes?"};
@@ -246,8 +249,9 @@ WriteupPart split_part(const Submission& submission, const WriteupSettings& sett
   WriteupPart part;
   part.heading = "Part 5: Edge split";
   part.task = "split_edge(e) puts a new vertex at the edge's midpoint and joins it to the opposite corners.";
-  part.questions = {"How does your split_edge make and connect the new elements, and what helped you find its mistakes?",
-                    "If your split_edge splits boundary edges, how does it?"};
+  part.questions = {
+      "How does your split_edge make and connect the new elements, and what helped you find its mistakes?",
+      "If your split_edge splits boundary edges, how does it?"};
   const PartCode code = load_part_code(submission, Exercise::SplitEdge);
   const PartCode flips = load_part_code(submission, Exercise::FlipEdge);
   const std::vector<uint32_t> edges = chosen_edges(settings.split_edges, *mesh, 2);
@@ -261,8 +265,8 @@ WriteupPart split_part(const Submission& submission, const WriteupSettings& sett
   std::vector<ElementRef> marked;
   for (const uint32_t e : edges) marked.push_back(ElementRef(EdgeId(e)));
   figure.pictures.push_back({"before", picture_of(mesh, marked), ""});
-  figure.pictures.push_back({"after " + count_of(splits.reports.size(), "split"),
-                             picture_of(splits.mesh, splits.marked), ""});
+  figure.pictures.push_back(
+      {"after " + count_of(splits.reports.size(), "split"), picture_of(splits.mesh, splits.marked), ""});
   if (splits.problem.empty()) figure.numbers.push_back(validity(splits.mesh));
   part.figures.push_back(std::move(figure));
 

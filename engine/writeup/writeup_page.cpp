@@ -13,9 +13,11 @@ constexpr const char* kStyle =
     "body{font-family:'DejaVu Sans',sans-serif;max-width:1100px;margin:2em auto;padding:0 1em;color:#222}"
     "h2{border-bottom:2px solid #ccc;padding-bottom:.2em;margin-top:2em}"
     ".made{color:#555;font-style:italic}.row{display:flex;flex-wrap:wrap;gap:12px}"
-    "figure{margin:0}figure img{width:480px;max-width:100%;border:1px solid #ccc}figcaption{text-align:center;color:#444}"
+    "figure{margin:0}figure img{width:480px;max-width:100%;border:1px solid "
+    "#ccc}figcaption{text-align:center;color:#444}"
     ".problem{background:#fdecea;border-left:4px solid #c0392b;padding:.5em 1em}"
-    ".gap{width:480px;height:360px;max-width:100%;border:2px dashed #c0392b;display:flex;align-items:center;justify-content:center;"
+    ".gap{width:480px;height:360px;max-width:100%;border:2px dashed "
+    "#c0392b;display:flex;align-items:center;justify-content:center;"
     "text-align:center;color:#c0392b}"
     ".yours{border:2px dashed #888;padding:1em;min-height:6em;color:#888}"
     "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 8px;font-family:monospace}";
@@ -121,17 +123,28 @@ void add_part(const WriteupPart& part, WriteupFiles& files) {
   files.markdown += "\n<!-- yours to write: your explanation goes here -->\n\n";
 }
 
+constexpr const char* kMadeBy =
+    "Every figure below was made by your own functions, run by MeshEdit as the grader runs "
+    "them.";
+
+// The folder's own name ("hw2" for /home/alice/hw2/ or for "." there): the page names no place on the student's disk.
+std::string folder_name(const std::filesystem::path& folder) {
+  std::error_code error;
+  std::filesystem::path whole = std::filesystem::absolute(folder, error).lexically_normal();
+  if (error) whole = folder.lexically_normal();
+  if (whole.filename().empty()) whole = whole.parent_path();
+  return whole.filename().string();
+}
+
 }  // namespace
 
 WriteupFiles writeup_files(const Writeup& writeup) {
   WriteupFiles files;
-  const std::string title = "Write-up: " + writeup.folder.filename().string();
-  files.html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" +
-               html_escaped(title) + "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" +
-               html_escaped(title) + "</h1>\n<p>Every figure below was made by your own functions in " +
-               html_escaped(writeup.folder.string()) + ", run by MeshEdit as the grader runs them.</p>\n";
-  files.markdown = "# " + md_escaped(title) + "\n\nEvery figure below was made by your own functions in " +
-                   md_escaped(writeup.folder.string()) + ", run by MeshEdit as the grader runs them.\n\n";
+  const std::string title = "Write-up: " + folder_name(writeup.folder);
+  files.html = "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>" + html_escaped(title) +
+               "</title>\n<style>" + kStyle + "</style>\n</head>\n<body>\n<h1>" + html_escaped(title) + "</h1>\n<p>" +
+               kMadeBy + "</p>\n";
+  files.markdown = "# " + md_escaped(title) + "\n\n" + kMadeBy + "\n\n";
   if (!writeup.notes.empty()) {
     files.html += "<ul class=\"notes\">\n";
     for (const std::string& note : writeup.notes) {

@@ -69,8 +69,8 @@ WriteupSettings parse_writeup_settings(const std::string& text, const std::strin
     settings.problems.push_back(name + ": must be a JSON object {...}; the defaults are used");
     return settings;
   }
-  static const std::set<std::string> kKeys = {"curve",      "t",           "other_t", "camera",
-                                              "mesh",       "flip_edges",  "split_edges", "levels"};
+  static const std::set<std::string> kKeys = {"curve", "t",          "other_t",     "camera",
+                                              "mesh",  "flip_edges", "split_edges", "levels"};
   for (const auto& [key, value] : root.items()) {
     if (!kKeys.contains(key)) settings.problems.push_back(name + ": unknown key \"" + key + "\" (left alone)");
   }

@@ -38,8 +38,8 @@ struct WriteupSettings {
   double other_t = 0.3;
   WriteupCamera camera;
   std::optional<std::filesystem::path> mesh;  // parts 4 and 5's mesh file, resolved against the folder
-  std::vector<uint32_t> flip_edges;   // empty: the defaults (part 4 picks three diagonals of the grid)
-  std::vector<uint32_t> split_edges;  // empty: the defaults
+  std::vector<uint32_t> flip_edges;           // empty: the defaults (part 4 picks three diagonals of the grid)
+  std::vector<uint32_t> split_edges;          // empty: the defaults
   int levels = 3;
   std::vector<std::string> problems;  // what was not taken from the file, and why
 };

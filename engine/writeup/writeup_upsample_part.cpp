@@ -63,8 +63,9 @@ std::string cube_numbers(const HalfedgeMesh& mesh) {
   }
   const std::string low_distance = format_number(std::round(nearest_min * 1000) / 1000);
   const std::string high_distance = format_number(std::round(nearest_max * 1000) / 1000);
-  const std::string corners = low_distance == high_distance ? "all " + low_distance + " from the centre (symmetric)"
-                                                            : low_distance + " to " + high_distance + " from the centre";
+  const std::string corners = low_distance == high_distance
+                                  ? "all " + low_distance + " from the centre (symmetric)"
+                                  : low_distance + " to " + high_distance + " from the centre";
   return "the 8 corners are " + corners + "; the cube's are 0.866; vertex degrees " + std::to_string(low) + " to " +
          std::to_string(high);
 }
@@ -112,14 +113,16 @@ WriteupFigure upsampled(const PartCode& code, std::shared_ptr<const HalfedgeMesh
 WriteupPart upsample_part(const Submission& submission, const WriteupSettings& settings) {
   WriteupPart part;
   part.heading = "Part 6: Loop subdivision for mesh upsampling";
-  part.task = "upsample(mesh) splits every edge, flips the new edges that join an old and a new vertex, and moves "
-              "every vertex by Loop's weights.";
+  part.task =
+      "upsample(mesh) splits every edge, flips the new edges that join an old and a new vertex, and moves "
+      "every vertex by Loop's weights.";
   const PartCode code = load_part_code(submission, Exercise::Upsample);
   const int levels = settings.levels;
 
   WriteupFigure cube;
   cube.number = "6.1";
-  cube.caption = "The cube after " + std::to_string(levels) + " levels of your upsample (the numbers: how evenly its "
+  cube.caption = "The cube after " + std::to_string(levels) +
+                 " levels of your upsample (the numbers: how evenly its "
                  "corners round off)";
   part.figures.push_back(upsampled(code, cube_mesh(), levels, std::move(cube), true));
 

@@ -20,15 +20,15 @@ fs::path solutions() { return testing::source_dir() / "tests" / "exercise" / "so
 
 TEST(CliWriteup, TheSolutionsGiveEveryFigureOkAndTheSameBytesTwice) {
   const fs::path dir = testing::scratch_dir();
-  const auto first = run_meshedit({"writeup", "--submission", solutions().string(), "-o", (dir / "one").string()},
-                                  "writeup-one");
+  const auto first =
+      run_meshedit({"writeup", "--submission", solutions().string(), "-o", (dir / "one").string()}, "writeup-one");
   ASSERT_EQ(first.status, 0) << first.out << first.err;
   for (const char* number : {"1.1", "1.2", "2.1", "3.1", "4.1", "5.1", "5.2", "5.3", "6.1", "6.2", "6.3", "6.4"}) {
     EXPECT_NE(first.out.find(std::string(number) + " ok\n"), std::string::npos) << number << "\n" << first.out;
   }
   EXPECT_NE(first.out.find("0 figures have problems"), std::string::npos) << first.out;
-  const auto second = run_meshedit({"writeup", "--submission", solutions().string(), "-o", (dir / "two").string()},
-                                   "writeup-two");
+  const auto second =
+      run_meshedit({"writeup", "--submission", solutions().string(), "-o", (dir / "two").string()}, "writeup-two");
   ASSERT_EQ(second.status, 0) << second.err;
   const std::string page = testing::read_text(dir / "one" / "index.html");
   EXPECT_NE(page.find("src=\"data:image/png;base64,"), std::string::npos);
@@ -50,11 +50,12 @@ TEST(CliWriteup, AWrongFlipFailsItsFiguresInTheGradersWordsAndThePagesAreStillWr
   const fs::path dir = testing::scratch_dir();
   const fs::path folder = dir / "student";
   fs::create_directories(folder);
-  for (const auto& entry : fs::directory_iterator(solutions())) fs::copy_file(entry.path(), folder / entry.path().filename());
-  fs::copy_file(testing::source_dir() / "tests" / "grading" / "students" / "flip_forgets_faces.lua", folder / "flip.lua",
-                fs::copy_options::overwrite_existing);
-  const auto run = run_meshedit({"writeup", "--submission", folder.string(), "-o", (dir / "out").string()},
-                                "writeup-wrong-flip");
+  for (const auto& entry : fs::directory_iterator(solutions()))
+    fs::copy_file(entry.path(), folder / entry.path().filename());
+  fs::copy_file(testing::source_dir() / "tests" / "grading" / "students" / "flip_forgets_faces.lua",
+                folder / "flip.lua", fs::copy_options::overwrite_existing);
+  const auto run =
+      run_meshedit({"writeup", "--submission", folder.string(), "-o", (dir / "out").string()}, "writeup-wrong-flip");
   EXPECT_EQ(run.status, 1) << run.out << run.err;
   EXPECT_NE(run.out.find("4.1 problem: flipping e"), std::string::npos) << run.out;
   EXPECT_NE(run.out.find("after your flip_edge the mesh is not valid"), std::string::npos) << run.out;
@@ -67,8 +68,8 @@ TEST(CliWriteup, AWrongFlipFailsItsFiguresInTheGradersWordsAndThePagesAreStillWr
 
 TEST(CliWriteup, AMissingFolderAndBadArgumentsAreRefused) {
   const fs::path dir = testing::scratch_dir();
-  const auto missing =
-      run_meshedit({"writeup", "--submission", (dir / "nowhere").string(), "-o", (dir / "out").string()}, "writeup-gone");
+  const auto missing = run_meshedit(
+      {"writeup", "--submission", (dir / "nowhere").string(), "-o", (dir / "out").string()}, "writeup-gone");
   EXPECT_EQ(missing.status, 1);
   EXPECT_NE(missing.err.find("nowhere"), std::string::npos) << missing.err;
   const auto no_output = run_meshedit({"writeup", "--submission", solutions().string()}, "writeup-no-output");

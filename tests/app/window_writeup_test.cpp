@@ -125,5 +125,27 @@ TEST(WindowWriteup, AWrongFlipIsNamedInTheStatusLineAndSavingTheViewKeepsTheOthe
   EXPECT_EQ(saved.mesh->filename(), "cube.obj");
 }
 
+TEST(WindowWriteup, TheItemStopsAWriteupThatRunsAStudentsEndlessLoop) {
+  XServer x;
+  if (x.display().empty()) GTEST_SKIP() << "no X server and no Xvfb";
+  const fs::path dir = testing::scratch_dir();
+  const fs::path folder =
+      student(dir, "flip.lua", testing::source_dir() / "tests" / "web" / "runaway_student" / "loop" / "flip.lua");
+  const fs::path cube = dir / "cube.obj";
+  save_mesh(cube, make_cube());
+  std::ostringstream actions;
+  actions << "frames 2\n"
+          << "exercise flip " << folder.string() << "\n"
+          << "command write-up\n"
+          << "frames 30\n"
+          << "expect-message Making your write-up\n"  // the window draws on while the loop runs
+          << "command write-up\n"
+          << "expect-message The write-up was stopped before it was written\n"
+          << "quit\n";
+  const WindowRun run = run_window(x.display(), cube, actions.str(), dir);
+  EXPECT_EQ(run.status, 0) << run.output;
+  EXPECT_FALSE(fs::exists(folder / "writeup" / "index.html"));
+}
+
 }  // namespace
 }  // namespace meshedit

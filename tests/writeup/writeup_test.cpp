@@ -140,7 +140,7 @@ TEST(Writeup, AFlipThatForgetsTheFacesFailsPartFourInTheGradersWordsAndDrawsWhat
   EXPECT_NE(flips.problem.find("is not valid"), std::string::npos) << flips.problem;
   ASSERT_TRUE(mesh_of(flips, 1).mesh);
   EXPECT_FALSE(validate(*mesh_of(flips, 1).mesh).ok());  // the broken mesh as the student left it
-  EXPECT_NE(figure(writeup, "5.2").problem, "");  // the mix uses their flip too
+  EXPECT_NE(figure(writeup, "5.2").problem, "");         // the mix uses their flip too
   for (const char* fine : {"1.1", "2.1", "3.1", "5.1", "6.1"}) EXPECT_EQ(figure(writeup, fine).problem, "") << fine;
 }
 
@@ -224,8 +224,8 @@ TEST(Writeup, SettingsChooseTheEdgesAndAnEdgeThatIsNotThereIsNamed) {
 TEST(Writeup, TheChosenMeshFileIsFlippedAndSplitAndOneThatDoesNotOpenIsNamedWithTheGridUsed) {
   const fs::path dir = testing::scratch_dir();
   save_mesh(dir / "cube.obj", make_cube());
-  WriteupSettings settings = parse_writeup_settings(R"({"mesh": "cube.obj", "flip_edges": [2], "split_edges": [4]})",
-                                                    "writeup.json", dir);
+  WriteupSettings settings =
+      parse_writeup_settings(R"({"mesh": "cube.obj", "flip_edges": [2], "split_edges": [4]})", "writeup.json", dir);
   ASSERT_TRUE(settings.problems.empty()) << settings.problems.front();
   const Writeup writeup = make_writeup(submission_of(), settings);
   EXPECT_TRUE(writeup.notes.empty()) << writeup.notes.front();

@@ -29,7 +29,8 @@ std::shared_ptr<HalfedgeMesh> teapot_mesh(int resolution);
 WriteupPart curve_part(const Submission& submission, const WriteupSettings& settings, std::vector<std::string>& notes);
 WriteupPart patch_part(const Submission& submission);
 WriteupPart normals_part(const Submission& submission);
-// Parts 4 and 5's mesh: the file writeup.json names, or a 4x3 grid (with a note saying why when the file does not open).
+// Parts 4 and 5's mesh: the file writeup.json names, or a 4x3 grid (with a note saying why when the file does not
+// open).
 std::shared_ptr<const HalfedgeMesh> edit_mesh(const WriteupSettings& settings, std::vector<std::string>& notes);
 WriteupPart flip_part(const Submission& submission, const WriteupSettings& settings,
                       const std::shared_ptr<const HalfedgeMesh>& mesh);
