@@ -20,17 +20,9 @@ mkdir -p "$out"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-mkdir -p "$scratch/submission" "$scratch/drop"
-cp scripts/student/*.lua "$scratch/submission/"
-dropped=()
-for pair in "$@"; do
-  student=${pair%%=*}
-  fixture=${pair#*=}
-  [ -f "$fixture" ] || { echo "web_check_match: no fixture $fixture"; exit 1; }
-  cp "$fixture" "$scratch/submission/$student"
-  cp "$fixture" "$scratch/drop/$student"
-  dropped+=("$scratch/drop/$student")
-done
+# shellcheck source=scripts/web_student_fixtures.sh
+source scripts/web_student_fixtures.sh
+student_fixtures "$scratch" "$@"
 
 "$meshedit" grade --suite tests/grading/suites/all.lua --submission "$scratch/submission" --visible-only \
   --results "$out/$name-desktop.json" >"$scratch/desktop.log" 2>&1 || {

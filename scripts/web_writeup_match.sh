@@ -18,17 +18,9 @@ mkdir -p "$out"
 scratch=$(mktemp -d)
 trap 'rm -rf "$scratch"' EXIT
 
-mkdir -p "$scratch/submission" "$scratch/drop"
-cp scripts/student/*.lua "$scratch/submission/"
-dropped=()
-for pair in "$@"; do
-  student=${pair%%=*}
-  fixture=${pair#*=}
-  [ -f "$fixture" ] || { echo "web_writeup_match: no fixture $fixture"; exit 1; }
-  cp "$fixture" "$scratch/submission/$student"
-  cp "$fixture" "$scratch/drop/$student"
-  dropped+=("$scratch/drop/$student")
-done
+# shellcheck source=scripts/web_student_fixtures.sh
+source scripts/web_student_fixtures.sh
+student_fixtures "$scratch" "$@"
 
 status=0
 "$meshedit" writeup --submission "$scratch/submission" -o "$scratch/desktop" >"$scratch/desktop.log" 2>&1 || status=$?

@@ -62,7 +62,8 @@ const CliCommand kCommands[] = {
     {"writeup", run_writeup,
      "writeup --submission DIR -o OUT [--settings FILE]\n"
      "                                     the write-up made by DIR's own functions: OUT/index.html (pictures\n"
-     "                                     inside), OUT/writeup.md and OUT/figures/; DIR/writeup.json chooses"},
+     "                                     inside), OUT/writeup.md and OUT/figures/; DIR/writeup.json chooses\n"
+     "                                     the curve, the camera, the mesh and the edges they show"},
     {"lesson", run_lesson,
      "lesson FILE.lua --headless [--answers ANSWERS.lua] [--student DIR]\n"
      "                                     run a lesson's steps with scripted answers (no window); your_turn\n"

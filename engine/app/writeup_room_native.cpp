@@ -15,7 +15,10 @@ struct WriteupRoom::Host {
 };
 
 WriteupRoom::WriteupRoom(DocumentRoom& document, ExerciseRoom& exercises, ViewRoom& view)
-    : document_(document), exercises_(exercises), view_(view), program_(check_program()),
+    : document_(document),
+      exercises_(exercises),
+      view_(view),
+      program_(check_program()),
       host_(std::make_unique<Host>()) {}
 
 WriteupRoom::~WriteupRoom() = default;  // the process is killed and reaped with it
@@ -23,8 +26,8 @@ WriteupRoom::~WriteupRoom() = default;  // the process is killed and reaped with
 bool WriteupRoom::running() const { return host_->process.running(); }
 
 std::string WriteupRoom::start_run(const std::filesystem::path& folder) {
-  const std::vector<std::string> args = {program_.string(), "writeup", "--submission", folder.string(),
-                                         "-o",              output_folder().string()};
+  const std::vector<std::string> args = {program_.string(), "writeup", "--submission",
+                                         folder.string(),   "-o",      output_folder().string()};
   const std::string why = host_->process.start(args, SpawnedProgram::Output::StdoutAndStderr);
   host_->announced = !why.empty();
   return why.empty() ? "" : program_.string() + ": " + why;

@@ -37,8 +37,8 @@ class PageWorkerJob {
   void stop();
   double seconds_since_start() const;
 
-  std::vector<uint8_t> take_answer();   // after End::Answered
-  void release(bool keep_worker);       // after End::Answered: the worker kept idle for the next job, or ended
+  std::vector<uint8_t> take_answer();     // after End::Answered
+  void release(bool keep_worker);         // after End::Answered: the worker kept idle for the next job, or ended
   const std::string& died_words() const;  // after End::Died: what the worker said ("the program stopped: ...")
 
  private:

@@ -9,8 +9,7 @@
 #include <stdexcept>
 #include <utility>
 
-#include "core/mesh_error.h"
-#include "core/mesh_records.h"
+#include "exercise/cbor_values.h"
 #include "exercise/exercise_registry.h"
 
 namespace meshedit {
@@ -21,43 +20,14 @@ using nlohmann::json;
 constexpr const char* kCallFormat = "meshedit student call 1";
 constexpr const char* kResultFormat = "meshedit student call result 1";
 
-json point_json(const glm::dvec3& p) { return json::array({p.x, p.y, p.z}); }
-
-glm::dvec3 point_from(const json& j) {
-  if (!j.is_array() || j.size() != 3) throw std::runtime_error("a point is not 3 numbers");
-  return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()};
-}
-
-json points_json(const std::vector<glm::dvec3>& points) {
-  json j = json::array();
-  for (const glm::dvec3& p : points) j.push_back(point_json(p));
-  return j;
-}
-
-std::vector<glm::dvec3> points_from(const json& j) {
-  std::vector<glm::dvec3> points;
-  for (const json& p : j) points.push_back(point_from(p));
-  return points;
-}
-
-json element_json(ElementRef element) { return json::array({static_cast<int>(element.kind), element.index}); }
-
-ElementRef element_from(const json& j) {
-  const int kind = j.at(0).get<int>();
-  if (kind < 0 || kind > static_cast<int>(ElementKind::Boundary)) throw std::runtime_error("an element of no kind");
-  return {static_cast<ElementKind>(kind), j.at(1).get<uint32_t>()};
-}
-
-json mesh_json(const HalfedgeMesh* mesh) { return mesh ? json(format_mesh_records(*mesh)) : json(nullptr); }
-
-std::shared_ptr<HalfedgeMesh> mesh_from(const json& j, const std::string& name) {
-  if (j.is_null()) return nullptr;
-  try {
-    return std::make_shared<HalfedgeMesh>(parse_mesh_records(j.get<std::string>(), name));
-  } catch (const MeshError& e) {
-    throw std::runtime_error(e.what());
-  }
-}
+using cbor::element_from;
+using cbor::element_json;
+using cbor::mesh_from;
+using cbor::mesh_json;
+using cbor::point_from;
+using cbor::point_json;
+using cbor::points_from;
+using cbor::points_json;
 
 json value_json(const ExerciseValue& value) {
   json items = json::array();
@@ -199,20 +169,6 @@ ExerciseOutcome outcome_from(const json& j) {
   return out;
 }
 
-// The CBOR read as one of this file's texts of `format`; std::runtime_error when it is not.
-template <typename Read>
-auto read_bytes(std::span<const uint8_t> bytes, const char* format, const char* what, Read read) {
-  try {
-    const json j = json::from_cbor(bytes.begin(), bytes.end());
-    if (!j.is_object() || j.value("format", "") != format) throw std::runtime_error("it is not one");
-    return read(j);
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("not a ") + what + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 std::vector<uint8_t> encode_student_call(const StudentCall& call) {
@@ -231,7 +187,7 @@ std::vector<uint8_t> encode_student_call(const StudentCall& call) {
 }
 
 StudentCall decode_student_call(std::span<const uint8_t> bytes) {
-  return read_bytes(bytes, kCallFormat, "student call", [](const json& j) {
+  return cbor::read_cbor_text(bytes, kCallFormat, "student call", [](const json& j) {
     StudentCall call;
     const std::string name = j.at("exercise").get<std::string>();
     const std::optional<Exercise> exercise = exercise_registry().find(name);
@@ -260,7 +216,7 @@ std::vector<uint8_t> encode_student_call_result(const StudentCallResult& result)
 }
 
 StudentCallResult decode_student_call_result(std::span<const uint8_t> bytes) {
-  return read_bytes(bytes, kResultFormat, "student call's result", [](const json& j) {
+  return cbor::read_cbor_text(bytes, kResultFormat, "student call's result", [](const json& j) {
     StudentCallResult result;
     result.outcome = outcome_from(j.at("outcome"));
     result.load_error = j.at("load_error").get<std::string>();

@@ -10,7 +10,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/mesh_records.h"
+#include "exercise/cbor_values.h"
 #include "grade/submission.h"
 #include "writeup/writeup_settings.h"
 
@@ -22,19 +22,14 @@ using nlohmann::json;
 constexpr const char* kRequestFormat = "meshedit-writeup-request-1";
 constexpr const char* kWriteupFormat = "meshedit-writeup-1";
 
-json point_json(const glm::dvec3& p) { return json::array({p.x, p.y, p.z}); }
-glm::dvec3 point_from(const json& j) { return {j.at(0).get<double>(), j.at(1).get<double>(), j.at(2).get<double>()}; }
-
-json points_json(const std::vector<glm::dvec3>& points) {
-  json j = json::array();
-  for (const glm::dvec3& p : points) j.push_back(point_json(p));
-  return j;
-}
-std::vector<glm::dvec3> points_from(const json& j) {
-  std::vector<glm::dvec3> points;
-  for (const json& p : j) points.push_back(point_from(p));
-  return points;
-}
+using cbor::element_from;
+using cbor::element_json;
+using cbor::mesh_from;
+using cbor::mesh_json;
+using cbor::point_from;
+using cbor::point_json;
+using cbor::points_from;
+using cbor::points_json;
 
 json levels_json(const std::vector<std::vector<glm::dvec3>>& levels) {
   json j = json::array();
@@ -49,10 +44,10 @@ std::vector<std::vector<glm::dvec3>> levels_from(const json& j) {
 
 json mesh_picture_json(const MeshPicture& picture) {
   json marked = json::array();
-  for (const ElementRef e : picture.marked) marked.push_back(json::array({static_cast<int>(e.kind), e.index}));
+  for (const ElementRef e : picture.marked) marked.push_back(element_json(e));
   json normals = json::array();
   for (const glm::vec3& n : picture.normals) normals.push_back(json::array({n.x, n.y, n.z}));
-  return {{"mesh", picture.mesh ? json(format_mesh_records(*picture.mesh)) : json(nullptr)},
+  return {{"mesh", mesh_json(picture.mesh.get())},
           {"marked", std::move(marked)},
           {"smooth", picture.smooth},
           {"wireframe", picture.wireframe},
@@ -62,18 +57,12 @@ json mesh_picture_json(const MeshPicture& picture) {
 
 MeshPicture mesh_picture_from(const json& j) {
   MeshPicture picture;
-  if (!j.at("mesh").is_null()) {
-    // A MeshError (records that do not parse) is a std::runtime_error already.
-    picture.mesh = std::make_shared<HalfedgeMesh>(parse_mesh_records(j.at("mesh").get<std::string>(), "a figure"));
-  }
-  for (const json& e : j.at("marked")) {
-    const int kind = e.at(0).get<int>();
-    if (kind < 0 || kind > static_cast<int>(ElementKind::Boundary)) throw std::runtime_error("an element of no kind");
-    picture.marked.emplace_back(static_cast<ElementKind>(kind), e.at(1).get<uint32_t>());
-  }
+  picture.mesh = mesh_from(j.at("mesh"), "a figure");
+  for (const json& e : j.at("marked")) picture.marked.push_back(element_from(e));
   picture.smooth = j.at("smooth").get<bool>();
   picture.wireframe = j.at("wireframe").get<bool>();
-  for (const json& n : j.at("normals")) picture.normals.emplace_back(n.at(0).get<float>(), n.at(1).get<float>(), n.at(2).get<float>());
+  for (const json& n : j.at("normals"))
+    picture.normals.emplace_back(n.at(0).get<float>(), n.at(1).get<float>(), n.at(2).get<float>());
   picture.net_lines = levels_from(j.at("net_lines"));
   return picture;
 }
@@ -102,7 +91,8 @@ json curve_picture_json(const CurvePicture& picture) {
 
 CurvePicture curve_picture_from(const json& j) {
   CurvePicture picture;
-  for (const json& p : j.at("points")) picture.curve.control_points.emplace_back(p.at(0).get<double>(), p.at(1).get<double>());
+  for (const json& p : j.at("points"))
+    picture.curve.control_points.emplace_back(p.at(0).get<double>(), p.at(1).get<double>());
   picture.t = j.at("t").get<double>();
   picture.level = j.at("level").get<int>();
   picture.show_curve = j.at("show_curve").get<bool>();
@@ -130,7 +120,7 @@ json figure_json(const WriteupFigure& figure) {
     else p["curve"] = curve_picture_json(std::get<CurvePicture>(picture.content));
     pictures.push_back(std::move(p));
   }
-  return {{"number", figure.number}, {"caption", figure.caption}, {"made_by", figure.made_by},
+  return {{"number", figure.number},         {"caption", figure.caption}, {"made_by", figure.made_by},
           {"pictures", std::move(pictures)}, {"numbers", figure.numbers}, {"table", figure.table},
           {"problem", figure.problem}};
 }
@@ -154,20 +144,6 @@ WriteupFigure figure_from(const json& j) {
   return figure;
 }
 
-// The CBOR read as a text of `format`; std::runtime_error naming `what` when it is not.
-template <typename Read>
-auto read_bytes(std::span<const uint8_t> bytes, const char* format, const char* what, Read read) {
-  try {
-    const json j = json::from_cbor(bytes.begin(), bytes.end());
-    if (!j.is_object() || j.value("format", "") != format) throw std::runtime_error("it is not one");
-    return read(j);
-  } catch (const std::bad_alloc&) {
-    throw;
-  } catch (const std::exception& e) {
-    throw std::runtime_error(std::string("not a ") + what + ": " + e.what());
-  }
-}
-
 }  // namespace
 
 std::vector<uint8_t> encode_writeup_request(const std::filesystem::path& folder,
@@ -178,7 +154,7 @@ std::vector<uint8_t> encode_writeup_request(const std::filesystem::path& folder,
 }
 
 Writeup make_requested_writeup(std::span<const uint8_t> request) {
-  const auto [folder, files] = read_bytes(request, kRequestFormat, "write-up request", [](const json& j) {
+  const auto [folder, files] = cbor::read_cbor_text(request, kRequestFormat, "write-up request", [](const json& j) {
     std::vector<WriteupRequestFile> read;
     for (const json& file : j.at("files")) {
       read.push_back({file.at("path").get<std::string>(), file.at("bytes").get<std::string>()});
@@ -214,7 +190,7 @@ std::vector<uint8_t> encode_writeup(const Writeup& writeup) {
 }
 
 Writeup decode_writeup(std::span<const uint8_t> bytes) {
-  return read_bytes(bytes, kWriteupFormat, "write-up", [](const json& j) {
+  return cbor::read_cbor_text(bytes, kWriteupFormat, "write-up", [](const json& j) {
     Writeup writeup;
     writeup.folder = j.at("folder").get<std::string>();
     const json& camera = j.at("camera");

@@ -83,7 +83,8 @@ TEST(WriteupText, ARequestOfTheStudentsFilesMakesTheWriteupOfTheFolder) {
   for (const auto& entry : fs::directory_iterator(folder)) {
     files.push_back({dir / "elsewhere" / "student" / entry.path().filename(), testing::read_text(entry.path())});
   }
-  files.push_back({dir / "elsewhere" / "meshes" / "cube.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"});
+  files.push_back({dir / "elsewhere" / "meshes" / "cube.obj",
+                   "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 3 2\nf 1 2 4\nf 2 3 4\nf 1 4 3\n"});
   const Writeup made = make_requested_writeup(encode_writeup_request(dir / "elsewhere" / "student", files));
   EXPECT_TRUE(made.notes.empty()) << made.notes.front();
   fs::create_directories(dir / "meshes");
