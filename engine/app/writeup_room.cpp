@@ -85,7 +85,7 @@ void WriteupRoom::announce(const RunEnd& end) {
     document_.message(Severity::Warning,
                       "Write-up made; " + std::to_string(end.failed.size()) +
                           (end.failed.size() == 1 ? " figure has a problem" : " figures have problems") + " (" +
-                          numbers + "), said under each: " + end.where);
+                          numbers + "), the page says why: " + end.where);
   }
 }
 

@@ -82,6 +82,13 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
     if (!doc.message.text.empty()) {
       ImGui::SameLine(0.0f, gap);
       ImGui::TextColored(severity_color(doc.message.severity), "%s", doc.message.text.c_str());
+      if (ImGui::IsItemHovered()) {  // the whole message, where the bar cuts it
+        ImGui::BeginTooltip();
+        ImGui::PushTextWrapPos(ImGui::GetFontSize() * 40.0f);
+        ImGui::TextUnformatted(doc.message.text.c_str());
+        ImGui::PopTextWrapPos();
+        ImGui::EndTooltip();
+      }
       if (in_range(doc.mesh, doc.message.element) && doc.message.severity != Severity::Info) {
         ImGui::SameLine();
         const bool pressed = ImGui::SmallButton("select##message");

@@ -111,7 +111,7 @@ TEST(WindowWriteup, AWrongFlipIsNamedInTheStatusLineAndSavingTheViewKeepsTheOthe
   actions << "frames 2\n"
           << "exercise flip " << folder.string() << "\n"
           << "command write-up\n"
-          << "wait-message 3000 2 figures have problems (4.1, 5.2), said under each:\n"
+          << "wait-message 3000 2 figures have problems (4.1, 5.2), the page says why:\n"
           << "command write-up-view\n"
           << "expect-message cube.obj, no flips and no splits\n"
           << "quit\n";
