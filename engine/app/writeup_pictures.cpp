@@ -26,7 +26,9 @@ namespace {
 constexpr int kSamples = 4;
 constexpr float kFontPixels = 15.0f;
 constexpr double kFromAbove = 89.0;  // degrees of pitch: a flat mesh is seen from straight above
-constexpr double kCloser = 2.0;      // scroll steps nearer than the window's fit: a picture has no panels to spare
+// Scroll steps nearer than the window's fit, a picture having no panels to spare: a flat mesh seen from above fills it
+// at 2; a solid seen at an angle keeps the fit, which shows every corner of its box (the cube of figure 6.1 whole).
+constexpr double kCloserFlat = 2.0, kCloserSolid = 0.0;
 
 // An ImGui context of its own, with the window's fonts and theme and the OpenGL backend, for the curve pictures; the
 // caller's context is current again when it goes.
@@ -123,7 +125,7 @@ class PictureDrawer {
     OrbitCamera camera;
     camera.set_up_axis(UpAxis::Z);
     camera.fit_looking_from(box, aim.eye() - aim.target());
-    camera.zoom(kCloser + camera_.zoom);
+    camera.zoom((flat ? kCloserFlat : kCloserSolid) + camera_.zoom);
     ViewOptions options;
     options.smooth_shading = picture.smooth;
     options.wireframe = picture.wireframe;

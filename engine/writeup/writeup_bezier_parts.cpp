@@ -91,12 +91,14 @@ WriteupPart curve_part(const Submission& submission, const WriteupSettings& sett
       "evaluate_step(points, t) does one step of de Casteljau's algorithm; repeated, it reaches the curve point.";
   BezierCurve curve = six_point_curve();
   std::string curve_name = "a six-point curve";
+  std::string curve_refused;  // why the student's .bzc was not used (its file and line)
   if (settings.curve) {
     try {
       curve = read_bzc(*settings.curve);
       curve_name = settings.curve->filename().string();
     } catch (const std::exception& e) {
-      notes.push_back(std::string(e.what()) + " (the six-point curve is used)");
+      curve_refused = std::string(e.what()) + " (the six-point curve is used)";
+      notes.push_back(curve_refused);
     }
   }
   const PartCode code = load_part_code(submission, Exercise::CurveStep);
@@ -113,6 +115,7 @@ WriteupPart curve_part(const Submission& submission, const WriteupSettings& sett
                                curve_picture(curve, settings.t, k, yours), ""});
   }
   levels.problem = curve_problem(yours);
+  if (!curve_refused.empty()) levels.numbers.push_back("your curve file: " + curve_refused);
   part.figures.push_back(std::move(levels));
 
   WriteupFigure other;

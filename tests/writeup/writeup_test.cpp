@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <filesystem>
+#include <fstream>
 #include <string>
 
 #include "core/bezier.h"
@@ -210,6 +211,22 @@ TEST(WriteupSettings, EveryKeyIsReadAndEveryBadValueNamedWithTheDefaultKept) {
   EXPECT_EQ(bad.problems[0], "writeup.json: unknown key \"colour\" (left alone)");
   EXPECT_NE(parse_writeup_settings("{oops", "writeup.json", "/s").problems.at(0).find("writeup.json: not JSON"),
             std::string::npos);
+}
+
+TEST(Writeup, ACurveFileThatDoesNotParseIsNamedWithItsLineWhereTheCurveIsDrawn) {
+  const fs::path dir = testing::scratch_dir();
+  std::ofstream(dir / "mine.bzc") << "3\n0 0\n1 oops\n2 0\n";
+  WriteupSettings settings;
+  settings.curve = dir / "mine.bzc";
+  const Writeup writeup = make_writeup(submission_of(), settings);
+  ASSERT_EQ(writeup.notes.size(), 1u);
+  EXPECT_NE(writeup.notes[0].find("mine.bzc:3"), std::string::npos) << writeup.notes[0];
+  const WriteupFigure& levels = figure(writeup, "1.1");
+  ASSERT_FALSE(levels.numbers.empty());
+  EXPECT_NE(levels.numbers.back().find("your curve file: "), std::string::npos);
+  EXPECT_NE(levels.numbers.back().find("mine.bzc:3"), std::string::npos) << levels.numbers.back();
+  EXPECT_EQ(levels.pictures.size(), 6u);  // the six-point curve, drawn all the same
+  EXPECT_EQ(levels.problem, "");
 }
 
 TEST(Writeup, SettingsChooseTheEdgesAndAnEdgeThatIsNotThereIsNamed) {
