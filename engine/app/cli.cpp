@@ -58,7 +58,12 @@ const CliCommand kCommands[] = {
     {"grade", run_grade,
      "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
      "      [--report FILE] [--progress]\n"
-     "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]   grade Lua submissions"},
+     "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N] [--compare PREVIOUS_MARKS]\n"
+     "                                     grade Lua submissions (a class: also FOLDER/class.html)"},
+    {"class-report", run_class_report,
+     "class-report RESULTS.json... [-o FOLDER] [--compare PREVIOUS_MARKS]\n"
+     "                                     the class at a glance from results files: FOLDER/class.html (scores,\n"
+     "                                     each test, the mistakes ranked) and FOLDER/class.csv"},
     {"writeup", run_writeup,
      "writeup --submission DIR -o OUT [--settings FILE]\n"
      "                                     the write-up made by DIR's own functions: OUT/index.html (pictures\n"

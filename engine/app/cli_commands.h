@@ -32,6 +32,8 @@ int run_grade(const std::vector<std::string>& arguments, std::ostream& out);
 // `writeup --submission DIR -o OUT [--settings FILE]` (cli_writeup.cpp): the write-up made by the student's functions;
 // 0 when every figure is the reference's, 1 when some figure is not (the files are still written).
 int run_writeup(const std::vector<std::string>& arguments, std::ostream& out);
+// app/cli_class_report.cpp
+int run_class_report(const std::vector<std::string>& arguments, std::ostream& out);
 // `lesson FILE --headless [--answers ANSWERS.lua] [--student DIR]`: every step with scripted answers, your_turn with
 // the student folder DIR; 0 when all pass. UsageError without --headless; ScriptError (a step failed: its file:line).
 int run_lesson(const std::vector<std::string>& arguments, std::ostream& out);

@@ -2,7 +2,7 @@
 //
 //   meshedit grade --suite SUITE.lua --submission DIR [--results results.json] [--junit FILE] [--tap] [--visible-only]
 //                  [--report FILE] [--progress]
-//   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N]
+//   meshedit grade --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N] [--compare PREVIOUS_MARKS]
 //
 // --visible-only runs only the tests a student sees before the due date (a student's check before handing in); the
 // report says how many tests and points it left out and when they will be shown. --report writes the whole report as
@@ -15,8 +15,9 @@
 // (--junit). Each failed test whose input the grader kept gets a picture of it beside the reference's result and the
 // student's, in its Markdown feedback and in pictures/ beside results.json (failure_pictures.h). A class: grades every
 // folder in parallel processes (--jobs, default: the number of processors), writes FOLDER/<submission>/results.json for
-// each and FOLDER/summary.csv + summary.json (FOLDER defaults to
-// ./grading-results), and prints one line per submission.
+// each, FOLDER/summary.csv + summary.json and the class report FOLDER/class.html + class.csv (grade/class_report.h;
+// FOLDER defaults to ./grading-results; --compare adds what changed since the marks in PREVIOUS_MARKS), and prints one
+// line per submission.
 // The exit status says whether grading worked, not the score: 0 graded (even a submission that fails to
 // load, crashes, hangs or runs out of memory: those tests fail, results.json is still written), 1 the grader
 // could not grade (the suite does not load, a folder is missing, a file cannot be written), 2 bad arguments.
@@ -26,11 +27,13 @@
 
 #include <iostream>
 #include <memory>
+#include <optional>
 
 #include "app/failure_pictures.h"
 #include "core/parallel_for.h"
 #include "core/value_format.h"
 #include "grade/class_grading.h"
+#include "grade/class_report.h"
 #include "grade/grader.h"
 #include "grade/report_json.h"
 #include "grade/results_writers.h"
@@ -90,6 +93,9 @@ int grade_one(Suite& suite, const std::string& folder, std::vector<std::string>&
 int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vector<std::string>& args,
                std::ostream& out) {
   const std::string folder = take_option(args, "--out").value_or("grading-results");
+  const auto compare = take_option(args, "--compare");
+  if (compare && !std::filesystem::is_directory(*compare))
+    throw UsageError("--compare " + *compare + ": no such folder");
   int jobs = hardware_threads();
   if (const auto text = take_option(args, "--jobs")) jobs = parse_count(*text, "--jobs", 256);
   if (jobs < 1) throw UsageError("--jobs must be at least 1");
@@ -106,6 +112,13 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
   const std::vector<ClassEntry> entries = grade_class(suite, paths, folder, jobs, {}, add_failure_pictures);
   write_file_atomically(std::filesystem::path(folder) / "summary.csv", class_summary_csv(entries));
   write_file_atomically(std::filesystem::path(folder) / "summary.json", class_summary_json(entries));
+  const ClassReport class_report = make_class_report(class_results(entries));
+  const std::optional<ClassChanges> changes =
+      compare ? std::optional(compare_class_reports(make_class_report(read_class_folder(*compare)), class_report))
+              : std::nullopt;
+  write_file_atomically(std::filesystem::path(folder) / "class.html",
+                        class_report_html(class_report, changes ? &*changes : nullptr));
+  write_file_atomically(std::filesystem::path(folder) / "class.csv", class_report_csv(class_report));
   size_t graded = 0;
   for (const auto& e : entries) {
     if (e.status == "graded") {
@@ -117,7 +130,8 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
     }
   }
   out << graded << " of " << entries.size() << " submissions graded; summary in "
-      << (std::filesystem::path(folder) / "summary.csv").string() << "\n";
+      << (std::filesystem::path(folder) / "summary.csv").string() << ", the class at a glance in "
+      << (std::filesystem::path(folder) / "class.html").string() << "\n";
   out.flush();
   return graded == entries.size() ? 0 : 1;
 }

@@ -147,4 +147,21 @@ std::string class_summary_json(const std::vector<ClassEntry>& entries) {
   return j.dump(2, ' ', false, nlohmann::json::error_handler_t::replace) + "\n";
 }
 
+std::vector<ClassResult> class_results(const std::vector<ClassEntry>& entries) {
+  std::vector<ClassResult> results;
+  for (const ClassEntry& entry : entries) {
+    ClassResult result;
+    result.name = entry.name;
+    if (entry.status != "graded") {
+      result.problem = "not graded: " + entry.problem;
+    } else if (const FileBytes text = read_file_bytes(entry.results); !text.ok()) {
+      result.problem = entry.results.string() + ": " + text.error;
+    } else {
+      result = read_class_result(entry.name, text.bytes);
+    }
+    results.push_back(std::move(result));
+  }
+  return results;
+}
+
 }  // namespace meshedit

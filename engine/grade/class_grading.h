@@ -19,6 +19,7 @@
 #include <string>
 #include <vector>
 
+#include "grade/class_report.h"
 #include "grade/grader.h"
 #include "grade/suite.h"
 
@@ -44,6 +45,9 @@ std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesys
                                     const FinishReport& finish = nullptr);
 
 std::string class_summary_csv(const std::vector<ClassEntry>& entries);
+// The entries' results files read for the class report (grade/class_report.h); a submission not graded is one not
+// read, with its problem.
+std::vector<ClassResult> class_results(const std::vector<ClassEntry>& entries);
 std::string class_summary_json(const std::vector<ClassEntry>& entries);
 
 }  // namespace meshedit

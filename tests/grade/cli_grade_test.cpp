@@ -193,21 +193,34 @@ TEST(CliGrade, AWholeClassInParallel) {
   submission(dir / "class", "alice", grading_dir() / "students" / "flip_correct.lua");
   submission(dir / "class", "bob", grading_dir() / "students" / "flip_forgets_faces.lua");
   submission(dir / "class", "carol", grading_dir() / "students" / "flip_boundary.lua");
+  submission(dir / "class", "dave", grading_dir() / "students" / "flip_forgets_faces.lua");
   const Outcome o = run_meshedit(dir, "grade " + suite_arg("suites/flip.lua") +
-                                          " --submissions class/alice class/bob class/carol --jobs 2 --out marks");
+                                          " --submissions class/alice class/bob class/carol class/dave --jobs 2 --out "
+                                          "marks");
   EXPECT_EQ(o.status, 0) << o.err;
   EXPECT_EQ(o.out,
             "alice: 10 / 10 (5 passed, 0 failed)\n"
             "bob: 2 / 10 (1 passed, 4 failed)\n"
             "carol: 9 / 10 (4 passed, 1 failed)\n"
-            "3 of 3 submissions graded; summary in marks/summary.csv\n");
+            "dave: 2 / 10 (1 passed, 4 failed)\n"
+            "4 of 4 submissions graded; summary in marks/summary.csv, the class at a glance in marks/class.html\n");
   EXPECT_EQ(read_text(dir / "marks" / "summary.csv"),
             "submission,status,score,max_score,passed,failed,results,problem\n"
             "alice,graded,10,10,5,0,marks/alice/results.json,\n"
             "bob,graded,2,10,1,4,marks/bob/results.json,\n"
-            "carol,graded,9,10,4,1,marks/carol/results.json,\n");
+            "carol,graded,9,10,4,1,marks/carol/results.json,\n"
+            "dave,graded,2,10,1,4,marks/dave/results.json,\n");
+  // The class report: bob's and dave's mistake is one kind, made by both; carol's is another.
+  const std::string page = read_text(dir / "marks" / "class.html");
+  EXPECT_NE(page.find("2 students (50%): bob, dave"), std::string::npos) << page;
+  EXPECT_NE(page.find("1 student (25%): carol"), std::string::npos) << page;
+  EXPECT_EQ(page.find("<script"), std::string::npos);
+  EXPECT_NE(page.find("<svg"), std::string::npos);
+  const std::string csv = read_text(dir / "marks" / "class.csv");
+  EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max_score,4.1,4.2,4.3,4.4,4.5,problem");
+  EXPECT_NE(csv.find("\ncarol,9,10,"), std::string::npos) << csv;
   const auto summary = nlohmann::json::parse(read_text(dir / "marks" / "summary.json"));
-  ASSERT_EQ(summary.size(), 3u);
+  ASSERT_EQ(summary.size(), 4u);
   EXPECT_EQ(summary[1]["submission"], "bob");
   EXPECT_EQ(summary[1]["score"], 2.0);
   EXPECT_EQ(nlohmann::json::parse(read_text(dir / "marks" / "carol" / "results.json")).at("score"), 9.0);
