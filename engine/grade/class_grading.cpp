@@ -13,18 +13,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/file_bytes.h"
+#include "core/text_escapes.h"
 #include "core/value_format.h"
 #include "grade/results_writers.h"
 
 namespace meshedit {
 namespace {
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 // What a worker does: grade one submission and write its results.json. Returns the exit status.
 int work(Suite& suite, const ClassEntry& entry, const GradeOptions& options, const FinishReport& finish) {

@@ -13,32 +13,12 @@
 #include <nlohmann/json.hpp>
 
 #include "core/file_bytes.h"
+#include "core/text_escapes.h"
 
 namespace meshedit {
 namespace {
 
 constexpr int kBins = 10;  // the histograms' bars: tenths of the maximum
-
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
-
-std::string csv_field(const std::string& s) {
-  if (s.find_first_of(",\"\n") == std::string::npos) return s;
-  std::string out = "\"";
-  for (const char c : s) out += c == '"' ? std::string("\"\"") : std::string(1, c);
-  return out + "\"";
-}
 
 std::string number_text(double value) {
   char text[32];
@@ -83,8 +63,8 @@ std::string histogram_svg(const std::vector<size_t>& counts, double max, const s
       svg << "<text x=\"" << b * kBar + kBar / 2 << "\" y=\"" << kHeight - h - 2
           << "\" font-size=\"11\" text-anchor=\"middle\">" << counts[b] << "</text>";
     }
-    svg << "<text x=\"" << b * kBar + kBar / 2 << "\" y=\"" << kHeight + 14 << "\" font-size=\"10\" text-anchor=\"middle\">"
-        << number_text(max * b / kBins) << "</text>";
+    svg << "<text x=\"" << b * kBar + kBar / 2 << "\" y=\"" << kHeight + 14
+        << "\" font-size=\"10\" text-anchor=\"middle\">" << number_text(max * b / kBins) << "</text>";
   }
   svg << "<text x=\"0\" y=\"" << kHeight + 30 << "\" font-size=\"11\">score (out of " << number_text(max)
       << "), students per tenth</text></svg><figcaption>" << html_escaped(label) << "</figcaption></figure>\n";
@@ -144,8 +124,8 @@ ClassResult read_class_result(const std::string& name, const std::string& text) 
       result.tests.push_back(std::move(test));
     }
     result.score = j.contains("score") && j.at("score").is_number() ? j.at("score").get<double>() : total;
-    result.max_score = j.contains("max_score") && j.at("max_score").is_number() ? j.at("max_score").get<double>()
-                                                                                 : max_total;
+    result.max_score =
+        j.contains("max_score") && j.at("max_score").is_number() ? j.at("max_score").get<double>() : max_total;
   } catch (const nlohmann::json::exception& e) {
     result = ClassResult{};
     result.name = name;
@@ -174,7 +154,8 @@ std::vector<ClassResult> read_class_folder(const std::filesystem::path& folder) 
   std::vector<std::filesystem::path> files;
   std::error_code error;
   for (const auto& entry : std::filesystem::directory_iterator(folder, error)) {
-    if (std::filesystem::is_regular_file(entry.path() / "results.json", error)) files.push_back(entry.path() / "results.json");
+    if (std::filesystem::is_regular_file(entry.path() / "results.json", error))
+      files.push_back(entry.path() / "results.json");
   }
   std::sort(files.begin(), files.end());
   std::vector<ClassResult> results;
@@ -262,7 +243,8 @@ ClassReport make_class_report(std::vector<ClassResult> results) {
       auto [m, new_kind] = mistake_index.emplace(kind, report.mistakes.size());
       if (new_kind) report.mistakes.push_back({kind, diagnosis, {}, {}});
       ClassMistake& mistake = report.mistakes[m->second];
-      if (std::find(mistake.tests.begin(), mistake.tests.end(), key) == mistake.tests.end()) mistake.tests.push_back(key);
+      if (std::find(mistake.tests.begin(), mistake.tests.end(), key) == mistake.tests.end())
+        mistake.tests.push_back(key);
       if (std::find(mistake.students.begin(), mistake.students.end(), result.name) == mistake.students.end()) {
         mistake.students.push_back(result.name);
       }
@@ -282,7 +264,8 @@ ClassReport make_class_report(std::vector<ClassResult> results) {
 std::string class_report_csv(const ClassReport& report) {
   std::ostringstream csv;
   csv << "student,score,max_score";
-  for (const ClassTestSummary& test : report.tests) csv << "," << csv_field(test.number.empty() ? test.name : test.number);
+  for (const ClassTestSummary& test : report.tests)
+    csv << "," << csv_field(test.number.empty() ? test.name : test.number);
   csv << ",problem\n";
   for (const ClassResult& result : report.results) {
     csv << csv_field(result.name) << ",";
@@ -306,8 +289,8 @@ namespace {
 
 // The histograms: the assignment's scores, then each part's.
 std::string scores_html(const ClassReport& report, const std::vector<double>& scores) {
-  std::string html = "<h2>Scores</h2>\n" + histogram_svg(bins_of(scores, report.max_score), report.max_score,
-                                                          "the assignment");
+  std::string html =
+      "<h2>Scores</h2>\n" + histogram_svg(bins_of(scores, report.max_score), report.max_score, "the assignment");
   for (const std::string& part : report.parts) {
     std::vector<double> part_scores;
     double part_max = 0.0;
@@ -485,16 +468,16 @@ std::string class_report_html(const ClassReport& report, const ClassChanges* cha
     scores.push_back(result.score);
   }
   std::ostringstream html;
-  html << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>The class at a glance</title>\n"
-       << "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;padding:0 1em;color:#222}"
-       << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:left}"
-       << "td.n{text-align:right}figure{display:inline-block;margin:0 1em 1em 0}figcaption{color:#444}"
-       << "code{background:#f3f3f3}.problem{color:#a02020}</style>\n</head>\n<body>\n"
-       << "<h1>The class at a glance</h1>\n<p>" << report.results.size() << " results files, " << read
-       << " read; the most a student could score: " << number_text(report.max_score) << ".</p>\n"
-       << (changes ? changes_html(*changes) : std::string()) << scores_html(report, scores)
-       << mistakes_html(report, read) << tests_html(report)
-       << stopped_and_unread_html(report) << "</body>\n</html>\n";
+  html
+      << "<!DOCTYPE html>\n<html lang=\"en\">\n<head>\n<meta charset=\"utf-8\">\n<title>The class at a glance</title>\n"
+      << "<style>body{font-family:sans-serif;max-width:60em;margin:2em auto;padding:0 1em;color:#222}"
+      << "table{border-collapse:collapse}td,th{border:1px solid #ccc;padding:2px 8px;text-align:left}"
+      << "td.n{text-align:right}figure{display:inline-block;margin:0 1em 1em 0}figcaption{color:#444}"
+      << "code{background:#f3f3f3}.problem{color:#a02020}</style>\n</head>\n<body>\n"
+      << "<h1>The class at a glance</h1>\n<p>" << report.results.size() << " results files, " << read
+      << " read; the most a student could score: " << number_text(report.max_score) << ".</p>\n"
+      << (changes ? changes_html(*changes) : std::string()) << scores_html(report, scores)
+      << mistakes_html(report, read) << tests_html(report) << stopped_and_unread_html(report) << "</body>\n</html>\n";
   return html.str();
 }
 

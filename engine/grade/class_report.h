@@ -90,8 +90,8 @@ struct ClassStopped {
 
 struct ClassReport {
   std::vector<ClassResult> results;
-  std::vector<ClassStopped> stopped;   // in the results' order
-  double max_score = 0.0;  // the most any student could get (the largest max_score read)
+  std::vector<ClassStopped> stopped;    // in the results' order
+  double max_score = 0.0;               // the most any student could get (the largest max_score read)
   std::vector<ClassTestSummary> tests;  // in the order of the first file that has them
   std::vector<ClassMistake> mistakes;   // ranked: most students first, then kind
   std::vector<std::string> parts;       // "1" ... "6": the tests' numbers before their dot

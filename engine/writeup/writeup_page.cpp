@@ -5,6 +5,7 @@
 
 #include "core/base64.h"
 #include "core/file_bytes.h"
+#include "core/text_escapes.h"
 
 namespace meshedit {
 namespace {
@@ -21,20 +22,6 @@ constexpr const char* kStyle =
     "text-align:center;color:#c0392b}"
     ".yours{border:2px dashed #888;padding:1em;min-height:6em;color:#888}"
     "table{border-collapse:collapse;margin:.5em 0}td,th{border:1px solid #ccc;padding:2px 8px;font-family:monospace}";
-
-std::string html_escaped(const std::string& text) {
-  std::string out;
-  for (const char c : text) {
-    switch (c) {
-      case '&': out += "&amp;"; break;
-      case '<': out += "&lt;"; break;
-      case '>': out += "&gt;"; break;
-      case '"': out += "&quot;"; break;
-      default: out += c;
-    }
-  }
-  return out;
-}
 
 // Markdown text that shows as written: its punctuation escaped, its lines joined.
 std::string md_escaped(const std::string& text) {
