@@ -61,7 +61,7 @@ TEST(ClassReport, MistakesAreRankedByStudentsAndABadFileIsNamedWithTheRestMade) 
       read_class_result("bob", results({{"1.1", 2, "ok"}, {"4.1", 0, forgets}})),
       read_class_result("carol", results({{"1.1", 0, swapped}, {"4.1", 0, forgets_elsewhere}})),
       read_class_result("dave", results({{"1.1", 0, "**Load error:** the submission has no curve.lua"},
-                                          {"4.1", 0, "**Timed out:** stopped after 5 s"}})),
+                                         {"4.1", 0, "**Timed out:** stopped after 5 s"}})),
       read_class_result("eve", "{\"score\": 3, \"tests\": [{\"name\""),
       read_class_result("frank", "{\"suites\": []}"),
   };
@@ -91,7 +91,8 @@ TEST(ClassReport, MistakesAreRankedByStudentsAndABadFileIsNamedWithTheRestMade) 
   const std::string csv = class_report_csv(report);
   EXPECT_EQ(csv.substr(0, csv.find('\n')), "student,score,max_score,1.1,4.1,problem");
   EXPECT_NE(csv.find("\nbob,2,4,2,0,\n"), std::string::npos) << csv;
-  EXPECT_NE(csv.find("\nfrank,,,,,\"not a Gradescope results.json (no \"\"tests\"\" list)\"\n"), std::string::npos) << csv;
+  EXPECT_NE(csv.find("\nfrank,,,,,\"not a Gradescope results.json (no \"\"tests\"\" list)\"\n"), std::string::npos)
+      << csv;
 }
 
 TEST(ClassReport, TheCommandMakesTheReportFromFilesAndNamesOneItCannotRead) {
@@ -113,8 +114,8 @@ TEST(ClassReport, TheCommandMakesTheReportFromFilesAndNamesOneItCannotRead) {
                       results({{"4.1", 0, "**Failed:**\\n\\n- flip(e2): h5.next is still h3 after your flip"},
                                {"4.2", 0, "**Failed:**\\n\\n- flip(e4): h5.next is still h3 after your flip"}}));
   testing::write_text(dir / "before" / "carol" / "results.json", results({{"4.1", 2, "ok"}}));
-  const testing::Outcome compared = testing::run_meshedit(
-      dir, "class-report marks/bob/results.json alice.json -o report --compare before");
+  const testing::Outcome compared =
+      testing::run_meshedit(dir, "class-report marks/bob/results.json alice.json -o report --compare before");
   EXPECT_EQ(compared.status, 0) << compared.err;
   const std::string changed = testing::read_text(dir / "report" / "class.html");
   EXPECT_NE(changed.find("<h2>Since the earlier marks</h2>"), std::string::npos) << changed;
