@@ -227,9 +227,10 @@ ClassReport make_class_report(std::vector<ClassResult> results) {
       const std::string key = test.number + " " + test.name;
       auto [at, added] = test_index.emplace(key, report.tests.size());
       if (added) report.tests.push_back({test.number, test.name, test.max_score, {}});
-      ++report.tests[at->second].outcomes[test_outcome(test)];
+      const TestOutcome outcome = test_outcome(test);
+      ++report.tests[at->second].outcomes[outcome];
       if (!test.number.empty()) parts.insert(part_of(test.number));
-      if (test_outcome(test) == TestOutcome::Passed) continue;
+      if (outcome == TestOutcome::Passed) continue;
       const std::string diagnosis = diagnosis_of(test.output);
       if (diagnosis.empty()) continue;
       if (stopped_diagnosis(diagnosis)) {

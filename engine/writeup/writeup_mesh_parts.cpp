@@ -155,6 +155,28 @@ std::string validity(const std::shared_ptr<const HalfedgeMesh>& mesh) {
   return "the mesh after them: " + validate(*mesh).summary();
 }
 
+std::vector<ElementRef> edge_refs(const std::vector<uint32_t>& edges) {
+  std::vector<ElementRef> refs;
+  for (const uint32_t e : edges) refs.push_back(ElementRef(EdgeId(e)));
+  return refs;
+}
+
+// `mesh` with the chosen edges marked, and after the student's runs on them (what they ran marked), with the mesh's
+// validity when every run agreed with the reference's.
+WriteupFigure before_and_after(const std::string& number, const std::string& caption, const PartCode& code,
+                               const std::shared_ptr<const HalfedgeMesh>& mesh, const std::vector<uint32_t>& edges,
+                               const EdgeRuns& runs, const std::string& noun) {
+  WriteupFigure figure;
+  figure.number = number;
+  figure.caption = caption;
+  figure.made_by = code.made_by;
+  figure.problem = runs.problem;
+  figure.pictures.push_back({"before", picture_of(mesh, edge_refs(edges)), ""});
+  figure.pictures.push_back({"after " + count_of(runs.reports.size(), noun), picture_of(runs.mesh, runs.marked), ""});
+  if (runs.problem.empty()) figure.numbers.push_back(validity(runs.mesh));
+  return figure;
+}
+
 }  // namespace
 
 WriteupPart normals_part(const Submission& submission) {
@@ -223,16 +245,8 @@ WriteupPart flip_part(const Submission& submission, const WriteupSettings& setti
   const std::vector<uint32_t> edges = chosen_edges(settings.flip_edges, *mesh, 3);
   const EdgeRuns runs = run_on_edges(code, Exercise::FlipEdge, mesh, edges);
 
-  WriteupFigure figure;
-  figure.number = "4.1";
-  figure.caption = "A mesh before and after your flips of the marked edges";
-  figure.made_by = code.made_by;
-  figure.problem = runs.problem;
-  std::vector<ElementRef> marked;
-  for (const uint32_t e : edges) marked.push_back(ElementRef(EdgeId(e)));
-  figure.pictures.push_back({"before", picture_of(mesh, marked), ""});
-  figure.pictures.push_back({"after " + count_of(runs.reports.size(), "flip"), picture_of(runs.mesh, runs.marked), ""});
-  if (runs.problem.empty()) figure.numbers.push_back(validity(runs.mesh));
+  WriteupFigure figure = before_and_after("4.1", "A mesh before and after your flips of the marked edges", code, mesh,
+                                          edges, runs, "flip");
   if (!runs.reports.empty() && runs.reports.front().mine.mesh) {
     figure.table = flip_table(*mesh, *runs.reports.front().mine.mesh, EdgeId(edges.front()));
     figure.numbers.push_back(
@@ -257,18 +271,8 @@ WriteupPart split_part(const Submission& submission, const WriteupSettings& sett
   const std::vector<uint32_t> edges = chosen_edges(settings.split_edges, *mesh, 2);
   const EdgeRuns splits = run_on_edges(code, Exercise::SplitEdge, mesh, edges);
 
-  WriteupFigure figure;
-  figure.number = "5.1";
-  figure.caption = "A mesh before and after your splits of the marked edges";
-  figure.made_by = code.made_by;
-  figure.problem = splits.problem;
-  std::vector<ElementRef> marked;
-  for (const uint32_t e : edges) marked.push_back(ElementRef(EdgeId(e)));
-  figure.pictures.push_back({"before", picture_of(mesh, marked), ""});
-  figure.pictures.push_back(
-      {"after " + count_of(splits.reports.size(), "split"), picture_of(splits.mesh, splits.marked), ""});
-  if (splits.problem.empty()) figure.numbers.push_back(validity(splits.mesh));
-  part.figures.push_back(std::move(figure));
+  part.figures.push_back(before_and_after("5.1", "A mesh before and after your splits of the marked edges", code, mesh,
+                                          edges, splits, "split"));
 
   // Splits, then flips of the edges the first split made that can be flipped: the mix the spec asks for.
   WriteupFigure mix;
@@ -287,11 +291,9 @@ WriteupPart split_part(const Submission& submission, const WriteupSettings& sett
                                                 : EdgeRuns{splits.mesh, {}, splits.problem, {}};
   mix.problem = mixed.problem;
   mix.pictures.push_back({"after the splits", picture_of(splits.mesh, splits.marked), ""});
-  std::vector<ElementRef> flipped;
-  for (const uint32_t e : new_edges) flipped.push_back(ElementRef(EdgeId(e)));
   const std::string flips_label =
       splits.problem.empty() ? "then " + count_of(mixed.reports.size(), "flip") : "no flips: the splits failed";
-  mix.pictures.push_back({flips_label, picture_of(mixed.mesh, flipped), ""});
+  mix.pictures.push_back({flips_label, picture_of(mixed.mesh, edge_refs(new_edges)), ""});
   if (mixed.problem.empty()) mix.numbers.push_back(validity(mixed.mesh));
   part.figures.push_back(std::move(mix));
 
