@@ -151,6 +151,14 @@ std::string save(EditorApp& app, const Action& a) {
   return "";
 }
 
+std::string bug_report(EditorApp& app, const Action& a) { return app.bug_report_room().save(a.args[0]).reason; }
+
+std::string bug_report_send(EditorApp& app, const Action& a) {
+  if (a.args[1] != "yes" && a.args[1] != "no") throw std::runtime_error("bug-report-send takes FILE yes|no");
+  app.bug_report_room().choose_file(a.args[0], a.args[1] == "yes");
+  return "";
+}
+
 std::string repair_row(EditorApp& app, const Action& a) {
   const int row = std::stoi(a.args[0]);
   if (row < 1) throw std::runtime_error("repair-row counts from 1");
@@ -551,6 +559,9 @@ const ActionVerb kVerbs[] = {
      open_repaired},
     {"save", 1, "save PATH   File > Save as", save},
     {"screenshot", 1, "screenshot PATH   a PNG of the next frame", screenshot},
+    {"bug-report", 1, "bug-report PATH   Help > Save a bug report's Save, to PATH, with the files ticked", bug_report},
+    {"bug-report-send", 2, "bug-report-send flip.lua yes|no   ticks or unticks a code file in Save a bug report",
+     bug_report_send},
     {"repair-row", 1,
      "repair-row K   clicks the Repairs tab's K-th change (1 the first): selects its first spot; fails when there is "
      "no such row, it has no spot, or the spots are stale",

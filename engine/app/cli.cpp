@@ -11,6 +11,7 @@
 #include <vector>
 
 #include "app/cli_commands.h"
+#include "core/app_version.h"
 #include "script/exception_text.h"
 
 namespace meshedit {
@@ -18,7 +19,7 @@ namespace {
 
 int run_help(const std::vector<std::string>& args, std::ostream& out);
 int run_version(const std::vector<std::string>&, std::ostream& out) {
-  out << "meshedit 0.1\n";
+  out << kAppVersion << "\n";
   return 0;
 }
 
@@ -32,7 +33,8 @@ struct CliCommand {
 const CliCommand kCommands[] = {
     {"", run_window,
      "[FILE] [--actions SCRIPT] [--size WxH] [--suite SUITE.lua] [--check]\n"
-     "                                     the window (a mesh, a .bez patch set or a .bzc curve); --suite: the\n"
+     "                                     the window (a mesh, a .bez patch set, a .bzc curve, a lesson or a\n"
+     "                                     .meshedit bug report); --suite: the\n"
      "                                     suite File > Check my work runs; --check: run it as the window opens"},
     {"demo", run_demo,
      "demo [FILE]                          load a mesh (default: the teapot) and show what the core does"},
@@ -54,7 +56,9 @@ const CliCommand kCommands[] = {
     {"render", run_render,
      "render FILE -o OUT.png [--shading flat|phong] [--wireframe] [--subdivide N] [--size WxH] [--up y|z]\n"
      "                                     a picture without a display (EGL); also --vertices --halfedges"},
-    {"run", run_run, "run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)"},
+    {"run", run_run,
+     "run SCRIPT.lua [ARGS...]             run a Lua script with no window (print goes to stdout)\n"
+     "run REPORT.meshedit                  a bug report's last run made again with its code; its diagnosis"},
     {"grade", run_grade,
      "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
      "      [--report FILE] [--progress]\n"

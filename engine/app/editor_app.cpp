@@ -114,6 +114,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   exercises_.keep_student_drafts();
   draw_open_panel();
   draw_help_panel();
+  bug_report_.draw_dialog();
   draw_unsaved_code_dialog();
 }
 

@@ -5,6 +5,7 @@
 //   ExerciseRoom (exercise_room.h)  the Exercises tab and the student's code (Your code)
 //   CheckRoom    (check_room.h)     File > Check my work: the grader run beside the window, and the Check tab
 //   WriteupRoom  (writeup_room.h)   File > Write-up: `meshedit writeup` beside the window, the view it uses
+//   BugReportRoom (bug_report_room.h) Help > Save a bug report: what the window shows, for a TA
 //   LessonRoom   (lesson_room.h)    the lesson being run, its panel and what it lays over the view
 //   InputRoom    (input_room.h)     the mouse and the keys
 //   PanelsRoom   (panels_room.h)    the columns, the console, the settings and the look
@@ -31,6 +32,7 @@
 #include <utility>
 #include <vector>
 
+#include "app/bug_report_room.h"
 #include "app/check_room.h"
 #include "app/commands.h"
 #include "app/document_room.h"
@@ -57,6 +59,7 @@ class EditorApp {
   ExerciseRoom& exercise_room() { return exercises_; }
   CheckRoom& check_room() { return check_; }
   WriteupRoom& writeup_room() { return writeup_; }
+  BugReportRoom& bug_report_room() { return bug_report_; }
   LessonRoom& lessons() { return lessons_; }
   InputRoom& input() { return input_; }
   PanelsRoom& panels() { return panels_; }
@@ -77,6 +80,11 @@ class EditorApp {
   // as open(): the status line gives the repair's summary and the Repairs tab (in front) lists every change, its spots
   // highlighted in the view. The copy is named "FILE (repaired)"; the file itself is not touched.
   bool open_repaired();
+  // Opens a bug report (document/bug_report.h) as the student saw it (editor_bug_report.cpp): its lesson at its step,
+  // its mesh with its ids and selection, and its code in a folder of its own that the Exercises tab then runs; a run
+  // the mesh is still the result of is run again on its input. Refused with an Error naming the file (and its line)
+  // with the window as it was; never throws.
+  bool open_bug_report(const std::filesystem::path& path);
   // The Repairs tab's row `row` clicked: selects its first spot; refused with a Warning
   // (DocumentRoom::click_repair_row).
   bool click_repair_row(size_t row);
@@ -166,6 +174,7 @@ class EditorApp {
   CheckRoom check_;
   WriteupRoom writeup_;
   LessonRoom lessons_;
+  BugReportRoom bug_report_{document_, exercises_, lessons_};
   InputRoom input_;
   PanelsRoom panels_;
   bool show_open_panel_ = false;

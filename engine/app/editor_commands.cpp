@@ -153,6 +153,7 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
     case I::DefaultText: panels_.change_font_size(0); return Check::yes();
     case I::ResetView: view_.reset_view(); return Check::yes();
     case I::Keys: return toggled(show_help_);
+    case I::BugReport: bug_report_.open_dialog(); return Check::yes();
     case I::ClearSelection: selection.selected = {}; return Check::yes();
     case I::Next: return said(navigate_selection(doc, selection, NavStep::Next));
     case I::Twin: return said(navigate_selection(doc, selection, NavStep::Twin));

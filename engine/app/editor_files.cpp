@@ -10,6 +10,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/primitives.h"
+#include "document/bug_report.h"
 #include "document/exception_report.h"
 #include "ui/frame_guard.h"
 
@@ -27,6 +28,7 @@ void EditorApp::take_file(PreparedFile& file) noexcept {
 
 bool EditorApp::open(const std::filesystem::path& path) {
   if (path.extension() == ".lua") return lessons_.open(path);
+  if (path.extension() == kBugReportExtension) return open_bug_report(path);
   bool not_a_manifold = false;
   try {
     exercises_.session().finish_replay(document_.doc());

@@ -17,23 +17,10 @@
 #include "document/document_actions.h"
 #include "document/mesh_edits.h"
 #include "io/mesh_file.h"
+#include "ui/dialog.h"
 #include "ui/theme.h"
 
 namespace meshedit {
-namespace {
-
-// ImGui 1.86 has no std::string input without imgui_stdlib; a fixed buffer is enough for a path.
-bool input_path(const char* label, std::string& text) {
-  char buffer[1024];
-  const size_t n = std::min(text.size(), sizeof buffer - 1);
-  std::copy_n(text.data(), n, buffer);
-  buffer[n] = '\0';
-  const bool entered = ImGui::InputText(label, buffer, sizeof buffer, ImGuiInputTextFlags_EnterReturnsTrue);
-  text = buffer;
-  return entered;
-}
-
-}  // namespace
 
 namespace {
 
@@ -172,29 +159,6 @@ void EditorApp::draw_submenu(CommandId id) {
     }
   }
 }
-
-namespace {
-
-// Opens the modal popup `name` while `shown` holds, centred and at most `size` (within the window). Returns whether
-// it is open this frame (then call ImGui::EndPopup).
-bool begin_dialog(const char* name, bool& shown, ImVec2 size) {
-  if (!shown) return false;
-  if (!ImGui::IsPopupOpen(name)) ImGui::OpenPopup(name);
-  const ImGuiViewport* main = ImGui::GetMainViewport();
-  ImGui::SetNextWindowPos(main->GetCenter(), ImGuiCond_Appearing, ImVec2(0.5f, 0.5f));
-  ImGui::SetNextWindowSize(ImVec2(std::min(size.x, main->Size.x * 0.9f), std::min(size.y, main->Size.y * 0.9f)),
-                           ImGuiCond_Appearing);
-  if (ImGui::BeginPopupModal(name, &shown)) return true;
-  shown = false;  // closed from outside (the popup stack was cleared)
-  return false;
-}
-
-void end_dialog(bool shown) {
-  if (!shown) ImGui::CloseCurrentPopup();
-  ImGui::EndPopup();
-}
-
-}  // namespace
 
 void EditorApp::draw_open_panel() {
   const float em = ImGui::GetFontSize();

@@ -89,6 +89,7 @@ constexpr Command kCommands[] = {
      kSeparator},
     // ---- Help ----
     {I::Keys, "keys", "Help > Keys", "F1", nullptr, V::Everywhere, "this list of keys"},
+    {I::BugReport, "bug-report", "Help > Save a bug report", nullptr, nullptr, V::Everywhere, nullptr},
     // ---- keys only ----
     {I::ClearSelection, "clear-selection", nullptr, "Esc", nullptr, V::Mesh, "clear the selection"},
     {I::Next, "next", nullptr, "N", nullptr, V::Mesh, "from a halfedge to its next"},

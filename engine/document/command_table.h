@@ -75,6 +75,7 @@ enum class CommandId {
   ResetView,
   // Help
   Keys,
+  BugReport,
   // Keys only
   ClearSelection,
   Next,

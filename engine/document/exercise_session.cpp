@@ -91,6 +91,14 @@ std::string point_text(const std::vector<glm::dvec3>& points) {
 
 }  // namespace
 
+std::string mine_verdict(const ExerciseReport& report) {
+  const ExerciseOutcome& mine = report.mine;
+  if (!mine.error.empty()) return mine.error;
+  std::string verdict = report.summary();
+  if (mine.validation && !mine.validation->ok()) verdict += "; yours is invalid: " + mine.validation->summary();
+  return verdict;
+}
+
 std::vector<Exercise> mesh_exercises() {
   std::vector<Exercise> all = {Exercise::VertexNormal, Exercise::FlipEdge, Exercise::SplitEdge, Exercise::Upsample};
   for (Exercise scripted : exercise_registry().scripted()) all.push_back(scripted);
@@ -383,10 +391,7 @@ Check ExerciseSession::end_run(MeshDocument& doc, PendingRun& pending, std::opti
     run.verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
     if (result.exercise == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
   } else {
-    run.verdict = result.report.summary();
-    if (outcome.validation && !outcome.validation->ok()) {
-      run.verdict += "; yours is invalid: " + outcome.validation->summary();
-    }
+    run.verdict = mine_verdict(result.report);
   }
   run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
   run.unchanged_text =

@@ -60,6 +60,10 @@ namespace meshedit {
 // ones registered from scripts/exercises (scripted_exercise.h), those on points or a patch among them.
 std::vector<Exercise> mesh_exercises();
 
+// What the status line says of a run of the student's function ("different: ...; yours is invalid: ..."), and of
+// one that failed (its error): the words a bug report's replay gives too (bug_report.h).
+std::string mine_verdict(const ExerciseReport& report);
+
 // The last run (mine or the reference) and what it worked on.
 struct ExerciseRun {
   Exercise exercise = Exercise::FlipEdge;
