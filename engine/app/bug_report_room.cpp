@@ -11,6 +11,7 @@
 #include "app/exercise_room.h"
 #include "app/lesson_room.h"
 #include "app/mesh_loading.h"
+#include "app/view_room.h"
 #include "app/window_host.h"
 #include "core/app_version.h"
 #include "core/file_bytes.h"
@@ -78,6 +79,11 @@ BugReport BugReportRoom::make() const {
   if (doc.mesh.num_faces() > 0 || doc.mesh.num_vertices() > 0) report.mesh = format_mesh_records(doc.mesh);
   if (document_.selection().selected.valid()) report.selection = format_id(document_.selection().selected);
   report.operation = last_operation(exercises_.session(), doc);
+  if (view_.mode() == ViewMode::Mesh) {
+    const OrbitCamera& camera = view_.camera();
+    report.camera = BugReportCamera{camera.up_axis() == UpAxis::Y ? 'y' : 'z', camera.yaw_degrees(),
+                                    camera.pitch_degrees(), camera.distance(), camera.target()};
+  }
   for (const std::filesystem::path& file : code_files()) {
     const std::string name = file.filename().string();
     if (sends(name)) report.files.push_back(read_student_source(file));

@@ -7,7 +7,8 @@
 // Invariants:
 // - The report is made of what the window shows now: the document's mesh with every record and id, the selection,
 //   the Exercises tab's last run when it ran the student's function on a mesh (its input, its label and verdict, and
-//   whether the mesh shown is still the state the run left), the running lesson's file and step.
+//   whether the mesh shown is still the state the run left), the running lesson's file and step, and the mesh view's
+//   camera when the mesh view is on screen.
 // - The code sent is the saved files of the Exercises tab's folder (never unsaved editor text), each only when its
 //   box is ticked; the boxes start ticked and are remembered while the window runs.
 // - Nothing here throws: every outcome is a sentence in the status line and a Check.
@@ -26,11 +27,12 @@ namespace meshedit {
 class DocumentRoom;
 class ExerciseRoom;
 class LessonRoom;
+class ViewRoom;
 
 class BugReportRoom {
  public:
-  BugReportRoom(DocumentRoom& document, ExerciseRoom& exercises, LessonRoom& lessons)
-      : document_(document), exercises_(exercises), lessons_(lessons) {}
+  BugReportRoom(DocumentRoom& document, ExerciseRoom& exercises, LessonRoom& lessons, const ViewRoom& view)
+      : document_(document), exercises_(exercises), lessons_(lessons), view_(view) {}
 
   // The student's saved code files the report can hold: the Exercises tab folder's files of every exercise, in the
   // assignment's order.
@@ -52,6 +54,7 @@ class BugReportRoom {
   DocumentRoom& document_;
   ExerciseRoom& exercises_;
   LessonRoom& lessons_;
+  const ViewRoom& view_;
   bool shown_ = false;
   std::string path_input_ = "report.meshedit";
   std::map<std::string, bool> unticked_;  // a file name -> its box was unticked

@@ -119,21 +119,25 @@ int grade_many(Suite& suite, const std::vector<std::string>& folders, std::vecto
   write_file_atomically(std::filesystem::path(folder) / "class.html",
                         class_report_html(class_report, changes ? &*changes : nullptr));
   write_file_atomically(std::filesystem::path(folder) / "class.csv", class_report_csv(class_report));
-  size_t graded = 0;
+  size_t graded = 0, left_out = 0;
   for (const auto& e : entries) {
     if (e.status == "graded") {
       ++graded;
       out << e.name << ": " << format_number(e.score) << " / " << format_number(e.max_score) << " (" << e.passed
           << " passed, " << e.failed << " failed)\n";
+    } else if (e.status == "not a folder") {
+      ++left_out;
+      out << e.name << ": left out: " << e.folder.string() << " is " << e.problem << "\n";
     } else {
       out << e.name << ": not graded: " << e.problem << "\n";
     }
   }
-  out << graded << " of " << entries.size() << " submissions graded; summary in "
-      << (std::filesystem::path(folder) / "summary.csv").string() << ", the class at a glance in "
+  out << graded << " of " << entries.size() - left_out << " submissions graded"
+      << (left_out > 0 ? " (" + std::to_string(left_out) + " left out: not a folder)" : std::string())
+      << "; summary in " << (std::filesystem::path(folder) / "summary.csv").string() << ", the class at a glance in "
       << (std::filesystem::path(folder) / "class.html").string() << "\n";
   out.flush();
-  return graded == entries.size() ? 0 : 1;
+  return graded + left_out == entries.size() ? 0 : 1;  // a stray file is named, not a failure of grading
 }
 
 }  // namespace

@@ -174,7 +174,7 @@ class EditorApp {
   CheckRoom check_;
   WriteupRoom writeup_;
   LessonRoom lessons_;
-  BugReportRoom bug_report_{document_, exercises_, lessons_};
+  BugReportRoom bug_report_{document_, exercises_, lessons_, view_};
   InputRoom input_;
   PanelsRoom panels_;
   bool show_open_panel_ = false;

@@ -1,8 +1,9 @@
 // EditorApp and a bug report opened (see bug_report.h): a TA sees what the student saw. Everything the report holds is
 // read and checked first (its text, its meshes with their ids, its selection); then its code files go into a folder
 // of their own (never over the TA's own files), the Exercises tab runs that folder, the lesson opens at its step, and
-// the mesh is shown with the student's ids: when the mesh is still the state the student's last run left, that run is
-// made again on its input (the Exercises tab then holds it, with its table and its replay), else the mesh as saved.
+// the mesh is shown with the student's ids, from the student's camera: when the mesh is still the state the student's
+// last run left, that run is made again on its input (the Exercises tab then holds it, with its table and its replay),
+// else the mesh as saved.
 //
 // The status line says it (and the console keeps it): the file, the MeshEdit that saved it, the folder of its code and
 // what could not be done as the student had it.
@@ -115,6 +116,14 @@ bool EditorApp::open_bug_report(const std::filesystem::path& path) {
     const std::string name = path.filename().string();
     if (opened.mesh) {
       show_mesh(std::move(*opened.mesh), name + (report.mesh_name.empty() ? "" : ": " + report.mesh_name));
+    }
+    if (opened.mesh && report.camera) {
+      const BugReportCamera& seen = *report.camera;
+      view_.choose_up_axis(seen.up == 'y' ? UpAxisChoice::Y : UpAxisChoice::Z);
+      OrbitCamera& camera = view_.camera();
+      camera.set_angles(seen.yaw, seen.pitch);
+      camera.set_distance(seen.distance);
+      camera.set_target(seen.target);
     }
     if (opened.exercise) exercises_.session().set_exercise(*opened.exercise);
     std::string message = "opened the bug report " + name + " saved by " + report.app + ": the student's code is in " +

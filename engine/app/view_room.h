@@ -90,11 +90,11 @@ class ViewRoom {
   // View > Up axis: shows the mesh or patches with that up axis (app/up_axis_choice.h), refitted.
   void choose_up_axis(UpAxisChoice choice);
   UpAxisChoice up_axis_choice() const { return up_axis_choice_; }
-  // A lesson's view{...}: the curve view's parts at once, the mesh view's when it next draws (after the shown mesh's
-  // size class has set its defaults).
+  // A lesson's view{...}: the curve view's parts at once, the mesh view's when it next draws (after its size defaults).
   void apply_view_request(const ViewRequest& request);
 
   OrbitCamera& camera() { return camera_; }
+  const OrbitCamera& camera() const { return camera_; }
   void fit_camera();  // to what the view shows: the mesh, or the patches' surface
   void reset_view() { camera_.reset(); }
   Viewport viewport() const { return {view_pixels_.width, view_pixels_.height}; }

@@ -3,12 +3,14 @@
 #include "document/bug_report.h"
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <lua.hpp>
 #include <string>
 #include <utility>
 
 #include "core/app_version.h"
+#include "core/value_format.h"
 #include "script/lua_runtime.h"
 
 namespace meshedit {
@@ -61,6 +63,21 @@ std::string format_operation(const BugReportOperation& op) {
   return out;
 }
 
+std::string format_camera(const BugReportCamera& camera) {
+  std::string out = std::string("  camera = { up = \"") + camera.up + "\", yaw = ";
+  append_number(out, camera.yaw);
+  out += ", pitch = ";
+  append_number(out, camera.pitch);
+  out += ", distance = ";
+  append_number(out, camera.distance);
+  out += ", target = { ";
+  for (int i = 0; i < 3; ++i) {
+    if (i > 0) out += ", ";
+    append_number(out, camera.target[i]);
+  }
+  return out + " } },\n";
+}
+
 // ---- reading ----
 
 // The table at the top of the stack, read raw.
@@ -94,6 +111,14 @@ class TableReader {
     });
     return value;
   }
+  double number(const char* key, double fallback) const {
+    double value = fallback;
+    with_field(key, [&](int type) {
+      if (type != LUA_TNUMBER || !std::isfinite(lua_tonumber(L_, -1))) refuse(key, "a finite number");
+      value = lua_tonumber(L_, -1);
+    });
+    return value;
+  }
   // Pushes the field `key` when it is a table (true), nothing when it is absent (false).
   bool push_table(const char* key) const {
     lua_pushstring(L_, key);
@@ -121,8 +146,8 @@ class TableReader {
   std::string where_;  // "report.meshedit: the field " (then the key)
 };
 
-const char* const kKnownFields[] = {"format",    "version", "readable_by", "app",       "lesson", "step",
-                                    "mesh_name", "mesh",    "selection",   "operation", "files"};
+const char* const kKnownFields[] = {"format",    "version", "readable_by", "app",    "lesson",    "step",
+                                    "mesh_name", "mesh",    "selection",   "camera", "operation", "files"};
 
 std::vector<std::string> unknown_fields(lua_State* L) {
   std::vector<std::string> unknown;
@@ -171,6 +196,28 @@ BugReportOperation read_operation(const TableReader& table) {
   return op;
 }
 
+BugReportCamera read_camera(lua_State* L, const TableReader& table) {
+  BugReportCamera camera;
+  const std::string up = table.text("up");
+  if (up != "y" && up != "z") table.refuse("up", "\"y\" or \"z\"");
+  camera.up = up[0];
+  camera.yaw = table.number("yaw", 0.0);
+  camera.pitch = table.number("pitch", 0.0);
+  camera.distance = table.number("distance", 1.0);
+  if (table.push_table("target")) {
+    for (int i = 0; i < 3; ++i) {
+      lua_rawgeti(L, -1, i + 1);
+      if (lua_type(L, -1) != LUA_TNUMBER || !std::isfinite(lua_tonumber(L, -1))) {
+        table.refuse("target", "three finite numbers");
+      }
+      camera.target[i] = lua_tonumber(L, -1);
+      lua_pop(L, 1);
+    }
+    lua_pop(L, 1);
+  }
+  return camera;
+}
+
 // A student file's name: "flip.lua", never a folder, nothing hidden.
 bool plain_lua_name(const std::string& name) {
   return name.size() > 4 && name.compare(name.size() - 4, 4, ".lua") == 0 && name.front() != '.' &&
@@ -215,6 +262,7 @@ std::string format_bug_report(const BugReport& report) {
   if (report.step > 0) out += "  step = " + std::to_string(report.step) + ",\n";
   field(out, "  ", "mesh_name", report.mesh_name);
   field(out, "  ", "selection", report.selection);
+  if (report.camera) out += format_camera(*report.camera);
   if (report.operation) out += format_operation(*report.operation);
   if (!report.mesh.empty())
     out += "  -- the mesh shown, every id kept\n  mesh = " + long_bracketed(report.mesh) + ",\n";
@@ -256,6 +304,10 @@ BugReport parse_bug_report(std::string_view text, const std::string& name) {
   report.mesh_name = table.text("mesh_name");
   report.mesh = table.text("mesh");
   report.selection = table.text("selection");
+  if (table.push_table("camera")) {
+    report.camera = read_camera(L, TableReader(L, name + ": the field camera."));
+    lua_pop(L, 1);
+  }
   if (table.push_table("operation")) {
     report.operation = read_operation(TableReader(L, name + ": the field operation."));
     lua_pop(L, 1);

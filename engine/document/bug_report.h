@@ -6,6 +6,7 @@
 //     format = "meshedit bug report", version = 1, readable_by = 1, app = "meshedit 0.1",
 //     lesson = "04_flip.lua", step = 3,          -- the lesson and its step (1-based), when one runs
 //     mesh_name = "cow.obj", selection = "e12",  -- the document's name and the selection (format_id)
+//     camera = { up = "y", yaw = 30, pitch = 20, distance = 3.5, target = { 0, 0.5, 0 } },  -- the mesh view's
 //     mesh = [==[ meshedit mesh records 1 ... ]==],   -- the mesh shown, every record and id kept
 //     operation = {                              -- the last run of the student's function on a mesh
 //       exercise = "flip_edge", label = "mine: flip e12", element = "e12", verdict = "different: ...",
@@ -22,8 +23,9 @@
 //   metamethod runs): a report is data, never a program the reader trusts.
 // - A report is refused with a ReportError naming the file (and the line for what Lua or the mesh records know a line
 //   of): another kind of file, a version this reader cannot read (readable_by above kBugReportVersion, named with the
-//   MeshEdit that saved it), a field of the wrong type, a file name with a folder in it or not a .lua. A newer report
-//   that says it stays readable by this version opens, its unknown fields left out; an unknown field is ignored.
+//   MeshEdit that saved it), a field of the wrong type (a camera's up not "y" or "z", a number that is not finite), a
+//   file name with a folder in it or not a .lua. A newer report that says it stays readable by this version opens, its
+//   unknown fields left out; an unknown field is ignored.
 #pragma once
 
 #include <cstddef>
@@ -32,6 +34,8 @@
 #include <string>
 #include <string_view>
 #include <vector>
+
+#include <glm/vec3.hpp>
 
 #include "exercise/student_call.h"
 
@@ -54,15 +58,23 @@ struct BugReportOperation {
   std::string input;          // the mesh the function was given, as mesh records (core/mesh_records.h)
 };
 
+// The mesh view's camera: its up axis ('y' or 'z'), its angles in degrees, its distance and its target.
+struct BugReportCamera {
+  char up = 'z';
+  double yaw = 0.0, pitch = 0.0, distance = 1.0;
+  glm::dvec3 target{0.0};
+};
+
 struct BugReport {
   int version = kBugReportVersion;
-  int readable_by = kBugReportVersion;  // the oldest reader version that can open it
-  std::string app;                      // the MeshEdit that saved it: "meshedit 0.1"
-  std::string lesson;                   // the lesson file's name in the lessons folder (or its path); "" none
-  size_t step = 0;                      // its step, 1-based; 0 with no lesson
-  std::string mesh_name;                // the document's name ("cow.obj", "test 4.1: its input")
-  std::string mesh;                     // the mesh shown, as mesh records; "" when no mesh was shown
-  std::string selection;                // format_id of the selection; "" none
+  int readable_by = kBugReportVersion;    // the oldest reader version that can open it
+  std::string app;                        // the MeshEdit that saved it: "meshedit 0.1"
+  std::string lesson;                     // the lesson file's name in the lessons folder (or its path); "" none
+  size_t step = 0;                        // its step, 1-based; 0 with no lesson
+  std::string mesh_name;                  // the document's name ("cow.obj", "test 4.1: its input")
+  std::string mesh;                       // the mesh shown, as mesh records; "" when no mesh was shown
+  std::string selection;                  // format_id of the selection; "" none
+  std::optional<BugReportCamera> camera;  // when the mesh view was shown
   std::optional<BugReportOperation> operation;
   std::vector<StudentSource> files;   // the student's files, by name ("flip.lua")
   std::vector<std::string> left_out;  // reading a newer report: the fields this version does not know

@@ -74,8 +74,16 @@ std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesys
     if (name.empty()) name = "submission";
     const int n = ++seen[name];
     e.name = n == 1 ? name : name + "-" + std::to_string(n);
-    e.results = out / e.name / "results.json";
     std::error_code ec;
+    if (!std::filesystem::is_directory(folder, ec)) {
+      e.status = "not a folder";
+      e.problem = std::filesystem::exists(folder, ec)
+                      ? "not a folder: a submission is a folder of the student's .lua files"
+                      : "no such folder";
+      entries.push_back(std::move(e));
+      continue;
+    }
+    e.results = out / e.name / "results.json";
     std::filesystem::create_directories(out / e.name, ec);
     std::filesystem::remove(e.results, ec);
     std::filesystem::remove(e.results.string() + ".error", ec);
@@ -96,6 +104,10 @@ std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesys
   };
   while (next < entries.size() || !running.empty()) {
     while (next < entries.size() && static_cast<int>(running.size()) < jobs) {
+      if (entries[next].results.empty()) {  // not a folder: nothing to grade
+        ++next;
+        continue;
+      }
       const pid_t pid = fork();
       if (pid == 0) _exit(work(suite, entries[next], options, finish));
       if (pid < 0) {
@@ -109,7 +121,7 @@ std::vector<ClassEntry> grade_class(Suite& suite, const std::vector<std::filesys
   }
   for (auto& e : entries) {
     std::error_code ec;
-    std::filesystem::remove(e.results.string() + ".error", ec);
+    if (!e.results.empty()) std::filesystem::remove(e.results.string() + ".error", ec);
   }
   return entries;
 }
@@ -146,7 +158,9 @@ std::vector<ClassResult> class_results(const std::vector<ClassEntry>& entries) {
   for (const ClassEntry& entry : entries) {
     ClassResult result;
     result.name = entry.name;
-    if (entry.status != "graded") {
+    if (entry.status == "not a folder") {
+      result.problem = entry.folder.string() + ": " + entry.problem;
+    } else if (entry.status != "graded") {
       result.problem = "not graded: " + entry.problem;
     } else if (const FileBytes text = read_file_bytes(entry.results); !text.ok()) {
       result.problem = entry.results.string() + ": " + text.error;

@@ -7,6 +7,8 @@
 //   summary is written by the calling process alone, from the results files, after every worker ended.
 // - At most `jobs` workers run at once. A worker that fails (its results.json is missing or unreadable) is
 //   listed with status "error" and a reason; the others are unaffected.
+// - A path that is not a folder (a stray file among the folders) is listed with status "not a folder" and why: no
+//   worker grades it and nothing is written for it (no out/<name>/).
 // - Submission names are the folders' base names; two folders with the same base name get "name", "name-2".
 // - Rows are in the order the folders were given.
 // - `finish`, when given, sees each report in its worker before its results.json is written and may change its
@@ -29,8 +31,8 @@ struct ClassEntry {
   std::string name;  // the submission's name (its folder's base name)
   std::filesystem::path folder;
   std::filesystem::path results;  // out/<name>/results.json
-  std::string status = "error";   // "graded" or "error"
-  std::string problem;            // why, for "error"
+  std::string status = "error";   // "graded", "error" or "not a folder"
+  std::string problem;            // why, when not "graded"
   double score = 0.0;
   double max_score = 0.0;
   size_t passed = 0;

@@ -59,6 +59,7 @@ TEST(WindowBugReport, ASavedReportReopensToTheSameStateAndReplaysHeadlessToTheSa
                   << "lesson-next\n"
                   << "exercise flip " << folder.string() << "\n"
                   << "open " << cube.string() << "\n"
+                  << "orbit 80 -30\n"
                   << "select e7\n"
                   << "run-mine\n"
                   << "expect-message different\n"
@@ -121,6 +122,12 @@ TEST(WindowBugReport, ASavedReportReopensToTheSameStateAndReplaysHeadlessToTheSa
   const BugReport reopened = read_report(again);
   EXPECT_EQ(reopened.mesh, report.mesh);  // the same records: every id, pointer and position
   EXPECT_EQ(reopened.selection, report.selection);
+  ASSERT_TRUE(report.camera.has_value() && reopened.camera.has_value());
+  EXPECT_EQ(report.camera->up, 'y');  // cube.obj is Y-up
+  EXPECT_EQ(reopened.camera->up, report.camera->up);
+  EXPECT_NEAR(reopened.camera->yaw, report.camera->yaw, 1e-9);
+  EXPECT_NEAR(reopened.camera->pitch, report.camera->pitch, 1e-9);
+  EXPECT_NEAR(reopened.camera->distance, report.camera->distance, 1e-9);
   ASSERT_TRUE(reopened.operation.has_value());
   EXPECT_EQ(reopened.operation->input, report.operation->input);
   EXPECT_EQ(reopened.operation->verdict, report.operation->verdict);

@@ -63,6 +63,7 @@ TEST(BugReport, ReadsBackByteForByteWhateverTheCodeHolds) {
   HalfedgeMesh cube = build_halfedge_mesh(make_cube());
   report.mesh = format_mesh_records(cube);
   report.selection = "h12";
+  report.camera = BugReportCamera{'y', 30.25, -12.5, 3.0000000000000004, {0.1, -0.5, 1e-9}};
   report.operation = BugReportOperation{"split_edge", "mine: split e3", "e3", "different: v8 is at (0, 0, 0)\nsee",
                                         false,        report.mesh};
   report.files = {{"flip.lua", "\nlocal s = [[a]] .. [==[b]==]\n-- ]] ]=] ]==]\nreturn s"},
@@ -74,6 +75,12 @@ TEST(BugReport, ReadsBackByteForByteWhateverTheCodeHolds) {
   EXPECT_EQ(read.step, 3u);
   EXPECT_EQ(read.mesh_name, report.mesh_name);
   EXPECT_EQ(read.selection, "h12");
+  ASSERT_TRUE(read.camera.has_value());
+  EXPECT_EQ(read.camera->up, 'y');
+  EXPECT_EQ(read.camera->yaw, 30.25);
+  EXPECT_EQ(read.camera->pitch, -12.5);
+  EXPECT_EQ(read.camera->distance, 3.0000000000000004);  // every digit kept
+  EXPECT_EQ(read.camera->target, glm::dvec3(0.1, -0.5, 1e-9));
   EXPECT_TRUE(parse_mesh_records(read.mesh, "m").same_as(cube));
   ASSERT_TRUE(read.operation.has_value());
   EXPECT_EQ(read.operation->exercise, "split_edge");
@@ -156,6 +163,9 @@ TEST(BugReport, RefusesWhatIsNotAReportItCanRead) {
             "report.meshedit: the field files holds \"../.bashrc\", which is not the name of a .lua file");
   EXPECT_EQ(refusal(head + "files = { ['flip.lua'] = 3 } }"),
             "report.meshedit: the field files should map file names to their texts");
+  EXPECT_EQ(refusal(head + "camera = { up = 'x' } }"), "report.meshedit: the field camera.up should be \"y\" or \"z\"");
+  EXPECT_EQ(refusal(head + "camera = { up = 'y', yaw = 0/0 } }"),
+            "report.meshedit: the field camera.yaw should be a finite number");
   EXPECT_EQ(refusal(head + "operation = { label = 'x' } }"),
             "report.meshedit: the field operation.exercise should be the name of an exercise's function");
   // A report is data: its chunk sees no global, and a loop is stopped.
@@ -169,12 +179,12 @@ TEST(BugReport, RefusesWhatIsNotAReportItCanRead) {
 TEST(BugReport, ANewerReportOpensWhenItSaysItCanElseItIsRefusedByName) {
   const BugReport newer = parse_bug_report(
       "return { format = \"meshedit bug report\", version = 2, readable_by = 1, app = \"meshedit 0.2\", "
-      "camera = {}, selection = \"v1\" }",
+      "ruler = {}, selection = \"v1\" }",
       "report.meshedit");
   EXPECT_EQ(newer.version, 2);
   EXPECT_EQ(newer.selection, "v1");
   ASSERT_EQ(newer.left_out.size(), 1u);
-  EXPECT_EQ(newer.left_out[0], "camera");
+  EXPECT_EQ(newer.left_out[0], "ruler");
   EXPECT_EQ(
       refusal("return { format = \"meshedit bug report\", version = 3, readable_by = 3, app = \"meshedit 0.9\" }"),
       "report.meshedit: a bug report of version 3 (saved by meshedit 0.9) that needs a newer MeshEdit: this is "
