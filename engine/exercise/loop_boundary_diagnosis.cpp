@@ -2,6 +2,7 @@
 #include "exercise/internal/loop_boundary_diagnosis.h"
 
 #include <optional>
+#include <utility>
 
 #include <glm/geometric.hpp>
 
@@ -67,34 +68,65 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
   return out;
 }
 
+// How a new vertex at `q` sits on the boundary edge from `inside`'s vertex to `outside`'s.
+enum class EdgePlace { Midpoint, Across, WithoutD, Other };
+
+EdgePlace edge_place(const HalfedgeMesh& before, HalfedgeId inside, HalfedgeId outside, const glm::dvec3& q,
+                     double tolerance) {
+  const glm::dvec3 a = before.position(before.vertex(inside)), b = before.position(before.vertex(outside));
+  if (close(q, loop_rules::boundary_edge(a, b), tolerance)) return EdgePlace::Midpoint;
+  const glm::dvec3 c = before.position(before.vertex(before.next(before.next(inside))));
+  const glm::dvec3 d = before.position(before.vertex(before.next(before.next(outside))));
+  if (close(q, loop_rules::interior_edge(a, b, c, d), tolerance)) return EdgePlace::Across;
+  if (close(q, 0.375 * (a + b) + 0.125 * c, tolerance)) return EdgePlace::WithoutD;
+  return EdgePlace::Other;
+}
+
+// Where the interior rule puts the new vertex of the interior edge of `h`: 3/8 (a + b) + 1/8 (c + d).
+glm::dvec3 interior_edge_point(const HalfedgeMesh& before, HalfedgeId h) {
+  const HalfedgeId t = before.twin(h);
+  return loop_rules::interior_edge(before.position(before.vertex(h)), before.position(before.vertex(t)),
+                                   before.position(before.vertex(before.next(before.next(h)))),
+                                   before.position(before.vertex(before.next(before.next(t)))));
+}
+
 std::vector<std::string> edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance) {
   Tally across, without_d, other;
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
     if (w.index < old_capacity) continue;
+    // The edges of the original mesh between two of w's original neighbours: w was made on one of them, and flips that
+    // went wrong may have joined it to the ends of others. Where the course's rule puts the new vertex of any of them
+    // (a boundary edge's midpoint, an interior edge's 3/8 and 1/8), w is right.
     const std::vector<VertexId> old_neighbours = original_neighbours(before, yours, w);
-    for (size_t i = 0; i < old_neighbours.size(); ++i) {
-      for (size_t j = i + 1; j < old_neighbours.size(); ++j) {
+    const glm::dvec3& q = yours.position(w);
+    std::optional<std::pair<EdgePlace, std::string>> first;
+    bool placed_right = false;
+    for (size_t i = 0; i < old_neighbours.size() && !placed_right; ++i) {
+      for (size_t j = i + 1; j < old_neighbours.size() && !placed_right; ++j) {
         HalfedgeId inside = halfedge_between(before, old_neighbours[i], old_neighbours[j]);
         if (!inside.valid()) continue;
         HalfedgeId outside = before.twin(inside);
         if (before.face(inside).is_boundary()) std::swap(inside, outside);
-        if (!before.face(outside).is_boundary() || before.face(inside).is_boundary()) continue;
-        const glm::dvec3 a = before.position(before.vertex(inside)), b = before.position(before.vertex(outside));
-        const glm::dvec3& q = yours.position(w);
-        if (close(q, loop_rules::boundary_edge(a, b), tolerance)) continue;
-        const glm::dvec3 c = before.position(before.vertex(before.next(before.next(inside))));
-        const glm::dvec3 d = before.position(before.vertex(before.next(before.next(outside))));
-        const std::string where = format_id(w) + " on the boundary edge " + format_id(before.vertex(inside)) + "-" +
-                                  format_id(before.vertex(outside));
-        if (close(q, loop_rules::interior_edge(a, b, c, d), tolerance)) {
-          across.add(where);
-        } else if (close(q, 0.375 * (a + b) + 0.125 * c, tolerance)) {
-          without_d.add(where);
-        } else {
-          other.add(where + " at " + format_position(q));
+        if (before.face(inside).is_boundary()) continue;
+        if (!before.face(outside).is_boundary()) {  // an interior edge: w may have been made there, by its rule
+          placed_right = close(q, interior_edge_point(before, inside), tolerance);
+          continue;
+        }
+        const EdgePlace place = edge_place(before, inside, outside, q, tolerance);
+        placed_right = place == EdgePlace::Midpoint;
+        if (!first) {
+          first.emplace(place, format_id(w) + " on the boundary edge " + format_id(before.vertex(inside)) + "-" +
+                                   format_id(before.vertex(outside)));
         }
       }
+    }
+    if (placed_right || !first) continue;
+    switch (first->first) {
+      case EdgePlace::Across: across.add(first->second); break;
+      case EdgePlace::WithoutD: without_d.add(first->second); break;
+      case EdgePlace::Other: other.add(first->second + " at " + format_position(q)); break;
+      case EdgePlace::Midpoint: break;
     }
   }
   const std::string rule = "a boundary edge's new vertex goes at its midpoint, (a + b) / 2 (extra credit)";

@@ -74,12 +74,6 @@ const ExpectedKind kNotOneOfTheirOwn[] = {
     {{"upsample_marks_by_handle", "upsample_one_way_test"},
      "your upsample flipped none of the N new edges the reference flips"},
     {{"upsample_flip_one_check"}, "a new edge whose ends were both new was flipped"},
-    // Test 6.4 (extra credit, the 2x2 grid with a boundary): the four fixtures whose step 4 flips the wrong edges,
-    // whose boundary rules are right (an edge on the boundary gets its midpoint), are headlined there as boundary
-    // midpoints missed; their real mistake follows in the feedback's "other differences". One kind, four students:
-    // the grader's first check on that mesh, not a shared bug.
-    {{"upsample_flags_halves", "upsample_flip_one_check", "upsample_marks_by_handle", "upsample_one_way_test"},
-     "of your new vertices on boundary edges are not at the midpoint"},
     // upsample_wrong_vertices: its own mistake on the closed meshes; on 6.4's grid the headline is an integer
     // division 1 // 8 that the fixture does not write (its edge points land on original boundary vertices).
     {{"upsample_wrong_vertices"}, "a position computed for a new vertex (step N) was written to an original one"},

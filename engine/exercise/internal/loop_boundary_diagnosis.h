@@ -10,8 +10,10 @@
 // - Only what can be told from positions, and only on the boundary of `before` (interior vertices and edges are
 //   loop_position_diagnosis.h's): an original boundary vertex of yours (same id in `before`) that is not at the
 //   course's position is fitted to the interior rule over all its neighbours in `before` (with the course's u);
-//   a new vertex of yours whose two original neighbours a, b were joined by a boundary edge of `before` and that is
-//   not at their midpoint is fitted to the interior edge rule with d read across the boundary loop
+//   a new vertex of yours whose original neighbours include the two ends of a boundary edge of `before` and that is
+//   where the course puts the new vertex of none of the original edges between its original neighbours (wrong flips
+//   may join it to the ends of edges it was not made on) is
+//   fitted, on the first such edge, to the interior edge rule with d read across the boundary loop
 //   (h.twin.next.next), and with d left out. What fits no rule is still named, with the course's position.
 // - At most one message per rule (the first vertex in id order, and how many share the mistake).
 // - Reads every mesh through bounded walks only; `yours` should be valid (the caller checks first).
