@@ -117,6 +117,11 @@ int run_cli(int argc, char** argv) {
     const CliCommand* command = find_command(args);
     if (!command) throw UsageError("unknown command '" + args.front() + "'");
     if (*command->name) args.erase(args.begin());
+    // `meshedit grade --help`: that command's lines of the usage text.
+    if (*command->name && command->usage && args.size() == 1 && (args[0] == "--help" || args[0] == "-h")) {
+      std::cout << "usage: meshedit " << command->usage << "\n";
+      return 0;
+    }
     return command->run(args, std::cout);
   } catch (const UsageError& e) {
     std::cerr << "meshedit: " << e.what() << " (see meshedit --help)\n";

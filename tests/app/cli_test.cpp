@@ -43,6 +43,12 @@ TEST(Cli, HelpAndUnknownCommand) {
                           list_extensions(writable_extensions(), " ", " ") + ")"),
             std::string::npos)
       << help.out;
+  // A command's own --help: its lines of the same text.
+  const CommandRun grade_help = meshedit({"grade", "--help"});
+  EXPECT_EQ(grade_help.status, 0) << grade_help.err;
+  EXPECT_EQ(grade_help.out.rfind("usage: meshedit grade --suite SUITE.lua --submission DIR", 0), 0u) << grade_help.out;
+  EXPECT_NE(grade_help.out.find("--submissions DIR..."), std::string::npos) << grade_help.out;
+  EXPECT_EQ(meshedit({"run", "-h"}).out.rfind("usage: meshedit run SCRIPT.lua [ARGS...]", 0), 0u);
   const CommandRun bad = meshedit({"frobnicate"});
   EXPECT_EQ(bad.status, 2);
   EXPECT_EQ(bad.err, "meshedit: unknown command 'frobnicate' (see meshedit --help)\n");
