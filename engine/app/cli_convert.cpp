@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <chrono>
 #include <optional>
+#include <stdexcept>
 
 #include "app/cli_commands.h"
 #include "app/mesh_loading.h"
@@ -11,6 +12,8 @@
 #include "core/mesh_error.h"
 #include "core/parallel_for.h"
 #include "core/subdivision_phases.h"
+#include "io/file_error.h"
+#include "io/polygon_checks.h"
 
 namespace meshedit {
 namespace {
@@ -30,6 +33,12 @@ int run_convert(const std::vector<std::string>& arguments, std::ostream& out) {
   reject_unknown_options(args);
   if (args.size() != 2) throw UsageError("convert takes an input and an output file");
   const PolygonMesh polygons = polygons_of(load_file(args[0]), args[0], resolution);
+  try {
+    require_writable(polygons, args[0]);  // a face the readers keep for repair (fewer than 3 corners), named by IN
+  } catch (const FileError& e) {
+    throw std::runtime_error(e.what() + std::string("; meshedit repair ") + args[0] +
+                             " -o OUT drops it, with a report");
+  }
   save_mesh(args[1], polygons);
   out << "wrote " << args[1] << ": " << polygons.num_vertices() << " vertices, " << polygons.num_faces() << " faces\n";
   return 0;

@@ -405,14 +405,9 @@ class DaeReader {
     } else {
       sizes = read_indices(vcount);
     }
+    // A polygon of fewer than 3 corners is kept: the builder refuses it by its number and mesh repair drops it.
     uint64_t sum = 0;
-    for (size_t i = 0; i < sizes.size(); ++i) {
-      if (sizes[i] < 3) {
-        fail(line_of_number(vcount, i), "<vcount> gives polygon " + std::to_string(i) + " " + std::to_string(sizes[i]) +
-                                            " corners; at least 3 are needed");
-      }
-      sum += sizes[i];
-    }
+    for (const uint32_t size : sizes) sum += size;
     if (sum != corners) {
       fail(p ? p : primitive, "<p> of <polylist> holds " + std::to_string(corners) +
                                   " corners, but <vcount> adds up to " + std::to_string(sum));
@@ -427,7 +422,8 @@ class DaeReader {
     for (const XMLElement* p : ps) {
       const std::vector<uint32_t> indices = read_indices(p);
       const uint64_t corners = corner_count(p, layout, indices);
-      if (corners < 3) {
+      // A polygon of fewer than 3 corners is kept, as in a <polylist>; a fan or a strip needs 3 to hold a triangle.
+      if (corners < 3 && layout.kind != "polygons") {
         fail(p, "<p> of <" + layout.kind + "> has " + std::to_string(corners) + " corners; at least 3 are needed");
       }
       if (layout.kind == "polygons") {

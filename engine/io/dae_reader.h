@@ -20,7 +20,9 @@
 //   decided from them in file_up_axis.h. No <asset> or no <up_axis> means COLLADA's default, Y_UP.
 // - Output order: geometries in library order, each once per instance in scene order; a geometry's
 //   vertices keep their order in its POSITION source, so vertex i of a one-geometry file is the file's
-//   index i. Polygons keep the file's corner order.
+//   index i. Polygons keep the file's corner order. A <polylist> or <polygons> polygon of fewer than 3 corners is
+//   kept as the file has it (the half-edge builder refuses it by its number and mesh repair drops it with a report);
+//   a fan or a strip of fewer than 3 corners, which holds no triangle, is refused.
 // Errors name the file, the XML line and the element:
 //   cow.dae:120: <p> of <polylist> has 17 indices, expected a multiple of 2
 // Numbers are strict (text_scanner.h): NaN, inf and malformed numbers are refused with their line.

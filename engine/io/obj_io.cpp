@@ -14,9 +14,16 @@
 namespace meshedit {
 namespace {
 
+// A UTF-8 byte order mark before the first statement (Windows editors and some exporters write one) is not part of
+// it: left in, it would hide a first `v` or `f` as an unknown statement.
+std::string_view without_bom(std::string_view text) {
+  constexpr std::string_view kBom = "\xEF\xBB\xBF";
+  return text.substr(0, kBom.size()) == kBom ? text.substr(kBom.size()) : text;
+}
+
 class ObjReader {
  public:
-  ObjReader(std::string_view text, const std::string& name) : scanner_(text, name) {
+  ObjReader(std::string_view text, const std::string& name) : scanner_(without_bom(text), name) {
     scanner_.set_comment_char('#');
     scanner_.set_line_continuations(true);
   }
@@ -48,8 +55,16 @@ class ObjReader {
     static constexpr const char* kNames[7] = {"x", "y", "z", "w", "red", "green", "blue"};
     while (auto token = scanner_.next_on_line()) {
       if (count == 7) scanner_.fail(token->line, "vertex has more than 7 numbers (x y z [w] [r g b])");
-      const double value = parse_real(*token, scanner_.file(), std::string("vertex ") + kNames[count]);
-      if (count < 3) numbers[count] = value;
+      const std::string what = std::string("vertex ") + kNames[count];
+      if (count < 3) {
+        numbers[count] = parse_real(*token, scanner_.file(), what);
+      } else {
+        // w or a colour, dropped: any number will do, even nan (exporters write nan for a colour they lack).
+        double dropped = 0;
+        if (to_real(token->text, dropped) == NumberStatus::NotANumber) {
+          scanner_.fail(token->line, "expected " + what + ", found " + quote(token->text));
+        }
+      }
       ++count;
     }
     if (count < 3) {
@@ -61,16 +76,16 @@ class ObjReader {
   void read_face(const Token& keyword) {
     corners_.clear();
     while (auto token = scanner_.next_on_line()) corners_.push_back(read_corner(*token));
-    if (corners_.size() < 3) {
-      scanner_.fail(keyword.line, "face has " + std::to_string(corners_.size()) + " corners; at least 3 are needed");
-    }
+    // A face of fewer than 3 corners is kept as the file has it: the builder refuses it by its number and mesh repair
+    // drops it with a report.
     if (mesh_.indices.size() + corners_.size() > kMaxCorners) {
       scanner_.fail(keyword.line, "more than " + std::to_string(kMaxCorners) + " face corners in all");
     }
     mesh_.add_face(corners_);
   }
 
-  // One corner "i", "i/t", "i//n" or "i/t/n"; returns the 0-based vertex index.
+  // One corner "i", "i/t", "i//n" or "i/t/n", where t and n may be empty ("i/", "i//", "i/t/"); returns the 0-based
+  // vertex index.
   uint32_t read_corner(const Token& token) {
     std::string_view parts[3];
     size_t num_parts = 0;
@@ -82,10 +97,10 @@ class ObjReader {
       if (slash == std::string_view::npos) break;
       rest.remove_prefix(slash + 1);
     }
-    // The texture part may be empty only in "i//n"; the normal part may not be empty.
+    // The vertex part is needed; an empty texture or normal part means the corner has none.
     check_index_part(token, parts[0], "vertex index");
-    if (num_parts >= 2 && !(num_parts == 3 && parts[1].empty())) check_index_part(token, parts[1], "texture index");
-    if (num_parts == 3) check_index_part(token, parts[2], "normal index");
+    if (num_parts >= 2 && !parts[1].empty()) check_index_part(token, parts[1], "texture index");
+    if (num_parts == 3 && !parts[2].empty()) check_index_part(token, parts[2], "normal index");
 
     int64_t index = 0;
     to_integer(parts[0], index);  // checked above

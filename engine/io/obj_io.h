@@ -1,10 +1,13 @@
 // Wavefront .obj: polygon meshes, read and written.
 //
-// Read: `v x y z [w]` (w and trailing vertex colours are checked as numbers and dropped); `f` (and the
-// obsolete `fo`) with corners `i`, `i/t`, `i//n` or `i/t/n`, 1-based, negative indices counting back
-// from the last vertex defined so far; polygons of any size (at least 3 corners). Comments (`#` to the
-// end of a line), `\` line continuations, and every other statement (`o g s usemtl mtllib vt vn l p`,
-// unknown ones) are skipped. Texture and normal indices are checked as whole numbers but not used.
+// Read: `v x y z [w] [r g b]` (x y z finite; w and the vertex colours MeshLab, MeshMixer and Blender write are checked
+// as numbers, nan and inf allowed, and dropped); `f` (and the obsolete `fo`) with corners `i`, `i/t`, `i//n` or
+// `i/t/n`, 1-based, negative indices counting back from the last vertex defined so far, where an empty texture or
+// normal part stands for none (`i/`, `i//` as Wings3D writes, `i/t/`). Comments (`#` to the end of a line), `\`
+// line continuations, a UTF-8 byte order mark before the first statement, and every other statement (`o g s usemtl
+// mtllib vt vn l p`, unknown ones) are skipped. Texture and normal indices are checked as whole numbers but not used.
+// Every face is kept as the file has it, whatever its number of corners (an `f 1 2` line, a repeated corner): the
+// half-edge builder refuses such a face by its number and mesh repair drops it with a report.
 // Errors name the line: "teapot.obj:88: face refers to vertex 1300, but only 1232 are defined".
 // A positive index may refer to a vertex defined later in the file (the format allows it); it is
 // checked against the final vertex count and reported at the first line that uses it.

@@ -66,9 +66,9 @@ class OffReader {
     num_faces_ =
         static_cast<size_t>(parse_integer(faces, scanner_.file(), "the face count", 1, int64_t(kMaxCorners / 3)));
     if (scanner_.line() == counts_line) scanner_.skip_line();  // the edge count, when there is one
-    // Each vertex takes at least 3 numbers and each face at least 4.
+    // Each vertex takes at least 3 numbers and each face at least 1 (its corner count).
     const size_t remaining = scanner_.count_remaining();
-    if (3 * num_vertices_ + 4 * num_faces_ > remaining) {
+    if (3 * num_vertices_ + num_faces_ > remaining) {
       scanner_.fail(counts_line, "declares " + std::to_string(num_vertices_) + " vertices and " +
                                      std::to_string(num_faces_) + " faces, but the file holds only " +
                                      std::to_string(remaining) + " numbers after the counts");
@@ -88,11 +88,13 @@ class OffReader {
     mesh_.positions.emplace_back(xyz[0], xyz[1], xyz[2]);
   }
 
+  // A face is kept whatever its number of corners: the builder refuses one of fewer than 3 by its number and mesh
+  // repair drops it with a report.
   void read_face(size_t f) {
     const std::string what = "face " + std::to_string(f);
     const Token count_token = scanner_.expect(what);
     const auto count = static_cast<size_t>(
-        parse_integer(count_token, scanner_.file(), what + "'s corner count", 3, int64_t(kMaxCorners)));
+        parse_integer(count_token, scanner_.file(), what + "'s corner count", 0, int64_t(kMaxCorners)));
     if (mesh_.indices.size() + count > kMaxCorners) {
       scanner_.fail(count_token.line, "more than " + std::to_string(kMaxCorners) + " face corners in all");
     }

@@ -8,7 +8,9 @@
 // 0-based, anything after the indices, such as a colour, dropped). Comments run from '#' to the end of
 // the line; blank lines are skipped. The counts may follow the keyword on its line, even without a
 // space ("OFF490 518 0", as many ModelNet files have it). Binary OFF and the 4D and n-dimensional
-// variants (4OFF, nOFF) are refused, as are faces of fewer than 3 corners and indices out of range.
+// variants (4OFF, nOFF) are refused, as are indices out of range. Every face is kept as the file has it, whatever its
+// number of corners: the half-edge builder refuses a face of fewer than 3 corners or a repeated corner by its number
+// and mesh repair drops it with a report.
 // Errors name the line: "chair.off:12: face 3: index 8 is not below the vertex count 8".
 // Declared counts are checked against io_limits.h and the numbers the file really holds before
 // anything is allocated.

@@ -1,11 +1,17 @@
 // Stanford PLY (.ply): polygon meshes, read and written.
 //
 // Read: ASCII, binary_little_endian and binary_big_endian bodies. The "vertex" element must have scalar
-// properties x, y and z of any PLY number type (float and double in practice); the "face" element a list
-// named vertex_indices (or vertex_index, as some scanners write) with any integer count and index types.
+// properties x, y and z of any PLY number type (float and double in practice). Faces come from the "face" element, a
+// list named vertex_indices (or vertex_index, as some scanners write) with any integer count and index types, and
+// from a "tristrips" element (how some of the old Stanford scans store their triangles): one list of vertex indices
+// per item, strips separated by -1, each strip read as its triangles with every other one flipped so that all keep
+// the strip's first winding, skipping the degenerate triangles (two corners the same vertex) that join strips. A
+// file needs one of the two elements; with both, the polygons are added in the order the elements come in the file.
 // Every other property (normals, colours, confidence, texture coordinates) and every other element
-// (edge, material, tristrips, ...) is read past and dropped. Faces need at least 3 corners and indices
-// below the vertex count; positions must be finite. Files with no faces are refused.
+// (edge, material, ...) is read past and dropped. Indices must be below the vertex count and positions finite; every
+// face is kept as the file has it, whatever its number of corners (a face of one corner, a repeated corner): the
+// half-edge builder refuses such a face by its number and mesh repair drops it with a report. Files with no faces are
+// refused.
 // Errors name the file and the place: the line for the header and ASCII bodies
 // ("bunny.ply:14: face 3: index 36000 is not below the vertex count 35947"), and the element and byte
 // offset for binary bodies ("bunny.ply: face 3, byte 1044: ..."). Declared counts are checked against

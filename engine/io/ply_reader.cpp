@@ -1,5 +1,7 @@
 // PLY reading (see ply_io.h): the header from ply_header.h, then the body element by element, through one
-// PlyBody that yields numbers from ASCII tokens or from binary bytes in either byte order.
+// PlyBody that yields numbers from ASCII tokens or from binary bytes in either byte order. Polygons come from the
+// face element as they are and from the tristrips element as triangles, streamed: nothing is allocated for a list
+// before its items are read.
 #include <cmath>
 #include <limits>
 #include <optional>
@@ -130,7 +132,7 @@ class PlyReader {
     find_elements();
     check_sizes();
     mesh_.positions.resize(vertices_->count);
-    mesh_.face_offsets.reserve(faces_->count + 1);
+    if (faces_) mesh_.face_offsets.reserve(faces_->count + 1);
     for (const PlyElement& element : header_.elements) {
       if (element.properties.empty()) continue;  // its items hold no bytes
       for (uint64_t i = 0; i < element.count; ++i) {
@@ -138,7 +140,9 @@ class PlyReader {
         if (&element == vertices_) {
           read_vertex(element, i);
         } else if (&element == faces_) {
-          read_face(element);
+          read_polygons(element, face_indices_, false);
+        } else if (&element == strips_) {
+          read_polygons(element, strip_indices_, true);
         } else {
           skip_item(element);
         }
@@ -153,9 +157,12 @@ class PlyReader {
     for (const PlyElement& element : header_.elements) {
       if (element.name == "vertex" && !vertices_) vertices_ = &element;
       if (element.name == "face" && !faces_) faces_ = &element;
+      if (element.name == "tristrips" && !strips_) strips_ = &element;
     }
     if (!vertices_) throw FileError(name_, "", "the header declares no vertex element");
-    if (!faces_) throw FileError(name_, "", "file holds no faces (the header declares no face element)");
+    if (!faces_ && !strips_) {
+      throw FileError(name_, "", "file holds no faces (the header declares no face or tristrips element)");
+    }
     const char* axes[3] = {"x", "y", "z"};
     for (int a = 0; a < 3; ++a) {
       xyz_[a] = vertices_->find(axes[a]);
@@ -163,14 +170,21 @@ class PlyReader {
         throw FileError(name_, vertices_->line, std::string("the vertex element has no scalar property ") + axes[a]);
       }
     }
-    indices_ = faces_->find("vertex_indices");
-    if (indices_ < 0) indices_ = faces_->find("vertex_index");
-    if (indices_ < 0 || !faces_->properties[size_t(indices_)].is_list) {
-      throw FileError(name_, faces_->line, "the face element has no list property vertex_indices");
+    if (faces_) face_indices_ = index_list(*faces_);
+    if (strips_) strip_indices_ = index_list(*strips_);
+  }
+
+  // The element's list of vertex indices: vertex_indices, or vertex_index as some scanners write.
+  int index_list(const PlyElement& element) const {
+    int found = element.find("vertex_indices");
+    if (found < 0) found = element.find("vertex_index");
+    if (found < 0 || !element.properties[size_t(found)].is_list) {
+      throw FileError(name_, element.line, "the " + element.name + " element has no list property vertex_indices");
     }
-    if (!ply_type_is_integer(faces_->properties[size_t(indices_)].type)) {
-      throw FileError(name_, faces_->line, "face vertex indices must have an integer type");
+    if (!ply_type_is_integer(element.properties[size_t(found)].type)) {
+      throw FileError(name_, element.line, element.name + " vertex indices must have an integer type");
     }
+    return found;
   }
 
   // Declared counts against the limits and against what the body really holds, before any allocation.
@@ -180,7 +194,7 @@ class PlyReader {
                       "declares " + std::to_string(vertices_->count) + " vertices; MeshEdit reads up to " +
                           std::to_string(kMaxVertices));
     }
-    if (faces_->count > kMaxCorners / 3) {
+    if (faces_ && faces_->count > kMaxCorners / 3) {
       throw FileError(name_, faces_->line,
                       "declares " + std::to_string(faces_->count) + " faces; MeshEdit reads up to " +
                           std::to_string(kMaxCorners / 3));
@@ -219,30 +233,70 @@ class PlyReader {
     mesh_.positions[index] = glm::dvec3(xyz[0], xyz[1], xyz[2]);
   }
 
-  void read_face(const PlyElement& element) {
-    bool read_indices = false;
+  // One item of the face element (one polygon) or of the tristrips element (strips), its other properties skipped.
+  void read_polygons(const PlyElement& element, int indices, bool strips) {
     for (size_t p = 0; p < element.properties.size(); ++p) {
       const PlyProperty& property = element.properties[p];
-      if (int(p) != indices_ || read_indices) {
+      if (int(p) != indices) {
         property.is_list ? skip_list(property) : void(body_.read(property.type, property.name));
+      } else if (strips) {
+        read_strips(property);
+      } else {
+        read_face(property);
+      }
+    }
+  }
+
+  // A polygon, kept whatever its number of corners: the builder refuses one of fewer than 3 by its number and mesh
+  // repair drops it with a report.
+  void read_face(const PlyProperty& property) {
+    const double count = body_.read(property.count_type, "the face's corner count");
+    if (count < 0) body_.fail("face has a negative corner count " + format_count(count));
+    if (mesh_.indices.size() + uint64_t(count) > kMaxCorners) {
+      body_.fail("more than " + std::to_string(kMaxCorners) + " face corners in all");
+    }
+    for (uint64_t c = 0; c < uint64_t(count); ++c) {
+      mesh_.indices.push_back(static_cast<uint32_t>(read_index(property, false)));
+    }
+    mesh_.face_offsets.push_back(static_cast<uint32_t>(mesh_.indices.size()));
+  }
+
+  // Triangle strips, one after another in one list, each ended by -1 (or the list's end): strip s0 s1 s2 s3 ... makes
+  // the triangles (s0 s1 s2), (s2 s1 s3), (s2 s3 s4), ..., every other one flipped so that all keep the strip's first
+  // winding. Degenerate triangles (two corners the same vertex), which strips use to join, are skipped.
+  void read_strips(const PlyProperty& property) {
+    const double count = body_.read(property.count_type, "the strips' index count");
+    if (count < 0) body_.fail("the strips have a negative index count " + format_count(count));
+    uint32_t before_last = 0, last = 0;
+    uint64_t in_strip = 0;  // indices of the current strip read so far
+    for (uint64_t c = 0; c < uint64_t(count); ++c) {
+      const int64_t index = read_index(property, true);
+      if (index < 0) {
+        in_strip = 0;
         continue;
       }
-      read_indices = true;
-      const double count = body_.read(property.count_type, "the face's corner count");
-      if (count < 3) body_.fail("face has " + format_count(count) + " corners; at least 3 are needed");
-      if (mesh_.indices.size() + uint64_t(count) > kMaxCorners) {
-        body_.fail("more than " + std::to_string(kMaxCorners) + " face corners in all");
-      }
-      for (uint64_t c = 0; c < uint64_t(count); ++c) {
-        const double index = body_.read(property.type, "a vertex index");
-        if (index < 0 || index >= double(vertices_->count)) {
-          body_.fail("index " + format_count(index) + " is not below the vertex count " +
-                     std::to_string(vertices_->count));
+      const auto v = static_cast<uint32_t>(index);
+      if (in_strip >= 2 && before_last != last && last != v && before_last != v) {
+        if (mesh_.indices.size() + 3 > kMaxCorners) {
+          body_.fail("more than " + std::to_string(kMaxCorners) + " face corners in all");
         }
-        mesh_.indices.push_back(static_cast<uint32_t>(index));
+        const bool flipped = in_strip % 2 == 1;
+        mesh_.add_face({flipped ? last : before_last, flipped ? before_last : last, v});
       }
-      mesh_.face_offsets.push_back(static_cast<uint32_t>(mesh_.indices.size()));
+      before_last = last;
+      last = v;
+      ++in_strip;
     }
+  }
+
+  // One vertex index, checked against the vertex count; -1 is returned for a strip's end when `strip_end` allows it.
+  int64_t read_index(const PlyProperty& property, bool strip_end) {
+    const double index = body_.read(property.type, "a vertex index");
+    if (strip_end && index == -1) return -1;
+    if (index < 0 || index >= double(vertices_->count)) {
+      body_.fail("index " + format_count(index) + " is not below the vertex count " + std::to_string(vertices_->count));
+    }
+    return static_cast<int64_t>(index);
   }
 
   void skip_item(const PlyElement& element) {
@@ -264,8 +318,10 @@ class PlyReader {
   PlyBody body_;
   const PlyElement* vertices_ = nullptr;
   const PlyElement* faces_ = nullptr;
+  const PlyElement* strips_ = nullptr;  // "tristrips", as some old Stanford scans have in place of "face"
   int xyz_[3] = {-1, -1, -1};
-  int indices_ = -1;
+  int face_indices_ = -1;
+  int strip_indices_ = -1;
   PolygonMesh mesh_;
 };
 

@@ -98,6 +98,14 @@ TEST(Cli, ErrorsAreOneLineAndNonZero) {
   const CommandRun three = meshedit({"info", non_manifold.string()});
   EXPECT_NE(three.err.find("three_faces.obj"), std::string::npos) << three.err;
   EXPECT_NE(three.err.find("shared by 3 faces"), std::string::npos) << three.err;
+  // A face the readers keep for repair (two corners) is named by the file it is in, with the way out.
+  const fs::path short_face = dir / "short_face.obj";
+  std::ofstream(short_face) << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\n";
+  const CommandRun convert = meshedit({"convert", short_face.string(), (dir / "out.ply").string()});
+  EXPECT_EQ(convert.status, 1);
+  EXPECT_EQ(convert.err, "meshedit: " + short_face.string() + ": face 1: has 2 corners; at least 3 are needed; " +
+                             "meshedit repair " + short_face.string() + " -o OUT drops it, with a report\n");
+  EXPECT_FALSE(fs::exists(dir / "out.ply"));
 }
 
 TEST(Cli, SubdivideWritesTheRefinedMesh) {

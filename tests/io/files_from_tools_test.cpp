@@ -10,62 +10,22 @@
 
 #include <glm/geometric.hpp>
 
-#include "core/catmull_clark.h"
-#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
-#include "core/mesh_error.h"
-#include "core/mesh_repair.h"
 #include "core/triangulate.h"
 #include "core/validate.h"
 #include "io/mesh_file.h"
 #include "support/test_support.h"
+#include "window_open.h"
 
 namespace meshedit {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::expect_subdivides;
+using testing::open_as_the_window_does;
+using testing::Opened;
 
 fs::path from_tools(const std::string& name) { return testing::source_dir() / "tests" / "data" / "from_tools" / name; }
-
-// The half-edge mesh the window shows for `path`: built as read, or, when the builder refuses, built from the
-// repaired copy (File > Open a repaired copy). `repaired` says which; `refusal` keeps the builder's message.
-struct Opened {
-  HalfedgeMesh mesh;
-  bool repaired = false;
-  std::string refusal;
-  RepairReport report;
-};
-
-Opened open_as_the_window_does(const fs::path& path) {
-  const PolygonMesh polygons = load_mesh(path);
-  Opened opened;
-  try {
-    opened.mesh = build_halfedge_mesh(polygons);
-  } catch (const MeshError& e) {
-    opened.refusal = e.what();
-    RepairResult repaired = repair_polygons(polygons);
-    opened.report = repaired.report;
-    opened.mesh = build_halfedge_mesh(repaired.polygons);
-    opened.repaired = true;
-  }
-  return opened;
-}
-
-// Triangulated, Loop subdivides with the counts V + E, 4F; Catmull-Clark takes the mesh as it is (any polygons)
-// with V + E + F vertices; each result validates.
-void expect_subdivides(const HalfedgeMesh& mesh) {
-  HalfedgeMesh triangles = mesh;
-  ASSERT_TRUE(triangulate_mesh(triangles).check.ok);
-  HalfedgeMesh loop = triangles;
-  ASSERT_TRUE(loop_subdivide(loop).ok);
-  EXPECT_EQ(loop.num_vertices(), triangles.num_vertices() + triangles.num_edges());
-  EXPECT_EQ(loop.num_faces(), 4 * triangles.num_faces());
-  EXPECT_TRUE(validate(loop).ok());
-  HalfedgeMesh cc = mesh;
-  ASSERT_TRUE(catmull_clark_subdivide(cc).ok);
-  EXPECT_EQ(cc.num_vertices(), mesh.num_vertices() + mesh.num_edges() + mesh.num_faces());
-  EXPECT_TRUE(validate(cc).ok());
-}
 
 TEST(FilesFromTools, BlendersSuzanneObjOpensAsExportedAndSubdivides) {
   const Opened suzanne = open_as_the_window_does(testing::source_dir() / "assets" / "suzanne.obj");

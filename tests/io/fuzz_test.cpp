@@ -126,7 +126,10 @@ TEST(Fuzz, Obj) {
   const std::vector<std::string> seeds = {
       format_obj(make_torus(4, 3), "t.obj"), format_obj(make_cube_quads(), "c.obj"),
       "# corners\nv 0 0 0\nv 1 0 0 1\nv 1 1 0\nv 0 1 0 0.5 0.5 0.5\nvt 0 0\nvn 0 0 1\n"
-      "g g\nf 1/1/1 2/1/1 3//1 4/1\nf -4 -2 \\\n -1\ns 1\nusemtl m\n"};
+      "g g\nf 1/1/1 2/1/1 3//1 4/1\nf -4 -2 \\\n -1\ns 1\nusemtl m\n",
+      // What other exporters write: a byte order mark, nan colours, empty index parts, faces of fewer than 3 corners.
+      "\xEF\xBB\xBFv 0 0 0 nan 0 1\nv 1 0 0 0.5 -nan inf\nv 0 1 0\nv 0 0 1 1 1 1\n"
+      "f 1// 2/1/ 3/\nf 1 2\nf\nf 1 4 3 3\nf 2// 4/1/ 3//1\n"};
   fuzz("obj", seeds, 8000, 3, [](const std::string& t) { parse_obj(t, "f.obj"); });
 }
 
@@ -139,6 +142,9 @@ const std::string kDaeSeed =
     "<input semantic=\"NORMAL\" source=\"#n\" offset=\"1\"/>\n<p>0 0 2 0 1 0 0 0 3 0 2 0</p>\n</triangles>\n"
     "<polylist count=\"2\">\n<input semantic=\"VERTEX\" source=\"#G-vtx\" offset=\"0\"/>\n<vcount>3 3</vcount>\n"
     "<p>0 1 4 1 2 4</p>\n</polylist>\n"
+    "<polylist count=\"3\">\n<input semantic=\"VERTEX\" source=\"#G-vtx\" offset=\"0\"/>\n<vcount>2 0 3</vcount>\n"
+    "<p>0 1 2 3 4</p>\n</polylist>\n"
+    "<polygons count=\"1\"><input semantic=\"VERTEX\" source=\"#G-vtx\" offset=\"0\"/><p>1 3</p></polygons>\n"
     "<tristrips count=\"1\"><input semantic=\"VERTEX\" source=\"#G-vtx\" offset=\"0\"/><p>2 3 4 0</p></tristrips>\n"
     "</mesh></geometry>\n</library_geometries>\n<library_visual_scenes>\n<visual_scene id=\"S\">\n"
     "<node><matrix>2 0 0 1 0 2 0 0 0 0 2 0 0 0 0 1</matrix>\n<instance_geometry url=\"#G\"/>\n"
@@ -246,7 +252,19 @@ std::vector<std::string> ply_seeds() {
                                        "property list uchar int vertex_indices\nend_header\n");
   big.f32(0).f32(0).f32(0).f32(1).f32(1).f32(0).f32(0).f32(1).f32(0).f32(1).f32(0).f32(1);
   big.u8(3).i32(0).i32(1).i32(2);
-  return {ascii, big.bytes(), format_ply(make_torus(4, 3), "t.ply")};
+  // Triangle strips (-1 between strips, degenerate joins) beside faces of fewer than 3 corners, and the strips alone
+  // in the big-endian layout of the old Stanford scans.
+  const std::string strips =
+      "ply\nformat ascii 1.0\nelement vertex 6\n" + xyz +
+      "element face 3\nproperty list uchar int vertex_indices\nelement tristrips 1\n"
+      "property list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n2 0 0\n0 1 0\n1 1 0\n2 1 0\n"
+      "1 4\n0\n3 0 0 1\n12 0 1 3 4 -1 1 2 4 5 5 2 2\n";
+  testing::BinaryBuilder big_strips(true,
+                                    "ply\nformat binary_big_endian 1.0\nelement vertex 4\n" + xyz +
+                                        "element tristrips 1\nproperty list int int vertex_indices\nend_header\n");
+  for (int i = 0; i < 12; ++i) big_strips.f32(float((i * 7) % 3));
+  big_strips.i32(7).i32(0).i32(1).i32(2).i32(-1).i32(1).i32(2).i32(3);
+  return {ascii, big.bytes(), format_ply(make_torus(4, 3), "t.ply"), strips, big_strips.bytes()};
 }
 
 TEST(Fuzz, Ply) {
@@ -274,7 +292,8 @@ TEST(Fuzz, Off) {
   std::vector<std::string> seeds = {
       "OFF\n# pyramid\n5 5 8\n0 0 0\n1 0 0 # x\n1 1 0\n0 1 0\n0.5 0.5 1\n4 3 2 1 0\n3 0 1 4 255 0 0\n"
       "3 1 2 4\n3 2 3 4 0.5 0.5 0.5 1\n3 3 0 4\n",
-      "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n"};
+      "COFF 3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n",
+      "OFF\n3 4 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1 255 0 0\n0\n4 1 1 0 0\n"};
   // A ModelNet-style file: the counts glued to the keyword, a larger mesh.
   const PolygonMesh torus = make_torus(4, 3);
   std::string modelnet =

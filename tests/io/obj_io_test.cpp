@@ -51,6 +51,30 @@ TEST(Obj, CommentsContinuationsAndForwardReferences) {
   EXPECT_EQ(m.positions[1], glm::dvec3(1, 0, 0));
 }
 
+// What other exporters write: corners with an empty texture or normal part (Wings3D's "1//"), colours after the
+// position even when nan, and a UTF-8 byte order mark before the first statement.
+TEST(Obj, ReadsEmptyIndexPartsNanColoursAndAByteOrderMark) {
+  const PolygonMesh m = parse_obj(
+      "\xEF\xBB\xBFv 0 0 0 nan nan nan\nv 1 0 0 1 -nan inf\nv 1 1 0 1e999 0 0\nv 0 1 0 1 0.5 0.25 1\n"
+      "f 1// 2/1/ 3/ 4/1/1\n",
+      "e.obj");
+  ASSERT_EQ(m.num_vertices(), 4u);
+  EXPECT_EQ(m.positions[0], glm::dvec3(0, 0, 0));
+  EXPECT_EQ(m.positions[3], glm::dvec3(0, 1, 0));
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 3}));
+  // A byte order mark anywhere else is not one: here it starts an unknown statement, skipped.
+  EXPECT_EQ(parse_obj("v 0 0 0\n\xEF\xBB\xBFv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\n", "e.obj").num_vertices(), 3u);
+}
+
+// A face of fewer than 3 corners (a loose edge written as "f 1 2", even an empty "f") or one that repeats a vertex is
+// read as the file has it, for the builder to refuse by its number and mesh repair to drop with a report.
+TEST(Obj, KeepsFacesOfFewerThanThreeCornersForRepair) {
+  const PolygonMesh m = parse_obj("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 2\nf 3\nf\nf 1 1 2\n", "t.obj");
+  ASSERT_EQ(m.num_faces(), 5u);
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 0, 1, 2, 0, 0, 1}));
+  EXPECT_EQ(m.face_offsets, (std::vector<uint32_t>{0, 3, 5, 6, 6, 9}));
+}
+
 TEST(Obj, RefusesBadFilesWithTheLine) {
   const std::string tri = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
   EXPECT_FILE_ERROR(parse_obj("", "t.obj"), "t.obj:1: file is empty");
@@ -61,16 +85,18 @@ TEST(Obj, RefusesBadFilesWithTheLine) {
   EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 -4\n", "t.obj"),
                     "t.obj:4: face refers to vertex -4 (counting back), but only 3 are defined so far");
   EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 0\n", "t.obj"), "t.obj:4: face corner \"0\": OBJ indices start at 1");
-  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2\n", "t.obj"), "t.obj:4: face has 2 corners; at least 3 are needed");
   EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3x\n", "t.obj"), "t.obj:4:", "vertex index \"3x\" is not a whole number");
-  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3/\n", "t.obj"), "t.obj:4:", "texture index \"\"");
-  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3//\n", "t.obj"), "t.obj:4:", "normal index \"\"");
+  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 /3\n", "t.obj"), "t.obj:4:", "vertex index \"\" is not a whole number");
+  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3/x/\n", "t.obj"), "t.obj:4:", "texture index \"x\"");
+  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3//1.5\n", "t.obj"), "t.obj:4:", "normal index \"1.5\"");
+  EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3/0/\n", "t.obj"), "t.obj:4:", "OBJ indices start at 1");
   EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3/1/1/1\n", "t.obj"), "t.obj:4:", "more than 3 parts");
   EXPECT_FILE_ERROR(parse_obj("v 0 0\n", "t.obj"), "t.obj:1: vertex has 2 coordinates; 3 are needed");
   EXPECT_FILE_ERROR(parse_obj("v 0 0 0 1 1 1 1 1\n", "t.obj"), "t.obj:1:", "more than 7 numbers");
   EXPECT_FILE_ERROR(parse_obj("v 0 0 0\nv 0 nan 0\n", "t.obj"),
                     "t.obj:2: vertex y must be a finite number, found \"nan\"");
   EXPECT_FILE_ERROR(parse_obj("v 0 0 0\n\nv 0 0 -inf\n", "t.obj"), "t.obj:3:", "\"-inf\"");
+  EXPECT_FILE_ERROR(parse_obj("v 0 0 0 0.5 red 1\n", "t.obj"), "t.obj:1: expected vertex red, found \"red\"");
   EXPECT_FILE_ERROR(parse_obj("v 0 0.5x 0\n", "t.obj"), "t.obj:1: expected vertex y, found \"0.5x\"");
   EXPECT_FILE_ERROR(parse_obj("v 1e999 0 0\n", "t.obj"), "t.obj:1: vertex x is out of range");
   EXPECT_FILE_ERROR(parse_obj(tri + "f 1 2 3\nv 0 0", "t.obj"), "t.obj:5: vertex has 2 coordinates");  // truncated

@@ -65,19 +65,27 @@ TEST(Off, RefusesBadFilesWithTheLine) {
                     "t.off:6: face 0: index \"3\" is not below the vertex count 3");
   EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 -1\n", "t.off"), "t.off:6: face 0: index \"-1\" is not below");
   EXPECT_FILE_ERROR(parse_off(tri + "3 0 1 x\n", "t.off"), "t.off:6: face 0: expected a vertex index, found \"x\"");
-  EXPECT_FILE_ERROR(parse_off(tri + "2 0 1 2\n", "t.off"), "t.off:6: face 0's corner count must be between 3 and");
+  EXPECT_FILE_ERROR(parse_off(tri + "-1 0 1 2\n", "t.off"), "t.off:6: face 0's corner count must be between 0 and");
   EXPECT_FILE_ERROR(parse_off(tri + "4 0 1 2\n0\n", "t.off"),
                     "t.off:6: face 0 declares 4 corners, but its line has 3 indices");
   EXPECT_FILE_ERROR(parse_off("OFF\n3 1 0\n0 0 0\n1 0\n0 1 0\n3 0 1 2 0 0 0\n", "t.off"),
                     "t.off:4: vertex 1: the line has 2 numbers; x y z are needed");
   EXPECT_FILE_ERROR(parse_off("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n", "t.off"),
                     "t.off:4: vertex 1 y must be a finite number, found \"nan\"");
-  EXPECT_FILE_ERROR(parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n1 1 1 1\n", "t.off"),
-                    "t.off:7: face 1's corner count must be between 3");
   EXPECT_FILE_ERROR(parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 3 2 1 0\n", "t.off"),
                     "t.off:7: file ends where face 1 was expected");
-  EXPECT_FILE_ERROR(parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n", "t.off"),
-                    "t.off:2: declares 3 vertices and 2 faces, but the file holds only 13 numbers after the counts");
+  EXPECT_FILE_ERROR(parse_off("OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3\n", "t.off"),
+                    "t.off:2: declares 3 vertices and 2 faces, but the file holds only 10 numbers after the counts");
+}
+
+// A face of fewer than 3 corners, or one that repeats a vertex, is read as the file has it (its colour dropped), for
+// the builder to refuse by its number and mesh repair to drop with a report.
+TEST(Off, KeepsFacesOfFewerThanThreeCornersForRepair) {
+  const PolygonMesh m =
+      parse_off("OFF\n3 5 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n2 0 1 255 0 0\n1 2\n0\n4 1 1 0 0\n", "t.off");
+  ASSERT_EQ(m.num_faces(), 5u);
+  EXPECT_EQ(m.indices, (std::vector<uint32_t>{0, 1, 2, 0, 1, 2, 1, 1, 0, 0}));
+  EXPECT_EQ(m.face_offsets, (std::vector<uint32_t>{0, 3, 5, 6, 6, 10}));
 }
 
 TEST(Off, HugeDeclaredCountsFailBeforeAllocating) {
