@@ -1,13 +1,15 @@
 // The repair steps of mesh_repair.h on a working copy of the polygons: faces are dropped by flag (so a face's index
 // stays its original number), vertices are only appended (so an original vertex keeps its number) until step 6
-// renumbers both. Messages that name new vertices, and every change's spots, are made after that renumbering.
+// renumbers both. Messages that name new vertices, and every change's spots, are made after that renumbering (a
+// cut's message and spots read the vertices at its corners then, from the working copy's final corners).
 //
 // Map of this file (each part starts at its `// ---- name` banner):
 //   working copy                          EdgeUse, Renumbering, Work (the polygons being repaired), edge_uses,
-//                                         for_each_edge
+//                                         for_each_edge, goes_up, corner_of, find_root
 //   steps 1 and 2: dropped faces          drop_bad_faces, drop_repeated_faces
 //   step 3: edges of three or more faces  detach_extra_faces
-//   step 4: orientation                   orient_components
+//   step 4: orientation and cuts          orient_components (the walks: face_links, walk_component,
+//                                         reverse_minority), then cut_edges (split_cut_pieces, say_cut)
 //   step 5: bow-ties                      split_bowties
 //   step 6 and the output                 finish: the final numbers, the repaired polygons
 //   repair_polygons                       the steps in order
@@ -17,6 +19,7 @@
 #include <cstdint>
 #include <functional>
 #include <numeric>
+#include <span>
 
 #include <glm/geometric.hpp>
 
@@ -142,6 +145,19 @@ void for_each_edge(const std::vector<EdgeUse>& uses, Visit&& visit) {
 // Whether face f's use of its edge at `corner` goes from the lower vertex number to the higher.
 bool goes_up(const Work& w, const EdgeUse& u) {
   return w.at(u.face, u.corner) < w.at(u.face, (u.corner + 1) % w.size(u.face));
+}
+
+// The index in w.indices of face f's corner at vertex v (v is one of its corners).
+uint32_t corner_of(const Work& w, uint32_t f, uint32_t v) {
+  uint32_t i = w.offsets[f];
+  while (w.indices[i] != v) ++i;
+  return i;
+}
+
+// Union-find: the root of x's set, halving the path on the way.
+uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
+  while (parent[x] != x) x = parent[x] = parent[parent[x]];
+  return x;
 }
 
 // ---- steps 1 and 2: dropped faces ------------------------------------------------------------------
@@ -283,97 +299,232 @@ bool detach_extra_faces(Work& w, const std::vector<EdgeUse>& uses) {
   return w.report.detached_faces != before;
 }
 
-// ---- step 4: orientation ---------------------------------------------------------------------------
+// ---- step 4: orientation and cuts -----------------------------------------------------------------
 
-// `uses` must describe the faces as they are; reversing faces leaves their undirected edges as they were.
-void orient_components(Work& w, const std::vector<EdgeUse>& uses) {
-  const uint32_t faces = static_cast<uint32_t>(w.num_faces());
-  // Neighbours across edges of exactly two faces, with whether the two use the edge the same way.
-  std::vector<uint32_t> degree(faces + 1, 0);
-  struct Link {
-    uint32_t f, g;
-    uint8_t same;
-  };
+// Two faces on an edge of exactly two faces (a link of the walk), with whether they use the edge the same way.
+struct Link {
+  uint64_t key;
+  uint32_t f, g;  // f < g
+  uint8_t same;
+};
+
+// Each face's links: adjacent[start[f] .. start[f + 1]) holds (the other face, the link's index).
+struct FaceLinks {
   std::vector<Link> links;
+  std::vector<uint32_t> start;
+  std::vector<std::pair<uint32_t, uint32_t>> adjacent;
+};
+
+FaceLinks face_links(const Work& w, const std::vector<EdgeUse>& uses) {
+  FaceLinks l;
   for_each_edge(uses, [&](size_t first, size_t last) {
     if (last - first != 2 || uses[first].face == uses[first + 1].face) return;
-    links.push_back({uses[first].face, uses[first + 1].face, goes_up(w, uses[first]) == goes_up(w, uses[first + 1])});
+    l.links.push_back({uses[first].key, uses[first].face, uses[first + 1].face,
+                       goes_up(w, uses[first]) == goes_up(w, uses[first + 1])});
   });
-  for (const Link& l : links) ++degree[l.f + 1], ++degree[l.g + 1];
-  std::partial_sum(degree.begin(), degree.end(), degree.begin());
-  std::vector<std::pair<uint32_t, uint8_t>> adjacent(degree.back());
-  std::vector<uint32_t> fill(degree.begin(), degree.end() - 1);
-  for (const Link& l : links) {
-    adjacent[fill[l.f]++] = {l.g, l.same};
-    adjacent[fill[l.g]++] = {l.f, l.same};
+  l.start.assign(w.num_faces() + 1, 0);
+  for (const Link& k : l.links) ++l.start[k.f + 1], ++l.start[k.g + 1];
+  std::partial_sum(l.start.begin(), l.start.end(), l.start.begin());
+  l.adjacent.resize(l.start.back());
+  std::vector<uint32_t> fill(l.start.begin(), l.start.end() - 1);
+  for (uint32_t i = 0; i < l.links.size(); ++i) {
+    l.adjacent[fill[l.links[i].f]++] = {l.links[i].g, i};
+    l.adjacent[fill[l.links[i].g]++] = {l.links[i].f, i};
   }
-  std::vector<uint8_t> seen(faces, 0), flip(faces, 0);
+  return l;
+}
+
+// The walk's state: per face, whether it was reached and whether it is to be flipped; per link, whether it is cut.
+struct Walk {
+  std::vector<uint8_t> seen, flip, cut;
+  std::vector<uint32_t> cuts;  // the cut links, in the order the walk met them
+};
+
+// Breadth-first from `seed` over the links, filling `component` in walking order. A face's orientation is fixed
+// when it is first reached; a link whose faces the fixed orientations make use the edge the same way is cut.
+void walk_component(const FaceLinks& l, uint32_t seed, Walk& walk, std::vector<uint32_t>& component) {
+  component.assign(1, seed);
+  walk.seen[seed] = 1;
+  for (size_t k = 0; k < component.size(); ++k) {
+    const uint32_t f = component[k];
+    for (uint32_t i = l.start[f]; i < l.start[f + 1]; ++i) {
+      const auto [g, link] = l.adjacent[i];
+      const uint8_t wanted = walk.flip[f] ^ l.links[link].same;
+      if (!walk.seen[g]) {
+        walk.seen[g] = 1;
+        walk.flip[g] = wanted;
+        component.push_back(g);
+      } else if (walk.flip[g] != wanted && !walk.cut[link]) {
+        walk.cut[link] = 1;
+        walk.cuts.push_back(link);
+      }
+    }
+  }
+}
+
+// Reverses the faces of `component` whose orientation fewer of them have, and says so.
+void reverse_minority(Work& w, const std::vector<uint32_t>& component, const std::vector<uint8_t>& flip) {
+  size_t flipped = 0;
+  for (uint32_t f : component) flipped += flip[f];
+  if (flipped == 0) return;
+  const uint8_t reverse = 2 * flipped > component.size() ? 0 : 1;  // the majority keeps its orientation
+  std::vector<size_t> reversed;
+  std::vector<uint32_t> reversed_faces;
+  uint32_t reference = kNone;
+  for (uint32_t f : component) {
+    if (flip[f] == reverse) {
+      reversed.push_back(f);
+      reversed_faces.push_back(f);
+      std::reverse(w.indices.begin() + w.offsets[f] + 1, w.indices.begin() + w.offsets[f + 1]);
+    } else {
+      reference = std::min(reference, f);
+    }
+  }
+  w.report.reversed_faces += reversed.size();
+  w.say(std::string(reversed.size() == 1 ? "face " : "faces ") + number_list(reversed) +
+            " reversed to agree with face " + std::to_string(reference),
+        spots_of({}, sorted_copy(reversed_faces)));
+}
+
+// `uses` must describe the faces as they are; reversing faces leaves their undirected edges as they were. Returns
+// the links the walks cut, in the order they met them.
+std::vector<Link> orient_components(Work& w, const std::vector<EdgeUse>& uses) {
+  const FaceLinks l = face_links(w, uses);
+  Walk walk{std::vector<uint8_t>(w.num_faces(), 0),
+            std::vector<uint8_t>(w.num_faces(), 0),
+            std::vector<uint8_t>(l.links.size(), 0),
+            {}};
   std::vector<uint32_t> component;
-  for (uint32_t seed = 0; seed < faces; ++seed) {
-    if (!w.kept[seed] || seen[seed]) continue;
-    component.assign(1, seed);
-    seen[seed] = 1;
-    bool orientable = true;
-    for (size_t k = 0; k < component.size(); ++k) {
-      const uint32_t f = component[k];
-      for (uint32_t i = degree[f]; i < degree[f + 1]; ++i) {
-        const auto [g, same] = adjacent[i];
-        const uint8_t wanted = flip[f] ^ same;
-        if (!seen[g]) {
-          seen[g] = 1;
-          flip[g] = wanted;
-          component.push_back(g);
-        } else if (flip[g] != wanted) {
-          orientable = false;
-        }
-      }
-    }
-    if (!orientable) {
-      ++w.report.non_orientable_components;
-      w.say("the " + std::to_string(component.size()) + " faces joined to face " + std::to_string(seed) +
-                " cannot all agree (a one-sided surface, like a Moebius strip): left as they are",
-            spots_of({}, sorted_copy(component)));
-      continue;
-    }
-    size_t flipped = 0;
-    for (uint32_t f : component) flipped += flip[f];
-    if (flipped == 0) continue;
-    const uint8_t reverse = 2 * flipped > component.size() ? 0 : 1;  // the majority keeps its orientation
-    std::vector<size_t> reversed;
-    std::vector<uint32_t> reversed_faces;
-    uint32_t reference = kNone;
-    for (uint32_t f : component) {
-      if (flip[f] == reverse) {
-        reversed.push_back(f);
-        reversed_faces.push_back(f);
-        std::reverse(w.indices.begin() + w.offsets[f] + 1, w.indices.begin() + w.offsets[f + 1]);
-      } else {
-        reference = std::min(reference, f);
-      }
-    }
-    w.report.reversed_faces += reversed.size();
-    w.say(std::string(reversed.size() == 1 ? "face " : "faces ") + number_list(reversed) +
-              " reversed to agree with face " + std::to_string(reference),
-          spots_of({}, sorted_copy(reversed_faces)));
+  for (uint32_t seed = 0; seed < w.num_faces(); ++seed) {
+    if (!w.kept[seed] || walk.seen[seed]) continue;
+    walk_component(l, seed, walk, component);
+    reverse_minority(w, component, walk.flip);
   }
+  std::vector<Link> cuts;
+  for (uint32_t link : walk.cuts) cuts.push_back(l.links[link]);
+  return cuts;
+}
+
+// One corner of a vertex at a cut's end: its index in w.indices, and its face.
+struct EndCorner {
+  uint32_t vertex, corner, face;
+  bool operator<(const EndCorner& o) const { return vertex != o.vertex ? vertex < o.vertex : corner < o.corner; }
+};
+
+// The new vertex of each of v's corners (`corners`, in face order) once the cut edges no longer join them: its
+// corners fall into fans (joined through edges of exactly two faces) and each fan into pieces (joined through those
+// edges that are not cut). In each fan the piece with the lowest face keeps v, each other piece gets a new vertex.
+// The new numbers are appended to `moves` as (corner, vertex), so that other vertices' pieces are found from the
+// corners as they were.
+void split_cut_pieces(Work& w, uint32_t v, std::span<const EndCorner> corners, const std::vector<uint64_t>& cut_keys,
+                      std::vector<std::pair<uint32_t, uint32_t>>& moves) {
+  const auto n = static_cast<uint32_t>(corners.size());
+  std::vector<std::pair<uint32_t, uint32_t>> ends;  // (the vertex at the other end of an edge at v, local corner)
+  for (uint32_t k = 0; k < n; ++k) {
+    const uint32_t f = corners[k].face, begin = w.offsets[f], size = w.size(f), c = corners[k].corner - begin;
+    ends.emplace_back(w.indices[begin + (c + 1) % size], k);
+    ends.emplace_back(w.indices[begin + (c + size - 1) % size], k);
+  }
+  std::sort(ends.begin(), ends.end());
+  std::vector<uint32_t> fan(n), piece(n);
+  std::iota(fan.begin(), fan.end(), 0u);
+  std::iota(piece.begin(), piece.end(), 0u);
+  for (size_t i = 0; i + 1 < ends.size(); ++i) {
+    if (ends[i].first != ends[i + 1].first) continue;  // at most two: no edge has three faces any more
+    const uint32_t a = ends[i].second, b = ends[i + 1].second;
+    fan[find_root(fan, a)] = find_root(fan, b);
+    if (!std::binary_search(cut_keys.begin(), cut_keys.end(), edge_key(v, ends[i].first))) {
+      piece[find_root(piece, a)] = find_root(piece, b);
+    }
+  }
+  std::vector<uint32_t> vertex_of(n, kNone);  // per piece root
+  std::vector<uint8_t> fan_kept(n, 0);        // per fan root: whether a piece of it keeps v
+  for (uint32_t k = 0; k < n; ++k) {
+    uint32_t& vertex = vertex_of[find_root(piece, k)];
+    if (vertex == kNone) {
+      uint8_t& keeper = fan_kept[find_root(fan, k)];
+      vertex = keeper ? w.copy_vertex(v) : v;
+      keeper = 1;
+    }
+    if (vertex != v) moves.emplace_back(corners[k].corner, vertex);
+  }
+}
+
+// The corners at a cut's ends (indices in w.indices): face f's at a and at b, then face g's.
+struct CutCorners {
+  uint32_t fa, fb, ga, gb;
+};
+
+// Says that `cut` was cut. The vertices at its corners are read when the message is made, after every step, so
+// they are the repaired polygons' (a later bow-tie split may have moved one of them again).
+void say_cut(Work& w, const Link& cut, const CutCorners& at) {
+  const Message va = w.vertex_name(uint32_t(cut.key >> 32)), vb = w.vertex_name(uint32_t(cut.key));
+  const std::vector<uint32_t>* indices = &w.indices;  // Work outlives its messages
+  const size_t original = w.original_vertices;
+  const auto corner_name = [indices, original](const FinalNumbers& final, uint32_t corner) {
+    const uint32_t v = (*indices)[corner];
+    return v < original ? "vertex " + std::to_string(v) : "new vertex " + std::to_string(final[v]);
+  };
+  const std::string f = std::to_string(cut.f), g = std::to_string(cut.g);
+  w.say(
+      [=](const FinalNumbers& final) {
+        return "the edge between " + va(final) + " and " + vb(final) + " was cut: faces " + f + " and " + g +
+               " disagree on its direction; it is now between " + corner_name(final, at.fa) + " and " +
+               corner_name(final, at.fb) + " in face " + f + ", and between " + corner_name(final, at.ga) + " and " +
+               corner_name(final, at.gb) + " in face " + g;
+      },
+      [indices, at, cut](const Renumbering& r) {
+        RepairSpots spots;
+        for (uint32_t corner : {at.fa, at.fb, at.ga, at.gb}) spots.vertices.push_back(r.vertices[(*indices)[corner]]);
+        spots.faces = {r.faces[cut.f], r.faces[cut.g]};
+        return spots;
+      });
+}
+
+// Cuts the edges the walks could not orient (`cuts`): the corners at their ends are split into pieces
+// (split_cut_pieces), so that each cut edge's two faces no longer share either end. Returns whether anything was
+// cut (so the edge uses no longer describe the faces).
+bool cut_edges(Work& w, const std::vector<Link>& cuts) {
+  if (cuts.empty()) return false;
+  std::vector<uint64_t> cut_keys;
+  std::vector<CutCorners> at;
+  std::vector<uint8_t> at_cut(w.positions.size(), 0);
+  for (const Link& c : cuts) {
+    const uint32_t a = uint32_t(c.key >> 32), b = uint32_t(c.key);
+    cut_keys.push_back(c.key);
+    at.push_back({corner_of(w, c.f, a), corner_of(w, c.f, b), corner_of(w, c.g, a), corner_of(w, c.g, b)});
+    at_cut[a] = at_cut[b] = 1;
+  }
+  std::sort(cut_keys.begin(), cut_keys.end());
+  std::vector<EndCorner> corners;  // every corner at a cut's end, by vertex, then in face order
+  for (uint32_t f = 0; f < w.num_faces(); ++f) {
+    if (!w.kept[f]) continue;
+    for (uint32_t i = w.offsets[f]; i < w.offsets[f + 1]; ++i) {
+      if (at_cut[w.indices[i]]) corners.push_back({w.indices[i], i, f});
+    }
+  }
+  std::sort(corners.begin(), corners.end());
+  std::vector<std::pair<uint32_t, uint32_t>> moves;
+  for (size_t i = 0; i < corners.size();) {
+    size_t j = i + 1;
+    while (j < corners.size() && corners[j].vertex == corners[i].vertex) ++j;
+    split_cut_pieces(w, corners[i].vertex, std::span(corners).subspan(i, j - i), cut_keys, moves);
+    i = j;
+  }
+  for (const auto& [corner, vertex] : moves) w.indices[corner] = vertex;
+  w.report.cut_edges += cuts.size();
+  for (size_t k = 0; k < cuts.size(); ++k) say_cut(w, cuts[k], at[k]);
+  return true;
 }
 
 // ---- step 5: bow-ties ------------------------------------------------------------------------------
 
-uint32_t find_root(std::vector<uint32_t>& parent, uint32_t x) {
-  while (parent[x] != x) x = parent[x] = parent[parent[x]];
-  return x;
-}
-
-// `uses` gives each face's undirected edges (its corner numbers may be stale after orient_components).
+// `uses` gives each face's undirected edges as they are (its corner numbers may be stale after orient_components).
 void split_bowties(Work& w, const std::vector<EdgeUse>& uses) {
   std::vector<uint32_t> parent(w.indices.size());
   std::iota(parent.begin(), parent.end(), 0u);
-  const auto corner_at = [&](const EdgeUse& u, uint32_t v) {
-    uint32_t i = w.offsets[u.face];
-    while (w.indices[i] != v) ++i;  // v is a corner of the face: the edge's key names two of them
-    return i;
-  };
+  // v is a corner of the face: the edge's key names two of them.
+  const auto corner_at = [&](const EdgeUse& u, uint32_t v) { return corner_of(w, u.face, v); };
   for_each_edge(uses, [&](size_t first, size_t last) {
     if (last - first != 2) return;
     for (uint32_t v : {uint32_t(uses[first].key >> 32), uint32_t(uses[first].key)}) {
@@ -491,7 +642,7 @@ RepairResult repair_polygons(const PolygonMesh& polygons) {
   drop_repeated_faces(w);
   std::vector<EdgeUse> uses = edge_uses(w);
   if (detach_extra_faces(w, uses)) uses = edge_uses(w);
-  orient_components(w, uses);
+  if (cut_edges(w, orient_components(w, uses))) uses = edge_uses(w);
   split_bowties(w, uses);
   RepairResult result;
   Renumbering numbers;

@@ -48,11 +48,9 @@ std::string RepairReport::summary() const {
     parts.push_back(count(dropped_bad_faces, "degenerate face dropped", "degenerate faces dropped"));
   }
   if (reversed_faces) parts.push_back(count(reversed_faces, "face reversed", "faces reversed"));
+  if (cut_edges)
+    parts.push_back(count(cut_edges, "edge cut where its faces disagree", "edges cut where faces disagree"));
   if (dropped_vertices) parts.push_back(count(dropped_vertices, "unused vertex dropped", "unused vertices dropped"));
-  if (non_orientable_components) {
-    parts.push_back(
-        count(non_orientable_components, "one-sided part left unoriented", "one-sided parts left unoriented"));
-  }
   std::string text = "repaired: ";
   for (size_t i = 0; i < parts.size(); ++i) text += (i ? ", " : "") + parts[i];
   return text;

@@ -427,7 +427,8 @@ function meshedit.from_polygons(positions, polygons) end
 ---@field changes string[] e.g. "vertex 0 was a bow-tie: split into 0 and new vertex 5 (face 1 moved)"
 
 ---Like from_polygons, but repairs the polygons first (see meshedit.load's repair option) instead of refusing them.
----Raises an error only if they are still not a manifold after repair (a one-sided surface).
+---The repaired polygons always make a mesh (a one-sided surface is cut along the edges whose faces cannot agree),
+---so it raises an error only for arguments that are not positions and polygons.
 ---@param positions point[]
 ---@param polygons integer[][]
 ---@return Mesh

@@ -126,5 +126,33 @@ TEST(MeshRepairSpots, ABowTieAFinAndAFlippedFaceTogether) {
   expect_spots_are_built_ids(r);
 }
 
+// Three quads round a circle, the last joined with a half twist, after an unused vertex 0: the file's vertex k is
+// output vertex k - 1, and the two new vertices are output vertices 6 and 7. The walk from face 0 meets itself
+// across edge 5-6 (the file's numbers), between faces 1 and 2; the report names the file's vertices and the new
+// vertices' output numbers, the spots give the edge in output numbers on face 1's side, then on face 2's, and the
+// two faces.
+TEST(MeshRepairSpots, ACutNamesTheEdgeOnBothSidesAndItsTwoFaces) {
+  PolygonMesh p;
+  p.positions = {{9, 9, 9},        {1, 0, 0},         {1.5, 0, 0.2},     {-0.5, 0.9, -0.2},
+                 {-0.7, 1.2, 0.2}, {-0.5, -0.9, 0.1}, {-0.8, -1.3, -0.1}};
+  p.add_face({1, 2, 4, 3});
+  p.add_face({3, 4, 6, 5});
+  p.add_face({5, 6, 1, 2});  // the twist: 1 and 2 swap sides
+  const RepairResult r = repair_polygons(p);
+  ASSERT_EQ(r.report.changes,
+            (std::vector<std::string>{"face 2 reversed to agree with face 0",
+                                      "the edge between vertex 5 and vertex 6 was cut: faces 1 and 2 disagree on its "
+                                      "direction; it is now between vertex 5 and vertex 6 in face 1, and between new "
+                                      "vertex 6 and new vertex 7 in face 2",
+                                      "vertex 0 was used by no face: dropped"}));
+  EXPECT_EQ(r.polygons.indices, (Indices{0, 1, 3, 2, 2, 3, 5, 4, 6, 1, 0, 7}));
+  EXPECT_EQ(r.polygons.positions[6], p.positions[5]);
+  EXPECT_EQ(r.polygons.positions[7], p.positions[6]);
+  EXPECT_EQ(r.report.spots[0].faces, (Indices{2}));
+  EXPECT_EQ(r.report.spots[1].vertices, (Indices{4, 5, 6, 7}));
+  EXPECT_EQ(r.report.spots[1].faces, (Indices{1, 2}));
+  expect_spots_are_built_ids(r);
+}
+
 }  // namespace
 }  // namespace meshedit

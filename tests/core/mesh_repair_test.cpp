@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <glm/vec3.hpp>
+
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_repair.h"
@@ -186,8 +188,9 @@ TEST(MeshRepair, SeveralDefectsAreReportedWithTheOriginalNumbers) {
   EXPECT_EQ(faces_of(r.polygons), (std::vector<std::vector<uint32_t>>{{0, 1, 2}, {6, 3, 4}, {3, 5, 4}}));
 }
 
-TEST(MeshRepair, AMoebiusStripIsReportedAndLeftAsItIs) {
-  // Six quads (as triangles) around a circle, the last one joined with a half twist.
+// Six quads (as triangles) around a circle, the last one joined with a half twist: vertex 2i and 2i + 1 are the
+// two sides at angle 60i degrees, faces 2i and 2i + 1 the quad from there to the next.
+PolygonMesh moebius_strip() {
   PolygonMesh p;
   for (int i = 0; i < 6; ++i) {
     const double t = 2 * M_PI * i / 6, half = t / 2;
@@ -202,13 +205,63 @@ TEST(MeshRepair, AMoebiusStripIsReportedAndLeftAsItIs) {
     p.add_face({a, b, c});
     p.add_face({a, c, d});
   }
-  EXPECT_THROW(build_halfedge_mesh(p), MeshError);
-  const RepairResult r = repair_polygons(p);
-  EXPECT_EQ(r.report.changes, Strings{"the 12 faces joined to face 0 cannot all agree (a one-sided surface, like a "
-                                      "Moebius strip): left as they are"});
-  EXPECT_EQ(r.report.non_orientable_components, 1u);
-  EXPECT_EQ(r.polygons.indices, p.indices);
-  EXPECT_THROW(build_halfedge_mesh(r.polygons), MeshError);
+  return p;
+}
+
+// The walk from face 0 goes both ways round and meets itself at faces 5 and 6, which the orientations it fixed make
+// use edge 6-7 the same way: that edge is cut, its ends copied for face 6's side (and face 7, which shares vertex 6
+// with face 6 only). What is left is a strip of 12 triangles with one boundary of 14 edges.
+TEST(MeshRepair, AMoebiusStripIsCutAcrossWhereTheWalkMeetsItself) {
+  const PolygonMesh p = moebius_strip();
+  const RepairResult r = repair_and_build(p);
+  EXPECT_EQ(r.report.changes, (Strings{"faces 6..11 reversed to agree with face 0",
+                                       "the edge between vertex 6 and vertex 7 was cut: faces 5 and 6 disagree on its "
+                                       "direction; it is now between vertex 6 and vertex 7 in face 5, and between new "
+                                       "vertex 12 and new vertex 13 in face 6"}));
+  EXPECT_EQ(r.report.summary(), "repaired: 6 faces reversed, 1 edge cut where its faces disagree");
+  EXPECT_EQ(r.report.cut_edges, 1u);
+  EXPECT_EQ(r.report.reversed_faces, 6u);
+  ASSERT_EQ(r.polygons.num_vertices(), 14u);
+  EXPECT_EQ(std::vector<glm::dvec3>(r.polygons.positions.begin(), r.polygons.positions.begin() + 12), p.positions);
+  EXPECT_EQ(r.polygons.positions[12], p.positions[6]);
+  EXPECT_EQ(r.polygons.positions[13], p.positions[7]);
+  EXPECT_EQ(faces_of(r.polygons), (std::vector<std::vector<uint32_t>>{{0, 1, 3},
+                                                                      {0, 3, 2},
+                                                                      {2, 3, 5},
+                                                                      {2, 5, 4},
+                                                                      {4, 5, 7},
+                                                                      {4, 7, 6},
+                                                                      {12, 9, 13},
+                                                                      {12, 8, 9},
+                                                                      {8, 11, 9},
+                                                                      {8, 10, 11},
+                                                                      {10, 0, 11},
+                                                                      {10, 1, 0}}));
+  const HalfedgeMesh mesh = build_halfedge_mesh(r.polygons);
+  EXPECT_EQ(mesh.num_boundaries(), 1u);
+  EXPECT_EQ(mesh.num_halfedges() - 3 * mesh.num_faces(), 14u);  // the boundary's halfedges
+}
+
+// Vertex 6, an end of the cut edge, is also a bow-tie: a triangle (face 12) touches it alone. The cut splits the
+// strip's fan there (face 6's side gets new vertex 14), then step 5 splits the bow-tie as ever (face 12 moved).
+TEST(MeshRepair, ACutEndThatIsAlsoABowTieIsCutThenSplit) {
+  PolygonMesh p = moebius_strip();
+  p.add_vertex({-1.5, 0.2, 1});
+  p.add_vertex({-1.5, -0.2, 1});
+  p.add_face({6, 12, 13});
+  const RepairResult r = repair_and_build(p);
+  EXPECT_EQ(r.report.changes, (Strings{"faces 6..11 reversed to agree with face 0",
+                                       "the edge between vertex 6 and vertex 7 was cut: faces 5 and 6 disagree on its "
+                                       "direction; it is now between vertex 6 and vertex 7 in face 5, and between new "
+                                       "vertex 14 and new vertex 15 in face 6",
+                                       "vertex 6 was a bow-tie: split into 6 and new vertex 16 (face 12 moved)"}));
+  ASSERT_EQ(r.polygons.num_vertices(), 17u);
+  for (uint32_t copy : {14u, 16u}) EXPECT_EQ(r.polygons.positions[copy], p.positions[6]);
+  EXPECT_EQ(r.polygons.positions[15], p.positions[7]);
+  EXPECT_EQ(faces_of(r.polygons)[5], (std::vector<uint32_t>{4, 7, 6}));
+  EXPECT_EQ(faces_of(r.polygons)[6], (std::vector<uint32_t>{14, 9, 15}));
+  EXPECT_EQ(faces_of(r.polygons)[7], (std::vector<uint32_t>{14, 8, 9}));
+  EXPECT_EQ(faces_of(r.polygons)[12], (std::vector<uint32_t>{16, 12, 13}));
 }
 
 TEST(MeshRepair, AGoodMeshIsLeftAsItIs) {
