@@ -10,20 +10,19 @@
 #include <string>
 #include <vector>
 
-#include "core/catmull_clark.h"
-#include "core/loop_subdivision.h"
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_repair.h"
-#include "core/triangulate.h"
 #include "core/validate.h"
 #include "io/mesh_file.h"
+#include "io/window_open.h"
 #include "support/test_support.h"
 
 namespace meshedit {
 namespace {
 
 namespace fs = std::filesystem;
+using testing::expect_subdivides;
 
 using Strings = std::vector<std::string>;
 using Faces = std::vector<std::vector<uint32_t>>;
@@ -117,22 +116,6 @@ void expect_spots_in(const RepairResult& r, const HalfedgeMesh& mesh) {
       EXPECT_EQ(r.polygons.positions[s.vertices[end]], r.polygons.positions[s.vertices[end + 2]]);
     }
   }
-}
-
-// Triangulated, Loop subdivides with V + E vertices and 4F faces; Catmull-Clark takes the quads as they are; both
-// validate.
-void expect_subdivides(const HalfedgeMesh& mesh) {
-  HalfedgeMesh triangles = mesh;
-  ASSERT_TRUE(triangulate_mesh(triangles).check.ok);
-  HalfedgeMesh loop = triangles;
-  ASSERT_TRUE(loop_subdivide(loop).ok);
-  EXPECT_EQ(loop.num_vertices(), triangles.num_vertices() + triangles.num_edges());
-  EXPECT_EQ(loop.num_faces(), 4 * triangles.num_faces());
-  EXPECT_TRUE(validate(loop).ok());
-  HalfedgeMesh cc = mesh;
-  ASSERT_TRUE(catmull_clark_subdivide(cc).ok);
-  EXPECT_EQ(cc.num_vertices(), mesh.num_vertices() + mesh.num_edges() + mesh.num_faces());
-  EXPECT_TRUE(validate(cc).ok());
 }
 
 long euler_characteristic(const HalfedgeMesh& m) {
