@@ -1,14 +1,14 @@
 // EditorApp: the window's application, as rooms with one job each, and one frame of it. It owns the rooms and wires
 // them; each room's header says what it owns:
-//   DocumentRoom (document_room.h)  the open document, its selection and its files: title, recent list, repairs
-//   ViewRoom     (view_room.h)      the mesh, curve and patch views, the camera, the renderers, the up axis
-//   ExerciseRoom (exercise_room.h)  the Exercises tab and the student's code (Your code)
-//   CheckRoom    (check_room.h)     File > Check my work: the grader run beside the window, and the Check tab
-//   WriteupRoom  (writeup_room.h)   File > Write-up: `meshedit writeup` beside the window, the view it uses
-//   BugReportRoom (bug_report_room.h) Help > Save a bug report: what the window shows, for a TA
-//   LessonRoom   (lesson_room.h)    the lesson being run, its panel and what it lays over the view
-//   InputRoom    (input_room.h)     the mouse and the keys
-//   PanelsRoom   (panels_room.h)    the columns, the console, the settings and the look
+//   DocumentRoom  (document_room.h)    the open document, its selection and its files: title, recent list, repairs
+//   ViewRoom      (view_room.h)        the mesh, curve and patch views, the camera, the renderers, the up axis
+//   ExerciseRoom  (exercise_room.h)    the Exercises tab and the student's code (Your code)
+//   CheckRoom     (check_room.h)       File > Check my work: the grader run beside the window, and the Check tab
+//   WriteupRoom   (writeup_room.h)     File > Write-up: `meshedit writeup` beside the window, the view it uses
+//   BugReportRoom (bug_report_room.h)  Help > Save a bug report: what the window shows, for a TA
+//   LessonRoom    (lesson_room.h)      the lesson being run, its panel and what it lays over the view
+//   InputRoom     (input_room.h)       the mouse and the keys
+//   PanelsRoom    (panels_room.h)      the columns, the console, the settings and the look
 // What crosses rooms is here: opening files (editor_files.cpp), the commands of the menus, keys and scripted verbs
 // (editor_commands.cpp, editor_menus.cpp), the dialogs, your_turn's mine vs reference (editor_your_turn.cpp), closing.
 //

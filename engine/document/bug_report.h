@@ -4,9 +4,9 @@
 //   -- A MeshEdit bug report ...
 //   return {
 //     format = "meshedit bug report", version = 1, readable_by = 1, app = "meshedit 0.1",
-//     lesson = "04_flip.lua", step = 3,          -- the lesson and its step (1-based), when one runs
+//     lesson = "4_edge_flip.lua", step = 3,      -- the lesson and its step (1-based), when one runs
 //     mesh_name = "cow.obj", selection = "e12",  -- the document's name and the selection (format_id)
-//     camera = { up = "y", yaw = 30, pitch = 20, distance = 3.5, target = { 0, 0.5, 0 } },  -- the mesh view's
+//     camera = { up = "y", yaw = 30, pitch = 20, distance = 3.5, target = { 0, 0.5, 0 } },  -- the view's camera
 //     mesh = [==[ meshedit mesh records 1 ... ]==],   -- the mesh shown, every record and id kept
 //     operation = {                              -- the last run of the student's function on a mesh
 //       exercise = "flip_edge", label = "mine: flip e12", element = "e12", verdict = "different: ...",
@@ -19,8 +19,8 @@
 // Invariants:
 // - parse_bug_report(format_bug_report(r)) is r. Texts are written in long brackets whose level none of them closes,
 //   so code and meshes read back byte for byte.
-// - Reading runs the chunk in a LuaRuntime with no library at all and a small budget, and reads the table raw (no
-//   metamethod runs): a report is data, never a program the reader trusts.
+// - Reading runs the chunk in a LuaRuntime with an empty table as its environment (no global, no library) and a
+//   small budget, and reads the table raw (no metamethod runs): a report is data, never a program the reader trusts.
 // - A report is refused with a ReportError naming the file (and the line for what Lua or the mesh records know a line
 //   of): another kind of file, a version this reader cannot read (readable_by above kBugReportVersion, named with the
 //   MeshEdit that saved it), a field of the wrong type (a camera's up not "y" or "z", a number that is not finite), a
