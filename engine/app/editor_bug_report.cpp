@@ -84,12 +84,13 @@ OpenedReport read_report(const std::filesystem::path& path) {
   return opened;
 }
 
-// The report's code in a folder of its own: <temp>/meshedit report <name>/. Throws ReportError when it cannot be
-// written.
+// The report's code in a folder of its own, <temp>/meshedit report <name>/, emptied first so that no file of a report
+// opened before under the same name stays beside it. Throws ReportError when it cannot be written.
 std::filesystem::path write_code(const BugReport& report, const std::filesystem::path& path) {
   const std::filesystem::path folder =
       std::filesystem::temp_directory_path() / ("meshedit report " + path.stem().string());
   std::error_code error;
+  std::filesystem::remove_all(folder, error);
   std::filesystem::create_directories(folder, error);
   for (const StudentSource& file : report.files) {
     if (const std::string failure = write_file_bytes(folder / file.name, file.text); !failure.empty()) {

@@ -97,9 +97,10 @@ TEST(WindowBugReport, ASavedReportReopensToTheSameStateAndReplaysHeadlessToTheSa
   }
 
   // The TA's window: the report opens in the lesson's step, the run made again with the student's code, which is put
-  // in a folder of its own.
+  // in a folder of its own, where no file of another report of that name stays.
   const fs::path code = fs::temp_directory_path() / "meshedit report alice";
-  fs::remove_all(code);
+  fs::create_directories(code);
+  std::ofstream(code / "split.lua") << "-- another alice's split.lua\n";
   const fs::path again = dir / "again.meshedit";
   std::ostringstream ta_actions;
   ta_actions << "frames 2\n"
@@ -119,6 +120,7 @@ TEST(WindowBugReport, ASavedReportReopensToTheSameStateAndReplaysHeadlessToTheSa
   run = run_window(x.display(), cube, ta_actions.str(), dir / "ta-window");
   ASSERT_EQ(run.status, 0) << run.output;
   EXPECT_EQ(testing::read_text(code / "flip.lua"), flip);
+  EXPECT_FALSE(fs::exists(code / "split.lua"));  // not sent, and the other report's is gone
   const BugReport reopened = read_report(again);
   EXPECT_EQ(reopened.mesh, report.mesh);  // the same records: every id, pointer and position
   EXPECT_EQ(reopened.selection, report.selection);
