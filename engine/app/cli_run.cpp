@@ -10,7 +10,6 @@
 #include <vector>
 
 #include "app/cli_commands.h"
-#include "core/file_bytes.h"
 #include "document/bug_report.h"
 #include "document/settings.h"
 #include "document/student_file.h"
@@ -23,9 +22,7 @@ namespace {
 
 int replay_report(const std::filesystem::path& path, std::ostream& out) {
   const std::string name = path.filename().string();
-  const FileBytes bytes = read_file_bytes(path);
-  if (!bytes.ok()) throw ReportError(path.string() + ": " + bytes.error);
-  const BugReport report = parse_bug_report(bytes.bytes, name);
+  const BugReport report = read_bug_report(path);
   // Its run may be of an exercise defined in Lua: each one that does not load is named, and left out.
   for (const std::string& error : load_exercise_folder(default_exercise_folder())) {
     std::cerr << "meshedit: exercise: " << error << '\n';

@@ -28,8 +28,6 @@
 namespace meshedit {
 namespace {
 
-constexpr size_t kMaxReportBytes = size_t(512) << 20;
-
 // Everything of a report the window shows, read and checked before anything changes.
 struct OpenedReport {
   BugReport report;
@@ -42,11 +40,6 @@ struct OpenedReport {
   std::string notes;                 // what could not be done as the student had it
 };
 
-ElementRef live_element(const HalfedgeMesh& mesh, const std::string& id) {
-  const std::optional<ElementRef> parsed = parse_element(id);
-  return parsed && reference_state(mesh, *parsed) == RefState::Live ? *parsed : ElementRef{};
-}
-
 std::filesystem::path find_lesson(const std::string& name) {
   std::error_code error;
   for (const std::filesystem::path& candidate : {lessons_dir() / name, std::filesystem::path(name)}) {
@@ -57,9 +50,7 @@ std::filesystem::path find_lesson(const std::string& name) {
 
 OpenedReport read_report(const std::filesystem::path& path) {
   const std::string name = path.filename().string();
-  FileBytes bytes = read_file_bytes(path, kMaxReportBytes);
-  if (!bytes.ok()) throw ReportError(name + ": " + bytes.error);
-  OpenedReport opened{parse_bug_report(bytes.bytes, name)};
+  OpenedReport opened{read_bug_report(path)};
   const BugReport& report = opened.report;
   if (report.operation) {
     opened.exercise = find_exercise(report.operation->exercise);

@@ -10,6 +10,7 @@
 #include <utility>
 
 #include "core/app_version.h"
+#include "core/file_bytes.h"
 #include "core/value_format.h"
 #include "script/lua_runtime.h"
 
@@ -17,6 +18,7 @@ namespace meshedit {
 namespace {
 
 constexpr char kFormat[] = "meshedit bug report";
+constexpr size_t kMaxReportBytes = size_t(512) << 20;  // a report holds a mesh: as big as a mesh file may be
 
 // `text` between long brackets of the lowest level it does not close; a newline first, which Lua drops, so a text
 // that starts with one keeps it.
@@ -317,6 +319,13 @@ BugReport parse_bug_report(std::string_view text, const std::string& name) {
     lua_pop(L, 1);
   }
   return report;
+}
+
+BugReport read_bug_report(const std::filesystem::path& path) {
+  const std::string name = path.filename().string();
+  const FileBytes bytes = read_file_bytes(path, kMaxReportBytes);
+  if (!bytes.ok()) throw ReportError(name + ": " + bytes.error);
+  return parse_bug_report(bytes.bytes, name);
 }
 
 }  // namespace meshedit

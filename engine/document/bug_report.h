@@ -29,6 +29,7 @@
 #pragma once
 
 #include <cstddef>
+#include <filesystem>
 #include <optional>
 #include <stdexcept>
 #include <string>
@@ -83,6 +84,9 @@ struct BugReport {
 std::string format_bug_report(const BugReport& report);
 // Reads a report's text; `name` is the file's name in the errors ("report.meshedit:3: ..."). Throws ReportError.
 BugReport parse_bug_report(std::string_view text, const std::string& name);
+// The report file at `path` read and parsed, named by its file name; throws ReportError (a file that cannot be read
+// too).
+BugReport read_bug_report(const std::filesystem::path& path);
 
 // What `meshedit run report.meshedit` prints: the report's operation run again on its input with the report's code
 // (loaded as the window loads it, under `limits`), its diagnosis in the window's words, and whether it is the one

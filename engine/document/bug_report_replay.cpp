@@ -7,6 +7,7 @@
 #include "core/ids.h"
 #include "core/mesh_records.h"
 #include "core/validate.h"
+#include "core/value_format.h"
 #include "document/bug_report.h"
 #include "document/exercise_session.h"
 #include "document/selection.h"
@@ -14,8 +15,6 @@
 
 namespace meshedit {
 namespace {
-
-std::string plural(size_t n, const char* word) { return std::to_string(n) + " " + word + (n == 1 ? "" : "s"); }
 
 // The report's own lines: who saved it, the lesson, the mesh, the selection, the files.
 std::string describe_report(const BugReport& report, const std::string& name) {
@@ -26,7 +25,7 @@ std::string describe_report(const BugReport& report, const std::string& name) {
     const HalfedgeMesh mesh = parse_mesh_records(report.mesh, name + " (its mesh)");
     const ValidationReport validation = validate(mesh);
     text += "  the mesh " + (report.mesh_name.empty() ? std::string("shown") : report.mesh_name) + ": " +
-            plural(mesh.num_faces(), "face") + ", " +
+            plural(mesh.num_faces(), "face", "faces") + ", " +
             (validation.ok() ? std::string("valid") : "not valid: " + validation.summary()) + "\n";
   }
   if (!report.selection.empty()) text += "  selected: " + report.selection + "\n";
@@ -67,13 +66,9 @@ BugReportReplay replay_bug_report(const BugReport& report, const std::string& na
     return replay;
   }
   auto mesh = std::make_shared<HalfedgeMesh>(parse_mesh_records(op.input, name + " (the operation's input)"));
-  ElementRef element;
-  if (!op.element.empty()) {
-    const std::optional<ElementRef> parsed = parse_element(op.element);
-    if (!parsed || reference_state(*mesh, *parsed) != RefState::Live) {
-      throw ReportError(name + ": its operation's element " + op.element + " is not a live element of its input");
-    }
-    element = *parsed;
+  const ElementRef element = op.element.empty() ? ElementRef{} : live_element(*mesh, op.element);
+  if (!op.element.empty() && !element.valid()) {
+    throw ReportError(name + ": its operation's element " + op.element + " is not a live element of its input");
   }
   StudentCall call;
   call.exercise = *exercise;

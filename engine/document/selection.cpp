@@ -1,6 +1,10 @@
 // Navigation and selection upkeep (see selection.h). Every read of a stored field is preceded by in_range().
 #include "document/selection.h"
 
+#include <optional>
+
+#include "core/ids.h"
+
 namespace meshedit {
 
 char nav_key(NavStep step) {
@@ -25,6 +29,11 @@ const char* nav_field(NavStep step) {
     case NavStep::Halfedge: return "halfedge";
   }
   return "?";
+}
+
+ElementRef live_element(const HalfedgeMesh& mesh, std::string_view id) {
+  const std::optional<ElementRef> parsed = parse_element(id);
+  return parsed && reference_state(mesh, *parsed) == RefState::Live ? *parsed : ElementRef{};
 }
 
 bool in_range(const HalfedgeMesh& mesh, ElementRef ref) { return ref.valid() && ref.index < mesh.capacity(ref.kind); }

@@ -10,6 +10,7 @@
 #pragma once
 
 #include <string>
+#include <string_view>
 
 #include "core/check.h"
 #include "core/halfedge_mesh.h"
@@ -31,6 +32,8 @@ const char* nav_field(NavStep step);  // "next", "twin", "vertex", "edge", "face
 // Whether a reference can be followed.
 enum class RefState { Live, Dead, OutOfRange, Null };
 RefState reference_state(const HalfedgeMesh& mesh, ElementRef ref);
+// The element `id` names ("e7", as format_id writes it) when it is a live element of `mesh`; invalid otherwise.
+ElementRef live_element(const HalfedgeMesh& mesh, std::string_view id);
 // True when the slot exists (live or dead), i.e. its stored fields may be read.
 bool in_range(const HalfedgeMesh& mesh, ElementRef ref);
 // "h40 is dead", "h999 does not exist (halfedges h0..h47)", "- is no halfedge (a null pointer)"; "" when live.
