@@ -11,6 +11,7 @@ packages=(
   googletest libgtest-dev
   xvfb xauth x11-utils
   fonts-dejavu-core
+  fonts-wqy-microhei
 )
 
 "$(dirname "$0")/install_missing.sh" setup "${packages[@]}"

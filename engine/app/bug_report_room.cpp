@@ -17,6 +17,7 @@
 #include "core/file_bytes.h"
 #include "core/ids.h"
 #include "core/mesh_records.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 #include "exercise/exercise_registry.h"
 #include "ui/dialog.h"
@@ -95,44 +96,58 @@ Check BugReportRoom::save(const std::filesystem::path& path) {
   try {
     const BugReport report = make();
     if (const std::string failure = write_file_bytes(path, format_bug_report(report)); !failure.empty()) {
-      document_.message(Severity::Error, "the bug report was not saved: " + failure);
+      document_.message(Severity::Error, tr_format("the bug report was not saved: {why}", {{"why", failure}}));
       return Check::no(failure);
     }
     const std::string handed = host_hand_over(path);
-    document_.message(Severity::Info, "saved a bug report " +
-                                          (handed.empty() ? "in " + path.string() : "(" + handed + ")") +
-                                          ": send it to your TA (it holds the mesh, the selection, your last run, " +
-                                          std::to_string(report.files.size()) + " code files and the lesson's step)");
+    const std::string count = std::to_string(report.files.size());
+    document_.message(Severity::Info,
+                      handed.empty() ? tr_format("saved a bug report in {file}: send it to your TA (it holds the mesh, "
+                                                 "the selection, your last run, {count} code files and the lesson's "
+                                                 "step)",
+                                                 {{"file", path.string()}, {"count", count}})
+                                     : tr_format("saved a bug report ({handed}): send it to your TA (it holds the "
+                                                 "mesh, the selection, your last run, {count} code files and the "
+                                                 "lesson's step)",
+                                                 {{"handed", handed}, {"count", count}}));
     shown_ = false;
     return Check::yes();
   } catch (const std::bad_alloc& e) {
     report_exception(document_.doc(), e);
     return Check::no(kMemoryRanOut);
   } catch (const std::exception& e) {
-    document_.message(Severity::Error, std::string("the bug report was not saved: ") + e.what());
+    document_.message(Severity::Error, tr_format("the bug report was not saved: {why}", {{"why", e.what()}}));
     return Check::no(e.what());
   }
 }
 
 void BugReportRoom::draw_dialog() {
   const float em = ImGui::GetFontSize();
-  if (!begin_dialog("Save a bug report", shown_, ImVec2(40 * em, 19 * em))) return;
-  ImGui::TextWrapped("One file for your TA, which opens MeshEdit as you see it now. It holds:");
+  if (!begin_dialog(tr_label("Save a bug report"), shown_, ImVec2(40 * em, 19 * em))) return;
+  ImGui::TextWrapped("%s", tr("One file for your TA, which opens MeshEdit as you see it now. It holds:"));
   const MeshDocument& doc = document_.doc();
-  ImGui::BulletText(
-      "the mesh shown (%zu faces, every id as you see it) and the selection (%s)", doc.mesh.num_faces(),
-      document_.selection().selected.valid() ? format_id(document_.selection().selected).c_str() : "none");
+  const ElementRef selected = document_.selection().selected;
+  const std::string shown =
+      tr_format("the mesh shown ({count} faces, every id as you see it) and the selection ({selection})",
+                {{"count", std::to_string(doc.mesh.num_faces())},
+                 {"selection", selected.valid() ? format_id(selected) : std::string(tr("none"))}});
+  ImGui::BulletText("%s", shown.c_str());
   const std::optional<ExerciseRun>& run = exercises_.session().last_run();
   if (run && run->mine && run->input.mesh) {
-    ImGui::BulletText("your last run, %s, and the mesh it was given", run->label.c_str());
+    const std::string last = tr_format("your last run, {run}, and the mesh it was given", {{"run", run->label}});
+    ImGui::BulletText("%s", last.c_str());
   } else {
-    ImGui::BulletText("no run of your code (the Exercises tab has not run yours on a mesh)");
+    ImGui::BulletText("%s", tr("no run of your code (the Exercises tab has not run yours on a mesh)"));
   }
   const LessonRunner& lesson = lessons_.runner();
   if (lesson.loaded()) {
-    ImGui::BulletText("the lesson %s, step %zu", lesson_name(lesson.path()).c_str(), lesson.current_step() + 1);
+    const std::string step =
+        tr_format("the lesson {lesson}, step {step}",
+                  {{"lesson", lesson_name(lesson.path())}, {"step", std::to_string(lesson.current_step() + 1)}});
+    ImGui::BulletText("%s", step.c_str());
   }
-  ImGui::BulletText("%s, and the saved code files you tick:", kAppVersion);
+  const std::string files = tr_format("{version}, and the saved code files you tick:", {{"version", kAppVersion}});
+  ImGui::BulletText("%s", files.c_str());
   // The files in three columns, so the Save row stays in sight at 1024x640.
   if (ImGui::BeginTable("code files", 3)) {
     for (const std::filesystem::path& file : code_files()) {
@@ -145,11 +160,13 @@ void BugReportRoom::draw_dialog() {
   }
   ImGui::Separator();
   if (host_has_file_picker()) {
-    if (ImGui::Button("Download report.meshedit")) save(std::filesystem::temp_directory_path() / "report.meshedit");
+    if (ImGui::Button(tr_label("Download report.meshedit"))) {
+      save(std::filesystem::temp_directory_path() / "report.meshedit");
+    }
   } else {
-    const bool entered = input_path("file", path_input_);
+    const bool entered = input_path(tr_label("file"), path_input_);
     ImGui::SameLine();
-    if ((ImGui::Button("Save") || entered) && !path_input_.empty()) save(path_input_);
+    if ((ImGui::Button(tr_label("Save")) || entered) && !path_input_.empty()) save(path_input_);
   }
   end_dialog(shown_);
 }

@@ -11,6 +11,7 @@
 #include "app/check_process.h"
 #include "app/spawned_program.h"
 #include "core/data_folders.h"
+#include "core/translation.h"
 #include "grade/report_json.h"
 #include "grade/submission.h"
 #include "io/file_access.h"
@@ -76,7 +77,7 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
   started_ = ended_ = now();
   host_->folder = make_run_folder();
   if (host_->folder.empty()) {
-    problem_ = "Check my work could not make a temporary folder for the grader's files";
+    problem_ = tr("Check my work could not make a temporary folder for the grader's files");
     return false;
   }
   const std::vector<std::string> args = {meshedit.string(),
@@ -92,7 +93,8 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
                                          (host_->folder / "check.json").string(),
                                          "--progress"};
   if (const std::string why = host_->child.start(args, SpawnedProgram::Output::StderrOnly); !why.empty()) {
-    problem_ = "Check my work could not start the grader " + meshedit.string() + ": " + why;
+    problem_ = tr_format("Check my work could not start the grader {program}: {why}",
+                         {{"program", meshedit.string()}, {"why", why}});
     forget_files();
     return false;
   }
@@ -140,7 +142,7 @@ void CheckProcess::finish(int status) {
     try {
       report_ = decode_grade_report(read_file(host_->folder / "check.json"));
     } catch (const std::exception& e) {  // a GradeError, or a FileError for a report that was never written
-      problem_ = std::string("the grader's report could not be read: ") + e.what();
+      problem_ = tr_format("the grader's report could not be read: {error}", {{"error", e.what()}});
     }
   } else {
     const std::string words = words_besides_progress(host_->child.printed());

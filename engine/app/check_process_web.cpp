@@ -15,6 +15,7 @@
 #include <string>
 
 #include "app/check_process.h"
+#include "core/translation.h"
 #include "grade/grade_run.h"
 #include "grade/report_json.h"
 #include "grade/results_writers.h"
@@ -173,7 +174,7 @@ void CheckProcess::run_next_test() {
   page_check_end_worker();
   running_ = false;
   ended_ = now();
-  problem_ = "Check my work could not start the page's grader (a Web Worker): " + why;
+  problem_ = tr_format("Check my work could not start the page's grader (a Web Worker): {why}", {{"why", why}});
   *host_ = Host{};
 }
 
@@ -229,12 +230,12 @@ void CheckProcess::poll() {
     } else if (host_->began == 0.0 && now() - host_->sent > kWorkerStartSeconds) {
       stop();
       stopped_ = false;
-      problem_ = "the page's grader (a Web Worker) did not start a test within 120 s";
+      problem_ = tr("the page's grader (a Web Worker) did not start a test within 120 s");
     }
   } catch (const std::exception& e) {
     stop();
     stopped_ = false;
-    problem_ = "Check my work: " + exception_text(e);
+    problem_ = tr_format("Check my work: {problem}", {{"problem", exception_text(e)}});
   }
 }
 

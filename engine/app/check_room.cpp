@@ -8,6 +8,7 @@
 #include "app/exercise_room.h"
 #include "app/window_host.h"
 #include "core/data_folders.h"
+#include "core/translation.h"
 #include "grade/grader.h"
 #include "grade/results_writers.h"
 
@@ -26,7 +27,7 @@ Check CheckRoom::start() {
     panel_.open = true;
     std::error_code ec;
     if (!std::filesystem::is_regular_file(suite_, ec)) {
-      const std::string why = "Check my work: no suite at " + suite_.string();
+      const std::string why = tr_format("Check my work: no suite at {file}", {{"file", suite_.string()}});
       document_.message(Severity::Error, why);
       return Check::no(why);
     }
@@ -35,16 +36,17 @@ Check CheckRoom::start() {
     announced_ = false;
     if (!process_.start(program_, suite_, checked_folder_)) {
       announced_ = true;
-      document_.message(Severity::Error, "Check my work: " + process_.problem());
+      document_.message(Severity::Error, tr_format("Check my work: {problem}", {{"problem", process_.problem()}}));
       return Check::no(process_.problem());
     }
     const std::string unsaved = exercises_.unsaved_student_files();
     document_.message(unsaved.empty() ? Severity::Info : Severity::Warning,
-                      unsaved.empty() ? std::string("Checking your work with the course's visible tests...")
-                                      : "Checking your saved files; not saved, so not checked: " + unsaved);
+                      unsaved.empty() ? std::string(tr("Checking your work with the course's visible tests..."))
+                                      : tr_format("Checking your saved files; not saved, so not checked: {files}",
+                                                  {{"files", unsaved}}));
     return Check::yes();
   } catch (const std::exception& e) {
-    document_.message(Severity::Error, std::string("Check my work: ") + e.what());
+    document_.message(Severity::Error, tr_format("Check my work: {problem}", {{"problem", e.what()}}));
     return Check::no(e.what());
   }
 }
@@ -53,7 +55,7 @@ void CheckRoom::stop() {
   if (!running()) return;
   process_.stop();
   announced_ = true;
-  document_.message(Severity::Warning, "Check my work stopped: no verdict");
+  document_.message(Severity::Warning, tr("Check my work stopped: no verdict"));
 }
 
 void CheckRoom::poll() {
@@ -63,9 +65,10 @@ void CheckRoom::poll() {
   if (const std::optional<GradeReport>& report = process_.report()) {
     const bool all = report->failed() == 0;
     document_.message(all ? Severity::Info : Severity::Warning,
-                      "Check my work: " + score_line(*report) + "; " + summary_line(*report) + " (the Check tab)");
+                      tr_format("Check my work: {score}; {summary} (the Check tab)",
+                                {{"score", score_line(*report)}, {"summary", summary_line(*report)}}));
   } else {
-    document_.message(Severity::Error, "Check my work: the grader could not check your work (the Check tab)");
+    document_.message(Severity::Error, tr("Check my work: the grader could not check your work (the Check tab)"));
   }
 }
 
@@ -80,7 +83,7 @@ CheckPanelView CheckRoom::view() const {
   view.suite = suite_;
   // On the page the folder is the browser's own file system, a path that means nothing to the student.
   view.folder = host_files_on_users_disk() ? (started_ ? checked_folder_ : exercises_.session().folder()).string()
-                                           : std::string("this browser (the files you edited or dropped here)");
+                                           : std::string(tr("this browser (the files you edited or dropped here)"));
   if (running()) {
     view.state = CheckPanelView::State::Running;
     view.done = process_.tests_done();

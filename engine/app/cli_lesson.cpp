@@ -44,6 +44,7 @@ int run_lesson(const std::vector<std::string>& arguments, std::ostream& out) {
   const HeadlessOutcome outcome =
       run_lesson_headless(args.front(), answers_path, out, LessonRunner::default_limits(), student_folder);
   out.flush();
+  for (const std::string& problem : outcome.text_problems) std::cerr << "meshedit: warning: " << problem << '\n';
   if (!outcome.failure.empty()) throw ScriptError(outcome.failure);
   return 0;
 }

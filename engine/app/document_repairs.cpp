@@ -7,6 +7,7 @@
 
 #include "app/document_room.h"
 #include "core/palette.h"
+#include "core/translation.h"
 #include "document/document_actions.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
@@ -19,7 +20,7 @@ std::string spot_ids(const RepairSpots& spots) {
   std::string text;
   for (uint32_t v : spots.vertices) text += (text.empty() ? "" : " ") + format_id(VertexId(v));
   for (uint32_t f : spots.faces) text += (text.empty() ? "" : " ") + format_id(FaceId::face(f));
-  return text.empty() ? std::string("nothing left to show") : text;
+  return text.empty() ? std::string(tr("nothing left to show")) : text;
 }
 
 }  // namespace
@@ -32,13 +33,15 @@ bool DocumentRoom::click_repair_row(size_t row, bool mesh_shown) {
   std::string refused;
   ElementRef spot;
   if (row >= repairs_.rows.size()) {
-    refused = "the Repairs tab has no change " + std::to_string(row + 1);
+    refused = tr_format("the Repairs tab has no change {number}", {{"number", std::to_string(row + 1)}});
   } else if (!repair_spots_current(mesh_shown)) {
-    refused = "the repaired spots are gone: the mesh was edited or another one opened";
+    refused = tr("the repaired spots are gone: the mesh was edited or another one opened");
   } else if (!(spot = repairs_.first_spot(row)).valid()) {
-    refused = "that change left nothing in the mesh to select";
+    refused = tr("that change left nothing in the mesh to select");
   }
-  if (refused.empty() && !select_element(doc_, selection_, spot)) refused = format_id(spot) + " is not live";
+  if (refused.empty() && !select_element(doc_, selection_, spot)) {
+    refused = tr_format("{id} is not live", {{"id", format_id(spot)}});
+  }
   if (!refused.empty()) {
     set_message(doc_, Severity::Warning, std::move(refused));
     return false;
@@ -52,8 +55,8 @@ void DocumentRoom::draw_repairs_tab(bool mesh_shown, Theme theme) {
   const Palette& palette = palette_for(theme);
   ImGui::TextWrapped("%s", repairs_.summary.c_str());
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
-  ImGui::TextWrapped("%s", current ? "Click a change to select it; its spots are drawn in the last edit's colour."
-                                   : "The mesh was edited or another shown: the spots are no longer drawn.");
+  ImGui::TextWrapped("%s", current ? tr("Click a change to select it; its spots are drawn in the last edit's colour.")
+                                   : tr("The mesh was edited or another shown: the spots are no longer drawn."));
   ImGui::PopStyleColor();
   ImGui::Separator();
   const float line = ImGui::GetTextLineHeight();

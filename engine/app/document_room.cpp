@@ -17,6 +17,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/mesh_repair.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 #include "io/mesh_file.h"
 
@@ -70,29 +71,36 @@ PreparedFile DocumentRoom::prepare_file(const std::filesystem::path& path, bool&
   prepared.title = window_title(path.filename().string());
   prepared.name = path.string();
   prepared.recent = with_recent(recent_, path.string());
-  prepared.message = "opened " + path.string();
-  if (file.joined_vertices > 0) {
-    prepared.message += " (" + std::to_string(file.joined_vertices) +
-                        " vertices the file repeats at one position, for its normals or texture coordinates, joined)";
-  }
+  prepared.message =
+      file.joined_vertices > 0
+          ? tr_format(
+                "opened {file} ({count} vertices the file repeats at one position, for its normals or texture "
+                "coordinates, joined)",
+                {{"file", path.string()}, {"count", std::to_string(file.joined_vertices)}})
+          : tr_format("opened {file}", {{"file", path.string()}});
   return prepared;
 }
 
 PreparedFile DocumentRoom::prepare_repaired() const {
-  if (repairable_path_.empty()) throw std::runtime_error("no file to repair: open one that is not a manifold first");
+  if (repairable_path_.empty()) {
+    throw std::runtime_error(tr("no file to repair: open one that is not a manifold first"));
+  }
   const std::filesystem::path path = repairable_path_;
   LoadedFile file = load_file(path);
-  if (file.kind != FileKind::Mesh) throw std::runtime_error(path.string() + " is not a mesh file");
+  if (file.kind != FileKind::Mesh) {
+    throw std::runtime_error(tr_format("{file} is not a mesh file", {{"file", path.string()}}));
+  }
   const RepairResult repaired = repair_polygons(file.mesh);
   PreparedFile prepared;
   prepared.mesh = build_from_file(repaired.polygons, path).mesh;
   prepared.repairs = marks_of_repair(repaired.report);
   prepared.up_axis = file.up_axis;
-  prepared.title = window_title(path.filename().string() + " (repaired)");
+  prepared.title = window_title(tr_format("{file} (repaired)", {{"file", path.filename().string()}}));
   prepared.name = path.string() + " (repaired)";
   prepared.recent = recent_;  // a repaired copy is no file of its own: the list stays
-  prepared.message = "opened a repaired copy of " + path.string() + ": " + repaired.report.summary() +
-                     " (the Repairs tab lists each change; click one to select it)";
+  prepared.message = tr_format(
+      "opened a repaired copy of {file}: {summary} (the Repairs tab lists each change; click one to select it)",
+      {{"file", path.string()}, {"summary", repaired.report.summary()}});
   return prepared;
 }
 
@@ -100,7 +108,9 @@ void DocumentRoom::refuse(const std::filesystem::path& path, const std::exceptio
   report_exception(doc_, error);  // the report needs no memory, so nothing escapes
   try {
     repairable_path_ = repairable ? path.string() : std::string();
-    if (repairable) doc_.message.text += " (File > Open a repaired copy)";
+    if (repairable) {
+      doc_.message.text = tr_format("{message} (File > Open a repaired copy)", {{"message", doc_.message.text}});
+    }
   } catch (const std::bad_alloc&) {
     repairable_path_.clear();  // the refusal's message stays as report_exception left it
   }
@@ -134,9 +144,11 @@ void DocumentRoom::take_title(std::string& title, bool names_lesson) noexcept {
 bool DocumentRoom::save(const std::filesystem::path& path) {
   try {
     std::deque<std::string> recent = with_recent(recent_, path.string());
-    std::string text = "saved " + path.string();
+    std::string text = tr_format("saved {file}", {{"file", path.string()}});
     save_mesh(path, to_polygon_mesh(doc_.mesh));
-    if (const std::string handed = host_hand_over(path); !handed.empty()) text = "saved and " + handed;
+    if (const std::string handed = host_hand_over(path); !handed.empty()) {
+      text = tr_format("saved and {handed}", {{"handed", handed}});
+    }
     // Nothing from here on can fail: a file written is a file reported saved.
     recent_.swap(recent);
     set_message(doc_, Severity::Info, std::move(text));

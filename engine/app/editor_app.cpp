@@ -9,6 +9,7 @@
 #include <cstdio>
 
 #include "app/window_host.h"
+#include "core/translation.h"
 #include "document/document_actions.h"
 #include "document/exception_report.h"
 #include "document/student_call_work.h"
@@ -36,7 +37,8 @@ EditorApp::EditorApp()
   const std::vector<std::string> errors = load_exercise_folder(default_exercise_folder());
   for (const std::string& error : errors) std::fprintf(stderr, "meshedit: exercise: %s\n", error.c_str());
   if (!errors.empty()) {
-    document_.message(Severity::Warning, "an exercise in scripts/exercises did not load: " + errors.front());
+    document_.message(Severity::Warning,
+                      tr_format("an exercise in scripts/exercises did not load: {error}", {{"error", errors.front()}}));
   }
 }
 
@@ -50,7 +52,9 @@ void EditorApp::write_pending_screenshot(int width, int height) {
     glBindFramebuffer(GL_READ_FRAMEBUFFER, 0);
     write_png(path, width, height, read_pixels({width, height}));
     const std::string handed = host_hand_over(path);  // a page's browser downloads it
-    document_.message(Severity::Info, "screenshot " + (handed.empty() ? "saved to " + path.string() : handed));
+    document_.message(Severity::Info, handed.empty()
+                                          ? tr_format("screenshot saved to {file}", {{"file", path.string()}})
+                                          : tr_format("screenshot {handed}", {{"handed", handed}}));
   } catch (const std::exception& e) {
     report_exception(document_.doc(), e);  // called outside the frame guard (between rendering and the swap)
   }
@@ -95,7 +99,12 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   StatusBarState& status_bar = view_.status_bar();
   status_bar.mesh_shown = view_.mode() == ViewMode::Mesh;
   status_bar.view_is_3d = view_.mode() != ViewMode::Curve;
-  const float status = draw_status_bar(document_.doc(), document_.selection(), status_bar, frame_ms);
+  // The up axis's words are up_axis_choice.cpp's English literals (NUL-terminated), shown in the window's language:
+  // looked up each frame after the menus, where the language may change, so no view outlives the catalog it was in.
+  StatusBarState shown_bar = status_bar;
+  if (!shown_bar.up_axis.empty()) shown_bar.up_axis = tr(status_bar.up_axis.data());
+  if (!shown_bar.up_axis_why.empty()) shown_bar.up_axis_why = tr(status_bar.up_axis_why.data());
+  const float status = draw_status_bar(document_.doc(), document_.selection(), shown_bar, frame_ms);
   panels_.lay_out(menu, status);
   view_.place(panels_.layout().view, width, height);
 
@@ -175,7 +184,8 @@ void EditorApp::answer_unsaved_code(UnsavedCodeAnswer answer) {
   if (answer == UnsavedCodeAnswer::KeepEditing) return;
   if (answer == UnsavedCodeAnswer::SaveAndQuit) {
     if (Check saved = exercises_.save_unsaved(); !saved) {
-      document_.message(Severity::Error, "not saved, so the window stays open: " + saved.reason);
+      document_.message(Severity::Error,
+                        tr_format("not saved, so the window stays open: {reason}", {{"reason", saved.reason}}));
       return;
     }
   }

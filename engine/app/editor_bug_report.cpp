@@ -20,6 +20,7 @@
 #include "core/file_bytes.h"
 #include "core/ids.h"
 #include "core/mesh_records.h"
+#include "core/translation.h"
 #include "document/bug_report.h"
 #include "document/exception_report.h"
 #include "document/selection.h"
@@ -56,7 +57,8 @@ OpenedReport read_report(const std::filesystem::path& path) {
     opened.exercise = find_exercise(report.operation->exercise);
     if (!opened.exercise || !is_mesh_exercise(*opened.exercise)) {
       opened.exercise.reset();
-      opened.notes += "; this MeshEdit has no exercise " + report.operation->exercise;
+      opened.notes +=
+          "; " + tr_format("this MeshEdit has no exercise {exercise}", {{"exercise", report.operation->exercise}});
     }
   }
   opened.run_again = report.operation && report.operation->result_shown && opened.exercise;
@@ -69,9 +71,13 @@ OpenedReport read_report(const std::filesystem::path& path) {
   }
   if (!report.lesson.empty()) {
     opened.lesson = find_lesson(report.lesson);
-    if (opened.lesson.empty()) opened.notes += "; its lesson " + report.lesson + " is not here";
+    if (opened.lesson.empty()) {
+      opened.notes += "; " + tr_format("its lesson {lesson} is not here", {{"lesson", report.lesson}});
+    }
   }
-  for (const std::string& field : report.left_out) opened.notes += "; left out (from a newer MeshEdit): " + field;
+  for (const std::string& field : report.left_out) {
+    opened.notes += "; " + tr_format("left out (from a newer MeshEdit): {field}", {{"field", field}});
+  }
   return opened;
 }
 
@@ -85,8 +91,11 @@ std::filesystem::path write_code(const BugReport& report, const std::filesystem:
   std::filesystem::create_directories(folder, error);
   for (const StudentSource& file : report.files) {
     if (const std::string failure = write_file_bytes(folder / file.name, file.text); !failure.empty()) {
-      throw ReportError(path.filename().string() + ": its " + file.name + " could not be written into " +
-                        folder.string() + ": " + failure);
+      throw ReportError(tr_format("{report}: its {file} could not be written into {folder}: {failure}",
+                                  {{"report", path.filename().string()},
+                                   {"file", file.name},
+                                   {"folder", folder.string()},
+                                   {"failure", failure}}));
     }
   }
   return folder;
@@ -118,8 +127,9 @@ bool EditorApp::open_bug_report(const std::filesystem::path& path) {
       camera.set_target(seen.target);
     }
     if (opened.exercise) exercises_.session().set_exercise(*opened.exercise);
-    std::string message = "opened the bug report " + name + " saved by " + report.app + ": the student's code is in " +
-                          folder.string() + opened.notes;
+    std::string message = tr_format("opened the bug report {file} saved by {app}: the student's code is in {folder}",
+                                    {{"file", name}, {"app", report.app}, {"folder", folder.string()}}) +
+                          opened.notes;
     ExerciseSession& session = exercises_.session();
     if (opened.run_again) {
       document_.selection().selected = opened.run_element;
@@ -127,8 +137,10 @@ bool EditorApp::open_bug_report(const std::filesystem::path& path) {
       exercises_.panel().bring_table_into_view = true;
       session.start_mine(doc, document_.selection());
       // The run's verdict comes in the status line when it ends; where it ended at once, it is said here.
-      message += session.running() ? "; running its " + report.operation->label + " again"
-                                   : "; its " + report.operation->label + " made again: " + doc.message.text;
+      const std::string& label = report.operation->label;
+      message += "; " + (session.running() ? tr_format("running its {operation} again", {{"operation", label}})
+                                           : tr_format("its {operation} made again: {verdict}",
+                                                       {{"operation", label}, {"verdict", doc.message.text}}));
     } else {
       document_.selection().selected = opened.selected;
     }

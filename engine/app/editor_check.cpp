@@ -10,6 +10,7 @@
 #include <new>
 
 #include "app/editor_app.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 #include "exercise/exercise_registry.h"
 #include "grade/failing_case.h"
@@ -21,15 +22,16 @@ Check EditorApp::open_failing_case(size_t row) {
   try {
     const FailingCase* failing = check_.failing_case(row);
     if (!failing) {
-      const std::string why = "this test has no input to open in the Exercises tab";
-      document_.message(Severity::Warning, why);
+      const char* why = "this test has no input to open in the Exercises tab";
+      document_.message(Severity::Warning, tr(why));
       return Check::no(why);
     }
     const std::optional<Exercise> exercise = find_exercise(failing->exercise);
     if (!exercise || !is_mesh_exercise(*exercise)) {
-      const std::string why = "the Exercises tab has no exercise " + failing->exercise;
-      document_.message(Severity::Warning, why);
-      return Check::no(why);
+      const char* why = "the Exercises tab has no exercise {exercise}";
+      const MessageParts parts{{"exercise", failing->exercise}};
+      document_.message(Severity::Warning, tr_format(why, parts));
+      return Check::no(fill_template(why, parts));
     }
     HalfedgeMesh mesh = case_mesh(*failing);
     const ElementRef element = case_element(mesh, *failing);

@@ -10,6 +10,7 @@
 #include "core/mesh_build.h"
 #include "core/mesh_error.h"
 #include "core/primitives.h"
+#include "core/translation.h"
 #include "document/bug_report.h"
 #include "document/exception_report.h"
 #include "ui/frame_guard.h"
@@ -73,7 +74,7 @@ void EditorApp::receive_files(const std::vector<std::string>& paths) {
 }
 
 void EditorApp::show_mesh(HalfedgeMesh mesh, const std::string& name) {
-  std::string title = DocumentRoom::window_title(name.empty() ? std::string("untitled") : name);
+  std::string title = DocumentRoom::window_title(name.empty() ? std::string(tr("untitled")) : name);
   std::string path = name;
   view_.take_made_mesh(std::move(mesh), std::move(path));
   document_.take_title(title, false);
@@ -84,8 +85,9 @@ void EditorApp::show_start_mesh() {
     show_mesh(build_halfedge_mesh(make_cube()), "");
   } catch (const std::bad_alloc&) {
     // show_mesh is whole or nothing: the document is as it was (as the window starts, the empty one).
-    set_message_noexcept(document_.doc(), Severity::Error,
-                         [] { return std::string("memory ran out making the start-up cube; open a file to start"); });
+    set_message_noexcept(document_.doc(), Severity::Error, [] {
+      return std::string(tr("memory ran out making the start-up cube; open a file to start"));
+    });
   } catch (const std::exception& e) {
     report_exception(document_.doc(), e);  // never expected: the cube is a valid mesh
   }

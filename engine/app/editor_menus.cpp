@@ -14,6 +14,7 @@
 #include "app/editor_app.h"
 #include "app/mesh_loading.h"
 #include "app/window_host.h"
+#include "core/translation.h"
 #include "document/document_actions.h"
 #include "document/mesh_edits.h"
 #include "io/mesh_file.h"
@@ -59,7 +60,7 @@ void EditorApp::draw_menu_bar() {
       // Edit and Subdivide act on a mesh: off while the curve or the patch view is on screen.
       const bool on_a_mesh = title == "Edit" || title == "Subdivide";
       const MenuTitle name(c);
-      open = ImGui::BeginMenu(name.text, !on_a_mesh || mode() == ViewMode::Mesh);
+      open = ImGui::BeginMenu(tr_label(name.text), !on_a_mesh || mode() == ViewMode::Mesh);
       panels_.probe().record_last_item(std::string("menu:") + name.text);  // where the title is (tests click it)
     }
     if (open) draw_menu_item(c);
@@ -83,8 +84,9 @@ void EditorApp::draw_menu_item(const Command& c) {
     // A page's student files live in the browser: these take them to and from the student's disk for submission.
     case I::DownloadCode:
       look.shown = !host_files_on_users_disk();
-      std::snprintf(look.label, sizeof look.label, "Download your %s",
-                    exercises_.session().file().filename().string().c_str());
+      std::snprintf(
+          look.label, sizeof look.label, "%s",
+          tr_format("Download your {file}", {{"file", exercises_.session().file().filename().string()}}).c_str());
       break;
     case I::UploadCode: look.shown = !host_files_on_users_disk(); break;
     case I::CheckMyWork:
@@ -92,18 +94,20 @@ void EditorApp::draw_menu_item(const Command& c) {
       look.enabled = !check_.running();
       break;
     case I::Writeup:
-      if (writeup_.running()) std::snprintf(look.label, sizeof look.label, "Stop making the write-up");
+      if (writeup_.running()) std::snprintf(look.label, sizeof look.label, "%s", tr("Stop making the write-up"));
       break;
     case I::Undo: look.enabled = doc.history.can_undo(); break;
     case I::Redo: look.enabled = doc.history.can_redo(); break;
     case I::LoopPhase:
-      std::snprintf(look.label, sizeof look.label, "Loop: %s", next_loop_phase_label(doc).c_str());
+      std::snprintf(look.label, sizeof look.label, "%s",
+                    tr_format("Loop: {phase}", {{"phase", tr(next_loop_phase_label(doc))}}).c_str());
       break;
     case I::CatmullClarkPhase:
     case I::LinearPhase: {
       const SubdivisionScheme scheme =
           c.id == I::LinearPhase ? SubdivisionScheme::Linear : SubdivisionScheme::CatmullClark;
-      std::snprintf(look.label, sizeof look.label, "%s", next_phase_label(scheme, doc, document_.mesh_edits()).c_str());
+      const std::string phase = tr(next_phase_label(scheme, doc, document_.mesh_edits()));
+      std::snprintf(look.label, sizeof look.label, "%s", phase.c_str());
       break;
     }
     case I::LoopWeights: look.checked = document_.mesh_edits().loop_weights == LoopWeights::Loop; break;
@@ -125,7 +129,8 @@ void EditorApp::draw_menu_item(const Command& c) {
   }
   if (!look.shown) return;
   if (c.separator_before) ImGui::Separator();
-  const char* label = look.label[0] ? look.label : menu_label(c).data();  // the path's end ends the C string too
+  // The table's label in the window's language (the path's end ends the C string too); one made this frame as is.
+  const char* label = look.label[0] ? look.label : tr_label(menu_label(c).data());
   if (c.submenu) {
     const bool open = ImGui::BeginMenu(label, look.enabled);
     panels_.probe().record_last_item(std::string("menu-item:") + c.name);
@@ -149,12 +154,17 @@ void EditorApp::draw_submenu(CommandId id) {
     const std::pair<const char*, UpAxisChoice> choices[] = {
         {"From the file", UpAxisChoice::FromFile}, {"Y up", UpAxisChoice::Y}, {"Z up", UpAxisChoice::Z}};
     for (const auto& [label, choice] : choices) {
-      if (ImGui::MenuItem(label, nullptr, view_.up_axis_choice() == choice)) view_.choose_up_axis(choice);
+      if (ImGui::MenuItem(tr_label(label), nullptr, view_.up_axis_choice() == choice)) view_.choose_up_axis(choice);
+    }
+  } else if (id == CommandId::Language) {
+    for (const Language language : kLanguages) {
+      if (ImGui::MenuItem(language_name(language), nullptr, window_language() == language))
+        panels_.set_language(language);
     }
   } else if (id == CommandId::Theme) {
     constexpr std::pair<const char*, Theme> kThemes[] = {{"Dark", Theme::Dark}, {"Light (projectors)", Theme::Light}};
     for (const auto& [name, theme] : kThemes) {
-      if (ImGui::MenuItem(name, nullptr, settings().theme == theme) && settings().theme != theme)
+      if (ImGui::MenuItem(tr_label(name), nullptr, settings().theme == theme) && settings().theme != theme)
         panels_.set_theme(theme);
     }
   }
@@ -162,11 +172,11 @@ void EditorApp::draw_submenu(CommandId id) {
 
 void EditorApp::draw_open_panel() {
   const float em = ImGui::GetFontSize();
-  if (!begin_dialog("Open or save", show_open_panel_, ImVec2(40 * em, 30 * em))) return;
+  if (!begin_dialog(tr_label("Open or save"), show_open_panel_, ImVec2(40 * em, 30 * em))) return;
   std::string& open_path = document_.open_path_input();
   std::string& save_path = document_.save_path_input();
   if (open_path.empty()) open_path = std::filesystem::current_path().string();
-  if (input_path("path", open_path) || ImGui::Button("Open")) {
+  if (input_path(tr_label("path"), open_path) || ImGui::Button(tr_label("Open"))) {
     if (std::filesystem::is_directory(open_path)) {
       // Entering a folder just lists it.
     } else if (open(open_path)) {
@@ -174,18 +184,18 @@ void EditorApp::draw_open_panel() {
     }
   }
   ImGui::SameLine();
-  if (ImGui::Button("Assets")) open_path = assets_dir().string();
+  if (ImGui::Button(tr_label("Assets"))) open_path = assets_dir().string();
   if (host_has_file_picker()) {
     ImGui::SameLine();
-    if (ImGui::Button("From this computer...")) {
+    if (ImGui::Button(tr_label("From this computer..."))) {
       host_show_file_picker();
       show_open_panel_ = false;
     }
   }
   if (mode() == ViewMode::Mesh) {
-    input_path("save as", save_path);
+    input_path(tr_label("save as"), save_path);
     ImGui::SameLine();
-    if (ImGui::Button("Save") && !save_path.empty()) document_.save(save_path);
+    if (ImGui::Button(tr_label("Save")) && !save_path.empty()) document_.save(save_path);
     ImGui::TextDisabled("%s", list_extensions(writable_extensions(), ", ", " or ").c_str());
   }
   ImGui::Separator();
@@ -210,7 +220,7 @@ void EditorApp::draw_open_panel() {
     }
   }
   ImGui::EndChild();
-  ImGui::TextDisabled("Recent:");
+  ImGui::TextDisabled("%s", tr("Recent:"));
   for (const std::string& path : std::deque<std::string>(document_.recent_files())) {
     if (ImGui::Selectable(path.c_str()) && open(path)) show_open_panel_ = false;
   }
@@ -219,8 +229,9 @@ void EditorApp::draw_open_panel() {
 
 void EditorApp::draw_help_panel() {
   const float em = ImGui::GetFontSize();
-  if (!begin_dialog("Keys", show_help_, ImVec2(36 * em, 34 * em))) return;
-  // The mouse, then the command table's keys (document/command_table.h) under a heading per view.
+  if (!begin_dialog(tr_label("Keys"), show_help_, ImVec2(36 * em, 34 * em))) return;
+  // The mouse, then the command table's keys (document/command_table.h) under a heading per view; the texts in the
+  // window's language, the key names as the table writes them.
   static const char* const kMouse[][2] = {
       {"click", "select the vertex, edge, halfedge or face under the cursor"},
       {"drag / right drag", "orbit;  middle or Shift+drag: pan;  wheel: zoom"},
@@ -234,12 +245,12 @@ void EditorApp::draw_help_panel() {
       ImGui::TableNextColumn();
       ImGui::TextUnformatted(keys);
       ImGui::TableNextColumn();
-      ImGui::TextWrapped("%s", text);
+      ImGui::TextWrapped("%s", tr(text));
     };
-    for (const auto& [keys, text] : kMouse) row(keys, text);
+    for (const auto& [keys, text] : kMouse) row(tr(keys), text);
     for (const auto& [view, heading] : kHeadings) {
       ImGui::TableNextColumn();
-      ImGui::TextDisabled("%s", heading);
+      ImGui::TextDisabled("%s", tr(heading));
       ImGui::TableNextColumn();
       for (const Command& c : commands()) {
         if (c.view == view && c.key) row(c.key, c.help);
@@ -253,14 +264,16 @@ void EditorApp::draw_help_panel() {
 void EditorApp::draw_unsaved_code_dialog() {
   const float em = ImGui::GetFontSize();
   // Closed by its X: the student keeps editing.
-  if (!begin_dialog("Unsaved code", show_unsaved_code_, ImVec2(30 * em, 8 * em))) return;
-  ImGui::TextWrapped("Your code has changes you have not saved: %s.", exercises_.unsaved_student_files().c_str());
+  if (!begin_dialog(tr_label("Unsaved code"), show_unsaved_code_, ImVec2(30 * em, 8 * em))) return;
+  ImGui::TextWrapped("%s", tr_format("Your code has changes you have not saved: {files}.",
+                                     {{"files", exercises_.unsaved_student_files()}})
+                               .c_str());
   std::optional<UnsavedCodeAnswer> answer;
-  if (ImGui::Button("Save and quit")) answer = UnsavedCodeAnswer::SaveAndQuit;
+  if (ImGui::Button(tr_label("Save and quit"))) answer = UnsavedCodeAnswer::SaveAndQuit;
   ImGui::SameLine();
-  if (ImGui::Button("Quit without saving")) answer = UnsavedCodeAnswer::QuitWithoutSaving;
+  if (ImGui::Button(tr_label("Quit without saving"))) answer = UnsavedCodeAnswer::QuitWithoutSaving;
   ImGui::SameLine();
-  if (ImGui::Button("Keep editing")) answer = UnsavedCodeAnswer::KeepEditing;
+  if (ImGui::Button(tr_label("Keep editing"))) answer = UnsavedCodeAnswer::KeepEditing;
   if (answer) answer_unsaved_code(*answer);
   end_dialog(show_unsaved_code_);
 }

@@ -25,6 +25,7 @@
 #include <new>
 
 #include "app/editor_app.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 
 namespace meshedit {
@@ -36,7 +37,7 @@ Check EditorApp::show_your_turn_mine() {
   const YourTurnVerdict* found = your_turn_to_show(lessons_.runner());
   if (!found) {
     const Check no = Check::no("no your_turn waits on a wrong answer: nothing to show beside the reference");
-    set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
+    set_message_noexcept(doc, Severity::Warning, [&] { return tr(no.reason); });
     return no;
   }
   try {
@@ -52,7 +53,9 @@ Check EditorApp::show_your_turn_mine() {
         shown.levels_shown = std::max(0, int(shown.curve.control_points.size()) - 1);
         bezier_mine.set_folder(lessons_.runner().student_folder());
         bezier_mine.set_curve_on(true);
-        set_message(doc, Severity::Info, "mine: your " + verdict.function + " on " + verdict.input + ", every level");
+        set_message(doc, Severity::Info,
+                    tr_format("mine: your {function} on {input}, every level",
+                              {{"function", verdict.function}, {"input", verdict.input}}));
         return Check::yes();
       }
       case ExerciseKind::PatchEvaluate: {
@@ -60,7 +63,9 @@ Check EditorApp::show_your_turn_mine() {
         set_probe(view_.patches(), input.u, input.v);
         bezier_mine.set_folder(lessons_.runner().student_folder());
         bezier_mine.set_patch_on(true);
-        set_message(doc, Severity::Info, "mine: your " + verdict.function + " at " + verdict.input);
+        set_message(
+            doc, Severity::Info,
+            tr_format("mine: your {function} at {input}", {{"function", verdict.function}, {"input", verdict.input}}));
         return Check::yes();
       }
       case ExerciseKind::VertexNormal:

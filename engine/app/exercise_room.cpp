@@ -11,6 +11,7 @@
 #include "app/document_room.h"
 #include "app/window_host.h"
 #include "core/file_bytes.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 #include "io/file_access.h"
 
@@ -29,7 +30,8 @@ void ExerciseRoom::take_back_student_draft(StudentEdit& edit) {
   if (name.empty()) return;
   std::optional<std::string> draft = host_kept_draft(name);
   if (draft && edit.take_draft(std::move(*draft))) {
-    document_.message(Severity::Info, "your unsaved changes to " + name + " are back in Your code: Save keeps them");
+    document_.message(Severity::Info, tr_format("your unsaved changes to {file} are back in Your code: Save keeps them",
+                                                {{"file", name}}));
   }
 }
 
@@ -46,7 +48,8 @@ void ExerciseRoom::keep_student_drafts() {
     if (!file.edit.dirty()) {
       host_drop_draft(name);
     } else if (const std::string failure = host_keep_draft(name, file.edit.text()); !failure.empty()) {
-      document_.message(Severity::Warning, "your unsaved changes to " + name + " are not kept: " + failure);
+      document_.message(Severity::Warning, tr_format("your unsaved changes to {file} are not kept: {why}",
+                                                     {{"file", name}, {"why", failure}}));
     }
   }
 }
@@ -68,16 +71,18 @@ Check ExerciseRoom::save_student_code() {
     StudentEdit& edit = student_edit();
     const std::string name = edit.path().filename().string();
     if (Check saved = edit.save(); !saved) {
-      document_.message(Severity::Error, "not saved: " + saved.reason);
+      document_.message(Severity::Error, tr_format("not saved: {why}", {{"why", saved.reason}}));
       return saved;
     }
     host_drop_draft(name);
     std::string kept = host_keep_file(edit.path());
     if (!session_.ensure_loaded()) {
-      document_.message(Severity::Warning, "saved " + name + ", which does not load: " + session_.load_error());
+      document_.message(Severity::Warning, tr_format("saved {file}, which does not load: {error}",
+                                                     {{"file", name}, {"error", session_.load_error()}}));
     } else {
-      document_.message(Severity::Info,
-                        "saved " + name + (kept.empty() ? "" : " (" + kept + ")") + ": Run mine runs it");
+      document_.message(Severity::Info, kept.empty() ? tr_format("saved {file}: Run mine runs it", {{"file", name}})
+                                                     : tr_format("saved {file} ({kept}): Run mine runs it",
+                                                                 {{"file", name}, {"kept", kept}}));
     }
     return Check::yes();
   } catch (const std::bad_alloc& e) {
@@ -117,16 +122,21 @@ ExerciseRoom::Received ExerciseRoom::take_received_file(const std::filesystem::p
   FileBytes bytes = read_file_bytes(received, kMaxStudentFileBytes);
   std::string failure = bytes.ok() ? write_file_bytes(target, bytes.bytes) : bytes.error;
   if (!failure.empty()) {
-    document_.message(Severity::Error, name + " from this computer was not taken: " + failure);
+    document_.message(Severity::Error,
+                      tr_format("{file} from this computer was not taken: {why}", {{"file", name}, {"why", failure}}));
     return Received::Refused;
   }
   host_drop_draft(name);
   const std::string kept = host_keep_file(target);
   if (const auto shown = student_files_.find(target); shown != student_files_.end()) shown->second.edit.reread();
   const bool loads = session_.file() != target || session_.ensure_loaded();
-  document_.message(loads ? Severity::Info : Severity::Warning,
-                    name + " from this computer replaced your " + name + (kept.empty() ? "" : " (" + kept + ")") +
-                        (loads ? "" : ", which does not load: " + session_.load_error()));
+  const MessageParts parts = {{"file", name}, {"kept", kept}, {"error", loads ? "" : session_.load_error()}};
+  const char* replaced =
+      loads ? (kept.empty() ? "{file} from this computer replaced your {file}"
+                            : "{file} from this computer replaced your {file} ({kept})")
+            : (kept.empty() ? "{file} from this computer replaced your {file}, which does not load: {error}"
+                            : "{file} from this computer replaced your {file} ({kept}), which does not load: {error}");
+  document_.message(loads ? Severity::Info : Severity::Warning, tr_format(replaced, parts));
   return Received::Taken;
 }
 
@@ -135,7 +145,8 @@ void ExerciseRoom::download_student_code() {
   if (edit.dirty() && !save_student_code()) return;
   try {
     const std::string words = host_hand_over(edit.path());
-    document_.message(Severity::Info, words.empty() ? "your file is " + edit.path().string() : words);
+    document_.message(Severity::Info,
+                      words.empty() ? tr_format("your file is {file}", {{"file", edit.path().string()}}) : words);
   } catch (const std::exception& e) {
     report_exception(document_.doc(), e);
   }

@@ -10,6 +10,7 @@
 #include "app/mesh_loading.h"
 #include "app/view_room.h"
 #include "app/window_host.h"
+#include "core/translation.h"
 #include "document/exception_report.h"
 #include "document/student_call_work.h"
 
@@ -43,7 +44,7 @@ bool LessonRoom::open(const std::filesystem::path& path) {
   }
   try {
     std::string title = DocumentRoom::window_title(lesson.title());  // "MeshEdit - Walking the half-edge mesh"
-    std::string text = "lesson " + path.filename().string();
+    std::string text = tr_format("lesson {file}", {{"file", path.filename().string()}});
     // Nothing from here on can fail: the window switches to the lesson whole (what stops its first step is the
     // step's error, in the panel).
     view_.follow_lesson_up_axis();

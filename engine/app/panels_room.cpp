@@ -11,9 +11,11 @@
 #include "app/lesson_room.h"
 #include "app/view_room.h"
 #include "app/window_host.h"
+#include "core/translation.h"
 #include "ui/curve_editor.h"
 #include "ui/fonts.h"
 #include "ui/lesson_panel.h"
+#include "ui/lesson_question_view.h"
 #include "ui/patch_view.h"
 #include "ui/theme.h"
 
@@ -87,15 +89,16 @@ void PanelsRoom::draw_left_column() {
   LessonRunner& runner = lessons_.runner();
   LessonPanelState& panel = lessons_.panel();
   const bool lesson = runner.loaded();
-  const std::string title = (lesson ? runner.title() : std::string("Lessons")) + "###left column";
+  const std::string title =
+      (lesson ? lesson_text(runner, runner.title()) : std::string(tr("Lessons"))) + "###left column";
   panel.probe = &probe_;
   if (ImGui::Begin(title.c_str(), nullptr, kColumnFlags)) {
     if (!lesson && view_.mode() == ViewMode::Mesh && inspector_.open) {
       ImGui::BeginChild("inspector", ImVec2(0, ImGui::GetContentRegionAvail().y * 0.55f), true);
-      ImGui::TextDisabled("Inspector (I)");
+      ImGui::TextDisabled("%s", tr("Inspector (I)"));
       draw_inspector_contents(document_.doc(), document_.selection(), inspector_);
       ImGui::EndChild();
-      ImGui::TextDisabled("Start a lesson:");
+      ImGui::TextDisabled("%s", tr("Start a lesson:"));
     }
     draw_lesson_panel_contents(runner, panel);
   }
@@ -116,7 +119,7 @@ void PanelsRoom::draw_right_column() {
   } else if (!check_.panel().open) {
     draw_bezier_panel();
   } else if (ImGui::BeginTabBar("bezier panels")) {  // the curve or the patches beside the Check tab
-    if (ImGui::BeginTabItem(view_.mode() == ViewMode::Curve ? "Curve" : "Patches", nullptr,
+    if (ImGui::BeginTabItem(view_.mode() == ViewMode::Curve ? tr_label("Curve") : tr_label("Patches"), nullptr,
                             select_tab_ == RightTab::Tables ? ImGuiTabItemFlags_SetSelected : 0)) {
       draw_bezier_panel();
       ImGui::EndTabItem();
@@ -130,14 +133,14 @@ void PanelsRoom::draw_right_column() {
 
 void PanelsRoom::draw_bezier_panel() {
   if (view_.mode() == ViewMode::Curve) {
-    ImGui::TextDisabled("Curve");
+    ImGui::TextDisabled("%s", tr("Curve"));
     draw_curve_controls(view_.curve(), &view_.bezier_mine());
     ImGui::Separator();
     ImGui::BeginChild("levels");
     draw_curve_levels(view_.curve(), &view_.bezier_mine());
     ImGui::EndChild();
   } else {
-    ImGui::TextDisabled("Patches");
+    ImGui::TextDisabled("%s", tr("Patches"));
     draw_patch_view_panel_contents(view_.patches(), &view_.bezier_mine());
   }
 }
@@ -146,7 +149,7 @@ bool PanelsRoom::check_tab() {
   CheckPanelState& panel = check_.panel();
   if (!panel.open) return false;
   const ImGuiTabItemFlags flags = select_tab_ == RightTab::Check ? ImGuiTabItemFlags_SetSelected : 0;
-  if (!ImGui::BeginTabItem("Check", &panel.open, flags)) return false;
+  if (!ImGui::BeginTabItem(tr_label("Check"), &panel.open, flags)) return false;
   probe_.record_last_item("tab:Check");
   check_.draw_tab(probe_);
   ImGui::EndTabItem();
@@ -161,30 +164,31 @@ void PanelsRoom::draw_right_tabs() {
   };
   MeshDocument& doc = document_.doc();
   Selection& selection = document_.selection();
-  if (tables_.open && tab("Pointers", RightTab::Tables, &tables_.open)) {
+  if (tables_.open && tab(tr_label("Pointers"), RightTab::Tables, &tables_.open)) {
     ImGui::PushFont(mono_font());
     draw_pointer_tables_contents(doc, selection, tables_);
     ImGui::PopFont();
     ImGui::EndTabItem();
   }
-  if (lessons_.runner().loaded() && inspector_.open && tab("Inspector", RightTab::Inspector, &inspector_.open)) {
+  if (lessons_.runner().loaded() && inspector_.open &&
+      tab(tr_label("Inspector"), RightTab::Inspector, &inspector_.open)) {
     draw_inspector_contents(doc, selection, inspector_);
     ImGui::EndTabItem();
   }
   ExercisePanelState& exercise_panel = exercises_.panel();
-  if (exercise_panel.open && tab("Exercises", RightTab::Exercises, &exercise_panel.open)) {
+  if (exercise_panel.open && tab(tr_label("Exercises"), RightTab::Exercises, &exercise_panel.open)) {
     exercises_.draw_exercises_tab(probe_);
     ImGui::EndTabItem();
   }
   // In a page (no editor of the student's own), opening the Exercises tab opens "Your code" beside it.
   StudentEditorState& editor = exercises_.editor();
   if (exercises_.exercises_just_opened() && !host_files_on_users_disk()) editor.open = true;
-  if (editor.open && tab("Your code", RightTab::Code, &editor.open)) {
+  if (editor.open && tab(tr_label("Your code"), RightTab::Code, &editor.open)) {
     exercises_.draw_student_code_tab(probe_);
     ImGui::EndTabItem();
   }
   bool& repairs_open = document_.repairs_tab_open();
-  if (!document_.repair_marks().empty() && repairs_open && tab("Repairs", RightTab::Repairs, &repairs_open)) {
+  if (!document_.repair_marks().empty() && repairs_open && tab(tr_label("Repairs"), RightTab::Repairs, &repairs_open)) {
     document_.draw_repairs_tab(view_.mode() == ViewMode::Mesh, settings_.theme);
     ImGui::EndTabItem();
   }
@@ -195,7 +199,8 @@ void PanelsRoom::draw_right_tabs() {
 void PanelsRoom::draw_console_strip() {
   if (layout_.console.empty()) return;
   place_next_window(layout_.console);
-  if (ImGui::Begin("Lua console (`)###console", &console_panel_.open, kColumnFlags)) {
+  const std::string title = std::string(tr("Lua console (`)")) + "###console";
+  if (ImGui::Begin(title.c_str(), &console_panel_.open, kColumnFlags)) {
     draw_console_panel_contents(console_, console_panel_, document_.doc(), document_.selection());
   }
   ImGui::End();
@@ -223,6 +228,16 @@ void PanelsRoom::change_font_size(int steps) {
 void PanelsRoom::apply_settings(const Settings& settings) {
   settings_ = settings;
   set_theme(settings.theme);
+  const std::optional<Language> chosen = language_by_code(settings.language);
+  set_language(chosen.value_or(system_language()));
+  if (!chosen) settings_.language.clear();  // still the system's: the settings file keeps following it
+}
+
+void PanelsRoom::set_language(Language language) {
+  settings_.language = language_code(language);
+  if (language == window_language()) return;
+  for (const std::string& problem : set_window_language(language)) document_.message(Severity::Warning, problem);
+  look_changed_ = true;  // the fonts again, with the glyphs the language needs
 }
 
 void PanelsRoom::set_theme(Theme theme) {

@@ -20,6 +20,7 @@
 
 #include <utility>
 
+#include "core/translation.h"
 #include "document/script_console.h"
 #include "document/settings.h"
 #include "document/window_layout.h"
@@ -48,6 +49,8 @@ class PanelsRoom {
   Settings& settings() { return settings_; }
   void apply_settings(const Settings& settings);  // at start: the theme at once, the rest with the look
   void set_theme(Theme theme);
+  // View > Language: the window's texts, the lesson's and the fonts' glyphs switch at the next frame; remembered.
+  void set_language(Language language);
   void change_font_size(int steps);  // 0: back to the default
   // True once after the text size or the theme changed: the window applies the look before its next frame.
   bool take_look_change() { return std::exchange(look_changed_, false); }

@@ -3,6 +3,7 @@
 
 #include <vector>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -66,19 +67,26 @@ void ViewQuality::write_wireframe(ViewOptions& options) {
 }
 
 void ViewQuality::update_note() {
-  std::vector<const char*> dropped;
-  if (governor_.drops(QualityStep::Multisampling)) dropped.push_back("multisampling");
-  if (governor_.drops(QualityStep::BackSides)) dropped.push_back("back sides");
-  if (governor_.drops(QualityStep::Wireframe)) dropped.push_back("wireframe");  // last: "(W shows it)" follows
+  // In the window's language (made again each frame the view draws): each dropped step's name, listed by a template
+  // per count, the list under the frame time or "large mesh", then how to get the wireframe back.
+  std::vector<std::string> dropped;
+  if (governor_.drops(QualityStep::Multisampling)) dropped.emplace_back(tr("multisampling"));
+  if (governor_.drops(QualityStep::BackSides)) dropped.emplace_back(tr("back sides"));
+  if (governor_.drops(QualityStep::Wireframe)) dropped.emplace_back(tr("wireframe"));  // last: "(W shows it)" follows
   note_.clear();
   if (dropped.empty()) return;
-  note_ = governor_.slow_ms() > 0.0 ? "frame " + format_fixed(governor_.slow_ms(), 0) + " ms: " : "large mesh: ";
-  for (size_t i = 0; i < dropped.size(); ++i) {
-    if (i > 0) note_ += i + 1 == dropped.size() ? " and " : ", ";
-    note_ += dropped[i];
+  std::string off;
+  if (dropped.size() == 1) {
+    off = tr_format("{a} off", {{"a", dropped[0]}});
+  } else if (dropped.size() == 2) {
+    off = tr_format("{a} and {b} off", {{"a", dropped[0]}, {"b", dropped[1]}});
+  } else {
+    off = tr_format("{a}, {b} and {c} off", {{"a", dropped[0]}, {"b", dropped[1]}, {"c", dropped[2]}});
   }
-  note_ += " off";
-  if (governor_.drops(QualityStep::Wireframe)) note_ += " (W shows it)";
+  note_ = governor_.slow_ms() > 0.0
+              ? tr_format("frame {ms} ms: {dropped}", {{"ms", format_fixed(governor_.slow_ms(), 0)}, {"dropped", off}})
+              : tr_format("large mesh: {dropped}", {{"dropped", off}});
+  if (governor_.drops(QualityStep::Wireframe)) note_ = tr_format("{note} (W shows it)", {{"note", note_}});
 }
 
 }  // namespace meshedit

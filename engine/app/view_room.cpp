@@ -9,6 +9,7 @@
 #include <cmath>
 
 #include "app/document_room.h"
+#include "core/translation.h"
 #include "render/gl_api.h"
 #include "render/labels.h"
 #include "render/mesh_geometry.h"
@@ -95,10 +96,11 @@ void ViewRoom::draw_mesh_view(const ViewMarks& marks) {
   take_pending_view();
   const ViewOptions drawn =
       undrawable_.empty() ? view_quality_.options_to_draw(view_options_, mesh_renderer_->stats()) : view_options_;
-  status_bar_.note = undrawable_.empty() ? view_quality_.note() : "not drawn: " + undrawable_;
+  status_bar_.note =
+      undrawable_.empty() ? view_quality_.note() : tr_format("not drawn: {reason}", {{"reason", undrawable_}});
   if (status_bar_.note.empty() && !view_options_.wireframe &&
       (size_class_ == SizeClass::Dense || size_class_ == SizeClass::Large)) {
-    status_bar_.note = "wireframe off (W shows it)";
+    status_bar_.note = tr("wireframe off (W shows it)");
   }
   edit_animator_.set_enabled(edits_animate(marks.animate_edits));
   edit_animator_.follow(doc);

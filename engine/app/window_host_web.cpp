@@ -21,6 +21,7 @@
 
 #include "app/window_host.h"
 #include "core/file_bytes.h"
+#include "core/translation.h"
 
 // The page's JavaScript (clang-format would space its operators as C++).
 // clang-format off
@@ -154,20 +155,23 @@ std::string host_hand_over(const std::filesystem::path& written) {
   const std::string name = written.filename().string();
   const char* type = written.extension() == ".png" ? "image/png" : "application/octet-stream";
   std::unique_ptr<char, void (*)(void*)> failure(page_download(written.c_str(), name.c_str(), type), std::free);
-  if (failure && *failure) throw std::runtime_error("the browser could not download " + name + ": " + failure.get());
-  return "downloaded as " + name;
+  if (failure && *failure) {
+    throw std::runtime_error(
+        tr_format("the browser could not download {file}: {why}", {{"file", name}, {"why", failure.get()}}));
+  }
+  return tr_format("downloaded as {file}", {{"file", name}});
 }
 
 std::string host_keep_file(const std::filesystem::path& written) {
   std::unique_ptr<char, void (*)(void*)> failure(page_keep_file(written.c_str()), std::free);
-  if (failure && *failure) return "not kept in this browser: " + std::string(failure.get());
-  return "kept in this browser";
+  if (failure && *failure) return tr_format("not kept in this browser: {why}", {{"why", failure.get()}});
+  return tr("kept in this browser");
 }
 
 std::string host_keep_draft(const std::string& name, const std::string& text) {
   std::error_code error;
   std::filesystem::create_directories(kDraftFolder, error);
-  if (error) return "this browser keeps no drafts: " + error.message();
+  if (error) return tr_format("this browser keeps no drafts: {why}", {{"why", error.message()}});
   if (std::string failure = write_file_bytes(kDraftFolder / name, text); !failure.empty()) return failure;
   page_sync_kept();
   return "";

@@ -6,6 +6,7 @@
 #include "app/exercise_room.h"
 #include "app/spawned_program.h"
 #include "app/writeup_room.h"
+#include "core/translation.h"
 
 namespace meshedit {
 
@@ -47,7 +48,7 @@ std::optional<WriteupRoom::RunEnd> WriteupRoom::poll_run() {
   for (std::string line; std::getline(lines, line);) {
     const size_t at = line.find(" problem: ");  // "4.1 problem: ..."
     if (at <= 4) end.failed.push_back(line.substr(0, at));
-    if (line.starts_with("not drawn: ")) end.failed.push_back("a picture not drawn");
+    if (line.starts_with("not drawn: ")) end.failed.push_back(tr("a picture not drawn"));
     if (!line.empty()) last = line;
   }
   const int code = host_->process.exit_code();

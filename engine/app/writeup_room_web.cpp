@@ -10,6 +10,7 @@
 #include "app/writeup_pictures.h"
 #include "app/writeup_room.h"
 #include "core/file_bytes.h"
+#include "core/translation.h"
 #include "document/page_worker_job.h"
 #include "writeup/writeup_page.h"
 #include "writeup/writeup_settings.h"
@@ -64,7 +65,8 @@ std::string WriteupRoom::start_run(const std::filesystem::path& folder) {
   stop_run();
   const std::vector<uint8_t> request = encode_writeup_request(folder, request_files(folder, output_folder()));
   const std::string why = host_->job.start("meshedit_writeup", request, kWorkerSeconds);
-  return why.empty() ? "" : "the page could not start a worker for your code (a Web Worker): " + why;
+  if (why.empty()) return "";
+  return tr_format("the page could not start a worker for your code (a Web Worker): {why}", {{"why", why}});
 }
 
 void WriteupRoom::stop_run() {
@@ -81,9 +83,11 @@ std::optional<WriteupRoom::RunEnd> WriteupRoom::poll_run() {
       host_->made = decode_writeup(host_->job.take_answer());  // drawn by finish_made, after this frame
       host_->job.release(false);  // its memory grew with the write-up's meshes: a new worker for the next job
       return std::nullopt;
-    case PageWorkerJob::End::Overdue: end.problem = "the page's worker ran past 600 s and was stopped"; break;
-    case PageWorkerJob::End::NeverStarted: end.problem = "the page's worker did not start within 120 s"; break;
-    case PageWorkerJob::End::Died: end.problem = "the page's worker stopped: " + host_->job.died_words(); break;
+    case PageWorkerJob::End::Overdue: end.problem = tr("the page's worker ran past 600 s and was stopped"); break;
+    case PageWorkerJob::End::NeverStarted: end.problem = tr("the page's worker did not start within 120 s"); break;
+    case PageWorkerJob::End::Died:
+      end.problem = tr_format("the page's worker stopped: {why}", {{"why", host_->job.died_words()}});
+      break;
     case PageWorkerJob::End::Stopped: return std::nullopt;
   }
   return end;
@@ -96,7 +100,7 @@ void WriteupRoom::finish_made() {
   RunEnd end;
   try {
     if (writeup.parts.empty()) {
-      end.problem = writeup.notes.empty() ? std::string("the worker sent an empty write-up") : writeup.notes.front();
+      end.problem = writeup.notes.empty() ? tr("the worker sent an empty write-up") : writeup.notes.front();
       announce(end);
       return;
     }
@@ -113,7 +117,7 @@ void WriteupRoom::finish_made() {
         if (!figure.problem.empty()) end.failed.push_back(figure.number);
       }
     }
-    if (!not_drawn.empty()) end.failed.push_back("a picture not drawn");
+    if (!not_drawn.empty()) end.failed.push_back(tr("a picture not drawn"));
     end.where = host_hand_over(page);  // "downloaded as index.html"
   } catch (const std::exception& e) {  // the browser refused the download, memory ran out drawing
     end = RunEnd{};

@@ -85,6 +85,8 @@ constexpr Command kCommands[] = {
     {I::DefaultText, "default-text", "View > Default text size", "Ctrl+0", "Ctrl+keypad 0", V::Everywhere,
      "the default text size"},
     {I::Theme, "theme", "View > Theme", nullptr, nullptr, V::Everywhere, nullptr, false, false, false, kSubmenu},
+    {I::Language, "language", "View > Language", nullptr, nullptr, V::Everywhere, nullptr, false, false, false,
+     kSubmenu},
     {I::ResetView, "reset-view", "View > Reset view", "Space", nullptr, V::Everywhere, "reset the view", false, false,
      kSeparator},
     // ---- Help ----

@@ -72,6 +72,7 @@ enum class CommandId {
   SmallerText,
   DefaultText,
   Theme,
+  Language,
   ResetView,
   // Help
   Keys,
@@ -103,7 +104,7 @@ struct Command {
   bool edits;             // changes the mesh or its history: a running exercise replay is finished first
   bool lesson_can_wait;   // a lesson may wait_for{command = name}: told to it each time the command ran
   bool separator_before;  // its menu draws a separator above it
-  bool submenu;           // its menu item opens a submenu (Open recent, Up axis, Theme): nothing to run
+  bool submenu;           // its menu item opens a submenu (Open recent, Up axis, Theme, Language): nothing to run
 };
 
 std::span<const Command> commands();

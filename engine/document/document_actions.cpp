@@ -12,6 +12,7 @@
 
 #include "core/mesh_ops.h"
 #include "core/parallel_for.h"
+#include "core/translation.h"
 #include "core/triangulate.h"
 #include "document/edge_edit_label.h"
 
@@ -19,7 +20,8 @@ namespace meshedit {
 namespace {
 
 // The edits' labels as strings made when the program starts: apply_operation takes them without a copy that could run
-// out of memory (each is longer than std::string's inline buffer).
+// out of memory (each is longer than std::string's inline buffer). English in every language (the history keeps them;
+// the status line shows them translated).
 const std::string kLoopSubdivisionLabel = "Loop subdivision";
 const std::string kTriangulateLabel = "Triangulate every face";
 const std::string kLoopPhaseLabels[] = {
@@ -56,7 +58,7 @@ void append_to_message(MeshDocument& doc, MakeText&& make_text) noexcept {
 OpResult<EdgeId> find_edge(const HalfedgeMesh& mesh, ElementRef selected) {
   OpResult<EdgeId> result;
   if (!selected.valid()) {
-    result.check = Check::no("select an edge first");
+    result.check = Check::no(tr("select an edge first"));
     return result;
   }
   if (selected.kind == ElementKind::Edge) {
@@ -76,8 +78,16 @@ OpResult<EdgeId> find_edge(const HalfedgeMesh& mesh, ElementRef selected) {
     result.value = EdgeId(edge.value.index);
     return result;
   }
-  result.check = Check::no(format_id(selected) + " is a " + kind_name(selected.kind) +
-                           "; select an edge (or one of its halfedges) first");
+  const char* not_an_edge = "{element} is a {kind}; select an edge (or one of its halfedges) first";
+  if (selected.kind == ElementKind::Vertex) {
+    not_an_edge = "{element} is a vertex; select an edge (or one of its halfedges) first";
+  } else if (selected.kind == ElementKind::Face) {
+    not_an_edge = "{element} is a face; select an edge (or one of its halfedges) first";
+  } else if (selected.kind == ElementKind::Boundary) {
+    not_an_edge = "{element} is a boundary; select an edge (or one of its halfedges) first";
+  }
+  result.check =
+      Check::no(tr_format(not_an_edge, {{"element", format_id(selected)}, {"kind", kind_name(selected.kind)}}));
   return result;
 }
 
@@ -85,7 +95,9 @@ OpResult<EdgeId> find_edge(const HalfedgeMesh& mesh, ElementRef selected) {
 template <class Op>
 auto edit_selected_edge(MeshDocument& doc, Selection& selection, EdgeOperation operation, Op op) {
   using Result = decltype(op(doc.mesh, EdgeId()));
-  const char* verb = edge_operation_verb(operation);
+  const char* refused = operation == EdgeOperation::Flip    ? "flip: {reason}"
+                        : operation == EdgeOperation::Split ? "split: {reason}"
+                                                            : "collapse: {reason}";
   Result result{};
   OpResult<EdgeId> edge;
   std::string label;
@@ -97,7 +109,7 @@ auto edit_selected_edge(MeshDocument& doc, Selection& selection, EdgeOperation o
     return result;
   }
   if (!edge) {
-    set_message_noexcept(doc, Severity::Warning, [&] { return std::string(verb) + ": " + edge.check.reason; });
+    set_message_noexcept(doc, Severity::Warning, [&] { return tr_format(refused, {{"reason", edge.check.reason}}); });
     result.check = std::move(edge.check);
     return result;
   }
@@ -132,15 +144,18 @@ bool navigate_selection(MeshDocument& doc, Selection& selection, NavStep step) {
     return false;
   }
   selection.selected = target.value;
-  set_message_noexcept(doc, Severity::Info,
-                       [&] { return std::string(1, nav_key(step)) + ": selected " + format_id(target.value); });
+  set_message_noexcept(doc, Severity::Info, [&] {
+    return tr_format("{key}: selected {element}",
+                     {{"key", std::string(1, nav_key(step))}, {"element", format_id(target.value)}});
+  });
   return true;
 }
 
 bool select_element(MeshDocument& doc, Selection& selection, ElementRef element) {
   if (!in_range(doc.mesh, element)) {
-    set_message_noexcept(doc, Severity::Warning,
-                         [&] { return "cannot select: " + reference_problem(doc.mesh, element); });
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return tr_format("cannot select: {why}", {{"why", reference_problem(doc.mesh, element)}});
+    });
     return false;
   }
   selection.selected = element;
@@ -155,7 +170,9 @@ Check flip_selected(MeshDocument& doc, Selection& selection) {
 Check split_selected(MeshDocument& doc, Selection& selection) {
   const auto split_edge = [](HalfedgeMesh& m, EdgeId e) { return split(m, e); };
   OpResult<VertexId> result = edit_selected_edge(doc, selection, EdgeOperation::Split, split_edge);
-  if (result) append_to_message(doc, [&] { return "; new vertex " + format_id(result.value); });
+  if (result) {
+    append_to_message(doc, [&] { return tr_format("; new vertex {vertex}", {{"vertex", format_id(result.value)}}); });
+  }
   return std::move(result.check);
 }
 
@@ -164,7 +181,7 @@ Check collapse_selected(MeshDocument& doc, Selection& selection) {
   OpResult<VertexId> result = edit_selected_edge(doc, selection, EdgeOperation::Collapse, collapse_edge);
   if (result) {
     selection.selected = result.value;
-    append_to_message(doc, [&] { return "; " + format_id(result.value) + " remains"; });
+    append_to_message(doc, [&] { return tr_format("; {vertex} remains", {{"vertex", format_id(result.value)}}); });
   }
   return std::move(result.check);
 }
@@ -189,9 +206,10 @@ Check triangulate_all(MeshDocument& doc, Selection& selection) {
   selection = Selection{};  // the mesh was rebuilt: an id now names another element
   doc.loop = LoopStepper{};
   append_to_message(doc, [&] {
-    if (report.polygons_split == 0) return std::string("; every face was already a triangle");
-    return "; " + std::to_string(report.polygons_split) + " faces split into " + std::to_string(report.triangles_made) +
-           " triangles";
+    if (report.polygons_split == 0) return std::string(tr("; every face was already a triangle"));
+    return tr_format(
+        "; {faces} faces split into {triangles} triangles",
+        {{"faces", std::to_string(report.polygons_split)}, {"triangles", std::to_string(report.triangles_made)}});
   });
   return check;
 }
@@ -209,7 +227,8 @@ Check loop_subdivide_step(MeshDocument& doc, Selection& selection, LoopWeights w
   const int phase = restarting ? 1 : doc.loop.next_phase;
   const std::string& label = kLoopPhaseLabels[phase];
   auto restarted = [&] {
-    return restarting ? "the mesh changed after Loop phase " + std::to_string(stale_phase) + "; starting again. "
+    return restarting ? tr_format("the mesh changed after {scheme} phase {phase}; starting again. ",
+                                  {{"scheme", "Loop"}, {"phase", std::to_string(stale_phase)}})
                       : std::string();
   };
   Check check;
@@ -222,13 +241,19 @@ Check loop_subdivide_step(MeshDocument& doc, Selection& selection, LoopWeights w
     }
     if (restarting) doc.loop = LoopStepper{};
     if (!state) {
-      set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + state.check.reason; });
+      set_message_noexcept(doc, Severity::Warning, [&] {
+        return restarted() + tr_format("{change}: {reason}", {{"change", tr(label)}, {"reason", state.check.reason}});
+      });
       return std::move(state.check);
     }
     doc.loop.state = std::move(state.value);
     set_message_noexcept(doc, Severity::Info, [&] {
-      return restarted() + label + ": positions for " + std::to_string(doc.mesh.num_vertices()) + " vertices and " +
-             std::to_string(doc.loop.state.original_edges.size()) + " edge points; nothing moved yet";
+      return restarted() + tr_format(
+                               "{change}: positions for {vertices} vertices and {points} edge points; nothing "
+                               "moved yet",
+                               {{"change", tr(label)},
+                                {"vertices", std::to_string(doc.mesh.num_vertices())},
+                                {"points", std::to_string(doc.loop.state.original_edges.size())}});
     });
   } else {
     LoopState& state = doc.loop.state;

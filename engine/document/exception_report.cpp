@@ -4,6 +4,8 @@
 #include <new>
 #include <string>
 
+#include "core/translation.h"
+
 namespace meshedit {
 namespace {
 
@@ -22,8 +24,8 @@ void report_exception(MeshDocument& doc, const std::exception& error) noexcept {
 void report_escaped_exception(MeshDocument& doc, const std::exception& error) noexcept {
   const bool out_of_memory = is_out_of_memory(error);
   set_message_noexcept(doc, Severity::Error, [&] {
-    return out_of_memory ? std::string("memory ran out; the last action did not finish")
-                         : std::string("the last action failed: ") + error.what();
+    return out_of_memory ? std::string(tr("memory ran out; the last action did not finish"))
+                         : tr_format("the last action failed: {error}", {{"error", error.what()}});
   });
 }
 

@@ -21,6 +21,7 @@
 #include <utility>
 
 #include "core/mesh_error.h"
+#include "core/translation.h"
 #include "document/document_actions.h"
 #include "document/exception_report.h"
 #include "exercise/exercise_registry.h"
@@ -44,6 +45,19 @@ const char* operation_word(Exercise exercise) {
   }
 }
 
+// "select a face first: flip_face(mesh, f)": the selection a scripted exercise asks for.
+std::string select_first(ElementKind kind, const std::string& signature) {
+  const MessageParts parts = {{"signature", signature}, {"kind", kind_name(kind)}};
+  switch (kind) {
+    case ElementKind::Vertex: return tr_format("select a vertex first: {signature}", parts);
+    case ElementKind::Halfedge: return tr_format("select a halfedge first: {signature}", parts);
+    case ElementKind::Edge: return tr_format("select an edge first: {signature}", parts);
+    case ElementKind::Face: return tr_format("select a face first: {signature}", parts);
+    case ElementKind::Boundary: return tr_format("select a boundary first: {signature}", parts);
+  }
+  return tr_format("select a {kind} first: {signature}", parts);
+}
+
 // The input the active exercise takes from the selection, or why the selection does not fit.
 OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, const Selection& selection) {
   auto mesh = std::make_shared<const HalfedgeMesh>(doc.mesh);
@@ -56,7 +70,7 @@ OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, co
     }
     case ExerciseKind::VertexNormal: {
       const ElementRef ref = selection.selected;
-      if (!ref.valid() || ref.kind != ElementKind::Vertex) return {Check::no("select a vertex first"), {}};
+      if (!ref.valid() || ref.kind != ElementKind::Vertex) return {Check::no(tr("select a vertex first")), {}};
       if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
       return {Check::yes(), ExerciseInput::vertex(std::move(mesh), VertexId(ref.index))};
     }
@@ -72,19 +86,15 @@ OpResult<ExerciseInput> input_for(Exercise exercise, const MeshDocument& doc, co
       return {Check::yes(), ExerciseInput::element_of(std::move(mesh), edge.value)};
     }
     const ElementRef ref = selection.selected;
-    if (!ref.valid() || ref.kind != kind) {
-      return {Check::no(std::string("select ") + (kind == ElementKind::Edge ? "an " : "a ") + kind_name(kind) +
-                        " first: " + scripted->info().signature),
-              {}};
-    }
+    if (!ref.valid() || ref.kind != kind) return {Check::no(select_first(kind, scripted->info().signature)), {}};
     if (reference_state(doc.mesh, ref) != RefState::Live) return {Check::no(reference_problem(doc.mesh, ref)), {}};
     return {Check::yes(), ExerciseInput::element_of(std::move(mesh), ref)};
   }
-  return {Check::no(std::string(exercise_info(exercise).name) + " is not a mesh exercise"), {}};
+  return {Check::no(tr_format("{exercise} is not a mesh exercise", {{"exercise", exercise_info(exercise).name}})), {}};
 }
 
 std::string point_text(const std::vector<glm::dvec3>& points) {
-  if (points.empty()) return "nothing";
+  if (points.empty()) return tr("nothing");
   const glm::dvec3& p = points.front();
   return "(" + std::to_string(p.x) + ", " + std::to_string(p.y) + ", " + std::to_string(p.z) + ")";
 }
@@ -174,8 +184,8 @@ OpResult<ExerciseInput> ExerciseSession::values_input_for(std::string& what) con
     return {Check::yes(), *values_input_};
   }
   if (!scripted || fixture_ >= scripted->fixtures().size()) {
-    return {Check::no(std::string(exercise_info(exercise_).name) + " has no fixture to run on (its definition's "
-                                                                   "fixtures = {...})"),
+    return {Check::no(tr_format("{exercise} has no fixture to run on (its definition's fixtures = {{...}})",
+                                {{"exercise", exercise_info(exercise_).name}})),
             {}};
   }
   const ScriptedFixture& fixture = scripted->fixtures()[fixture_];
@@ -219,7 +229,8 @@ Check ExerciseSession::end_and_take(MeshDocument& doc, Selection& selection, Pen
 }
 
 Check ExerciseSession::refuse_while_running(MeshDocument& doc) const {
-  Check no = Check::no("your code is still running (" + pending_->run.result.label + "): wait for it, or press Stop");
+  Check no = Check::no(tr_format("your code is still running ({run}): wait for it, or press Stop",
+                                 {{"run", pending_->run.result.label}}));
   set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
   return no;
 }
@@ -233,7 +244,8 @@ Check ExerciseSession::start_mine(MeshDocument& doc, Selection& selection) {
     pending->generation = doc.generation;
     pending->version = doc.mesh.version();
     pending->started = std::chrono::steady_clock::now();
-    set_message(doc, Severity::Info, pending->run.result.label + ": your code is running (Stop ends it)");
+    set_message(doc, Severity::Info,
+                tr_format("{run}: your code is running (Stop ends it)", {{"run", pending->run.result.label}}));
     pending_ = std::move(pending);
     try {
       work_.start(std::move(pending_->call), std::move(pending_->code));
@@ -280,8 +292,10 @@ Check ExerciseSession::take_pending(MeshDocument& doc, Selection& selection) {
   pending->keep(work_.take());
   student_.give_back(work_.take_code(), pending->code_serial);
   if (doc.generation != pending->generation || doc.mesh.version() != pending->version) {
-    Check no = Check::no(pending->run.result.label +
-                         ": the mesh changed while your code ran, so its result is left out: run it again");
+    Check no =
+        Check::no(tr_format("{run}: the mesh changed while your code ran, so its result is left out: run it "
+                            "again",
+                            {{"run", pending->run.result.label}}));
     set_message_noexcept(doc, Severity::Warning, [&] { return no.reason; });
     return no;
   }
@@ -294,7 +308,7 @@ Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool m
   const char* who = mine ? "mine" : "reference";
   // An instructor's exercise whose definition was saved since: its new version runs (or its error is shown).
   if (const std::string error = exercise_registry().reload_if_changed(exercise_); !error.empty()) {
-    Check refused = Check::no("the exercise's definition did not load: " + error);
+    Check refused = Check::no(tr_format("the exercise's definition did not load: {error}", {{"error", error}}));
     set_message_noexcept(doc, Severity::Error, [&] { return refused.reason; });
     return refused;
   }
@@ -305,7 +319,9 @@ Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool m
   if (!input.ok()) {
     // A refusal for lack of memory is an Error: memory to spare might have run it.
     const Severity severity = input.check.reason == kMemoryRanOut ? Severity::Error : Severity::Warning;
-    set_message_noexcept(doc, severity, [&] { return who + std::string(": ") + input.check.reason; });
+    set_message_noexcept(doc, severity, [&] {
+      return tr_format(mine ? "mine: {reason}" : "reference: {reason}", {{"reason", input.check.reason}});
+    });
     return std::move(input.check);
   }
   if (mine && !ensure_loaded()) {
@@ -337,7 +353,9 @@ Check ExerciseSession::begin_run(MeshDocument& doc, Selection& selection, bool m
     throw;                             // run() reports it: nothing was done
   } catch (const std::exception& e) {  // the reference promises not to throw; a bug must not close the window
     run_.reset();
-    set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
+    set_message_noexcept(doc, Severity::Error, [&] {
+      return tr_format("{change}: {reason}", {{"change", result.label}, {"reason", e.what()}});
+    });
     return Check::no(e.what());
   }
   if (mine) {
@@ -373,7 +391,9 @@ Check ExerciseSession::end_run(MeshDocument& doc, PendingRun& pending, std::opti
     throw;                             // run() reports it: nothing was done
   } catch (const std::exception& e) {  // the run promises not to throw; a bug must not close the window
     run_.reset();
-    set_message_noexcept(doc, Severity::Error, [&] { return result.label + ": " + e.what(); });
+    set_message_noexcept(doc, Severity::Error, [&] {
+      return tr_format("{change}: {reason}", {{"change", result.label}, {"reason", e.what()}});
+    });
     return Check::no(e.what());
   }
 
@@ -388,14 +408,18 @@ Check ExerciseSession::end_run(MeshDocument& doc, PendingRun& pending, std::opti
   if (failed) {
     run.verdict = outcome.error;
   } else if (!mine) {
-    run.verdict = outcome.refused.empty() ? "returned " + outcome.returned : "refused: " + outcome.refused;
-    if (result.exercise == Exercise::VertexNormal) run.verdict = "normal " + point_text(outcome.points);
+    run.verdict = outcome.refused.empty() ? tr_format("returned {value}", {{"value", outcome.returned}})
+                                          : tr_format("refused: {reason}", {{"reason", outcome.refused}});
+    if (result.exercise == Exercise::VertexNormal) {
+      run.verdict = tr_format("normal {point}", {{"point", point_text(outcome.points)}});
+    }
   } else {
     run.verdict = mine_verdict(result.report);
   }
   run.severity = failed || (mine && !result.report.equal) ? Severity::Warning : Severity::Info;
-  run.unchanged_text =
-      pending.on_values ? result.label + ": " + run.verdict : result.label + ": nothing changed (" + run.verdict + ")";
+  const MessageParts parts = {{"change", result.label}, {"reason", run.verdict}, {"verdict", run.verdict}};
+  run.unchanged_text = pending.on_values ? tr_format("{change}: {reason}", parts)
+                                         : tr_format("{change}: nothing changed ({verdict})", parts);
   run.returned = failed ? Check::no(outcome.error) : Check::yes();
   if (outcome.mesh && !outcome.mesh->same_as(doc.mesh)) run.mesh = *outcome.mesh;  // the report keeps its own
   prepared = std::move(run);
@@ -420,7 +444,9 @@ Check ExerciseSession::take_run(MeshDocument& doc, Selection& selection, Prepare
     keep_if_alive(selection, doc.mesh);
     // Kept without its record, the document's Warning stays a Warning.
     const Severity severity = std::max(run.severity, doc.message.severity);
-    set_message_noexcept(doc, severity, [&] { return doc.message.text + " (" + run.verdict + ")"; });
+    set_message_noexcept(doc, severity, [&] {
+      return tr_format("{message} ({verdict})", {{"message", doc.message.text}, {"verdict", run.verdict}});
+    });
   } else {
     set_message(doc, run.severity, std::move(run.unchanged_text));
   }
@@ -453,14 +479,17 @@ void ExerciseSession::show(MeshDocument& doc, HalfedgeMesh mesh, std::string lab
 Check ExerciseSession::start_replay(MeshDocument& doc) {
   if (pending_) return refuse_while_running(doc);
   if (!can_replay(doc)) {
-    const Check no = Check::no("nothing to replay: run mine on a mesh exercise first (and do not edit in between)");
+    const Check no = Check::no(tr("nothing to replay: run mine on a mesh exercise first (and do not edit in between)"));
     set_message(doc, Severity::Warning, no.reason);
     return no;
   }
   replaying_ = true;
   position_ = 0;
   const HalfedgeMesh& before = *run_->input.mesh;
-  show(doc, before, "replay 0/" + std::to_string(replay_length()) + ": before " + run_->label, before);
+  show(doc, before,
+       tr_format("replay {step}/{steps}: before {run}",
+                 {{"step", "0"}, {"steps", std::to_string(replay_length())}, {"run", run_->label}}),
+       before);
   return Check::yes();
 }
 
@@ -472,17 +501,23 @@ Check ExerciseSession::replay_step(MeshDocument& doc, size_t k) {
   try {
     HalfedgeMesh previous = replay(before, log, k == 0 ? 0 : k - 1);
     HalfedgeMesh state = previous;
-    std::string label = "replay 0/" + std::to_string(log.size()) + ": before " + run_->label;
+    std::string label = tr_format("replay {step}/{steps}: before {run}",
+                                  {{"step", "0"}, {"steps", std::to_string(log.size())}, {"run", run_->label}});
     if (k > 0) {
       apply_edit(state, log[k - 1]);
       const RecordedEdit& edit = log[k - 1];
-      label = "replay " + std::to_string(k) + "/" + std::to_string(log.size()) + ": " + describe(edit) +
-              (edit.where.empty() ? "" : "  (" + edit.where + ")");
+      const MessageParts parts = {{"step", std::to_string(k)},
+                                  {"steps", std::to_string(log.size())},
+                                  {"edit", describe(edit)},
+                                  {"where", edit.where}};
+      label = edit.where.empty() ? tr_format("replay {step}/{steps}: {edit}", parts)
+                                 : tr_format("replay {step}/{steps}: {edit}  ({where})", parts);
     }
     show(doc, std::move(state), std::move(label), std::move(previous));
   } catch (const std::exception& e) {
     // The recording promises a faithful replay; if it is not, say so and go back to the real result.
-    const Check no = Check::no(std::string("replay failed at write ") + std::to_string(k) + ": " + e.what());
+    const Check no = Check::no(
+        tr_format("replay failed at write {write}: {error}", {{"write", std::to_string(k)}, {"error", e.what()}}));
     finish_replay(doc);
     set_message(doc, Severity::Error, no.reason);
     return no;

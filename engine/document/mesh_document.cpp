@@ -36,18 +36,49 @@
 #include "core/parallel_for.h"
 #include "core/patch_check.h"
 #include "core/quick_check.h"
-#include "core/value_format.h"
+#include "core/translation.h"
+#include "document/edge_edit_label.h"
 
 namespace meshedit {
 namespace {
 
 // ---- recording a change ----------------------------------------------------------------------------
 
+// A change's label as the status line shows it, in the window's language ("undo flip e5", "Loop subdivision"); the
+// label itself stays English, as the history keeps it and the window reads it back (edge_edit_label.h).
+std::string shown_label(const std::string& label) {
+  std::string_view change = label;
+  const char* step = nullptr;  // the undo or redo in front
+  if (change.substr(0, 5) == "undo ") step = "undo {change}";
+  if (change.substr(0, 5) == "redo ") step = "redo {change}";
+  if (step) change.remove_prefix(5);
+  std::string shown;
+  const std::optional<EdgeEditLabel> edit = read_edge_edit_label(change);
+  if (edit && !edit->undone && edge_edit_label(edit->operation, edit->edge) == change) {
+    const MessageParts edge = {{"edge", format_id(edit->edge)}};
+    switch (edit->operation) {
+      case EdgeOperation::Flip: shown = tr_format("flip {edge}", edge); break;
+      case EdgeOperation::Split: shown = tr_format("split {edge}", edge); break;
+      case EdgeOperation::Collapse: shown = tr_format("collapse {edge}", edge); break;
+    }
+  } else {
+    shown = tr(std::string(change));  // the edits' fixed labels ("Loop subdivision"); others stay as they are
+  }
+  return step ? tr_format(step, {{"change", shown}}) : shown;
+}
+
 // The status line for `last` ("flip e5: 12 fields changed").
 std::string change_summary(const LastChange& last, const DocumentLimits& limits) {
-  if (last.listed) return last.label + ": " + plural(last.change_count, "field", "fields") + " changed";
-  return last.label + ": more than " + plural(limits.max_listed_changes, "field", "fields") +
-         " changed (too many to list)";
+  if (last.listed) {
+    const MessageParts parts = {{"change", shown_label(last.label)}, {"count", std::to_string(last.change_count)}};
+    if (last.change_count == 1) return tr_format("{change}: {count} field changed", parts);
+    return tr_format("{change}: {count} fields changed", parts);
+  }
+  const MessageParts parts = {{"change", shown_label(last.label)},
+                              {"count", std::to_string(limits.max_listed_changes)}};
+  return tr_format(limits.max_listed_changes == 1 ? "{change}: more than {count} field changed (too many to list)"
+                                                  : "{change}: more than {count} fields changed (too many to list)",
+                   parts);
 }
 
 // The new `last` for a change to the current mesh from the state before it, whose version() was `version_before`:
@@ -123,17 +154,21 @@ void keep_unrecorded_change(MeshDocument& doc, const std::string& label, uint64_
 
 // The message after an operation whose journal lost the state before it (see keep_unrecorded_change).
 void report_state_before_lost(MeshDocument& doc, const std::string& label, const Check& check, ElementRef culprit) {
-  const std::string_view cause = "memory ran out saving the mesh before it, so ";
   if (check.ok) {
     set_message_noexcept(doc, Severity::Warning, [&] {
-      return label + ": done, but " + std::string(cause) + "it cannot be undone: undo history cleared";
+      return tr_format(
+          "{change}: done, but memory ran out saving the mesh before it, so it cannot be undone: undo "
+          "history cleared",
+          {{"change", shown_label(label)}});
     });
   } else {
     set_message_noexcept(
         doc, Severity::Error,
         [&] {
-          return label + ": " + check.reason + "; " + std::string(cause) +
-                 "it could not be undone: the mesh is as the operation left it, undo history cleared";
+          return tr_format(
+              "{change}: {reason}; memory ran out saving the mesh before it, so it could not be undone: "
+              "the mesh is as the operation left it, undo history cleared",
+              {{"change", shown_label(label)}, {"reason", check.reason}});
         },
         culprit);
   }
@@ -212,8 +247,9 @@ void record_operation(MeshDocument& doc, const std::string& label, ChangeJournal
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, version_before, in_history);
     set_message_noexcept(doc, Severity::Warning, [&] {
-      return label + (in_history ? ": done, but memory ran out listing its changes"
-                                 : ": done, but memory ran out recording it: undo history cleared");
+      const MessageParts parts = {{"change", shown_label(label)}};
+      return in_history ? tr_format("{change}: done, but memory ran out listing its changes", parts)
+                        : tr_format("{change}: done, but memory ran out recording it: undo history cleared", parts);
     });
   }
 }
@@ -272,9 +308,13 @@ void replace_mesh(MeshDocument& doc, HalfedgeMesh mesh, std::string path) {
   doc.loop = LoopStepper{};
   ++doc.generation;
   set_message_noexcept(doc, Severity::Info, [&] {
-    const std::string name = doc.path.empty() ? std::string("new mesh") : doc.path;
-    return "opened " + name + ": " + plural(doc.mesh.num_vertices(), "vertex", "vertices") + ", " +
-           plural(doc.mesh.num_faces(), "face", "faces");
+    const std::string name = doc.path.empty() ? std::string(tr("new mesh")) : doc.path;
+    const size_t vertices = doc.mesh.num_vertices(), faces = doc.mesh.num_faces();
+    const MessageParts v = {{"count", std::to_string(vertices)}}, f = {{"count", std::to_string(faces)}};
+    return tr_format("opened {file}: {vertices}, {faces}",
+                     {{"file", name},
+                      {"vertices", tr_format(vertices == 1 ? "{count} vertex" : "{count} vertices", v)},
+                      {"faces", tr_format(faces == 1 ? "{count} face" : "{count} faces", f)}});
   });
 }
 
@@ -307,13 +347,19 @@ Check apply_check_operation(MeshDocument& doc, const std::string& label, Operati
     journal.revert();
     set_message_noexcept(
         doc, outcome.severity,
-        [&] { return label + ": " + (outcome.out_of_memory ? "memory ran out; the mesh is as it was" : check.reason); },
+        [&] {
+          const MessageParts parts = {{"change", shown_label(label)}, {"reason", check.reason}};
+          return outcome.out_of_memory ? tr_format("{change}: memory ran out; the mesh is as it was", parts)
+                                       : tr_format("{change}: {reason}", parts);
+        },
         outcome.culprit);
     return std::move(check);
   }
   if (nothing_changed(journal, doc.mesh)) {
     journal.revert();  // also puts back the version an assignment of the same contents brought
-    set_message_noexcept(doc, Severity::Info, [&] { return label + ": nothing changed"; });
+    set_message_noexcept(doc, Severity::Info, [&] {
+      return tr_format("{change}: nothing changed", {{"change", shown_label(label)}});
+    });
     return std::move(check);
   }
   record_operation(doc, label, journal);
@@ -346,7 +392,8 @@ std::string record_step(MeshDocument& doc, const std::string& label, bool forwar
 bool step_history(MeshDocument& doc, bool forward) {
   const char* word = forward ? "redo" : "undo";
   if (!(forward ? doc.history.can_redo() : doc.history.can_undo())) {
-    set_message_noexcept(doc, Severity::Warning, [&] { return std::string("nothing to ") + word; });
+    set_message_noexcept(doc, Severity::Warning,
+                         [&] { return std::string(forward ? tr("nothing to redo") : tr("nothing to undo")); });
     return false;
   }
   std::string label;
@@ -361,7 +408,9 @@ bool step_history(MeshDocument& doc, bool forward) {
     forward ? doc.history.redo(doc.mesh) : doc.history.undo(doc.mesh);
   } catch (const std::bad_alloc&) {
     set_message_noexcept(doc, Severity::Error, [&] {
-      return label + ": memory ran out; nothing was " + (forward ? "redone" : "undone") + ", the mesh is as it was";
+      const MessageParts parts = {{"change", shown_label(label)}};
+      return forward ? tr_format("{change}: memory ran out; nothing was redone, the mesh is as it was", parts)
+                     : tr_format("{change}: memory ran out; nothing was undone, the mesh is as it was", parts);
     });
     return false;
   }
@@ -369,8 +418,9 @@ bool step_history(MeshDocument& doc, bool forward) {
     set_message(doc, Severity::Info, record_step(doc, label, forward, version));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, version, true);  // the history took the step: it still matches
-    set_message_noexcept(doc, Severity::Warning,
-                         [&] { return label + ": done, but memory ran out listing its changes"; });
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return tr_format("{change}: done, but memory ran out listing its changes", {{"change", shown_label(label)}});
+    });
   }
   return true;
 }
@@ -390,8 +440,9 @@ void show_state(MeshDocument& doc, HalfedgeMesh mesh, std::string label, std::op
     set_message(doc, Severity::Info, record_whole_change(doc, label, std::move(before), previous));
   } catch (const std::bad_alloc&) {
     keep_unrecorded_change(doc, label, old_version, true);  // show_state leaves the history alone
-    set_message_noexcept(doc, Severity::Warning,
-                         [&] { return label + ": shown, but memory ran out listing its changes"; });
+    set_message_noexcept(doc, Severity::Warning, [&] {
+      return tr_format("{change}: shown, but memory ran out listing its changes", {{"change", shown_label(label)}});
+    });
   }
 }
 

@@ -7,8 +7,10 @@
 #include <exception>
 #include <functional>
 #include <limits>
+#include <optional>
 #include <sstream>
 
+#include "core/translation.h"
 #include "io/file_access.h"
 
 namespace meshedit {
@@ -95,6 +97,15 @@ const std::vector<Key>& keys() {
          return true;
        },
        [](const Settings& s) { return std::string(s.theme == Theme::Light ? "light" : "dark"); }},
+      {"language", "en or zh (or nothing: the system's)",
+       [](Settings& s, const std::string& text) {
+         if (text.empty()) return true;  // not chosen yet: the window follows the system's locale
+         const std::optional<Language> language = language_by_code(text);
+         if (!language || text != language_code(*language)) return false;
+         s.language = text;
+         return true;
+       },
+       [](const Settings& s) { return s.language; }},
       ems_key("left_column_ems", &LayoutPrefs::left_ems, WindowLayout::kMinColumnEms),
       ems_key("right_column_ems", &LayoutPrefs::right_ems, WindowLayout::kMinColumnEms),
       ems_key("console_ems", &LayoutPrefs::console_ems, WindowLayout::kMinConsoleEms),

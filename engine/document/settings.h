@@ -31,6 +31,8 @@ struct Settings {
   int window_height = kDefaultWindowHeight;
   float font_px = kDefaultFontPx;
   Theme theme = Theme::Dark;
+  // View > Language: "en", "zh" (core/translation.h); "" until chosen, when the window follows the system's locale.
+  std::string language;
   bool animate_edits = true;  // View > Animate edits: flip, split and collapse play for a quarter second
   // How long the student's code may run in the window (Run mine, a lesson's your_turn) before it is stopped at its
   // line: the window's interactive deadline (window_student_limits), not the grader's budget.

@@ -7,11 +7,13 @@
 
 #include "core/catmull_clark.h"
 #include "core/linear_subdivision.h"
+#include "core/translation.h"
 
 namespace meshedit {
 namespace {
 
-// Made when the program starts, so apply_operation takes them without an allocation that could fail.
+// Made when the program starts, so apply_operation takes them without an allocation that could fail. English in every
+// language (the history keeps them; the status line shows them translated).
 const std::string kCatmullClarkLabel = "Catmull-Clark subdivision";
 const std::string kLinearLabel = "Linear subdivision";
 bool stepper_current(const MeshDocument& doc, const SubdivisionStepper& stepper) {
@@ -57,8 +59,8 @@ Check subdivision_step(MeshDocument& doc, Selection& selection, SubdivisionStepp
   const int phase = restarting ? 1 : phases.next_phase();
   const std::string& label = phase_label(phases.scheme(), phase);
   auto restarted = [&] {
-    return restarting ? std::string("the mesh changed after ") + scheme_title(phases.scheme()) + " phase " +
-                            std::to_string(stale_phase) + "; starting again. "
+    return restarting ? tr_format("the mesh changed after {scheme} phase {phase}; starting again. ",
+                                  {{"scheme", scheme_title(phases.scheme())}, {"phase", std::to_string(stale_phase)}})
                       : std::string();
   };
   Check check;
@@ -73,11 +75,14 @@ Check subdivision_step(MeshDocument& doc, Selection& selection, SubdivisionStepp
     }
     phases = std::move(computed);
     if (!check) {
-      set_message_noexcept(doc, Severity::Warning, [&] { return restarted() + label + ": " + check.reason; });
+      set_message_noexcept(doc, Severity::Warning, [&] {
+        return restarted() + tr_format("{change}: {reason}", {{"change", tr(label)}, {"reason", check.reason}});
+      });
       return check;
     }
     set_message_noexcept(doc, Severity::Info, [&] {
-      return restarted() + label + ": " + phases.computed_summary() + "; nothing moved yet";
+      return restarted() + tr_format("{change}: {summary}; nothing moved yet",
+                                     {{"change", tr(label)}, {"summary", phases.computed_summary()}});
     });
   } else {
     check = apply_operation(doc, label, [&](HalfedgeMesh& mesh) { return phases.run_next(mesh); });

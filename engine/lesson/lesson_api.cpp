@@ -93,13 +93,20 @@ void read_target(lua_State* L, int index, const char* field, LessonWait& wait) {
                got);
 }
 
-std::string default_hint(const LessonWait& wait) {
+// The hint a wait shows when the lesson gives none, kept in every language (the catalog's "Press {key}"...).
+std::string default_hint(lua_State* L, const LessonWait& wait) {
+  const auto hint = [&](const char* english_template, std::string part) {
+    const LocalText text = local_format(english_template, {{"what", std::move(part)}});
+    script_of(L).texts.keep(text, caller_where(L));
+    return text.english();
+  };
   switch (wait.kind) {
-    case LessonWait::Kind::Key: return "Press " + wait.name;
-    case LessonWait::Kind::Command: return "Run " + command_place(*find_lesson_command(wait.name));
-    case LessonWait::Kind::Click: return "Click " + wait.describe().substr(std::strlen("a click on "));
-    case LessonWait::Kind::Selection: return "Select " + wait.describe().substr(std::strlen("the selection of "));
-    case LessonWait::Kind::Button: return "Press " + wait.name;
+    case LessonWait::Kind::Key: return hint("Press {what}", wait.name);
+    case LessonWait::Kind::Command: return hint("Run {what}", command_place(*find_lesson_command(wait.name)));
+    case LessonWait::Kind::Click: return hint("Click {what}", wait.describe().substr(std::strlen("a click on ")));
+    case LessonWait::Kind::Selection:
+      return hint("Select {what}", wait.describe().substr(std::strlen("the selection of ")));
+    case LessonWait::Kind::Button: return hint("Press {what}", wait.name);
     default: return "";
   }
 }
@@ -123,11 +130,12 @@ LessonWait parse_wait(lua_State* L, int index) {
       ++kinds;
       const std::string name = field;
       if (name == "key" || name == "button") {
-        if (lua_type(L, value) != LUA_TSTRING || lua_rawlen(L, value) == 0) {
+        const bool text = name == "key" ? lua_type(L, value) == LUA_TSTRING : is_text(L, value);
+        if (!text || (lua_type(L, value) == LUA_TSTRING && lua_rawlen(L, value) == 0)) {
           raise(L, "wait_for: " + name + " must be a non-empty string, got " + type_name(L, value));
         }
         wait.kind = name == "key" ? LessonWait::Kind::Key : LessonWait::Kind::Button;
-        wait.name = lua_tostring(L, value);
+        wait.name = name == "key" ? lua_tostring(L, value) : read_text(L, value, "wait_for", "button");
       } else if (name == "command") {
         const char* command = lua_type(L, value) == LUA_TSTRING ? lua_tostring(L, value) : nullptr;
         if (!command || !find_lesson_command(command)) {
@@ -153,10 +161,10 @@ LessonWait parse_wait(lua_State* L, int index) {
   }
   lua_getfield(L, index, "hint");
   if (!lua_isnil(L, -1)) {
-    if (lua_type(L, -1) != LUA_TSTRING) raise(L, "wait_for: hint must be a string, got " + type_name(L, -1));
-    wait.hint = lua_tostring(L, -1);
+    if (!is_text(L, -1)) raise(L, "wait_for: hint must be a string, got " + type_name(L, -1));
+    wait.hint = read_text(L, -1, "wait_for", "hint");
   } else {
-    wait.hint = default_hint(wait);
+    wait.hint = default_hint(L, wait);
   }
   lua_pop(L, 1);
   wait.where = caller_where(L);
@@ -249,8 +257,8 @@ int api_lesson(lua_State* L) {
   for (const char* field : {"title", "summary"}) {
     lua_getfield(L, 1, field);
     if (!lua_isnil(L, -1)) {
-      if (lua_type(L, -1) != LUA_TSTRING) raise(L, std::string("lesson: ") + field + " must be a string");
-      (std::strcmp(field, "title") == 0 ? script.title : script.summary) = lua_tostring(L, -1);
+      if (!is_text(L, -1)) raise(L, std::string("lesson: ") + field + " must be a string");
+      (std::strcmp(field, "title") == 0 ? script.title : script.summary) = read_text(L, -1, "lesson", field);
     }
     lua_pop(L, 1);
   }
@@ -259,13 +267,15 @@ int api_lesson(lua_State* L) {
 
 int api_step(lua_State* L) {
   require_loading(L, "step()");
-  if (lua_type(L, 1) != LUA_TSTRING) raise(L, "step: the first argument is the step's title, got " + type_name(L, 1));
+  if (!is_text(L, 1) || lua_type(L, 1) == LUA_TNUMBER) {
+    raise(L, "step: the first argument is the step's title, got " + type_name(L, 1));
+  }
   if (!lua_isfunction(L, 2)) {
     raise(L, "step: the second argument is the step's body, function() ... end, got " + type_name(L, 2));
   }
   LessonScript& script = script_of(L);
   LessonStepDef def;
-  def.title = lua_tostring(L, 1);
+  def.title = read_text(L, 1, "step", "the title");
   def.where = caller_where(L);
   lua_pushvalue(L, 2);
   def.function_ref = luaL_ref(L, LUA_REGISTRYINDEX);
@@ -275,11 +285,9 @@ int api_step(lua_State* L) {
 
 int api_say(lua_State* L) {
   require_step(L, "say()");
-  if (lua_type(L, 1) != LUA_TSTRING && lua_type(L, 1) != LUA_TNUMBER) {
-    raise(L, "say: expected text, got " + type_name(L, 1));
-  }
+  if (!is_text(L, 1)) raise(L, "say: expected text, got " + type_name(L, 1));
   LessonScript& script = script_of(L);
-  script.said.emplace_back(lua_tostring(L, 1));
+  script.said.push_back(read_text(L, 1, "say", "the text"));
   script.blocks.push_back({LessonBlock::Kind::Text, script.said.size() - 1});
   return 0;
 }
@@ -352,8 +360,13 @@ int api_label(lua_State* L) {
   require_step(L, "label()");
   const ElementRef element = check_element(L, 1, "label");
   if (lua_isnoneornil(L, 2)) raise(L, "label: the second argument is the text to show");
-  const std::string text = luaL_tolstring(L, 2, nullptr);
-  lua_pop(L, 1);
+  std::string text;
+  if (lua_istable(L, 2) && is_text(L, 2)) {
+    text = read_text(L, 2, "label", "the text");
+  } else {
+    text = luaL_tolstring(L, 2, nullptr);
+    lua_pop(L, 1);
+  }
   script_of(L).host->label(element, text);
   return 0;
 }

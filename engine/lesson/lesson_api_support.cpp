@@ -91,6 +91,48 @@ int hex_digit(char c) {
 
 }  // namespace
 
+bool is_text(lua_State* L, int index) {
+  const int type = lua_type(L, index);
+  if (type == LUA_TSTRING || type == LUA_TNUMBER) return true;
+  if (type != LUA_TTABLE) return false;
+  const bool english = lua_getfield(L, index, "en") == LUA_TSTRING;
+  lua_pop(L, 1);
+  return english;
+}
+
+std::string read_text(lua_State* L, int index, const std::string& call, const std::string& what) {
+  index = lua_absindex(L, index);
+  if (lua_type(L, index) == LUA_TSTRING || lua_type(L, index) == LUA_TNUMBER) {
+    LocalText text;
+    text.texts[0] = lua_tostring(L, index);
+    script_of(L).texts.keep(text, caller_where(L));
+    return text.texts[0];
+  }
+  if (!is_text(L, index)) {
+    raise(L, call + ": " + what + " must be text: a string, or {en = \"...\", zh = \"...\"} (the English first), got " +
+                 (lua_istable(L, index) ? "a table without en" : type_name(L, index)));
+  }
+  LocalText text;
+  const std::string where = caller_where(L);
+  lua_pushnil(L);
+  while (lua_next(L, index) != 0) {
+    const std::optional<Language> language =
+        lua_type(L, -2) == LUA_TSTRING ? language_by_code(lua_tostring(L, -2)) : std::nullopt;
+    const bool exact = language && std::string(lua_tostring(L, -2)) == language_code(*language);
+    if (!exact) {
+      script_of(L).texts.unknown_language(lua_type(L, -2) == LUA_TSTRING ? lua_tostring(L, -2) : type_name(L, -2),
+                                          where);
+    } else if (lua_type(L, -1) != LUA_TSTRING) {
+      raise(L, call + ": " + what + "'s " + language_code(*language) + " must be a string, got " + type_name(L, -1));
+    } else {
+      text.texts[size_t(*language)] = lua_tostring(L, -1);
+    }
+    lua_pop(L, 1);
+  }
+  script_of(L).texts.keep(text, where);
+  return text.english();
+}
+
 std::optional<glm::vec3> named_colour(const std::string& name) {
   for (const NamedColour& c : kColours) {
     if (name == c.name) return c.rgb;

@@ -24,6 +24,7 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
+#include "core/translation.h"
 #include "exercise/exercises.h"
 #include "script/file_stamp.h"
 
@@ -39,7 +40,8 @@ struct LessonBlock {
 struct LessonLive {
   int function_ref = -2;  // LUA_NOREF: the function in the registry
   std::string where;      // "lesson.lua:12", where live() was called
-  std::string text;       // the latest value (tostring)
+  std::string text;       // the latest value (tostring, or the English of a table of languages)
+  LocalText local;        // the latest value in each language (local.english() == text)
   std::string error;      // "lesson.lua:13: ..." once it failed: it is not evaluated again
 };
 

@@ -42,9 +42,16 @@ std::string error_at(lua_State* L, const std::string& where) {
   return message;
 }
 
-// Calls the function at index 1 and leaves its value as text.
+// Calls the function at index 1 and leaves its value as text, or the value itself when it is a table of languages
+// with a string `en` (read raw: a table with metamethods is turned into text).
 int call_to_text(lua_State* L) {
   lua_call(L, 0, 1);
+  if (lua_istable(L, -1) && !lua_getmetatable(L, -1)) {
+    lua_pushliteral(L, "en");
+    const bool english = lua_rawget(L, -2) == LUA_TSTRING;
+    lua_pop(L, 1);
+    if (english) return 1;
+  }
   luaL_tolstring(L, -1, nullptr);
   return 1;
 }
@@ -121,8 +128,8 @@ LessonPlotCurve read_curve(lua_State* L, int number, glm::dvec2 x, int samples) 
   check_fields(L, curve, ("plot: " + which).c_str(), {"label", "fn", "colour", "color"});
   LessonPlotCurve out;
   lua_getfield(L, curve, "label");
-  if (!lua_isnil(L, -1) && lua_type(L, -1) != LUA_TSTRING) raise(L, "plot: " + which + "'s label must be text");
-  out.label = lua_isnil(L, -1) ? which : lua_tostring(L, -1);
+  if (!lua_isnil(L, -1) && !is_text(L, -1)) raise(L, "plot: " + which + "'s label must be text");
+  out.label = lua_isnil(L, -1) ? which : read_text(L, -1, "plot", which + "'s label");
   lua_pop(L, 1);
   lua_getfield(L, curve, "colour");
   if (lua_isnil(L, -1)) {
@@ -166,8 +173,8 @@ int api_plot(lua_State* L) {
   LessonPlot plot;
   plot.where = caller_where(L);
   lua_getfield(L, 1, "title");
-  if (!lua_isnil(L, -1) && lua_type(L, -1) != LUA_TSTRING) raise(L, "plot: title must be text");
-  if (!lua_isnil(L, -1)) plot.title = lua_tostring(L, -1);
+  if (!lua_isnil(L, -1) && !is_text(L, -1)) raise(L, "plot: title must be text");
+  if (!lua_isnil(L, -1)) plot.title = read_text(L, -1, "plot", "the title");
   lua_pop(L, 1);
   plot.x_range = read_range(L, "x").value_or(glm::dvec2(0.0, 1.0));
   const std::optional<glm::dvec2> y = read_range(L, "y");
@@ -279,8 +286,20 @@ int api_patch_uv(lua_State* L) {
 
 void evaluate_live(lua_State* L, LessonScript& script, LessonLive& live) {
   if (!live.error.empty()) return;
-  if (call_live(L, script, call_to_text, live.function_ref)) live.text = lua_tostring(L, -1);
-  else live.error = error_at(L, live.where);
+  if (!call_live(L, script, call_to_text, live.function_ref)) {
+    live.error = error_at(L, live.where);
+  } else if (lua_istable(L, -1)) {
+    for (const Language language : kLanguages) {
+      lua_pushstring(L, language_code(language));
+      live.local.texts[size_t(language)] = lua_rawget(L, -2) == LUA_TSTRING ? lua_tostring(L, -1) : "";
+      lua_pop(L, 1);
+    }
+    live.text = live.local.english();
+  } else {
+    live.text = lua_tostring(L, -1);
+    live.local = LocalText{};
+    live.local.texts[0] = live.text;
+  }
   lua_pop(L, 1);
 }
 

@@ -132,6 +132,8 @@ class HeadlessDriver {
     out_ << '\n';
     if (outcome.failure.empty()) out_ << outcome.passed << (outcome.passed == 1 ? " step passed\n" : " steps passed\n");
     else out_ << outcome.passed << " of " << outcome.steps << " steps passed\n";
+    outcome.text_problems = runner_.texts().problems();
+    outcome.untranslated = runner_.texts().untranslated();
     return outcome;
   }
 

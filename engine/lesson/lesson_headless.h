@@ -34,6 +34,7 @@
 #include <optional>
 #include <ostream>
 #include <string>
+#include <vector>
 
 #include "lesson/lesson_runner.h"
 
@@ -43,6 +44,9 @@ struct HeadlessOutcome {
   size_t steps = 0;     // steps in the lesson
   size_t passed = 0;    // steps that ran to their end
   std::string failure;  // "" when every step passed; else one line with file:line and the step
+  // What the run found of the lesson's other languages (lesson_texts.h): problems (an unknown language, a translation
+  // that drops a code span or a number) and the texts read with words and no Chinese twin, each "file:line: ...".
+  std::vector<std::string> text_problems, untranslated;
 };
 
 // Runs the lesson, your_turn with the files of `student_folder` (none given: your_turn fails the step saying so).

@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstdio>
 #include <string>
+#include <string_view>
 #include <vector>
 
 #include <lua.hpp>
@@ -23,11 +24,36 @@ constexpr double kDefaultTolerance = 1e-3;
 constexpr const char* kQuestionsPrelude = R"lua(local api = __lesson_questions
 __lesson_questions = nil
 local check, ask, read_answer, record = api.check, api.ask, api.read_answer, api.record
-local type, tostring, math, string = type, tostring, math, string
+local text, message = api.text, api.message
+local type, tostring, math, string, pairs = type, tostring, math, string, pairs
 
 local function text_of(value)
   if value == nil or value == false then return nil end
+  if type(value) == "table" then return text(value) end
   return tostring(value)
+end
+
+-- A copy of the question's table with each text the student reads (a string or {en = ..., zh = ...}) as its
+-- English: the logic below compares English only, and text() keeps the other languages for the panel.
+local function in_english(kind, spec)
+  if type(spec) ~= "table" then return spec end
+  local copy = {}
+  for key, value in pairs(spec) do copy[key] = value end
+  copy[1], copy.hint = text(copy[1]), text(copy.hint)
+  if kind == "choose" then
+    if type(copy.options) == "table" then
+      local options = {}
+      for i = 1, #copy.options do options[i] = text(copy.options[i]) end
+      copy.options = options
+    end
+    if type(copy.answer) == "table" then copy.answer = text(copy.answer) end
+  end
+  if type(copy.feedback) == "table" then
+    local feedback = {}
+    for key, value in pairs(copy.feedback) do feedback[key] = text(value) end
+    copy.feedback = feedback
+  end
+  return copy
 end
 
 -- Asks until the answer is right; judge(what ask returned) -> right, feedback, counted, value, the answer as the
@@ -48,11 +74,12 @@ local function until_right(kind, spec, judge)
 end
 
 function choose(spec)
+  spec = in_english("choose", spec)
   check("choose", spec)
   return until_right("choose", spec, function(given)
     local said = spec.feedback and text_of(spec.feedback[given])
     if given == spec.answer then return true, said, true, given end
-    return false, said or (given .. " is not the answer."), true
+    return false, said or message("{given} is not the answer.", {given = given}), true
   end)
 end
 
@@ -64,7 +91,8 @@ local function pick_on_curve(spec)
   return until_right("pick", spec, function(t, point, on)
     local shown = string.format("C(%.2f)", t)
     if not on then
-      return false, "That click is beside the curve: click on the curve itself.", false, nil, "a click beside the curve"
+      return false, message("That click is beside the curve: click on the curve itself."), false, nil,
+        "a click beside the curve"
     end
     local right, why
     if type(answer) == "function" then
@@ -74,12 +102,13 @@ local function pick_on_curve(spec)
     end
     if right then return true, text_of(why), true, t, shown end
     local said = type(feedback) == "function" and feedback(t, point) or nil
-    return false, text_of(said) or text_of(why) or string.format("That is %s, the point of the curve at t = %.2f.",
-      shown, t), true, nil, shown
+    return false, text_of(said) or text_of(why) or message("That is {point}, the point of the curve at t = {t}.",
+      {point = shown, t = string.format("%.2f", t)}), true, nil, shown
   end)
 end
 
 function pick(spec)
+  spec = in_english("pick", spec)
   check("pick", spec)
   if spec.on == "curve" then return pick_on_curve(spec) end
   return until_right("pick", spec, function(element)
@@ -99,18 +128,19 @@ function pick(spec)
     elseif type(feedback) == "table" then
       said = feedback[id]
     end
-    return false, text_of(said) or text_of(why) or ("Not " .. id .. ": look again."), true
+    return false, text_of(said) or text_of(why) or message("Not {id}: look again.", {id = id}), true
   end)
 end
 
 function answer(spec)
+  spec = in_english("answer", spec)
   check("answer", spec)
   return until_right("answer", spec, function(text)
     local value, right, help = read_answer(spec, text)
     if value == nil then return false, help, false end
     if right then return true, nil, true, value end
     local said = type(spec.feedback) == "function" and spec.feedback(value) or nil
-    return false, text_of(said) or (text .. " is not the answer."), true
+    return false, text_of(said) or message("{given} is not the answer.", {given = text}), true
   end)
 end
 )lua";
@@ -385,7 +415,9 @@ int api_read_answer(lua_State* L) {
   if (!typed) {
     lua_pushnil(L);
     lua_pushboolean(L, false);
-    lua_pushstring(L, answer_text_help(expected.components).c_str());
+    const LocalText help = local_format(answer_text_help(expected.components).c_str(), {});
+    script_of(L).texts.keep(help, caller_where(L));
+    lua_pushstring(L, help.english().c_str());
     return 3;
   }
   glm::dvec3 value(0.0);
@@ -396,6 +428,38 @@ int api_read_answer(lua_State* L) {
   else push_vec3(L, value);
   lua_pushboolean(L, off <= expected.tolerance);
   return 2;
+}
+
+// text(value) -> the English of a text (read_text), or the value itself when it is not one (check() names it).
+int api_text(lua_State* L) {
+  if (lua_type(L, 1) == LUA_TSTRING || (lua_istable(L, 1) && is_text(L, 1))) {
+    lua_pushstring(L, read_text(L, 1, "lesson", "a text").c_str());
+  } else {
+    lua_settop(L, 1);
+  }
+  return 1;
+}
+
+// message(template, {name = part, ...}) -> the app's own message in English, its translations kept beside it.
+int api_message(lua_State* L) {
+  const char* english_template = luaL_checkstring(L, 1);
+  MessageParts parts;
+  if (lua_istable(L, 2)) {
+    lua_pushnil(L);
+    while (lua_next(L, 2) != 0) {
+      // A key's text stays where it is while the table at 2 holds it, so its name may point into it.
+      if (lua_type(L, -2) == LUA_TSTRING) {
+        const std::string_view name = lua_tostring(L, -2);  // before luaL_tolstring pushes the value's text
+        parts.emplace_back(name, luaL_tolstring(L, -1, nullptr));
+        lua_pop(L, 1);
+      }
+      lua_pop(L, 1);
+    }
+  }
+  const LocalText text = local_format(english_template, parts);
+  script_of(L).texts.keep(text, caller_where(L));
+  lua_pushstring(L, text.english().c_str());
+  return 1;
 }
 
 // record(spec, given, right, feedback): the judgement, and an Answered block when it is right.
@@ -425,7 +489,9 @@ void open_lesson_questions(LuaRuntime& runtime, LessonScript& script) {
                          {{"check", lesson_guarded<api_check>},
                           {"ask", lesson_guarded<api_ask>},
                           {"read_answer", lesson_guarded<api_read_answer>},
-                          {"record", lesson_guarded<api_record>}},
+                          {"record", lesson_guarded<api_record>},
+                          {"text", lesson_guarded<api_text>},
+                          {"message", lesson_guarded<api_message>}},
                          kQuestionsPrelude);
 }
 

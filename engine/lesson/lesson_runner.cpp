@@ -526,6 +526,11 @@ size_t LessonRunner::step_count() const { return script_ ? script_->steps.size()
 
 const std::vector<std::string>& LessonRunner::said() const { return script_ ? script_->said : kNoBlocks; }
 
+const LessonTexts& LessonRunner::texts() const {
+  static const LessonTexts kNoTexts;
+  return script_ ? script_->texts : kNoTexts;
+}
+
 const std::vector<LessonBlock>& LessonRunner::blocks() const { return script_ ? script_->blocks : kNoDisplay; }
 
 const std::vector<LessonLive>& LessonRunner::lives() const { return script_ ? script_->lives : kNoLives; }

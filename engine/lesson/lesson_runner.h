@@ -44,6 +44,7 @@
 #include "lesson/lesson_blocks.h"
 #include "lesson/lesson_events.h"
 #include "lesson/lesson_host.h"
+#include "lesson/lesson_texts.h"
 #include "script/lua_runtime.h"
 
 namespace meshedit {
@@ -143,6 +144,9 @@ class LessonRunner {
   size_t current_step() const { return index_; }  // 0-based
   StepState step_state() const { return state_; }
   bool step_finished() const { return state_ == StepState::Finished; }
+  // The lesson's texts in the other languages, by their English (title(), said(), the questions... are English), and
+  // what reading them found; empty before a load.
+  const LessonTexts& texts() const;
   // The markdown blocks say() gave in the current step, in order.
   const std::vector<std::string>& said() const;
   // Everything the step shows, in order (lesson_blocks.h): each block indexes said(), lives(), plots() or answered().

@@ -229,7 +229,7 @@ int api_check(lua_State* L) {
   check_fields(L, 1, "your_turn",
                {"exercise", "mesh", "element", "points", "t", "patch", "u", "v", "control", "args", "hint", "names"});
   lua_getfield(L, 1, "hint");
-  if (!lua_isnil(L, -1) && lua_type(L, -1) != LUA_TSTRING) raise(L, "your_turn: hint must be a string");
+  if (!lua_isnil(L, -1) && !is_text(L, -1)) raise(L, "your_turn: hint must be a string");
   lua_pop(L, 1);
   const Exercise exercise = read_exercise(L, 1);
   ExerciseInput input = read_input(L, 1, exercise);
@@ -295,7 +295,7 @@ int api_await(lua_State* L) {
       "Your turn: write " + last.function + " in " + last.file + "; it runs on " + last.input + " each time you save.";
   wait.feedback = last.feedback;
   lua_getfield(L, 1, "hint");
-  if (lua_type(L, -1) == LUA_TSTRING) wait.hint = lua_tostring(L, -1);
+  if (!lua_isnil(L, -1) && is_text(L, -1)) wait.hint = read_text(L, -1, "your_turn", "hint");
   lua_pop(L, 1);
   if (wait.hint.empty()) {  // an exercise defined in Lua brings its own
     if (const std::shared_ptr<const ScriptedExercise> scripted = last.exercise.definition()) {

@@ -3,6 +3,9 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
+#include "core/value_format.h"
+
 namespace meshedit {
 namespace {
 
@@ -30,8 +33,9 @@ void draw_rows(const CheckPanelView& view, CheckPanelActions& actions, UiProbe* 
     first_failure = first_failure && row.passed;
     // The node holds the verdict and the number; the name beside it wraps at the column's edge (a node's label would
     // be cut off there).
-    const bool open = ImGui::TreeNodeEx("test", flags, "%s (%s) %s:", row.passed ? "passed" : "FAILED",
-                                        row.points.c_str(), row.number.c_str());
+    const std::string label = tr_format(row.passed ? "passed ({points}) {number}:" : "FAILED ({points}) {number}:",
+                                        {{"points", row.points}, {"number", row.number}});
+    const bool open = ImGui::TreeNodeEx("test", flags, "%s", label.c_str());
     ImGui::SameLine();
     wrapped(row.name);
     ImGui::PopStyleColor();
@@ -39,10 +43,12 @@ void draw_rows(const CheckPanelView& view, CheckPanelActions& actions, UiProbe* 
     if (open) {
       wrapped(row.text);
       if (!row.case_input.empty()) {
-        if (button("Open in Exercises", ("check-open:" + row.number).c_str(), probe)) actions.open_case = i;
+        if (button(tr_label("Open in Exercises"), ("check-open:" + row.number).c_str(), probe)) actions.open_case = i;
         if (ImGui::IsItemHovered()) {
-          ImGui::SetTooltip("the input of this test (%s) in the Exercises tab, with your function run on it",
-                            row.case_input.c_str());
+          ImGui::SetTooltip("%s", tr_format("the input of this test ({input}) in the Exercises tab, with your function "
+                                            "run on it",
+                                            {{"input", row.case_input}})
+                                      .c_str());
         }
       }
       ImGui::TreePop();
@@ -93,31 +99,42 @@ std::string check_panel_text(const CheckPanelView& view) {
 CheckPanelActions draw_check_panel_contents(const CheckPanelView& view, CheckPanelState& /*state*/, UiProbe* probe) {
   CheckPanelActions actions;
   ImGui::PushTextWrapPos(0.0f);
-  ImGui::TextDisabled("Check my work: the course's visible tests on your files, as Gradescope runs them");
-  ImGui::TextDisabled("Suite %s; your files in %s", view.suite.filename().string().c_str(), view.folder.c_str());
+  ImGui::TextDisabled("%s", tr("Check my work: the course's visible tests on your files, as Gradescope runs them"));
+  ImGui::TextDisabled("%s", tr_format("Suite {suite}; your files in {folder}",
+                                      {{"suite", view.suite.filename().string()}, {"folder", view.folder}})
+                                .c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", view.suite.string().c_str());
   if (view.state == CheckPanelView::State::Running) {
-    if (button("Stop", "check-stop", probe)) actions.stop = true;
+    if (button(tr_label("Stop"), "check-stop", probe)) actions.stop = true;
     ImGui::SameLine();
+    const std::string seconds = format_fixed(view.seconds, 1);
     if (view.total > 0) {
-      ImGui::Text("Running: %zu of %zu tests done (%.1f s)", view.done, view.total, view.seconds);
+      ImGui::TextUnformatted(
+          tr_format("Running: {done} of {total} tests done ({seconds} s)",
+                    {{"done", std::to_string(view.done)}, {"total", std::to_string(view.total)}, {"seconds", seconds}})
+              .c_str());
       ImGui::ProgressBar(static_cast<float>(view.done) / static_cast<float>(view.total), ImVec2(-1.0f, 0.0f));
     } else {
-      ImGui::Text("Starting the grader... (%.1f s)", view.seconds);
+      ImGui::TextUnformatted(tr_format("Starting the grader... ({seconds} s)", {{"seconds", seconds}}).c_str());
     }
-    if (!view.running_test.empty()) ImGui::TextDisabled("now: test %zu, %s", view.done + 1, view.running_test.c_str());
+    if (!view.running_test.empty()) {
+      ImGui::TextDisabled("%s", tr_format("now: test {number}, {test}",
+                                          {{"number", std::to_string(view.done + 1)}, {"test", view.running_test}})
+                                    .c_str());
+    }
     ImGui::PopTextWrapPos();
     return actions;
   }
-  if (button(view.state == CheckPanelView::State::NotRun ? "Check my work" : "Check again", "check-run", probe)) {
+  if (button(tr_label(view.state == CheckPanelView::State::NotRun ? "Check my work" : "Check again"), "check-run",
+             probe)) {
     actions.check = true;
   }
   ImGui::Separator();
   switch (view.state) {
-    case CheckPanelView::State::NotRun: wrapped(kNotRun); break;
-    case CheckPanelView::State::Stopped: coloured(ui_colors::warning(), kStopped); break;
+    case CheckPanelView::State::NotRun: wrapped(tr(kNotRun)); break;
+    case CheckPanelView::State::Stopped: coloured(ui_colors::warning(), tr(kStopped)); break;
     case CheckPanelView::State::Problem:
-      coloured(ui_colors::broken(), kProblem);
+      coloured(ui_colors::broken(), tr(kProblem));
       wrapped(view.problem);
       break;
     case CheckPanelView::State::Graded: {
@@ -131,7 +148,7 @@ CheckPanelActions draw_check_panel_contents(const CheckPanelView& view, CheckPan
       if (probe) probe->record_last_item("check-total");
       if (!view.not_shown.empty()) ImGui::TextDisabled("%s", view.not_shown.c_str());
       for (const std::string& warning : view.warnings) coloured(ui_colors::warning(), warning);
-      if (!view.notes.empty() && ImGui::TreeNode("Your files, as the grader found them")) {
+      if (!view.notes.empty() && ImGui::TreeNode(tr_label("Your files, as the grader found them"))) {
         wrapped(view.notes);
         ImGui::TreePop();
       }

@@ -19,6 +19,7 @@
 #include <imgui.h>
 #include <glm/geometric.hpp>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
@@ -50,6 +51,13 @@ ImU32 mine_ok_colour() { return colour_of(palette().mine); }
 ImU32 level_colour(int k) { return colour_of(meshedit::level_colour(palette(), k)); }
 
 ImVec2 to_imvec(glm::dvec2 p) { return ImVec2(static_cast<float>(p.x), static_cast<float>(p.y)); }
+
+// The canvas's words: in the window's language on the window's canvas (`window`), English in a write-up's picture,
+// whose bytes stay the same whatever the window shows.
+const char* canvas_word(const char* english, bool window) { return window ? tr(english) : english; }
+std::string canvas_format(const char* english, const MessageParts& parts, bool window) {
+  return window ? tr_format(english, parts) : fill_template(english, parts);
+}
 
 void draw_polyline(ImDrawList* dl, const CurveView& view, std::span<const glm::dvec2> points, ImU32 colour,
                    float thickness) {
@@ -97,7 +105,7 @@ ImU32 mine_message_colour(const CurveMineLevels& mine, int shown) {
 
 // Under your level that differs: the reference's level, ghosted, and a line from your wrong point to the
 // reference's, each labelled.
-void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels& mine) {
+void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels& mine, bool window) {
   const std::vector<glm::dvec2> reference = flat(mine.reference_level);
   draw_polyline(dl, view, reference, ghost_colour(), 1.0f);
   for (const glm::dvec2& p : reference) {
@@ -108,8 +116,8 @@ void draw_mismatch(ImDrawList* dl, const CurveView& view, const CurveMineLevels&
   const ImVec2 theirs = to_imvec(curve_to_screen(view, flat(mine.reference_point)));
   dl->AddLine(yours, theirs, wrong_colour(), 1.0f);
   dl->AddCircle(yours, 11.0f, wrong_colour(), 0, 2.0f);
-  dl->AddText(ImVec2(yours.x + 13.0f, yours.y - 8.0f), wrong_colour(), "yours");
-  dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), ghost_colour(), "reference");
+  dl->AddText(ImVec2(yours.x + 13.0f, yours.y - 8.0f), wrong_colour(), canvas_word("yours", window));
+  dl->AddText(ImVec2(theirs.x + 9.0f, theirs.y + 2.0f), ghost_colour(), canvas_word("reference", window));
 }
 
 // ---- the canvas ------------------------------------------------------------------------------------
@@ -131,12 +139,12 @@ void read_canvas_input(CurveEditorState& state) {
 }
 
 // De Casteljau's levels above the control polygon; the first wrong one of yours (`wrong_level`) thicker, with what it
-// should have been.
+// should have been (its labels in the window's language on the window's canvas, `window`).
 void draw_levels(ImDrawList* dl, const CurveView& view, const std::vector<std::vector<glm::dvec2>>& levels,
-                 const CurveMineLevels* yours, int wrong_level) {
+                 const CurveMineLevels* yours, int wrong_level, bool window) {
   for (size_t k = 1; k < levels.size(); ++k) {
     const bool wrong = static_cast<int>(k) == wrong_level;
-    if (wrong) draw_mismatch(dl, view, *yours);
+    if (wrong) draw_mismatch(dl, view, *yours, window);
     const ImU32 colour = wrong ? wrong_colour() : level_colour(static_cast<int>(k));
     draw_polyline(dl, view, levels[k], colour, wrong ? 3.0f : 1.5f);
     draw_points(dl, view, levels[k], colour, wrong ? 5.0f : 4.0f);
@@ -197,17 +205,23 @@ void draw_control_points(ImDrawList* dl, const CurveEditorState& state, const Cu
 void draw_canvas_text(ImDrawList* dl, const CurveEditorState& state, ImVec2 p0, ImVec2 size, int shown,
                       const CurveMineLevels* yours, const std::string& file, bool hints) {
   const float wrap = std::max(size.x - 16.0f, 50.0f);
-  const std::string status = "t = " + format_fixed(state.t, 4) + "   level " + std::to_string(shown) + " of " +
-                             std::to_string(std::max(0, static_cast<int>(state.curve.control_points.size()) - 1)) +
-                             (yours ? "   mine: your evaluate_step" : "");
+  const MessageParts parts = {
+      {"t", format_fixed(state.t, 4)},
+      {"level", std::to_string(shown)},
+      {"last", std::to_string(std::max(0, static_cast<int>(state.curve.control_points.size()) - 1))}};
+  const char* status_template =
+      yours ? "t = {t}   level {level} of {last}   mine: your evaluate_step" : "t = {t}   level {level} of {last}";
+  const std::string status = canvas_format(status_template, parts, hints);
   dl->AddText(ImVec2(p0.x + 8.0f, p0.y + 6.0f), colour_of(palette().swatches.ink), status.c_str());
   if (yours) {
-    const std::string line = "mine (" + file + "): " + yours->message;
+    const std::string line =
+        canvas_format("mine ({file}): {message}", {{"file", file}, {"message", yours->message}}, hints);
     dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + 8.0f + ImGui::GetTextLineHeight()),
                 mine_message_colour(*yours, shown), line.c_str(), nullptr, wrap);
   }
   if (!hints) return;
-  const char* hint = "drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine";
+  const char* hint =
+      tr("drag: move   double-click: add   right-click: remove   scroll: t   E: step   C: curve   M: mine");
   const ImVec2 hint_size = ImGui::GetFont()->CalcTextSizeA(ImGui::GetFontSize(), FLT_MAX, wrap, hint);
   dl->AddText(ImGui::GetFont(), ImGui::GetFontSize(), ImVec2(p0.x + 8.0f, p0.y + size.y - hint_size.y - 6.0f),
               colour_of(palette().swatches.grey), hint, nullptr, wrap);
@@ -232,7 +246,7 @@ void draw_canvas_contents(ImDrawList* dl, const CurveEditorState& state, ImVec2 
 
   const auto levels = yours ? mine_shown_levels(*yours, shown) : shown_levels(state);
   const int wrong_level = yours && yours->error.empty() ? yours->failed_level : -1;
-  draw_levels(dl, view, levels, yours, wrong_level);
+  draw_levels(dl, view, levels, yours, wrong_level, hints);
   draw_control_points(dl, state, halves);
   draw_curve_point(dl, view, levels, wrong_level);
   if (state.show_tangent) draw_tangent(dl, state);
@@ -278,18 +292,19 @@ void draw_mine_rows(const CurveMineLevels& mine, int shown) {
   }
   if (!mine.failed() || mine.failed_level > shown) {
     if (mine.running) {
-      table_text_row(std::to_string(mine.levels.size()).c_str(), disabled, "your evaluate_step is running...");
+      table_text_row(std::to_string(mine.levels.size()).c_str(), disabled, tr("your evaluate_step is running..."));
     } else if (!mine.complete()) {
-      table_text_row("...", disabled, "the next level comes from your evaluate_step when E shows it");
+      table_text_row("...", disabled, tr("the next level comes from your evaluate_step when E shows it"));
     }
     return;
   }
   if (!mine.error.empty()) {
-    table_text_row(mine.load_failed ? "error" : ("error " + std::to_string(mine.failed_level)).c_str(), error_colour(),
-                   mine.error);
+    const std::string name =
+        mine.load_failed ? tr("error") : tr_format("error {level}", {{"level", std::to_string(mine.failed_level)}});
+    table_text_row(name.c_str(), error_colour(), mine.error);
     return;
   }
-  table_text_row("reference", ghost_colour(), format_points(flat(mine.reference_level)));
+  table_text_row(tr("reference"), ghost_colour(), format_points(flat(mine.reference_level)));
   for (const std::string& line : mine.details) table_text_row("", wrong_colour(), "- " + line);
 }
 
@@ -298,8 +313,8 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
   const int shown = shown_level(state);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
   if (!ImGui::BeginTable("levels", 2, flags)) return;
-  ImGui::TableSetupColumn(mine ? "level (yours)" : "level", ImGuiTableColumnFlags_WidthFixed);
-  ImGui::TableSetupColumn("points", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableSetupColumn(tr(mine ? "level (yours)" : "level"), ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn(tr("points"), ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
   if (mine) draw_mine_rows(*mine, shown);
   for (int k = 0; !mine && k < static_cast<int>(levels.size()); ++k) {
@@ -325,7 +340,7 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
           ImGui::ColorConvertU32ToFloat4(points == &halves.left ? split_left_ring() : split_right_ring());
       ImGui::TableNextRow();
       ImGui::TableNextColumn();
-      ImGui::TextColored(colour, "%s", name);
+      ImGui::TextColored(colour, "%s", tr(name));
       ImGui::TableNextColumn();
       ImGui::PushStyleColor(ImGuiCol_Text, colour);
       ImGui::TextWrapped("%s", format_points(*points).c_str());
@@ -341,32 +356,35 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
 
 void draw_curve_controls(CurveEditorState& state, BezierMine* mine) {
   const int n = static_cast<int>(state.curve.control_points.size());
-  if (ImGui::Button("Step (E)")) step_level(state);
-  same_line_if_room("Curve (C)");
+  if (ImGui::Button(tr_label("Step (E)"))) step_level(state);
+  same_line_if_room(tr_label("Curve (C)"));
   bool show_curve = state.show_curve;
-  if (ImGui::Checkbox("Curve (C)", &show_curve)) toggle_curve(state);
-  same_line_if_room("Split at t");
+  if (ImGui::Checkbox(tr_label("Curve (C)"), &show_curve)) toggle_curve(state);
+  same_line_if_room(tr_label("Split at t"));
   bool show_split = state.show_split;
-  if (ImGui::Checkbox("Split at t", &show_split)) toggle_split(state);
-  same_line_if_room("Tangent");
+  if (ImGui::Checkbox(tr_label("Split at t"), &show_split)) toggle_split(state);
+  same_line_if_room(tr_label("Tangent"));
   bool show_tangent = state.show_tangent;
-  if (ImGui::Checkbox("Tangent", &show_tangent)) toggle_tangent(state);
-  if (ImGui::IsItemHovered()) ImGui::SetTooltip("the arrow C'(t) / n from C(t): the last step's segment, moved");
-  same_line_if_room("Add point");
-  if (ImGui::Button("Add point")) add_point_default(state);
-  same_line_if_room("Remove last");
+  if (ImGui::Checkbox(tr_label("Tangent"), &show_tangent)) toggle_tangent(state);
+  if (ImGui::IsItemHovered()) {
+    ImGui::SetTooltip("%s", tr("the arrow C'(t) / n from C(t): the last step's segment, moved"));
+  }
+  same_line_if_room(tr_label("Add point"));
+  if (ImGui::Button(tr_label("Add point"))) add_point_default(state);
+  same_line_if_room(tr_label("Remove last"));
   ImGui::BeginDisabled(n <= 2);
-  if (ImGui::Button("Remove last")) remove_point(state, n - 1);
+  if (ImGui::Button(tr_label("Remove last"))) remove_point(state, n - 1);
   ImGui::EndDisabled();
-  same_line_if_room("Fit view");
-  if (ImGui::Button("Fit view")) fit_view(state);
+  same_line_if_room(tr_label("Fit view"));
+  if (ImGui::Button(tr_label("Fit view"))) fit_view(state);
   if (mine) {
-    same_line_if_room("mine (M)");
+    same_line_if_room(tr_label("mine (M)"));
     bool on = mine->curve_on();
-    if (ImGui::Checkbox("mine (M)", &on)) mine->set_curve_on(on);
+    if (ImGui::Checkbox(tr_label("mine (M)"), &on)) mine->set_curve_on(on);
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("levels from your evaluate_step in %s, checked against the reference",
-                        mine->curve_file().path().string().c_str());
+      ImGui::SetTooltip("%s", tr_format("levels from your evaluate_step in {file}, checked against the reference",
+                                        {{"file", mine->curve_file().path().string()}})
+                                  .c_str());
     }
   }
 
@@ -407,7 +425,7 @@ void draw_curve_editor_contents(CurveEditorState& state, BezierMine* mine) {
 
 void draw_curve_editor(CurveEditorState& state, const char* title, BezierMine* mine) {
   // The wheel belongs to t over the canvas: the window itself must not scroll with it.
-  if (ImGui::Begin(title, nullptr, ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar)) {
+  if (ImGui::Begin(tr_label(title), nullptr, ImGuiWindowFlags_NoScrollWithMouse | ImGuiWindowFlags_NoScrollbar)) {
     draw_curve_editor_contents(state, mine);
   }
   ImGui::End();

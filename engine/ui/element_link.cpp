@@ -3,6 +3,8 @@
 
 #include <imgui_internal.h>
 
+#include "core/translation.h"
+
 namespace meshedit {
 
 const UiProbe::Item* UiProbe::find(std::string_view name, ElementRef element) const {
@@ -24,7 +26,10 @@ bool element_link(const HalfedgeMesh& mesh, ElementRef ref, Selection& selection
   const std::string text = format_id(ref);
   if (reference_state(mesh, ref) != RefState::Live) {
     ImGui::TextColored(ui_colors::broken(), "%s", text.c_str());
-    if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s; not followed", reference_problem(mesh, ref).c_str());
+    if (ImGui::IsItemHovered()) {
+      const std::string tip = tr_format("{problem}; not followed", {{"problem", reference_problem(mesh, ref)}});
+      ImGui::SetTooltip("%s", tip.c_str());
+    }
     if (probe) probe->record_last_item(name, ref);
     return false;
   }

@@ -8,6 +8,7 @@
 #include <imgui.h>
 
 #include "core/history.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/scripted_exercise.h"
 #include "ui/theme.h"
@@ -29,26 +30,53 @@ void coloured(const ImVec4& colour, const std::string& line) {
   ImGui::PopStyleColor();
 }
 
+// One side's sentences, each whole: the side's name is not a fragment put before a translated rest.
+struct OutcomeWords {
+  const char* id;  // "yours" and "the reference" each have their own tree nodes
+  const char* failed;
+  const char* refused;
+  const char* returned;
+  const char* after_call;
+  const char* problems;
+};
+constexpr OutcomeWords kYours{"yours",
+                              "yours failed: {error}",
+                              "yours refused: {reason}",
+                              "yours returned {value}",
+                              "yours after the call: {summary}",
+                              "yours: {count} problems"};
+constexpr OutcomeWords kTheReference{"the reference",
+                                     "the reference failed: {error}",
+                                     "the reference refused: {reason}",
+                                     "the reference returned {value}",
+                                     "the reference after the call: {summary}",
+                                     "the reference: {count} problems"};
+
 // `error_listed`: the outcome's error is already one of the differences shown above, so it is not said again.
-void draw_outcome(const char* who, const ExerciseOutcome& outcome, bool show_validation, bool error_listed = false) {
-  ImGui::PushID(who);  // "yours" and "the reference" each have their own tree nodes
+void draw_outcome(const OutcomeWords& who, const ExerciseOutcome& outcome, bool show_validation,
+                  bool error_listed = false) {
+  ImGui::PushID(who.id);
   if (!outcome.error.empty()) {
-    if (!error_listed) coloured(failed_colour(), std::string(who) + " failed: " + outcome.error);
+    if (!error_listed) coloured(failed_colour(), tr_format(who.failed, {{"error", outcome.error}}));
   } else if (!outcome.refused.empty()) {
-    text(std::string(who) + " refused: " + outcome.refused);
+    text(tr_format(who.refused, {{"reason", outcome.refused}}));
   } else if (outcome.ran) {
-    text(std::string(who) + " returned " + outcome.returned);
+    text(tr_format(who.returned, {{"value", outcome.returned}}));
   }
   if (show_validation && outcome.validation) {
     const ValidationReport& report = *outcome.validation;
     coloured(report.ok() ? passed_colour() : failed_colour(),
-             std::string(who) + " after the call: " + report.summary());
-    if (!report.ok() && ImGui::TreeNode("problems", "%s: %zu problems", who, report.total)) {
+             tr_format(who.after_call, {{"summary", report.summary()}}));
+    if (!report.ok() &&
+        ImGui::TreeNode("problems", "%s", tr_format(who.problems, {{"count", std::to_string(report.total)}}).c_str())) {
       for (const Violation& violation : report.violations) text(violation.message);
       ImGui::TreePop();
     }
   }
-  if (!outcome.output.empty() && ImGui::TreeNode("print", "print output (%zu lines)", outcome.output.size())) {
+  if (!outcome.output.empty() &&
+      ImGui::TreeNode(
+          "print", "%s",
+          tr_format("print output ({count} lines)", {{"count", std::to_string(outcome.output.size())}}).c_str())) {
     for (const std::string& line : outcome.output) text(line);
     ImGui::TreePop();
   }
@@ -61,61 +89,70 @@ void draw_report(const ExerciseRun& run) {
   const ExerciseReport& report = run.report;
   text(run.label + "  (" + run.input.describe(run.exercise) + ")");
   if (!run.mine) {
-    draw_outcome("the reference", report.reference, false);
+    draw_outcome(kTheReference, report.reference, false);
     return;
   }
   if (report.identical) {
-    coloured(passed_colour(), "identical to the reference (pointer for pointer)");
+    coloured(passed_colour(), tr("identical to the reference (pointer for pointer)"));
   } else if (report.equal) {
-    coloured(passed_colour(), "equal to the reference (up to renumbering and rounding)");
+    coloured(passed_colour(), tr("equal to the reference (up to renumbering and rounding)"));
   } else {
     const size_t n = report.total_differences;
-    coloured(failed_colour(), "different from the reference: " + std::to_string(n) +
-                                  (n == 1 ? " difference" : " differences, the likely mistake first"));
+    coloured(failed_colour(), tr_format(n == 1 ? "different from the reference: {count} difference"
+                                               : "different from the reference: {count} differences, the likely "
+                                                 "mistake first",
+                                        {{"count", std::to_string(n)}}));
   }
   // The likely mistakes are the first differences: those are shown, the rest fold away so that the tables and the
   // replay below stay in reach.
   const size_t shown = std::min(report.differences.size(), kDifferencesShown);
   for (size_t i = 0; i < shown; ++i) coloured(failed_colour(), "- " + report.differences[i]);
-  if (report.total_differences > shown &&
-      ImGui::TreeNode("differences", "%s",
-                      plural(report.total_differences - shown, "more difference", "more differences").c_str())) {
+  const size_t more = report.total_differences - std::min(report.total_differences, shown);
+  if (more > 0 && ImGui::TreeNode("differences", "%s",
+                                  tr_format(more == 1 ? "{count} more difference" : "{count} more differences",
+                                            {{"count", std::to_string(more)}})
+                                      .c_str())) {
     for (size_t i = shown; i < report.differences.size(); ++i) coloured(failed_colour(), "- " + report.differences[i]);
-    if (report.total_differences > report.differences.size())
-      text("... and " + std::to_string(report.total_differences - report.differences.size()) + " more");
+    if (report.total_differences > report.differences.size()) {
+      text(tr_format("... and {count} more",
+                     {{"count", std::to_string(report.total_differences - report.differences.size())}}));
+    }
     ImGui::TreePop();
   }
   if (!report.equal) {  // an instructor's exercise brings its own hint
     if (const std::shared_ptr<const ScriptedExercise> scripted = run.exercise.definition();
         scripted && !scripted->hint().empty()) {
       ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
-      text("Hint: " + scripted->hint());
+      text(tr_format("Hint: {hint}", {{"hint", scripted->hint()}}));
       ImGui::PopStyleColor();
     }
   }
-  if (!report.notes.empty() && ImGui::TreeNode("notes", "notes (%zu)", report.notes.size())) {
+  if (!report.notes.empty() &&
+      ImGui::TreeNode("notes", "%s",
+                      tr_format("notes ({count})", {{"count", std::to_string(report.notes.size())}}).c_str())) {
     for (const std::string& line : report.notes) text("- " + line);
     ImGui::TreePop();
   }
   bool error_listed = false;  // a run that failed says its error once, among the differences shown
   for (size_t i = 0; i < shown; ++i) error_listed = error_listed || report.differences[i] == report.mine.error;
-  draw_outcome("yours", report.mine, true, !report.mine.error.empty() && error_listed);
-  draw_outcome("the reference", report.reference, false);
+  draw_outcome(kYours, report.mine, true, !report.mine.error.empty() && error_listed);
+  draw_outcome(kTheReference, report.reference, false);
 }
 
 void draw_pointer_table(const std::vector<PointerRow>& rows) {
   if (rows.empty()) return;
   const size_t differing =
       size_t(std::count_if(rows.begin(), rows.end(), [](const PointerRow& r) { return r.differs(); }));
-  if (!ImGui::CollapsingHeader("changed pointers, mine vs reference", ImGuiTreeNodeFlags_DefaultOpen)) return;
-  text(std::to_string(rows.size()) + " fields changed, " + std::to_string(differing) + " differ");
+  if (!ImGui::CollapsingHeader(tr_label("changed pointers, mine vs reference"), ImGuiTreeNodeFlags_DefaultOpen)) return;
+  text(tr_format("{count} fields changed, {differing} differ",
+                 {{"count", std::to_string(rows.size())}, {"differing", std::to_string(differing)}}));
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY;
   if (!ImGui::BeginTable("pointers", 4, flags, ImVec2(0, 220))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn("field");
-  ImGui::TableSetupColumn("before");
-  ImGui::TableSetupColumn("mine");
-  ImGui::TableSetupColumn("reference");
+  ImGui::TableSetupColumn(tr("field"));
+  ImGui::TableSetupColumn(tr("before"));
+  ImGui::TableSetupColumn(tr("mine"));
+  ImGui::TableSetupColumn(tr("reference"));
   ImGui::TableHeadersRow();
   ImGuiListClipper clipper;
   clipper.Begin(int(rows.size()));
@@ -142,14 +179,14 @@ void draw_pointer_table(const std::vector<PointerRow>& rows) {
 void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocument& doc) {
   const size_t n = session.replay_length();
   if (n == 0) return;
-  if (!ImGui::CollapsingHeader("replay your writes", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (!ImGui::CollapsingHeader(tr_label("replay your writes"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const bool replaying = session.replaying();
   if (!replaying) {
     ImGui::BeginDisabled(!session.can_replay(doc));
-    if (ImGui::Button("Replay")) session.start_replay(doc);
+    if (ImGui::Button(tr_label("Replay"))) session.start_replay(doc);
     ImGui::EndDisabled();
     ImGui::SameLine();
-    text(std::to_string(n) + " writes recorded");
+    text(tr_format("{count} writes recorded", {{"count", std::to_string(n)}}));
   } else {
     const size_t k = session.replay_position();
     if (ImGui::Button("|<")) session.replay_step(doc, 0);
@@ -160,10 +197,12 @@ void draw_replay(ExerciseSession& session, ExercisePanelState& state, MeshDocume
     ImGui::SameLine();
     if (ImGui::Button(">|")) session.replay_step(doc, n);
     ImGui::SameLine();
-    if (ImGui::Button("Done")) session.finish_replay(doc);
+    if (ImGui::Button(tr_label("Done"))) session.finish_replay(doc);
     int slider = int(session.replay_position());
     ImGui::SetNextItemWidth(-1);
-    const std::string format = "write %d/" + std::to_string(n);
+    // The slider's printf format: its %d is the position.
+    const std::string format =
+        tr_format("write {position}/{count}", {{"position", "%d"}, {"count", std::to_string(n)}});
     if (ImGui::SliderInt("##k", &slider, 0, int(n), format.c_str())) {
       session.replay_step(doc, size_t(std::max(slider, 0)));
     }
@@ -247,7 +286,7 @@ void draw_exercise_panel(ExerciseSession& session, ExercisePanelState& state, Me
   session.sync(doc);
   if (!state.open) return;
   ImGui::SetNextWindowSize(ImVec2(520, 640), ImGuiCond_FirstUseEver);
-  if (ImGui::Begin("Exercises", &state.open)) draw_exercise_panel_contents(session, state, doc, selection);
+  if (ImGui::Begin(tr_label("Exercises"), &state.open)) draw_exercise_panel_contents(session, state, doc, selection);
   ImGui::End();
 }
 
@@ -257,10 +296,10 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   ImGui::PushTextWrapPos(0.0f);  // the panel is a column: its lines wrap at its edge
   const ExerciseInfo& active = exercise_info(session.exercise());
   ImGui::SetNextItemWidth(220);
-  if (ImGui::BeginCombo("exercise", active.title)) {
+  if (ImGui::BeginCombo(tr_label("exercise"), tr(active.title))) {
     for (const Exercise exercise : mesh_exercises()) {
       const ExerciseInfo& info = exercise_info(exercise);
-      if (ImGui::Selectable(info.title, exercise == session.exercise())) session.set_exercise(exercise);
+      if (ImGui::Selectable(tr_label(info.title), exercise == session.exercise())) session.set_exercise(exercise);
     }
     ImGui::EndCombo();
   }
@@ -268,30 +307,34 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
   text(session.file().string());
   ImGui::TextDisabled("%s", active.signature);
   if (!session.last_run()) {
-    ImGui::TextDisabled("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views");
+    ImGui::TextDisabled("%s",
+                        tr("parts 1 and 2 (curve.lua, patch.lua): the mine box (M) of the curve and patch views"));
   }
   if (session.running()) {
     // The student's code runs on its own thread: the window goes on drawing, and Stop ends the code at its next line.
-    const bool stop = ImGui::Button("Stop");
+    const bool stop = ImGui::Button(tr_label("Stop"));
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
     state.run_mine_x = 0.5f * (low.x + high.x);
     state.run_mine_y = 0.5f * (low.y + high.y);
     if (stop) session.stop_running();
     ImGui::SameLine();
     // The time first, and wrapped: the label can be longer than a narrow panel.
-    ImGui::TextWrapped("running your code (%.1f s): %s", session.running_seconds(), session.running_label().c_str());
+    ImGui::TextWrapped(
+        "%s", tr_format("running your code ({seconds} s): {what}",
+                        {{"seconds", format_fixed(session.running_seconds(), 1)}, {"what", session.running_label()}})
+                  .c_str());
   } else {
-    const bool run_mine = ImGui::Button("Run mine");
+    const bool run_mine = ImGui::Button(tr_label("Run mine"));
     const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
     state.run_mine_x = 0.5f * (low.x + high.x);
     state.run_mine_y = 0.5f * (low.y + high.y);
     if (run_mine) session.start_mine(doc, selection);
     ImGui::SameLine();
-    if (ImGui::Button("Run reference")) session.run_reference(doc, selection);
+    if (ImGui::Button(tr_label("Run reference"))) session.run_reference(doc, selection);
   }
   if (session.loads() > 0 && session.file_changed()) {  // two stat calls a frame
     ImGui::SameLine();
-    ImGui::TextDisabled("(saved since the last run: reloads on the next)");
+    ImGui::TextDisabled("%s", tr("(saved since the last run: reloads on the next)"));
   }
   if (!session.load_error().empty()) coloured(failed_colour(), session.load_error());
   ImGui::Separator();
@@ -316,8 +359,8 @@ void draw_exercise_panel_contents(ExerciseSession& session, ExercisePanelState& 
     }
     if (run->mine) draw_replay(session, state, doc);
   } else if (session.load_error().empty() && !session.running()) {
-    ImGui::TextDisabled(is_mesh_exercise(session.exercise()) ? "select an element and press Run mine"
-                                                             : "choose an input and press Run mine");
+    ImGui::TextDisabled("%s", tr(is_mesh_exercise(session.exercise()) ? "select an element and press Run mine"
+                                                                      : "choose an input and press Run mine"));
   }
   ImGui::PopTextWrapPos();
 }

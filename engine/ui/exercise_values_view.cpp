@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/scripted_exercise.h"
 #include "exercise/value_compare.h"
@@ -23,24 +24,27 @@ std::vector<ValueRow> value_rows(const ExerciseRun& run) {
     return run.mine && !compare_values(a, b, tolerance, 0).equal;
   };
   const auto text = [&](const ExerciseOutcome& outcome) {
-    return outcome.error.empty() ? value_text(outcome.value) : std::string("(failed)");
+    return outcome.error.empty() ? value_text(outcome.value) : std::string(tr("(failed)"));
   };
   const ExerciseValue& want = reference.value;
   const ExerciseValue& got = mine.value;
   const bool lists = want.kind == ExerciseValue::Kind::List && (!run.mine || got.kind == ExerciseValue::Kind::List);
   if (!lists || !reference.error.empty() || (run.mine && !mine.error.empty())) {
-    rows.push_back({"returned", run.mine ? text(mine) : "", text(reference), differs(got, want)});
+    rows.push_back({tr("returned"), run.mine ? text(mine) : "", text(reference), differs(got, want)});
     return rows;
   }
   const size_t n = std::min(std::max(want.items.size(), run.mine ? got.items.size() : 0), kMaxValueRows);
-  if (n == 0) rows.push_back({"returned", run.mine ? "{}" : "", "{}", false});
+  if (n == 0) rows.push_back({tr("returned"), run.mine ? "{}" : "", "{}", false});
   for (size_t i = 0; i < n; ++i) {
     const ExerciseValue* a = run.mine && i < got.items.size() ? &got.items[i] : nullptr;
     const ExerciseValue* b = i < want.items.size() ? &want.items[i] : nullptr;
     ValueRow row;
-    row.what = std::string(item_word(b ? *b : *a)) + " " + std::to_string(i + 1);
-    row.mine = run.mine ? (a ? value_text(*a) : "(none)") : "";
-    row.reference = b ? value_text(*b) : "(none)";
+    // One template per item word ("number {number}", "point {number}", "list {number}", "value {number}"): the word
+    // is not a fragment of a translated text.
+    const std::string what = std::string(item_word(b ? *b : *a)) + " {number}";
+    row.what = tr_format(what.c_str(), {{"number", std::to_string(i + 1)}});
+    row.mine = run.mine ? (a ? value_text(*a) : tr("(none)")) : "";
+    row.reference = b ? value_text(*b) : tr("(none)");
     row.differs = run.mine && (!a || !b || differs(*a, *b));
     rows.push_back(std::move(row));
   }
@@ -54,7 +58,7 @@ std::vector<std::string> value_input_lines(const ExerciseRun& run) {
   const ExerciseInput& input = run.input;
   if (scripted->input() == ScriptedExercise::Input::Patch) {
     for (size_t row = 0; row < 4; ++row) {
-      std::string line = "row " + std::to_string(row) + ":";
+      std::string line = tr_format("row {row}:", {{"row", std::to_string(row)}});
       for (size_t col = 0; col < 4; ++col) line += " " + format_position(input.patch.points[4 * row + col]);
       lines.push_back(std::move(line));
     }
@@ -76,13 +80,13 @@ void draw_value_fixture_chooser(ExerciseSession& session) {
   if (!scripted || !scripted->takes_values()) return;
   const std::vector<ScriptedFixture>& fixtures = scripted->fixtures();
   if (fixtures.empty()) {
-    ImGui::TextDisabled("this exercise has no fixtures to run on");
+    ImGui::TextDisabled("%s", tr("this exercise has no fixtures to run on"));
     return;
   }
   const size_t current = std::min(session.fixture(), fixtures.size() - 1);
-  const std::string shown = session.has_values_input() ? "the lesson's input" : fixtures[current].name;
+  const std::string shown = session.has_values_input() ? tr("the lesson's input") : fixtures[current].name;
   ImGui::SetNextItemWidth(320);
-  if (ImGui::BeginCombo("input", shown.c_str())) {
+  if (ImGui::BeginCombo(tr_label("input"), shown.c_str())) {
     for (size_t i = 0; i < fixtures.size(); ++i) {
       const std::string label = fixtures[i].name + "##f" + std::to_string(i);
       if (ImGui::Selectable(label.c_str(), !session.has_values_input() && i == current)) session.set_fixture(i);
@@ -92,16 +96,17 @@ void draw_value_fixture_chooser(ExerciseSession& session) {
 }
 
 void draw_value_tables(const ExerciseRun& run, const std::vector<ValueRow>& rows) {
-  if (ImGui::CollapsingHeader("input", ImGuiTreeNodeFlags_DefaultOpen)) {
+  if (ImGui::CollapsingHeader(tr_label("input"), ImGuiTreeNodeFlags_DefaultOpen)) {
     for (const std::string& line : value_input_lines(run)) ImGui::TextUnformatted(line.c_str());
   }
-  if (rows.empty() || !ImGui::CollapsingHeader("returned, mine vs reference", ImGuiTreeNodeFlags_DefaultOpen)) return;
+  if (rows.empty()) return;
+  if (!ImGui::CollapsingHeader(tr_label("returned, mine vs reference"), ImGuiTreeNodeFlags_DefaultOpen)) return;
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_ScrollY;
   if (!ImGui::BeginTable("values", 3, flags, ImVec2(0, 220))) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  ImGui::TableSetupColumn("item");
-  ImGui::TableSetupColumn("mine");
-  ImGui::TableSetupColumn("reference");
+  ImGui::TableSetupColumn(tr("item"));
+  ImGui::TableSetupColumn(tr("mine"));
+  ImGui::TableSetupColumn(tr("reference"));
   ImGui::TableHeadersRow();
   ImGuiListClipper clipper;
   clipper.Begin(int(rows.size()));

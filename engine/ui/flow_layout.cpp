@@ -5,6 +5,8 @@
 
 #include <imgui.h>
 
+#include "core/text_breaks.h"
+
 namespace meshedit {
 
 void same_line_if_room(const char* label) {
@@ -35,30 +37,7 @@ bool wrapping_button(const char* label) {
 }
 
 std::string wrapped_at_spaces(const std::string& text, float width) {
-  std::string out;
-  size_t line_start = 0;
-  while (line_start <= text.size()) {
-    size_t line_end = text.find('\n', line_start);
-    if (line_end == std::string::npos) line_end = text.size();
-    std::string line;
-    for (size_t start = line_start; start <= line_end;) {
-      size_t end = text.find(' ', start);
-      if (end == std::string::npos || end > line_end) end = line_end;
-      const std::string word = text.substr(start, end - start);
-      const std::string longer = line.empty() ? word : line + " " + word;
-      if (!line.empty() && ImGui::CalcTextSize(longer.c_str()).x > width) {
-        out += line + "\n";
-        line = word;
-      } else {
-        line = longer;
-      }
-      start = end + 1;
-    }
-    out += line;
-    if (line_end < text.size()) out += "\n";
-    line_start = line_end + 1;
-  }
-  return out;
+  return wrapped_text(text, width, [](const std::string& line) { return ImGui::CalcTextSize(line.c_str()).x; });
 }
 
 void text_wrapped_at_spaces(const std::string& text) {

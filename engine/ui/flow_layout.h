@@ -16,11 +16,12 @@ void same_line_if_room(const char* label);
 // push an id around it when two buttons may share a label. Returns true when pressed.
 bool wrapping_button(const char* label);
 
-// `text` with line breaks put at spaces so that no line is wider than `width` pixels in the current font (a word
-// wider than that keeps a line of its own); the text's own line breaks stay. ImGui's own wrapping also breaks after
-// a full stop or a comma, which splits numbers ("-0.\n2778") and ranges ("faces 2.\n.4").
+// `text` with line breaks put at spaces and between Chinese characters (core/text_breaks.h) so that no line is wider
+// than `width` pixels in the current font (a word wider than that keeps a line of its own); the text's own line breaks
+// stay. ImGui's own wrapping also breaks after a full stop or a comma, which splits numbers ("-0.\n2778") and ranges
+// ("faces 2.\n.4"), and breaks Chinese only where a line overflows.
 std::string wrapped_at_spaces(const std::string& text, float width);
-// ImGui::TextWrapped for text with numbers in it: wrapped at spaces only, to the content region's width.
+// ImGui::TextWrapped for text with numbers in it: wrapped as above, to the content region's width.
 void text_wrapped_at_spaces(const std::string& text);
 
 }  // namespace meshedit

@@ -12,6 +12,8 @@
 
 #include "core/data_folders.h"
 #include "core/file_bytes.h"
+#include "core/text_breaks.h"
+#include "core/translation.h"
 
 namespace meshedit {
 namespace {
@@ -23,12 +25,55 @@ namespace fs = std::filesystem;
 ImFont* add_font(ImFontAtlas& atlas, const fs::path& path, float pixels, ImFontConfig config) {
   const FileBytes file = read_file_bytes(path);
   const std::string& bytes = file.bytes;
-  const bool truetype =
-      bytes.size() > 12 && (bytes.compare(0, 4, std::string("\0\1\0\0", 4)) == 0 || bytes.compare(0, 4, "true") == 0);
+  const bool truetype = bytes.size() > 12 && (bytes.compare(0, 4, std::string("\0\1\0\0", 4)) == 0 ||
+                                              bytes.compare(0, 4, "true") == 0 || bytes.compare(0, 4, "ttcf") == 0);
   if (!file.ok() || !truetype) return nullptr;
   void* data = ImGui::MemAlloc(bytes.size());
   std::memcpy(data, bytes.data(), bytes.size());
   return atlas.AddFontFromMemoryTTF(data, int(bytes.size()), pixels, &config);
+}
+
+// Every wide character (core/text_breaks.h) of the window's catalog in `language` and of the shipped lessons, with
+// CJK punctuation and full-width forms: the glyphs the Chinese font adds to the atlas. Static: ImGui reads the ranges
+// when it builds the atlas, after load_fonts returns.
+const ImWchar* wide_glyph_ranges(Language language) {
+  static ImVector<ImWchar> ranges;
+  ImFontGlyphRangesBuilder builder;
+  static const ImWchar kPunctuation[] = {0x3000, 0x303F, 0xFF00, 0xFFEF, 0x2010, 0x2027, 0};
+  builder.AddRanges(kPunctuation);
+  std::string text = catalog_of(language).all_translations();
+  std::error_code ec;
+  for (fs::directory_iterator it(data_folder("lessons"), ec), end; !ec && it != end; it.increment(ec)) {
+    if (it->path().extension() == ".lua") text += read_file_bytes(it->path()).bytes;
+  }
+  for (size_t i = 0; i < text.size();) {
+    size_t n = 1;
+    const char32_t c = utf8_at(text, i, &n);
+    if (wide_char(c) && c <= 0xFFFF) builder.AddChar(ImWchar(c));
+    i += n;
+  }
+  ranges.clear();
+  builder.BuildRanges(&ranges);
+  return ranges.Data;
+}
+
+// The first of the Chinese font files that exists: beside the DejaVu files, else Debian's fonts-wqy-microhei.
+fs::path wide_font_file() {
+  std::error_code ec;
+  const fs::path beside = font_folder() / "wqy-microhei.ttc";
+  return fs::is_regular_file(beside, ec) ? beside : fs::path("/usr/share/fonts/truetype/wqy/wqy-microhei.ttc");
+}
+
+// Merges the Chinese glyphs into the last font added; a warning when the font file is missing.
+std::string merge_wide_glyphs(ImFontAtlas& atlas, float pixels, const ImWchar* ranges) {
+  ImFontConfig config;
+  config.MergeMode = true;
+  config.OversampleH = 1;
+  config.PixelSnapH = true;
+  config.GlyphRanges = ranges;
+  const fs::path file = wide_font_file();
+  if (add_font(atlas, file, pixels, config)) return "";
+  return "no " + file.string() + " (install fonts-wqy-microhei): Chinese text cannot be drawn and shows as '?'";
 }
 
 }  // namespace
@@ -63,8 +108,14 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
     out.warning = "no " + text.string() + " (install fonts-dejavu-core): using ImGui's built-in font";
     return out;
   }
-  if (!add_font(atlas, mono, out.pixels, config))
+  const Language language = window_language();
+  const ImWchar* wide = language == Language::English ? nullptr : wide_glyph_ranges(language);
+  if (wide) out.warning = merge_wide_glyphs(atlas, out.pixels, wide);
+  if (!add_font(atlas, mono, out.pixels, config)) {
     out.warning = "no " + mono.string() + " (install fonts-dejavu-core): ids use the text font";
+  } else if (wide && out.warning.empty()) {
+    out.warning = merge_wide_glyphs(atlas, out.pixels, wide);
+  }
   out.real = true;
   return out;
 }

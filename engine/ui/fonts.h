@@ -1,6 +1,8 @@
 // The window's type: Debian's DejaVu Sans for text and DejaVu Sans Mono for ids and tables, rasterised at the size
 // the student chose times the monitor's content scale, so text is sharp on HiDPI screens. Without the font files
-// ImGui's own font is used and the warning says which file was missing.
+// ImGui's own font is used and the warning says which file was missing. When the window's language is Chinese
+// (core/translation.h), the glyphs of Debian's WenQuanYi Micro Hei (fonts-wqy-microhei) that the language's catalog
+// and the shipped lessons use are merged into both fonts, so the atlas holds only the characters the texts need.
 //
 // Invariants:
 // - load_fonts replaces everything in ImGui's font atlas: the first font is the text font (ImGui's default), the

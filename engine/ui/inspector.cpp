@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -94,8 +95,9 @@ struct Drawer {
     ImGui::TextUnformatted(text);
     ImGui::TableSetColumnIndex(1);
   }
-  void link(const char* field, ElementRef ref) {
-    label(field);
+  // `shown`: the row's words when they are not the field's code name (which names the link in the probe).
+  void link(const char* field, ElementRef ref, const char* shown = nullptr) {
+    label(shown ? shown : field);
     element_link(mesh, ref, selection, field, probe);
   }
   void text(const char* field, const std::string& value) {  // NOLINT(readability-convert-member-functions-to-static)
@@ -109,11 +111,11 @@ struct Drawer {
   }
 };
 
-const char* yes_no(bool b) { return b ? "yes" : "no"; }
+const char* yes_no(bool b) { return tr(b ? "yes" : "no"); }
 
-void draw_walk(Drawer& d, const ElementFacts& facts, const char* title, const char* vertex_role) {
-  const std::string heading = std::string(title) + " (" + std::to_string(facts.walked) +
-                              (facts.closed ? ", closed)" : " steps, does not close)");
+// `closed` and `open`: the heading's templates ("halfedge cycle ({count}, closed)"), by whether the walk closed.
+void draw_walk(Drawer& d, const ElementFacts& facts, const char* closed, const char* open, const char* vertex_role) {
+  const std::string heading = tr_format(facts.closed ? closed : open, {{"count", std::to_string(facts.walked)}});
   if (!facts.closed) ImGui::TextColored(ui_colors::broken(), "%s", heading.c_str());
   else ImGui::TextUnformatted(heading.c_str());
   for (size_t i = 0; i < facts.walk.size(); ++i) {
@@ -121,12 +123,16 @@ void draw_walk(Drawer& d, const ElementFacts& facts, const char* title, const ch
     ImGui::Bullet();
     element_link(d.mesh, facts.walk[i].halfedge, d.selection, "walk-halfedge", d.probe);
     ImGui::SameLine();
-    ImGui::TextDisabled("%s", vertex_role);
+    ImGui::TextDisabled("%s", tr(vertex_role));
     ImGui::SameLine();
     element_link(d.mesh, facts.walk[i].vertex, d.selection, "walk-vertex", d.probe);
     ImGui::PopID();
   }
-  if (facts.walked > facts.walk.size()) ImGui::TextDisabled("... %u more", unsigned(facts.walked - facts.walk.size()));
+  if (facts.walked > facts.walk.size()) {
+    ImGui::TextDisabled(
+        "%s",
+        tr_format("... {count} more", {{"count", std::to_string(unsigned(facts.walked - facts.walk.size()))}}).c_str());
+  }
 }
 
 void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
@@ -146,12 +152,12 @@ void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
         d.link("prev", facts.prev);
         if (!facts.prev.valid()) {
           ImGui::SameLine();
-          ImGui::TextDisabled("(face cycle broken)");
+          ImGui::TextDisabled("%s", tr("(face cycle broken)"));
         }
-        d.link("head", facts.head);
+        d.link("head", facts.head, tr("head"));
         ImGui::SameLine();
         ImGui::TextDisabled("next.vertex");
-        d.text("on boundary", yes_no(facts.is_boundary));
+        d.text(tr("on boundary"), yes_no(facts.is_boundary));
       }
       break;
     }
@@ -164,8 +170,8 @@ void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
       d.text("z", format_number(p.z));
       if (alive) {
         const auto degree = facts.degree();
-        d.text("degree", degree ? std::to_string(*degree) : std::string("- (fan does not close)"));
-        d.text("on boundary", yes_no(facts.is_boundary));
+        d.text(tr("degree"), degree ? std::to_string(*degree) : std::string(tr("- (fan does not close)")));
+        d.text(tr("on boundary"), yes_no(facts.is_boundary));
       }
       break;
     }
@@ -175,14 +181,14 @@ void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
         d.link("twin", facts.edge_twin);
         ImGui::SameLine();
         ImGui::TextDisabled("halfedge.twin");
-        d.link("ends", facts.edge_ends[0]);
+        d.link("ends", facts.edge_ends[0], tr("ends"));
         ImGui::SameLine();
         element_link(mesh, facts.edge_ends[1], d.selection, "end2", d.probe);
-        d.link("faces", facts.edge_faces[0]);
+        d.link("faces", facts.edge_faces[0], tr("faces"));
         ImGui::SameLine();
         element_link(mesh, facts.edge_faces[1], d.selection, "face2", d.probe);
-        d.text("length", facts.length ? format_number(*facts.length) : std::string("-"));
-        d.text("on boundary", yes_no(facts.is_boundary));
+        d.text(tr("length"), facts.length ? format_number(*facts.length) : std::string("-"));
+        d.text(tr("on boundary"), yes_no(facts.is_boundary));
       }
       break;
     }
@@ -191,8 +197,8 @@ void draw_fields(Drawer& d, const ElementFacts& facts, bool alive) {
       d.link("halfedge", mesh.halfedge(e.face_id()));
       if (alive) {
         const auto degree = facts.degree();
-        d.text("degree", degree ? std::to_string(*degree) : std::string("- (cycle does not close)"));
-        d.text("boundary loop", yes_no(facts.is_boundary));
+        d.text(tr("degree"), degree ? std::to_string(*degree) : std::string(tr("- (cycle does not close)")));
+        d.text(tr("boundary loop"), yes_no(facts.is_boundary));
       }
       break;
     }
@@ -206,9 +212,8 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
   const ElementRef before = selection.selected;
   const ElementRef e = selection.selected;
   if (!e.valid()) {
-    ImGui::TextWrapped(
-        "Nothing selected. Click an element in the view or a row of the pointer tables; "
-        "N T V E F H walk the pointers.");
+    ImGui::TextWrapped("%s", tr("Nothing selected. Click an element in the view or a row of the pointer tables; "
+                                "N T V E F H walk the pointers."));
     return false;
   }
   const RefState st = reference_state(doc.mesh, e);
@@ -227,15 +232,18 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
   const ElementFacts facts = state.facts;  // a copy: a click below may change the selection mid-draw
   const bool alive = st == RefState::Live;
 
-  ImGui::Text("%s  %s", format_id(e).c_str(), kind_name(e.kind));
+  ImGui::Text("%s  %s", format_id(e).c_str(), tr(kind_name(e.kind)));
   ImGui::SameLine();
-  if (alive) ImGui::TextColored(ui_colors::valid(), "alive");
-  else ImGui::TextColored(ui_colors::dead(), "dead: deleted, fields keep their last values");
+  if (alive) ImGui::TextColored(ui_colors::valid(), "%s", tr("alive"));
+  else ImGui::TextColored(ui_colors::dead(), "%s", tr("dead: deleted, fields keep their last values"));
   Drawer d{doc.mesh, selection, state.probe};
   draw_fields(d, facts, alive);
   if (alive && (e.kind == ElementKind::Face || e.kind == ElementKind::Boundary))
-    draw_walk(d, facts, "halfedge cycle", "from");
-  if (alive && e.kind == ElementKind::Vertex) draw_walk(d, facts, "outgoing halfedges", "to");
+    draw_walk(d, facts, "halfedge cycle ({count}, closed)", "halfedge cycle ({count} steps, does not close)", "from");
+  if (alive && e.kind == ElementKind::Vertex) {
+    draw_walk(d, facts, "outgoing halfedges ({count}, closed)", "outgoing halfedges ({count} steps, does not close)",
+              "to");
+  }
   return selection.selected != before;
 }
 
@@ -243,7 +251,7 @@ bool draw_inspector(MeshDocument& doc, Selection& selection, InspectorState& sta
   if (!state.open) return false;
   bool changed = false;
   default_window_size(ImVec2(340, 460));
-  if (ImGui::Begin("Inspector", &state.open)) changed = draw_inspector_contents(doc, selection, state);
+  if (ImGui::Begin(tr_label("Inspector"), &state.open)) changed = draw_inspector_contents(doc, selection, state);
   ImGui::End();
   return changed;
 }

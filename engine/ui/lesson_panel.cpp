@@ -6,6 +6,9 @@
 
 #include <imgui.h>
 
+#include "core/text_breaks.h"
+#include "core/translation.h"
+#include "core/value_format.h"
 #include "document/exercise_session.h"
 #include "lesson/lesson_text.h"
 #include "ui/flow_layout.h"
@@ -29,13 +32,15 @@ ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }
 
 void draw_lesson_list(LessonPanelState& state) {
   if (state.lessons_editable) {
-    ImGui::TextWrapped("Pick a lesson. Each one is a Lua file in %s; edit it and save, and the lesson reloads.",
-                       state.lessons_dir.string().c_str());
+    ImGui::TextWrapped("%s", tr_format("Pick a lesson. Each one is a Lua file in {folder}; edit it and save, and the "
+                                       "lesson reloads.",
+                                       {{"folder", state.lessons_dir.string()}})
+                                 .c_str());
   } else {
-    ImGui::TextWrapped("Pick a lesson.");
+    ImGui::TextWrapped("%s", tr("Pick a lesson."));
   }
   ImGui::Separator();
-  if (state.lesson_files.empty()) ImGui::TextDisabled("(no lessons found)");
+  if (state.lesson_files.empty()) ImGui::TextDisabled("%s", tr("(no lessons found)"));
   for (const fs::path& file : state.lesson_files) {
     if (ImGui::Selectable(file.stem().string().c_str())) state.requested = file;
   }
@@ -49,7 +54,9 @@ std::string reflow(const std::string& text) {
   for (size_t i = 0; i < text.size(); ++i) {
     const bool lone_break = text[i] == '\n' && i + 1 < text.size() && text[i + 1] != '\n' &&
                             (i == 0 || text[i - 1] != '\n') && text.compare(i + 1, 2, "- ") != 0;
-    out += lone_break ? ' ' : text[i];
+    if (!lone_break) out += text[i];
+    else if (!joins_without_space(std::string_view(text).substr(0, i), std::string_view(text).substr(i + 1)))
+      out += ' ';
   }
   return out;
 }
@@ -61,7 +68,9 @@ ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
 // One block of the step (lesson/lesson_blocks.h): say() text, live text (or its error), a plot, a question answered.
 void draw_block(const LessonRunner& runner, const LessonBlock& block) {
   switch (block.kind) {
-    case LessonBlock::Kind::Text: text_wrapped_at_spaces(reflow(markdown_to_plain(runner.said()[block.index]))); break;
+    case LessonBlock::Kind::Text:
+      text_wrapped_at_spaces(reflow(markdown_to_plain(lesson_text(runner, runner.said()[block.index]))));
+      break;
     case LessonBlock::Kind::Live: {
       const LessonLive& live = runner.lives()[block.index];
       if (!live.error.empty()) {
@@ -69,12 +78,12 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
         ImGui::TextWrapped("%s", live.error.c_str());
         ImGui::PopStyleColor();
       } else {
-        text_wrapped_at_spaces(reflow(markdown_to_plain(live.text)));
+        text_wrapped_at_spaces(reflow(markdown_to_plain(live.local.in(window_language()))));
       }
       break;
     }
-    case LessonBlock::Kind::Plot: draw_lesson_plot(runner.plots()[block.index]); break;
-    case LessonBlock::Kind::Answered: draw_lesson_answered(runner.answered()[block.index]); break;
+    case LessonBlock::Kind::Plot: draw_lesson_plot(runner, runner.plots()[block.index]); break;
+    case LessonBlock::Kind::Answered: draw_lesson_answered(runner, runner.answered()[block.index]); break;
   }
   ImGui::Spacing();
 }
@@ -82,30 +91,34 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
 // What the student sees of their file's wrong run: the task, the diagnosis, the hint and the button that shows the run
 // side by side with the reference.
 void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, const LessonWait& wait) {
-  text_wrapped_at_spaces(wait.question);
+  text_wrapped_at_spaces(lesson_text(runner, wait.question));
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(ui_palette().warning));
-  text_wrapped_at_spaces(wait.feedback);
+  text_wrapped_at_spaces(lesson_text(runner, wait.feedback));
   ImGui::PopStyleColor();
   if (!wait.hint.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
-    text_wrapped_at_spaces("Hint: " + wait.hint);
+    text_wrapped_at_spaces(tr_format("Hint: {hint}", {{"hint", lesson_text(runner, wait.hint)}}));
     ImGui::PopStyleColor();
   }
   const YourTurnVerdict* verdict = your_turn_to_show(runner);
   if (!verdict || !state.show_your_turn) return;
   ImGui::Spacing();
-  const bool clicked = ImGui::Button(kShowMineButton);
+  const bool clicked = ImGui::Button(tr_label(kShowMineButton));
   if (state.probe) state.probe->record_last_item("lesson-show-mine");
   const float width = ImGui::GetContentRegionAvail().x;
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   if (is_mesh_exercise(verdict->exercise)) {
-    ImGui::TextWrapped(
-        "Runs your %s on this input in the Exercises tab (X): the pointers it changed beside the "
-        "reference's, and your writes one by one.",
-        verdict->function.c_str());
+    ImGui::TextWrapped("%s", tr_format("Runs your {function} on this input in the Exercises tab (X): the pointers it "
+                                       "changed beside the reference's, and your writes one by one.",
+                                       {{"function", verdict->function}})
+                                 .c_str());
   } else {
-    ImGui::TextWrapped("Shows this input in the %s view with its \"mine\" on (M): your %s beside the reference's.",
-                       verdict->exercise == Exercise::CurveStep ? "curve" : "patch", verdict->function.c_str());
+    const char* shows = verdict->exercise == Exercise::CurveStep
+                            ? "Shows this input in the curve view with its \"mine\" on (M): your {function} beside the "
+                              "reference's."
+                            : "Shows this input in the patch view with its \"mine\" on (M): your {function} beside the "
+                              "reference's.";
+    ImGui::TextWrapped("%s", tr_format(shows, {{"function", verdict->function}}).c_str());
   }
   ImGui::PopStyleColor();
   // A new run, or the text wrapped anew (a resize): the diagnosis and the button come into sight, once.
@@ -121,12 +134,13 @@ void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, co
 
 // A your_turn's run under way: what runs on what, its time and a Stop (the window draws on while it runs).
 void draw_your_turn_running(LessonRunner& runner, LessonPanelState& state, const LessonWait& wait) {
-  text_wrapped_at_spaces(wait.question);
-  const bool stop = ImGui::Button("Stop");
+  text_wrapped_at_spaces(lesson_text(runner, wait.question));
+  const bool stop = ImGui::Button(tr_label("Stop"));
   if (state.probe) state.probe->record_last_item("lesson-stop-mine");
   if (stop) runner.stop_student_code();
   ImGui::SameLine();
-  ImGui::TextWrapped("running your code (%.1f s)", runner.student_code_seconds());
+  const std::string seconds = format_fixed(runner.student_code_seconds(), 1);
+  ImGui::TextWrapped("%s", tr_format("running your code ({seconds} s)", {{"seconds", seconds}}).c_str());
 }
 
 void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
@@ -143,7 +157,8 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
     if (state.scrolled_judgements != runner.judgements() && !runner.last_judgement().right) ImGui::SetScrollHereY(1.0f);
     state.scrolled_judgements = runner.judgements();
   } else if (wait.kind == LessonWait::Kind::Button) {
-    if (ImGui::Button(wait.name.c_str())) runner.deliver(LessonEvent::button(wait.name));
+    const std::string label = lesson_text(runner, wait.name) + "###lesson-button";
+    if (ImGui::Button(label.c_str())) runner.deliver(LessonEvent::button(wait.name));
   } else if (wait.kind == LessonWait::Kind::YourTurn) {  // the student's file gave another answer: why, until saved
     draw_your_turn_wait(runner, state, wait);
   } else if (wait.kind == LessonWait::Kind::YourTurnRunning) {
@@ -152,10 +167,10 @@ void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
     ImGui::ProgressBar(float(std::clamp(wait.elapsed / wait.seconds, 0.0, 1.0)));
   } else if (wait.waiting()) {
     ImGui::PushStyleColor(ImGuiCol_Text, hint_colour());
-    ImGui::TextWrapped("-> %s", wait.hint.empty() ? wait.describe().c_str() : wait.hint.c_str());
+    text_wrapped_at_spaces("-> " + (wait.hint.empty() ? wait.describe() : lesson_text(runner, wait.hint)));
     ImGui::PopStyleColor();
   }
-  if (runner.step_finished()) ImGui::TextDisabled("Step done: press Next.");
+  if (runner.step_finished()) ImGui::TextDisabled("%s", tr("Step done: press Next."));
 }
 
 }  // namespace
@@ -209,7 +224,8 @@ bool reload_if_changed(LessonRunner& runner, LessonPanelState& state, double dt)
 
 void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
   if (!state.open) return;
-  const std::string title = (runner.loaded() ? runner.title() : std::string("Lessons")) + "###lesson";
+  const std::string title =
+      (runner.loaded() ? lesson_text(runner, runner.title()) : std::string(tr("Lessons"))) + "###lesson";
   if (ImGui::Begin(title.c_str(), &state.open)) draw_lesson_panel_contents(runner, state);
   ImGui::End();
 }
@@ -227,12 +243,15 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   }
   const std::vector<std::string> steps = runner.step_titles();
   const size_t current = runner.current_step();
-  const std::string step_line = "Step " + std::to_string(current + 1) + " of " + std::to_string(steps.size()) + ": " +
-                                (current < steps.size() ? steps[current] : std::string());
+  const std::string step_line =
+      tr_format("Step {number} of {count}: {title}",
+                {{"number", std::to_string(current + 1)},
+                 {"count", std::to_string(steps.size())},
+                 {"title", current < steps.size() ? lesson_text(runner, steps[current]) : std::string()}});
   ImGui::SetNextItemWidth(-1);
   if (ImGui::BeginCombo("##steps", step_line.c_str())) {
     for (size_t i = 0; i < steps.size(); ++i) {
-      const std::string item = std::to_string(i + 1) + ". " + steps[i];
+      const std::string item = std::to_string(i + 1) + ". " + lesson_text(runner, steps[i]);
       if (ImGui::Selectable(item.c_str(), i == current)) runner.go_to(i);
     }
     ImGui::EndCombo();
@@ -243,25 +262,25 @@ void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   const ImGuiStyle& style = ImGui::GetStyle();
   float row = -style.ItemSpacing.x;
   for (const char* label : buttons)
-    row += ImGui::CalcTextSize(label).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
+    row += ImGui::CalcTextSize(tr(label)).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
   const int rows = row <= ImGui::GetContentRegionAvail().x ? 1 : 2;
   ImGui::BeginChild("step", ImVec2(0, -ImGui::GetFrameHeightWithSpacing() * float(rows)), false);
   draw_step_body(runner, state);
   ImGui::EndChild();
   if (state.probe) state.probe->record_last_item("lesson-text");
   ImGui::BeginDisabled(current == 0);
-  if (ImGui::Button("< Back")) runner.back();
+  if (ImGui::Button(tr_label("< Back"))) runner.back();
   if (state.probe) state.probe->record_last_item("lesson-back");
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(current + 1 >= steps.size());
-  if (ImGui::Button("Next >")) runner.next();
+  if (ImGui::Button(tr_label("Next >"))) runner.next();
   if (state.probe) state.probe->record_last_item("lesson-next");
   ImGui::EndDisabled();
   if (rows == 1) ImGui::SameLine();
-  if (ImGui::Button("Reload")) run_reload(runner, state);
+  if (ImGui::Button(tr_label("Reload"))) run_reload(runner, state);
   ImGui::SameLine();
-  if (ImGui::Button("Lessons")) {
+  if (ImGui::Button(tr_label("Lessons"))) {
     refresh_lessons(state);
     state.requested = fs::path();  // empty: back to the list
   }

@@ -9,6 +9,7 @@
 
 #include "core/value_format.h"
 #include "ui/flow_layout.h"
+#include "ui/lesson_question_view.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -30,10 +31,10 @@ struct PlotFrame {
 
 }  // namespace
 
-void draw_lesson_plot(const LessonPlot& plot) {
+void draw_lesson_plot(const LessonRunner& runner, const LessonPlot& plot) {
   const Palette& palette = ui_palette();
   const Theme theme = ui_theme();
-  if (!plot.title.empty()) ImGui::TextUnformatted(plot.title.c_str());
+  if (!plot.title.empty()) ImGui::TextUnformatted(lesson_text(runner, plot.title).c_str());
   const float line = ImGui::GetTextLineHeight();
   const float width = std::max(ImGui::GetContentRegionAvail().x, line * 6.0f);
   const float height = std::clamp(width * 0.55f, line * 5.0f, line * 12.0f);
@@ -84,7 +85,7 @@ void draw_lesson_plot(const LessonPlot& plot) {
   if (marked) ImGui::Text("x = %s", number_text(*plot.marker).c_str());
   for (size_t i = 0; i < plot.curves.size(); ++i) {
     const LessonPlotCurve& curve = plot.curves[i];
-    std::string entry = curve.label;
+    std::string entry = lesson_text(runner, curve.label);
     if (marked) {
       if (const std::optional<double> y = plot_value(curve, *plot.marker)) entry += " = " + number_text(*y);
     }

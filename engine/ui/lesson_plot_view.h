@@ -9,10 +9,11 @@
 #pragma once
 
 #include "lesson/lesson_blocks.h"
+#include "lesson/lesson_runner.h"
 
 namespace meshedit {
 
 // Draws `plot` at the cursor, as wide as the content region; needs a current ImGui window.
-void draw_lesson_plot(const LessonPlot& plot);
+void draw_lesson_plot(const LessonRunner& runner, const LessonPlot& plot);
 
 }  // namespace meshedit

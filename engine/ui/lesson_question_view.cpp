@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
 #include "lesson/lesson_text.h"
 #include "ui/flow_layout.h"
 #include "ui/theme.h"
@@ -22,9 +23,10 @@ void draw_choices(LessonRunner& runner, const LessonWait& wait, UiProbe* probe) 
   // deliver() changes the wait: copy the options before the first button can be pressed.
   const std::vector<std::string> options = wait.options;
   for (size_t i = 0; i < options.size(); ++i) {
-    if (i > 0) same_line_if_room(options[i].c_str());
+    const std::string& shown = lesson_text(runner, options[i]);
+    if (i > 0) same_line_if_room(shown.c_str());
     ImGui::PushID(int(i));
-    const bool pressed = wrapping_button(options[i].c_str());
+    const bool pressed = wrapping_button(shown.c_str());
     ImGui::PopID();
     if (probe) probe->record_last_item("lesson-choice");
     if (pressed) runner.deliver(LessonEvent::choice(options[i]));
@@ -38,14 +40,14 @@ void draw_answer_box(LessonRunner& runner, LessonAnswerBox& box, UiProbe* probe)
     box.text[0] = '\0';
   }
   const ImGuiStyle& style = ImGui::GetStyle();
-  const float check = ImGui::CalcTextSize("Check").x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
+  const float check = ImGui::CalcTextSize(tr("Check")).x + style.FramePadding.x * 2.0f + style.ItemSpacing.x;
   ImGui::SetNextItemWidth(std::max(ImGui::GetContentRegionAvail().x - check, ImGui::GetFontSize() * 4.0f));
   const bool entered =
       ImGui::InputText("##lesson-answer", box.text, sizeof box.text, ImGuiInputTextFlags_EnterReturnsTrue);
   if (probe) probe->record_last_item("lesson-answer");
   if (entered) ImGui::SetKeyboardFocusHere(-1);  // keep typing after a wrong answer
   ImGui::SameLine();
-  const bool checked = ImGui::Button("Check");
+  const bool checked = ImGui::Button(tr_label("Check"));
   if ((entered || checked) && box.text[0] != '\0') runner.deliver(LessonEvent::value(box.text));
 }
 
@@ -55,22 +57,31 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
   const LessonWait& wait = runner.waiting_for();
   if (!wait.is_question()) return;
   const Palette& palette = ui_palette();
-  text_wrapped_at_spaces(markdown_to_plain(wait.question));
+  text_wrapped_at_spaces(markdown_to_plain(lesson_text(runner, wait.question)));
   // Read what the panel shows now: a button below may deliver an answer, which changes the wait.
-  const std::string feedback = wait.feedback, hint = wait.hint_shown() ? wait.hint : std::string();
+  const std::string feedback = lesson_text(runner, wait.feedback);
+  const std::string hint = wait.hint_shown() ? lesson_text(runner, wait.hint) : std::string();
   const LessonWait::Kind kind = wait.kind;
   if (kind == LessonWait::Kind::Choice) draw_choices(runner, wait, probe);
   else if (kind == LessonWait::Kind::Answer) draw_answer_box(runner, box, probe);
-  else if (kind == LessonWait::Kind::CurvePick) ImGui::TextDisabled("(click the curve in the view)");
-  else ImGui::TextDisabled("(click it in the view)");
+  else if (kind == LessonWait::Kind::CurvePick) ImGui::TextDisabled("%s", tr("(click the curve in the view)"));
+  else ImGui::TextDisabled("%s", tr("(click it in the view)"));
   if (!feedback.empty()) coloured_text(palette.warning, feedback);
-  if (!hint.empty()) coloured_text(palette.emphasis, "Hint: " + hint);
+  if (!hint.empty()) coloured_text(palette.emphasis, tr_format("Hint: {hint}", {{"hint", hint}}));
 }
 
-void draw_lesson_answered(const LessonJudgement& judgement) {
-  text_wrapped_at_spaces(markdown_to_plain(judgement.question));
+const std::string& lesson_text(const LessonRunner& runner, const std::string& english) {
+  return runner.texts().in(english, window_language());
+}
+
+void draw_lesson_answered(const LessonRunner& runner, const LessonJudgement& judgement) {
+  text_wrapped_at_spaces(markdown_to_plain(lesson_text(runner, judgement.question)));
+  const std::string& given = lesson_text(runner, judgement.given);
   coloured_text(ui_palette().ok,
-                "Right: " + judgement.given + (judgement.feedback.empty() ? std::string() : ". " + judgement.feedback));
+                judgement.feedback.empty()
+                    ? tr_format("Right: {answer}", {{"answer", given}})
+                    : tr_format("Right: {answer}. {feedback}",
+                                {{"answer", given}, {"feedback", lesson_text(runner, judgement.feedback)}}));
 }
 
 }  // namespace meshedit

@@ -21,10 +21,13 @@ struct LessonAnswerBox {
   std::string question;  // where the question was asked and how many were answered before it
 };
 
+// A text of the lesson (its English, as the runner holds it) in the window's language (core/translation.h).
+const std::string& lesson_text(const LessonRunner& runner, const std::string& english);
+
 // Draws the question the runner waits on (nothing when it waits for no question). Records the option buttons as
 // "lesson-choice" and the box as "lesson-answer" in `probe` when given.
 void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* probe);
 // Draws a question answered right: the question, then "Right: <answer>" and the lesson's words on it.
-void draw_lesson_answered(const LessonJudgement& judgement);
+void draw_lesson_answered(const LessonRunner& runner, const LessonJudgement& judgement);
 
 }  // namespace meshedit

@@ -10,6 +10,7 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "document/bezier_mine.h"
 #include "ui/flow_layout.h"
@@ -137,10 +138,10 @@ std::string format_points(std::span<const glm::dvec3> points) {
   return text;
 }
 
-void table_row(const char* step, std::span<const glm::dvec3> points, glm::vec4 colour) {
+void table_row(const std::string& step, std::span<const glm::dvec3> points, glm::vec4 colour) {
   ImGui::TableNextRow();
   ImGui::TableNextColumn();
-  ImGui::TextColored(im_colour(colour), "%s", step);
+  ImGui::TextColored(im_colour(colour), "%s", step.c_str());
   ImGui::TableNextColumn();
   ImGui::TextWrapped("%s", format_points(points).c_str());
 }
@@ -150,21 +151,20 @@ void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mi
   const PatchEvaluation eval = evaluate_patch_steps(state.patches[state.selected_patch], state.u, state.v);
   const ImGuiTableFlags flags = ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_BordersOuter;
   if (!ImGui::BeginTable("separable evaluation", 2, flags)) return;
-  ImGui::TableSetupColumn("step", ImGuiTableColumnFlags_WidthFixed);
-  ImGui::TableSetupColumn("points", ImGuiTableColumnFlags_WidthStretch);
+  ImGui::TableSetupColumn(tr("step"), ImGuiTableColumnFlags_WidthFixed);
+  ImGui::TableSetupColumn(tr("points"), ImGuiTableColumnFlags_WidthStretch);
   ImGui::TableHeadersRow();
-  char step[64];
   for (int r = 0; r < 4; ++r) {
-    std::snprintf(step, sizeof(step), "row %d at u", r);
-    table_row(step, std::span<const glm::dvec3>(&eval.row_points[r], 1), opaque(palette().row_points));
+    table_row(tr_format("row {row} at u", {{"row", std::to_string(r)}}),
+              std::span<const glm::dvec3>(&eval.row_points[r], 1), opaque(palette().row_points));
   }
   for (size_t k = 1; k + 1 < eval.column_levels.size(); ++k) {
-    std::snprintf(step, sizeof(step), "column level %zu at v", k);
-    table_row(step, eval.column_levels[k], column_level_colour(k));
+    table_row(tr_format("column level {level} at v", {{"level", std::to_string(k)}}), eval.column_levels[k],
+              column_level_colour(k));
   }
   table_row("P(u, v)", std::span<const glm::dvec3>(&eval.point, 1), surface_point_colour(mine));
   if (mine && mine->ran) {
-    table_row("yours", std::span<const glm::dvec3>(&mine->mine, 1), mine_colour(*mine));
+    table_row(tr("yours"), std::span<const glm::dvec3>(&mine->mine, 1), mine_colour(*mine));
   }
   ImGui::EndTable();
 }
@@ -173,7 +173,7 @@ void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mi
 void draw_mine_verdict(const PatchMinePoint& mine) {
   const glm::vec4 colour = mine_colour(mine);
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
-  ImGui::TextWrapped("mine: %s", mine.message.c_str());
+  ImGui::TextWrapped("%s", tr_format("mine: {message}", {{"message", mine.message}}).c_str());
   if (!mine.equal) {
     for (const std::string& line : mine.details) ImGui::TextWrapped("- %s", line.c_str());
   }
@@ -185,14 +185,16 @@ void draw_mine_verdict(const PatchMinePoint& mine) {
 void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
   const int count = static_cast<int>(state.patches.size());
   int resolution = state.resolution;
-  if (ImGui::SliderInt("resolution", &resolution, 1, kMaxPatchViewResolution)) set_resolution(state, resolution);
+  if (ImGui::SliderInt(tr_label("resolution"), &resolution, 1, kMaxPatchViewResolution)) {
+    set_resolution(state, resolution);
+  }
   if (count > 0) {
     int selected = state.selected_patch;
-    char format[48];
-    std::snprintf(format, sizeof(format), "%%d of %d", count);
-    if (ImGui::SliderInt("patch", &selected, 0, count - 1, format)) select_patch(state, selected);
+    // The slider's printf format: its %d is the patch shown.
+    const std::string format = tr_format("{patch} of {count}", {{"patch", "%d"}, {"count", std::to_string(count)}});
+    if (ImGui::SliderInt(tr_label("patch"), &selected, 0, count - 1, format.c_str())) select_patch(state, selected);
   } else {
-    ImGui::TextDisabled("no patches");
+    ImGui::TextDisabled("%s", tr("no patches"));
   }
   double u = state.u;
   double v = state.v;
@@ -201,19 +203,20 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
   const bool u_changed = ImGui::SliderScalar("u", ImGuiDataType_Double, &u, &zero, &one, "%.4f");
   const bool v_changed = ImGui::SliderScalar("v", ImGuiDataType_Double, &v, &zero, &one, "%.4f");
   if (u_changed || v_changed) set_probe(state, u, v);
-  ImGui::Checkbox("control net", &state.show_control_net);
-  same_line_if_room("surface");
-  ImGui::Checkbox("surface", &state.show_surface);
-  same_line_if_room("probe");
-  ImGui::Checkbox("probe", &state.show_probe);
+  ImGui::Checkbox(tr_label("control net"), &state.show_control_net);
+  same_line_if_room(tr_label("surface"));
+  ImGui::Checkbox(tr_label("surface"), &state.show_surface);
+  same_line_if_room(tr_label("probe"));
+  ImGui::Checkbox(tr_label("probe"), &state.show_probe);
   const PatchMinePoint* yours = nullptr;
   if (mine) {
-    same_line_if_room("mine (M)");
+    same_line_if_room(tr_label("mine (M)"));
     bool on = mine->patch_on();
-    if (ImGui::Checkbox("mine (M)", &on)) mine->set_patch_on(on);
+    if (ImGui::Checkbox(tr_label("mine (M)"), &on)) mine->set_patch_on(on);
     if (ImGui::IsItemHovered()) {
-      ImGui::SetTooltip("the probe point from your evaluate in %s, checked against the reference",
-                        mine->patch_file().path().string().c_str());
+      ImGui::SetTooltip("%s", tr_format("the probe point from your evaluate in {file}, checked against the reference",
+                                        {{"file", mine->patch_file().path().string()}})
+                                  .c_str());
     }
     if (mine->patch_on() && count > 0) {
       select_patch(state, state.selected_patch);
@@ -223,19 +226,23 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
 
   update_tessellation(state);
   const PatchTessellation& cache = state.tessellation;
-  ImGui::TextWrapped("%d patches -> %zu vertices, %zu triangles (built %llu times)", count,
-                     cache.polygons.num_vertices(), cache.polygons.num_faces(),
-                     static_cast<unsigned long long>(cache.rebuilds));
+  ImGui::TextWrapped("%s", tr_format("{patches} patches -> {vertices} vertices, {triangles} triangles (built {builds} "
+                                     "times)",
+                                     {{"patches", std::to_string(count)},
+                                      {"vertices", std::to_string(cache.polygons.num_vertices())},
+                                      {"triangles", std::to_string(cache.polygons.num_faces())},
+                                      {"builds", std::to_string(cache.rebuilds)}})
+                               .c_str());
   if (!cache.error.empty()) ImGui::TextColored(im_colour(palette().error), "%s", cache.error.c_str());
   if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 
   ImGui::Separator();
-  ImGui::TextWrapped("Separable evaluation: each row at u, then the column through them at v");
+  ImGui::TextWrapped("%s", tr("Separable evaluation: each row at u, then the column through them at v"));
   draw_evaluation_table(state, yours);
 }
 
 void draw_patch_view_panel(PatchViewState& state, const char* title, BezierMine* mine) {
-  if (ImGui::Begin(title)) draw_patch_view_panel_contents(state, mine);
+  if (ImGui::Begin(tr_label(title))) draw_patch_view_panel_contents(state, mine);
   ImGui::End();
   update_tessellation(state);  // a collapsed panel must not leave the surface stale
 }

@@ -10,6 +10,7 @@
 #include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -70,20 +71,22 @@ OpResult<ElementRef> parse_table_filter(std::string_view text, TableTab current)
     result.check = Check::no(std::move(why));
     return result;
   };
-  if (t.empty()) return refuse("type an id: h37, v5, e2, f0, b0, or a number for the open tab");
+  const auto not_an_id = [&] {
+    return refuse(tr_format("'{text}' is not an id: type h37, v5, e2, f0, b0 or a number", {{"text", std::string(t)}}));
+  };
+  if (t.empty()) return refuse(tr("type an id: h37, v5, e2, f0, b0, or a number for the open tab"));
   if (std::isdigit(static_cast<unsigned char>(t.front()))) {
-    if (current == TableTab::Changes) return refuse("a bare number needs a kind here: type h37, v5, e2, f0 or b0");
+    if (current == TableTab::Changes) return refuse(tr("a bare number needs a kind here: type h37, v5, e2, f0 or b0"));
     uint32_t index = 0;
     const auto [end, error] = std::from_chars(t.data(), t.data() + t.size(), index);
-    if (error != std::errc() || end != t.data() + t.size() || index == kInvalidIndex)
-      return refuse("'" + std::string(t) + "' is not an id: type h37, v5, e2, f0, b0 or a number");
+    if (error != std::errc() || end != t.data() + t.size() || index == kInvalidIndex) return not_an_id();
     result.value = ElementRef(table_kind(current), index);
     return result;
   }
   std::string lowered(t);
   lowered[0] = static_cast<char>(std::tolower(static_cast<unsigned char>(lowered[0])));
   const std::optional<ElementRef> parsed = parse_element(lowered);
-  if (!parsed) return refuse("'" + std::string(t) + "' is not an id: type h37, v5, e2, f0, b0 or a number");
+  if (!parsed) return not_an_id();
   result.value = *parsed;
   return result;
 }
@@ -144,7 +147,7 @@ void draw_row(TableContext& c, ElementKind kind, uint32_t index, bool scroll_her
   ImGui::PushID(static_cast<int>(index));
   mark_if_changed(c, row, MeshField::Alive);
   if (!alive) ImGui::PushStyleColor(ImGuiCol_Text, ui_colors::dead());
-  const std::string label = alive ? format_id(row) : format_id(row) + " dead";
+  const std::string label = alive ? format_id(row) : tr_format("{id} dead", {{"id", format_id(row)}});
   if (ImGui::Selectable(label.c_str(), c.selection.selected == row,
                         ImGuiSelectableFlags_SpanAllColumns | ImGuiSelectableFlags_AllowItemOverlap)) {
     c.selection.selected = row;
@@ -219,7 +222,7 @@ void draw_kind_table(TableContext& c, ElementKind kind) {
   TablesState& state = c.state;
   const uint32_t n = c.doc.mesh.capacity(kind);
   if (n == 0) {
-    ImGui::TextDisabled("none");
+    ImGui::TextDisabled("%s", tr("none"));
     if (state.scroll_to.valid() && state.scroll_to.kind == kind) state.scroll_to = ElementRef();
     return;
   }
@@ -241,9 +244,12 @@ void draw_kind_table(TableContext& c, ElementKind kind) {
   }
 
   if (rows < n) {
-    ImGui::TextDisabled("rows %s..%s of %u (more load as you scroll; type an id above to jump)",
-                        format_id(row_ref(kind, start)).c_str(), format_id(row_ref(kind, start + rows - 1)).c_str(),
-                        unsigned(n));
+    ImGui::TextDisabled("%s", tr_format("rows {first}..{last} of {count} (more load as you scroll; type an id above to "
+                                        "jump)",
+                                        {{"first", format_id(row_ref(kind, start))},
+                                         {"last", format_id(row_ref(kind, start + rows - 1))},
+                                         {"count", std::to_string(n)}})
+                                  .c_str());
   }
   const ImGuiTableFlags flags = ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV |
                                 ImGuiTableFlags_Resizable | ImGuiTableFlags_SizingStretchSame;
@@ -289,25 +295,33 @@ void change_value(TableContext& c, const std::string& value, const char* name) {
 void draw_changes(TableContext& c) {
   const LastChange& last = c.doc.last;
   if (last.label.empty()) {
-    ImGui::TextDisabled("no operation yet: flip, split, collapse or subdivide, and every changed field shows here");
+    ImGui::TextDisabled("%s", tr("no operation yet: flip, split, collapse or subdivide, and every changed field shows "
+                                 "here"));
     return;
   }
   if (!last.recorded) {
-    ImGui::Text("%s: changed, but not recorded (memory ran out saving the mesh before it)", last.label.c_str());
+    ImGui::TextUnformatted(tr_format("{operation}: changed, but not recorded (memory ran out saving the mesh before "
+                                     "it)",
+                                     {{"operation", last.label}})
+                               .c_str());
     if (c.state.probe) c.state.probe->record_last_item("changes-not-recorded");
     return;
   }
   if (!last.listed) {
-    ImGui::Text("%s: more than %zu fields changed, too many to list", last.label.c_str(),
-                c.doc.limits.max_listed_changes);
+    const std::string most = std::to_string(c.doc.limits.max_listed_changes);
+    ImGui::TextUnformatted(tr_format("{operation}: more than {count} fields changed, too many to list",
+                                     {{"operation", last.label}, {"count", most}})
+                               .c_str());
     return;
   }
-  ImGui::Text("%s: %zu fields changed", last.label.c_str(), last.changes.size());
+  ImGui::TextUnformatted(tr_format("{operation}: {count} fields changed",
+                                   {{"operation", last.label}, {"count", std::to_string(last.changes.size())}})
+                             .c_str());
   const ImGuiTableFlags flags =
       ImGuiTableFlags_ScrollY | ImGuiTableFlags_RowBg | ImGuiTableFlags_BordersInnerV | ImGuiTableFlags_Resizable;
   if (!ImGui::BeginTable("changes", 4, flags)) return;
   ImGui::TableSetupScrollFreeze(0, 1);
-  for (const char* name : {"element", "field", "before", "after"}) ImGui::TableSetupColumn(name);
+  for (const char* name : {"element", "field", "before", "after"}) ImGui::TableSetupColumn(tr(name));
   ImGui::TableHeadersRow();
   ImGuiListClipper clipper;
   clipper.Begin(static_cast<int>(std::min<size_t>(last.changes.size(), 0x7fffffff)));
@@ -333,10 +347,9 @@ void draw_changes(TableContext& c) {
 std::string tab_label(const MeshDocument& doc, TableTab tab) {
   std::string label;
   if (tab == TableTab::Changes) {
-    label = "changes";
-    if (doc.last.listed && doc.last.recorded && !doc.last.label.empty()) {
-      label += " " + std::to_string(doc.last.changes.size());
-    }
+    label = doc.last.listed && doc.last.recorded && !doc.last.label.empty()
+                ? tr_format("changes {count}", {{"count", std::to_string(doc.last.changes.size())}})
+                : std::string(tr("changes"));
   } else {
     const ElementKind kind = table_kind(tab);
     label = std::string(1, kind_prefix(kind)) + " " + std::to_string(doc.mesh.capacity(kind));
@@ -353,7 +366,7 @@ bool draw_pointer_tables_contents(MeshDocument& doc, Selection& selection, Table
   TableContext c{doc, selection, state};
 
   ImGui::SetNextItemWidth(std::min(ImGui::GetContentRegionAvail().x, 16.0f * ImGui::GetFontSize()));
-  if (ImGui::InputTextWithHint("##filter", "go to: h37, v5, b0, or 37", &state.filter)) {
+  if (ImGui::InputTextWithHint("##filter", tr("go to: h37, v5, b0, or 37"), &state.filter)) {
     const OpResult<ElementRef> found = resolve_table_filter(doc.mesh, state.filter, state.active);
     state.filter_message = found || trim(state.filter).empty() ? std::string() : found.check.reason;
     if (found) {
@@ -377,7 +390,7 @@ bool draw_pointer_tables_contents(MeshDocument& doc, Selection& selection, Table
       const ImGuiTabItemFlags flags = request && tab == *request ? ImGuiTabItemFlags_SetSelected : 0;
       const std::string label = tab_label(doc, tab);
       const bool visible = ImGui::BeginTabItem(label.c_str(), nullptr, flags);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tab_title(tab));
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr(tab_title(tab)));
       if (state.probe) state.probe->record_last_item(std::string("tab:") + tab_title(tab));
       if (!visible) continue;
       // ImGui switches tabs a frame after the request; until then the old tab is drawn and the request stays.
@@ -400,7 +413,9 @@ bool draw_pointer_tables(MeshDocument& doc, Selection& selection, TablesState& s
   if (!state.open) return false;
   bool changed = false;
   default_window_size(ImVec2(560, 420));
-  if (ImGui::Begin("Pointer tables", &state.open)) changed = draw_pointer_tables_contents(doc, selection, state);
+  if (ImGui::Begin(tr_label("Pointer tables"), &state.open)) {
+    changed = draw_pointer_tables_contents(doc, selection, state);
+  }
   ImGui::End();
   return changed;
 }

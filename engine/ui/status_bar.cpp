@@ -7,6 +7,7 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
 #include "core/validate.h"
 #include "core/value_format.h"
 
@@ -25,23 +26,25 @@ ImVec4 severity_color(Severity severity) {
 void draw_validation(MeshDocument& doc, Selection& selection, StatusBarState& state) {
   const bool automatic = doc.mesh.num_halfedges() <= state.auto_validate_max_halfedges;
   if (!automatic && !cached_validation_if_cheap(doc)) {
-    ImGui::TextDisabled("not validated (large mesh)");
+    ImGui::TextDisabled("%s", tr("not validated (large mesh)"));
     ImGui::SameLine();
-    const bool pressed = ImGui::SmallButton("validate");
+    const bool pressed = ImGui::SmallButton(tr_label("validate"));
     if (state.probe) state.probe->record_last_item("validate");
     if (!pressed) return;
   }
   const ValidationReport& report = cached_validation(doc);
   if (report.ok()) {
-    ImGui::TextColored(ui_colors::valid(), "valid");
+    ImGui::TextColored(ui_colors::valid(), "%s", tr("valid"));
     return;
   }
   const Violation& first = report.violations.front();
-  ImGui::TextColored(ui_colors::broken(), "%zu problem%s; first: %s", report.total, report.total == 1 ? "" : "s",
-                     first.message.c_str());
+  const std::string problems =
+      tr_format(report.total == 1 ? "{count} problem; first: {problem}" : "{count} problems; first: {problem}",
+                {{"count", std::to_string(report.total)}, {"problem", first.message}});
+  ImGui::TextColored(ui_colors::broken(), "%s", problems.c_str());
   if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", report.summary().c_str());
   ImGui::SameLine();
-  const bool pressed = ImGui::SmallButton("select##culprit");
+  const bool pressed = ImGui::SmallButton(tr_label("select##culprit"));
   if (state.probe) state.probe->record_last_item("select-culprit", first.element);
   if (pressed && in_range(doc.mesh, first.element)) selection.selected = first.element;
 }
@@ -75,7 +78,7 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
       const long chi = long(mesh.num_vertices()) - long(mesh.num_edges()) + long(mesh.num_faces());
       ImGui::Text("V %zu  E %zu  F %zu  H %zu  B %zu  chi %ld", mesh.num_vertices(), mesh.num_edges(), mesh.num_faces(),
                   mesh.num_halfedges(), mesh.num_boundaries(), chi);
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("chi = V - E + F (boundary loops are holes, not faces)");
+      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%s", tr("chi = V - E + F (boundary loops are holes, not faces)"));
       ImGui::SameLine(0.0f, gap);
       draw_validation(doc, selection, state);
     }
@@ -91,7 +94,7 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
       }
       if (in_range(doc.mesh, doc.message.element) && doc.message.severity != Severity::Info) {
         ImGui::SameLine();
-        const bool pressed = ImGui::SmallButton("select##message");
+        const bool pressed = ImGui::SmallButton(tr_label("select##message"));
         if (state.probe) state.probe->record_last_item("select-message", doc.message.element);
         if (pressed) selection.selected = doc.message.element;
       }
@@ -102,11 +105,13 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
     }
     if (state.mesh_shown && doc.history.can_undo()) {
       ImGui::SameLine(0.0f, gap);
-      ImGui::TextDisabled("Ctrl+Z: undo %s", doc.history.undo_label().c_str());
+      ImGui::TextDisabled("%s",
+                          tr_format("Ctrl+Z: undo {operation}", {{"operation", doc.history.undo_label()}}).c_str());
     }
     if (state.mesh_shown && doc.history.can_redo()) {
       ImGui::SameLine();
-      ImGui::TextDisabled(" Ctrl+Y: redo %s", doc.history.redo_label().c_str());
+      ImGui::TextDisabled("%s",
+                          tr_format(" Ctrl+Y: redo {operation}", {{"operation", doc.history.redo_label()}}).c_str());
     }
     ImGui::EndChild();
     if (show_axis) {

@@ -10,6 +10,7 @@
 #include <imgui_internal.h>
 #include <imgui_stdlib.h>
 
+#include "core/translation.h"
 #include "ui/fonts.h"
 #include "ui/key_pressed.h"
 #include "ui/theme.h"
@@ -104,11 +105,11 @@ void draw_gutter(ImVec2 origin, ImVec2 size, float text_top, size_t lines, std::
 // The file's name, whether it is saved, and Save; true when Save was clicked.
 bool draw_header(const StudentEdit& edit) {
   const std::string name = edit.path().filename().string();
-  ImGui::TextUnformatted(name.empty() ? "no exercise" : name.c_str());
+  ImGui::TextUnformatted(name.empty() ? tr("no exercise") : name.c_str());
   ImGui::SameLine();
-  ImGui::TextDisabled(edit.dirty() ? "(not saved)" : "(saved)");
+  ImGui::TextDisabled("%s", tr(edit.dirty() ? "(not saved)" : "(saved)"));
   ImGui::SameLine();
-  const bool save = ImGui::Button("Save");
+  const bool save = ImGui::Button(tr_label("Save"));
   ImGui::SameLine();
   ImGui::TextDisabled("Ctrl+S");
   if (!edit.read_error().empty()) ImGui::TextColored(im_colour(ui_palette().error), "%s", edit.read_error().c_str());
@@ -188,7 +189,9 @@ bool draw_student_editor_contents(StudentEdit& edit, StudentEditorState& state, 
   if (!error.empty()) {
     ImGui::PushTextWrapPos(0.0f);
     if (error_line) {
-      ImGui::TextColored(im_colour(ui_palette().error), "line %zu: %s", *error_line, error.c_str());
+      ImGui::TextColored(
+          im_colour(ui_palette().error), "%s",
+          tr_format("line {line}: {error}", {{"line", std::to_string(*error_line)}, {"error", error}}).c_str());
     } else {
       ImGui::TextColored(im_colour(ui_palette().error), "%s", error.c_str());
     }

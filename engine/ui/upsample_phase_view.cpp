@@ -6,6 +6,7 @@
 
 #include <imgui.h>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "ui/theme.h"
 
@@ -30,25 +31,40 @@ void jump(ExerciseSession& session, MeshDocument& doc, size_t k) {
   session.replay_step(doc, k);
 }
 
-// "19..30", or "2..40 (12 of them)" when other phases' writes come between.
-std::string writes_text(const UpsamplePhases& phases, int p) {
-  if (p == 1) return "none (your Lua tables)";
-  const UpsamplePhaseSpan& span = phases.span[size_t(p)];
-  if (!span.started) return "never started";
-  std::string out = std::to_string(span.first + 1) + ".." + std::to_string(span.last + 1);
-  if (span.last - span.first + 1 != span.writes) out += " (" + std::to_string(span.writes) + " of them)";
-  return out;
+// upsample_phase_title in the window's language: "phase 3 (new edges flipped)".
+std::string phase_title(UpsamplePhase phase) {
+  if (phase == UpsamplePhase::Other) return tr(upsample_phase_name(phase));
+  return tr_format("phase {number} ({name})",
+                   {{"number", std::to_string(int(phase))}, {"name", tr(upsample_phase_name(phase))}});
 }
 
-// "identical", "same shape, other ids", "12 positions, 30 halfedges differ".
+// "writes 19..30", or "writes 2..40 (12 of them)" when other phases' writes come between.
+std::string writes_text(const UpsamplePhases& phases, int p) {
+  if (p == 1) return tr("writes none (your Lua tables)");
+  const UpsamplePhaseSpan& span = phases.span[size_t(p)];
+  if (!span.started) return tr("writes never started");
+  const MessageParts parts = {{"first", std::to_string(span.first + 1)},
+                              {"last", std::to_string(span.last + 1)},
+                              {"count", std::to_string(span.writes)}};
+  return tr_format(
+      span.last - span.first + 1 != span.writes ? "writes {first}..{last} ({count} of them)" : "writes {first}..{last}",
+      parts);
+}
+
+// "identical", "same shape, other ids", "12 positions, 30 halfedges differ": a template for each pair of counts'
+// numbers (one, many), so the English reads as plural() wrote it.
 std::string verdict_text(const UpsamplePhaseState& s, bool& good) {
   good = s.identical() || s.same_shape;
-  if (s.identical()) return "identical";
-  if (s.same_shape) return "same shape, other ids";
-  std::string out;
-  if (!(s.mine == s.reference)) out = "other counts; ";
-  out += plural(s.positions_differ, "position", "positions") + ", " +
-         plural(s.halfedges_differ, "halfedge differs", "halfedges differ");
+  if (s.identical()) return tr("identical");
+  if (s.same_shape) return tr("same shape, other ids");
+  const bool one_position = s.positions_differ == 1, one_halfedge = s.halfedges_differ == 1;
+  const char* differ = one_position ? (one_halfedge ? "{positions} position, {halfedges} halfedge differs"
+                                                    : "{positions} position, {halfedges} halfedges differ")
+                                    : (one_halfedge ? "{positions} positions, {halfedges} halfedge differs"
+                                                    : "{positions} positions, {halfedges} halfedges differ");
+  std::string out = tr_format(
+      differ, {{"positions", std::to_string(s.positions_differ)}, {"halfedges", std::to_string(s.halfedges_differ)}});
+  if (!(s.mine == s.reference)) out = tr_format("other counts; {differences}", {{"differences", out}});
   return out;
 }
 
@@ -56,10 +72,10 @@ void draw_table(ExerciseSession& session, const ExercisePanelState& state, MeshD
   const UpsamplePhases& phases = *state.phases;
   const ImGuiTableFlags flags = ImGuiTableFlags_Borders | ImGuiTableFlags_RowBg | ImGuiTableFlags_SizingStretchProp;
   if (!ImGui::BeginTable("phases", 4, flags)) return;
-  ImGui::TableSetupColumn("phase", ImGuiTableColumnFlags_WidthStretch, 2.0f);
-  ImGui::TableSetupColumn("yours", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableSetupColumn("reference", ImGuiTableColumnFlags_WidthStretch, 1.0f);
-  ImGui::TableSetupColumn("vs reference", ImGuiTableColumnFlags_WidthStretch, 1.4f);
+  ImGui::TableSetupColumn(tr("phase"), ImGuiTableColumnFlags_WidthStretch, 2.0f);
+  ImGui::TableSetupColumn(tr("yours"), ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn(tr("reference"), ImGuiTableColumnFlags_WidthStretch, 1.0f);
+  ImGui::TableSetupColumn(tr("vs reference"), ImGuiTableColumnFlags_WidthStretch, 1.4f);
   ImGui::TableHeadersRow();
   for (int p = 1; p <= kUpsamplePhaseCount; ++p) {
     const UpsamplePhase phase = UpsamplePhase(p);
@@ -75,8 +91,8 @@ void draw_table(ExerciseSession& session, const ExercisePanelState& state, MeshD
       jump(session, doc, *start);
     }
     ImGui::SameLine();
-    text(upsample_phase_name(phase));
-    ImGui::TextDisabled("%s", ("writes " + writes_text(phases, p)).c_str());
+    text(tr(upsample_phase_name(phase)));
+    ImGui::TextDisabled("%s", writes_text(phases, p).c_str());
     if (!state.phase_states) continue;
     const UpsamplePhaseState& s = state.phase_states->at[size_t(p)];
     ImGui::TableNextColumn();
@@ -110,7 +126,7 @@ void update_upsample_phases(const ExerciseRun& run, ExercisePanelState& state) {
   } catch (const std::exception& e) {
     state.phase_states.reset();
     try {
-      state.phases_error = std::string("the phases' meshes could not be made: ") + e.what();
+      state.phases_error = tr_format("the phases' meshes could not be made: {error}", {{"error", e.what()}});
     } catch (const std::exception&) {  // memory ran out: no table, no sentence
     }
   }
@@ -126,11 +142,11 @@ void draw_upsample_phases(ExerciseSession& session, ExercisePanelState& state, M
   const std::optional<size_t> next = replaying ? phases.next_phase_position(k) : std::optional<size_t>(0);
   const bool can = session.can_replay(doc);
   ImGui::BeginDisabled(!can || !previous);
-  if (ImGui::Button("< previous phase") && previous) jump(session, doc, *previous);
+  if (ImGui::Button(tr_label("< previous phase")) && previous) jump(session, doc, *previous);
   ImGui::EndDisabled();
   ImGui::SameLine();
   ImGui::BeginDisabled(!can || !next);
-  const bool pressed = ImGui::Button(replaying ? "next phase >" : "replay by phase >");
+  const bool pressed = ImGui::Button(tr_label(replaying ? "next phase >" : "replay by phase >"));
   const ImVec2 low = ImGui::GetItemRectMin(), high = ImGui::GetItemRectMax();
   state.next_phase_x = 0.5f * (low.x + high.x);
   state.next_phase_y = 0.5f * (low.y + high.y);
@@ -138,17 +154,19 @@ void draw_upsample_phases(ExerciseSession& session, ExercisePanelState& state, M
   ImGui::EndDisabled();
   const UpsamplePhase current = phases.phase_at(k);
   if (!replaying) {
-    text("yours after all " + std::to_string(n) + " writes");
+    text(tr_format("yours after all {count} writes", {{"count", std::to_string(n)}}));
   } else if (k == 0) {
-    text("before the first write: " + upsample_phase_title(UpsamplePhase::Compute) +
-         "; your positions are in Lua tables, the mesh is unchanged");
+    text(tr_format("before the first write: {phase}; your positions are in Lua tables, the mesh is unchanged",
+                   {{"phase", phase_title(UpsamplePhase::Compute)}}));
   } else {
-    coloured(im_colour(ui_palette().emphasis),
-             "write " + std::to_string(k) + "/" + std::to_string(n) + " is in " + upsample_phase_title(current));
+    coloured(
+        im_colour(ui_palette().emphasis),
+        tr_format("write {position}/{count} is in {phase}",
+                  {{"position", std::to_string(k)}, {"count", std::to_string(n)}, {"phase", phase_title(current)}}));
   }
   draw_table(session, state, doc, current);
   ImGui::TextDisabled(
-      "V/E/F: vertices, edges, faces when the phase is done; positions and halfedges are compared by id");
+      "%s", tr("V/E/F: vertices, edges, faces when the phase is done; positions and halfedges are compared by id"));
   for (const std::string& problem : phases.problems) coloured(im_colour(ui_palette().error), "- " + problem);
   if (!state.phases_error.empty()) coloured(im_colour(ui_palette().error), state.phases_error);
 }

@@ -4,20 +4,25 @@
 -- the others only while a step runs (lesson_file anywhere; selection, current_mesh, curve_t, curve_points and
 -- patch_uv also inside a live() function or a plot's marker).
 
+---A text the student reads: English, or the English with its translations beside it, `{ en = [[...]], zh = [[...]] }`.
+---The lesson's logic only sees the English (choose returns it, feedback tables are keyed by it); the panel shows the
+---window's language (View > Language), the English where a translation is missing.
+---@alias Text string|{en: string, zh?: string}
+
 ---@class LessonInfo
----@field title? string defaults to the file's stem
----@field summary? string
+---@field title? Text defaults to the file's stem
+---@field summary? Text
 
 ---@param info LessonInfo
 function lesson(info) end
 
 ---Steps run in the order they are defined.
----@param title string
+---@param title Text
 ---@param body fun()
 function step(title, body) end
 
 ---Adds a markdown block to the panel: # heading, **bold**, *italic*, `code`, [link](url), "- " lists.
----@param markdown string
+---@param markdown Text
 function say(markdown) end
 
 ---The menu commands a step can wait for (wait_for{command = ...}).
@@ -38,8 +43,8 @@ function say(markdown) end
 ---@field click? string|Element "vertex", "e7", "any" or a handle; returns the clicked element
 ---@field selection? string|Element "e7", "edge", "any" or a handle; returns the selected element
 ---@field condition? fun(): any checked now, then once per frame; returns its first truthy value
----@field button? string a button label; returns the label
----@field hint? string one line under the text, shown at once: it is the instruction ("Press F")
+---@field button? Text a button label; returns its English
+---@field hint? Text one line under the text, shown at once: it is the instruction ("Press F")
 
 ---Pauses the step until the wait is met. Elements come back as handles on a copy of the mesh on screen
 ---(e.mesh), or as id strings when no mesh is shown.
@@ -66,7 +71,7 @@ function show(what, options) end
 function highlight(element, colour) end
 
 ---@param element Element|string
----@param text string
+---@param text Text
 function label(element, text) end
 
 ---Removes highlights and labels.
@@ -111,11 +116,11 @@ function lesson_file(relative) end
 -- ---- asking the student: each waits until the right answer and returns it (scripts/api/README.md) ----
 
 ---@class ChooseSpec
----@field [1] string the question
----@field options string[] at least two, all different; the panel shows one button each
+---@field [1] Text the question
+---@field options Text[] at least two, all different; the panel shows one button each
 ---@field answer string the right option (one of options)
----@field feedback? table<string, string> what to say to each wrong option (and, for the right one, beside it)
----@field hint? string shown only after the first wrong answer
+---@field feedback? table<string, Text> what to say to each wrong option (and, for the right one, beside it)
+---@field hint? Text shown only after the first wrong answer
 
 ---Asks a multiple-choice question. A wrong option shows its feedback (or "h2 is not the answer.") and the step keeps
 ---waiting; the right one returns.
@@ -124,10 +129,10 @@ function lesson_file(relative) end
 function choose(spec) end
 
 ---@alias PickAnswer Element|string|fun(element: Element|string): boolean, string?
----@alias PickFeedback table<string, string>|fun(element: Element|string): string?
+---@alias PickFeedback table<string, Text>|fun(element: Element|string): Text?
 
 ---@class PickSpec
----@field [1] string the question ("Click the halfedge that ...")
+---@field [1] Text the question ("Click the halfedge that ...")
 ---@field on? "curve" a click on the curve view: answer and feedback then take (t, point), the t of the curve point
 ---nearest the click and that point, and the pick returns the t
 ---@field answer PickAnswer|number|fun(t: number, point: vec3): boolean, string? the element (a handle or an id like
@@ -135,7 +140,7 @@ function choose(spec) end
 ---@field tolerance? number on the curve: how far in t a click may be from the answer (default 0.04)
 ---@field feedback? PickFeedback|fun(t: number, point: vec3): string? what to say to a wrong click: a table from ids
 ---to text, or a function of it
----@field hint? string shown only after the first wrong click
+---@field hint? Text shown only after the first wrong click
 
 ---Asks the student to click an element in the view. A wrong click shows its feedback (the feedback's, then the answer
 ---function's reason, then "Not h2: look again.") and the step keeps waiting; the right one returns.
@@ -145,12 +150,12 @@ function choose(spec) end
 function pick(spec) end
 
 ---@class AnswerSpec
----@field [1] string the question
+---@field [1] Text the question
 ---@field number? number the answer, when it is a number (give number or point)
 ---@field point? point the answer, when it is a point: {x, y} or {x, y, z}
 ---@field tolerance? number how far off an answer may be (distance for a point); default 1e-3
----@field feedback? fun(value: number|vec3): string? what to say to a wrong value
----@field hint? string shown only after the first wrong answer
+---@field feedback? fun(value: number|vec3): Text? what to say to a wrong value
+---@field hint? Text shown only after the first wrong answer
 
 ---Asks for a number or a point, typed into a box ("0.375", "3/8", "2, 1.5"). Text that is not a number is told how to
 ---write one and does not count as a try; a wrong value shows its feedback (or "0.4 is not the answer.").
@@ -169,7 +174,7 @@ function answer(spec) end
 ---@field patch? Patch patch: meshedit.patch(...) (an exercise of scripts/exercises on a patch: also 16 points)
 ---@field u? number patch
 ---@field v? number patch
----@field hint? string shown under the diagnosis while the student's answer is wrong
+---@field hint? Text shown under the diagnosis while the student's answer is wrong
 
 ---Runs the student's function from the student folder (scripts/student, the Exercises tab's) on the input, beside the
 ---reference, with the Exercises tab's comparison. Right: returns. Wrong (or a Lua error, shown as "flip.lua:LINE: ...",
@@ -188,12 +193,12 @@ function your_turn(spec) end
 function live(fn) end
 
 ---@class PlotCurve
----@field label? string default "curve N"
+---@field label? Text default "curve N"
 ---@field fn fun(x: number): number sampled once, when plot runs
 ---@field colour? Colour default: the palette's colours in turn
 
 ---@class PlotSpec
----@field title? string
+---@field title? Text
 ---@field x? number[] {from, to}; default {0, 1}
 ---@field y? number[] {low, high}; default: the samples' range
 ---@field samples? integer samples per curve minus one (2 to 2000); default 100

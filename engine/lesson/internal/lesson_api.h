@@ -25,6 +25,7 @@
 #include "lesson/lesson_blocks.h"
 #include "lesson/lesson_events.h"
 #include "lesson/lesson_host.h"
+#include "lesson/lesson_texts.h"
 #include "script/lua_runtime.h"
 
 struct lua_State;
@@ -46,6 +47,8 @@ struct LessonScript {
   Phase phase = Phase::Loading;
   std::string title, summary;
   std::vector<LessonStepDef> steps;
+  // The lesson's texts in other languages, by their English (every text the API reads: read_text).
+  LessonTexts texts;
   std::filesystem::path directory;  // the lesson file's folder (lesson_file() resolves against it); may be empty
   // The student's folder your_turn runs files from (lesson_your_turn.h); empty: your_turn says none was given.
   std::filesystem::path student_folder;

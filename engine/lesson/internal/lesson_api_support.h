@@ -48,6 +48,13 @@ void require_loading(lua_State* L, const char* name);
 // A wait may only yield the step's own coroutine.
 void require_step_thread(lua_State* L, const char* name);
 
+// A text the student reads, at `index`: a string (or a number), or a table of languages {en = ..., zh = ...}. Returns
+// the English (what the lesson's logic sees) and keeps the whole text in the script's texts; an unknown language
+// is named there once. Raises "CALL: WHAT must be text ..." for anything else, or a table without `en`.
+std::string read_text(lua_State* L, int index, const std::string& call, const std::string& what);
+// Whether the value at `index` is a string, a number or a table read_text reads (a table with a string `en`).
+bool is_text(lua_State* L, int index);
+
 std::optional<ElementKind> kind_by_name(const std::string& name);
 ElementRef check_element(lua_State* L, int index, const char* call);
 
