@@ -104,9 +104,11 @@ std::string point_text(const std::vector<glm::dvec3>& points) {
 std::string mine_verdict(const ExerciseReport& report) {
   const ExerciseOutcome& mine = report.mine;
   if (!mine.error.empty()) return mine.error;
-  std::string verdict = report.summary();
-  if (mine.validation && !mine.validation->ok()) verdict += "; yours is invalid: " + mine.validation->summary();
-  return verdict;
+  if (mine.validation && !mine.validation->ok()) {
+    return tr_format("{summary}; yours is invalid: {problems}",
+                     {{"summary", report.summary()}, {"problems", mine.validation->summary()}});
+  }
+  return report.summary();
 }
 
 std::vector<Exercise> mesh_exercises() {

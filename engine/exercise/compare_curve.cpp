@@ -4,6 +4,8 @@
 #include <algorithm>
 #include <string>
 
+#include "core/translation.h"
+
 namespace meshedit::exercise_checks {
 
 void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
@@ -23,43 +25,51 @@ void compare_curve(const ExerciseInput& input, ExerciseReport& report, Messages&
     }
     if (swapped) {
       out.add(
-          "the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), and yours are "
-          "t * p_i + (1 - t) * p_(i+1)");
+          tr("the weights are swapped: point i of the step must be (1 - t) * p_i + t * p_(i+1), and yours are "
+             "t * p_i + (1 - t) * p_(i+1)"));
     }
   }
   const std::string expected = std::to_string(want.size());
+  const MessageParts counts = {
+      {"count", std::to_string(got.size())}, {"expected", expected}, {"first", std::to_string(got.size() + 1)}};
   if (got.size() < want.size()) {
     const size_t missing = want.size() - got.size();
     if (prefix_matches && missing == 1) {
-      out.add("point " + expected + " of the step is missing (got " + std::to_string(got.size()) +
-              " points, expected " + expected + "): n points give n - 1, so the loop runs i = 1, ..., n - 1");
+      out.add(
+          tr_format("point {expected} of the step is missing (got {count} points, expected {expected}): n points "
+                    "give n - 1, so the loop runs i = 1, ..., n - 1",
+                    counts));
     } else if (prefix_matches) {
-      out.add("points " + std::to_string(got.size() + 1) + " to " + expected + " of the step are missing (got " +
-              std::to_string(got.size()) + " points, expected " + expected + ")");
+      out.add(tr_format(
+          "points {first} to {expected} of the step are missing (got {count} points, expected {expected})", counts));
     } else {
-      out.add("the step has " + std::to_string(got.size()) + " points, expected " + expected +
-              " (n points give n - 1)");
+      out.add(tr_format("the step has {count} points, expected {expected} (n points give n - 1)", counts));
     }
   } else if (got.size() > want.size()) {
-    out.add("the step has " + std::to_string(got.size()) + " points, expected " + expected +
-            ": one step turns n points into n - 1" +
-            (got.size() == input.points.size() ? " (yours has as many as it was given)" : ""));
+    out.add(got.size() == input.points.size()
+                ? tr_format("the step has {count} points, expected {expected}: one step turns n points into n - 1 "
+                            "(yours has as many as it was given)",
+                            counts)
+                : tr_format("the step has {count} points, expected {expected}: one step turns n points into n - 1",
+                            counts));
   }
   double worst = 0.0;
   for (size_t i = 0; i < common; ++i) {
     const double d = glm::distance(got[i], want[i]);
     worst = std::max(worst, d);
     if (!(d <= tolerance)) {
-      out.add("point " + std::to_string(i + 1) + " is " + position_text(got[i]) + ", expected " +
-              position_text(want[i]));
+      out.add(tr_format("point {number} is {position}, expected {expected}", {{"number", std::to_string(i + 1)},
+                                                                              {"position", position_text(got[i])},
+                                                                              {"expected", position_text(want[i])}}));
     }
   }
   report.equal = !out.any();
   report.identical =
       report.equal && got.size() == want.size() && std::equal(got.begin(), got.end(), want.begin(), bitwise_equal);
   if (report.equal && !report.identical) {
-    report.notes.push_back("your points differ from the reference's by at most " + format_number(worst) +
-                           " (rounding; accepted)");
+    report.notes.push_back(
+        tr_format("your points differ from the reference's by at most {distance} (rounding; accepted)",
+                  {{"distance", format_number(worst)}}));
   }
 }
 

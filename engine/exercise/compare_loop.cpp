@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/translation.h"
 #include "exercise/internal/loop_boundary_diagnosis.h"
 #include "exercise/internal/loop_flip_diagnosis.h"
 #include "exercise/internal/loop_position_diagnosis.h"
@@ -25,8 +26,10 @@ size_t diagnose_zero_weights(const HalfedgeMesh& mine, const HalfedgeMesh& refer
     reference_at_origin += within(reference.position(v), glm::dvec3(0.0), tolerance) ? 1 : 0;
   }
   if (tell && at_origin >= 2 && at_origin > reference_at_origin) {
-    out.add(std::to_string(at_origin) + " of your vertices are at (0, 0, 0): a weight that should not be zero is " +
-            "(in Lua 3 // 8 is 0, an integer division; write 3 / 8)");
+    out.add(
+        tr_format("{count} of your vertices are at (0, 0, 0): a weight that should not be zero is (in Lua 3 // 8 "
+                  "is 0, an integer division; write 3 / 8)",
+                  {{"count", std::to_string(at_origin)}}));
   }
   return at_origin;
 }
@@ -42,9 +45,10 @@ void diagnose_unmoved_originals(const HalfedgeMesh& before, const HalfedgeMesh& 
     if (!right && within(mine.position(v), before.position(v), tolerance)) ++unmoved;
   }
   if (unmoved > 0 && unmoved * 2 >= originals) {
-    out.add(std::to_string(unmoved) + " of the " + std::to_string(originals) +
-            " original vertices kept their old positions: step 5 must move them to the positions of step 1, "
-            "(1 - n u) p + u (sum of the neighbours)");
+    out.add(
+        tr_format("{count} of the {total} original vertices kept their old positions: step 5 must move them to "
+                  "the positions of step 1, (1 - n u) p + u (sum of the neighbours)",
+                  {{"count", std::to_string(unmoved)}, {"total", std::to_string(originals)}}));
   }
 }
 
@@ -59,9 +63,10 @@ void diagnose_coinciding_vertices(const HalfedgeMesh& mine, size_t at_origin, Me
   size_t shared = 0;
   for (size_t i = 1; i < positions.size(); ++i) shared += positions[i] == positions[i - 1] ? 1 : 0;
   if (shared >= 2 && at_origin < 2) {
-    out.add(std::to_string(shared) +
-            " of your vertices sit exactly on another one: were new positions written to "
-            "the wrong vertices? Keep them in a table indexed by v.id and move each vertex to its own");
+    out.add(
+        tr_format("{count} of your vertices sit exactly on another one: were new positions written to the wrong "
+                  "vertices? Keep them in a table indexed by v.id and move each vertex to its own",
+                  {{"count", std::to_string(shared)}}));
   }
 }
 
@@ -90,10 +95,13 @@ void diagnose_upsample(const ExerciseInput& input, const ExerciseReport& report,
 void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messages& out) {
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
-  if (!report.reference.refused.empty()) return compare_refusal(input, report, "subdivide this mesh", "upsample", out);
+  if (!report.reference.refused.empty()) {
+    return compare_refusal(input, report, tr("subdivide this mesh"), "upsample", out);
+  }
   if (mine.same_as(before)) {
-    out.add("your upsample changed nothing; the reference makes " + std::to_string(report.reference.mesh->num_faces()) +
-            " faces out of " + std::to_string(before.num_faces()));
+    out.add(tr_format("your upsample changed nothing; the reference makes {faces} faces out of {before}",
+                      {{"faces", std::to_string(report.reference.mesh->num_faces())},
+                       {"before", std::to_string(before.num_faces())}}));
     report.equal = false;
     return;
   }
@@ -105,7 +113,7 @@ void compare_upsample(const ExerciseInput& input, ExerciseReport& report, Messag
     add_comparison(c, out);
   }
   report.equal = !out.any();
-  if (report.equal) note_pointer_differences(report, "a correct subdivision");
+  if (report.equal) note_pointer_differences(report, tr("a correct subdivision"));
 }
 
 }  // namespace meshedit::exercise_checks

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/history.h"
+#include "core/translation.h"
 #include "core/validate.h"
 #include "exercise/exercise_locality.h"
 
@@ -17,8 +18,10 @@ void add_validation(const ExerciseReport& report, const char* function, Messages
   for (size_t i = 0; i < v.violations.size(); ++i) {
     std::string message = v.violations[i].message;
     if (i == 0) {
-      message = "after your " + std::string(function) + " the mesh is not valid (" +
-                plural(v.total, "problem", "problems") + "): " + message;
+      const MessageParts parts = {{"function", function}, {"count", std::to_string(v.total)}, {"first", message}};
+      message = v.total == 1
+                    ? tr_format("after your {function} the mesh is not valid ({count} problem): {first}", parts)
+                    : tr_format("after your {function} the mesh is not valid ({count} problems): {first}", parts);
     }
     out.add(message);
   }
@@ -41,23 +44,37 @@ void add_unchanged_next(const ExerciseReport& report, const HalfedgeMesh& before
     if (!mine.alive(h) || !reference.alive(h)) continue;
     if (reference.next(h) == before.next(h) || mine.next(h) != before.next(h)) continue;
     if (count++ < 3) {
-      items += (items.empty() ? "" : ", ") + format_id(h) + ".next is still " + format_id(before.next(h));
+      items +=
+          (items.empty() ? "" : ", ") + tr_format("{halfedge}.next is still {next}",
+                                                  {{"halfedge", format_id(h)}, {"next", format_id(before.next(h))}});
     }
   }
   if (count == 0) return;
-  out.add(items + (count > 3 ? " (and " + std::to_string(count - 3) + " more)" : "") + " after your " + function +
-          ", as before the call; the reference changes " +
-          (count == 1 ? "it: that pointer breaks"
-                      : "them: these "
-                        "pointers break") +
-          " the face cycle");
+  const MessageParts parts = {{"items", items}, {"more", std::to_string(count - 3)}, {"function", function}};
+  if (count == 1) {
+    out.add(
+        tr_format("{items} after your {function}, as before the call; the reference changes it: that pointer "
+                  "breaks the face cycle",
+                  parts));
+  } else if (count <= 3) {
+    out.add(
+        tr_format("{items} after your {function}, as before the call; the reference changes them: these "
+                  "pointers break the face cycle",
+                  parts));
+  } else {
+    out.add(
+        tr_format("{items} (and {more} more) after your {function}, as before the call; the reference changes "
+                  "them: these pointers break the face cycle",
+                  parts));
+  }
 }
 
 std::string first_change(const HalfedgeMesh& before, const HalfedgeMesh& after) {
   const std::vector<FieldChange> changes = diff(before, after);
   if (changes.empty()) return "";
   const FieldChange& c = changes.front();
-  return format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+  return tr_format("{element}.{field} was {before}, is {after}",
+                   {{"element", format_id(c.element)}, {"field", c.field}, {"before", c.before}, {"after", c.after}});
 }
 
 void add_comparison(const MeshComparison& c, Messages& out) {
@@ -70,9 +87,9 @@ void note_pointer_differences(ExerciseReport& report, const std::string& what) {
   const MeshComparison exact = compare_meshes_exact(*report.mine.mesh, *report.reference.mesh, {0.0, 5});
   report.identical = exact.equal;
   if (exact.equal) return;
-  report.notes.push_back(
-      what + " (" + std::to_string(exact.total_differences) +
-      " pointer or id differences from the reference, which is accepted); first: " + exact.differences.front());
+  report.notes.push_back(tr_format(
+      "{what} ({count} pointer or id differences from the reference, which is accepted); first: {first}",
+      {{"what", what}, {"count", std::to_string(exact.total_differences)}, {"first", exact.differences.front()}}));
 }
 
 // The course's rule for a boundary vertex's halfedge: any halfedge leaving it (the course's own builder picks an
@@ -83,9 +100,11 @@ void note_boundary_convention(ExerciseReport& report) {
   for (VertexId v : m.vertices()) {
     const HalfedgeId h = m.halfedge(v);
     if (!m.alive(h) || m.face(h).is_boundary() || !m.is_boundary(v)) continue;
-    report.notes.push_back(format_id(v) + " is on the boundary and its halfedge " + format_id(h) +
-                           " is not on the boundary loop: accepted (the course lets a vertex's halfedge be any "
-                           "halfedge leaving it; MeshEdit's own operations keep a boundary vertex's on the loop)");
+    report.notes.push_back(
+        tr_format("{vertex} is on the boundary and its halfedge {halfedge} is not on the boundary loop: accepted (the "
+                  "course lets a vertex's halfedge be any halfedge leaving it; MeshEdit's own operations keep a "
+                  "boundary vertex's on the loop)",
+                  {{"vertex", format_id(v)}, {"halfedge", format_id(h)}}));
     return;
   }
 }
@@ -96,17 +115,20 @@ void add_locality(Exercise exercise, const ExerciseInput& input, const ExerciseR
   if (!message.empty()) out.add(std::move(message));
 }
 
-// Refused by the reference (`what` is "flip e3", "split e3", "subdivide this mesh"): mine must change nothing
-// and return nil.
+// Refused by the reference (`what` is "flip e3", "split e3", "subdivide this mesh", in the window's language):
+// mine must change nothing and return nil.
 void compare_refusal(const ExerciseInput& input, ExerciseReport& report, const std::string& what, const char* function,
                      Messages& out) {
   if (!report.mine.mesh->same_as(*input.mesh)) {
-    out.add("the reference does not " + what + " (" + report.reference.refused + "), but your " + function +
-            " changed the mesh: " + first_change(*input.mesh, *report.mine.mesh));
+    out.add(tr_format("the reference does not {what} ({reason}), but your {function} changed the mesh: {change}",
+                      {{"what", what},
+                       {"reason", report.reference.refused},
+                       {"function", function},
+                       {"change", first_change(*input.mesh, *report.mine.mesh)}}));
   }
   if (report.mine.returned != "nil" && !report.mine.returned.empty()) {
-    out.add("the reference returns nil here (" + report.reference.refused + "); yours returned " +
-            report.mine.returned);
+    out.add(tr_format("the reference returns nil here ({reason}); yours returned {returned}",
+                      {{"reason", report.reference.refused}, {"returned", tr(report.mine.returned)}}));
   }
   report.equal = !out.any();
   report.identical = report.equal;

@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/history.h"
+#include "core/translation.h"
 #include "exercise/internal/normal_diagnosis.h"
 
 namespace meshedit::exercise_checks {
@@ -21,18 +22,26 @@ void compare_normal(const ExerciseInput& input, ExerciseReport& report, Messages
   }
   if (report.mine.mesh && !report.mine.mesh->same_as(mesh)) {
     const std::vector<FieldChange> changes = diff(mesh, *report.mine.mesh);
-    std::string first;
-    if (!changes.empty()) {
+    MessageParts parts = {{"count", std::to_string(changes.size())}};
+    if (changes.empty()) {
+      out.add(tr_format("vertex_normal changed the mesh ({count} changes); it must only read it", parts));
+    } else {
       const FieldChange& c = changes.front();
-      first = ": " + format_id(c.element) + "." + c.field + " was " + c.before + ", is " + c.after;
+      parts.emplace_back(
+          "change",
+          tr_format("{element}.{field} was {before}, is {after}",
+                    {{"element", format_id(c.element)}, {"field", c.field}, {"before", c.before}, {"after", c.after}}));
+      out.add(
+          changes.size() == 1
+              ? tr_format("vertex_normal changed the mesh: {change} ({count} change); it must only read it", parts)
+              : tr_format("vertex_normal changed the mesh: {change} ({count} changes); it must only read it", parts));
     }
-    out.add("vertex_normal changed the mesh" + first + " (" + plural(changes.size(), "change", "changes") +
-            "); it must only read it");
   }
   report.equal = !out.any();
   report.identical = report.equal && bitwise_equal(got, want);
   if (report.equal && !report.identical) {
-    report.notes.push_back("your normal differs from the reference's by " + format_number(d) + " (rounding; accepted)");
+    report.notes.push_back(tr_format("your normal differs from the reference's by {distance} (rounding; accepted)",
+                                     {{"distance", format_number(d)}}));
   }
 }
 

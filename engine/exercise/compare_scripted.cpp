@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "core/translation.h"
 #include "exercise/value_compare.h"
 
 namespace meshedit::exercise_checks {
@@ -79,8 +80,9 @@ void compare_scripted_values(const ScriptedExercise& scripted, const ExerciseInp
   report.equal = !out.any();
   report.identical = report.equal && c.identical;
   if (report.equal && !report.identical) {
-    report.notes.push_back("your values differ from the reference's by at most " + format_number(c.worst) +
-                           " (rounding; accepted)");
+    report.notes.push_back(
+        tr_format("your values differ from the reference's by at most {distance} (rounding; accepted)",
+                  {{"distance", format_number(c.worst)}}));
   }
 }
 
@@ -97,29 +99,33 @@ void compare_scripted(const ScriptedExercise& scripted, const ExerciseInput& inp
     return;
   }
   if (scripted.takes_values()) return compare_scripted_values(scripted, input, report, out);
-  const std::string what = std::string(function) + (input.element.valid() ? " on " + format_id(input.element) : "");
   if (!report.reference.refused.empty()) {
-    return compare_refusal(input, report, "change the mesh in " + what, function, out);
+    const MessageParts call = {{"function", function}, {"element", format_id(input.element)}};
+    return compare_refusal(input, report,
+                           input.element.valid() ? tr_format("change the mesh in {function} on {element}", call)
+                                                 : tr_format("change the mesh in {function}", call),
+                           function, out);
   }
   const HalfedgeMesh& before = *input.mesh;
   const HalfedgeMesh& mine = *report.mine.mesh;
   const HalfedgeMesh& reference = *report.reference.mesh;
   const double tolerance = mesh_tolerance(before);
   if (mine.same_as(before)) {
-    out.add("your " + std::string(function) + " changed nothing; the reference changes " +
-            first_change(before, reference));
+    out.add(tr_format("your {function} changed nothing; the reference changes {change}",
+                      {{"function", function}, {"change", first_change(before, reference)}}));
   } else {
     add_unchanged_next(report, before, function, out);
     add_validation(report, function, out);
     if (report.mine.validation->ok()) add_comparison(compare_meshes(mine, reference, {tolerance, 20}), out);
   }
   if (!same_element(mine, report.mine.element, reference, report.reference.element, tolerance)) {
-    out.add("your " + std::string(function) + " returned " + report.mine.returned + "; the reference returns " +
-            report.reference.returned);
+    out.add(tr_format(
+        "your {function} returned {returned}; the reference returns {expected}",
+        {{"function", function}, {"returned", tr(report.mine.returned)}, {"expected", tr(report.reference.returned)}}));
   }
   if (out.any()) diagnoses_first(scripted, input, report, out);
   report.equal = !out.any();
-  if (report.equal) note_pointer_differences(report, "a correct " + std::string(function));
+  if (report.equal) note_pointer_differences(report, tr_format("a correct {function}", {{"function", function}}));
 }
 
 }  // namespace meshedit::exercise_checks

@@ -4,6 +4,7 @@
 #include <memory>
 #include <string>
 
+#include "core/translation.h"
 #include "core/validate.h"
 #include "exercise/exercises.h"
 #include "exercise/internal/exercise_checks.h"
@@ -36,14 +37,16 @@ void add_run_failure(Exercise exercise, const ExerciseInput& input, const Exerci
 std::string unfinished_run_hint(Exercise exercise) {
   switch (exercise.kind()) {
     case ExerciseKind::Upsample:
-      return "upsample did not finish: split only the edges of the original mesh (list them before the first "
-             "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create. A "
-             "loop that splits nothing never ends when what its condition waits for never changes";
+      return tr(
+          "upsample did not finish: split only the edges of the original mesh (list them before the first "
+          "split); a loop over all edges that re-reads mesh:num_edges() keeps finding the edges splits create. "
+          "A loop that splits nothing never ends when what its condition waits for never changes");
     case ExerciseKind::FlipEdge:
     case ExerciseKind::SplitEdge:
     case ExerciseKind::VertexNormal:
-      return "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to its "
-             "start when a pointer is wrong";
+      return tr(
+          "it did not finish: a walk like `repeat ... h = h.twin.next until h == start` never comes back to "
+          "its start when a pointer is wrong");
     default: {
       const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition();
       return scripted ? scripted->hint() : "";
@@ -52,11 +55,14 @@ std::string unfinished_run_hint(Exercise exercise) {
 }
 
 std::string ExerciseReport::summary() const {
-  if (equal) return "same as the reference";
-  std::string s = "different";
-  if (!differences.empty()) s += ": " + differences.front();
-  if (total_differences > 1) s += " (" + std::to_string(total_differences - 1) + " more)";
-  return s;
+  if (equal) return tr("same as the reference");
+  const MessageParts parts = {{"first", differences.empty() ? std::string() : differences.front()},
+                              {"count", std::to_string(total_differences - 1)}};
+  if (differences.empty()) {
+    return total_differences > 1 ? tr_format("different ({count} more)", parts) : std::string(tr("different"));
+  }
+  return total_differences > 1 ? tr_format("different: {first} ({count} more)", parts)
+                               : tr_format("different: {first}", parts);
 }
 
 ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOutcome mine, ExerciseOutcome reference) {
@@ -68,7 +74,8 @@ ExerciseReport compare(Exercise exercise, const ExerciseInput& input, ExerciseOu
   const bool on_mesh = is_mesh_exercise(exercise);
   if (on_mesh && report.mine.ran && !report.mine.mesh) {
     report.mine.ran = false;
-    report.mine.error = "no mesh came back from " + std::string(exercise_info(exercise).function);
+    report.mine.error =
+        tr_format("no mesh came back from {function}", {{"function", exercise_info(exercise).function}});
   }
   if (on_mesh && report.mine.mesh && !report.mine.validation) report.mine.validation = validate(*report.mine.mesh);
   if (!report.mine.ran) {

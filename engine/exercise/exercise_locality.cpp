@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "core/history.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -23,6 +24,11 @@ std::set<uint32_t> corners_at(const HalfedgeMesh& mesh, EdgeId e) {
   return corners;
 }
 
+// "3 fields", "1 element": a count with its noun, in the window's language.
+std::string counted(size_t n, const char* one, const char* many) {
+  return tr_format(n == 1 ? one : many, {{"count", std::to_string(n)}});
+}
+
 // "changes 12 fields of 8 elements", "creates 12 elements and changes 9 fields of 7 elements it had", "changes
 // nothing": what the reference did to the input, counted from its mesh (a field is one changed value of m:diff).
 std::string reference_changes(const HalfedgeMesh& before, const HalfedgeMesh& after) {
@@ -37,11 +43,12 @@ std::string reference_changes(const HalfedgeMesh& before, const HalfedgeMesh& af
     changed.insert(c.element);
     ++fields;
   }
-  if (created.empty() && changed.empty()) return "changes nothing";
-  const std::string rewritten =
-      "changes " + plural(fields, "field", "fields") + " of " + plural(changed.size(), "element", "elements");
-  if (created.empty()) return rewritten;
-  return "creates " + plural(created.size(), "element", "elements") + " and " + rewritten + " it had";
+  if (created.empty() && changed.empty()) return tr("changes nothing");
+  const MessageParts parts = {{"fields", counted(fields, "{count} field", "{count} fields")},
+                              {"elements", counted(changed.size(), "{count} element", "{count} elements")},
+                              {"created", counted(created.size(), "{count} element", "{count} elements")}};
+  if (created.empty()) return tr_format("changes {fields} of {elements}", parts);
+  return tr_format("creates {created} and changes {fields} of {elements} it had", parts);
 }
 
 }  // namespace
@@ -67,21 +74,35 @@ std::string locality_failure(Exercise exercise, const ExerciseInput& input, cons
   if (touched.elements <= locality_bound(input)) return "";
 
   const bool flip = exercise == Exercise::FlipEdge;
-  const std::string function = flip ? "flip_edge" : "split_edge";
-  const std::string mesh_size = "a mesh of " + std::to_string(before.num_faces()) + " faces";
-  std::string message;
+  const MessageParts parts = {
+      {"function", flip ? "flip_edge" : "split_edge"},
+      {"count", std::to_string(touched.elements)},
+      {"faces", std::to_string(before.num_faces())},
+      {"call", touched.whole_mesh_call},
+      {"written", std::to_string(touched.written)},
+      {"changes", reference.mesh ? reference_changes(before, *reference.mesh) : std::string(tr("changes nothing"))}};
   if (!touched.whole_mesh_call.empty()) {
-    message = "your " + function + " touched all " + std::to_string(touched.elements) + " elements of " + mesh_size +
-              ": " + touched.whole_mesh_call + " reads every one";
-  } else {
-    message = "your " + function + " touched " + std::to_string(touched.elements) + " elements of " + mesh_size +
-              " (it wrote " + std::to_string(touched.written) + " of them and only read the rest)";
+    return flip ? tr_format(
+                      "your {function} touched all {count} elements of a mesh of {faces} faces: {call} reads "
+                      "every one; a flip changes a fixed handful (the reference {changes}), whatever the "
+                      "mesh's size: walk from e.halfedge instead of reading the whole mesh",
+                      parts)
+                : tr_format(
+                      "your {function} touched all {count} elements of a mesh of {faces} faces: {call} reads "
+                      "every one; a split changes a fixed handful (the reference {changes}), whatever the "
+                      "mesh's size: walk from e.halfedge instead of reading the whole mesh",
+                      parts);
   }
-  message += std::string("; a ") + (flip ? "flip" : "split") + " changes a fixed handful (the reference ";
-  message += reference.mesh ? reference_changes(before, *reference.mesh) : "changes nothing";
-  message += "), whatever the mesh's size: walk from e.halfedge instead of ";
-  message += touched.whole_mesh_call.empty() ? "looping over the mesh" : "reading the whole mesh";
-  return message;
+  return flip ? tr_format(
+                    "your {function} touched {count} elements of a mesh of {faces} faces (it wrote {written} "
+                    "of them and only read the rest); a flip changes a fixed handful (the reference {changes}), "
+                    "whatever the mesh's size: walk from e.halfedge instead of looping over the mesh",
+                    parts)
+              : tr_format(
+                    "your {function} touched {count} elements of a mesh of {faces} faces (it wrote {written} "
+                    "of them and only read the rest); a split changes a fixed handful (the reference "
+                    "{changes}), whatever the mesh's size: walk from e.halfedge instead of looping over the mesh",
+                    parts);
 }
 
 }  // namespace meshedit

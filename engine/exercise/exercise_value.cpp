@@ -6,6 +6,7 @@
 
 #include <lua.hpp>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "script/bezier_bindings.h"
 #include "script/lua_args.h"
@@ -133,20 +134,29 @@ void push_exercise_value(lua_State* L, const ExerciseValue& value) {
   }
 }
 
+// In the window's language (what `other` says is translated when the catalog has it: "a string").
 std::string describe(const ExerciseValue& value) {
   switch (value.kind) {
     case ExerciseValue::Kind::Nil: return "nil";
-    case ExerciseValue::Kind::Number: return "the number " + format_number(value.number);
+    case ExerciseValue::Kind::Number:
+      return tr_format("the number {number}", {{"number", format_number(value.number)}});
     case ExerciseValue::Kind::Point: return format_position(value.point);
-    case ExerciseValue::Kind::Other: return value.other;
+    case ExerciseValue::Kind::Other: return tr(value.other);
     case ExerciseValue::Kind::List: break;
   }
   const size_t n = value.items.size();
-  if (n == 0) return "an empty list";
-  if (all_of_kind(value, ExerciseValue::Kind::Point)) return "a list of " + plural(n, "point", "points");
-  if (all_of_kind(value, ExerciseValue::Kind::Number)) return "a list of " + plural(n, "number", "numbers");
-  if (all_of_kind(value, ExerciseValue::Kind::List)) return "a list of " + plural(n, "list", "lists");
-  return "a list of " + plural(n, "value", "values");
+  if (n == 0) return tr("an empty list");
+  const MessageParts count = {{"count", std::to_string(n)}};
+  if (all_of_kind(value, ExerciseValue::Kind::Point)) {
+    return tr_format(n == 1 ? "a list of {count} point" : "a list of {count} points", count);
+  }
+  if (all_of_kind(value, ExerciseValue::Kind::Number)) {
+    return tr_format(n == 1 ? "a list of {count} number" : "a list of {count} numbers", count);
+  }
+  if (all_of_kind(value, ExerciseValue::Kind::List)) {
+    return tr_format(n == 1 ? "a list of {count} list" : "a list of {count} lists", count);
+  }
+  return tr_format(n == 1 ? "a list of {count} value" : "a list of {count} values", count);
 }
 
 std::string value_text(const ExerciseValue& value) {

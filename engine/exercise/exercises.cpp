@@ -27,6 +27,7 @@
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
 #include "core/normals.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/exercise_locality.h"
 #include "exercise/internal/upsample_runaway.h"
@@ -84,7 +85,9 @@ return {
 }
 )lua";
 
-// Describes the Lua value at `index` for messages, reading tables raw.
+// Describes the Lua value at `index` for messages, reading tables raw. In English whatever the window's language: it
+// is the outcome's `returned`, which a definition's diagnose reads and code compares with "nil"; a message puts it in
+// through tr (its fixed words, "a string", are in the catalog).
 std::string describe_value(lua_State* L, int index) {
   switch (lua_type(L, index)) {
     case LUA_TNONE:
@@ -206,7 +209,8 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
     case ExerciseKind::CurveStep: {
       if (lua_type(L, top) != LUA_TTABLE) {
         out.ran = false;
-        out.error = std::string(info.function) + " returned " + out.returned + "; it must return a list of points";
+        out.error = tr_format("{function} returned {returned}; it must return a list of points",
+                              {{"function", info.function}, {"returned", tr(out.returned)}});
         return;
       }
       const lua_Unsigned n = lua_rawlen(L, top);
@@ -218,13 +222,14 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
         lua_pop(L, 1);
         if (!ok) {
           out.ran = false;
-          out.error =
-              "point " + std::to_string(i) + " of the list " + info.function + " returned is " + what + ", not a point";
+          out.error = tr_format("point {number} of the list {function} returned is {what}, not a point",
+                                {{"number", std::to_string(i)}, {"function", info.function}, {"what", tr(what)}});
           return;
         }
         out.points.push_back(p);
       }
-      out.returned = "a list of " + plural(n, "point", "points");
+      out.returned =
+          tr_format(n == 1 ? "a list of {count} point" : "a list of {count} points", {{"count", std::to_string(n)}});
       return;
     }
     case ExerciseKind::PatchEvaluate:
@@ -232,7 +237,8 @@ void read_returned_value(lua_State* L, int index, Exercise exercise, const std::
       glm::dvec3 p;
       if (!to_vec3(L, top, p)) {
         out.ran = false;
-        out.error = std::string(info.function) + " returned " + out.returned + "; it must return a vec3";
+        out.error = tr_format("{function} returned {returned}; it must return a vec3",
+                              {{"function", info.function}, {"returned", tr(out.returned)}});
         return;
       }
       out.points.push_back(p);
@@ -566,8 +572,8 @@ ExerciseOutcome StudentCode::run(Exercise exercise, const ExerciseInput& input, 
   lua_State* L = runtime_->state();
   lua_settop(L, 0);
   if (!push_function(exercise)) {
-    out.error = std::string("your code does not define ") + info.function + " (as a global or in the table " +
-                info.file + " returns)";
+    out.error = tr_format("your code does not define {function} (as a global or in the table {file} returns)",
+                          {{"function", info.function}, {"file", info.file}});
     return out;
   }
   const int function = lua_gettop(L);
@@ -642,7 +648,8 @@ ExerciseOutcome run_reference(Exercise exercise, const ExerciseInput& input) {
   switch (exercise.kind()) {
     case ExerciseKind::CurveStep:
       out.points = de_casteljau_step(std::span<const glm::dvec3>(input.points), input.t);
-      out.returned = "a list of " + plural(out.points.size(), "point", "points");
+      out.returned = tr_format(out.points.size() == 1 ? "a list of {count} point" : "a list of {count} points",
+                               {{"count", std::to_string(out.points.size())}});
       return out;
     case ExerciseKind::PatchEvaluate:
       out.points = {evaluate_patch(input.patch, input.u, input.v)};

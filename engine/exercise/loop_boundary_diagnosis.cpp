@@ -7,6 +7,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/loop_rules.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "core/vertex_ring.h"
 #include "exercise/internal/loop_diagnosis_support.h"
@@ -47,23 +48,31 @@ std::vector<std::string> vertex_messages(const HalfedgeMesh& before, const Halfe
     const size_t n = ring->valence;
     const double u = course_u(n);
     if (close(q, (1.0 - double(n) * u) * p + u * ring->neighbour_sum, tolerance)) {
-      interior.add(format_id(v) + " (" + std::to_string(n) + " neighbours, 2 of them along the boundary)");
+      interior.add(tr_format("{vertex} ({count} neighbours, 2 of them along the boundary)",
+                             {{"vertex", format_id(v)}, {"count", std::to_string(n)}}));
     } else {
-      other.add(format_id(v) + " at " + format_position(q) + ", where the course puts it at " +
-                format_position(course));
+      other.add(tr_format(
+          "{vertex} at {position}, where the course puts it at {expected}",
+          {{"vertex", format_id(v)}, {"position", format_position(q)}, {"expected", format_position(course)}}));
     }
   }
   const std::string rule =
-      "a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along "
-      "the boundary (extra credit)";
+      tr("a boundary vertex moves to 3/4 p + 1/8 (a + b), with a and b its two neighbours along the boundary (extra "
+         "credit)");
   std::vector<std::string> out;
   if (interior.count > 0) {
-    out.push_back(std::to_string(interior.count) + " of your boundary vertices, e.g. " + interior.example +
-                  ", moved by the interior rule (1 - n u) p + u (sum of all the neighbours); " + rule);
+    const MessageParts parts = {
+        {"count", std::to_string(interior.count)}, {"example", interior.example}, {"rule", rule}};
+    out.push_back(
+        tr_format("{count} of your boundary vertices, e.g. {example}, moved by the interior rule (1 - n u) p "
+                  "+ u (sum of all the neighbours); {rule}",
+                  parts));
   }
   if (other.count > 0) {
-    out.push_back(std::to_string(other.count) + " of your boundary vertices are not where the course puts them, e.g. " +
-                  other.example + ": " + rule);
+    out.push_back(
+        tr_format("{count} of your boundary vertices are not where the course puts them, e.g. {example}: "
+                  "{rule}",
+                  {{"count", std::to_string(other.count)}, {"example", other.example}, {"rule", rule}}));
   }
   return out;
 }
@@ -116,8 +125,10 @@ std::vector<std::string> edge_messages(const HalfedgeMesh& before, const Halfedg
         const EdgePlace place = edge_place(before, inside, outside, q, tolerance);
         placed_right = place == EdgePlace::Midpoint;
         if (!first) {
-          first.emplace(place, format_id(w) + " on the boundary edge " + format_id(before.vertex(inside)) + "-" +
-                                   format_id(before.vertex(outside)));
+          first.emplace(
+              place, tr_format("{vertex} on the boundary edge {edge}",
+                               {{"vertex", format_id(w)},
+                                {"edge", format_id(before.vertex(inside)) + "-" + format_id(before.vertex(outside))}}));
         }
       }
     }
@@ -125,27 +136,34 @@ std::vector<std::string> edge_messages(const HalfedgeMesh& before, const Halfedg
     switch (first->first) {
       case EdgePlace::Across: across.add(first->second); break;
       case EdgePlace::WithoutD: without_d.add(first->second); break;
-      case EdgePlace::Other: other.add(first->second + " at " + format_position(q)); break;
+      case EdgePlace::Other:
+        other.add(tr_format("{example} at {position}", {{"example", first->second}, {"position", format_position(q)}}));
+        break;
       case EdgePlace::Midpoint: break;
     }
   }
-  const std::string rule = "a boundary edge's new vertex goes at its midpoint, (a + b) / 2 (extra credit)";
+  const std::string rule = tr("a boundary edge's new vertex goes at its midpoint, (a + b) / 2 (extra credit)");
   std::vector<std::string> out;
   if (across.count > 0) {
-    out.push_back(std::to_string(across.count) + " of your new vertices, e.g. " + across.example +
-                  ", are at the interior rule 3/8 (a + b) + 1/8 (c + d) with d read across the boundary "
-                  "(h.twin.next.next walks the boundary loop, not a triangle); " +
-                  rule);
+    out.push_back(
+        tr_format("{count} of your new vertices, e.g. {example}, are at the interior rule 3/8 (a + b) + 1/8 "
+                  "(c + d) with d read across the boundary (h.twin.next.next walks the boundary loop, not a "
+                  "triangle); {rule}",
+                  {{"count", std::to_string(across.count)}, {"example", across.example}, {"rule", rule}}));
   }
   if (without_d.count > 0) {
-    out.push_back(std::to_string(without_d.count) + " of your new vertices, e.g. " + without_d.example +
-                  ", are at 3/8 (a + b) + 1/8 c, the interior rule with d left out; " + rule);
+    const MessageParts parts = {
+        {"count", std::to_string(without_d.count)}, {"example", without_d.example}, {"rule", rule}};
+    out.push_back(
+        tr_format("{count} of your new vertices, e.g. {example}, are at 3/8 (a + b) + 1/8 c, the interior "
+                  "rule with d left out; {rule}",
+                  parts));
   }
   if (other.count > 0) {
-    out.push_back(std::to_string(other.count) +
-                  " of your new vertices on boundary edges are not at the midpoint, "
-                  "e.g. " +
-                  other.example + ": " + rule);
+    out.push_back(
+        tr_format("{count} of your new vertices on boundary edges are not at the midpoint, e.g. {example}: "
+                  "{rule}",
+                  {{"count", std::to_string(other.count)}, {"example", other.example}, {"rule", rule}}));
   }
   return out;
 }

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/loop_subdivision.h"
+#include "core/translation.h"
 
 namespace meshedit {
 namespace {
@@ -91,63 +92,77 @@ std::string ends_of(const HalfedgeMesh& mesh, EdgeId e) {
 
 // "your upsample flipped none of the 4 new edges the reference flips" / "2 of the 4".
 std::string flipped_of(const FlipTallies& t) {
-  const std::string reference = std::to_string(t.reference_flips);
-  return "your upsample flipped " +
-         (t.right == 0 ? "none of the " + reference : std::to_string(t.right) + " of the " + reference) +
-         " new edges the reference flips";
+  const MessageParts parts = {{"count", std::to_string(t.right)}, {"total", std::to_string(t.reference_flips)}};
+  return t.right == 0 ? tr_format("your upsample flipped none of the {total} new edges the reference flips", parts)
+                      : tr_format("your upsample flipped {count} of the {total} new edges the reference flips", parts);
 }
 
 // The old/new test made one way only, with what the edges left say about it: when all of them have e.halfedge
 // leaving the same kind of vertex, a test of one order never flips any of them.
 std::string one_way_cause(const FlipTallies& t) {
-  std::string text =
-      "the old/new test accepts one order only (a old and b new, but not a new and b old: flip when "
-      "(is_new[a.id] == true) ~= (is_new[b.id] == true))";
   const size_t left = t.unflipped.count;
-  if (left > 1 && (t.unflipped_from_new == left || t.unflipped_from_new == 0)) {
-    text += std::string(": every edge left has its halfedge leaving the ") +
-            (t.unflipped_from_new == left ? "new" : "original") + " vertex, so a test of one order never flips them";
+  if (left > 1 && t.unflipped_from_new == left) {
+    return tr(
+        "the old/new test accepts one order only (a old and b new, but not a new and b old: flip when "
+        "(is_new[a.id] == true) ~= (is_new[b.id] == true)): every edge left has its halfedge leaving the new "
+        "vertex, so a test of one order never flips them");
   }
-  return text;
+  if (left > 1 && t.unflipped_from_new == 0) {
+    return tr(
+        "the old/new test accepts one order only (a old and b new, but not a new and b old: flip when "
+        "(is_new[a.id] == true) ~= (is_new[b.id] == true)): every edge left has its halfedge leaving the "
+        "original vertex, so a test of one order never flips them");
+  }
+  return tr(
+      "the old/new test accepts one order only (a old and b new, but not a new and b old: flip when "
+      "(is_new[a.id] == true) ~= (is_new[b.id] == true))");
 }
 
 // How many of the reference's flips yours made, the new edges left unflipped, and their causes, likely first.
 std::string unflipped_message(const FlipTallies& t, const HalfedgeMesh& yours) {
   const std::string marks =
-      "the marks never match (a table keyed by the handle, new_edge[e] = true or is_new[m] = true, or by anything "
-      "but the element's id, finds nothing when another handle reads it back: key them by e.id and m.id)";
+      tr("the marks never match (a table keyed by the handle, new_edge[e] = true or is_new[m] = true, or by anything "
+         "but the element's id, finds nothing when another handle reads it back: key them by e.id and m.id)");
   const std::string flags =
-      "the flags were set on the wrong edges (the halves of the split edge instead of the edges from the new vertex "
-      "to the opposite corners)";
+      tr("the flags were set on the wrong edges (the halves of the split edge instead of the edges from the new vertex "
+         "to the opposite corners)");
   const std::string one_way = one_way_cause(t);
-  const std::string text = flipped_of(t) + ": " + std::to_string(t.unflipped.count) +
-                           " of your edges still join an original and a new vertex across an old face, e.g. " +
-                           ends_of(yours, t.unflipped.example) +
-                           ", where the reference has none (every new edge that joins an old and a new vertex must "
-                           "be flipped, once). The usual causes, most likely first: ";
-  if (t.wrong_total() > 0) return text + flags + "; " + marks + "; or " + one_way;
-  if (t.right == 0) return text + marks + "; " + one_way + "; or " + flags;
-  return text + one_way + "; " + marks + "; or " + flags;
+  const bool wrong = t.wrong_total() > 0, none = t.right == 0;
+  const MessageParts parts = {{"flipped", flipped_of(t)},
+                              {"count", std::to_string(t.unflipped.count)},
+                              {"example", ends_of(yours, t.unflipped.example)},
+                              {"first", wrong  ? flags
+                                        : none ? marks
+                                               : one_way},
+                              {"second", wrong  ? marks
+                                         : none ? one_way
+                                                : marks},
+                              {"third", wrong ? one_way : flags}};
+  return tr_format(
+      "{flipped}: {count} of your edges still join an original and a new vertex across an old face, "
+      "e.g. {example}, where the reference has none (every new edge that joins an old and a new vertex "
+      "must be flipped, once). The usual causes, most likely first: {first}; {second}; or {third}",
+      parts);
 }
 
-// What an edge in neither the split mesh nor the finished reference says, by the age of its ends: the words before
-// the example edge and after it.
+// What an edge in neither the split mesh nor the finished reference says, by the age of its ends: the message, with
+// the number of such edges ({count}) and the first of them ({example}).
 struct WrongFlipWords {
   Ends ends;
-  const char* joins;
-  const char* because;
+  const char* message;
 };
 constexpr WrongFlipWords kWrongFlipWords[] = {
-    {kBothOld, " of your edges join two original vertices, e.g. ",
-     ": a new edge whose ends were both new was flipped; flip only new edges with one old and one new end (check both "
-     "ends)"},
-    {kBothNew, " of your edges join two new vertices where the reference has none, e.g. ",
-     ": an edge that was not new (a half of a split edge) was flipped; flag only the edges from the new vertex m to "
-     "the corners opposite the split edge (the far ends other than the split edge's own two)"},
+    {kBothOld,
+     "{count} of your edges join two original vertices, e.g. {example}: a new edge whose ends were both new was "
+     "flipped; flip only new edges with one old and one new end (check both ends)"},
+    {kBothNew,
+     "{count} of your edges join two new vertices where the reference has none, e.g. {example}: an edge that was not "
+     "new (a half of a split edge) was flipped; flag only the edges from the new vertex m to the corners opposite the "
+     "split edge (the far ends other than the split edge's own two)"},
     {kOldAndNew,
-     " of your edges join an original and a new vertex where neither the splits nor the reference's flips make one, "
-     "e.g. ",
-     ": an edge that had to stay was flipped (a half of a split edge, or a new edge between two new vertices)"},
+     "{count} of your edges join an original and a new vertex where neither the splits nor the reference's flips make "
+     "one, e.g. {example}: an edge that had to stay was flipped (a half of a split edge, or a new edge between two new "
+     "vertices)"},
 };
 
 // Edges in neither the split mesh nor the finished reference, by the age of their ends.
@@ -156,7 +171,8 @@ std::vector<std::string> wrong_flip_messages(const FlipTallies& t, const Halfedg
   for (const WrongFlipWords& words : kWrongFlipWords) {
     const Tally& tally = t.wrong[words.ends];
     if (tally.count == 0) continue;
-    out.push_back(std::to_string(tally.count) + words.joins + ends_of(yours, tally.example) + words.because);
+    out.push_back(
+        tr_format(words.message, {{"count", std::to_string(tally.count)}, {"example", ends_of(yours, tally.example)}}));
   }
   return out;
 }
@@ -176,9 +192,10 @@ std::vector<std::string> diagnose_loop_flips(const HalfedgeMesh& before, const H
   if (t.unflipped.count > 0) {
     out.push_back(unflipped_message(t, yours));
   } else if (t.wrong_total() > 0) {
-    out.push_back(flipped_of(t) + ", and " + std::to_string(t.wrong_total()) +
-                  " of your edges are ones neither the splits nor the reference's flips make (each from a flip of an "
-                  "edge that had to stay)");
+    out.push_back(
+        tr_format("{flipped}, and {count} of your edges are ones neither the splits nor the reference's "
+                  "flips make (each from a flip of an edge that had to stay)",
+                  {{"flipped", flipped_of(t)}, {"count", std::to_string(t.wrong_total())}}));
   }
   return out;
 }

@@ -8,6 +8,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/internal/loop_diagnosis_support.h"
 
@@ -64,20 +65,29 @@ std::string vertex_weight_message(const HalfedgeMesh& before, const HalfedgeMesh
   }
   if (count == 0) return "";
   const double want = course_u(first_n);
-  std::string message = "your original vertex " + format_id(first) + " (degree " + std::to_string(first_n) +
-                        ") moved as if u = " + format_number(first_u);
-  if (count > 1) message += " (" + std::to_string(count) + " original vertices moved by a wrong weight)";
-  message += "; the course's u for degree " + std::to_string(first_n) + " is " +
-             (first_n == 3 ? std::string("3/16") : "3 / (8 * " + std::to_string(first_n) + ")") + " = " +
-             format_number(want);
+  MessageParts parts = {{"vertex", format_id(first)},
+                        {"degree", std::to_string(first_n)},
+                        {"u", format_number(first_u)},
+                        {"count", std::to_string(count)},
+                        {"formula", first_n == 3 ? std::string("3/16") : "3 / (8 * " + std::to_string(first_n) + ")"},
+                        {"want", format_number(want)}};
+  parts.emplace_back(
+      "head", count > 1 ? tr_format("your original vertex {vertex} (degree {degree}) moved as if u = {u} "
+                                    "({count} original vertices moved by a wrong weight)",
+                                    parts)
+                        : tr_format("your original vertex {vertex} (degree {degree}) moved as if u = {u}", parts));
   if (std::abs(first_u - loop_original_u(first_n)) <= 1e-9) {
-    message += " (yours is Loop's original weight beta / n; the course uses 3/16 for degree 3, else 3 / (8 n))";
+    parts.emplace_back("why", tr("yours is Loop's original weight beta / n; the course uses 3/16 for degree 3, else "
+                                 "3 / (8 n)"));
   } else if (first_n == 3 && std::abs(first_u - 3.0 / 24.0) <= 1e-12) {
-    message += " (yours is 3 / (8 n) with n = 3: degree 3 is the exception, u = 3/16)";
+    parts.emplace_back("why", tr("yours is 3 / (8 n) with n = 3: degree 3 is the exception, u = 3/16"));
   } else {
-    message += " (3/16 for degree 3, else 3 / (8 n))";
+    parts.emplace_back("why", tr("3/16 for degree 3, else 3 / (8 n)"));
   }
-  return message + ": the new position is (1 - n u) p + u (sum of the neighbours)";
+  return tr_format(
+      "{head}; the course's u for degree {degree} is {formula} = {want} ({why}): the new position is "
+      "(1 - n u) p + u (sum of the neighbours)",
+      parts);
 }
 
 struct EdgeRule {
@@ -116,8 +126,11 @@ std::string edge_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& 
         for (EdgeRule& rule : rules) {
           if (!close(q, rule.ab * ab + rule.cd * cd, tolerance)) continue;
           if (rule.count++ == 0) {
-            rule.example = format_id(w) + " on the edge " + format_id(a) + "-" + format_id(b) + " (opposite corners " +
-                           format_id(c) + " " + format_id(d) + ")";
+            rule.example = tr_format("{vertex} on the edge {edge} (opposite corners {c} {d})",
+                                     {{"vertex", format_id(w)},
+                                      {"edge", format_id(a) + "-" + format_id(b)},
+                                      {"c", format_id(c)},
+                                      {"d", format_id(d)}});
           }
           done = true;
           break;
@@ -130,9 +143,11 @@ std::string edge_weight_message(const HalfedgeMesh& before, const HalfedgeMesh& 
     if (rule.count > 0 && (!worst || rule.count > worst->count)) worst = &rule;
   }
   if (!worst) return "";
-  return std::to_string(worst->count) + " of your new vertices, e.g. " + worst->example + ", are at " + worst->what +
-         "; the course's edge point for an interior edge is 3/8 (a + b) + 1/8 (c + d), with c and d the corners "
-         "opposite the edge (the midpoint is the rule for boundary edges only)";
+  return tr_format(
+      "{count} of your new vertices, e.g. {example}, are at {rule}; the course's edge point for an "
+      "interior edge is 3/8 (a + b) + 1/8 (c + d), with c and d the corners opposite the edge (the "
+      "midpoint is the rule for boundary edges only)",
+      {{"count", std::to_string(worst->count)}, {"example", worst->example}, {"rule", tr(worst->what)}});
 }
 
 // Original vertices of yours at the reference's position of a new vertex (sorted by x, searched by x).
@@ -155,17 +170,19 @@ std::string misplaced_message(const HalfedgeMesh& before, const HalfedgeMesh& yo
     for (; it != edge_points.end() && it->first.x <= q.x + tolerance; ++it) {
       if (!close(q, it->first, tolerance)) continue;
       if (count++ == 0) {
-        example = format_id(v) + " at " + format_position(q) + ", where the reference puts the new vertex " +
-                  format_id(it->second);
+        example =
+            tr_format("{vertex} at {position}, where the reference puts the new vertex {new}",
+                      {{"vertex", format_id(v)}, {"position", format_position(q)}, {"new", format_id(it->second)}});
       }
       break;
     }
   }
   if (count == 0) return "";
-  return std::to_string(count) + " of your original vertices sit where the reference puts new vertices, e.g. " +
-         example +
-         ": a position computed for a new vertex (step 2) was written to an original one; keep it under "
-         "the new vertex's own id (m.id, from the split that made m)";
+  return tr_format(
+      "{count} of your original vertices sit where the reference puts new vertices, e.g. {example}: a "
+      "position computed for a new vertex (step 2) was written to an original one; keep it under the new "
+      "vertex's own id (m.id, from the split that made m)",
+      {{"count", std::to_string(count)}, {"example", example}});
 }
 
 }  // namespace

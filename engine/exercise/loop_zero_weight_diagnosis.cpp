@@ -6,6 +6,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/loop_rules.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "core/vertex_ring.h"
 #include "exercise/internal/loop_diagnosis_support.h"
@@ -15,12 +16,11 @@ namespace {
 
 using namespace loop_diagnosis;
 
-// A rule with some of its weights 0: how the message names them, where they put a vertex, and who is there.
+// A rule with some of its weights 0: the message naming them and where they put a vertex (a template with the
+// number of such vertices, {count}, and the first of them, {example}), and who is there.
 struct ZeroedRule {
-  const char* weights;   // "weights 3/8 and 1/8 are"
-  const char* lua;       // "3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and 1 / 8"
-  const char* position;  // "(0, 0, 0)", "1/8 (c + d)"
-  bool at_origin;        // every weight of the rule is 0: it puts the vertex at (0, 0, 0)
+  const char* message;  // "your edge weights 3/8 and 1/8 are 0 (in Lua ...): {count} of your new vertices, ..."
+  bool at_origin;       // every weight of the rule is 0: it puts the vertex at (0, 0, 0)
   size_t count = 0;
   std::string example;
   void add(const std::string& text) {
@@ -28,14 +28,10 @@ struct ZeroedRule {
   }
 };
 
-constexpr const char* kInteriorEdgeRule = "3/8 (a + b) + 1/8 (c + d)";
-
 // "your edge weights 3/8 and 1/8 are 0 (in Lua ...): 6 of your new vertices, e.g. ..., are at ... instead of ...".
-void tell(const char* rule, const ZeroedRule& z, const char* vertices, const char* course, ZeroLoopWeights& out) {
+void tell(const ZeroedRule& z, ZeroLoopWeights& out) {
   if (z.count == 0) return;
-  out.messages.push_back("your " + std::string(rule) + " " + z.weights + " 0 (in Lua " + z.lua +
-                         "): " + std::to_string(z.count) + " of your " + vertices + ", e.g. " + z.example +
-                         ", are at " + z.position + " instead of " + course);
+  out.messages.push_back(tr_format(z.message, {{"count", std::to_string(z.count)}, {"example", z.example}}));
   out.origin_told = out.origin_told || z.at_origin;
 }
 
@@ -50,11 +46,20 @@ ZeroedRule* fit(ZeroedRule* rules, const glm::dvec3* positions, size_t n, const 
 // New vertices of interior and boundary edges; returns whether step 5 visibly ran (a new vertex of an interior edge
 // of `before` is at none of its edges' midpoints).
 bool edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance, ZeroLoopWeights& out) {
-  ZeroedRule interior[] = {{"weights 3/8 and 1/8 are",
-                            "3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and 1 / 8", "(0, 0, 0)", true},
-                           {"weight 3/8 is", "3 // 8 is 0, an integer division: write 3 / 8", "1/8 (c + d)", false},
-                           {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/8 (a + b)", false}};
-  ZeroedRule boundary[] = {{"weight 1/2 is", "1 // 2 is 0, an integer division: write 1 / 2", "(0, 0, 0)", true}};
+  ZeroedRule interior[] = {
+      {"your edge weights 3/8 and 1/8 are 0 (in Lua 3 // 8 and 1 // 8 are 0, integer divisions: write 3 / 8 and "
+       "1 / 8): {count} of your new vertices, e.g. {example}, are at (0, 0, 0) instead of 3/8 (a + b) + 1/8 (c + d)",
+       true},
+      {"your edge weight 3/8 is 0 (in Lua 3 // 8 is 0, an integer division: write 3 / 8): {count} of your new "
+       "vertices, e.g. {example}, are at 1/8 (c + d) instead of 3/8 (a + b) + 1/8 (c + d)",
+       false},
+      {"your edge weight 1/8 is 0 (in Lua 1 // 8 is 0, an integer division: write 1 / 8): {count} of your new "
+       "vertices, e.g. {example}, are at 3/8 (a + b) instead of 3/8 (a + b) + 1/8 (c + d)",
+       false}};
+  ZeroedRule boundary[] = {
+      {"your boundary edge weight 1/2 is 0 (in Lua 1 // 2 is 0, an integer division: write 1 / 2): {count} of your "
+       "new vertices on boundary edges, e.g. {example}, are at (0, 0, 0) instead of the midpoint (a + b) / 2",
+       true}};
   bool moved = false;
   const uint32_t old_capacity = before.vertex_capacity();
   for (VertexId w : yours.vertices()) {
@@ -68,7 +73,9 @@ bool edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double
         if (!h.valid()) continue;
         const glm::dvec3 a = before.position(old[i]), b = before.position(old[j]);
         at_midpoint = at_midpoint || close(q, 0.5 * (a + b), tolerance);
-        const std::string where = format_id(w) + " on the edge " + format_id(old[i]) + "-" + format_id(old[j]);
+        const std::string where =
+            tr_format("{vertex} on the edge {edge}",
+                      {{"vertex", format_id(w)}, {"edge", format_id(old[i]) + "-" + format_id(old[j])}});
         if (before.face(h).is_boundary() || before.face(before.twin(h)).is_boundary()) {
           const glm::dvec3 zeroed[] = {glm::dvec3(0.0)};
           if (close(q, 0.5 * (a + b), tolerance)) continue;
@@ -91,17 +98,24 @@ bool edge_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double
     }
     moved = moved || (interior_edge && !at_midpoint);
   }
-  for (const ZeroedRule& z : interior) tell("edge", z, "new vertices", kInteriorEdgeRule, out);
-  tell("boundary edge", boundary[0], "new vertices on boundary edges", "the midpoint (a + b) / 2", out);
+  for (const ZeroedRule& z : interior) tell(z, out);
+  tell(boundary[0], out);
   return moved;
 }
 
 void boundary_vertex_messages(const HalfedgeMesh& before, const HalfedgeMesh& yours, double tolerance,
                               ZeroLoopWeights& out) {
-  ZeroedRule rules[] = {{"weights 3/4 and 1/8 are", "3 // 4 and 1 // 8 are 0, integer divisions: write 3 / 4 and 1 / 8",
-                         "(0, 0, 0)", true},
-                        {"weight 3/4 is", "3 // 4 is 0, an integer division: write 3 / 4", "1/8 (a + b)", false},
-                        {"weight 1/8 is", "1 // 8 is 0, an integer division: write 1 / 8", "3/4 p", false}};
+  ZeroedRule rules[] = {
+      {"your boundary vertex weights 3/4 and 1/8 are 0 (in Lua 3 // 4 and 1 // 8 are 0, integer divisions: write "
+       "3 / 4 and 1 / 8): {count} of your boundary vertices, e.g. {example}, are at (0, 0, 0) instead of 3/4 p + "
+       "1/8 (a + b)",
+       true},
+      {"your boundary vertex weight 3/4 is 0 (in Lua 3 // 4 is 0, an integer division: write 3 / 4): {count} of your "
+       "boundary vertices, e.g. {example}, are at 1/8 (a + b) instead of 3/4 p + 1/8 (a + b)",
+       false},
+      {"your boundary vertex weight 1/8 is 0 (in Lua 1 // 8 is 0, an integer division: write 1 / 8): {count} of your "
+       "boundary vertices, e.g. {example}, are at 3/4 p instead of 3/4 p + 1/8 (a + b)",
+       false}};
   for (VertexId v : before.vertices()) {
     if (!yours.alive(v)) continue;
     const VertexRing ring = vertex_ring(before, v);
@@ -112,7 +126,7 @@ void boundary_vertex_messages(const HalfedgeMesh& before, const HalfedgeMesh& yo
     const glm::dvec3 zeroed[] = {glm::dvec3(0.0), 0.125 * rim, 0.75 * p};
     if (ZeroedRule* z = fit(rules, zeroed, 3, q, tolerance)) z->add(format_id(v));
   }
-  for (const ZeroedRule& z : rules) tell("boundary vertex", z, "boundary vertices", "3/4 p + 1/8 (a + b)", out);
+  for (const ZeroedRule& z : rules) tell(z, out);
 }
 
 // Interior original vertices left at p, by branch of u: [0] degree 3 (u = 3/16), [1] the others (u = 3 / (8 n)).
@@ -134,16 +148,30 @@ void interior_vertex_message(const HalfedgeMesh& before, const HalfedgeMesh& you
   const bool one_weight = (stayed[0] == 0 || stayed[0] == total[0]) && (stayed[1] == 0 || stayed[1] == total[1]);
   if (stayed[0] + stayed[1] == 0 || !one_weight) return;
   const bool both = stayed[0] > 0 && stayed[1] > 0;
-  const std::string which = both ? "" : stayed[0] > 0 ? " for degree 3" : " for degrees other than 3";
-  const std::string lua = both            ? "3 // 16 and 3 // (8 * n) are 0, integer divisions: write 3 / 16 and "
-                                            "3 / (8 * n)"
-                          : stayed[0] > 0 ? "3 // 16 is 0, an integer division: write 3 / 16"
-                                          : "3 // (8 * n) is 0, an integer division: write 3 / (8 * n)";
-  out.messages.push_back("your weight u is 0" + which + " (in Lua " + lua + "): " +
-                         std::to_string(stayed[0] + stayed[1]) + " of the " + std::to_string(total[0] + total[1]) +
-                         " original vertices kept their old positions while your new vertices moved; an original "
-                         "vertex moves to (1 - n u) p + u (sum of the neighbours), u = 3/16 for degree 3, else "
-                         "3 / (8 n) (if your u is not 0, step 5 must move the original vertices too)");
+  const MessageParts parts = {{"count", std::to_string(stayed[0] + stayed[1])},
+                              {"total", std::to_string(total[0] + total[1])}};
+  if (both) {
+    out.messages.push_back(tr_format(
+        "your weight u is 0 (in Lua 3 // 16 and 3 // (8 * n) are 0, integer divisions: write 3 / 16 and 3 / (8 * n)): "
+        "{count} of the {total} original vertices kept their old positions while your new vertices moved; an "
+        "original vertex moves to (1 - n u) p + u (sum of the neighbours), u = 3/16 for degree 3, else 3 / (8 n) (if "
+        "your u is not 0, step 5 must move the original vertices too)",
+        parts));
+  } else if (stayed[0] > 0) {
+    out.messages.push_back(tr_format(
+        "your weight u is 0 for degree 3 (in Lua 3 // 16 is 0, an integer division: write 3 / 16): {count} of the "
+        "{total} original vertices kept their old positions while your new vertices moved; an original vertex moves "
+        "to (1 - n u) p + u (sum of the neighbours), u = 3/16 for degree 3, else 3 / (8 n) (if your u is not 0, step "
+        "5 must move the original vertices too)",
+        parts));
+  } else {
+    out.messages.push_back(tr_format(
+        "your weight u is 0 for degrees other than 3 (in Lua 3 // (8 * n) is 0, an integer division: write "
+        "3 / (8 * n)): {count} of the {total} original vertices kept their old positions while your new vertices "
+        "moved; an original vertex moves to (1 - n u) p + u (sum of the neighbours), u = 3/16 for degree 3, else "
+        "3 / (8 n) (if your u is not 0, step 5 must move the original vertices too)",
+        parts));
+  }
   out.originals_unmoved = true;
 }
 

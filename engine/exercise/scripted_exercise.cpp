@@ -10,6 +10,7 @@
 
 #include "core/file_bytes.h"
 #include "core/mesh_compare.h"
+#include "core/translation.h"
 #include "core/validate.h"
 #include "script/lua_args.h"
 #include "script/lua_handles.h"
@@ -310,7 +311,8 @@ ExerciseOutcome ScriptedExercise::run_values_reference(const ExerciseInput& inpu
     out.returned = describe(out.value);
     out.ran = true;
   } catch (const ScriptError& e) {
-    out.fail_with(e, "the exercise's reference failed: ");
+    out.fail_with(e);
+    out.error = tr_format("the exercise's reference failed: {error}", {{"error", out.error}});
   }
   lua_settop(L, 0);
   return out;
@@ -335,11 +337,12 @@ ExerciseOutcome ScriptedExercise::run_reference(const ExerciseInput& input) cons
       out.returned = lua_isnil(L, 1) ? "nil" : "a " + type_name(L, 1);
     }
     if (out.returned == "nil" && out.mesh->same_as(*input.mesh)) {
-      out.refused = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : "the reference leaves the mesh as it is";
+      out.refused = lua_type(L, 2) == LUA_TSTRING ? lua_tostring(L, 2) : tr("the reference leaves the mesh as it is");
     }
     out.ran = true;
   } catch (const ScriptError& e) {
-    out.fail_with(e, "the exercise's reference failed: ");
+    out.fail_with(e);
+    out.error = tr_format("the exercise's reference failed: {error}", {{"error", out.error}});
   }
   lua_settop(L, 0);
   out.validation = validate(*out.mesh);
@@ -371,7 +374,7 @@ std::vector<std::string> ScriptedExercise::diagnose(const ExerciseInput& input, 
       }
     }
   } catch (const ScriptError& e) {
-    out.push_back(std::string("the exercise's diagnose failed: ") + e.what());
+    out.push_back(tr_format("the exercise's diagnose failed: {error}", {{"error", e.what()}}));
   }
   lua_settop(L, 0);
   return out;

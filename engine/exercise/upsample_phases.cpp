@@ -8,6 +8,7 @@
 #include <algorithm>
 #include <map>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -16,14 +17,15 @@ namespace {
 bool is_pointer_write(const RecordedEdit& edit) { return edit.what == EditKind::Set && edit.field != "position"; }
 
 std::string write_text(size_t index, const RecordedEdit& edit) {
-  return "write " + std::to_string(index + 1) + (edit.where.empty() ? "" : " (" + edit.where + ")");
+  const MessageParts parts = {{"number", std::to_string(index + 1)}, {"where", edit.where}};
+  return edit.where.empty() ? tr_format("write {number}", parts) : tr_format("write {number} ({where})", parts);
 }
 
 const char* never_started_reason(UpsamplePhase phase) {
   switch (phase) {
-    case UpsamplePhase::Split: return "no split was recorded";
-    case UpsamplePhase::Flip: return "no flip was recorded";
-    case UpsamplePhase::Commit: return "no vertex was moved";
+    case UpsamplePhase::Split: return tr("no split was recorded");
+    case UpsamplePhase::Flip: return tr("no flip was recorded");
+    case UpsamplePhase::Commit: return tr("no vertex was moved");
     default: return "";
   }
 }
@@ -44,8 +46,9 @@ const char* upsample_phase_name(UpsamplePhase phase) {
 }
 
 std::string upsample_phase_title(UpsamplePhase phase) {
-  if (phase == UpsamplePhase::Other) return upsample_phase_name(phase);
-  return "phase " + std::to_string(int(phase)) + " (" + upsample_phase_name(phase) + ")";
+  if (phase == UpsamplePhase::Other) return tr(upsample_phase_name(phase));
+  return tr_format("phase {number} ({name})",
+                   {{"number", std::to_string(int(phase))}, {"name", tr(upsample_phase_name(phase))}});
 }
 
 UpsamplePhase UpsamplePhases::phase_at(size_t k) const {
@@ -186,10 +189,14 @@ void add_problem(UpsamplePhases& out, std::string line) {
 void check_order(std::span<const RecordedEdit> edits, UpsamplePhase p, UpsamplePhase q, UpsamplePhases& out) {
   const UpsamplePhaseSpan& sp = out.span[size_t(p)];
   const UpsamplePhaseSpan& sq = out.span[size_t(q)];
+  MessageParts parts = {{"later", upsample_phase_title(q)},
+                        {"write", write_text(sq.first, edits[sq.first])},
+                        {"earlier", upsample_phase_title(p)},
+                        {"earlier_write", write_text(sp.first, edits[sp.first])}};
   if (sq.first < sp.first) {
-    add_problem(out, upsample_phase_title(q) + " began at " + write_text(sq.first, edits[sq.first]) + ", before " +
-                         upsample_phase_title(p) + " began at " + write_text(sp.first, edits[sp.first]) +
-                         ": each step must be done for every element before the next step begins");
+    add_problem(out, tr_format("{later} began at {write}, before {earlier} began at {earlier_write}: each step must be "
+                               "done for every element before the next step begins",
+                               parts));
     return;
   }
   size_t late = 0;
@@ -200,10 +207,14 @@ void check_order(std::span<const RecordedEdit> edits, UpsamplePhase p, UpsampleP
     if (!first_late) first_late = i;
   }
   if (late > 0) {
-    add_problem(out, plural(late, "write", "writes") + " of " + upsample_phase_title(p) +
-                         (late == 1 ? " comes" : " come") + " after " + upsample_phase_title(q) + " began at " +
-                         write_text(sq.first, edits[sq.first]) +
-                         " (first: " + write_text(*first_late, edits[*first_late]) + ")");
+    parts.emplace_back("count", std::to_string(late));
+    parts.emplace_back("first", write_text(*first_late, edits[*first_late]));
+    add_problem(out, late == 1 ? tr_format("{count} write of {earlier} comes after {later} began at {write} (first: "
+                                           "{first})",
+                                           parts)
+                               : tr_format("{count} writes of {earlier} come after {later} began at {write} (first: "
+                                           "{first})",
+                                           parts));
   }
 }
 
@@ -212,7 +223,8 @@ void check_order(std::span<const RecordedEdit> edits, UpsamplePhase p, UpsampleP
 void find_problems(std::span<const RecordedEdit> edits, UpsamplePhases& out) {
   for (const UpsamplePhase p : kWritingPhases) {
     if (!out.span[size_t(p)].started) {
-      add_problem(out, upsample_phase_title(p) + " never started: " + never_started_reason(p));
+      add_problem(out, tr_format("{phase} never started: {reason}",
+                                 {{"phase", upsample_phase_title(p)}, {"reason", never_started_reason(p)}}));
     }
   }
   for (const UpsamplePhase p : kWritingPhases) {
@@ -224,8 +236,12 @@ void find_problems(std::span<const RecordedEdit> edits, UpsamplePhases& out) {
   if (out.other_writes > 0) {
     const auto other = std::find(out.phase_of.begin(), out.phase_of.end(), UpsamplePhase::Other);
     const size_t i = size_t(other - out.phase_of.begin());
-    add_problem(out, plural(out.other_writes, "write is", "writes are") + " not part of Loop subdivision (first: " +
-                         write_text(i, edits[i]) + ", " + describe(edits[i]) + ")");
+    const MessageParts parts = {
+        {"count", std::to_string(out.other_writes)}, {"write", write_text(i, edits[i])}, {"edit", describe(edits[i])}};
+    add_problem(out,
+                out.other_writes == 1
+                    ? tr_format("{count} write is not part of Loop subdivision (first: {write}, {edit})", parts)
+                    : tr_format("{count} writes are not part of Loop subdivision (first: {write}, {edit})", parts));
   }
 }
 

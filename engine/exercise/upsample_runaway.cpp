@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <cctype>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/upsample_phases.h"
 #include "script/edit_recorder.h"
@@ -47,23 +48,51 @@ std::string explain_unfinished_upsample(const std::string& error, const Halfedge
   } else if (mine && mine->num_vertices() >= before.num_vertices()) {
     splits = mine->num_vertices() - before.num_vertices();  // one new vertex per split
   }
-  const std::string at = where.empty() ? "" : " at " + where;
   text += text.empty() || text.back() == '.' || text.back() == '?' ? " " : ". ";
+  // The phase is known from the recording: there is one exactly when `edits` is not empty.
+  const MessageParts at = {{"where", where}};
   if (splits > edges) {
-    text += "It was stopped" + (phase.empty() ? std::string() : " in " + phase) + " after " +
-            plural(splits, "split", "splits") + (edits.empty() ? " (one new vertex each)" : "") + "; the mesh had " +
-            plural(edges, "edge", "edges") + " and Loop subdivision splits each of them once: the loop" + at +
-            " splits edges that its own splits made. List the original edges before the first split and split only "
-            "those.";
-  } else if (edits.empty() && (!mine || mine->same_as(before))) {
-    text += "It was stopped before it changed the mesh: a loop" + at +
-            " never ends. Look at what its condition waits for: a `while` whose variables never change, or a walk "
-            "(`repeat ... h = h.twin.next until h == start`) that never comes back to its start.";
+    const MessageParts parts = {
+        {"phase", phase},
+        {"splits", tr_format(splits == 1 ? "{count} split" : "{count} splits", {{"count", std::to_string(splits)}})},
+        {"edges", tr_format(edges == 1 ? "{count} edge" : "{count} edges", {{"count", std::to_string(edges)}})},
+        {"loop", where.empty() ? std::string(tr("the loop")) : tr_format("the loop at {where}", at)}};
+    text += edits.empty()
+                ? tr_format(
+                      "It was stopped after {splits} (one new vertex each); the mesh had {edges} and Loop "
+                      "subdivision splits each of them once: {loop} splits edges that its own splits made. List "
+                      "the original edges before the first split and split only those.",
+                      parts)
+                : tr_format(
+                      "It was stopped in {phase} after {splits}; the mesh had {edges} and Loop subdivision "
+                      "splits each of them once: {loop} splits edges that its own splits made. List the original "
+                      "edges before the first split and split only those.",
+                      parts);
+    return text;
+  }
+  const MessageParts parts = {
+      {"phase", phase},
+      {"splits", tr_format(splits == 1 ? "{count} split" : "{count} splits", {{"count", std::to_string(splits)}})},
+      {"edges", std::to_string(edges)},
+      {"loop", where.empty() ? std::string(tr("a loop")) : tr_format("a loop at {where}", at)}};
+  if (edits.empty() && (!mine || mine->same_as(before))) {
+    text += tr_format(
+        "It was stopped before it changed the mesh: {loop} never ends. Look at what its condition "
+        "waits for: a `while` whose variables never change, or a walk (`repeat ... h = h.twin.next "
+        "until h == start`) that never comes back to its start.",
+        parts);
+  } else if (edits.empty()) {
+    text += tr_format(
+        "It was stopped after {splits} of the mesh's {edges}: {loop} never ends. Look at what its "
+        "condition waits for: a `while` whose variables never change, or a walk (`repeat ... h = "
+        "h.twin.next until h == start`) that never comes back to its start.",
+        parts);
   } else {
-    text += "It was stopped" + (phase.empty() ? std::string() : " in " + phase) + " after " +
-            plural(splits, "split", "splits") + " of the mesh's " + std::to_string(edges) + ": a loop" + at +
-            " never ends. Look at what its condition waits for: a `while` whose variables never change, or a walk "
-            "(`repeat ... h = h.twin.next until h == start`) that never comes back to its start.";
+    text += tr_format(
+        "It was stopped in {phase} after {splits} of the mesh's {edges}: {loop} never ends. Look at "
+        "what its condition waits for: a `while` whose variables never change, or a walk (`repeat ... "
+        "h = h.twin.next until h == start`) that never comes back to its start.",
+        parts);
   }
   return text;
 }

@@ -7,6 +7,7 @@
 
 #include <glm/geometric.hpp>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -40,11 +41,23 @@ Kind items_kind(const ExerciseValue& list) {
 // "3 points", "1 number", "2 lists", "4 values": how many items the list has, in the word for its items.
 std::string count_of(const ExerciseValue& list) {
   const size_t n = list.items.size();
+  const MessageParts count = {{"count", std::to_string(n)}};
   switch (items_kind(list)) {
-    case Kind::Point: return plural(n, "point", "points");
-    case Kind::Number: return plural(n, "number", "numbers");
-    case Kind::List: return plural(n, "list", "lists");
-    default: return plural(n, "value", "values");
+    case Kind::Point: return tr_format(n == 1 ? "{count} point" : "{count} points", count);
+    case Kind::Number: return tr_format(n == 1 ? "{count} number" : "{count} numbers", count);
+    case Kind::List: return tr_format(n == 1 ? "{count} list" : "{count} lists", count);
+    default: return tr_format(n == 1 ? "{count} value" : "{count} values", count);
+  }
+}
+
+// "point 3 of 5": item i (from 0) of a list of m, named by the word for the reference's item (item_word).
+std::string item_place(const ExerciseValue& item, size_t i, size_t m) {
+  const MessageParts parts = {{"number", std::to_string(i + 1)}, {"count", std::to_string(m)}};
+  switch (item.kind) {
+    case Kind::Number: return tr_format("number {number} of {count}", parts);
+    case Kind::Point: return tr_format("point {number} of {count}", parts);
+    case Kind::List: return tr_format("list {number} of {count}", parts);
+    default: return tr_format("value {number} of {count}", parts);
   }
 }
 
@@ -74,10 +87,11 @@ class Comparer {
     }
     if (mine.kind == Kind::List && reference.kind == Kind::List) return compare_lists(mine, reference, where);
     if (mine.kind == Kind::Nil && reference.kind == Kind::Nil) return;
+    const MessageParts parts = {{"where", where}, {"mine", describe(mine)}, {"reference", describe(reference)}};
     if (where.empty()) {
-      add("yours returned " + describe(mine) + ", the reference " + describe(reference));
+      add(tr_format("yours returned {mine}, the reference {reference}", parts));
     } else {
-      add(where + " differs: yours is " + describe(mine) + ", the reference's " + describe(reference));
+      add(tr_format("{where} differs: yours is {mine}, the reference's {reference}", parts));
     }
   }
 
@@ -86,26 +100,33 @@ class Comparer {
     const size_t n = mine.items.size(), m = reference.items.size();
     if (n != m) {
       out_.identical = false;
-      const std::string yours = count_of(mine);
       // "the reference 3" when both lists hold the same kind of item, else "the reference 3 points".
       const bool same_kind = n > 0 && m > 0 && items_kind(mine) == items_kind(reference);
-      const std::string theirs = same_kind ? std::to_string(m) : count_of(reference);
-      if (where.empty()) add("yours returned " + yours + ", the reference " + theirs);
-      else add(where + ": yours has " + yours + ", the reference's " + theirs);
+      const MessageParts parts = {
+          {"where", where}, {"yours", count_of(mine)}, {"count", std::to_string(m)}, {"theirs", count_of(reference)}};
+      if (where.empty()) {
+        add(same_kind ? tr_format("yours returned {yours}, the reference {count}", parts)
+                      : tr_format("yours returned {yours}, the reference {theirs}", parts));
+      } else {
+        add(same_kind ? tr_format("{where}: yours has {yours}, the reference's {count}", parts)
+                      : tr_format("{where}: yours has {yours}, the reference's {theirs}", parts));
+      }
     }
     for (size_t i = 0; i < std::min(n, m); ++i) {
-      const std::string item =
-          std::string(item_word(reference.items[i])) + " " + std::to_string(i + 1) + " of " + std::to_string(m);
-      compare(mine.items[i], reference.items[i], where.empty() ? item : where + ", " + item);
+      const std::string item = item_place(reference.items[i], i, m);
+      compare(mine.items[i], reference.items[i],
+              where.empty() ? item : tr_format("{where}, {item}", {{"where", where}, {"item", item}}));
     }
   }
 
   void differs(const std::string& where, const std::string& mine, const std::string& reference, double d) {
     out_.identical = false;
+    const MessageParts parts = {
+        {"where", where}, {"mine", mine}, {"reference", reference}, {"distance", format_number(d)}};
     if (where.empty()) {
-      add("yours returned " + mine + ", the reference " + reference + " (" + format_number(d) + " apart)");
+      add(tr_format("yours returned {mine}, the reference {reference} ({distance} apart)", parts));
     } else {
-      add(where + " differs: yours " + mine + ", the reference's " + reference);
+      add(tr_format("{where} differs: yours {mine}, the reference's {reference}", parts));
     }
   }
 

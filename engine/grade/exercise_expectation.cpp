@@ -7,6 +7,7 @@
 
 #include <lua.hpp>
 
+#include "core/translation.h"
 #include "exercise/exercise_registry.h"
 #include "exercise/exercises.h"
 #include "exercise/scripted_exercise.h"
@@ -167,8 +168,8 @@ int expect_exercise(lua_State* L) {
   if (mine.mesh) mine.touched = recorder.touches_of(mine.mesh.get());
   const std::shared_ptr<const HalfedgeMesh> yours = mine.mesh;  // compare() takes the outcome
   const ExerciseReport report = compare(*exercise, input, std::move(mine), run_reference(*exercise, input));
-  const std::string detail =
-      report.equal ? "same as the reference" : first_items(report.differences, report.total_differences);
+  const std::string detail = report.equal ? std::string(tr("same as the reference"))
+                                          : first_items(report.differences, report.total_differences);
   // The headline: what was checked and the first difference, the likely mistake (the Markdown folds the rest).
   const size_t headline =
       report.equal || report.differences.empty() ? 0 : join_message(message, report.differences.front()).size();

@@ -9,6 +9,7 @@
 #include <lua.hpp>
 
 #include "core/mesh_compare.h"
+#include "core/translation.h"
 #include "core/validate.h"
 #include "core/value_format.h"
 #include "grade/exercise_expectation.h"
@@ -68,8 +69,6 @@ std::string quote(const char* s, size_t len) {
   return out + "\"";
 }
 
-std::string count_items(lua_Integer n) { return std::to_string(n) + (n == 1 ? " item" : " items"); }
-
 std::string describe_number(lua_State* L, int index) {
   if (lua_isinteger(L, index)) return std::to_string(lua_tointeger(L, index));
   return format_number(lua_tonumber(L, index));
@@ -91,8 +90,12 @@ std::string join_message(const std::string& message, const std::string& detail) 
 
 std::string first_items(const std::vector<std::string>& items, size_t total) {
   std::string out;
-  for (size_t i = 0; i < items.size() && i < kMaxListed; ++i) out += (i ? "; " : "") + items[i];
-  if (total > kMaxListed) out += "; ... (" + std::to_string(total) + " in all)";
+  for (size_t i = 0; i < items.size() && i < kMaxListed; ++i) {
+    out = i == 0 ? items[i] : tr_format("{list}; {item}", {{"list", out}, {"item", items[i]}});
+  }
+  if (total > kMaxListed) {
+    out = tr_format("{list}; ... ({count} in all)", {{"list", out}, {"count", std::to_string(total)}});
+  }
   return out;
 }
 
@@ -133,10 +136,12 @@ std::string describe_value(lua_State* L, int index) {
     case LUA_TUSERDATA: {
       if (const Handle* h = test_handle(L, index)) return h->name();
       if (auto mesh = to_mesh(L, index)) {
-        return "a mesh (" + std::to_string(mesh->num_vertices()) + " vertices, " + std::to_string(mesh->num_edges()) +
-               " edges, " + std::to_string(mesh->num_faces()) + " faces)";
+        return tr_format("a mesh ({vertices} vertices, {edges} edges, {faces} faces)",
+                         {{"vertices", std::to_string(mesh->num_vertices())},
+                          {"edges", std::to_string(mesh->num_edges())},
+                          {"faces", std::to_string(mesh->num_faces())}});
       }
-      return "a userdata value";
+      return tr("a userdata value");
     }
     case LUA_TTABLE: {
       if (auto p = raw_point(L, index)) return format_position(*p);
@@ -145,7 +150,7 @@ std::string describe_value(lua_State* L, int index) {
         lua_pushnil(L);
         const bool empty = lua_next(L, index) == 0;
         if (!empty) lua_pop(L, 2);
-        return empty ? "{}" : "a table";
+        return empty ? "{}" : tr("a table");
       }
       std::string out = "{";
       const lua_Integer shown = std::min<lua_Integer>(n, 6);
@@ -170,7 +175,15 @@ std::optional<std::string> difference(lua_State* L, int a, int b, const std::str
 
 // "expected X, got Y" for actual (a) and expected (b).
 std::string mismatch(lua_State* L, int a, int b, const std::string& path) {
-  return place(path) + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
+  return place(path) + tr_format("expected {expected}, got {actual}",
+                                 {{"expected", describe_value(L, b)}, {"actual", describe_value(L, a)}});
+}
+
+// "expected 3 items, got 2": a list's length, `n` expected, `got` there.
+std::string length_mismatch(lua_Integer n, lua_Integer got) {
+  const MessageParts parts = {{"count", std::to_string(n)}, {"actual", std::to_string(got)}};
+  return n == 1 ? tr_format("expected {count} item, got {actual}", parts)
+                : tr_format("expected {count} items, got {actual}", parts);
 }
 
 // Handles are equal when they name the same element of the same mesh, meshes when they are the same mesh.
@@ -184,7 +197,7 @@ std::optional<std::string> userdata_difference(lua_State* L, int a, int b, const
   auto ma = to_mesh(L, a);
   auto mb = to_mesh(L, b);
   if (ma || mb) {
-    if (ma != mb) return place(path) + "expected the same mesh, got another one";
+    if (ma != mb) return place(path) + tr("expected the same mesh, got another one");
     return std::nullopt;
   }
   if (!lua_rawequal(L, a, b)) return mismatch(L, a, b, path);
@@ -210,7 +223,7 @@ std::optional<std::string> table_difference(lua_State* L, int a, int b, const st
   if (lua_rawequal(L, a, b)) return std::nullopt;
   const lua_Integer na = static_cast<lua_Integer>(lua_rawlen(L, a));
   const lua_Integer nb = static_cast<lua_Integer>(lua_rawlen(L, b));
-  if (na != nb && nb > 0) return place(path) + "expected " + count_items(nb) + ", got " + std::to_string(na);
+  if (na != nb && nb > 0) return place(path) + length_mismatch(nb, na);
   luaL_checkstack(L, 6, "comparing tables");
   lua_pushnil(L);
   while (lua_next(L, b) != 0) {
@@ -231,7 +244,7 @@ std::optional<std::string> table_difference(lua_State* L, int a, int b, const st
     if (missing) {
       const std::string key = describe_value(L, -2);
       lua_pop(L, 2);
-      return place(path) + "unexpected key " + key;
+      return place(path) + tr_format("unexpected key {key}", {{"key", key}});
     }
     lua_pop(L, 1);
   }
@@ -245,7 +258,7 @@ std::optional<std::string> difference(lua_State* L, int a, int b, const std::str
   const int ta = lua_type(L, a);
   const int tb = lua_type(L, b);
   if (ta != tb) return mismatch(L, a, b, path);
-  if (depth > 32) return place(path) + "tables nested too deep to compare";
+  if (depth > 32) return place(path) + tr("tables nested too deep to compare");
   switch (ta) {
     case LUA_TNIL: return std::nullopt;
     case LUA_TUSERDATA: return userdata_difference(L, a, b, path);
@@ -262,34 +275,44 @@ std::optional<std::string> near_difference(lua_State* L, int a, int b, double to
   b = lua_absindex(L, b);
   const std::string where = place(path);
   std::ostringstream tol;
-  tol << " (tolerance " << tolerance << ")";
+  tol << tolerance;
   if (lua_type(L, b) == LUA_TNUMBER) {
-    if (lua_type(L, a) != LUA_TNUMBER)
-      return where + "expected " + describe_value(L, b) + ", got " + describe_value(L, a);
+    if (lua_type(L, a) != LUA_TNUMBER) return mismatch(L, a, b, path);
     const double x = lua_tonumber(L, a);
     const double y = lua_tonumber(L, b);
     if (!(std::abs(x - y) <= tolerance)) {
-      return where + "expected " + describe_value(L, b) + ", got " + describe_value(L, a) + ", off by " +
-             format_number(std::abs(x - y)) + tol.str();
+      return where + tr_format("expected {expected}, got {actual}, off by {distance} (tolerance {tolerance})",
+                               {{"expected", describe_value(L, b)},
+                                {"actual", describe_value(L, a)},
+                                {"distance", format_number(std::abs(x - y))},
+                                {"tolerance", tol.str()}});
     }
     return std::nullopt;
   }
   if (auto pb = raw_point(L, b)) {
     auto pa = raw_point(L, a);
-    if (!pa) return where + "expected the point " + format_position(*pb) + ", got " + describe_value(L, a);
+    if (!pa) {
+      return where + tr_format("expected the point {expected}, got {actual}",
+                               {{"expected", format_position(*pb)}, {"actual", describe_value(L, a)}});
+    }
     const double d = glm::length(*pa - *pb);
     if (!(d <= tolerance)) {
-      return where + "expected " + format_position(*pb) + ", got " + format_position(*pa) + ", " + format_number(d) +
-             " away" + tol.str();
+      return where + tr_format("expected {expected}, got {actual}, {distance} away (tolerance {tolerance})",
+                               {{"expected", format_position(*pb)},
+                                {"actual", format_position(*pa)},
+                                {"distance", format_number(d)},
+                                {"tolerance", tol.str()}});
     }
     return std::nullopt;
   }
   if (is_list(L, b) && depth <= 32) {
-    if (!is_list(L, a))
-      return where + "expected a list of " + std::to_string(lua_rawlen(L, b)) + ", got " + describe_value(L, a);
+    if (!is_list(L, a)) {
+      return where + tr_format("expected a list of {count}, got {actual}",
+                               {{"count", std::to_string(lua_rawlen(L, b))}, {"actual", describe_value(L, a)}});
+    }
     const lua_Integer na = static_cast<lua_Integer>(lua_rawlen(L, a));
     const lua_Integer nb = static_cast<lua_Integer>(lua_rawlen(L, b));
-    if (na != nb) return where + "expected " + count_items(nb) + ", got " + std::to_string(na);
+    if (na != nb) return where + length_mismatch(nb, na);
     luaL_checkstack(L, 4, "comparing lists");
     for (lua_Integer i = 1; i <= nb; ++i) {
       lua_rawgeti(L, a, i);
@@ -303,12 +326,12 @@ std::optional<std::string> near_difference(lua_State* L, int a, int b, double to
   return difference(L, a, b, path, depth);
 }
 
-std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::string& message, const char* role,
+// `expected` is the message's template: "expected a mesh, got {actual}".
+std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::string& message, const char* expected,
                                            bool& failed) {
   auto mesh = to_mesh(L, index);
   if (!mesh) {
-    recorder(L).record(false,
-                       join(message, std::string("expected ") + role + " mesh, got " + describe_value(L, index)));
+    recorder(L).record(false, join(message, tr_format(expected, {{"actual", describe_value(L, index)}})));
     failed = true;
   }
   return mesh;
@@ -317,9 +340,10 @@ std::shared_ptr<HalfedgeMesh> mesh_or_fail(lua_State* L, int index, const std::s
 // ---- the functions --------------------------------------------------------------------------------------
 
 int expect_truthy(lua_State* L) {
-  return record(
-      L, lua_toboolean(L, 1),
-      join(message_at(L, 2), lua_toboolean(L, 1) ? "" : "expected a true value, got " + describe_value(L, 1)));
+  return record(L, lua_toboolean(L, 1),
+                join(message_at(L, 2), lua_toboolean(L, 1) ? ""
+                                                           : tr_format("expected a true value, got {actual}",
+                                                                       {{"actual", describe_value(L, 1)}})));
 }
 
 int expect_call(lua_State* L) {  // expect(value, message): argument 1 is the table itself
@@ -329,12 +353,16 @@ int expect_call(lua_State* L) {  // expect(value, message): argument 1 is the ta
 
 int expect_falsy(lua_State* L) {
   const bool ok = !lua_toboolean(L, 1);
-  return record(L, ok, join(message_at(L, 2), ok ? "" : "expected nil or false, got " + describe_value(L, 1)));
+  return record(L, ok,
+                join(message_at(L, 2),
+                     ok ? "" : tr_format("expected nil or false, got {actual}", {{"actual", describe_value(L, 1)}})));
 }
 
 int expect_is_nil(lua_State* L) {
   const bool ok = lua_isnoneornil(L, 1);
-  return record(L, ok, join(message_at(L, 2), ok ? "" : "expected nil, got " + describe_value(L, 1)));
+  return record(
+      L, ok,
+      join(message_at(L, 2), ok ? "" : tr_format("expected nil, got {actual}", {{"actual", describe_value(L, 1)}})));
 }
 
 int expect_equal(lua_State* L) {
@@ -355,13 +383,15 @@ int expect_near(lua_State* L) {
 int expect_valid(lua_State* L) {
   const std::string message = message_at(L, 2);
   bool failed = false;
-  auto mesh = mesh_or_fail(L, 1, message, "a", failed);
+  auto mesh = mesh_or_fail(L, 1, message, "expected a mesh, got {actual}", failed);
   if (failed) return lua_pushboolean(L, 0), 1;
   const ValidationReport report = validate(*mesh, 20);
-  if (report.ok()) return record(L, true, join(message, "the mesh is valid"));
+  if (report.ok()) return record(L, true, join(message, tr("the mesh is valid")));
   std::vector<std::string> items;
   for (const auto& v : report.violations) items.push_back(format_id(v.element) + ": " + v.message);
-  return record(L, false, join(message, "the mesh is not valid: " + first_items(items, report.total)));
+  return record(
+      L, false,
+      join(message, tr_format("the mesh is not valid: {problems}", {{"problems", first_items(items, report.total)}})));
 }
 
 template <bool Exact>
@@ -370,24 +400,25 @@ int expect_compare(lua_State* L) {
   const double tolerance = lua_isnil(L, 3) ? 1e-9 : luaL_checknumber(L, 3);
   const std::string message = message_at(L, 4);
   bool failed = false;
-  auto yours = mesh_or_fail(L, 1, message, "your", failed);
+  auto yours = mesh_or_fail(L, 1, message, "expected your mesh, got {actual}", failed);
   if (failed) return lua_pushboolean(L, 0), 1;
-  auto reference = mesh_or_fail(L, 2, message, "the reference", failed);
+  auto reference = mesh_or_fail(L, 2, message, "expected the reference mesh, got {actual}", failed);
   if (failed) return lua_pushboolean(L, 0), 1;
   CompareOptions options;
   options.position_tolerance = tolerance;
   options.max_differences = kMaxListed;
   const MeshComparison c =
       Exact ? compare_meshes_exact(*yours, *reference, options) : compare_meshes(*yours, *reference, options);
-  if (c.equal)
-    return record(L, true, join(message, Exact ? "same pointers as the reference" : "same mesh as the reference"));
+  if (c.equal) {
+    return record(L, true, join(message, tr(Exact ? "same pointers as the reference" : "same mesh as the reference")));
+  }
   return record(L, false, join(message, first_items(c.differences, c.total_differences)));
 }
 
 int expect_counts(lua_State* L) {
   const std::string message = message_at(L, 3);
   bool failed = false;
-  auto mesh = mesh_or_fail(L, 1, message, "a", failed);
+  auto mesh = mesh_or_fail(L, 1, message, "expected a mesh, got {actual}", failed);
   if (failed) return lua_pushboolean(L, 0), 1;
   luaL_checktype(L, 2, LUA_TTABLE);
   struct Count {
@@ -404,14 +435,16 @@ int expect_counts(lua_State* L) {
     if (lua_getfield(L, 2, c.name) != LUA_TNIL) {
       const lua_Integer want = luaL_checkinteger(L, -1);
       if (want != lua_Integer(c.value)) {
-        wrong.push_back(std::string(c.name) + ": expected " + std::to_string(want) + ", got " +
-                        std::to_string(c.value));
+        wrong.push_back(
+            tr_format("{name}: expected {expected}, got {actual}",
+                      {{"name", c.name}, {"expected", std::to_string(want)}, {"actual", std::to_string(c.value)}}));
       }
     }
     lua_pop(L, 1);
   }
-  return record(L, wrong.empty(),
-                join(message, wrong.empty() ? "counts as expected" : first_items(wrong, wrong.size())));
+  return record(
+      L, wrong.empty(),
+      join(message, wrong.empty() ? std::string(tr("counts as expected")) : first_items(wrong, wrong.size())));
 }
 
 int expect_pass(lua_State* L) { return record(L, true, message_at(L, 1)); }

@@ -5,6 +5,7 @@
 #include <cctype>
 #include <sstream>
 
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -59,9 +60,17 @@ std::string fenced(const std::string& text) {
   return fence + "text\n" + text + (text.empty() || text.back() == '\n' ? "" : "\n") + fence + "\n";
 }
 
-// "**Timed out:** the rest": the label before the first ": " in bold.
+// The full-width colon and semicolon a Chinese text puts where English has ": " and "; " (UTF-8).
+constexpr const char* kWideColon = "\xEF\xBC\x9A";
+constexpr const char* kWideSemicolon = "\xEF\xBC\x9B";
+
+// "**Timed out:** the rest": the label before the first ": " (or a translation's full-width colon) in bold.
 std::string bold_label(const std::string& line) {
-  const size_t colon = line.find(": ");
+  const size_t colon = line.find(": "), wide = line.find(kWideColon);
+  if (wide < colon) {
+    const size_t after = wide + std::char_traits<char>::length(kWideColon);
+    return "**" + markdown_inline(line.substr(0, after)) + "** " + markdown_inline(line.substr(after));
+  }
   if (colon == std::string::npos) return markdown_inline(line);
   return "**" + markdown_inline(line.substr(0, colon + 1)) + "** " + markdown_inline(line.substr(colon + 2));
 }
@@ -72,10 +81,19 @@ std::string failure_markdown(const CheckResult& check) {
   std::string out = "- " + markdown_inline(m.substr(0, head)) + "\n";
   std::string rest = m.substr(head);
   if (rest.rfind("; ", 0) == 0) rest.erase(0, 2);
+  else if (rest.rfind(kWideSemicolon, 0) == 0) rest.erase(0, std::char_traits<char>::length(kWideSemicolon));
   if (!rest.empty()) {
-    out += "\n  <details><summary>the other differences</summary>\n\n  " + markdown_inline(rest) + "\n\n  </details>\n";
+    out += "\n  <details><summary>" + std::string(tr("the other differences")) + "</summary>\n\n  " +
+           markdown_inline(rest) + "\n\n  </details>\n";
   }
   return out;
+}
+
+// "... and 3 more failed checks".
+std::string more_failed_checks(size_t n) {
+  const MessageParts parts = {{"count", std::to_string(n)}};
+  return n == 1 ? tr_format("... and {count} more failed check", parts)
+                : tr_format("... and {count} more failed checks", parts);
 }
 
 }  // namespace
@@ -84,12 +102,13 @@ std::string feedback_text(const TestFeedback& f) {
   std::ostringstream out;
   if (!f.stopped.empty()) out << f.stopped << "\n";
   if (!f.hint.empty()) out << f.hint << "\n";
-  for (const CheckResult& check : f.failures) out << "FAILED: " << check.message << "\n";
-  if (f.more_failures > 0)
-    out << "... and " << plural(f.more_failures, "more failed check", "more failed checks") << "\n";
+  for (const CheckResult& check : f.failures) {
+    out << tr_format("FAILED: {message}", {{"message", check.message}}) << "\n";
+  }
+  if (f.more_failures > 0) out << more_failed_checks(f.more_failures) << "\n";
   if (!f.tally.empty()) out << f.tally << "\n";
   if (!f.extra_credit.empty()) out << f.extra_credit << "\n";
-  if (!f.printed.empty()) out << "\nYour code printed:\n" << f.printed;
+  if (!f.printed.empty()) out << "\n" << tr("Your code printed:") << "\n" << f.printed;
   return out.str();
 }
 
@@ -98,17 +117,14 @@ std::string feedback_markdown(const TestFeedback& f) {
   if (!f.stopped.empty()) out << bold_label(f.stopped) << "\n\n";
   if (!f.hint.empty()) out << markdown_inline(f.hint) << "\n\n";
   if (!f.failures.empty()) {
-    out << "**Failed:**\n\n";
+    out << "**" << tr("Failed:") << "**\n\n";
     for (const CheckResult& check : f.failures) out << failure_markdown(check);
-    if (f.more_failures > 0) {
-      out << "- " << markdown_inline("... and " + plural(f.more_failures, "more failed check", "more failed checks"))
-          << "\n";
-    }
+    if (f.more_failures > 0) out << "- " << markdown_inline(more_failed_checks(f.more_failures)) << "\n";
     out << "\n";
   }
   if (!f.tally.empty()) out << markdown_inline(f.tally) << "\n\n";
   if (!f.extra_credit.empty()) out << markdown_inline(f.extra_credit) << "\n\n";
-  if (!f.printed.empty()) out << "Your code printed:\n\n" << fenced(f.printed);
+  if (!f.printed.empty()) out << tr("Your code printed:") << "\n\n" << fenced(f.printed);
   std::string text = out.str();
   while (text.size() >= 2 && text.compare(text.size() - 2, 2, "\n\n") == 0) text.pop_back();
   return text;
