@@ -16,6 +16,7 @@
 
 #include "core/mesh_ops.h"
 #include "core/mesh_ops_support.h"
+#include "core/translation.h"
 
 namespace meshedit {
 
@@ -29,9 +30,15 @@ struct EndpointFan {
   FaceId face_with_cd;     // a face other than f0, f1 with both c and d as corners
 };
 
-// Walks the fan of vertex(start) and the corners of each face in it, both bounded; refuses if either breaks.
+// "collapsing e3 needs the faces around it": the end of a refusal of read_fan's (made only when it refuses).
+std::string needs_faces(EdgeId e) {
+  return tr_format("collapsing {edge} needs the faces around it", {{"edge", format_id(e)}});
+}
+
+// Walks the fan of vertex(start) and the corners of each face in it, both bounded; refuses if either breaks (for
+// the collapse of e).
 Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1, VertexId other, VertexId c, VertexId d,
-               const std::string& needed_for, EndpointFan& out) {
+               EdgeId e, EndpointFan& out) {
   FaceId broken_face;
   const bool closed = ops_detail::walk_fan(mesh, start, [&](HalfedgeId o) {
     out.neighbours.push_back(mesh.vertex(mesh.twin(o)));
@@ -52,10 +59,11 @@ Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1,
     if (has_other && !out.face_with_other.valid()) out.face_with_other = f;
     if (has_c && has_d && !out.face_with_cd.valid()) out.face_with_cd = f;
   });
-  if (!closed) return ops_detail::broken_fan(mesh.vertex(start), start, needed_for);
+  if (!closed) return ops_detail::broken_fan(mesh.vertex(start), start, needs_faces(e));
   if (broken_face.valid()) {
-    return Check::no("the next-cycle of " + format_id(broken_face) + " (beside " + format_id(mesh.vertex(start)) +
-                     ") does not close; " + needed_for);
+    return Check::no(tr_format(
+        "the next-cycle of {face} (beside {vertex}) does not close; {needed_for}",
+        {{"face", format_id(broken_face)}, {"vertex", format_id(mesh.vertex(start))}, {"needed_for", needs_faces(e)}}));
   }
   std::sort(out.neighbours.begin(), out.neighbours.end());
   return Check::yes();
@@ -67,8 +75,11 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
   ops_detail::EdgeHalves halves;
   if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
   if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
-    return Check::no(format_id(e) + " has boundary loops on both sides (" + format_id(mesh.face(halves.h0)) + " and " +
-                     format_id(mesh.face(halves.h1)) + "); there is no face to collapse");
+    return Check::no(
+        tr_format("{edge} has boundary loops on both sides ({loop} and {other}); there is no face to collapse",
+                  {{"edge", format_id(e)},
+                   {"loop", format_id(mesh.face(halves.h0))},
+                   {"other", format_id(mesh.face(halves.h1))}}));
   }
   const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
   const bool interior = !mesh.face(h1).is_boundary();
@@ -86,43 +97,59 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
   const VertexId c = mesh.vertex(h3);
   const VertexId d = interior ? mesh.vertex(mesh.next(mesh.next(h1))) : VertexId();
   if (interior && c == d) {
-    return Check::no(format_id(f0) + " and " + format_id(f1) + " have the same corners; collapsing " + format_id(e) +
-                     " would leave nothing between them");
+    return Check::no(
+        tr_format("{face} and {other} have the same corners; collapsing {edge} would leave nothing between them",
+                  {{"face", format_id(f0)}, {"other", format_id(f1)}, {"edge", format_id(e)}}));
   }
 
-  const std::string needs = "collapsing " + format_id(e) + " needs the faces around it";
   EndpointFan fan_a, fan_b;
-  if (Check fan = read_fan(mesh, h0, f0, f1, b, c, d, needs, fan_a); !fan) return fan;
-  if (Check fan = read_fan(mesh, h1, f0, f1, a, c, d, needs, fan_b); !fan) return fan;
+  if (Check fan = read_fan(mesh, h0, f0, f1, b, c, d, e, fan_a); !fan) return fan;
+  if (Check fan = read_fan(mesh, h1, f0, f1, a, c, d, e, fan_b); !fan) return fan;
 
   if (interior && fan_a.on_boundary && fan_b.on_boundary) {
-    return Check::no(format_id(a) + " and " + format_id(b) + " are both on the boundary but " + format_id(e) +
-                     " is not; collapsing it would pinch the surface at the merged vertex");
+    return Check::no(tr_format(
+        "{a} and {b} are both on the boundary but {edge} is not; collapsing it would pinch the surface at the merged "
+        "vertex",
+        {{"a", format_id(a)}, {"b", format_id(b)}, {"edge", format_id(e)}}));
   }
   std::vector<VertexId> common;
   std::set_intersection(fan_a.neighbours.begin(), fan_a.neighbours.end(), fan_b.neighbours.begin(),
                         fan_b.neighbours.end(), std::back_inserter(common));
   for (VertexId v : common) {
     if (v == c || v == d) continue;
-    const std::string opposite = interior ? format_id(c) + " and " + format_id(d) : format_id(c);
-    return Check::no(format_id(a) + " and " + format_id(b) + " are both joined to " + format_id(v) + " (besides " +
-                     opposite + "); collapsing " + format_id(e) + " would join the merged vertex to " + format_id(v) +
-                     " twice");
+    const MessageParts parts = {{"a", format_id(a)}, {"b", format_id(b)}, {"vertex", format_id(v)},
+                                {"c", format_id(c)}, {"d", format_id(d)}, {"edge", format_id(e)}};
+    return Check::no(interior ? tr_format("{a} and {b} are both joined to {vertex} (besides {c} and {d}); collapsing "
+                                          "{edge} would join the merged vertex to {vertex} twice",
+                                          parts)
+                              : tr_format("{a} and {b} are both joined to {vertex} (besides {c}); collapsing {edge} "
+                                          "would join the merged vertex to {vertex} twice",
+                                          parts));
   }
   for (const EndpointFan* fan : {&fan_a, &fan_b}) {
     if (fan->face_with_other.valid()) {
-      return Check::no(format_id(fan->face_with_other) + " has both " + format_id(a) + " and " + format_id(b) +
-                       " as corners; collapsing " + format_id(e) + " would make it use the merged vertex twice");
+      return Check::no(tr_format(
+          "{face} has both {a} and {b} as corners; collapsing {edge} would make it use the merged vertex twice",
+          {{"face", format_id(fan->face_with_other)},
+           {"a", format_id(a)},
+           {"b", format_id(b)},
+           {"edge", format_id(e)}}));
     }
   }
   if (interior && fan_a.face_with_cd.valid() && fan_b.face_with_cd.valid()) {
-    return Check::no("collapsing " + format_id(e) + " would fold " + format_id(fan_a.face_with_cd) + " onto " +
-                     format_id(fan_b.face_with_cd) + " (both would join the merged vertex, " + format_id(c) + " and " +
-                     format_id(d) + "): a closed surface needs at least 4 vertices");
+    return Check::no(tr_format(
+        "collapsing {edge} would fold {face} onto {other} (both would join the merged vertex, {c} and {d}): a closed "
+        "surface needs at least 4 vertices",
+        {{"edge", format_id(e)},
+         {"face", format_id(fan_a.face_with_cd)},
+         {"other", format_id(fan_b.face_with_cd)},
+         {"c", format_id(c)},
+         {"d", format_id(d)}}));
   }
   if (!interior && mesh.face(mesh.twin(h2)).is_boundary() && mesh.face(mesh.twin(h3)).is_boundary()) {
-    return Check::no(format_id(f0) + " is a lone triangle (all its edges are on the boundary); collapsing " +
-                     format_id(e) + " would leave no face");
+    return Check::no(tr_format(
+        "{face} is a lone triangle (all its edges are on the boundary); collapsing {edge} would leave no face",
+        {{"face", format_id(f0)}, {"edge", format_id(e)}}));
   }
   return Check::yes();
 }

@@ -12,6 +12,7 @@
 #include "core/loop_subdivision.h"
 #include "core/mesh_error.h"
 #include "core/mesh_ops.h"
+#include "core/translation.h"
 #include "core/triangulate.h"
 #include "core/value_format.h"
 
@@ -22,6 +23,15 @@ bool is_position(const RecordedEdit& edit) { return edit.what == EditKind::Set &
 
 std::string show(const RecordedEdit& edit, const EditValue& value) {
   return is_position(edit) ? format_position(value.position) : format_id(value.element);
+}
+
+// An operation's name as describe() shows it: the core's edits and the mesh replacements in the text language, the
+// subdivisions by their function names (loop_subdivide, triangulate, ...), as scripts call them.
+const char* operation_text(const std::string& operation) {
+  for (const char* word : {"flip", "split", "collapse", "restore", "undo", "redo", "subdivision phase"}) {
+    if (operation == word) return tr(word);
+  }
+  return operation.c_str();
 }
 
 [[noreturn]] void refuse(const RecordedEdit& edit, const std::string& why) {
@@ -169,14 +179,20 @@ std::string describe(const RecordedEdit& edit) {
   const std::string id = format_id(edit.element);
   switch (edit.what) {
     case EditKind::Set: {
-      return id + "." + edit.field + " = " + format_edit_after(edit) + " (was " + format_edit_before(edit) + ")";
+      return tr_format("{element}.{field} = {value} (was {before})", {{"element", id},
+                                                                      {"field", edit.field},
+                                                                      {"value", format_edit_after(edit)},
+                                                                      {"before", format_edit_before(edit)}});
     }
     case EditKind::Create:
-      return "new " + id +
-             (edit.element.kind == ElementKind::Vertex ? " at " + format_position(edit.value.position) : "");
-    case EditKind::Delete: return "delete " + id;
-    case EditKind::Operation: {
-      std::string text = edit.field;
+      if (edit.element.kind == ElementKind::Vertex) {
+        return tr_format("new {element} at {position}",
+                         {{"element", id}, {"position", format_position(edit.value.position)}});
+      }
+      return tr_format("new {element}", {{"element", id}});
+    case EditKind::Delete: return tr_format("delete {element}", {{"element", id}});
+    case EditKind::Operation: {  // "split e3 -> v9": the same order in every language
+      std::string text = operation_text(edit.field);
       if (edit.element.valid()) text += " " + id;
       if (edit.value.element.valid() && edit.value.element != edit.element)
         text += " -> " + format_id(edit.value.element);

@@ -5,6 +5,7 @@
 // halfedge of a or b when that one moved away from its vertex.
 #include "core/mesh_ops.h"
 #include "core/mesh_ops_support.h"
+#include "core/translation.h"
 
 namespace meshedit {
 
@@ -14,8 +15,8 @@ Check can_flip(const HalfedgeMesh& mesh, EdgeId e) {
   const HalfedgeId h0 = halves.h0, h1 = halves.h1;
   for (HalfedgeId h : {h0, h1}) {
     if (mesh.face(h).is_boundary()) {
-      return Check::no(format_id(e) + " is on the boundary (" + format_id(mesh.face(h)) +
-                       "); only interior edges can be flipped");
+      return Check::no(tr_format("{edge} is on the boundary ({loop}); only interior edges can be flipped",
+                                 {{"edge", format_id(e)}, {"loop", format_id(mesh.face(h))}}));
     }
   }
   constexpr const char* kPurpose = "only edges between two triangles can be flipped";
@@ -27,8 +28,12 @@ Check can_flip(const HalfedgeMesh& mesh, EdgeId e) {
   const HalfedgeId h5 = mesh.next(mesh.next(h1));
   const VertexId c = mesh.vertex(h3), d = mesh.vertex(h5);
   if (c == d) {
-    return Check::no(format_id(mesh.face(h0)) + " and " + format_id(mesh.face(h1)) +
-                     " have the same corners; flipping " + format_id(e) + " would join " + format_id(c) + " to itself");
+    return Check::no(
+        tr_format("{face} and {other} have the same corners; flipping {edge} would join {vertex} to itself",
+                  {{"face", format_id(mesh.face(h0))},
+                   {"other", format_id(mesh.face(h1))},
+                   {"edge", format_id(e)},
+                   {"vertex", format_id(c)}}));
   }
   // The flip would create c-d; if c already has a neighbour d, the mesh would hold two c-d edges.
   EdgeId existing;
@@ -36,11 +41,13 @@ Check can_flip(const HalfedgeMesh& mesh, EdgeId e) {
     if (mesh.vertex(mesh.twin(o)) == d) existing = mesh.edge(o);
   });
   if (!closed) {
-    return ops_detail::broken_fan(c, h3, "flipping " + format_id(e) + " needs " + format_id(c) + "'s neighbours");
+    const MessageParts parts = {{"edge", format_id(e)}, {"vertex", format_id(c)}};
+    return ops_detail::broken_fan(c, h3, tr_format("flipping {edge} needs {vertex}'s neighbours", parts));
   }
   if (existing.valid()) {
-    return Check::no("flipping " + format_id(e) + " would join " + format_id(c) + " and " + format_id(d) +
-                     ", which are already joined by " + format_id(existing));
+    return Check::no(tr_format(
+        "flipping {edge} would join {c} and {d}, which are already joined by {existing}",
+        {{"edge", format_id(e)}, {"c", format_id(c)}, {"d", format_id(d)}, {"existing", format_id(existing)}}));
   }
   return Check::yes();
 }

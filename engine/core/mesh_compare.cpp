@@ -29,6 +29,7 @@
 #include <glm/geometric.hpp>
 
 #include "core/finite.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -54,20 +55,26 @@ class Collector {
 void compare_counts(const HalfedgeMesh& yours, const HalfedgeMesh& reference, Collector& out) {
   struct Count {
     size_t yours, reference;
-    const char* singular;
-    const char* many;
+    const char* one;   // the template when the reference has exactly one
+    const char* many;  // otherwise
   };
   const Count counts[] = {
-      {yours.num_vertices(), reference.num_vertices(), "vertex", "vertices"},
-      {yours.num_edges(), reference.num_edges(), "edge", "edges"},
-      {yours.num_faces(), reference.num_faces(), "face", "faces"},
-      {yours.num_halfedges(), reference.num_halfedges(), "halfedge", "halfedges"},
-      {yours.num_boundaries(), reference.num_boundaries(), "boundary loop", "boundary loops"},
+      {yours.num_vertices(), reference.num_vertices(), "the reference has {count} vertex, yours {yours}",
+       "the reference has {count} vertices, yours {yours}"},
+      {yours.num_edges(), reference.num_edges(), "the reference has {count} edge, yours {yours}",
+       "the reference has {count} edges, yours {yours}"},
+      {yours.num_faces(), reference.num_faces(), "the reference has {count} face, yours {yours}",
+       "the reference has {count} faces, yours {yours}"},
+      {yours.num_halfedges(), reference.num_halfedges(), "the reference has {count} halfedge, yours {yours}",
+       "the reference has {count} halfedges, yours {yours}"},
+      {yours.num_boundaries(), reference.num_boundaries(), "the reference has {count} boundary loop, yours {yours}",
+       "the reference has {count} boundary loops, yours {yours}"},
   };
   for (const Count& c : counts) {
     if (c.yours == c.reference) continue;
     out.add([&] {
-      return "the reference has " + plural(c.reference, c.singular, c.many) + ", yours " + std::to_string(c.yours);
+      return tr_format(c.reference == 1 ? c.one : c.many,
+                       {{"count", std::to_string(c.reference)}, {"yours", std::to_string(c.yours)}});
     });
   }
 }
@@ -82,8 +89,11 @@ bool same_position(const glm::dvec3& a, const glm::dvec3& b, double tolerance) {
 void compare_pointer(Collector& out, ElementRef owner, const char* field, ElementRef yours, ElementRef reference) {
   if (yours == reference) return;
   out.add([&] {
-    return format_id(owner) + "." + field + " is " + format_id(yours) + " in yours, " + format_id(reference) +
-           " in the reference";
+    return tr_format("{element}.{field} is {yours} in yours, {reference} in the reference",
+                     {{"element", format_id(owner)},
+                      {"field", field},
+                      {"yours", format_id(yours)},
+                      {"reference", format_id(reference)}});
   });
 }
 
@@ -103,8 +113,11 @@ void compare_element(const HalfedgeMesh& y, const HalfedgeMesh& r, ElementRef e,
       compare_pointer(out, e, "halfedge", y.halfedge(v), r.halfedge(v));
       if (!same_position(y.position(v), r.position(v), tolerance)) {
         out.add([&] {
-          return format_id(e) + ".position is " + format_position(y.position(v)) + " in yours, " +
-                 format_position(r.position(v)) + " in the reference";
+          return tr_format("{element}.{field} is {yours} in yours, {reference} in the reference",
+                           {{"element", format_id(e)},
+                            {"field", "position"},
+                            {"yours", format_position(y.position(v))},
+                            {"reference", format_position(r.position(v))}});
         });
       }
       break;
@@ -190,22 +203,44 @@ VertexId nearest(const HalfedgeMesh& mesh, const glm::dvec3& p, double& distance
   return best;
 }
 
-std::string no_match(const HalfedgeMesh& from, VertexId v, const char* whose, const HalfedgeMesh& other,
-                     const char* other_whose, const std::vector<VertexId>& other_partner, const char* partner_whose,
-                     const char* other_name) {
+// The templates of no_match for a vertex of one mesh, told in the other.
+struct NoMatchTexts {
+  const char* not_finite;
+  const char* other_empty;      // the other mesh has no vertices
+  const char* nearest;          // the other mesh's nearest vertex
+  const char* nearest_matched;  // ... which is already matched to another of this mesh
+};
+constexpr NoMatchTexts kYourVertex{
+    "your vertex {vertex} at {position} has a position that is not finite; it matches nothing",
+    "your vertex {vertex} at {position} has no match in the reference (which has no vertices)",
+    "your vertex {vertex} at {position} has no match in the reference; the nearest is reference {nearest} at "
+    "{nearest_position}, {distance} away",
+    "your vertex {vertex} at {position} has no match in the reference; the nearest is reference {nearest} at "
+    "{nearest_position}, {distance} away (already matched to your {partner})"};
+constexpr NoMatchTexts kReferenceVertex{
+    "reference vertex {vertex} at {position} has a position that is not finite; it matches nothing",
+    "reference vertex {vertex} at {position} has no match in yours (which has no vertices)",
+    "reference vertex {vertex} at {position} has no match in yours; the nearest is your {nearest} at "
+    "{nearest_position}, {distance} away",
+    "reference vertex {vertex} at {position} has no match in yours; the nearest is your {nearest} at "
+    "{nearest_position}, {distance} away (already matched to reference {partner})"};
+
+std::string no_match(const HalfedgeMesh& from, VertexId v, const HalfedgeMesh& other,
+                     const std::vector<VertexId>& other_partner, const NoMatchTexts& texts) {
   const glm::dvec3& p = from.position(v);
-  std::string s = std::string(whose) + " vertex " + format_id(v) + " at " + format_position(p);
-  if (!finite(p)) return s + " has a position that is not finite; it matches nothing";
-  s += std::string(" has no match in ") + other_name;
+  MessageParts parts = {{"vertex", format_id(v)}, {"position", format_position(p)}};
+  if (!finite(p)) return tr_format(texts.not_finite, parts);
   double distance = 0.0;
   const VertexId n = nearest(other, p, distance);
-  if (!n.valid()) return s + " (which has no vertices)";
-  s += "; the nearest is " + std::string(other_whose) + " " + format_id(n) + " at " +
-       format_position(other.position(n)) + ", " + format_number(distance) + " away";
+  if (!n.valid()) return tr_format(texts.other_empty, parts);
+  parts.insert(parts.end(), {{"nearest", format_id(n)},
+                             {"nearest_position", format_position(other.position(n))},
+                             {"distance", format_number(distance)}});
   if (n.index < other_partner.size() && other_partner[n.index].valid()) {
-    s += std::string(" (already matched to ") + partner_whose + " " + format_id(other_partner[n.index]) + ")";
+    parts.emplace_back("partner", format_id(other_partner[n.index]));
+    return tr_format(texts.nearest_matched, parts);
   }
-  return s;
+  return tr_format(texts.nearest, parts);
 }
 
 // ---- up to renumbering: cycles and edges ---------------------------------------------------------
@@ -255,17 +290,51 @@ Cycle read_cycle(const HalfedgeMesh& mesh, FaceId f, const std::vector<VertexId>
   return c;
 }
 
+// Whose the other mesh's names are in corners() and edge_ends(): "reference" or "your".
+enum class Other : uint8_t { Reference, Yours };
+
 // "(v0 v4 v7)", plus the other mesh's names when they differ: "(v0 v4 v7; your v0 v5 v9)".
-std::string corners(const Cycle& c, const char* other_whose) {
-  std::string s = "(" + list(c.vertices);
-  if (!c.translated.empty() && c.translated != c.vertices) {
-    s += std::string("; ") + other_whose + " " + list(c.translated);
-  }
-  return s + ")";
+std::string named_corners(const std::string& own, const Key& translated, bool differ, Other other) {
+  if (translated.empty() || !differ) return tr_format("({corners})", {{"corners", own}});
+  const MessageParts parts = {{"corners", own}, {"other", list(translated)}};
+  return other == Other::Reference ? tr_format("({corners}; reference {other})", parts)
+                                   : tr_format("({corners}; your {other})", parts);
 }
 
+std::string corners(const Cycle& c, Other other) {
+  return named_corners(list(c.vertices), c.translated, c.translated != c.vertices, other);
+}
+
+// The messages about one kind of cycle: {face} is its id, {corners} its corners().
+struct CycleTexts {
+  const char* your_broken;
+  const char* your_reversed;  // {reference_face} {reference_corners}: the reference's cycle it matched reversed
+  const char* your_extra;
+  const char* reference_broken;
+  const char* reference_missing;
+  const char* skipped;  // {mine} of yours and {theirs} of the reference's were not compared
+};
+constexpr CycleTexts kFaceTexts{
+    "your face {face} cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
+    "element",
+    "your face {face} {corners} has the opposite orientation of reference face {reference_face} {reference_corners}",
+    "your face {face} {corners} is not in the reference",
+    "reference face {face} cannot be walked",
+    "reference face {face} {corners} is missing from yours",
+    "{mine} of your faces and {theirs} of the reference's touch a vertex without a match and were not compared"};
+constexpr CycleTexts kBoundaryTexts{
+    "your boundary loop {face} cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or "
+    "reaches a dead element",
+    "your boundary loop {face} {corners} has the opposite orientation of reference boundary loop {reference_face} "
+    "{reference_corners}",
+    "your boundary loop {face} {corners} is not in the reference",
+    "reference boundary loop {face} cannot be walked",
+    "reference boundary loop {face} {corners} is missing from yours",
+    "{mine} of your boundary loops and {theirs} of the reference's touch a vertex without a match and were not "
+    "compared"};
+
 struct CycleKinds {
-  const char* noun;  // "face", "boundary loop"
+  const CycleTexts* texts;
   std::vector<FaceId>* extra;
   std::vector<FaceId>* missing;
   std::vector<FaceId>* reversed;  // null for boundary loops: a loop runs the way its faces say
@@ -321,25 +390,22 @@ size_t report_your_cycles(const std::vector<Cycle>& mine, const std::vector<Cycl
     if (m.yours[i] == Match::Same) continue;
     kinds.extra->push_back(c.face);
     if (c.broken) {
-      out.add([&] {
-        return std::string("your ") + kinds.noun + " " + format_id(c.face) +
-               " cannot be walked: its next-cycle does not close, has fewer than 3 halfedges, or reaches a dead "
-               "element";
-      });
+      out.add([&] { return tr_format(kinds.texts->your_broken, {{"face", format_id(c.face)}}); });
     } else if (c.translated.empty()) {
       ++skipped;
     } else if (m.yours[i] == Match::Reversed) {
       kinds.reversed->push_back(c.face);
       const Cycle& r = theirs[m.partner[i]];
       out.add([&] {
-        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
-               " has the opposite orientation of reference " + kinds.noun + " " + format_id(r.face) + " " +
-               corners(r, "your");
+        return tr_format(kinds.texts->your_reversed, {{"face", format_id(c.face)},
+                                                      {"corners", corners(c, Other::Reference)},
+                                                      {"reference_face", format_id(r.face)},
+                                                      {"reference_corners", corners(r, Other::Yours)}});
       });
     } else {
       out.add([&] {
-        return std::string("your ") + kinds.noun + " " + format_id(c.face) + " " + corners(c, "reference") +
-               " is not in the reference";
+        return tr_format(kinds.texts->your_extra,
+                         {{"face", format_id(c.face)}, {"corners", corners(c, Other::Reference)}});
       });
     }
   }
@@ -356,13 +422,13 @@ size_t report_reference_cycles(const std::vector<Cycle>& theirs, const CycleMatc
     kinds.missing->push_back(r.face);
     if (m.theirs[i] == Match::Reversed) continue;
     if (r.broken) {
-      out.add([&] { return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " cannot be walked"; });
+      out.add([&] { return tr_format(kinds.texts->reference_broken, {{"face", format_id(r.face)}}); });
     } else if (r.translated.empty()) {
       ++skipped;
     } else {
       out.add([&] {
-        return std::string("reference ") + kinds.noun + " " + format_id(r.face) + " " + corners(r, "your") +
-               " is missing from yours";
+        return tr_format(kinds.texts->reference_missing,
+                         {{"face", format_id(r.face)}, {"corners", corners(r, Other::Yours)}});
       });
     }
   }
@@ -381,8 +447,8 @@ void compare_cycles(const HalfedgeMesh& yours, const HalfedgeMesh& reference, bo
   const size_t skipped_theirs = report_reference_cycles(theirs, matching, kinds, out);
   if (skipped_mine + skipped_theirs > 0) {
     out.add([&] {
-      return std::to_string(skipped_mine) + " of your " + kinds.noun + "s and " + std::to_string(skipped_theirs) +
-             " of the reference's touch a vertex without a match and were not compared";
+      return tr_format(kinds.texts->skipped,
+                       {{"mine", std::to_string(skipped_mine)}, {"theirs", std::to_string(skipped_theirs)}});
     });
   }
 }
@@ -415,14 +481,11 @@ EdgeEnds read_edge(const HalfedgeMesh& mesh, EdgeId e, const std::vector<VertexI
   return ends;
 }
 
-std::string edge_ends(const EdgeEnds& e, const char* other_whose) {
-  std::string s = "(" + format_id(VertexId(e.a)) + " " + format_id(VertexId(e.b));
+std::string edge_ends(const EdgeEnds& e, Other other) {
   Key own{e.a, e.b};
   std::sort(own.begin(), own.end());
-  if (!e.translated.empty() && e.translated != own) {
-    s += std::string("; ") + other_whose + " " + list(e.translated);
-  }
-  return s + ")";
+  return named_corners(format_id(VertexId(e.a)) + " " + format_id(VertexId(e.b)), e.translated, e.translated != own,
+                       other);
 }
 
 void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, const std::vector<VertexId>& to_reference,
@@ -449,13 +512,15 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     result.extra_edges.push_back(e.edge);
     if (e.broken) {
       out.add([&] {
-        return "your edge " + format_id(e.edge) + " cannot be read: its halfedge, twin or their vertices are dead";
+        return tr_format("your edge {edge} cannot be read: its halfedge, twin or their vertices are dead",
+                         {{"edge", format_id(e.edge)}});
       });
     } else if (e.translated.empty()) {
       ++skipped_mine;
     } else {
       out.add([&] {
-        return "your edge " + format_id(e.edge) + " " + edge_ends(e, "reference") + " is not in the reference";
+        return tr_format("your edge {edge} {ends} is not in the reference",
+                         {{"edge", format_id(e.edge)}, {"ends", edge_ends(e, Other::Reference)}});
       });
     }
   }
@@ -464,19 +529,21 @@ void compare_edges(const HalfedgeMesh& yours, const HalfedgeMesh& reference, con
     if (used[i]) continue;
     result.missing_edges.push_back(e.edge);
     if (e.broken) {
-      out.add([&] { return "reference edge " + format_id(e.edge) + " cannot be read"; });
+      out.add([&] { return tr_format("reference edge {edge} cannot be read", {{"edge", format_id(e.edge)}}); });
     } else if (e.translated.empty()) {
       ++skipped_theirs;
     } else {
       out.add([&] {
-        return "reference edge " + format_id(e.edge) + " " + edge_ends(e, "your") + " is missing from yours";
+        return tr_format("reference edge {edge} {ends} is missing from yours",
+                         {{"edge", format_id(e.edge)}, {"ends", edge_ends(e, Other::Yours)}});
       });
     }
   }
   if (skipped_mine + skipped_theirs > 0) {
     out.add([&] {
-      return std::to_string(skipped_mine) + " of your edges and " + std::to_string(skipped_theirs) +
-             " of the reference's touch a vertex without a match and were not compared";
+      return tr_format(
+          "{mine} of your edges and {theirs} of the reference's touch a vertex without a match and were not compared",
+          {{"mine", std::to_string(skipped_mine)}, {"theirs", std::to_string(skipped_theirs)}});
     });
   }
 }
@@ -505,10 +572,15 @@ double points_tolerance(std::span<const glm::dvec3> points) {
 }
 
 std::string MeshComparison::summary() const {
-  if (total_differences == 0) return "equal";
-  std::string s = plural(total_differences, "difference", "differences");
-  if (!differences.empty()) s += "; first: " + differences.front();
-  return s;
+  if (total_differences == 0) return tr("equal");
+  const bool one = total_differences == 1;
+  if (differences.empty()) {
+    const MessageParts parts = {{"count", std::to_string(total_differences)}};
+    return one ? tr_format("{count} difference", parts) : tr_format("{count} differences", parts);
+  }
+  const MessageParts parts = {{"count", std::to_string(total_differences)}, {"first", differences.front()}};
+  return one ? tr_format("{count} difference; first: {first}", parts)
+             : tr_format("{count} differences; first: {first}", parts);
 }
 
 MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMesh& reference,
@@ -525,9 +597,9 @@ MeshComparison compare_meshes_exact(const HalfedgeMesh& yours, const HalfedgeMes
       if (in_yours && in_reference) {
         compare_element(yours, reference, e, options.position_tolerance, out);
       } else if (in_yours) {
-        out.add([&] { return "yours has " + format_id(e) + ", the reference does not"; });
+        out.add([&] { return tr_format("yours has {element}, the reference does not", {{"element", format_id(e)}}); });
       } else if (in_reference) {
-        out.add([&] { return "the reference has " + format_id(e) + ", yours does not"; });
+        out.add([&] { return tr_format("the reference has {element}, yours does not", {{"element", format_id(e)}}); });
       }
     }
   }
@@ -566,19 +638,18 @@ MeshComparison compare_meshes(const HalfedgeMesh& yours, const HalfedgeMesh& ref
   for (VertexId v : yours.vertices()) {
     if (result.vertex_map[v.index].valid()) continue;
     result.unmatched_vertices.push_back(v);
-    out.add([&] { return no_match(yours, v, "your", reference, "reference", to_yours, "your", "the reference"); });
+    out.add([&] { return no_match(yours, v, reference, to_yours, kYourVertex); });
   }
   for (VertexId v : reference.vertices()) {
     if (to_yours[v.index].valid()) continue;
     result.unmatched_reference.push_back(v);
-    out.add(
-        [&] { return no_match(reference, v, "reference", yours, "your", result.vertex_map, "reference", "yours"); });
+    out.add([&] { return no_match(reference, v, yours, result.vertex_map, kReferenceVertex); });
   }
 
   compare_cycles(yours, reference, false, result.vertex_map, to_yours,
-                 {"face", &result.extra_faces, &result.missing_faces, &result.reversed_faces}, out);
+                 {&kFaceTexts, &result.extra_faces, &result.missing_faces, &result.reversed_faces}, out);
   compare_cycles(yours, reference, true, result.vertex_map, to_yours,
-                 {"boundary loop", &result.extra_boundaries, &result.missing_boundaries, nullptr}, out);
+                 {&kBoundaryTexts, &result.extra_boundaries, &result.missing_boundaries, nullptr}, out);
   compare_edges(yours, reference, result.vertex_map, to_yours, result, out);
   result.equal = result.total_differences == 0;
   return result;

@@ -37,7 +37,8 @@ Check check_edge(const HalfedgeMesh& mesh, EdgeId e, EdgeHalves& halves);
 // Checks that h's face is a triangle whose three halfedges are consistent enough to rewire: the next-cycle
 // from h closes after three steps, all three lie in h's face, have live tails (three distinct corners),
 // live edges shared with live twins that point back, and each twin leaves the vertex its halfedge reaches.
-// `purpose` ends the sentence of a non-triangle refusal ("only edges between two triangles can be flipped").
+// `purpose` ends the sentence of a non-triangle refusal ("only edges between two triangles can be flipped"): English,
+// translated here (tr) with the rest of the reason.
 Check check_triangle(const HalfedgeMesh& mesh, HalfedgeId h, const char* purpose);
 
 // Checks that the halfedge after h in h's boundary loop is alive, in the same loop, and leaves the vertex

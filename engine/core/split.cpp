@@ -7,6 +7,7 @@
 // the faces of h3 and h4, the faces' halfedges, and a's halfedge when it was h0).
 #include "core/mesh_ops.h"
 #include "core/mesh_ops_support.h"
+#include "core/translation.h"
 
 namespace meshedit {
 
@@ -14,8 +15,11 @@ Check can_split(const HalfedgeMesh& mesh, EdgeId e) {
   ops_detail::EdgeHalves halves;
   if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
   if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
-    return Check::no(format_id(e) + " has boundary loops on both sides (" + format_id(mesh.face(halves.h0)) + " and " +
-                     format_id(mesh.face(halves.h1)) + "); there is no face to split");
+    return Check::no(
+        tr_format("{edge} has boundary loops on both sides ({loop} and {other}); there is no face to split",
+                  {{"edge", format_id(e)},
+                   {"loop", format_id(mesh.face(halves.h0))},
+                   {"other", format_id(mesh.face(halves.h1))}}));
   }
   const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
   constexpr const char* kPurpose = "only edges of triangles can be split";
@@ -26,9 +30,12 @@ Check can_split(const HalfedgeMesh& mesh, EdgeId e) {
   const VertexId c = mesh.vertex(mesh.next(mesh.next(h0)));
   const VertexId d = mesh.vertex(mesh.next(mesh.next(h1)));
   if (c == d) {
-    return Check::no(format_id(mesh.face(h0)) + " and " + format_id(mesh.face(h1)) +
-                     " have the same corners; splitting " + format_id(e) + " would join the new vertex to " +
-                     format_id(c) + " twice");
+    return Check::no(tr_format(
+        "{face} and {other} have the same corners; splitting {edge} would join the new vertex to {vertex} twice",
+        {{"face", format_id(mesh.face(h0))},
+         {"other", format_id(mesh.face(h1))},
+         {"edge", format_id(e)},
+         {"vertex", format_id(c)}}));
   }
   return Check::yes();
 }

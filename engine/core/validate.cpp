@@ -32,6 +32,7 @@
 #include <utility>
 
 #include "core/quick_check.h"
+#include "core/translation.h"
 #include "core/value_format.h"
 
 namespace meshedit {
@@ -42,15 +43,30 @@ namespace {
 // Ids listed in one message, so a huge broken fan or cycle does not make a huge message.
 constexpr size_t kListCap = 8;
 
+// The message templates (tr_format, translated in assets/translations/*/core.po) are filled only inside the lambdas
+// Collector::add calls for a violation it keeps, never for a valid mesh.
+
+// "h99, past the end (48 halfedge slots)", one template per kind so a translation names the kind in its own words.
+const char* past_the_end(ElementKind kind) {
+  switch (kind) {
+    case ElementKind::Vertex: return "{element}, past the end ({count} vertex slots)";
+    case ElementKind::Halfedge: return "{element}, past the end ({count} halfedge slots)";
+    case ElementKind::Edge: return "{element}, past the end ({count} edge slots)";
+    case ElementKind::Face: return "{element}, past the end ({count} face slots)";
+    case ElementKind::Boundary: return "{element}, past the end ({count} boundary slots)";
+  }
+  return "{element}, past the end ({count} element slots)";
+}
+
 // Describes a reference that failed alive(): "- (none)", "h99, past the end (48 halfedge slots)",
 // "h7, which is dead".
 std::string bad_target(const HalfedgeMesh& m, ElementRef r) {
-  if (!r.valid()) return "- (none)";
+  if (!r.valid()) return tr("- (none)");
   const uint32_t slots = m.capacity(r.kind);
   if (r.index >= slots) {
-    return format_id(r) + ", past the end (" + std::to_string(slots) + " " + kind_name(r.kind) + " slots)";
+    return tr_format(past_the_end(r.kind), {{"element", format_id(r)}, {"count", std::to_string(slots)}});
   }
-  return format_id(r) + ", which is dead";
+  return tr_format("{element}, which is dead", {{"element", format_id(r)}});
 }
 
 // "h3 h9 h20", or "h3 h9 ... (40 more)" past kListCap.
@@ -60,7 +76,9 @@ std::string id_list(const std::vector<HalfedgeId>& ids, size_t total) {
     if (i > 0) s += ' ';
     s += format_id(ids[i]);
   }
-  if (total > kListCap) s += " ... (" + std::to_string(total - kListCap) + " more)";
+  if (total > kListCap) {
+    return tr_format("{ids} ... ({count} more)", {{"ids", s}, {"count", std::to_string(total - kListCap)}});
+  }
   return s;
 }
 
@@ -164,8 +182,10 @@ class Validator {
     in_face_.assign(size_t(m_.face_capacity()) + m_.boundary_capacity(), 0);
 
     auto dead = [&](ElementRef owner, const char* field, ElementRef target) {
-      out_.add(Invariant::DeadReference, owner,
-               [&] { return format_id(owner) + "." + field + " is " + bad_target(m_, target); });
+      out_.add(Invariant::DeadReference, owner, [&] {
+        return tr_format("{element}.{field} is {target}",
+                         {{"element", format_id(owner)}, {"field", field}, {"target", bad_target(m_, target)}});
+      });
     };
     for (HalfedgeId h : m_.halfedges()) {
       const HalfedgeId n = m_.next(h), t = m_.twin(h);
@@ -199,11 +219,13 @@ class Validator {
       const HalfedgeId t = m_.twin(h);
       if (!m_.alive(t)) continue;
       if (t == h) {
-        out_.add(Invariant::TwinOfTwin, h, [&] { return format_id(h) + ".twin is " + format_id(h) + " itself"; });
+        out_.add(Invariant::TwinOfTwin, h, [&] {
+          return tr_format("{halfedge}.twin is {halfedge} itself", {{"halfedge", format_id(h)}});
+        });
       } else if (m_.twin(t) != h) {
         out_.add(Invariant::TwinOfTwin, h, [&] {
-          return format_id(h) + ".twin is " + format_id(t) + ", but " + format_id(t) + ".twin is " +
-                 format_id(m_.twin(t)) + " (should be " + format_id(h) + ")";
+          return tr_format("{halfedge}.twin is {twin}, but {twin}.twin is {other} (should be {halfedge})",
+                           {{"halfedge", format_id(h)}, {"twin", format_id(t)}, {"other", format_id(m_.twin(t))}});
         });
       }
     }
@@ -218,8 +240,11 @@ class Validator {
       if (!m_.alive(t) || t == h || m_.twin(t) != h || t < h) continue;  // unpaired twins: TwinOfTwin
       if (m_.edge(h) != m_.edge(t)) {
         out_.add(Invariant::TwinEdge, h, [&] {
-          return format_id(h) + " and its twin " + format_id(t) + " lie on different edges (" + format_id(m_.edge(h)) +
-                 " and " + format_id(m_.edge(t)) + ")";
+          return tr_format("{halfedge} and its twin {twin} lie on different edges ({edge} and {twin_edge})",
+                           {{"halfedge", format_id(h)},
+                            {"twin", format_id(t)},
+                            {"edge", format_id(m_.edge(h))},
+                            {"twin_edge", format_id(m_.edge(t))}});
         });
       }
     }
@@ -227,8 +252,8 @@ class Validator {
       const HalfedgeId s = m_.halfedge(e);
       if (m_.alive(s) && m_.edge(s) != e) {
         out_.add(Invariant::TwinEdge, e, [&] {
-          return format_id(e) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + ".edge is " +
-                 format_id(m_.edge(s));
+          return tr_format("{edge}.halfedge is {halfedge}, but {halfedge}.edge is {other}",
+                           {{"edge", format_id(e)}, {"halfedge", format_id(s)}, {"other", format_id(m_.edge(s))}});
         });
       }
     }
@@ -246,9 +271,11 @@ class Validator {
       const uint32_t index = entry.first;
       const std::vector<HalfedgeId>& list = entry.second;
       const EdgeId e(index);
-      out_.add(Invariant::TwinEdge, e, [&] {
-        return format_id(e) + " has " + std::to_string(on_edge_[index]) + " halfedges (" +
-               id_list(list, on_edge_[index]) + "); an edge has exactly two";
+      out_.add(Invariant::TwinEdge, e, [&] {  // more than two, so always "halfedges"
+        return tr_format("{edge} has {count} halfedges ({halfedges}); an edge has exactly two",
+                         {{"edge", format_id(e)},
+                          {"count", std::to_string(on_edge_[index])},
+                          {"halfedges", id_list(list, on_edge_[index])}});
       });
     }
   }
@@ -270,13 +297,13 @@ class Validator {
       if (owner.valid()) {
         if (!face_closed_[face_slot(owner)]) continue;
         out_.add(Invariant::FaceCycle, h, [&] {
-          return format_id(h) + ".face is " + format_id(f) + ", but " + format_id(h) + " is in " + format_id(owner) +
-                 "'s next-cycle";
+          return tr_format("{halfedge}.face is {face}, but {halfedge} is in {owner}'s next-cycle",
+                           {{"halfedge", format_id(h)}, {"face", format_id(f)}, {"owner", format_id(owner)}});
         });
       } else if (face_closed_[face_slot(f)]) {
         out_.add(Invariant::FaceCycle, h, [&] {
-          return format_id(h) + ".face is " + format_id(f) + ", but " + format_id(h) + " is not in " + format_id(f) +
-                 "'s next-cycle";
+          return tr_format("{halfedge}.face is {face}, but {halfedge} is not in {face}'s next-cycle",
+                           {{"halfedge", format_id(h)}, {"face", format_id(f)}});
         });
       }
     }
@@ -287,8 +314,8 @@ class Validator {
     if (!m_.alive(s)) return;  // DeadReference
     if (m_.face(s) != f) {
       out_.add(Invariant::FaceCycle, f, [&] {
-        return format_id(f) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + ".face is " +
-               format_id(m_.face(s));
+        return tr_format("{face}.halfedge is {halfedge}, but {halfedge}.face is {other}",
+                         {{"face", format_id(f)}, {"halfedge", format_id(s)}, {"other", format_id(m_.face(s))}});
       });
       return;
     }
@@ -300,15 +327,26 @@ class Validator {
       if (owner == f) {
         if (h == s) break;  // closed
         out_.add(Invariant::FaceCycle, f, [&] {
-          return format_id(f) + "'s next-cycle does not close: " + path.str() + " then comes back to " + format_id(h) +
-                 ", never to " + format_id(f) + ".halfedge " + format_id(s);
+          return tr_format(
+              "{face}'s next-cycle does not close: {path} then comes back to {halfedge}, never to {face}.halfedge "
+              "{start}",
+              {{"face", format_id(f)}, {"path", path.str()}, {"halfedge", format_id(h)}, {"start", format_id(s)}});
         });
         return;
       }
       if (owner.valid()) {
         out_.add(Invariant::FaceCycle, f, [&] {
-          return format_id(f) + "'s next-cycle does not close: " + (path.length == 0 ? "" : path.str() + " then ") +
-                 "it reaches " + format_id(h) + ", which is in " + format_id(owner) + "'s next-cycle";
+          const MessageParts parts = {
+              {"face", format_id(f)}, {"path", path.str()}, {"halfedge", format_id(h)}, {"owner", format_id(owner)}};
+          return path.length == 0
+                     ? tr_format(
+                           "{face}'s next-cycle does not close: it reaches {halfedge}, which is in {owner}'s "
+                           "next-cycle",
+                           parts)
+                     : tr_format(
+                           "{face}'s next-cycle does not close: {path} then it reaches {halfedge}, which is in "
+                           "{owner}'s next-cycle",
+                           parts);
         });
         return;
       }
@@ -321,9 +359,23 @@ class Validator {
     face_closed_[face_slot(f)] = 1;
     if (path.length < 3) {
       out_.add(Invariant::FaceCycle, f, [&] {
-        return format_id(f) + "'s next-cycle has only " + std::to_string(path.length) + " halfedge" +
-               (path.length == 1 ? "" : "s") + " (" + path.str() + "); a " +
-               (f.is_boundary() ? "boundary loop" : "face") + " needs at least 3";
+        const MessageParts parts = {
+            {"face", format_id(f)}, {"count", std::to_string(path.length)}, {"path", path.str()}};
+        if (f.is_boundary()) {
+          return path.length == 1
+                     ? tr_format(
+                           "{face}'s next-cycle has only {count} halfedge ({path}); a boundary loop needs at "
+                           "least 3",
+                           parts)
+                     : tr_format(
+                           "{face}'s next-cycle has only {count} halfedges ({path}); a boundary loop needs at "
+                           "least 3",
+                           parts);
+        }
+        if (path.length == 1) {
+          return tr_format("{face}'s next-cycle has only {count} halfedge ({path}); a face needs at least 3", parts);
+        }
+        return tr_format("{face}'s next-cycle has only {count} halfedges ({path}); a face needs at least 3", parts);
       });
     }
   }
@@ -346,9 +398,11 @@ class Validator {
       const uint32_t count = next_count_[h.index];
       if (count == 1) continue;
       out_.add(Invariant::NextNotPermutation, h, [&] {
-        if (count == 0) return "no live halfedge has " + format_id(h) + " as its next";
-        return format_id(h) + " is the next of " + std::to_string(count) + " halfedges (" +
-               id_list(shared[h.index], count) + ")";
+        if (count == 0) return tr_format("no live halfedge has {halfedge} as its next", {{"halfedge", format_id(h)}});
+        return tr_format("{halfedge} is the next of {count} halfedges ({halfedges})",  // count >= 2
+                         {{"halfedge", format_id(h)},
+                          {"count", std::to_string(count)},
+                          {"halfedges", id_list(shared[h.index], count)}});
       });
     }
   }
@@ -359,8 +413,8 @@ class Validator {
       const HalfedgeId s = m_.halfedge(v);
       if (m_.alive(s) && m_.vertex(s) != v) {
         out_.add(Invariant::VertexHalfedge, v, [&] {
-          return format_id(v) + ".halfedge is " + format_id(s) + ", but " + format_id(s) + " leaves " +
-                 format_id(m_.vertex(s));
+          return tr_format("{vertex}.halfedge is {halfedge}, but {halfedge} leaves {other}",
+                           {{"vertex", format_id(v)}, {"halfedge", format_id(s)}, {"other", format_id(m_.vertex(s))}});
         });
       }
     }
@@ -406,10 +460,11 @@ class Validator {
           g = m_.next(m_.twin(g));
         } while (g != start);
         const size_t count = groups.size() + 1;
-        std::string s = format_id(v) + " has " + (count == 2 ? std::string("two") : std::to_string(count)) +
-                        " separate fans (hourglass): " + first.str();
-        for (const Path& group : groups) s += " | " + group.str();
-        return s;
+        std::string fans = first.str();
+        for (const Path& group : groups) fans += " | " + group.str();
+        const MessageParts parts = {{"vertex", format_id(v)}, {"count", std::to_string(count)}, {"fans", fans}};
+        return count == 2 ? tr_format("{vertex} has two separate fans (hourglass): {fans}", parts)
+                          : tr_format("{vertex} has {count} separate fans (hourglass): {fans}", parts);
       });
     }
   }
@@ -428,8 +483,10 @@ class Validator {
       if (fan_owner_[h.index] == v) {
         if (h == s) break;
         out_.add(Invariant::VertexFan, v, [&] {
-          return format_id(v) + "'s fan does not close: " + path.str() + " then comes back to " + format_id(h) +
-                 ", never to " + format_id(v) + ".halfedge " + format_id(s);
+          return tr_format(
+              "{vertex}'s fan does not close: {path} then comes back to {halfedge}, never to {vertex}.halfedge "
+              "{start}",
+              {{"vertex", format_id(v)}, {"path", path.str()}, {"halfedge", format_id(h)}, {"start", format_id(s)}});
         });
         return false;
       }
@@ -447,8 +504,14 @@ class Validator {
       if (!m_.alive(n)) return false;  // DeadReference
       if (m_.vertex(n) != v) {
         out_.add(Invariant::VertexFan, v, [&] {
-          return format_id(v) + "'s fan does not close: " + format_id(h) + ".twin is " + format_id(t) +
-                 ", whose next " + format_id(n) + " leaves " + format_id(m_.vertex(n)) + ", not " + format_id(v);
+          return tr_format(
+              "{vertex}'s fan does not close: {halfedge}.twin is {twin}, whose next {next} leaves {other}, not "
+              "{vertex}",
+              {{"vertex", format_id(v)},
+               {"halfedge", format_id(h)},
+               {"twin", format_id(t)},
+               {"next", format_id(n)},
+               {"other", format_id(m_.vertex(n))}});
         });
         return false;
       }
@@ -456,16 +519,19 @@ class Validator {
     }
     if (boundary.size() > 1) {
       out_.add(Invariant::VertexFan, v, [&] {
-        std::string message = format_id(v) + " is on the boundary more than once:";
+        std::string list;  // "h3 (b0) h9 (b1)": at least two
         for (size_t i = 0; i < boundary.size() && i < kListCap; ++i) {
-          message += " " + format_id(boundary[i]) + " (" + format_id(m_.face(boundary[i])) + ")";
+          list += (i == 0 ? "" : " ") + format_id(boundary[i]) + " (" + format_id(m_.face(boundary[i])) + ")";
         }
-        return message + "; at most one boundary halfedge may leave a vertex";
+        return tr_format(
+            "{vertex} is on the boundary more than once: {halfedges}; at most one boundary halfedge may leave a vertex",
+            {{"vertex", format_id(v)}, {"halfedges", list}});
       });
     }
     if (!has_face) {
-      out_.add(Invariant::Orphan, v,
-               [&] { return format_id(v) + " is orphaned: every face around it is a boundary loop"; });
+      out_.add(Invariant::Orphan, v, [&] {
+        return tr_format("{vertex} is orphaned: every face around it is a boundary loop", {{"vertex", format_id(v)}});
+      });
     }
     return true;
   }
@@ -474,12 +540,16 @@ class Validator {
   void check_orphans() {
     for (VertexId v : m_.vertices()) {
       if (leaving_[v.index] == 0) {
-        out_.add(Invariant::Orphan, v, [&] { return format_id(v) + " is orphaned: no live halfedge leaves it"; });
+        out_.add(Invariant::Orphan, v, [&] {
+          return tr_format("{vertex} is orphaned: no live halfedge leaves it", {{"vertex", format_id(v)}});
+        });
       }
     }
     for (EdgeId e : m_.edges()) {
       if (on_edge_[e.index] == 0) {
-        out_.add(Invariant::Orphan, e, [&] { return format_id(e) + " is orphaned: no live halfedge lies on it"; });
+        out_.add(Invariant::Orphan, e, [&] {
+          return tr_format("{edge} is orphaned: no live halfedge lies on it", {{"edge", format_id(e)}});
+        });
         continue;
       }
       const HalfedgeId s = m_.halfedge(e);
@@ -488,14 +558,16 @@ class Validator {
       if (!m_.alive(t) || t == s || m_.twin(t) != s) continue;
       if (m_.face(s).is_boundary() && m_.face(t).is_boundary()) {
         out_.add(Invariant::Orphan, e, [&] {
-          return format_id(e) + " is orphaned: both its sides are boundary loops (" + format_id(m_.face(s)) + " and " +
-                 format_id(m_.face(t)) + ")";
+          return tr_format("{edge} is orphaned: both its sides are boundary loops ({loop} and {other})",
+                           {{"edge", format_id(e)}, {"loop", format_id(m_.face(s))}, {"other", format_id(m_.face(t))}});
         });
       }
     }
     for_each_face_and_boundary([&](FaceId f) {
       if (in_face_[face_slot(f)] == 0) {
-        out_.add(Invariant::Orphan, f, [&] { return format_id(f) + " is orphaned: no live halfedge lies in it"; });
+        out_.add(Invariant::Orphan, f, [&] {
+          return tr_format("{face} is orphaned: no live halfedge lies in it", {{"face", format_id(f)}});
+        });
       }
     });
   }
@@ -505,7 +577,10 @@ class Validator {
     for (VertexId v : m_.vertices()) {
       const glm::dvec3& p = m_.position(v);
       if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z)) {
-        out_.add(Invariant::NonFinitePosition, v, [&] { return format_id(v) + ".position is " + format_position(p); });
+        out_.add(Invariant::NonFinitePosition, v, [&] {
+          return tr_format("{vertex}.position is {position}",
+                           {{"vertex", format_id(v)}, {"position", format_position(p)}});
+        });
       }
     }
   }
@@ -543,10 +618,14 @@ const char* invariant_name(Invariant invariant) {
 }
 
 std::string ValidationReport::summary() const {
-  if (total == 0) return "valid";
-  std::string s = std::to_string(total) + (total == 1 ? " problem" : " problems");
-  if (!violations.empty()) s += "; first: " + violations.front().message;
-  return s;
+  if (total == 0) return tr("valid");  // translated in ui.po (the status line's "valid")
+  const MessageParts parts = {{"count", std::to_string(total)}};
+  if (violations.empty()) {
+    return total == 1 ? tr_format("{count} problem", parts) : tr_format("{count} problems", parts);
+  }
+  const MessageParts with_first = {{"count", std::to_string(total)}, {"first", violations.front().message}};
+  return total == 1 ? tr_format("{count} problem; first: {first}", with_first)
+                    : tr_format("{count} problems; first: {first}", with_first);
 }
 
 ValidationReport validate(const HalfedgeMesh& mesh, size_t max_violations, int threads) {
