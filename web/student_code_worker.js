@@ -43,8 +43,8 @@ const runTest = (message) => {
   }
   postMessage({kind: 'started'});
   const began = performance.now();
-  const text = ccall('meshedit_check_test', 'string', ['string', 'string', 'number'],
-                     [message.suite, kFolder, message.index]);
+  const text = ccall('meshedit_check_test', 'string', ['string', 'string', 'number', 'string'],
+                     [message.suite, kFolder, message.index, message.language || 'en']);
   postMessage({kind: 'result', seconds: (performance.now() - began) / 1000, text});
 };
 

@@ -70,6 +70,7 @@ bool BugReportRoom::sends(const std::string& name) const {
 BugReport BugReportRoom::make() const {
   BugReport report;
   report.app = kAppVersion;
+  if (text_language() != Language::English) report.language = language_code(text_language());
   const LessonRunner& lesson = lessons_.runner();
   if (lesson.loaded()) {
     report.lesson = lesson_name(lesson.path());

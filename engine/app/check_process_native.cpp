@@ -91,7 +91,9 @@ bool CheckProcess::start(const std::filesystem::path& meshedit, const std::files
                                          (host_->folder / "results.json").string(),
                                          "--report",
                                          (host_->folder / "check.json").string(),
-                                         "--progress"};
+                                         "--progress",
+                                         "--language",
+                                         language_code(text_language())};
   if (const std::string why = host_->child.start(args, SpawnedProgram::Output::StderrOnly); !why.empty()) {
     problem_ = tr_format("Check my work could not start the grader {program}: {why}",
                          {{"program", meshedit.string()}, {"why", why}});

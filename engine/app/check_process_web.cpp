@@ -37,7 +37,7 @@ EM_JS(void, page_check_add_file, (const char* relative, const char* bytes, int s
   Module.checkFiles.push({relative: UTF8ToString(relative), bytes: HEAPU8.slice(bytes, bytes + size)});
 });
 // Sends test `index` of `suite` to the worker (made first when there is none); "" when it was sent, else why not.
-EM_JS(char*, page_check_send, (const char* suite, int index), {
+EM_JS(char*, page_check_send, (const char* suite, int index, const char* language), {
   try {
     if (!Module.checkWorker) {
       const worker = new Worker('student_code_worker.js');
@@ -49,7 +49,7 @@ EM_JS(char*, page_check_send, (const char* suite, int index), {
       Module.checkWorker = worker;
     }
     Module.checkWorker.postMessage({run: Module.checkRun, suite: UTF8ToString(suite), index: index,
-                                    files: Module.checkFiles});
+                                    language: UTF8ToString(language), files: Module.checkFiles});
     return allocateUTF8("");
   } catch (e) {
     return allocateUTF8(String(e && e.message ? e.message : e));
@@ -169,7 +169,8 @@ void CheckProcess::run_next_test() {
   host_->began = 0.0;
   host_->log.clear();
   running_test_ = host_->suite->tests()[*next].name;
-  const std::string why = take_page_string(page_check_send(host_->suite_path.c_str(), static_cast<int>(*next)));
+  const std::string why = take_page_string(
+      page_check_send(host_->suite_path.c_str(), static_cast<int>(*next), language_code(text_language())));
   if (why.empty()) return;
   page_check_end_worker();
   running_ = false;

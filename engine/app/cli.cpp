@@ -61,8 +61,9 @@ const CliCommand kCommands[] = {
      "run REPORT.meshedit                  a bug report's last run made again with its code; its diagnosis"},
     {"grade", run_grade,
      "grade --suite SUITE.lua --submission DIR [--results FILE] [--junit FILE] [--tap] [--visible-only]\n"
-     "      [--report FILE] [--progress]\n"
+     "      [--report FILE] [--progress] [--language en|zh]\n"
      "      --suite SUITE.lua --submissions DIR... [--out FOLDER] [--jobs N] [--compare PREVIOUS_MARKS]\n"
+     "      [--language en|zh]\n"
      "                                     grade Lua submissions (a class: also FOLDER/class.html)"},
     {"class-report", run_class_report,
      "class-report RESULTS.json... [-o FOLDER] [--compare PREVIOUS_MARKS]\n"

@@ -151,7 +151,19 @@ int run_grade(const std::vector<std::string>& arguments, std::ostream& out) {
   if (one.has_value() == !many.empty()) {
     throw UsageError("grade needs either --submission DIR or --submissions DIR...");
   }
+  const auto language_option = take_option(args, "--language");
+  std::optional<Language> language;
+  if (language_option) {
+    language = language_by_code(*language_option);
+    if (!language || *language_option != language_code(*language)) {
+      throw UsageError("--language " + *language_option + ": the feedback is written in en or zh");
+    }
+  }
   std::unique_ptr<Suite> suite = Suite::load(*suite_path);
+  // The feedback's language: --language (the window's Check my work gives its own), else the suite's.
+  for (const std::string& problem : set_text_language(language.value_or(suite->language()))) {
+    std::cerr << "meshedit grade: warning: " << problem << "\n";
+  }
   for (const std::string& warning : suite_warnings(*suite)) {
     std::cerr << "meshedit grade: warning: " << suite_path->c_str() << ": " << warning << "\n";
   }

@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/cli_commands.h"
+#include "core/translation.h"
 #include "document/bug_report.h"
 #include "document/settings.h"
 #include "document/student_file.h"
@@ -23,6 +24,8 @@ namespace {
 int replay_report(const std::filesystem::path& path, std::ostream& out) {
   const std::string name = path.filename().string();
   const BugReport report = read_bug_report(path);
+  // The replay's diagnosis in the words the student's window used, so the two compare.
+  set_text_language(language_by_code(report.language).value_or(Language::English));
   // Its run may be of an exercise defined in Lua: each one that does not load is named, and left out.
   for (const std::string& error : load_exercise_folder(default_exercise_folder())) {
     std::cerr << "meshedit: exercise: " << error << '\n';

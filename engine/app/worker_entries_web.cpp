@@ -18,6 +18,7 @@
 #include <string>
 #include <vector>
 
+#include "core/translation.h"
 #include "document/student_file.h"
 #include "exercise/exercise_registry.h"
 #include "exercise/student_call_text.h"
@@ -27,14 +28,16 @@
 #include "script/exception_text.h"
 #include "writeup/writeup_text.h"
 
-// Test `index` of the suite file `suite` on the submission in the folder `folder`: its TestRun as report_json's text
-// (valid until the next call).
-extern "C" EMSCRIPTEN_KEEPALIVE const char* meshedit_check_test(const char* suite, const char* folder, int index) {
+// Test `index` of the suite file `suite` on the submission in the folder `folder`, its feedback in `language` (the
+// page's: "en", "zh"): its TestRun as report_json's text (valid until the next call).
+extern "C" EMSCRIPTEN_KEEPALIVE const char* meshedit_check_test(const char* suite, const char* folder, int index,
+                                                                const char* language) {
   static std::string text;
   using meshedit::RunEnd;
   using meshedit::TestRun;
   TestRun run;
   try {
+    meshedit::set_text_language(meshedit::language_by_code(language).value_or(meshedit::Language::English));
     const std::unique_ptr<meshedit::Suite> loaded = meshedit::Suite::load(suite);
     const meshedit::Submission submission = meshedit::Submission::read(folder);
     run = loaded->run_test_here(static_cast<size_t>(index), submission);

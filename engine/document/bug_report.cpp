@@ -148,7 +148,7 @@ class TableReader {
   std::string where_;  // "report.meshedit: the field " (then the key)
 };
 
-const char* const kKnownFields[] = {"format",    "version", "readable_by", "app",    "lesson",    "step",
+const char* const kKnownFields[] = {"format",    "version", "readable_by", "app",    "language",  "lesson", "step",
                                     "mesh_name", "mesh",    "selection",   "camera", "operation", "files"};
 
 std::vector<std::string> unknown_fields(lua_State* L) {
@@ -260,6 +260,7 @@ std::string format_bug_report(const BugReport& report) {
   out += "  version = " + std::to_string(report.version) + ",\n";
   out += "  readable_by = " + std::to_string(report.readable_by) + ",\n";
   field(out, "  ", "app", report.app);
+  field(out, "  ", "language", report.language);
   field(out, "  ", "lesson", report.lesson);
   if (report.step > 0) out += "  step = " + std::to_string(report.step) + ",\n";
   field(out, "  ", "mesh_name", report.mesh_name);
@@ -299,6 +300,7 @@ BugReport parse_bug_report(std::string_view text, const std::string& name) {
   const TableReader table(L, name + ": the field ");
   check_version(table, report, name);
   if (report.version > kBugReportVersion) report.left_out = unknown_fields(L);
+  report.language = table.text("language");  // one this reader does not know replays in English
   report.lesson = table.text("lesson");
   const long long step = table.integer("step", 0);
   if (step < 0 || (step > 0 && report.lesson.empty())) table.refuse("step", "a lesson's step, 1 or more");

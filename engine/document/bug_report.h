@@ -3,7 +3,7 @@
 //
 //   -- A MeshEdit bug report ...
 //   return {
-//     format = "meshedit bug report", version = 1, readable_by = 1, app = "meshedit 0.1",
+//     format = "meshedit bug report", version = 1, readable_by = 1, app = "meshedit 0.1", language = "zh",
 //     lesson = "4_edge_flip.lua", step = 3,      -- the lesson and its step (1-based), when one runs
 //     mesh_name = "cow.obj", selection = "e12",  -- the document's name and the selection (format_id)
 //     camera = { up = "y", yaw = 30, pitch = 20, distance = 3.5, target = { 0, 0.5, 0 } },  -- the view's camera
@@ -70,6 +70,7 @@ struct BugReport {
   int version = kBugReportVersion;
   int readable_by = kBugReportVersion;    // the oldest reader version that can open it
   std::string app;                        // the MeshEdit that saved it: "meshedit 0.1"
+  std::string language;                   // the window's language when not English ("zh": its verdict's words)
   std::string lesson;                     // the lesson file's name in the lessons folder (or its path); "" none
   size_t step = 0;                        // its step, 1-based; 0 with no lesson
   std::string mesh_name;                  // the document's name ("cow.obj", "test 4.1: its input")

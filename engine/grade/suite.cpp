@@ -48,7 +48,7 @@ constexpr double kInstructionsPerSecond = 2e9;
 const std::set<std::string> kVisibilities = {"visible", "hidden", "after_due_date", "after_published"};
 
 struct Fields {
-  std::optional<std::string> name, number, visibility;
+  std::optional<std::string> name, number, visibility, language;
   std::optional<double> points, time_limit, memory_mb, output_kb;
   std::optional<bool> partial, extra_credit;
   std::optional<std::vector<std::string>> files, reference, allow_api, tags;
@@ -160,8 +160,9 @@ struct SuiteApi {
   static bool get_field(lua_State* L, const char* field) { return lua_getfield(L, 1, field) != LUA_TNIL; }
 
   static void refuse_unknown_fields(lua_State* L, bool test) {
-    static const std::set<std::string> kSuiteFields = {
-        "name", "files", "time_limit", "memory_mb", "visibility", "reference", "allow_api", "partial", "output_kb"};
+    static const std::set<std::string> kSuiteFields = {"name",       "files",     "time_limit", "memory_mb",
+                                                       "visibility", "reference", "allow_api",  "partial",
+                                                       "output_kb",  "language"};
     static const std::set<std::string> kTestFields = {"name",      "points",       "number", "visibility", "time_limit",
                                                       "memory_mb", "partial",      "files",  "reference",  "allow_api",
                                                       "tags",      "extra_credit", "run"};
@@ -214,6 +215,14 @@ struct SuiteApi {
     lua_pop(L, 1);
     if (!test) {
       if (get_field(L, "output_kb")) f.output_kb = number_field(L, -1, "output_kb", 1, 1024);
+      lua_pop(L, 1);
+      if (get_field(L, "language")) {
+        const std::optional<Language> language =
+            lua_type(L, -1) == LUA_TSTRING ? language_by_code(lua_tostring(L, -1)) : std::nullopt;
+        if (!language || std::string(lua_tostring(L, -1)) != language_code(*language))
+          luaL_error(L, "field 'language' must be en or zh (the language the feedback is written in)");
+        f.language = lua_tostring(L, -1);
+      }
       lua_pop(L, 1);
     }
     if (get_field(L, "partial")) f.partial = boolean_field(L, -1, "partial");
@@ -566,6 +575,7 @@ void Suite::finish_loading(const std::string& chunk_name) {
   const Fields& top = d.scopes[0];
   name_ = top.name.value_or(std::filesystem::path(chunk_name).stem().string());  // "flip" for suites/flip.lua
   if (top.output_kb) output_bytes_ = static_cast<size_t>(*top.output_kb * 1024);
+  if (top.language) language_ = language_by_code(*top.language).value_or(Language::English);
   if (d.tests.empty()) throw GradeError("the suite " + chunk_name + " declares no test");
   for (size_t i = 0; i < d.tests.size(); ++i) {
     const Fields& f = d.tests[i].first;

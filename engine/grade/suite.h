@@ -3,7 +3,7 @@
 //
 // Suite file API (globals of the suite's state, besides the usual whitelist and the full `meshedit` module):
 //   suite{ name =, files = {"flip.lua"}, time_limit = 10, memory_mb = 256, visibility = "visible",
-//          reference = {"flip_edge"}, allow_api = {"mesh:flip"}, partial = false, output_kb = 16 }
+//          reference = {"flip_edge"}, allow_api = {"mesh:flip"}, partial = false, output_kb = 16, language = "en" }
 //       defaults for every test (any order in the file; optional)
 //   test{ name = "flip: interior edge", points = 2, number = "1.1", visibility = "after_due_date",
 //         time_limit = 2, memory_mb = 64, partial = true, files = {...}, reference = {...},
@@ -32,6 +32,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/translation.h"
 #include "grade/grade_types.h"
 #include "grade/submission.h"
 #include "script/lua_runtime.h"
@@ -54,6 +55,8 @@ class Suite {
   const std::string& name() const { return name_; }
   const std::vector<TestSpec>& tests() const { return tests_; }
   size_t output_bytes() const { return output_bytes_; }
+  // suite{ language = "zh" }: the language the feedback is written in (core/translation.h); English by default.
+  Language language() const { return language_; }
   // The student files test `spec` loads: its own list (or its suite{}'s), else every .lua file submitted.
   static std::vector<std::string> files_for(const TestSpec& spec, const Submission& submission);
   // Every file some test names (for the report of missing files).
@@ -84,6 +87,7 @@ class Suite {
   std::filesystem::path folder_;  // SUITE_DIR
   std::string chunk_folder_;      // how the suite's own chunk name spells its folder ("" or "suites")
   size_t output_bytes_ = size_t(16) << 10;
+  Language language_ = Language::English;
   Context* current_ = nullptr;
   TestRecorder* recorder_slot_ = nullptr;  // what `expect` records into; null between tests
   struct Declarations;

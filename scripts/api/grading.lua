@@ -16,6 +16,7 @@
 ---@field allow_api? string[] exercise operations student code may call: "mesh:flip", "meshedit.curve", ...
 ---@field partial? boolean
 ---@field output_kb? number
+---@field language? "en"|"zh" suite{} only: the feedback's language (default "en"; `meshedit grade --language` wins)
 
 ---@param spec SuiteSpec
 function suite(spec) end

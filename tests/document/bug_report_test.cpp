@@ -57,6 +57,7 @@ BugReport report_of_a_flip_run(const fs::path& folder, std::string& window_verdi
 TEST(BugReport, ReadsBackByteForByteWhateverTheCodeHolds) {
   BugReport report;
   report.app = "meshedit 0.1";
+  report.language = "zh";  // the verdict below is in the student's window's words
   report.lesson = "04_flip.lua";
   report.step = 3;
   report.mesh_name = "cube \"two\".obj";
@@ -71,6 +72,7 @@ TEST(BugReport, ReadsBackByteForByteWhateverTheCodeHolds) {
   const BugReport read = parse_bug_report(format_bug_report(report), "report.meshedit");
   EXPECT_EQ(read.version, kBugReportVersion);
   EXPECT_EQ(read.app, report.app);
+  EXPECT_EQ(read.language, "zh");
   EXPECT_EQ(read.lesson, "04_flip.lua");
   EXPECT_EQ(read.step, 3u);
   EXPECT_EQ(read.mesh_name, report.mesh_name);
