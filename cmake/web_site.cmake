@@ -4,7 +4,8 @@
 # meshedit.js, meshedit.wasm and meshedit.data, the last holding the files the program reads, packaged under
 # MESHEDIT_DATA_DIR (/meshedit) as in the source tree (lessons/, shaders/, assets/, scripts/student/,
 # scripts/exercises/, tests/grading/suites/: the course's suites Check my work runs), and the two DejaVu fonts where
-# the window looks for them natively. Any static file server serves the folder as it is.
+# the window looks for them natively, with a Chinese font cut to the page's characters. Any static file server serves
+# the folder as it is.
 set(site_dir "${PROJECT_BINARY_DIR}/site")
 set_target_properties(meshedit PROPERTIES RUNTIME_OUTPUT_DIRECTORY "${site_dir}" SUFFIX ".js")
 
@@ -18,6 +19,32 @@ endforeach()
 foreach(font IN LISTS MESHEDIT_FONT_FILES)
   list(APPEND packaged "SHELL:--preload-file ${font}@${font}")
 endforeach()
+
+# The Chinese font, cut down to the characters the page can show (scripts/font_subset.py), beside the DejaVu files
+# where the window looks for it (ui/fonts.h). Without Debian's fonts-wqy-microhei or fonttools' pyftsubset the page is
+# built without it, and the window says so when Chinese is chosen.
+set(MESHEDIT_CJK_FONT /usr/share/fonts/truetype/wqy/wqy-microhei.ttc CACHE FILEPATH "The Chinese font the page's is cut from")
+find_program(MESHEDIT_PYFTSUBSET pyftsubset)
+list(GET MESHEDIT_FONT_FILES 0 first_font)
+get_filename_component(font_dir "${first_font}" DIRECTORY)
+set(cjk_subset "${PROJECT_BINARY_DIR}/fonts/WenQuanYiMicroHei.ttf")
+if(EXISTS "${MESHEDIT_CJK_FONT}" AND MESHEDIT_PYFTSUBSET)
+  file(GLOB subset_texts CONFIGURE_DEPENDS "${PROJECT_SOURCE_DIR}/lessons/*.lua"
+       "${PROJECT_SOURCE_DIR}/assets/translations/*/*.po")
+  add_custom_command(
+    OUTPUT "${cjk_subset}"
+    COMMAND ${CMAKE_COMMAND} -E make_directory "${PROJECT_BINARY_DIR}/fonts"
+    COMMAND python3 "${PROJECT_SOURCE_DIR}/scripts/font_subset.py" "${PROJECT_SOURCE_DIR}"
+            "${imgui_SOURCE_DIR}/imgui_draw.cpp" "${MESHEDIT_CJK_FONT}" "${cjk_subset}"
+    DEPENDS ${subset_texts} "${PROJECT_SOURCE_DIR}/scripts/font_subset.py"
+    COMMENT "The page's Chinese font (scripts/font_subset.py)")
+  add_custom_target(meshedit_cjk_font DEPENDS "${cjk_subset}")
+  add_dependencies(meshedit meshedit_cjk_font)
+  list(APPEND packaged "SHELL:--preload-file ${cjk_subset}@${font_dir}/WenQuanYiMicroHei.ttf")
+  set_property(TARGET meshedit APPEND PROPERTY LINK_DEPENDS "${cjk_subset}")
+else()
+  message(WARNING "no ${MESHEDIT_CJK_FONT} or pyftsubset (fonts-wqy-microhei, fonttools): the page has no Chinese font")
+endif()
 
 target_link_options(meshedit PRIVATE
   ${packaged}
