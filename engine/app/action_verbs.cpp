@@ -15,6 +15,7 @@
 #include "app/editor_app.h"
 #include "app/layout_report.h"
 #include "app/window_host.h"
+#include "core/translation.h"
 #include "document/document_actions.h"
 #include "document/mesh_edits.h"
 #include "exercise/exercise_registry.h"
@@ -200,6 +201,13 @@ std::string up_axis(EditorApp& app, const Action& a) {
   return "";
 }
 
+std::string language(EditorApp& app, const Action& a) {
+  const std::optional<Language> chosen = language_by_code(a.args[0]);
+  if (!chosen || a.args[0] != language_code(*chosen)) throw std::runtime_error("language takes en or zh");
+  app.panels().set_language(*chosen);
+  return "";
+}
+
 std::string animate_edits(EditorApp& app, const Action& a) {
   if (a.args[0] != "on" && a.args[0] != "off") throw std::runtime_error("animate-edits takes on or off");
   app.view().set_edit_animation_policy(a.args[0] == "on" ? EditAnimationPolicy::Always : EditAnimationPolicy::Never);
@@ -291,6 +299,17 @@ std::string expect_lesson_said(EditorApp& app, const Action& a) {
     if (block.find(a.words()) != std::string::npos) return "";
   }
   return "the current step did not say it";
+}
+
+std::string expect_lesson_shown(EditorApp& app, const Action& a) {
+  const LessonRunner& lesson = app.lesson();
+  std::string shown;
+  for (const std::string& block : lesson.said()) {
+    const std::string& text = lesson.texts().in(block, text_language());
+    if (text.find(a.words()) != std::string::npos) return "";
+    shown += (shown.empty() ? "" : " / ") + text.substr(0, 60);
+  }
+  return "the panel does not show it: " + shown;
 }
 
 std::string expect_lesson_error(EditorApp& app, const Action& a) {
@@ -577,6 +596,7 @@ const ActionVerb kVerbs[] = {
      subdivide<true>},
     {"orbit", 2, "orbit DX DY   the camera turns as a drag of DX, DY pixels would turn it", orbit},
     {"up-axis", 1, "up-axis from-file|y|z   View > Up axis: the file's, or Y or Z up; refits the view", up_axis},
+    {"language", 1, "language en|zh   View > Language", language},
     {"animate-edits", 1,
      "animate-edits on|off   flip, split, collapse and their undo and redo play for a quarter "
      "second, whatever the settings say; a scripted run starts with them off",
@@ -668,6 +688,8 @@ const ActionVerb kVerbs[] = {
     {"expect-lesson-step", 2, "expect-lesson-step 3 waiting|finished|failed   the lesson's step and its state",
      expect_lesson_step},
     {"expect-lesson-said", -1, "expect-lesson-said TEXT...   the current step said TEXT", expect_lesson_said},
+    {"expect-lesson-shown", -1, "expect-lesson-shown TEXT...   the panel shows TEXT in the window's language",
+     expect_lesson_shown},
     {"expect-lesson-feedback", -1,
      "expect-lesson-feedback TEXT...   the feedback on the last wrong answer to the "
      "question asked, or the diagnosis of the your_turn waited on, contains TEXT",

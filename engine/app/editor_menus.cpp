@@ -158,7 +158,7 @@ void EditorApp::draw_submenu(CommandId id) {
     }
   } else if (id == CommandId::Language) {
     for (const Language language : kLanguages) {
-      if (ImGui::MenuItem(language_name(language), nullptr, window_language() == language))
+      if (ImGui::MenuItem(language_name(language), nullptr, text_language() == language))
         panels_.set_language(language);
     }
   } else if (id == CommandId::Theme) {

@@ -92,6 +92,11 @@ void PanelsRoom::draw_left_column() {
   const std::string title =
       (lesson ? lesson_text(runner, runner.title()) : std::string(tr("Lessons"))) + "###left column";
   panel.probe = &probe_;
+  // A lesson's new translations the fonts cannot draw yet (a lesson from outside lessons/): loaded at the next frame.
+  if (text_language() != Language::English && runner.texts().size() != glyphs_checked_) {
+    glyphs_checked_ = runner.texts().size();
+    if (!fonts_cover(runner.texts().all_in(text_language()))) look_changed_ = true;
+  }
   if (ImGui::Begin(title.c_str(), nullptr, kColumnFlags)) {
     if (!lesson && view_.mode() == ViewMode::Mesh && inspector_.open) {
       ImGui::BeginChild("inspector", ImVec2(0, ImGui::GetContentRegionAvail().y * 0.55f), true);
@@ -235,8 +240,8 @@ void PanelsRoom::apply_settings(const Settings& settings) {
 
 void PanelsRoom::set_language(Language language) {
   settings_.language = language_code(language);
-  if (language == window_language()) return;
-  for (const std::string& problem : set_window_language(language)) document_.message(Severity::Warning, problem);
+  if (language == text_language()) return;
+  for (const std::string& problem : set_text_language(language)) document_.message(Severity::Warning, problem);
   look_changed_ = true;  // the fonts again, with the glyphs the language needs
 }
 

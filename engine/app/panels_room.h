@@ -91,7 +91,8 @@ class PanelsRoom {
   CheckRoom& check_;
   LessonRoom& lessons_;
   Settings settings_;
-  bool look_changed_ = true;  // the window applies the look before the first frame
+  bool look_changed_ = true;   // the window applies the look before the first frame
+  size_t glyphs_checked_ = 0;  // how many of the lesson's translations the fonts were checked against
   float font_pixels_ = Settings::kDefaultFontPx;
   WindowLayout layout_;
   UiProbe probe_;

@@ -117,6 +117,16 @@ std::vector<TextPiece> break_pieces(std::string_view line) {
   return pieces;
 }
 
+std::string without_spaces_between_wide(std::string_view text) {
+  std::string out;
+  out.reserve(text.size());
+  for (size_t i = 0; i < text.size(); ++i) {
+    if (text[i] == ' ' && !out.empty() && i + 1 < text.size() && joins_without_space(out, text.substr(i + 1))) continue;
+    out += text[i];
+  }
+  return out;
+}
+
 bool joins_without_space(std::string_view before, std::string_view after) {
   if (before.empty() || after.empty()) return false;
   size_t start = before.size() - 1;

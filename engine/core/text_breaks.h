@@ -32,6 +32,11 @@ std::vector<TextPiece> break_pieces(std::string_view line);
 // in Chinese) rather than with a space.
 bool joins_without_space(std::string_view before, std::string_view after);
 
+// `text` without the spaces that stand between two wide characters: markdown written "是 **半边** 结构" for its marks
+// reads "是 半边 结构" once they are gone, and Chinese puts no space between its own characters ("是半边结构"). Spaces
+// beside Latin text, numbers and ids stay ("按 W 键").
+std::string without_spaces_between_wide(std::string_view text);
+
 // Every line of `text` wrapped so no line is wider than `width` as `measure` says, at the breaks above; a piece wider
 // than a whole line keeps a line of its own. The text's own line breaks stay.
 template <typename Measure>

@@ -2,6 +2,7 @@
 #include "core/translation.h"
 
 #include <algorithm>
+#include <atomic>
 #include <cctype>
 #include <cstdlib>
 #include <system_error>
@@ -73,13 +74,13 @@ std::string_view trimmed(std::string_view s) {
   return s;
 }
 
-struct WindowTexts {
-  Language language = Language::English;
+struct ProcessTexts {
+  std::atomic<Language> language{Language::English};  // read by the window's worker threads too
   std::array<std::optional<Catalog>, kLanguageCount> catalogs;
 };
 
-WindowTexts& window_texts() {
-  static WindowTexts texts;
+ProcessTexts& process_texts() {
+  static ProcessTexts texts;
   return texts;
 }
 
@@ -264,23 +265,26 @@ Catalog read_catalog(Language language, const fs::path& folder) {
 
 fs::path translations_folder() { return data_folder("assets") / "translations"; }
 
-Language window_language() { return window_texts().language; }
+Language text_language() { return process_texts().language; }
 
 const Catalog& catalog_of(Language language) {
-  std::optional<Catalog>& catalog = window_texts().catalogs[size_t(language)];
+  std::optional<Catalog>& catalog = process_texts().catalogs[size_t(language)];
   if (!catalog) catalog = read_catalog(language, translations_folder());
   return *catalog;
 }
 
-std::vector<std::string> set_window_language(Language language) {
-  window_texts().language = language;
-  return catalog_of(language).problems();
+std::vector<std::string> set_text_language(Language language) {
+  const Catalog& catalog = catalog_of(language);  // read before a worker thread can see the language
+  process_texts().language = language;
+  return catalog.problems();
 }
 
-void set_catalog(Language language, Catalog catalog) { window_texts().catalogs[size_t(language)] = std::move(catalog); }
+void set_catalog(Language language, Catalog catalog) {
+  process_texts().catalogs[size_t(language)] = std::move(catalog);
+}
 
 const char* tr(const char* english) {
-  const Language language = window_language();
+  const Language language = text_language();
   if (language == Language::English) return english;
   const std::string* shown = catalog_of(language).find(english);
   return shown ? shown->c_str() : english;
@@ -289,7 +293,7 @@ const char* tr(const char* english) {
 std::string tr(const std::string& english) { return tr(english.c_str()); }
 
 const char* tr_label(const char* english) {
-  const Language language = window_language();
+  const Language language = text_language();
   if (language == Language::English) return english;
   const char* shown = catalog_of(language).label(english);
   return shown ? shown : english;

@@ -7,12 +7,13 @@
 // "{count} faces reversed", and a translation may put the parts in any order but must use the same names.
 //
 // Invariants:
-// - tr(english) returns `english` itself (the same pointer) when the window's language is English or the catalog has
+// - tr(english) returns `english` itself (the same pointer) when the text language is English or the catalog has
 //   no translation, so English output is byte for byte what the code wrote; otherwise a pointer the catalog owns,
 //   valid until that catalog is replaced (set_catalog).
 // - A catalog holds only entries whose placeholders match their msgid's; an entry that does not match is left out and
 //   named in the catalog's problems, so a translation can never drop a number or an id from a message.
-// - The window's language and the catalogs are one per process, read and set on the window's thread only.
+// - The text language and the catalogs are one per process. They are set on the main thread, before any other thread
+//   reads them (the window's worker threads, the grader's tests); catalog_of is read-only once a language is set.
 #pragma once
 
 #include <array>
@@ -93,16 +94,17 @@ Catalog read_catalog(Language language, const std::filesystem::path& folder);
 // The folder holding one subfolder of PO files per language (data_folder("assets") / "translations").
 std::filesystem::path translations_folder();
 
-// The window's language, English until set. set_window_language chooses it and returns the problems of its catalog
-// (empty when all is well), which is read from translations_folder() the first time a language is asked for.
-Language window_language();
-std::vector<std::string> set_window_language(Language language);
+// The language of the texts this process writes for a student, English until set: the window's (View > Language) or
+// the grader's (its suite's `language`). set_text_language chooses it and returns the problems of its catalog (empty
+// when all is well), read from translations_folder() then, so other threads only ever read a catalog.
+Language text_language();
+std::vector<std::string> set_text_language(Language language);
 // The catalog of `language` (read the first time; English's is empty).
 const Catalog& catalog_of(Language language);
 // Replaces the catalog of `language` without reading files (the tests).
 void set_catalog(Language language, Catalog catalog);
 
-// The window's text for `english` (see the invariants).
+// The text for `english` in the text language (see the invariants).
 const char* tr(const char* english);
 std::string tr(const std::string& english);
 // A widget label whose ImGui id stays the English one in every language: "Lesson" -> "课程###Lesson", so a window,

@@ -114,6 +114,12 @@ const std::string& LessonTexts::in(const std::string& english, Language language
   return english;
 }
 
+std::string LessonTexts::all_in(Language language) const {
+  std::string all;
+  for (const auto& [english, text] : by_english_) all += text.in(language);
+  return all;
+}
+
 void LessonTexts::clear() {
   by_english_.clear();
   problems_.clear();

@@ -33,6 +33,9 @@ class LessonTexts {
   const std::string& in(const std::string& english, Language language) const;
   // Forgets every text (a reload).
   void clear();
+  // How many texts have a translation, and all of them in `language` one after another (what a font must draw).
+  size_t size() const { return by_english_.size(); }
+  std::string all_in(Language language) const;
 
   // "lesson.lua:12: the zh text drops `h.next` and 3 of its English: ... / ...", "lesson.lua:4: 'fr' is not a
   // language MeshEdit knows (en, zh): the text is shown in English".

@@ -5,11 +5,12 @@
 
 #include "core/translation.h"
 #include "core/value_format.h"
+#include "ui/flow_layout.h"
 
 namespace meshedit {
 namespace {
 
-void wrapped(const std::string& text) { ImGui::TextWrapped("%s", text.c_str()); }
+void wrapped(const std::string& text) { text_wrapped_at_spaces(text); }
 
 void coloured(const ImVec4& colour, const std::string& text) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);

@@ -276,7 +276,7 @@ void table_text_row(const char* name, ImU32 colour, const std::string& text) {
   ImGui::TextColored(c, "%s", name);
   ImGui::TableNextColumn();
   ImGui::PushStyleColor(ImGuiCol_Text, c);
-  ImGui::TextWrapped("%s", text.c_str());
+  text_wrapped_at_spaces(text);
   ImGui::PopStyleColor();
 }
 
@@ -328,7 +328,7 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
     ImGui::TextColored(colour, "%d", k);
     ImGui::TableNextColumn();
     ImGui::PushStyleColor(ImGuiCol_Text, colour);
-    ImGui::TextWrapped("%s", format_points(levels[k]).c_str());
+    text_wrapped_at_spaces(format_points(levels[k]));
     ImGui::PopStyleColor();
   }
   if (state.show_split) {
@@ -343,7 +343,7 @@ void draw_level_table(const CurveEditorState& state, const CurveMineLevels* mine
       ImGui::TextColored(colour, "%s", tr(name));
       ImGui::TableNextColumn();
       ImGui::PushStyleColor(ImGuiCol_Text, colour);
-      ImGui::TextWrapped("%s", format_points(*points).c_str());
+      text_wrapped_at_spaces(format_points(*points));
       ImGui::PopStyleColor();
     }
   }

@@ -11,6 +11,7 @@
 #include "core/translation.h"
 #include "core/value_format.h"
 #include "exercise/scripted_exercise.h"
+#include "ui/flow_layout.h"
 #include "ui/theme.h"
 #include "ui/upsample_phase_view.h"
 
@@ -22,11 +23,11 @@ ImVec4 failed_colour() { return im_colour(ui_palette().error); }
 ImVec4 passed_colour() { return im_colour(ui_palette().ok); }
 ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }  // as the lesson panel's hints
 
-void text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
+void text(const std::string& line) { text_wrapped_at_spaces(line); }
 
 void coloured(const ImVec4& colour, const std::string& line) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);
-  ImGui::TextWrapped("%s", line.c_str());
+  text_wrapped_at_spaces(line);
   ImGui::PopStyleColor();
 }
 

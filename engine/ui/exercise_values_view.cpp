@@ -9,6 +9,7 @@
 #include "core/value_format.h"
 #include "exercise/scripted_exercise.h"
 #include "exercise/value_compare.h"
+#include "ui/flow_layout.h"
 #include "ui/theme.h"
 
 namespace meshedit {
@@ -119,7 +120,7 @@ void draw_value_tables(const ExerciseRun& run, const std::vector<ValueRow>& rows
       for (const std::string* value : {&row.mine, &row.reference}) {
         ImGui::TableNextColumn();
         if (row.differs) ImGui::TableSetBgColor(ImGuiTableBgTarget_CellBg, im_colour_u32(ui_palette().differing_cell));
-        ImGui::TextWrapped("%s", value->c_str());
+        text_wrapped_at_spaces(*value);
       }
     }
   }

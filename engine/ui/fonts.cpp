@@ -33,6 +33,12 @@ ImFont* add_font(ImFontAtlas& atlas, const fs::path& path, float pixels, ImFontC
   return atlas.AddFontFromMemoryTTF(data, int(bytes.size()), pixels, &config);
 }
 
+// Wide characters the texts shown needed beyond the shipped ones (fonts_cover), added at the next load.
+std::string& extra_wide_text() {
+  static std::string text;
+  return text;
+}
+
 // Every wide character (core/text_breaks.h) of the window's catalog in `language` and of the shipped lessons, with
 // CJK punctuation and full-width forms: the glyphs the Chinese font adds to the atlas. Static: ImGui reads the ranges
 // when it builds the atlas, after load_fonts returns.
@@ -41,7 +47,7 @@ const ImWchar* wide_glyph_ranges(Language language) {
   ImFontGlyphRangesBuilder builder;
   static const ImWchar kPunctuation[] = {0x3000, 0x303F, 0xFF00, 0xFFEF, 0x2010, 0x2027, 0};
   builder.AddRanges(kPunctuation);
-  std::string text = catalog_of(language).all_translations();
+  std::string text = catalog_of(language).all_translations() + extra_wide_text();
   std::error_code ec;
   for (fs::directory_iterator it(data_folder("lessons"), ec), end; !ec && it != end; it.increment(ec)) {
     if (it->path().extension() == ".lua") text += read_file_bytes(it->path()).bytes;
@@ -57,11 +63,16 @@ const ImWchar* wide_glyph_ranges(Language language) {
   return ranges.Data;
 }
 
-// The first of the Chinese font files that exists: beside the DejaVu files, else Debian's fonts-wqy-microhei.
+// The first of the Chinese font files that exists: beside the DejaVu files (the page's cut-down copy, or an
+// installed one), else Debian's fonts-wqy-microhei.
 fs::path wide_font_file() {
   std::error_code ec;
-  const fs::path beside = font_folder() / "wqy-microhei.ttc";
-  return fs::is_regular_file(beside, ec) ? beside : fs::path("/usr/share/fonts/truetype/wqy/wqy-microhei.ttc");
+  for (const char* name : {"WenQuanYiMicroHei.ttf", "wqy-microhei.ttc"}) {
+    if (const fs::path beside = font_folder() / name; fs::is_regular_file(beside, ec)) return beside;
+  }
+  const char* dir = std::getenv("MESHEDIT_FONT_DIR");
+  if (dir && *dir) return font_folder() / "WenQuanYiMicroHei.ttf";  // that folder only (the tests)
+  return "/usr/share/fonts/truetype/wqy/wqy-microhei.ttc";
 }
 
 // Merges the Chinese glyphs into the last font added; a warning when the font file is missing.
@@ -108,7 +119,7 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
     out.warning = "no " + text.string() + " (install fonts-dejavu-core): using ImGui's built-in font";
     return out;
   }
-  const Language language = window_language();
+  const Language language = text_language();
   const ImWchar* wide = language == Language::English ? nullptr : wide_glyph_ranges(language);
   if (wide) out.warning = merge_wide_glyphs(atlas, out.pixels, wide);
   if (!add_font(atlas, mono, out.pixels, config)) {
@@ -118,6 +129,23 @@ FontsLoaded load_fonts(float font_px, float scale, float raster_scale) {
   }
   out.real = true;
   return out;
+}
+
+bool fonts_cover(const std::string& text) {
+  const ImFontAtlas& atlas = *ImGui::GetIO().Fonts;
+  if (atlas.Fonts.Size == 0) return true;
+  const ImFont& font = *atlas.Fonts[0];
+  bool all = true;
+  for (size_t i = 0; i < text.size();) {
+    size_t n = 1;
+    const char32_t c = utf8_at(text, i, &n);
+    if (wide_char(c) && c <= 0xFFFF && !font.FindGlyphNoFallback(ImWchar(c))) {
+      extra_wide_text().append(text, i, n);
+      all = false;
+    }
+    i += n;
+  }
+  return all;
 }
 
 ImFont* mono_font() {

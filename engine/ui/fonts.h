@@ -1,8 +1,10 @@
 // The window's type: Debian's DejaVu Sans for text and DejaVu Sans Mono for ids and tables, rasterised at the size
 // the student chose times the monitor's content scale, so text is sharp on HiDPI screens. Without the font files
 // ImGui's own font is used and the warning says which file was missing. When the window's language is Chinese
-// (core/translation.h), the glyphs of Debian's WenQuanYi Micro Hei (fonts-wqy-microhei) that the language's catalog
-// and the shipped lessons use are merged into both fonts, so the atlas holds only the characters the texts need.
+// (core/translation.h), the glyphs of WenQuanYi Micro Hei that the language's catalog and the shipped lessons use are
+// merged into both fonts, so the atlas holds only the characters the texts need: WenQuanYiMicroHei.ttf (the page's
+// cut-down copy) or wqy-microhei.ttc beside the DejaVu files, else Debian's fonts-wqy-microhei (not with
+// MESHEDIT_FONT_DIR set: that folder only).
 //
 // Invariants:
 // - load_fonts replaces everything in ImGui's font atlas: the first font is the text font (ImGui's default), the
@@ -30,6 +32,11 @@ struct FontsLoaded {
 // `raster_scale` times that and drawn at 1 / raster_scale (for a framebuffer denser than the window's coordinates).
 // Needs a current ImGui context, outside a frame.
 FontsLoaded load_fonts(float font_px, float scale, float raster_scale = 1.0f);
+
+// Whether the text font draws every wide character of `text` (core/text_breaks.h). When it does not, the missing
+// characters are remembered, so that the next load_fonts adds them (a lesson from outside the shipped lessons/
+// folder), and false is returned: the caller loads the fonts again.
+bool fonts_cover(const std::string& text);
 
 // The monospace font, for ids, pointer tables and code.
 ImFont* mono_font();

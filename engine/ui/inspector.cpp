@@ -9,6 +9,7 @@
 
 #include "core/translation.h"
 #include "core/value_format.h"
+#include "ui/flow_layout.h"
 
 namespace meshedit {
 namespace {

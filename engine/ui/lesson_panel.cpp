@@ -37,7 +37,7 @@ void draw_lesson_list(LessonPanelState& state) {
                                        {{"folder", state.lessons_dir.string()}})
                                  .c_str());
   } else {
-    ImGui::TextWrapped("%s", tr("Pick a lesson."));
+    text_wrapped_at_spaces(tr("Pick a lesson."));
   }
   ImGui::Separator();
   if (state.lesson_files.empty()) ImGui::TextDisabled("%s", tr("(no lessons found)"));
@@ -47,7 +47,8 @@ void draw_lesson_list(LessonPanelState& state) {
 }
 
 // Lesson text is written with line breaks inside paragraphs; the panel wraps by itself, so a single line
-// break becomes a space. Blank lines (paragraphs) and lines starting a list item stay.
+// break becomes a space (nothing between two Chinese characters, which also lose the spaces their markdown's marks
+// needed). Blank lines (paragraphs) and lines starting a list item stay.
 std::string reflow(const std::string& text) {
   std::string out;
   out.reserve(text.size());
@@ -58,7 +59,7 @@ std::string reflow(const std::string& text) {
     else if (!joins_without_space(std::string_view(text).substr(0, i), std::string_view(text).substr(i + 1)))
       out += ' ';
   }
-  return out;
+  return without_spaces_between_wide(out);
 }
 
 ReloadOutcome run_reload(LessonRunner& runner, LessonPanelState& state) {
@@ -75,10 +76,10 @@ void draw_block(const LessonRunner& runner, const LessonBlock& block) {
       const LessonLive& live = runner.lives()[block.index];
       if (!live.error.empty()) {
         ImGui::PushStyleColor(ImGuiCol_Text, error_colour());
-        ImGui::TextWrapped("%s", live.error.c_str());
+        text_wrapped_at_spaces(live.error);
         ImGui::PopStyleColor();
       } else {
-        text_wrapped_at_spaces(reflow(markdown_to_plain(live.local.in(window_language()))));
+        text_wrapped_at_spaces(reflow(markdown_to_plain(live.local.in(text_language()))));
       }
       break;
     }
@@ -108,17 +109,17 @@ void draw_your_turn_wait(const LessonRunner& runner, LessonPanelState& state, co
   const float width = ImGui::GetContentRegionAvail().x;
   ImGui::PushStyleColor(ImGuiCol_Text, ImGui::GetStyleColorVec4(ImGuiCol_TextDisabled));
   if (is_mesh_exercise(verdict->exercise)) {
-    ImGui::TextWrapped("%s", tr_format("Runs your {function} on this input in the Exercises tab (X): the pointers it "
-                                       "changed beside the reference's, and your writes one by one.",
-                                       {{"function", verdict->function}})
-                                 .c_str());
+    text_wrapped_at_spaces(
+        tr_format("Runs your {function} on this input in the Exercises tab (X): the pointers it "
+                  "changed beside the reference's, and your writes one by one.",
+                  {{"function", verdict->function}}));
   } else {
     const char* shows = verdict->exercise == Exercise::CurveStep
                             ? "Shows this input in the curve view with its \"mine\" on (M): your {function} beside the "
                               "reference's."
                             : "Shows this input in the patch view with its \"mine\" on (M): your {function} beside the "
                               "reference's.";
-    ImGui::TextWrapped("%s", tr_format(shows, {{"function", verdict->function}}).c_str());
+    text_wrapped_at_spaces(tr_format(shows, {{"function", verdict->function}}));
   }
   ImGui::PopStyleColor();
   // A new run, or the text wrapped anew (a resize): the diagnosis and the button come into sight, once.
@@ -140,7 +141,7 @@ void draw_your_turn_running(LessonRunner& runner, LessonPanelState& state, const
   if (stop) runner.stop_student_code();
   ImGui::SameLine();
   const std::string seconds = format_fixed(runner.student_code_seconds(), 1);
-  ImGui::TextWrapped("%s", tr_format("running your code ({seconds} s)", {{"seconds", seconds}}).c_str());
+  text_wrapped_at_spaces(tr_format("running your code ({seconds} s)", {{"seconds", seconds}}));
 }
 
 void draw_step_body(LessonRunner& runner, LessonPanelState& state) {
@@ -233,7 +234,7 @@ void draw_lesson_panel(LessonRunner& runner, LessonPanelState& state) {
 void draw_lesson_panel_contents(LessonRunner& runner, LessonPanelState& state) {
   if (!runner.error().empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, error_colour());
-    ImGui::TextWrapped("%s", runner.error().c_str());
+    text_wrapped_at_spaces(runner.error());
     ImGui::PopStyleColor();
     ImGui::Separator();
   }

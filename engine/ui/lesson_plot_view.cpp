@@ -99,7 +99,7 @@ void draw_lesson_plot(const LessonRunner& runner, const LessonPlot& plot) {
   }
   if (!plot.error.empty()) {
     ImGui::PushStyleColor(ImGuiCol_Text, im_colour(palette.error));
-    ImGui::TextWrapped("%s", plot.error.c_str());
+    text_wrapped_at_spaces(plot.error);
     ImGui::PopStyleColor();
   }
 }

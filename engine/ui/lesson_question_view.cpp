@@ -5,6 +5,7 @@
 
 #include <imgui.h>
 
+#include "core/text_breaks.h"
 #include "core/translation.h"
 #include "lesson/lesson_text.h"
 #include "ui/flow_layout.h"
@@ -57,7 +58,7 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
   const LessonWait& wait = runner.waiting_for();
   if (!wait.is_question()) return;
   const Palette& palette = ui_palette();
-  text_wrapped_at_spaces(markdown_to_plain(lesson_text(runner, wait.question)));
+  text_wrapped_at_spaces(without_spaces_between_wide(markdown_to_plain(lesson_text(runner, wait.question))));
   // Read what the panel shows now: a button below may deliver an answer, which changes the wait.
   const std::string feedback = lesson_text(runner, wait.feedback);
   const std::string hint = wait.hint_shown() ? lesson_text(runner, wait.hint) : std::string();
@@ -71,11 +72,11 @@ void draw_lesson_question(LessonRunner& runner, LessonAnswerBox& box, UiProbe* p
 }
 
 const std::string& lesson_text(const LessonRunner& runner, const std::string& english) {
-  return runner.texts().in(english, window_language());
+  return runner.texts().in(english, text_language());
 }
 
 void draw_lesson_answered(const LessonRunner& runner, const LessonJudgement& judgement) {
-  text_wrapped_at_spaces(markdown_to_plain(lesson_text(runner, judgement.question)));
+  text_wrapped_at_spaces(without_spaces_between_wide(markdown_to_plain(lesson_text(runner, judgement.question))));
   const std::string& given = lesson_text(runner, judgement.given);
   coloured_text(ui_palette().ok,
                 judgement.feedback.empty()

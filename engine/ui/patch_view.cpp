@@ -143,7 +143,7 @@ void table_row(const std::string& step, std::span<const glm::dvec3> points, glm:
   ImGui::TableNextColumn();
   ImGui::TextColored(im_colour(colour), "%s", step.c_str());
   ImGui::TableNextColumn();
-  ImGui::TextWrapped("%s", format_points(points).c_str());
+  text_wrapped_at_spaces(format_points(points));
 }
 
 void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mine) {
@@ -173,7 +173,7 @@ void draw_evaluation_table(const PatchViewState& state, const PatchMinePoint* mi
 void draw_mine_verdict(const PatchMinePoint& mine) {
   const glm::vec4 colour = mine_colour(mine);
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
-  ImGui::TextWrapped("%s", tr_format("mine: {message}", {{"message", mine.message}}).c_str());
+  text_wrapped_at_spaces(tr_format("mine: {message}", {{"message", mine.message}}));
   if (!mine.equal) {
     for (const std::string& line : mine.details) ImGui::TextWrapped("- %s", line.c_str());
   }
@@ -226,18 +226,18 @@ void draw_patch_view_panel_contents(PatchViewState& state, BezierMine* mine) {
 
   update_tessellation(state);
   const PatchTessellation& cache = state.tessellation;
-  ImGui::TextWrapped("%s", tr_format("{patches} patches -> {vertices} vertices, {triangles} triangles (built {builds} "
-                                     "times)",
-                                     {{"patches", std::to_string(count)},
-                                      {"vertices", std::to_string(cache.polygons.num_vertices())},
-                                      {"triangles", std::to_string(cache.polygons.num_faces())},
-                                      {"builds", std::to_string(cache.rebuilds)}})
-                               .c_str());
+  text_wrapped_at_spaces(
+      tr_format("{patches} patches -> {vertices} vertices, {triangles} triangles (built {builds} "
+                "times)",
+                {{"patches", std::to_string(count)},
+                 {"vertices", std::to_string(cache.polygons.num_vertices())},
+                 {"triangles", std::to_string(cache.polygons.num_faces())},
+                 {"builds", std::to_string(cache.rebuilds)}}));
   if (!cache.error.empty()) ImGui::TextColored(im_colour(palette().error), "%s", cache.error.c_str());
   if (yours) draw_mine_verdict(*yours);  // above the table, so it shows without scrolling
 
   ImGui::Separator();
-  ImGui::TextWrapped("%s", tr("Separable evaluation: each row at u, then the column through them at v"));
+  text_wrapped_at_spaces(tr("Separable evaluation: each row at u, then the column through them at v"));
   draw_evaluation_table(state, yours);
 }
 

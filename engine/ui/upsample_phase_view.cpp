@@ -8,12 +8,13 @@
 
 #include "core/translation.h"
 #include "core/value_format.h"
+#include "ui/flow_layout.h"
 #include "ui/theme.h"
 
 namespace meshedit {
 namespace {
 
-void text(const std::string& line) { ImGui::TextWrapped("%s", line.c_str()); }
+void text(const std::string& line) { text_wrapped_at_spaces(line); }
 
 void coloured(const ImVec4& colour, const std::string& line) {
   ImGui::PushStyleColor(ImGuiCol_Text, colour);

@@ -85,11 +85,12 @@ inline WindowRun run_window(const std::string& display, const fs::path& mesh, co
   const fs::path script = dir / "actions.txt";
   std::ofstream(script) << actions;
   const fs::path log = dir / "log.txt";
-  // Settings live in the test's folder: no test reads or changes another's (or the user's) settings.
-  const std::string command = "XDG_CONFIG_HOME='" + dir.string() + "' " + environment + " DISPLAY=" + display +
-                              " timeout 120 '" + std::string(MESHEDIT_BINARY) + "' '" + mesh.string() + "'" +
-                              (size.empty() ? std::string() : " --size " + size) + " --actions '" + script.string() +
-                              "' >'" + log.string() + "' 2>&1";
+  // Settings live in the test's folder: no test reads or changes another's (or the user's) settings. The locale is
+  // English unless `environment` names another (a window with no language chosen follows it).
+  const std::string command = "XDG_CONFIG_HOME='" + dir.string() + "' LC_ALL= LC_MESSAGES= LANG=C.UTF-8 " +
+                              environment + " DISPLAY=" + display + " timeout 120 '" + std::string(MESHEDIT_BINARY) +
+                              "' '" + mesh.string() + "'" + (size.empty() ? std::string() : " --size " + size) +
+                              " --actions '" + script.string() + "' >'" + log.string() + "' 2>&1";
   WindowRun run;
   const int raw = std::system(command.c_str());
   run.status = WIFEXITED(raw) ? WEXITSTATUS(raw) : -1;

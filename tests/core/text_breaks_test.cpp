@@ -61,6 +61,11 @@ TEST(TextBreaks, ALoneLineBreakBetweenChineseJoinsWithoutASpace) {
   EXPECT_FALSE(joins_without_space("the", "mesh"));
 }
 
+TEST(TextBreaks, SpacesBetweenChineseCharactersGoAndSpacesBesideLatinTextStay) {
+  EXPECT_EQ(without_spaces_between_wide("是 半边 结构，按 W 键走到 h12 。"), "是半边结构，按 W 键走到 h12 。");
+  EXPECT_EQ(without_spaces_between_wide("the half edge"), "the half edge");
+}
+
 TEST(TextBreaks, InvalidUtf8IsCutOnlyAtSpaces) {
   EXPECT_EQ(pieces("a\xff\xfe b"), (std::vector<std::string>{"a\xff\xfe", "_b"}));
 }

@@ -15,7 +15,7 @@ namespace {
 struct WindowLanguageGuard {
   ~WindowLanguageGuard() {
     set_catalog(Language::Chinese, read_catalog(Language::Chinese, testing::source_dir() / "assets/translations"));
-    set_window_language(Language::English);
+    set_text_language(Language::English);
   }
 };
 
@@ -75,10 +75,10 @@ TEST(Translation, TheWindowIsEnglishByteForByteAndChineseWhereTheCatalogSays) {
   catalog.add("{count} faces", "{count} 个面", "test");
   set_catalog(Language::Chinese, catalog);
   const char* english = "Lesson";
-  set_window_language(Language::English);
+  set_text_language(Language::English);
   EXPECT_EQ(tr(english), english) << "English is the very pointer the code gave";
   EXPECT_EQ(tr_label(english), english);
-  set_window_language(Language::Chinese);
+  set_text_language(Language::Chinese);
   EXPECT_STREQ(tr(english), "课程");
   EXPECT_STREQ(tr_label("Lesson"), "课程###Lesson") << "the ImGui id stays the English";
   EXPECT_STREQ(tr_label("Lesson##left"), "课程###Lesson##left");

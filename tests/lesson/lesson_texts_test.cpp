@@ -1,7 +1,7 @@
 // A lesson's texts in two languages (lesson/lesson_texts.h): the logic sees the English, the runner keeps the Chinese
 // for the panel, and what is wrong with a translation is named with the lesson's line. The shipped lessons the course
-// translates (welcome, 1 to 6) have a Chinese twin for every text their runs show, each keeping its English's code and
-// numbers.
+// ships (welcome, 1 to 7 and the scan to repair) have a Chinese twin for every text their runs show, each keeping its
+// English's code and numbers.
 #include <gtest/gtest.h>
 
 #include <filesystem>
@@ -9,6 +9,7 @@
 #include <sstream>
 #include <string>
 
+#include "exercise/exercise_registry.h"
 #include "lesson/headless_host.h"
 #include "lesson/lesson_headless.h"
 #include "lesson/lesson_runner.h"
@@ -89,12 +90,13 @@ TEST(LessonTexts, ATextTableWithoutEnglishIsAnErrorAtTheLessonsLine) {
   EXPECT_NE(runner.error().find("no_en.lua:2: say: expected text"), std::string::npos) << runner.error();
 }
 
-// Each lesson the course translates, run headless with its answers (and a wrong answer where the answers give one):
+// Each shipped lesson, run headless with its answers (and a wrong answer where the answers give one):
 // no text the run shows lacks its Chinese twin, and no twin drops its English's code or numbers.
 TEST(LessonTexts, EveryTranslatedLessonHasAChineseTwinForEveryTextItShows) {
   const auto source = testing::source_dir();
+  ASSERT_EQ(load_exercise_folder(source / "scripts" / "exercises"), std::vector<std::string>{});  // as the CLI does
   for (const char* stem : {"welcome", "1_de_casteljau", "2_bezier_patches", "3_halfedge_walks", "4_edge_flip",
-                           "5_edge_split", "6_loop_subdivision"}) {
+                           "5_edge_split", "6_loop_subdivision", "7_catmull_clark", "byo_mesh"}) {
     SCOPED_TRACE(stem);
     std::ostringstream out;
     const HeadlessOutcome outcome =
