@@ -73,7 +73,8 @@ Check EditorApp::carry_out(CommandId id, CommandStart start) {  // NOLINT(readab
     case I::SaveAs: show_open_panel_ = true; return Check::yes();
     case I::OpenRecent:
     case I::UpAxis:
-    case I::Theme: return Check::no(std::string(command(id).menu) + " is a submenu");
+    case I::Theme:
+    case I::Language: return Check::no(std::string(command(id).menu) + " is a submenu");
     case I::OpenRepaired: return said(open_repaired());
     case I::Screenshot:
       // The menu's name is the one a page's browser downloads; a key press names each picture by its time.
