@@ -175,7 +175,7 @@ void draw_mine_verdict(const PatchMinePoint& mine) {
   ImGui::PushStyleColor(ImGuiCol_Text, im_colour(colour));
   text_wrapped_at_spaces(tr_format("mine: {message}", {{"message", mine.message}}));
   if (!mine.equal) {
-    for (const std::string& line : mine.details) ImGui::TextWrapped("- %s", line.c_str());
+    for (const std::string& line : mine.details) text_wrapped_at_spaces("- " + line);
   }
   ImGui::PopStyleColor();
 }
