@@ -213,8 +213,9 @@ bool draw_inspector_contents(MeshDocument& doc, Selection& selection, InspectorS
   const ElementRef before = selection.selected;
   const ElementRef e = selection.selected;
   if (!e.valid()) {
-    text_wrapped_at_spaces(tr("Nothing selected. Click an element in the view or a row of the pointer tables; "
-                              "N T V E F H walk the pointers."));
+    text_wrapped_at_spaces(
+        tr("Nothing selected. Click an element in the view or a row of the pointer tables; "
+           "N T V E F H walk the pointers."));
     return false;
   }
   const RefState st = reference_state(doc.mesh, e);

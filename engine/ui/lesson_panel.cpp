@@ -32,9 +32,10 @@ ImVec4 hint_colour() { return im_colour(ui_palette().emphasis); }
 
 void draw_lesson_list(LessonPanelState& state) {
   if (state.lessons_editable) {
-    text_wrapped_at_spaces(tr_format("Pick a lesson. Each one is a Lua file in {folder}; edit it and save, and the "
-                                     "lesson reloads.",
-                                     {{"folder", state.lessons_dir.string()}}));
+    text_wrapped_at_spaces(
+        tr_format("Pick a lesson. Each one is a Lua file in {folder}; edit it and save, and the "
+                  "lesson reloads.",
+                  {{"folder", state.lessons_dir.string()}}));
   } else {
     text_wrapped_at_spaces(tr("Pick a lesson."));
   }
