@@ -69,43 +69,23 @@ Check read_fan(const HalfedgeMesh& mesh, HalfedgeId start, FaceId f0, FaceId f1,
   return Check::yes();
 }
 
-}  // namespace
+// The corners around an edge to collapse, as can_collapse reads them (d: none on a boundary edge).
+struct CollapseCorners {
+  EdgeId e;
+  bool interior = false;
+  VertexId a, b, c, d;
+  FaceId f0;
+  HalfedgeId h2, h3;
+};
 
-Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
-  ops_detail::EdgeHalves halves;
-  if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
-  if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
-    return Check::no(
-        tr_format("{edge} has boundary loops on both sides ({loop} and {other}); there is no face to collapse",
-                  {{"edge", format_id(e)},
-                   {"loop", format_id(mesh.face(halves.h0))},
-                   {"other", format_id(mesh.face(halves.h1))}}));
-  }
-  const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
-  const bool interior = !mesh.face(h1).is_boundary();
-  constexpr const char* kPurpose = "only edges between triangles can be collapsed";
-  if (Check tri = ops_detail::check_triangle(mesh, h0, kPurpose); !tri) return tri;
-  if (interior) {
-    if (Check tri = ops_detail::check_triangle(mesh, h1, kPurpose); !tri) return tri;
-  } else if (Check step = ops_detail::check_loop_step(mesh, h1, mesh.vertex(h0)); !step) {
-    return step;
-  }
-
-  const FaceId f0 = mesh.face(h0), f1 = mesh.face(h1);
-  const VertexId a = mesh.vertex(h0), b = mesh.vertex(h1);
-  const HalfedgeId h2 = mesh.next(h0), h3 = mesh.next(h2);
-  const VertexId c = mesh.vertex(h3);
-  const VertexId d = interior ? mesh.vertex(mesh.next(mesh.next(h1))) : VertexId();
-  if (interior && c == d) {
-    return Check::no(
-        tr_format("{face} and {other} have the same corners; collapsing {edge} would leave nothing between them",
-                  {{"face", format_id(f0)}, {"other", format_id(f1)}, {"edge", format_id(e)}}));
-  }
-
-  EndpointFan fan_a, fan_b;
-  if (Check fan = read_fan(mesh, h0, f0, f1, b, c, d, e, fan_a); !fan) return fan;
-  if (Check fan = read_fan(mesh, h1, f0, f1, a, c, d, e, fan_b); !fan) return fan;
-
+// What merging the two fans would break: a pinch, a vertex joined twice, a face using the vertex twice, a fold.
+Check check_merged_fans(const HalfedgeMesh& mesh, const CollapseCorners& q, const EndpointFan& fan_a,
+                        const EndpointFan& fan_b) {
+  const EdgeId e = q.e;
+  const bool interior = q.interior;
+  const VertexId a = q.a, b = q.b, c = q.c, d = q.d;
+  const FaceId f0 = q.f0;
+  const HalfedgeId h2 = q.h2, h3 = q.h3;
   if (interior && fan_a.on_boundary && fan_b.on_boundary) {
     return Check::no(tr_format(
         "{a} and {b} are both on the boundary but {edge} is not; collapsing it would pinch the surface at the merged "
@@ -152,6 +132,46 @@ Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
         {{"face", format_id(f0)}, {"edge", format_id(e)}}));
   }
   return Check::yes();
+}
+
+}  // namespace
+
+Check can_collapse(const HalfedgeMesh& mesh, EdgeId e) {
+  ops_detail::EdgeHalves halves;
+  if (Check edge_ok = ops_detail::check_edge(mesh, e, halves); !edge_ok) return edge_ok;
+  if (mesh.face(halves.h0).is_boundary() && mesh.face(halves.h1).is_boundary()) {
+    return Check::no(
+        tr_format("{edge} has boundary loops on both sides ({loop} and {other}); there is no face to collapse",
+                  {{"edge", format_id(e)},
+                   {"loop", format_id(mesh.face(halves.h0))},
+                   {"other", format_id(mesh.face(halves.h1))}}));
+  }
+  const auto [h0, h1] = ops_detail::face_side_first(mesh, halves);
+  const bool interior = !mesh.face(h1).is_boundary();
+  constexpr const char* kPurpose = "only edges between triangles can be collapsed";
+  if (Check tri = ops_detail::check_triangle(mesh, h0, kPurpose); !tri) return tri;
+  if (interior) {
+    if (Check tri = ops_detail::check_triangle(mesh, h1, kPurpose); !tri) return tri;
+  } else if (Check step = ops_detail::check_loop_step(mesh, h1, mesh.vertex(h0)); !step) {
+    return step;
+  }
+
+  const FaceId f0 = mesh.face(h0), f1 = mesh.face(h1);
+  const VertexId a = mesh.vertex(h0), b = mesh.vertex(h1);
+  const HalfedgeId h2 = mesh.next(h0), h3 = mesh.next(h2);
+  const VertexId c = mesh.vertex(h3);
+  const VertexId d = interior ? mesh.vertex(mesh.next(mesh.next(h1))) : VertexId();
+  if (interior && c == d) {
+    return Check::no(
+        tr_format("{face} and {other} have the same corners; collapsing {edge} would leave nothing between them",
+                  {{"face", format_id(f0)}, {"other", format_id(f1)}, {"edge", format_id(e)}}));
+  }
+
+  EndpointFan fan_a, fan_b;
+  if (Check fan = read_fan(mesh, h0, f0, f1, b, c, d, e, fan_a); !fan) return fan;
+  if (Check fan = read_fan(mesh, h1, f0, f1, a, c, d, e, fan_b); !fan) return fan;
+
+  return check_merged_fans(mesh, {e, interior, a, b, c, d, f0, h2, h3}, fan_a, fan_b);
 }
 
 OpResult<VertexId> collapse(HalfedgeMesh& mesh, EdgeId e) {
