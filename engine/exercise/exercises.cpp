@@ -339,27 +339,36 @@ ExerciseInput ExerciseInput::of_patch(const BezierPatch& patch, std::vector<Exer
 
 std::string ExerciseInput::describe(Exercise exercise) const {
   const auto mesh_text = [&] {
-    if (!mesh) return std::string("no mesh");
-    return "a mesh with " + std::to_string(mesh->num_vertices()) + " vertices and " +
-           std::to_string(mesh->num_faces()) + " faces";
+    if (!mesh) return std::string(tr("no mesh"));
+    return tr_format("a mesh with {vertices} vertices and {faces} faces",
+                     {{"vertices", std::to_string(mesh->num_vertices())}, {"faces", std::to_string(mesh->num_faces())}});
+  };
+  const auto of_mesh = [&] {
+    return tr_format("{element} of {mesh}", {{"element", format_id(element)}, {"mesh", mesh_text()}});
   };
   switch (exercise.kind()) {
-    case ExerciseKind::CurveStep: return plural(points.size(), "point", "points") + ", t = " + format_number(t);
+    case ExerciseKind::CurveStep:
+      return tr_format(points.size() == 1 ? "{count} point, t = {t}" : "{count} points, t = {t}",
+                       {{"count", std::to_string(points.size())}, {"t", format_number(t)}});
     case ExerciseKind::PatchEvaluate: return "(u, v) = (" + format_number(u) + ", " + format_number(v) + ")";
     case ExerciseKind::VertexNormal:
     case ExerciseKind::FlipEdge:
-    case ExerciseKind::SplitEdge: return format_id(element) + " of " + mesh_text();
+    case ExerciseKind::SplitEdge: return of_mesh();
     case ExerciseKind::Upsample: return mesh_text();
     case ExerciseKind::Scripted: break;
   }
   if (const std::shared_ptr<const ScriptedExercise> scripted = exercise.definition(); scripted->takes_values()) {
     std::string text = scripted->input() == ScriptedExercise::Input::Patch
-                           ? "a patch of 16 control points"
-                           : plural(points.size(), "control point", "control points");
-    for (size_t i = 0; i < args.size(); ++i) text += (i == 0 ? ", then " : ", ") + value_text(args[i]);
+                           ? std::string(tr("a patch of 16 control points"))
+                           : tr_format(points.size() == 1 ? "{count} control point" : "{count} control points",
+                                       {{"count", std::to_string(points.size())}});
+    for (size_t i = 0; i < args.size(); ++i) {
+      text = tr_format(i == 0 ? "{inputs}, then {value}" : "{inputs}, {value}",
+                       {{"inputs", text}, {"value", value_text(args[i])}});
+    }
     return text;
   }
-  return element.valid() ? format_id(element) + " of " + mesh_text() : mesh_text();  // scripted
+  return element.valid() ? of_mesh() : mesh_text();  // scripted
 }
 
 // ---- student code -----------------------------------------------------------------------------------------
