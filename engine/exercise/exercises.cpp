@@ -340,8 +340,9 @@ ExerciseInput ExerciseInput::of_patch(const BezierPatch& patch, std::vector<Exer
 std::string ExerciseInput::describe(Exercise exercise) const {
   const auto mesh_text = [&] {
     if (!mesh) return std::string(tr("no mesh"));
-    return tr_format("a mesh with {vertices} vertices and {faces} faces",
-                     {{"vertices", std::to_string(mesh->num_vertices())}, {"faces", std::to_string(mesh->num_faces())}});
+    return tr_format(
+        "a mesh with {vertices} vertices and {faces} faces",
+        {{"vertices", std::to_string(mesh->num_vertices())}, {"faces", std::to_string(mesh->num_faces())}});
   };
   const auto of_mesh = [&] {
     return tr_format("{element} of {mesh}", {{"element", format_id(element)}, {"mesh", mesh_text()}});
