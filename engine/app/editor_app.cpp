@@ -99,12 +99,7 @@ void EditorApp::run_frame(int width, int height, float frame_ms) {
   StatusBarState& status_bar = view_.status_bar();
   status_bar.mesh_shown = view_.mode() == ViewMode::Mesh;
   status_bar.view_is_3d = view_.mode() != ViewMode::Curve;
-  // The up axis's words are up_axis_choice.cpp's English literals (NUL-terminated), shown in the window's language:
-  // looked up each frame after the menus, where the language may change, so no view outlives the catalog it was in.
-  StatusBarState shown_bar = status_bar;
-  if (!shown_bar.up_axis.empty()) shown_bar.up_axis = tr(status_bar.up_axis.data());
-  if (!shown_bar.up_axis_why.empty()) shown_bar.up_axis_why = tr(status_bar.up_axis_why.data());
-  const float status = draw_status_bar(document_.doc(), document_.selection(), shown_bar, frame_ms);
+  const float status = draw_status_bar(document_.doc(), document_.selection(), status_bar, frame_ms);
   panels_.lay_out(menu, status);
   view_.place(panels_.layout().view, width, height);
 

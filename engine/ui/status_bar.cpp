@@ -65,11 +65,10 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
     // the view's note, undo hints), is clipped before them rather than pushing them off the window.
     const std::string frame = format_fixed(frame_ms, 1) + " ms";
     const bool show_axis = !state.up_axis.empty() && state.view_is_3d;
+    const char* up_axis = show_axis ? tr(state.up_axis.data()) : "";  // NUL-terminated literals (status_bar.h)
     const float gap = 24.0f;
     const float right_width =
-        ImGui::CalcTextSize(frame.c_str()).x +
-        (show_axis ? ImGui::CalcTextSize(state.up_axis.data(), state.up_axis.data() + state.up_axis.size()).x + gap
-                   : 0.0f);
+        ImGui::CalcTextSize(frame.c_str()).x + (show_axis ? ImGui::CalcTextSize(up_axis).x + gap : 0.0f);
     const float left_width = std::max(1.0f, ImGui::GetContentRegionAvail().x - right_width - gap);
     ImGui::BeginChild("##status left", ImVec2(left_width, ImGui::GetFrameHeight()), false,
                       ImGuiWindowFlags_NoScrollbar | ImGuiWindowFlags_NoScrollWithMouse);
@@ -116,9 +115,9 @@ float draw_status_bar(MeshDocument& doc, Selection& selection, StatusBarState& s
     ImGui::EndChild();
     if (show_axis) {
       ImGui::SameLine(0.0f, gap);
-      ImGui::TextDisabled("%.*s", int(state.up_axis.size()), state.up_axis.data());
+      ImGui::TextDisabled("%s", up_axis);
       if (state.probe) state.probe->record_last_item("up-axis");
-      if (ImGui::IsItemHovered()) ImGui::SetTooltip("%.*s", int(state.up_axis_why.size()), state.up_axis_why.data());
+      if (ImGui::IsItemHovered() && !state.up_axis_why.empty()) ImGui::SetTooltip("%s", tr(state.up_axis_why.data()));
     }
     ImGui::SameLine(0.0f, gap);
     ImGui::TextDisabled("%s", frame.c_str());

@@ -28,8 +28,8 @@ struct StatusBarState {
   bool mesh_shown = true;  // the mesh view is on screen: counts, validation and undo (else the message line only)
   bool view_is_3d = true;  // the up axis means something (not in the curve view)
   std::string note;        // a standing remark from the view ("frame 62 ms: multisampling off"); "" for none
-  // The view's up axis ("Y up (from the file)") and where it came from, for its tooltip; static text the app fills
-  // (app/up_axis_choice.h); "" shows nothing.
+  // The view's up axis ("Y up (from the file)") and where it came from, for its tooltip: NUL-terminated English
+  // literals the app fills (app/up_axis_choice.h), shown in the window's language; "" shows nothing.
   std::string_view up_axis;
   std::string_view up_axis_why;
 };
